@@ -1,0 +1,139 @@
+// Identification of a campaign (contract §identify): every DOF that has `fit` trials gets
+// parameter estimates with standard deviations, and the identified model is scored by
+// free-run simulation on its `fit` and `validate` trials.
+//
+// Per DOF, in order (docs/identification.md):
+//  1. trials are prepared: outliers excluded and reported, gaps found, velocity estimated
+//     (Savitzky–Golay, seed 000 §IV-D), the logged force held between rows;
+//  2. steady-state segments are detected (or taken from the user's windows) and the drag,
+//     bias, ballast step and installation coefficients fitted (seed 000 eqs. 7–12, 20), with
+//     model selection by significance (51.02%);
+//  3. the inertia by the integral method with the drag known (seed 000 eqs. 16–19), and the
+//     one-step integral least squares of all regressor-linear parameters (seeds 002/004);
+//  4. the output-error (maximum-likelihood) refinement of all parameters, started from the
+//     least-squares answer — the reported estimate when it converges;
+//  5. free-run validation (velocity MAE, seed 002 eq. 37; position RMS; residual whiteness).
+// Ill-posed cases (no excitation, too few steady segments, singular regressions, closed-loop
+// data) are reported with what would fix them; nothing is silently dropped.
+#pragma once
+
+#include <Eigen/Dense>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "uuvplan/ident/estimate.h"
+#include "uuvplan/ident/integral_inertia.h"
+#include "uuvplan/ident/one_step_ls.h"
+#include "uuvplan/ident/output_error.h"
+#include "uuvplan/ident/steady_state.h"
+#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/ident/validation.h"
+#include "uuvplan/model/campaign.h"
+#include "uuvplan/model/model_structure.h"
+
+namespace uuvplan::ident {
+
+enum class ClosedLoop { kAuto, kYes, kNo };
+
+struct IdentifyOptions {
+  /// DOFs to identify; empty: every DOF with at least one `fit` trial.
+  std::vector<model::Dof> dofs;
+  /// Model structure per DOF; absent: ModelStructure::Standard with the mappings seen in the
+  /// fit trials and a ballast step when the fit trials have different ballast_steps.
+  std::map<model::Dof, model::ModelStructure> structures;
+  /// Starting values by parameter name (all DOFs), e.g. {"lag": 0.1}; the a priori values of
+  /// the vehicle are used otherwise.
+  std::map<std::string, double> initial_guess;
+  /// User-marked steady-state windows per campaign trial index, in the log's time (s).
+  std::map<int, std::vector<std::pair<double, double>>> steady_windows;
+  TrialDataOptions data;
+  SteadyStateOptions steady;
+  IntegralInertiaOptions inertia;
+  OneStepOptions one_step;
+  OutputErrorOptions output_error;
+  ValidationOptions validation;
+  bool refine = true;                ///< run the output-error stage
+  bool prune_insignificant = true;   ///< seed 000 §IV-D model selection (both stages)
+  ClosedLoop closed_loop = ClosedLoop::kAuto;
+  bool IsValid(std::string* error) const;
+};
+
+enum class IdentifyStatus {
+  kOk,        ///< estimates with σ, nothing to report
+  kWarnings,  ///< estimates with caveats (see warnings)
+  kFailed,    ///< no usable estimate for some DOF
+};
+std::string_view IdentifyStatusName(IdentifyStatus s);
+
+/// Which estimator produced a DOF's reported parameters.
+enum class FinalEstimator { kOutputError, kSteadyStateIntegral, kOneStep, kNone };
+std::string_view FinalEstimatorName(FinalEstimator e);
+
+struct DofIdentification {
+  model::Dof dof = model::Dof::kSurge;
+  IdentifyStatus status = IdentifyStatus::kOk;
+  std::string message;
+  model::ModelStructure structure;
+  std::vector<std::string> parameter_names;  ///< theta layout (model::DofModel)
+  Eigen::VectorXd theta;                     ///< values used by the model (0 when dropped)
+  Eigen::MatrixXd covariance;                ///< theta layout; 0 rows for fixed/dropped
+  std::vector<ParameterEstimate> params;     ///< one per parameter, theta layout
+  std::vector<std::string> unreliable;       ///< parameters not to be trusted (and why: warnings)
+  FinalEstimator estimator = FinalEstimator::kNone;
+  std::vector<int> fit_trials, validate_trials;  ///< campaign trial indices
+  std::vector<SteadyPoint> steady_points;
+  std::optional<SteadyStateResult> steady;
+  std::optional<IntegralInertiaResult> inertia;
+  std::optional<OneStepDofResult> one_step;
+  std::optional<OutputErrorResult> output_error;
+  FitSummary fit;
+  bool closed_loop_suspected = false;
+  std::vector<std::string> notes;
+  std::vector<std::string> warnings;
+
+  /// The reported estimate of parameter `name`, or null.
+  const ParameterEstimate* Param(const std::string& name) const;
+};
+
+/// What preparing a trial found and excluded.
+struct TrialReport {
+  int index = -1;
+  std::string file;
+  model::Dof dof = model::Dof::kSurge;
+  model::TrialUse use = model::TrialUse::kFit;
+  double time_offset = 0.0;
+  std::vector<Outlier> position_outliers, velocity_outliers;  ///< times in trial time
+  std::vector<Gap> gaps;
+  std::vector<std::string> notes;
+};
+
+struct IdentifyResult {
+  IdentifyStatus status = IdentifyStatus::kFailed;
+  std::string message;
+  std::vector<DofIdentification> dofs;
+  std::vector<TrialReport> trials;
+  std::vector<std::string> notes;
+  const DofIdentification* Find(model::Dof dof) const;
+};
+
+/// Identifies the campaign. Throws model::InputError for unusable input (a trial without
+/// force or measurement columns, unknown mappings, invalid options); numerical trouble is
+/// reported in the result.
+IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& options);
+
+/// A priori parameter values of a DOF model (vehicle inertia bounds' midpoint, drag prior,
+/// η = 1, …) overridden by `guess`.
+Eigen::VectorXd PriorTheta(const model::Vehicle& vehicle, const model::DofModel& model,
+                           const std::map<std::string, double>& guess);
+
+/// Heuristic closed-loop check of a trial's logged force: a designed open-loop input is
+/// piecewise constant (changes at fewer than 20% of its rows) or smooth (median |Δ²φ| below
+/// 0.3·median |Δφ|); an irregular force that changes at every row is the signature of a
+/// controller reacting to measurement noise. Returns the roughness ratio (0 if piecewise
+/// constant); above 0.3 means "closed loop suspected".
+double CommandRoughness(const TrialData& trial);
+
+}  // namespace uuvplan::ident

@@ -1,0 +1,67 @@
+// Inertia by the integral method with the drag known (seed 000 §III-B, eqs. 16–19).
+//
+// Integrating the model (3) from the start t_s of a run of samples removes the acceleration:
+//
+//   m·ξ(t) − c − b·(t − t_s) = y(t),   y(t) = ∫_{t_s}^{t} (η·φ − k·ξ − kq·ξ|ξ| + …) dt   (16)
+//
+// (c = m·ξ_s + k·χ_s collects the initial conditions, b the mean disturbance and the
+// integration bias.) With every force term except the constant ones known (from the
+// steady-state fit), y(t_i) = H_i·[m, c, b]ᵀ (eqs. 17–19) with H_i = [ξ_i, −1, −(t_i − t_s)];
+// each run of samples (trial, or part of a trial between gaps) has its own c and b.
+//
+// Uncertainty: the residuals are correlated over the Savitzky–Golay window (ξ is filtered),
+// so the textbook eqs. 11–12 σ is too small (notes/pitfalls.md). The reported σ_m combines a
+// Newey–West σ (lags spanning two filter windows) with the propagated uncertainty of the
+// known drag: m̂ is linear in the known parameters, ∂m̂/∂θ_j = g_mᵀ·Y_j with Y_j = ∫h_j, so
+// σ_m² = σ_HAC² + Jᵀ·Σ_known·J. The eqs. 11–12 σ is reported alongside.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "uuvplan/ident/estimate.h"
+#include "uuvplan/ident/least_squares.h"
+#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/model/dof_model.h"
+
+namespace uuvplan::ident {
+
+struct IntegralInertiaOptions {
+  /// Newey–West lags in filter windows (lags = windows × SG window samples).
+  double newey_west_windows = 2.0;
+  /// Propagate the covariance of the known parameters into σ_m.
+  bool propagate_known_uncertainty = true;
+  /// Integration step for the regressor integrals (s).
+  double max_step_s = 0.05;
+  double max_condition = 1e8;
+  bool IsValid(std::string* error) const;
+};
+
+struct IntegralInertiaResult {
+  FitStatus status = FitStatus::kNoData;
+  std::string message;
+  double m = 0.0;
+  double sigma = 0.0;             ///< reported σ_m (HAC ⊕ propagated)
+  double sigma_eq11 = 0.0;        ///< seed 000 eqs. 11–12
+  double sigma_hac = 0.0;         ///< Newey–West only
+  double sigma_known = 0.0;       ///< from the known parameters' covariance
+  std::vector<double> run_c, run_b;  ///< per run of samples
+  std::vector<int> run_trial;        ///< trial index of each run
+  int num_samples = 0;
+  double condition_number = 0.0;
+  ParameterEstimate estimate;     ///< "m"
+  std::vector<std::string> notes;
+  bool ok() const { return status == FitStatus::kOk; }
+};
+
+/// Estimates m of `model` from `trials` with every other parameter at `theta` (its constant
+/// terms, bias and bias_step, are re-estimated per run as b). `known_covariance` (model
+/// layout, may be null) is the covariance of the known parameters.
+IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
+                                         const std::vector<const TrialData*>& trials,
+                                         const Eigen::VectorXd& theta,
+                                         const Eigen::MatrixXd* known_covariance,
+                                         const IntegralInertiaOptions& options);
+
+}  // namespace uuvplan::ident

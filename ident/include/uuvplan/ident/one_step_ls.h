@@ -1,0 +1,118 @@
+// One-step integral least squares of seeds 002 (eqs. 13–35) and 004 (eqs. 2–14).
+//
+// Dividing the model by m gives, per DOF (seed 002 eq. 4, Table 2):
+//
+//   dξ/dt = α·ξ + β·ξ|ξ| + γ·φ + δ,   α = −k/m, β = −kq/m, γ = 1/m, δ = bias/m
+//
+// and integrating between consecutive knots t_{k−1}, t_k of the filtered velocity ξ̃:
+//
+//   ξ̃(t_k) − ξ̃(t_{k−1}) = [∫ φ(ξ̃, φ) ds]·θ + ε_k                      (002 eqs. 20–26)
+//
+// stacked into Y = H·θ + ε (eqs. 27–34) and solved with measurement weights W⁻¹ (eq. 35);
+// several DOFs at once with block weights Λ_k (seed 004 eqs. 4, 12–14). Generalised to the
+// model's terms: ψ = [γ, θ_j/m …] where γ multiplies the known force (open-water thrust and
+// fixed terms) and θ_j/m the integral of term j's regressor; the standard model gives
+// α = −ψ_k, β = −ψ_kq, δ = ψ_bias. The physical parameters follow (002 Table 2) with their
+// covariance by the delta method: m = 1/γ, θ_j = ψ_j/γ.
+//
+// Knots: the seeds use every sample; with a noisy filtered velocity in the regressors that
+// biases m low (errors in variables, notes/pitfalls.md), so by default knots are one
+// Savitzky–Golay window apart (the endpoint errors of consecutive rows are then nearly
+// independent, and the integrals of ξ̃ average the noise away). Rows share an endpoint, so
+// the covariance is Newey–West with one lag per trial by default.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "uuvplan/ident/estimate.h"
+#include "uuvplan/ident/least_squares.h"
+#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/model/dof_model.h"
+
+namespace uuvplan::ident {
+
+/// Seed 002 Table 2: physical parameters of the coefficients [α, β, γ, δ].
+struct SeedCoefficients {
+  double alpha = 0.0, beta = 0.0, gamma = 0.0, delta = 0.0;
+};
+struct PhysicalParameters {
+  double m = 0.0;    ///< 1/γ
+  double d_L = 0.0;  ///< −α/γ (k)
+  double d_Q = 0.0;  ///< −β/γ (kq)
+  double b = 0.0;    ///< −δ/γ: VSOR's disturbance, τ = m·ẋ + d_L·x + d_Q·x|x| + b (002 eq. 2)
+  double bias = 0.0; ///< δ/γ = −b: the contract's bias, m·ξ̇ = … + φ + bias
+};
+PhysicalParameters ToPhysical(const SeedCoefficients& c);
+/// Jacobian ∂[m, d_L, d_Q, bias]/∂[α, β, γ, δ] for the delta method.
+Eigen::Matrix4d ToPhysicalJacobian(const SeedCoefficients& c);
+
+struct OneStepOptions {
+  /// Knot spacing (s): 0 = every sample (seeds 002/004); negative = one Savitzky–Golay window.
+  double window_s = -1.0;
+  CovarianceKind covariance = CovarianceKind::kNeweyWest;
+  int newey_west_lags = 1;  ///< rows share an endpoint: MA(1)
+  double max_step_s = 0.05; ///< integration sub-step
+  double max_condition = 1e8;
+  bool IsValid(std::string* error) const;
+};
+
+/// The rows of one DOF's regression: Y = F·ψ, with the model indices of ψ's entries.
+struct OneStepRows {
+  Eigen::MatrixXd F;         ///< rows × (1 + free.size()): [∫known, ∫h_free…]
+  Eigen::VectorXd Y;         ///< ξ̃(t_k) − ξ̃(t_{k−1})
+  std::vector<double> t;     ///< knot time t_k of each row (trial time)
+  std::vector<int> group;    ///< trial index of each row
+  std::vector<int> free;     ///< model indices of ψ[1..]
+  double noise_sigma = 0.0;  ///< σ of Y's noise (√2·σ of ξ̃), for weights
+};
+
+/// Builds the rows for `trials` of one DOF; `free` lists the model parameters to estimate
+/// (regressor-linear, not m); all others take their value in `theta`.
+OneStepRows BuildOneStepRows(const model::DofModel& model, const std::vector<const TrialData*>& trials,
+                             const Eigen::VectorXd& theta, const std::vector<int>& free,
+                             const OneStepOptions& options);
+
+struct OneStepDofInput {
+  const model::DofModel* model = nullptr;
+  std::vector<const TrialData*> trials;
+  Eigen::VectorXd theta;   ///< values of the parameters not estimated
+  std::vector<int> free;   ///< empty: every regressor-linear parameter
+  double weight = 0.0;     ///< Λ for this DOF; 0: 1/noise_sigma²
+};
+
+struct OneStepDofResult {
+  FitStatus status = FitStatus::kNoData;
+  std::string message;
+  std::vector<std::string> coefficient_names;  ///< "gamma", "<name>/m" …
+  Eigen::VectorXd psi;
+  Eigen::MatrixXd psi_covariance;
+  bool standard = false;          ///< [α, β, γ, δ] available
+  SeedCoefficients seed;          ///< when standard
+  Eigen::Matrix4d seed_covariance = Eigen::Matrix4d::Zero();
+  /// Physical parameters in the model's layout (m and the free ones estimated; others as given).
+  std::vector<std::string> names;
+  Eigen::VectorXd theta;
+  Eigen::MatrixXd covariance;
+  std::vector<ParameterState> state;
+  std::vector<ParameterEstimate> estimates;  ///< m and the free parameters
+  double condition_number = 0.0;
+  std::vector<std::string> not_identifiable;
+  Eigen::VectorXd residuals;
+  int num_rows = 0;
+  double cost = 0.0;  ///< J = (1/N)·Σ ε² (seed 004 eq. 5)
+  bool ok() const { return status == FitStatus::kOk; }
+};
+
+/// Seed 004: all DOFs in one stacked, weighted regression (block diagonal, so each DOF's
+/// estimate equals its own weighted fit; the weights Λ matter only for a common cost).
+std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofInput>& dofs,
+                                                  const OneStepOptions& options);
+
+/// Converts ψ (layout of OneStepRows) with covariance into physical parameters in model layout.
+void PsiToPhysical(const model::DofModel& model, const Eigen::VectorXd& theta_given,
+                   const std::vector<int>& free, const Eigen::VectorXd& psi,
+                   const Eigen::MatrixXd& psi_cov, Eigen::VectorXd* theta, Eigen::MatrixXd* cov);
+
+}  // namespace uuvplan::ident

@@ -1,0 +1,45 @@
+// Outliers (sonar multipath, seed 000 Fig. 14) and gaps (drop-outs, seed 000 Fig. 14 "missing
+// sonar measurements") in a sampled signal. Each sample is predicted by a local quadratic fitted
+// to its neighbours (itself left out); a sample whose prediction residual exceeds `threshold`
+// robust standard deviations (1.4826·MAD of all residuals) is an outlier. Two passes, so that
+// an outlier does not hide its neighbour. Excluded samples are reported, never dropped silently.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "uuvplan/ident/velocity_estimation.h"
+
+namespace uuvplan::ident {
+
+struct OutlierOptions {
+  int half_window = 5;     ///< neighbours on each side used for the prediction
+  double threshold = 6.0;  ///< robust standard deviations
+  /// Residuals smaller than this many known noise σ are never outliers (0: no floor).
+  double noise_floor = 4.0;
+  bool IsValid(std::string* error) const;
+};
+
+struct Outlier {
+  std::size_t index = 0;  ///< in the input signal
+  double t = 0.0;
+  double value = 0.0;
+  double residual = 0.0;  ///< measured − predicted
+};
+
+/// The outliers of `s` (sorted by index). `known_sigma` (<= 0: unknown) sets the noise floor.
+std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& options,
+                                    double known_sigma = -1.0);
+
+/// `s` without the given samples.
+Signal RemoveSamples(const Signal& s, const std::vector<Outlier>& outliers);
+
+struct Gap {
+  double t0 = 0.0;  ///< last sample before the gap
+  double t1 = 0.0;  ///< first sample after it
+};
+
+/// Steps longer than `factor` × the median step.
+std::vector<Gap> FindGaps(const std::vector<double>& t, double factor = 3.0);
+
+}  // namespace uuvplan::ident

@@ -1,0 +1,123 @@
+// Velocity from measured positions (and smoothing of measured velocities), as the seeds do it:
+//  - off-line Savitzky–Golay polynomial smoothing/differentiation (seed 000 §IV-D: 4th order,
+//    symmetric windows of 21–41 points chosen per DOF and sampling rate), as local polynomial
+//    least squares on the actual sample times so that jitter and drop-outs are handled; the
+//    filter never crosses a gap, and the first and last half-window of every run are flagged as
+//    edges (notes/pitfalls.md) and evaluated with the end polynomials;
+//  - numerical differentiation followed by a second-order Butterworth low-pass applied forwards
+//    and backwards (zero phase), as VSOR (seed 002 §6.1);
+//  - the least-squares constant speed of a steady-state segment from positions alone
+//    (seed 000 §III: < 3% σ at 3 Hz sonar), or the mean of measured velocities;
+//  - automatic detection of the steady-state part of each constant-force piece: the speed must
+//    have settled within the noise, tested on the data, never assumed after a fixed time.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace uuvplan::ident {
+
+/// Samples of one signal: times (s) and values, no NaN.
+struct Signal {
+  std::vector<double> t;
+  std::vector<double> y;
+  std::size_t size() const { return t.size(); }
+  bool empty() const { return t.empty(); }
+};
+
+struct SavitzkyGolayOptions {
+  int order = 4;    ///< polynomial order (seed 000: 4)
+  int window = 21;  ///< points, odd (seed 000: 21 for 3.3 Hz sonar, 41 for 10 Hz heading)
+  /// A step longer than gap_factor × the median step starts a new run (never filtered across).
+  double gap_factor = 3.0;
+  bool IsValid(std::string* error) const;
+};
+
+/// The window seed 000 §IV-D would use at this sampling rate: about 4 s of samples, odd, within
+/// 21–41 points (3.33 Hz sonar → 21, 10 Hz heading/depth → 41).
+int SavitzkyGolayWindow(double rate_hz);
+
+struct SmoothedSignal {
+  std::vector<double> t;
+  std::vector<double> value;       ///< smoothed signal
+  std::vector<double> derivative;  ///< its time derivative (NaN where a run is too short)
+  std::vector<bool> edge;          ///< within half a window of a run end (trim before fitting)
+  std::vector<int> run;            ///< run index (runs are separated by gaps)
+  /// Noise gains of the centred filter: σ_value = gain·σ_input, σ_derivative = gain_d·σ_input
+  /// (per second; for the median step of the first run).
+  double value_gain = 1.0;
+  double derivative_gain = 0.0;
+  std::size_t size() const { return t.size(); }
+};
+
+/// Savitzky–Golay smoothing and differentiation of irregularly sampled data.
+SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options);
+
+/// Second-order Butterworth low-pass (cutoff_hz) applied forwards and backwards (zero phase) to
+/// uniformly sampled data at rate_hz; odd reflection at both ends.
+std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rate_hz,
+                                        double cutoff_hz);
+
+/// VSOR velocity (seed 002 §6.1): central differences of the positions, then the zero-phase
+/// Butterworth low-pass; runs are split at gaps; irregular steps use the actual times.
+SmoothedSignal ButterworthVelocity(const Signal& position, double cutoff_hz,
+                                   double gap_factor = 3.0);
+
+/// The least-squares constant speed of a segment: chi(t) = c + v·t (seed 000 §III), or, from
+/// velocity samples, their mean. sigma follows eqs. 11–12 (noise from the residuals) unless a
+/// known noise σ is given; when the residuals are positively autocorrelated beyond chance
+/// (lag-1 ρ > 2/√n), σ is inflated by √((1+ρ)/(1−ρ)).
+struct SpeedFit {
+  bool ok = false;
+  double speed = 0.0;
+  double sigma = 0.0;         ///< 1σ of the speed
+  double offset = 0.0;        ///< c at the segment's mean time (position fits)
+  double residual_sd = 0.0;   ///< standard deviation of the residuals
+  double lag1 = 0.0;          ///< lag-1 autocorrelation of the residuals
+  int n = 0;
+  double t0 = 0.0, t1 = 0.0;
+};
+SpeedFit ConstantSpeedFit(const Signal& position, double t0, double t1,
+                          double known_sigma = -1.0);
+SpeedFit MeanSpeedFit(const Signal& velocity, double t0, double t1, double known_sigma = -1.0);
+
+/// A time interval during which the commanded force and mapping are constant.
+struct ForcePiece {
+  double t0 = 0.0, t1 = 0.0;
+  double force = 0.0;
+  int mapping = -1;
+};
+
+struct SteadyDetectionOptions {
+  double min_duration_s = 5.0;  ///< shortest steady segment kept
+  int min_samples = 10;         ///< fewest samples in a steady segment
+  /// Settling test: the speed change across the segment (quadratic fit) and the difference of
+  /// the two halves' speeds must both lie within z·σ.
+  double z = 2.0;
+  /// Candidate starts are tried every `stride` samples (0: automatic, about 200 candidates).
+  int stride = 0;
+  bool IsValid(std::string* error) const;
+};
+
+struct SteadySegment {
+  int piece = -1;  ///< index into the pieces given
+  SpeedFit fit;
+  bool user_marked = false;
+};
+
+/// The settled tail of each constant-force piece, from positions (`is_position`) or measured
+/// velocities. `known_sigma` is the sensor's noise (negative: estimated from residuals).
+std::vector<SteadySegment> DetectSteadySegments(const Signal& s, bool is_position,
+                                                const std::vector<ForcePiece>& pieces,
+                                                const SteadyDetectionOptions& options,
+                                                double known_sigma = -1.0);
+
+/// Linear interpolation of samples at time t (held constant beyond the ends).
+double Interpolate(const std::vector<double>& t, const std::vector<double>& y, double at);
+
+/// Robust noise estimate of a sampled signal: 1.4826·MAD of the third differences / √20
+/// (exact for white noise on a locally quadratic signal).
+double NoiseSigmaFromDifferences(const Signal& s);
+
+}  // namespace uuvplan::ident

@@ -1,0 +1,167 @@
+#include "uuvplan/ident/least_squares.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace uuvplan::ident {
+
+bool LeastSquaresOptions::IsValid(std::string* error) const {
+  if (!(max_condition > 1)) {
+    if (error) *error = "LeastSquaresOptions::max_condition = " + std::to_string(max_condition) +
+                        ". Violated constraint: max_condition > 1";
+    return false;
+  }
+  if (!(null_component > 0 && null_component < 1)) {
+    if (error) *error = "LeastSquaresOptions::null_component must lie in (0, 1)";
+    return false;
+  }
+  return true;
+}
+
+std::string_view FitStatusName(FitStatus status) {
+  switch (status) {
+    case FitStatus::kOk: return "ok";
+    case FitStatus::kIllConditioned: return "ill_conditioned";
+    case FitStatus::kTooFewData: return "too_few_data";
+    case FitStatus::kNoData: return "no_data";
+  }
+  return "ok";
+}
+
+int DefaultNeweyWestLags(int n) {
+  return std::max(1, static_cast<int>(std::floor(4.0 * std::pow(n / 100.0, 2.0 / 9.0))));
+}
+
+std::string JoinNames(const std::vector<int>& columns, const std::vector<std::string>& names) {
+  std::string out;
+  for (int c : columns) {
+    if (!out.empty()) out += ", ";
+    out += c >= 0 && c < static_cast<int>(names.size()) ? names[c] : std::to_string(c);
+  }
+  return out;
+}
+
+Eigen::MatrixXd NeweyWestCovariance(const Eigen::MatrixXd& H, const Eigen::VectorXd& r,
+                                    const Eigen::VectorXd* w, int lags,
+                                    const std::vector<int>* groups) {
+  const Eigen::Index n = H.rows(), p = H.cols();
+  // Scores g_i = w_i·h_i·r_i; bread A = Hᵀ W H.
+  Eigen::MatrixXd G(n, p);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(p, p);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double wi = w ? (*w)[i] : 1.0;
+    G.row(i) = wi * r[i] * H.row(i);
+  }
+  if (w) {
+    A.noalias() = H.transpose() * w->asDiagonal() * H;
+  } else {
+    A.noalias() = H.transpose() * H;
+  }
+  Eigen::MatrixXd S = G.transpose() * G;
+  for (int l = 1; l <= lags; ++l) {
+    const double kappa = 1.0 - static_cast<double>(l) / (lags + 1);
+    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(p, p);
+    for (Eigen::Index i = l; i < n; ++i) {
+      if (groups && (*groups)[i] != (*groups)[i - l]) continue;
+      C.noalias() += G.row(i).transpose() * G.row(i - l);
+    }
+    S += kappa * (C + C.transpose());
+  }
+  const Eigen::MatrixXd Ainv = A.ldlt().solve(Eigen::MatrixXd::Identity(p, p));
+  const double correction = n > p ? static_cast<double>(n) / (n - p) : 1.0;
+  return correction * Ainv * S * Ainv;
+}
+
+LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
+                            const Eigen::VectorXd* weights, const LeastSquaresOptions& options,
+                            const std::vector<int>* groups) {
+  LinearFit fit;
+  const Eigen::Index n = H.rows(), p = H.cols();
+  if (n == 0 || p == 0) {
+    fit.status = FitStatus::kNoData;
+    fit.message = "no data rows or no unknowns";
+    return fit;
+  }
+  if (n < p) {
+    fit.status = FitStatus::kTooFewData;
+    fit.message = std::to_string(n) + " equations for " + std::to_string(p) + " unknowns";
+    return fit;
+  }
+  // Column-scaled, row-weighted system B·z = c, theta = D·z, D = diag(1/‖column‖).
+  Eigen::VectorXd sw = Eigen::VectorXd::Ones(n);
+  if (weights) sw = weights->cwiseSqrt();
+  Eigen::MatrixXd B = sw.asDiagonal() * H;
+  Eigen::VectorXd c = sw.cwiseProduct(y);
+  Eigen::VectorXd D(p);
+  for (Eigen::Index j = 0; j < p; ++j) {
+    const double norm = B.col(j).norm();
+    D[j] = norm > 0 ? 1.0 / norm : 1.0;
+    B.col(j) *= D[j];
+  }
+  // QR, then the SVD of the small R gives the singular values of B.
+  Eigen::HouseholderQR<Eigen::MatrixXd> qr(B);
+  Eigen::MatrixXd R = qr.matrixQR().topRows(p).triangularView<Eigen::Upper>();
+  Eigen::VectorXd qtc = (qr.householderQ().transpose() * c).head(p);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  fit.singular_values = svd.singularValues();
+  const double smax = fit.singular_values[0];
+  const double smin = fit.singular_values[p - 1];
+  fit.condition_number = smin > 0 ? smax / smin : std::numeric_limits<double>::infinity();
+  // Truncated pseudo-inverse of R: directions with s < smax/max_condition are left out.
+  const double cut = smax / options.max_condition;
+  Eigen::MatrixXd Rpinv = Eigen::MatrixXd::Zero(p, p);
+  for (Eigen::Index k = 0; k < p; ++k) {
+    const double s = fit.singular_values[k];
+    if (s > cut && s > 0) {
+      Rpinv.noalias() += svd.matrixV().col(k) * svd.matrixU().col(k).transpose() / s;
+    } else {
+      for (Eigen::Index j = 0; j < p; ++j) {
+        if (std::abs(svd.matrixV()(j, k)) > options.null_component) {
+          if (std::find(fit.not_identifiable.begin(), fit.not_identifiable.end(), j) ==
+              fit.not_identifiable.end()) {
+            fit.not_identifiable.push_back(static_cast<int>(j));
+          }
+        }
+      }
+    }
+  }
+  std::sort(fit.not_identifiable.begin(), fit.not_identifiable.end());
+  const Eigen::VectorXd z = Rpinv * qtc;
+  fit.theta = D.cwiseProduct(z);
+  fit.residuals = y - H * fit.theta;
+  fit.dof = static_cast<int>(n - p);
+  const Eigen::VectorXd wr = sw.cwiseProduct(fit.residuals);
+  fit.sigma2 = fit.dof > 0 ? wr.squaredNorm() / fit.dof : std::numeric_limits<double>::quiet_NaN();
+  // (BᵀB)⁻¹ = R⁻¹R⁻ᵀ (pseudo-inverse); Cov of theta = D (BᵀB)⁻¹ D.
+  const Eigen::MatrixXd unit = D.asDiagonal() * (Rpinv * Rpinv.transpose()) * D.asDiagonal();
+  switch (options.covariance) {
+    case CovarianceKind::kResidual:
+      fit.covariance = (fit.dof > 0 ? fit.sigma2 : 1.0) * unit;
+      break;
+    case CovarianceKind::kKnownNoise:
+      fit.covariance = unit;
+      break;
+    case CovarianceKind::kConservative:
+      fit.covariance = (fit.dof > 0 ? std::max(1.0, fit.sigma2) : 1.0) * unit;
+      break;
+    case CovarianceKind::kNeweyWest: {
+      const int lags =
+          options.newey_west_lags >= 0 ? options.newey_west_lags : DefaultNeweyWestLags(int(n));
+      fit.covariance = NeweyWestCovariance(H, fit.residuals, weights, lags, groups);
+      break;
+    }
+  }
+  if (fit.condition_number > options.max_condition || !fit.not_identifiable.empty()) {
+    fit.status = FitStatus::kIllConditioned;
+    std::ostringstream os;
+    os << "ill-conditioned regression (condition number " << fit.condition_number
+       << " > " << options.max_condition << ")";
+    fit.message = os.str();
+  } else {
+    fit.status = FitStatus::kOk;
+  }
+  return fit;
+}
+
+}  // namespace uuvplan::ident

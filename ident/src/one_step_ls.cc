@@ -1,0 +1,255 @@
+#include "uuvplan/ident/one_step_ls.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "uuvplan/ident/regression.h"
+#include "uuvplan/model/effects.h"
+
+namespace uuvplan::ident {
+
+PhysicalParameters ToPhysical(const SeedCoefficients& c) {
+  PhysicalParameters p;
+  p.m = 1.0 / c.gamma;
+  p.d_L = -c.alpha / c.gamma;
+  p.d_Q = -c.beta / c.gamma;
+  p.b = -c.delta / c.gamma;
+  p.bias = -p.b;
+  return p;
+}
+
+Eigen::Matrix4d ToPhysicalJacobian(const SeedCoefficients& c) {
+  const double g = c.gamma, g2 = g * g;
+  Eigen::Matrix4d J = Eigen::Matrix4d::Zero();
+  // rows m, d_L, d_Q, bias; columns α, β, γ, δ
+  J(0, 2) = -1.0 / g2;
+  J(1, 0) = -1.0 / g;
+  J(1, 2) = c.alpha / g2;
+  J(2, 1) = -1.0 / g;
+  J(2, 2) = c.beta / g2;
+  J(3, 3) = 1.0 / g;
+  J(3, 2) = -c.delta / g2;
+  return J;
+}
+
+bool OneStepOptions::IsValid(std::string* error) const {
+  if (!(max_step_s > 0) || !(max_condition > 1) || newey_west_lags < 0) {
+    if (error) *error = "OneStepOptions: max_step_s > 0, max_condition > 1, newey_west_lags >= 0";
+    return false;
+  }
+  return true;
+}
+
+OneStepRows BuildOneStepRows(const model::DofModel& model,
+                             const std::vector<const TrialData*>& trials,
+                             const Eigen::VectorXd& theta, const std::vector<int>& free,
+                             const OneStepOptions& o) {
+  OneStepRows rows;
+  rows.free = free;
+  const int np = model.num_parameters();
+  const std::vector<int> linear = LinearParameters(model);
+  std::vector<int> fixed_linear;
+  for (int j : linear) {
+    if (std::find(free.begin(), free.end(), j) == free.end()) fixed_linear.push_back(j);
+  }
+  std::vector<Eigen::RowVectorXd> F;
+  std::vector<double> Y;
+  double noise_var_sum = 0.0;
+  int noise_count = 0;
+  for (const TrialData* trial : trials) {
+    const SmoothedSignal& v = trial->velocity_estimate;
+    const double input_sigma = trial->velocity_from_position ? trial->position_sigma : trial->velocity_sigma;
+    const double gain = trial->velocity_from_position ? v.derivative_gain : v.value_gain;
+    if (input_sigma > 0) {
+      noise_var_sum += 2.0 * std::pow(gain * input_sigma, 2);
+      ++noise_count;
+    }
+    // Knot spacing: one SG window (its span in time) unless told otherwise.
+    double window = o.window_s;
+    if (window < 0) {
+      const double span = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
+      window = span * (trial->sg_window - 1);
+    }
+    std::size_t i = 0;
+    while (i < v.size()) {
+      const int run_id = v.run[i];
+      std::vector<double> kt, kx;
+      for (; i < v.size() && v.run[i] == run_id; ++i) {
+        if (v.edge[i] || std::isnan(v.value[i])) continue;
+        if (!kt.empty() && v.t[i] - kt.back() < window - 1e-9) continue;
+        kt.push_back(v.t[i]);
+        kx.push_back(v.value[i]);
+      }
+      if (kt.size() < 2) continue;
+      const IntegratedRegressors ir = IntegrateRegressors(model, *trial, kt, theta, o.max_step_s);
+      for (std::size_t k = 0; k + 1 < kt.size(); ++k) {
+        Eigen::RowVectorXd row(1 + free.size());
+        double known = ir.h0[k];
+        for (int j : fixed_linear) known += theta[j] * ir.H(k, j);
+        row[0] = known;
+        for (std::size_t c = 0; c < free.size(); ++c) row[1 + c] = ir.H(k, free[c]);
+        F.push_back(row);
+        Y.push_back(kx[k + 1] - kx[k]);
+        rows.t.push_back(kt[k + 1]);
+        rows.group.push_back(trial->index);
+      }
+    }
+  }
+  (void)np;
+  rows.F.resize(F.size(), 1 + free.size());
+  rows.Y.resize(Y.size());
+  for (std::size_t r = 0; r < F.size(); ++r) {
+    rows.F.row(r) = F[r];
+    rows.Y[r] = Y[r];
+  }
+  rows.noise_sigma = noise_count > 0 ? std::sqrt(noise_var_sum / noise_count) : 0.0;
+  return rows;
+}
+
+void PsiToPhysical(const model::DofModel& model, const Eigen::VectorXd& theta_given,
+                   const std::vector<int>& free, const Eigen::VectorXd& psi,
+                   const Eigen::MatrixXd& psi_cov, Eigen::VectorXd* theta, Eigen::MatrixXd* cov) {
+  const int np = model.num_parameters();
+  const int P = static_cast<int>(psi.size());
+  *theta = theta_given;
+  const double g = psi[0];
+  (*theta)[0] = 1.0 / g;
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(np, P);
+  J(0, 0) = -1.0 / (g * g);
+  for (std::size_t c = 0; c < free.size(); ++c) {
+    const int j = free[c];
+    (*theta)[j] = psi[1 + c] / g;
+    J(j, 1 + c) = 1.0 / g;
+    J(j, 0) = -psi[1 + c] / (g * g);
+  }
+  *cov = J * psi_cov * J.transpose();
+}
+
+std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofInput>& dofs,
+                                                  const OneStepOptions& o) {
+  std::vector<OneStepDofResult> results(dofs.size());
+  std::vector<OneStepRows> rows(dofs.size());
+  std::vector<double> weight(dofs.size(), 1.0);
+  int total_rows = 0, total_cols = 0;
+  for (std::size_t d = 0; d < dofs.size(); ++d) {
+    const model::DofModel& model = *dofs[d].model;
+    std::vector<int> free = dofs[d].free;
+    if (free.empty()) free = LinearParameters(model);
+    rows[d] = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, free, o);
+    weight[d] = dofs[d].weight > 0 ? dofs[d].weight
+                : rows[d].noise_sigma > 0 ? 1.0 / (rows[d].noise_sigma * rows[d].noise_sigma)
+                                          : 1.0;
+    total_rows += static_cast<int>(rows[d].Y.size());
+    total_cols += static_cast<int>(rows[d].F.cols());
+  }
+  // Stacked block-diagonal system (seed 004 eqs. 12–14).
+  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(total_rows, total_cols);
+  Eigen::VectorXd Y(total_rows), W(total_rows);
+  std::vector<int> groups(total_rows);
+  std::vector<int> row0(dofs.size()), col0(dofs.size());
+  int r0 = 0, c0 = 0;
+  for (std::size_t d = 0; d < dofs.size(); ++d) {
+    const OneStepRows& R = rows[d];
+    row0[d] = r0;
+    col0[d] = c0;
+    F.block(r0, c0, R.F.rows(), R.F.cols()) = R.F;
+    Y.segment(r0, R.Y.size()) = R.Y;
+    W.segment(r0, R.Y.size()).setConstant(weight[d]);
+    for (int k = 0; k < R.Y.size(); ++k) groups[r0 + k] = static_cast<int>(d) * 1000003 + R.group[k];
+    r0 += static_cast<int>(R.F.rows());
+    c0 += static_cast<int>(R.F.cols());
+  }
+  LeastSquaresOptions lso;
+  lso.covariance = o.covariance;
+  lso.newey_west_lags = o.newey_west_lags;
+  lso.max_condition = o.max_condition;
+  const LinearFit fit = SolveLeastSquares(F, Y, &W, lso, &groups);
+
+  for (std::size_t d = 0; d < dofs.size(); ++d) {
+    OneStepDofResult& res = results[d];
+    const model::DofModel& model = *dofs[d].model;
+    const OneStepRows& R = rows[d];
+    const int P = static_cast<int>(R.F.cols());
+    res.num_rows = static_cast<int>(R.Y.size());
+    res.names = model.parameter_names();
+    res.state.assign(model.num_parameters(), ParameterState::kFixed);
+    res.theta = dofs[d].theta;
+    res.covariance = Eigen::MatrixXd::Zero(model.num_parameters(), model.num_parameters());
+    res.coefficient_names.push_back("gamma");
+    for (int j : R.free) res.coefficient_names.push_back(res.names[j] + "/m");
+    if (res.num_rows < P + 1) {
+      res.status = FitStatus::kTooFewData;
+      res.message = "one-step LS: " + std::to_string(res.num_rows) + " rows for " +
+                    std::to_string(P) + " unknowns (the trials are too short for the knot spacing)";
+      continue;
+    }
+    res.psi = fit.theta.segment(col0[d], P);
+    res.psi_covariance = fit.covariance.block(col0[d], col0[d], P, P);
+    res.residuals = fit.residuals.segment(row0[d], res.num_rows);
+    res.cost = res.residuals.squaredNorm() / res.num_rows;
+    res.condition_number = fit.condition_number;
+    // This DOF's own conditioning and non-identifiable parameters.
+    const LinearFit own = SolveLeastSquares(R.F, R.Y, nullptr, lso);
+    res.condition_number = own.condition_number;
+    for (int c : own.not_identifiable) {
+      res.not_identifiable.push_back(c == 0 ? std::string(model::param::kMass) : res.names[R.free[c - 1]]);
+    }
+    if (!(res.psi[0] > 0) || own.status != FitStatus::kOk) {
+      res.status = FitStatus::kIllConditioned;
+      std::string why = own.status != FitStatus::kOk ? own.message : "gamma = 1/m is not positive";
+      if (R.F.col(0).cwiseAbs().maxCoeff() == 0) {
+        why = "no force with a known installation coefficient: the model is homogeneous in its "
+              "parameters, η must be known (open water) for at least one mapping (seed 000 §II-A)";
+      }
+      res.message = "one-step LS: " + why +
+                    (res.not_identifiable.empty()
+                         ? std::string()
+                         : "; not identifiable: " + [&] {
+                             std::string s;
+                             for (const auto& n : res.not_identifiable) s += (s.empty() ? "" : ", ") + n;
+                             return s;
+                           }());
+      continue;
+    }
+    PsiToPhysical(model, dofs[d].theta, R.free, res.psi, res.psi_covariance, &res.theta,
+                  &res.covariance);
+    res.state[0] = ParameterState::kEstimated;
+    for (int j : R.free) res.state[j] = ParameterState::kEstimated;
+    const std::vector<ParameterEstimate> all = MakeEstimates(res.names, res.theta, res.covariance, res.state);
+    for (std::size_t j = 0; j < all.size(); ++j) {
+      if (res.state[j] == ParameterState::kEstimated) res.estimates.push_back(all[j]);
+    }
+    // Seed coefficients when the model is the standard one.
+    auto find_free = [&](const char* name) {
+      for (std::size_t c = 0; c < R.free.size(); ++c) {
+        if (res.names[R.free[c]] == name) return static_cast<int>(c) + 1;
+      }
+      return -1;
+    };
+    const int ik = find_free(model::param::kLinearDrag), iq = find_free(model::param::kQuadraticDrag),
+              ib = find_free(model::param::kBias);
+    if (ik > 0 && iq > 0 && ib > 0) {
+      res.standard = true;
+      res.seed.alpha = -res.psi[ik];
+      res.seed.beta = -res.psi[iq];
+      res.seed.gamma = res.psi[0];
+      res.seed.delta = res.psi[ib];
+      Eigen::MatrixXd S = Eigen::MatrixXd::Zero(4, P);  // [α β γ δ] = S·ψ
+      S(0, ik) = -1;
+      S(1, iq) = -1;
+      S(2, 0) = 1;
+      S(3, ib) = 1;
+      res.seed_covariance = S * res.psi_covariance * S.transpose();
+    }
+    res.status = FitStatus::kOk;
+    std::ostringstream os;
+    os.precision(4);
+    os << "one-step integral LS on " << res.num_rows << " rows, condition number "
+       << res.condition_number;
+    res.message = os.str();
+  }
+  return results;
+}
+
+}  // namespace uuvplan::ident

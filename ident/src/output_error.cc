@@ -1,0 +1,515 @@
+#include "uuvplan/ident/output_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "uuvplan/ident/least_squares.h"
+#include "uuvplan/ident/significance.h"
+#include "uuvplan/model/effects.h"
+#include "uuvplan/model/simulator.h"
+
+namespace uuvplan::ident {
+namespace {
+
+std::string Fmt(double v, int precision = 4) {
+  std::ostringstream os;
+  os.precision(precision);
+  os << v;
+  return os.str();
+}
+
+// One trial's measurements on a common time grid.
+struct TrialProblem {
+  const TrialData* trial = nullptr;
+  std::vector<double> times;         // sorted union of the used sample times
+  std::vector<int> pos_at, vel_at;   // measurement k is at times[pos_at[k]]
+  std::vector<double> pos_y, vel_y;
+  double pos_w = 0.0, vel_w = 0.0;   // 1/σ
+  TrialInitialState init;
+  int z_chi0 = -1, z_xi0 = -1;       // indices in z
+  int r_offset = 0;                  // first residual of this trial
+  int num_residuals() const { return static_cast<int>(pos_y.size() + vel_y.size()); }
+};
+
+bool Admissible(const model::DofModel& model, const Eigen::VectorXd& theta) {
+  const auto& names = model.parameter_names();
+  for (int j = 0; j < model.num_parameters(); ++j) {
+    const std::string& n = names[j];
+    if ((n == model::param::kMass || n == model::param::kLag) && !(theta[j] > 0)) return false;
+    if ((n == model::param::kDeadzone || n == model::param::kSensorDelay) && !(theta[j] >= 0)) return false;
+    if (!std::isfinite(theta[j])) return false;
+  }
+  return true;
+}
+
+class Problem {
+ public:
+  Problem(const model::DofModel& model, const std::vector<const TrialData*>& trials,
+          const Eigen::VectorXd& theta, const std::vector<int>& free,
+          const std::vector<TrialInitialState>* initial, const OutputErrorOptions& o)
+      : model_(model), theta_(theta), free_(free), o_(o) {
+    int z = static_cast<int>(free.size());
+    int r = 0;
+    for (const TrialData* d : trials) {
+      TrialProblem tp;
+      tp.trial = d;
+      const bool use_pos = o.use_position && d->has_position();
+      const bool use_vel = o.use_velocity && d->has_velocity();
+      if (!use_pos && !use_vel) continue;
+      std::vector<double> times;
+      if (use_pos) times.insert(times.end(), d->position.t.begin(), d->position.t.end());
+      if (use_vel) times.insert(times.end(), d->velocity.t.begin(), d->velocity.t.end());
+      std::sort(times.begin(), times.end());
+      times.erase(std::unique(times.begin(), times.end()), times.end());
+      // Simulation starts at t = 0; samples before it (none after PrepareTrial) are dropped.
+      times.erase(times.begin(), std::lower_bound(times.begin(), times.end(), 0.0));
+      tp.times = times;
+      auto index_of = [&](double t) {
+        return static_cast<int>(std::lower_bound(times.begin(), times.end(), t) - times.begin());
+      };
+      if (use_pos) {
+        tp.pos_w = 1.0 / (d->position_sigma > 0 ? d->position_sigma : 1.0);
+        for (std::size_t k = 0; k < d->position.size(); ++k) {
+          if (d->position.t[k] < 0) continue;
+          tp.pos_at.push_back(index_of(d->position.t[k]));
+          tp.pos_y.push_back(d->position.y[k]);
+        }
+      }
+      if (use_vel) {
+        tp.vel_w = 1.0 / (d->velocity_sigma > 0 ? d->velocity_sigma : 1.0);
+        for (std::size_t k = 0; k < d->velocity.size(); ++k) {
+          if (d->velocity.t[k] < 0) continue;
+          tp.vel_at.push_back(index_of(d->velocity.t[k]));
+          tp.vel_y.push_back(d->velocity.y[k]);
+        }
+      }
+      // Initial state: given, or guessed from the smoothed data.
+      const TrialInitialState* given = nullptr;
+      if (initial) {
+        for (const auto& s : *initial) {
+          if (s.trial == d->index) given = &s;
+        }
+      }
+      tp.init.trial = d->index;
+      if (given) {
+        tp.init = *given;
+      } else {
+        tp.init.chi0 = use_pos ? d->position.y.front() : 0.0;
+        tp.init.chi0_estimated = use_pos;
+        bool estimate_xi0 = o.initial_velocity == InitialVelocity::kEstimate ||
+                            (o.initial_velocity == InitialVelocity::kAuto && !d->starts_at_rest);
+        tp.init.xi0_estimated = estimate_xi0;
+        const double v0 = d->velocity_estimate.value.empty() ? 0.0 : EstimatedVelocity(*d, 0.0);
+        tp.init.xi0 = estimate_xi0 && std::isfinite(v0) ? v0 : 0.0;
+        if (use_pos && d->velocity_estimate.size() > 0 && std::isfinite(d->velocity_estimate.value.front())) {
+          // Smoothed position at t = 0 from the SG end polynomial is not kept; the first
+          // sample is a fine start for a parameter that enters linearly.
+        }
+      }
+      if (tp.init.chi0_estimated) tp.z_chi0 = z++;
+      if (tp.init.xi0_estimated) tp.z_xi0 = z++;
+      tp.r_offset = r;
+      r += tp.num_residuals();
+      trials_.push_back(std::move(tp));
+    }
+    num_z_ = z;
+    num_r_ = r;
+  }
+
+  int num_z() const { return num_z_; }
+  int num_r() const { return num_r_; }
+  const std::vector<TrialProblem>& trials() const { return trials_; }
+
+  Eigen::VectorXd InitialZ() const {
+    Eigen::VectorXd z(num_z_);
+    for (std::size_t c = 0; c < free_.size(); ++c) z[c] = theta_[free_[c]];
+    for (const TrialProblem& tp : trials_) {
+      if (tp.z_chi0 >= 0) z[tp.z_chi0] = tp.init.chi0;
+      if (tp.z_xi0 >= 0) z[tp.z_xi0] = tp.init.xi0;
+    }
+    return z;
+  }
+
+  Eigen::VectorXd Theta(const Eigen::VectorXd& z) const {
+    Eigen::VectorXd theta = theta_;
+    for (std::size_t c = 0; c < free_.size(); ++c) theta[free_[c]] = z[c];
+    return theta;
+  }
+
+  std::vector<TrialInitialState> Initial(const Eigen::VectorXd& z) const {
+    std::vector<TrialInitialState> out;
+    for (const TrialProblem& tp : trials_) {
+      TrialInitialState s = tp.init;
+      if (tp.z_chi0 >= 0) s.chi0 = z[tp.z_chi0];
+      if (tp.z_xi0 >= 0) s.xi0 = z[tp.z_xi0];
+      out.push_back(s);
+    }
+    return out;
+  }
+
+  /// Residuals r = w·(y − ŷ) and, when J is given, J = ∂r/∂z. False if a simulation fails.
+  bool Evaluate(const Eigen::VectorXd& z, Eigen::VectorXd* r, Eigen::MatrixXd* J) const {
+    const Eigen::VectorXd theta = Theta(z);
+    if (!Admissible(model_, theta)) return false;
+    r->resize(num_r_);
+    if (J) J->setZero(num_r_, num_z_);
+    model::SimulationOptions so;
+    so.step_s = o_.step_s;
+    so.sensitivities = J != nullptr;
+    for (const TrialProblem& tp : trials_) {
+      Eigen::VectorXd x0 = Eigen::VectorXd::Zero(model_.num_states());
+      x0[0] = tp.z_chi0 >= 0 ? z[tp.z_chi0] : tp.init.chi0;
+      x0[1] = tp.z_xi0 >= 0 ? z[tp.z_xi0] : tp.init.xi0;
+      const model::TrialConditions c = tp.trial->conditions();
+      const model::Trajectory tr = model::SimulateMeasured(model_, theta, c, tp.times, so, &x0);
+      if (!tr.x.allFinite()) return false;
+      model::Trajectory tr_xi;
+      double h_xi = 0.0;
+      if (J && tp.z_xi0 >= 0) {
+        h_xi = 1e-6 * std::max(1e-3, std::abs(x0[1]));
+        Eigen::VectorXd x1 = x0;
+        x1[1] += h_xi;
+        model::SimulationOptions plain = so;
+        plain.sensitivities = false;
+        tr_xi = model::SimulateMeasured(model_, theta, c, tp.times, plain, &x1);
+      }
+      int row = tp.r_offset;
+      auto fill = [&](const std::vector<int>& at, const std::vector<double>& y, double w, int s) {
+        for (std::size_t k = 0; k < y.size(); ++k, ++row) {
+          const int i = at[k];
+          (*r)[row] = w * (y[k] - tr.x(i, s));
+          if (!J) continue;
+          for (std::size_t c2 = 0; c2 < free_.size(); ++c2) (*J)(row, c2) = -w * tr.S[s](i, free_[c2]);
+          if (tp.z_chi0 >= 0 && s == 0) (*J)(row, tp.z_chi0) = -w;
+          if (tp.z_xi0 >= 0) (*J)(row, tp.z_xi0) = -w * (tr_xi.x(i, s) - tr.x(i, s)) / h_xi;
+        }
+      };
+      fill(tp.pos_at, tp.pos_y, tp.pos_w, 0);
+      fill(tp.vel_at, tp.vel_y, tp.vel_w, 1);
+    }
+    return r->allFinite() && (!J || J->allFinite());
+  }
+
+ private:
+  const model::DofModel& model_;
+  Eigen::VectorXd theta_;
+  std::vector<int> free_;
+  OutputErrorOptions o_;
+  std::vector<TrialProblem> trials_;
+  int num_z_ = 0, num_r_ = 0;
+};
+
+// Mean lag-1 autocorrelation of the residuals within each trial's position and velocity parts.
+double ResidualLag1(const Problem& p, const Eigen::VectorXd& r) {
+  double sum = 0.0;
+  int count = 0;
+  for (const TrialProblem& tp : p.trials()) {
+    int off = tp.r_offset;
+    for (std::size_t len : {tp.pos_y.size(), tp.vel_y.size()}) {
+      if (len >= 10) {
+        const Eigen::VectorXd seg = r.segment(off, len);
+        const Eigen::VectorXd c = seg.array() - seg.mean();
+        const double den = c.squaredNorm();
+        if (den > 0) {
+          sum += c.head(len - 1).dot(c.tail(len - 1)) / den;
+          ++count;
+        }
+      }
+      off += static_cast<int>(len);
+    }
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
+// Newey–West bandwidth from the data: twice the first lag where the residual autocorrelation
+// falls below 2/√n, at most n/5.
+int DataDrivenLags(const Eigen::VectorXd& r) {
+  const int n = static_cast<int>(r.size());
+  if (n < 10) return 1;
+  const Eigen::VectorXd c = r.array() - r.mean();
+  const double den = c.squaredNorm();
+  if (!(den > 0)) return 1;
+  const double bound = 2.0 / std::sqrt(static_cast<double>(n));
+  for (int l = 1; l < n / 5; ++l) {
+    const double rho = c.head(n - l).dot(c.tail(n - l)) / den;
+    if (std::abs(rho) < bound) return std::max(1, 2 * l);
+  }
+  return n / 5;
+}
+
+}  // namespace
+
+bool OutputErrorOptions::IsValid(std::string* error) const {
+  if (max_iterations < 1 || !(tolerance > 0) || !(step_s > 0) || !(max_condition > 1)) {
+    if (error) *error = "OutputErrorOptions: max_iterations >= 1, tolerance > 0, step_s > 0, max_condition > 1";
+    return false;
+  }
+  if (!use_position && !use_velocity) {
+    if (error) *error = "OutputErrorOptions: use_position or use_velocity must be true";
+    return false;
+  }
+  return true;
+}
+
+std::string_view OutputErrorStatusName(OutputErrorStatus s) {
+  switch (s) {
+    case OutputErrorStatus::kConverged: return "converged";
+    case OutputErrorStatus::kMaxIterations: return "max_iterations";
+    case OutputErrorStatus::kIllConditioned: return "ill_conditioned";
+    case OutputErrorStatus::kFailed: return "failed";
+  }
+  return "failed";
+}
+
+namespace {
+
+struct LmOutcome {
+  Eigen::VectorXd z;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  int iterations = 0;
+  bool converged = false;
+  bool failed = false;
+  std::string message;
+};
+
+LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputErrorOptions& o) {
+  LmOutcome out;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  if (!p.Evaluate(z, &r, &J)) {
+    out.failed = true;
+    out.message = "the simulation fails at the starting parameters";
+    out.z = z;
+    return out;
+  }
+  double cost = 0.5 * r.squaredNorm();
+  double lambda = 1e-3;
+  const int P = p.num_z();
+  for (int it = 0; it < o.max_iterations; ++it) {
+    out.iterations = it + 1;
+    const Eigen::MatrixXd A = J.transpose() * J;
+    const Eigen::VectorXd g = J.transpose() * r;
+    const Eigen::VectorXd d = A.diagonal().cwiseMax(1e-300);
+    bool accepted = false;
+    double rel_step = 0.0, rel_decrease = 0.0;
+    for (int tries = 0; tries < 20; ++tries) {
+      Eigen::MatrixXd M = A;
+      M.diagonal() += lambda * d;
+      const Eigen::VectorXd step = -M.ldlt().solve(g);
+      if (!step.allFinite()) {
+        lambda *= 10;
+        continue;
+      }
+      const Eigen::VectorXd z_new = z + step;
+      Eigen::VectorXd r_new;
+      if (!p.Evaluate(z_new, &r_new, nullptr)) {
+        lambda *= 10;
+        continue;
+      }
+      const double cost_new = 0.5 * r_new.squaredNorm();
+      if (cost_new <= cost) {
+        rel_decrease = (cost - cost_new) / std::max(cost, 1e-300);
+        rel_step = 0.0;
+        for (int j = 0; j < P; ++j) {
+          // Step relative to the parameter's σ-scale (√ of A's diagonal is 1/σ-ish).
+          rel_step = std::max(rel_step, std::abs(step[j]) * std::sqrt(d[j]));
+        }
+        z = z_new;
+        cost = cost_new;
+        lambda = std::max(1e-12, lambda / 3);
+        accepted = true;
+        break;
+      }
+      lambda *= 4;
+    }
+    if (!accepted) {
+      // No decrease in any direction tried: at the minimum to numerical precision.
+      out.converged = true;
+      break;
+    }
+    if (!p.Evaluate(z, &r, &J)) {
+      out.failed = true;
+      out.message = "the simulation fails during the iterations";
+      break;
+    }
+    // Converged when the cost no longer decreases and the step is far below one σ.
+    if (rel_decrease < o.tolerance || rel_step < 1e-6) {
+      out.converged = true;
+      break;
+    }
+  }
+  out.z = z;
+  out.r = r;
+  out.J = J;
+  return out;
+}
+
+}  // namespace
+
+OutputErrorResult OutputErrorFit(const model::DofModel& model,
+                                 const std::vector<const TrialData*>& trials,
+                                 const Eigen::VectorXd& theta0,
+                                 const std::vector<ParameterState>& state0,
+                                 const OutputErrorOptions& o) {
+  OutputErrorResult res;
+  const int np = model.num_parameters();
+  res.names = model.parameter_names();
+  res.theta = theta0;
+  res.state = state0;
+  res.state.resize(np, ParameterState::kEstimated);
+  res.covariance = Eigen::MatrixXd::Zero(np, np);
+  res.crb = Eigen::MatrixXd::Zero(np, np);
+  if (!Admissible(model, theta0)) {
+    res.status = OutputErrorStatus::kFailed;
+    res.message = "output error: the starting parameters are not admissible (m must be > 0)";
+    return res;
+  }
+  std::vector<double> before_value(np, 0.0), before_sigma(np, 0.0);
+  Eigen::VectorXd theta = theta0;
+  std::vector<TrialInitialState> initial;
+  bool have_initial = false;
+  while (true) {
+    std::vector<int> free;
+    for (int j = 0; j < np; ++j) {
+      if (res.state[j] == ParameterState::kEstimated) free.push_back(j);
+    }
+    const Problem p(model, trials, theta, free, have_initial ? &initial : nullptr, o);
+    if (p.num_r() <= p.num_z()) {
+      res.status = OutputErrorStatus::kFailed;
+      res.message = "output error: " + std::to_string(p.num_r()) + " measurements for " +
+                    std::to_string(p.num_z()) + " unknowns";
+      return res;
+    }
+    LmOutcome lm = LevenbergMarquardt(p, p.InitialZ(), o);
+    res.iterations += lm.iterations;
+    if (lm.failed) {
+      res.status = OutputErrorStatus::kFailed;
+      res.message = "output error: " + lm.message;
+      return res;
+    }
+    theta = p.Theta(lm.z);
+    initial = p.Initial(lm.z);
+    have_initial = true;
+    res.num_residuals = p.num_r();
+    res.cost = 0.5 * lm.r.squaredNorm();
+    res.sigma2 = lm.r.squaredNorm() / (p.num_r() - p.num_z());
+    // Covariance of z: (JᵀJ)⁻¹ (CRB form), scaled by s²; HAC when the residuals are coloured.
+    LeastSquaresOptions lso;
+    lso.covariance = CovarianceKind::kKnownNoise;
+    lso.max_condition = o.max_condition;
+    const LinearFit lin = SolveLeastSquares(lm.J, lm.r, nullptr, lso);
+    res.condition_number = lin.condition_number;
+    res.not_identifiable.clear();
+    for (int c : lin.not_identifiable) {
+      res.not_identifiable.push_back(c < static_cast<int>(free.size()) ? res.names[free[c]]
+                                                                        : "initial state");
+    }
+    const Eigen::MatrixXd crb_z = lin.covariance;
+    res.residual_lag1 = ResidualLag1(p, lm.r);
+    Eigen::MatrixXd cov_z = res.sigma2 * crb_z;
+    res.hac_covariance = false;
+    if (res.residual_lag1 > o.whiteness_threshold) {
+      std::vector<int> groups(p.num_r());
+      for (const TrialProblem& tp : p.trials()) {
+        for (int k = 0; k < tp.num_residuals(); ++k) groups[tp.r_offset + k] = tp.trial->index;
+      }
+      const int lags = DataDrivenLags(lm.r);
+      const Eigen::MatrixXd hac = NeweyWestCovariance(lm.J, lm.r, nullptr, lags, &groups);
+      // Never report less than the white-noise covariance.
+      cov_z = hac;
+      for (int j = 0; j < cov_z.rows(); ++j) {
+        if (hac(j, j) < res.sigma2 * crb_z(j, j)) {
+          cov_z = res.sigma2 * crb_z;
+          break;
+        }
+      }
+      res.hac_covariance = true;
+    }
+    res.covariance.setZero();
+    res.crb.setZero();
+    for (std::size_t a = 0; a < free.size(); ++a) {
+      for (std::size_t b = 0; b < free.size(); ++b) {
+        res.covariance(free[a], free[b]) = cov_z(a, b);
+        res.crb(free[a], free[b]) = crb_z(a, b);
+      }
+    }
+    res.status = lin.status != FitStatus::kOk ? OutputErrorStatus::kIllConditioned
+                 : lm.converged                ? OutputErrorStatus::kConverged
+                                               : OutputErrorStatus::kMaxIterations;
+    if (!o.prune_insignificant || res.status != OutputErrorStatus::kConverged) break;
+    int worst = -1;
+    double worst_pe = kInsignificantPercentileError;
+    for (int j : free) {
+      if (std::find(o.prunable.begin(), o.prunable.end(), res.names[j]) == o.prunable.end()) continue;
+      const double pe = PercentileError(theta[j], std::sqrt(res.covariance(j, j)));
+      if (pe > worst_pe) {
+        worst_pe = pe;
+        worst = j;
+      }
+    }
+    if (worst < 0 || free.size() <= 1) break;
+    before_value[worst] = theta[worst];
+    before_sigma[worst] = std::sqrt(res.covariance(worst, worst));
+    res.notes.push_back(res.names[worst] + " = " + Fmt(theta[worst]) + " ± " +
+                        Fmt(before_sigma[worst]) + " (" + Fmt(worst_pe, 3) +
+                        "% > 51.02%): insignificant at 95%, dropped and the rest refitted");
+    theta[worst] = 0.0;
+    res.state[worst] = ParameterState::kDropped;
+  }
+  res.theta = theta;
+  res.initial = initial;
+  std::vector<ParameterEstimate> all = MakeEstimates(res.names, res.theta, res.covariance, res.state);
+  for (int j = 0; j < np; ++j) {
+    if (res.state[j] == ParameterState::kFixed) continue;
+    if (res.state[j] == ParameterState::kDropped) {
+      all[j].value_before_drop = before_value[j];
+      all[j].sigma_before_drop = before_sigma[j];
+      all[j].significant = false;
+    }
+    res.estimates.push_back(all[j]);
+  }
+  if (res.hac_covariance) {
+    res.notes.push_back("output-error residuals are not white (mean lag-1 autocorrelation " +
+                        Fmt(res.residual_lag1, 3) +
+                        "): model error or coloured noise; σ from a Newey–West sandwich");
+  }
+  std::ostringstream os;
+  os.precision(4);
+  os << "output error: " << OutputErrorStatusName(res.status) << " after " << res.iterations
+     << " iterations on " << res.num_residuals << " measurements, s² = " << res.sigma2;
+  if (!res.not_identifiable.empty()) {
+    os << "; not identifiable: ";
+    for (std::size_t i = 0; i < res.not_identifiable.size(); ++i) os << (i ? ", " : "") << res.not_identifiable[i];
+  }
+  res.message = os.str();
+  return res;
+}
+
+Eigen::MatrixXd CramerRaoBound(const model::DofModel& model,
+                               const std::vector<const TrialData*>& trials,
+                               const Eigen::VectorXd& theta,
+                               const std::vector<ParameterState>& state,
+                               const std::vector<TrialInitialState>& initial,
+                               const OutputErrorOptions& o) {
+  const int np = model.num_parameters();
+  std::vector<int> free;
+  for (int j = 0; j < np; ++j) {
+    if (j >= static_cast<int>(state.size()) || state[j] == ParameterState::kEstimated) free.push_back(j);
+  }
+  const Problem p(model, trials, theta, free, initial.empty() ? nullptr : &initial, o);
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(np, np);
+  if (!p.Evaluate(p.InitialZ(), &r, &J)) return out;
+  const Eigen::MatrixXd M = J.transpose() * J;  // Fisher information with r scaled by 1/σ
+  const Eigen::MatrixXd C = M.ldlt().solve(Eigen::MatrixXd::Identity(M.rows(), M.cols()));
+  for (std::size_t a = 0; a < free.size(); ++a) {
+    for (std::size_t b = 0; b < free.size(); ++b) out(free[a], free[b]) = C(a, b);
+  }
+  return out;
+}
+
+}  // namespace uuvplan::ident

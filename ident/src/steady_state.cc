@@ -1,0 +1,268 @@
+#include "uuvplan/ident/steady_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "uuvplan/ident/regression.h"
+#include "uuvplan/ident/significance.h"
+#include "uuvplan/model/mapping.h"
+
+namespace uuvplan::ident {
+namespace {
+
+std::string Fmt(double v, int precision = 4) {
+  std::ostringstream os;
+  os.precision(precision);
+  os << v;
+  return os.str();
+}
+
+// dF/dξ of the whole model at a context (for the effective variance of a row).
+double ForceSlope(const model::DofModel& model, const model::TermContext& c,
+                  const Eigen::VectorXd& theta) {
+  double d = 0.0;
+  std::vector<double> J(model.num_parameters() + 1);
+  for (std::size_t j = 0; j < model.terms().size(); ++j) {
+    d += model.terms()[j]->Partials(c, theta.data() + model.term_offset(int(j)), J.data()).d_xi;
+  }
+  return d;
+}
+
+model::TermContext PointContext(const model::DofModel& model, const SteadyPoint& p,
+                                const Eigen::VectorXd& theta) {
+  model::TermContext c;
+  c.xi = p.xi;
+  c.phi = model.ActuatorInput(p.phi, theta.data());
+  c.mapping = p.mapping;
+  c.t_campaign = p.t_campaign;
+  c.ballast_steps = p.ballast_steps;
+  c.velocities = p.velocities;
+  c.velocities[model::Index(model.dof())] = p.xi;
+  return c;
+}
+
+}  // namespace
+
+bool SteadyStateOptions::IsValid(std::string* error) const {
+  if (!detection.IsValid(error)) return false;
+  if (!(max_condition > 1) || reweight_iterations < 0) {
+    if (error) *error = "SteadyStateOptions: max_condition > 1 and reweight_iterations >= 0";
+    return false;
+  }
+  return true;
+}
+
+std::string_view SteadyStatusName(SteadyStatus s) {
+  switch (s) {
+    case SteadyStatus::kOk: return "ok";
+    case SteadyStatus::kTooFewSegments: return "too_few_segments";
+    case SteadyStatus::kIllConditioned: return "ill_conditioned";
+    case SteadyStatus::kNotExcited: return "not_excited";
+  }
+  return "ok";
+}
+
+bool SteadyStateResult::Estimated(const std::string& name) const {
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == name) return state[i] == ParameterState::kEstimated && status == SteadyStatus::kOk;
+  }
+  return false;
+}
+
+std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetectionOptions& o,
+                                      double force_tolerance,
+                                      const std::vector<std::pair<double, double>>* user) {
+  std::vector<SteadyPoint> out;
+  const std::vector<ForcePiece> pieces = ConstantForcePieces(trial, force_tolerance);
+  const bool from_position = trial.has_position();
+  const Signal& s = from_position ? trial.position : trial.velocity;
+  const double sigma = from_position ? trial.position_sigma : trial.velocity_sigma;
+  std::vector<SteadySegment> segments;
+  if (user && !user->empty()) {
+    for (const auto& [a, b] : *user) {
+      // The piece containing the window's middle; the window must not span a force change.
+      const double mid = 0.5 * (a + b);
+      for (std::size_t p = 0; p < pieces.size(); ++p) {
+        if (pieces[p].t0 <= mid && mid < pieces[p].t1) {
+          SteadySegment seg;
+          seg.piece = static_cast<int>(p);
+          seg.user_marked = true;
+          const double lo = std::max(a, pieces[p].t0), hi = std::min(b, pieces[p].t1);
+          seg.fit = from_position ? ConstantSpeedFit(s, lo, hi, sigma) : MeanSpeedFit(s, lo, hi, sigma);
+          if (seg.fit.ok) segments.push_back(seg);
+        }
+      }
+    }
+  } else {
+    segments = DetectSteadySegments(s, from_position, pieces, o, sigma);
+  }
+  for (const SteadySegment& seg : segments) {
+    const ForcePiece& piece = pieces[seg.piece];
+    SteadyPoint p;
+    p.trial = trial.index;
+    p.t0 = seg.fit.t0;
+    p.t1 = seg.fit.t1;
+    p.xi = seg.fit.speed;
+    p.sigma_xi = seg.fit.sigma;
+    p.phi = piece.force;
+    p.mapping = piece.mapping;
+    p.ballast_steps = trial.ballast_steps;
+    const double mid = 0.5 * (p.t0 + p.t1);
+    p.t_campaign = trial.start_time + mid;
+    if (trial.aux) trial.aux->At(mid, &p.velocities);
+    p.user_marked = seg.user_marked;
+    p.from_position = from_position;
+    out.push_back(p);
+  }
+  return out;
+}
+
+SteadyStateResult SteadyStateFit(const model::DofModel& model,
+                                 const std::vector<SteadyPoint>& points,
+                                 const Eigen::VectorXd& theta_in, const SteadyStateOptions& o) {
+  SteadyStateResult r;
+  const int np = model.num_parameters();
+  r.names = model.parameter_names();
+  r.theta = theta_in;
+  r.covariance = Eigen::MatrixXd::Zero(np, np);
+  r.state.assign(np, ParameterState::kFixed);
+  r.num_points = static_cast<int>(points.size());
+  const int n = r.num_points;
+
+  // Rows of the regression at the given theta (non-linear terms evaluated at it).
+  Eigen::MatrixXd Hall(n, np);
+  Eigen::VectorXd y(n);
+  std::vector<double> h(np);
+  for (int i = 0; i < n; ++i) {
+    double h0 = 0.0;
+    EvaluateRegressor(model, PointContext(model, points[i], theta_in), theta_in, h.data(), &h0);
+    for (int j = 0; j < np; ++j) Hall(i, j) = h[j];
+    y[i] = -h0;  // 0 = h·θ + h0  ⇒  −h0 = h·θ  (eqs. 7–10)
+  }
+  std::vector<int> cols;
+  for (int j : LinearParameters(model)) {
+    if (n > 0 && Hall.col(j).cwiseAbs().maxCoeff() > 0) {
+      cols.push_back(j);
+    } else {
+      r.not_excited.push_back(r.names[j]);
+    }
+  }
+  if (!r.not_excited.empty()) {
+    std::string list;
+    for (const auto& s : r.not_excited) list += (list.empty() ? "" : ", ") + s;
+    r.notes.push_back("not excited by any steady segment (kept at their given values): " + list);
+  }
+  if (cols.empty()) {
+    r.status = SteadyStatus::kNotExcited;
+    r.message = n == 0 ? "no steady-state segment found" : "no parameter is excited by the steady segments";
+    return r;
+  }
+  if (n < static_cast<int>(cols.size()) + 1) {
+    r.status = SteadyStatus::kTooFewSegments;
+    std::string list;
+    for (int j : cols) list += (list.empty() ? "" : ", ") + r.names[j];
+    r.message = "too few steady-state segments: " + std::to_string(n) + " found for " +
+                std::to_string(cols.size()) + " unknowns (" + list + "); at least " +
+                std::to_string(cols.size() + 1) +
+                " are needed (add constant-force legs at other speeds, each long enough to settle)";
+    for (int j : cols) r.state[j] = ParameterState::kFixed;
+    return r;
+  }
+
+  LeastSquaresOptions lso;
+  lso.covariance = o.weighting == SteadyStateOptions::Weighting::kNone ? o.covariance
+                                                                       : o.covariance;
+  lso.max_condition = o.max_condition;
+  std::vector<char> dropped(np, 0);
+  std::vector<double> before_value(np, 0.0), before_sigma(np, 0.0);
+  Eigen::VectorXd theta = theta_in;
+  LinearFit fit;
+  while (true) {
+    const int p = static_cast<int>(cols.size());
+    Eigen::MatrixXd H(n, p);
+    for (int c = 0; c < p; ++c) H.col(c) = Hall.col(cols[c]);
+    // y − (dropped columns at 0) = y: dropped parameters contribute nothing.
+    Eigen::VectorXd w = Eigen::VectorXd::Ones(n);
+    LeastSquaresOptions first = lso;
+    if (o.weighting == SteadyStateOptions::Weighting::kVelocityVariance) {
+      first.covariance = CovarianceKind::kResidual;
+    }
+    fit = SolveLeastSquares(H, y, nullptr, first);
+    if (o.weighting == SteadyStateOptions::Weighting::kVelocityVariance) {
+      for (int it = 0; it < std::max(1, o.reweight_iterations); ++it) {
+        for (int c = 0; c < p; ++c) theta[cols[c]] = fit.theta[c];
+        for (int i = 0; i < n; ++i) {
+          const double slope = ForceSlope(model, PointContext(model, points[i], theta), theta);
+          const double var = slope * slope * points[i].sigma_xi * points[i].sigma_xi;
+          w[i] = var > 0 ? 1.0 / var : 1.0;
+        }
+        fit = SolveLeastSquares(H, y, &w, lso);
+      }
+    }
+    for (int c = 0; c < p; ++c) theta[cols[c]] = fit.theta[c];
+    if (!o.prune_insignificant || fit.status != FitStatus::kOk) break;
+    // Seed 000 §IV-D: drop the prunable parameter with the largest percentile error > 51.02%.
+    int worst = -1;
+    double worst_pe = kInsignificantPercentileError;
+    for (int c = 0; c < p; ++c) {
+      const std::string& name = r.names[cols[c]];
+      if (std::find(o.prunable.begin(), o.prunable.end(), name) == o.prunable.end()) continue;
+      const double pe = PercentileError(fit.theta[c], std::sqrt(fit.covariance(c, c)));
+      if (pe > worst_pe) {
+        worst_pe = pe;
+        worst = c;
+      }
+    }
+    if (worst < 0 || p == 1) break;
+    const int j = cols[worst];
+    dropped[j] = 1;
+    before_value[j] = fit.theta[worst];
+    before_sigma[j] = std::sqrt(fit.covariance(worst, worst));
+    theta[j] = 0.0;
+    r.notes.push_back(r.names[j] + " = " + Fmt(before_value[j]) + " ± " + Fmt(before_sigma[j]) +
+                      " has a percentile error of " + Fmt(worst_pe, 3) +
+                      "% > 51.02%: insignificant at 95%, dropped and the rest refitted "
+                      "(seed 000 §IV-D)");
+    cols.erase(cols.begin() + worst);
+  }
+  r.theta = theta;
+  r.sigma2 = fit.sigma2;
+  r.condition_number = fit.condition_number;
+  for (int i = 0; i < n; ++i) r.residuals.push_back(fit.residuals[i]);
+  for (std::size_t c = 0; c < cols.size(); ++c) {
+    r.state[cols[c]] = ParameterState::kEstimated;
+    for (std::size_t d = 0; d < cols.size(); ++d) r.covariance(cols[c], cols[d]) = fit.covariance(c, d);
+  }
+  for (int j = 0; j < np; ++j) {
+    if (dropped[j]) r.state[j] = ParameterState::kDropped;
+  }
+  for (int j : fit.not_identifiable) r.not_identifiable.push_back(r.names[cols[j]]);
+  std::vector<ParameterEstimate> all = MakeEstimates(r.names, r.theta, r.covariance, r.state);
+  for (int j = 0; j < np; ++j) {
+    if (r.state[j] == ParameterState::kFixed) continue;
+    if (r.state[j] == ParameterState::kDropped) {
+      all[j].value_before_drop = before_value[j];
+      all[j].sigma_before_drop = before_sigma[j];
+      all[j].significant = false;
+    }
+    r.estimates.push_back(all[j]);
+  }
+  if (fit.status == FitStatus::kOk) {
+    r.status = SteadyStatus::kOk;
+    r.message = std::to_string(n) + " steady segments, condition number " + Fmt(fit.condition_number, 3);
+  } else {
+    r.status = SteadyStatus::kIllConditioned;
+    r.message = "steady-state regression is ill-conditioned (condition number " +
+                Fmt(fit.condition_number, 3) + "); not identifiable from these segments: " +
+                JoinNames(fit.not_identifiable, [&] {
+                  std::vector<std::string> v;
+                  for (int j : cols) v.push_back(r.names[j]);
+                  return v;
+                }()) +
+                " (add steady legs at other speeds / in the other direction / with other mappings)";
+  }
+  return r;
+}
+
+}  // namespace uuvplan::ident

@@ -1,0 +1,273 @@
+#include "uuvplan/ident/trial_data.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+#include "uuvplan/model/input_error.h"
+
+namespace uuvplan::ident {
+namespace {
+
+using model::Dof;
+using model::Index;
+
+Signal Column(const std::vector<double>& t, const std::vector<double>& col, double offset) {
+  Signal s;
+  if (col.empty()) return s;
+  s.t.reserve(col.size());
+  s.y.reserve(col.size());
+  for (std::size_t i = 0; i < col.size(); ++i) {
+    if (std::isnan(col[i])) continue;
+    s.t.push_back(t[i] - offset);
+    s.y.push_back(col[i]);
+  }
+  return s;
+}
+
+double MedianRate(const Signal& s) {
+  if (s.size() < 2) return 1.0;
+  std::vector<double> steps;
+  for (std::size_t i = 1; i < s.size(); ++i) steps.push_back(s.t[i] - s.t[i - 1]);
+  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+  const double h = steps[steps.size() / 2];
+  return h > 0 ? 1.0 / h : 1.0;
+}
+
+std::string Fmt(double v) {
+  std::ostringstream os;
+  os.precision(4);
+  os << v;
+  return os.str();
+}
+
+
+// Whether the trial starts at rest: the mean of the first velocity samples (at least 0.2 s),
+// or the initial velocity of a quadratic through the first window of positions, is within 3σ
+// of zero. (At the start of a trial from rest the motion is ½·a·t², a quadratic.)
+bool StartsAtRest(const TrialData& d) {
+  if (d.has_velocity()) {
+    const double h = d.velocity.t[1] - d.velocity.t[0];
+    const double t_end = d.velocity.t.front() + std::max(0.2, 5.0 * h);
+    const SpeedFit f = MeanSpeedFit(d.velocity, d.velocity.t.front(), t_end, d.velocity_sigma);
+    return f.ok && std::abs(f.speed) < 3.0 * std::max(f.sigma, 1e-12);
+  }
+  const Signal& p = d.position;
+  const int n = std::min<int>(static_cast<int>(p.size()), std::max(d.sg_window, 7));
+  if (n < 5) return true;
+  Eigen::MatrixXd V(n, 3);
+  Eigen::VectorXd y(n);
+  const double t0 = p.t.front();
+  for (int i = 0; i < n; ++i) {
+    const double u = p.t[i] - t0;
+    V(i, 0) = 1;
+    V(i, 1) = u;
+    V(i, 2) = u * u;
+    y[i] = p.y[i];
+  }
+  const Eigen::Matrix3d N = V.transpose() * V;
+  const Eigen::Vector3d c = N.ldlt().solve(V.transpose() * y);
+  const double sigma = d.position_sigma > 0 ? d.position_sigma
+                                            : (y - V * c).norm() / std::sqrt(std::max(1, n - 3));
+  const double sd = sigma * std::sqrt(N.inverse()(1, 1));
+  return std::abs(c[1]) < 3.0 * sd;
+}
+
+}  // namespace
+
+bool TrialDataOptions::IsValid(std::string* error) const {
+  if (sg_order < 1 || sg_order > 8 || sg_window < 0 || (sg_window > 0 && sg_window % 2 == 0) ||
+      (sg_window > 0 && sg_window < sg_order + 2)) {
+    if (error) *error = "TrialDataOptions: sg_order in [1, 8]; sg_window 0 (auto) or odd >= order + 2";
+    return false;
+  }
+  if (!(gap_factor > 1) || !(force_tolerance >= 0)) {
+    if (error) *error = "TrialDataOptions: gap_factor > 1 and force_tolerance >= 0";
+    return false;
+  }
+  return outliers.IsValid(error);
+}
+
+LogAuxVelocities::LogAuxVelocities(Dof own, std::array<Signal, model::kNumDofs> velocities)
+    : own_(own), velocities_(std::move(velocities)) {}
+
+void LogAuxVelocities::At(double t, std::array<double, model::kNumDofs>* v) const {
+  for (int d = 0; d < model::kNumDofs; ++d) {
+    if (d == Index(own_)) continue;
+    (*v)[d] = velocities_[d].empty() ? 0.0 : Interpolate(velocities_[d].t, velocities_[d].y, t);
+  }
+}
+
+TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehicle& vehicle,
+                       const TrialDataOptions& o) {
+  const model::TrialLog& log = e.log;
+  const Dof dof = e.dof;
+  const std::string dof_name(model::DofName(dof));
+  const std::string where = e.path.empty() ? e.file : e.path;
+  TrialData d;
+  d.index = index;
+  d.name = e.file;
+  d.path = e.path;
+  d.dof = dof;
+  d.use = e.use;
+  d.ballast_steps = e.ballast_steps;
+  if (log.t.empty()) throw model::InputError(where, "no data rows");
+  d.time_offset = log.t.front();
+  d.start_time = e.start + d.time_offset;
+  d.duration = log.t.back() - log.t.front();
+
+  // Force and mapping rows (zero-order hold).
+  if (!log.HasForce(dof)) {
+    throw model::InputError(where, "no column force_" + dof_name +
+                                       ": expected the nominal force of the trial's DOF");
+  }
+  const int default_mapping = e.mapping.empty() ? -1 : vehicle.MappingIndex(e.mapping);
+  if (!e.mapping.empty() && default_mapping < 0) {
+    throw model::InputError(where, "mapping '" + e.mapping + "' is not a mapping of vehicle '" +
+                                       vehicle.name + "'");
+  }
+  std::vector<int> name_to_vehicle(log.mapping_names.size(), -1);
+  for (std::size_t i = 0; i < log.mapping_names.size(); ++i) {
+    name_to_vehicle[i] = vehicle.MappingIndex(log.mapping_names[i]);
+    if (name_to_vehicle[i] < 0) {
+      throw model::InputError(where, "column 'mapping': '" + log.mapping_names[i] +
+                                         "' is not a mapping of vehicle '" + vehicle.name + "'");
+    }
+  }
+  const auto& fcol = log.force[Index(dof)];
+  std::vector<char> used(vehicle.mappings.size(), 0);
+  for (std::size_t i = 0; i < fcol.size(); ++i) {
+    if (std::isnan(fcol[i])) continue;
+    int m = default_mapping;
+    if (!log.mapping.empty() && log.mapping[i] >= 0) m = name_to_vehicle[log.mapping[i]];
+    d.force_t.push_back(log.t[i] - d.time_offset);
+    d.force.push_back(fcol[i]);
+    d.mapping.push_back(m);
+    if (m >= 0) used[m] = 1;
+  }
+  if (d.force.empty()) {
+    throw model::InputError(where, "column force_" + dof_name +
+                                       " has no value (all cells empty or NaN): expected the "
+                                       "nominal force of every command row");
+  }
+  for (std::size_t m = 0; m < used.size(); ++m) {
+    if (used[m]) d.mappings_used.push_back(vehicle.mappings[m].name);
+  }
+  d.input = model::MakeHeldExcitation(d.force_t, d.force, d.mapping, d.duration);
+
+  // Measurements of the DOF.
+  Signal pos = Column(log.t, log.position[Index(dof)], d.time_offset);
+  Signal vel = Column(log.t, log.velocity[Index(dof)], d.time_offset);
+  if (pos.size() < 3 && vel.size() < 3) {
+    const bool any_column = log.HasPosition(dof) || log.HasVelocity(dof);
+    throw model::InputError(where, any_column
+                                       ? "columns pos_" + dof_name + "/vel_" + dof_name +
+                                             " have fewer than 3 samples (all NaN?): expected "
+                                             "measurements of the trial's DOF"
+                                       : "no column pos_" + dof_name + " or vel_" + dof_name +
+                                             ": expected a measurement of the trial's DOF");
+  }
+  const auto sensors = vehicle.sensors.find(dof);
+  const model::DofSensors* spec = sensors == vehicle.sensors.end() ? nullptr : &sensors->second;
+  auto clean = [&](Signal s, double declared, std::vector<Outlier>* outliers, double* sigma,
+                   double* estimated, const char* what) {
+    if (s.size() < 3) return Signal{};
+    if (o.remove_outliers) {
+      *outliers = DetectOutliers(s, o.outliers, declared);
+      if (!outliers->empty()) {
+        d.notes.push_back(std::to_string(outliers->size()) + " " + what + " outlier(s) excluded (first at t = " +
+                          Fmt(outliers->front().t + d.time_offset) + " s, residual " +
+                          Fmt(outliers->front().residual) + ")");
+        s = RemoveSamples(s, *outliers);
+      }
+    }
+    *estimated = NoiseSigmaFromDifferences(s);
+    *sigma = declared > 0 ? declared : *estimated;
+    if (declared > 0 && *estimated > 0 && (*estimated > 3 * declared)) {
+      d.notes.push_back(std::string(what) + " noise estimated from the data (" + Fmt(*estimated) +
+                        ") is more than 3× the declared sensor sigma (" + Fmt(declared) + ")");
+    }
+    return s;
+  };
+  d.position = clean(pos, spec && spec->position ? spec->position->sigma : -1.0,
+                     &d.position_outliers, &d.position_sigma, &d.position_sigma_estimated,
+                     "position");
+  d.velocity = clean(vel, spec && spec->velocity ? spec->velocity->sigma : -1.0,
+                     &d.velocity_outliers, &d.velocity_sigma, &d.velocity_sigma_estimated,
+                     "velocity");
+  const Signal& main = d.has_velocity() ? d.velocity : d.position;
+  d.gaps = FindGaps(main.t, o.gap_factor);
+  if (!d.gaps.empty()) {
+    double longest = 0.0;
+    for (const Gap& g : d.gaps) longest = std::max(longest, g.t1 - g.t0);
+    d.notes.push_back(std::to_string(d.gaps.size()) + " gap(s) in the " +
+                      (d.has_velocity() ? "velocity" : "position") + " samples (longest " +
+                      Fmt(longest) + " s); filters do not cross them");
+  }
+
+  // Velocity estimate (seed 000 §IV-D: Savitzky–Golay, 4th order, 21–41 points).
+  SavitzkyGolayOptions sg;
+  sg.order = o.sg_order;
+  sg.gap_factor = o.gap_factor;
+  if (d.has_velocity()) {
+    sg.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.velocity));
+    d.velocity_estimate = SavitzkyGolay(d.velocity, sg);
+    // The smoothed velocity is the estimate (derivative = acceleration, unused here).
+    d.velocity_from_position = false;
+    d.initial_velocity = d.velocity_estimate.value.front();
+    if (d.has_position()) {
+      SavitzkyGolayOptions sp = sg;
+      sp.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.position));
+      d.initial_position = SavitzkyGolay(d.position, sp).value.front();
+    } else {
+      d.initial_position = std::nan("");
+    }
+  } else {
+    sg.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.position));
+    SmoothedSignal s = SavitzkyGolay(d.position, sg);
+    d.initial_position = s.value.front();
+    d.initial_velocity = std::isfinite(s.derivative.front()) ? s.derivative.front() : 0.0;
+    d.velocity_estimate = s;
+    d.velocity_estimate.value = s.derivative;  // velocity
+    d.velocity_from_position = true;
+  }
+  d.sg_window = sg.window;
+  d.starts_at_rest = StartsAtRest(d);
+  if (d.starts_at_rest) d.initial_velocity = 0.0;
+
+  // Other DOFs' velocities (coupling).
+  std::array<Signal, model::kNumDofs> aux;
+  bool any_aux = false;
+  for (Dof other : model::kAllDofs) {
+    if (other == dof) continue;
+    aux[Index(other)] = Column(log.t, log.velocity[Index(other)], d.time_offset);
+    any_aux = any_aux || !aux[Index(other)].empty();
+  }
+  if (any_aux) d.aux = std::make_unique<LogAuxVelocities>(dof, std::move(aux));
+  for (const std::string& n : log.notes) d.notes.push_back(n);
+  return d;
+}
+
+std::vector<ForcePiece> ConstantForcePieces(const TrialData& d, double tol) {
+  std::vector<ForcePiece> pieces;
+  for (std::size_t i = 0; i < d.force.size(); ++i) {
+    const double f = d.force[i];
+    const int m = d.mapping[i];
+    if (!pieces.empty()) {
+      ForcePiece& last = pieces.back();
+      const double scale = std::max({std::abs(f), std::abs(last.force), 1e-9 / std::max(tol, 1e-300)});
+      if (last.mapping == m && std::abs(f - last.force) <= tol * scale) continue;
+      last.t1 = d.force_t[i];
+    }
+    pieces.push_back({i == 0 ? 0.0 : d.force_t[i], d.duration, f, m});
+  }
+  return pieces;
+}
+
+double EstimatedVelocity(const TrialData& d, double t) {
+  return Interpolate(d.velocity_estimate.t, d.velocity_estimate.value, t);
+}
+
+}  // namespace uuvplan::ident

@@ -1,0 +1,175 @@
+#include "uuvplan/ident/validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "uuvplan/model/simulator.h"
+
+namespace uuvplan::ident {
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}
+
+ResidualAnalysis AnalyzeResiduals(const std::vector<double>& r, int max_lag, int bins,
+                                  double step_s) {
+  ResidualAnalysis a;
+  a.n = static_cast<int>(r.size());
+  a.lag_step_s = step_s;
+  if (a.n == 0) return a;
+  double sum = 0.0, sum2 = 0.0;
+  for (double v : r) {
+    sum += v;
+    sum2 += v * v;
+  }
+  a.mean = sum / a.n;
+  a.rms = std::sqrt(sum2 / a.n);
+  double m2 = 0.0, m3 = 0.0, m4 = 0.0;
+  for (double v : r) {
+    const double c = v - a.mean;
+    m2 += c * c;
+    m3 += c * c * c;
+    m4 += c * c * c * c;
+  }
+  m2 /= a.n;
+  m3 /= a.n;
+  m4 /= a.n;
+  a.std = a.n > 1 ? std::sqrt(m2 * a.n / (a.n - 1)) : 0.0;
+  // Normalised autocorrelation (seed 004 Fig. 4) with 95% bounds for white noise.
+  const int L = std::min(max_lag, a.n - 1);
+  a.autocorrelation.assign(L + 1, 0.0);
+  a.bound95 = 1.959963984540054 / std::sqrt(static_cast<double>(a.n));
+  if (m2 > 0) {
+    for (int l = 0; l <= L; ++l) {
+      double c = 0.0;
+      for (int i = l; i < a.n; ++i) c += (r[i] - a.mean) * (r[i - l] - a.mean);
+      a.autocorrelation[l] = c / (m2 * a.n);
+    }
+    for (int l = 1; l <= L; ++l) {
+      if (std::abs(a.autocorrelation[l]) > a.bound95) ++a.lags_outside;
+    }
+    a.histogram.skewness = m3 / std::pow(m2, 1.5);
+    a.histogram.excess_kurtosis = m4 / (m2 * m2) - 3.0;
+  }
+  a.white = L > 0 && a.lags_outside <= std::max(1, static_cast<int>(std::floor(0.05 * L)));
+  // Histogram over mean ± 4σ.
+  if (bins > 0 && a.std > 0) {
+    const double lo = a.mean - 4 * a.std, hi = a.mean + 4 * a.std;
+    a.histogram.edges.resize(bins + 1);
+    for (int b = 0; b <= bins; ++b) a.histogram.edges[b] = lo + (hi - lo) * b / bins;
+    a.histogram.counts.assign(bins, 0);
+    for (double v : r) {
+      const int b = std::clamp(static_cast<int>(std::floor((v - lo) / (hi - lo) * bins)), 0, bins - 1);
+      ++a.histogram.counts[b];
+    }
+  }
+  return a;
+}
+
+TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& theta,
+                       const TrialData& trial, const ValidationOptions& o,
+                       const Eigen::VectorXd* x0_given) {
+  TrialFit f;
+  f.trial = trial.index;
+  f.name = trial.name;
+  f.use = trial.use;
+  f.position_rms = kNaN;
+  Eigen::VectorXd x0 = Eigen::VectorXd::Zero(model.num_states());
+  if (x0_given) {
+    x0.head(std::min<Eigen::Index>(x0_given->size(), x0.size())) =
+        x0_given->head(std::min<Eigen::Index>(x0_given->size(), x0.size()));
+  } else {
+    x0[0] = std::isfinite(trial.initial_position) ? trial.initial_position : 0.0;
+    x0[1] = std::isfinite(trial.initial_velocity) ? trial.initial_velocity : 0.0;
+  }
+  f.initial_position = x0[0];
+  f.initial_velocity = x0[1];
+  // Velocity reference: measured, else the Savitzky–Golay estimate away from the edges.
+  Signal vref;
+  if (trial.has_velocity()) {
+    vref = trial.velocity;
+    f.velocity_reference = "measured";
+  } else {
+    const SmoothedSignal& v = trial.velocity_estimate;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (!v.edge[i] && std::isfinite(v.value[i])) {
+        vref.t.push_back(v.t[i]);
+        vref.y.push_back(v.value[i]);
+      }
+    }
+    f.velocity_reference = "estimated";
+  }
+  std::vector<double> times = vref.t;
+  if (trial.has_position()) times.insert(times.end(), trial.position.t.begin(), trial.position.t.end());
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  times.erase(times.begin(), std::lower_bound(times.begin(), times.end(), 0.0));
+  if (times.empty()) return f;
+  model::SimulationOptions so;
+  so.step_s = o.step_s;
+  const model::Trajectory tr =
+      model::SimulateMeasured(model, theta, trial.conditions(), times, so, &x0);
+  auto at = [&](double t) {
+    return static_cast<std::size_t>(std::lower_bound(times.begin(), times.end(), t) - times.begin());
+  };
+  double sum_abs = 0.0;
+  std::vector<double> verr;
+  for (std::size_t k = 0; k < vref.size(); ++k) {
+    if (vref.t[k] < 0) continue;
+    const double e = tr.x(at(vref.t[k]), 1) - vref.y[k];  // ν_model − ν_measured (eq. 37)
+    sum_abs += std::abs(e);
+    verr.push_back(-e);
+  }
+  f.velocity_samples = static_cast<int>(verr.size());
+  f.velocity_mae = f.velocity_samples > 0 ? sum_abs / f.velocity_samples : kNaN;
+  std::vector<double> perr;
+  if (trial.has_position()) {
+    double ss = 0.0;
+    for (std::size_t k = 0; k < trial.position.size(); ++k) {
+      if (trial.position.t[k] < 0) continue;
+      const double e = trial.position.y[k] - tr.x(at(trial.position.t[k]), 0);
+      ss += e * e;
+      perr.push_back(e);
+    }
+    f.position_samples = static_cast<int>(perr.size());
+    f.position_rms = f.position_samples > 0 ? std::sqrt(ss / f.position_samples) : kNaN;
+  }
+  const bool use_pos = !perr.empty();
+  const std::vector<double>& r = use_pos ? perr : verr;
+  const Signal& s = use_pos ? trial.position : vref;
+  const double step = s.size() > 1 ? (s.t.back() - s.t.front()) / (s.size() - 1) : 0.0;
+  f.residuals = AnalyzeResiduals(r, o.max_lag, o.bins, step);
+  f.residual_signal = use_pos ? "position" : "velocity";
+  return f;
+}
+
+FitSummary Summarize(std::vector<TrialFit> trials) {
+  FitSummary s;
+  s.trials = std::move(trials);
+  double va[3] = {0, 0, 0}, pa[3] = {0, 0, 0};
+  int vn[3] = {0, 0, 0}, pn[3] = {0, 0, 0};
+  for (const TrialFit& f : s.trials) {
+    const int u = f.use == model::TrialUse::kFit ? 0 : 1;
+    for (int k : {u, 2}) {
+      if (f.velocity_samples > 0) {
+        va[k] += f.velocity_mae * f.velocity_samples;
+        vn[k] += f.velocity_samples;
+      }
+      if (f.position_samples > 0) {
+        pa[k] += f.position_rms * f.position_rms * f.position_samples;
+        pn[k] += f.position_samples;
+      }
+    }
+  }
+  auto mae = [&](int k) { return vn[k] > 0 ? va[k] / vn[k] : kNaN; };
+  auto rms = [&](int k) { return pn[k] > 0 ? std::sqrt(pa[k] / pn[k]) : kNaN; };
+  s.velocity_mae_fit = mae(0);
+  s.velocity_mae_validate = mae(1);
+  s.velocity_mae_all = mae(2);
+  s.position_rms_fit = rms(0);
+  s.position_rms_validate = rms(1);
+  s.position_rms_all = rms(2);
+  return s;
+}
+
+}  // namespace uuvplan::ident

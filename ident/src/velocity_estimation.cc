@@ -1,0 +1,477 @@
+#include "uuvplan/ident/velocity_estimation.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace uuvplan::ident {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double Median(std::vector<double> v) {
+  if (v.empty()) return kNaN;
+  const std::size_t mid = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + mid, v.end());
+  return v[mid];
+}
+
+// Runs of samples separated by steps longer than gap_factor × the median step: [begin, end).
+std::vector<std::pair<std::size_t, std::size_t>> Runs(const std::vector<double>& t,
+                                                      double gap_factor) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  if (t.empty()) return runs;
+  std::vector<double> steps;
+  steps.reserve(t.size());
+  for (std::size_t i = 1; i < t.size(); ++i) steps.push_back(t[i] - t[i - 1]);
+  const double h = steps.empty() ? 1.0 : Median(steps);
+  std::size_t begin = 0;
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    if (t[i] - t[i - 1] > gap_factor * h) {
+      runs.push_back({begin, i});
+      begin = i;
+    }
+  }
+  runs.push_back({begin, t.size()});
+  return runs;
+}
+
+// Row vectors giving the value and the first derivative (per unit of u) at u = at of the
+// least-squares polynomial of `order` through points u: e_kᵀ (VᵀV)⁻¹ Vᵀ.
+void PolynomialWeights(const std::vector<double>& u, int order, double at, Eigen::VectorXd* wv,
+                       Eigen::VectorXd* wd) {
+  const int n = static_cast<int>(u.size());
+  const int q = order + 1;
+  Eigen::MatrixXd V(n, q);
+  for (int i = 0; i < n; ++i) {
+    double p = 1.0;
+    for (int j = 0; j < q; ++j) {
+      V(i, j) = p;
+      p *= u[i];
+    }
+  }
+  const Eigen::MatrixXd P = (V.transpose() * V).ldlt().solve(V.transpose());  // q × n
+  // value(at) = Σ_j a_j at^j, derivative = Σ_j j a_j at^{j-1}.
+  Eigen::VectorXd ev = Eigen::VectorXd::Zero(q), ed = Eigen::VectorXd::Zero(q);
+  double p = 1.0;
+  for (int j = 0; j < q; ++j) {
+    ev[j] = p;
+    if (j + 1 < q) ed[j + 1] = (j + 1) * p;
+    p *= at;
+  }
+  *wv = P.transpose() * ev;
+  *wd = P.transpose() * ed;
+}
+
+// Smooths one run [b, e) of samples into out at the same indices.
+void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order, int window,
+               SmoothedSignal* out, bool* gains_set) {
+  const int n = static_cast<int>(e - b);
+  for (std::size_t i = b; i < e; ++i) out->run[i] = run;
+  if (n < 3) {
+    for (std::size_t i = b; i < e; ++i) {
+      out->value[i] = s.y[i];
+      out->derivative[i] = kNaN;
+      out->edge[i] = true;
+    }
+    return;
+  }
+  int w = std::min(window, n % 2 == 1 ? n : n - 1);
+  const int q = std::min(order, w - 2);
+  const int hw = w / 2;
+  std::vector<double> steps;
+  for (std::size_t i = b + 1; i < e; ++i) steps.push_back(s.t[i] - s.t[i - 1]);
+  const double h = Median(steps);
+  // Uniform when every step is within 1% of the median step: one set of convolution weights.
+  bool uniform = true;
+  for (double d : steps) {
+    if (std::abs(d - h) > 0.01 * h) {
+      uniform = false;
+      break;
+    }
+  }
+  std::vector<double> u(w);
+  Eigen::VectorXd wv, wd;
+  if (uniform) {
+    for (int j = 0; j < w; ++j) u[j] = j - hw;
+    PolynomialWeights(u, q, 0.0, &wv, &wd);
+    if (!*gains_set) {
+      out->value_gain = wv.norm();
+      out->derivative_gain = wd.norm() / h;
+      *gains_set = true;
+    }
+    for (int i = hw; i < n - hw; ++i) {
+      double v = 0.0, d = 0.0;
+      const double* y = &s.y[b + i - hw];
+      for (int j = 0; j < w; ++j) {
+        v += wv[j] * y[j];
+        d += wd[j] * y[j];
+      }
+      out->value[b + i] = v;
+      out->derivative[b + i] = d / h;
+      out->edge[b + i] = false;
+    }
+    // End polynomials: the first/last window's fit evaluated at each edge point.
+    for (int side = 0; side < 2; ++side) {
+      const int first = side == 0 ? 0 : n - w;
+      for (int i = side == 0 ? 0 : n - hw; i < (side == 0 ? hw : n); ++i) {
+        PolynomialWeights(u, q, static_cast<double>(i - first - hw), &wv, &wd);
+        double v = 0.0, d = 0.0;
+        for (int j = 0; j < w; ++j) {
+          v += wv[j] * s.y[b + first + j];
+          d += wd[j] * s.y[b + first + j];
+        }
+        out->value[b + i] = v;
+        out->derivative[b + i] = d / h;
+        out->edge[b + i] = true;
+      }
+    }
+    return;
+  }
+  // Irregular steps: a local fit on the actual times (u in units of the median step).
+  for (int i = 0; i < n; ++i) {
+    const int first = std::clamp(i - hw, 0, n - w);
+    for (int j = 0; j < w; ++j) u[j] = (s.t[b + first + j] - s.t[b + i]) / h;
+    PolynomialWeights(u, q, 0.0, &wv, &wd);
+    double v = 0.0, d = 0.0;
+    for (int j = 0; j < w; ++j) {
+      v += wv[j] * s.y[b + first + j];
+      d += wd[j] * s.y[b + first + j];
+    }
+    out->value[b + i] = v;
+    out->derivative[b + i] = d / h;
+    out->edge[b + i] = i < hw || i >= n - hw;
+    if (!*gains_set && !out->edge[b + i]) {
+      out->value_gain = wv.norm();
+      out->derivative_gain = wd.norm() / h;
+      *gains_set = true;
+    }
+  }
+}
+
+// Lag-1 autocorrelation of a residual vector.
+double Lag1(const std::vector<double>& r) {
+  if (r.size() < 3) return 0.0;
+  double num = 0.0, den = 0.0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    den += r[i] * r[i];
+    if (i > 0) num += r[i] * r[i - 1];
+  }
+  return den > 0 ? num / den : 0.0;
+}
+
+// Inflation of σ for positively autocorrelated residuals (AR(1) effective sample size).
+double AutocorrelationFactor(double rho, int n) {
+  if (n < 3 || rho <= 2.0 / std::sqrt(static_cast<double>(n))) return 1.0;
+  rho = std::min(rho, 0.95);
+  return std::sqrt((1 + rho) / (1 - rho));
+}
+
+}  // namespace
+
+bool SavitzkyGolayOptions::IsValid(std::string* error) const {
+  if (order < 1 || order > 8) {
+    if (error) *error = "SavitzkyGolayOptions::order = " + std::to_string(order) +
+                        ". Violated constraint: 1 <= order <= 8";
+    return false;
+  }
+  if (window < order + 2 || window % 2 == 0) {
+    if (error) *error = "SavitzkyGolayOptions::window = " + std::to_string(window) +
+                        ". Violated constraint: odd and >= order + 2";
+    return false;
+  }
+  if (!(gap_factor > 1)) {
+    if (error) *error = "SavitzkyGolayOptions::gap_factor must be > 1";
+    return false;
+  }
+  return true;
+}
+
+bool SteadyDetectionOptions::IsValid(std::string* error) const {
+  if (!(min_duration_s > 0) || min_samples < 4 || !(z > 0) || stride < 0) {
+    if (error) *error = "SteadyDetectionOptions: need min_duration_s > 0, min_samples >= 4, z > 0, "
+                        "stride >= 0";
+    return false;
+  }
+  return true;
+}
+
+int SavitzkyGolayWindow(double rate_hz) {
+  int n = static_cast<int>(std::lround(4.0 * rate_hz));
+  n = std::clamp(n, 21, 41);
+  if (n % 2 == 0) ++n;
+  return std::min(n, 41);
+}
+
+SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
+  SmoothedSignal out;
+  const std::size_t n = s.size();
+  out.t = s.t;
+  out.value.assign(n, kNaN);
+  out.derivative.assign(n, kNaN);
+  out.edge.assign(n, true);
+  out.run.assign(n, 0);
+  bool gains_set = false;
+  int run = 0;
+  for (const auto& [b, e] : Runs(s.t, options.gap_factor)) {
+    SmoothRun(s, b, e, run++, options.order, options.window, &out, &gains_set);
+  }
+  return out;
+}
+
+std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rate_hz,
+                                        double cutoff_hz) {
+  const std::size_t n = y.size();
+  if (n < 2 || !(cutoff_hz > 0) || !(cutoff_hz < 0.5 * rate_hz)) return y;
+  // Bilinear transform with prewarping of H(s) = ωc² / (s² + √2 ωc s + ωc²).
+  const double k = std::tan(M_PI * cutoff_hz / rate_hz);
+  const double norm = 1.0 / (1.0 + std::sqrt(2.0) * k + k * k);
+  const double b0 = k * k * norm, b1 = 2 * b0, b2 = b0;
+  const double a1 = 2.0 * (k * k - 1.0) * norm;
+  const double a2 = (1.0 - std::sqrt(2.0) * k + k * k) * norm;
+  // Odd reflection padding of about three time constants of the filter.
+  const std::size_t pad =
+      std::min(n - 1, static_cast<std::size_t>(std::ceil(3.0 * rate_hz / cutoff_hz)) + 3);
+  std::vector<double> x;
+  x.reserve(n + 2 * pad);
+  for (std::size_t i = pad; i >= 1; --i) x.push_back(2 * y[0] - y[i]);
+  x.insert(x.end(), y.begin(), y.end());
+  for (std::size_t i = 1; i <= pad; ++i) x.push_back(2 * y[n - 1] - y[n - 1 - i]);
+  auto pass = [&](std::vector<double>& v) {
+    // Direct form I, started in the steady state of the first value (DC gain 1).
+    double x1 = v[0], x2 = v[0], y1 = v[0], y2 = v[0];
+    for (double& xi : v) {
+      const double yi = b0 * xi + b1 * x1 + b2 * x2 - a1 * y1 - a2 * y2;
+      x2 = x1;
+      x1 = xi;
+      y2 = y1;
+      y1 = yi;
+      xi = yi;
+    }
+  };
+  pass(x);
+  std::reverse(x.begin(), x.end());
+  pass(x);
+  std::reverse(x.begin(), x.end());
+  return std::vector<double>(x.begin() + pad, x.begin() + pad + n);
+}
+
+SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap_factor) {
+  SmoothedSignal out;
+  const std::size_t n = p.size();
+  out.t = p.t;
+  out.value.assign(n, kNaN);
+  out.derivative.assign(n, kNaN);
+  out.edge.assign(n, true);
+  out.run.assign(n, 0);
+  int run = 0;
+  for (const auto& [b, e] : Runs(p.t, gap_factor)) {
+    const std::size_t m = e - b;
+    for (std::size_t i = b; i < e; ++i) out.run[i] = run;
+    ++run;
+    if (m < 3) continue;
+    std::vector<double> d(m), y(p.y.begin() + b, p.y.begin() + e);
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::size_t lo = i == 0 ? 0 : i - 1, hi = i + 1 == m ? m - 1 : i + 1;
+      d[i] = (y[hi] - y[lo]) / (p.t[b + hi] - p.t[b + lo]);
+    }
+    const double rate = (m - 1) / (p.t[e - 1] - p.t[b]);
+    const std::vector<double> fv = ButterworthFiltFilt(y, rate, cutoff_hz);
+    const std::vector<double> fd = ButterworthFiltFilt(d, rate, cutoff_hz);
+    // The filter's transient spans about one period of the cutoff at each end.
+    const std::size_t edge = static_cast<std::size_t>(std::ceil(rate / cutoff_hz));
+    for (std::size_t i = 0; i < m; ++i) {
+      out.value[b + i] = fv[i];
+      out.derivative[b + i] = fd[i];
+      out.edge[b + i] = i < edge || i + edge >= m;
+    }
+  }
+  return out;
+}
+
+SpeedFit ConstantSpeedFit(const Signal& s, double t0, double t1, double known_sigma) {
+  SpeedFit f;
+  f.t0 = t0;
+  f.t1 = t1;
+  const auto lo = std::lower_bound(s.t.begin(), s.t.end(), t0) - s.t.begin();
+  const auto hi = std::upper_bound(s.t.begin(), s.t.end(), t1) - s.t.begin();
+  const int n = static_cast<int>(hi - lo);
+  f.n = n;
+  if (n < 3) return f;
+  double tm = 0.0, ym = 0.0;
+  for (auto i = lo; i < hi; ++i) {
+    tm += s.t[i];
+    ym += s.y[i];
+  }
+  tm /= n;
+  ym /= n;
+  double stt = 0.0, sty = 0.0;
+  for (auto i = lo; i < hi; ++i) {
+    stt += (s.t[i] - tm) * (s.t[i] - tm);
+    sty += (s.t[i] - tm) * (s.y[i] - ym);
+  }
+  if (!(stt > 0)) return f;
+  f.speed = sty / stt;
+  f.offset = ym;
+  std::vector<double> r;
+  r.reserve(n);
+  double rss = 0.0;
+  for (auto i = lo; i < hi; ++i) {
+    r.push_back(s.y[i] - ym - f.speed * (s.t[i] - tm));
+    rss += r.back() * r.back();
+  }
+  f.residual_sd = std::sqrt(rss / (n - 2));
+  f.lag1 = Lag1(r);
+  // Eq. 11 for the slope: σ_v² = σ_ε² / Σ(t − t̄)², σ_ε from eq. 12 or known.
+  const double sigma_eps = known_sigma > 0 ? known_sigma : f.residual_sd;
+  f.sigma = sigma_eps / std::sqrt(stt) * AutocorrelationFactor(f.lag1, n);
+  f.ok = true;
+  return f;
+}
+
+SpeedFit MeanSpeedFit(const Signal& s, double t0, double t1, double known_sigma) {
+  SpeedFit f;
+  f.t0 = t0;
+  f.t1 = t1;
+  const auto lo = std::lower_bound(s.t.begin(), s.t.end(), t0) - s.t.begin();
+  const auto hi = std::upper_bound(s.t.begin(), s.t.end(), t1) - s.t.begin();
+  const int n = static_cast<int>(hi - lo);
+  f.n = n;
+  if (n < 2) return f;
+  double mean = 0.0;
+  for (auto i = lo; i < hi; ++i) mean += s.y[i];
+  mean /= n;
+  std::vector<double> r;
+  double rss = 0.0;
+  for (auto i = lo; i < hi; ++i) {
+    r.push_back(s.y[i] - mean);
+    rss += r.back() * r.back();
+  }
+  f.speed = mean;
+  f.residual_sd = std::sqrt(rss / (n - 1));
+  f.lag1 = Lag1(r);
+  const double sigma_eps = known_sigma > 0 ? known_sigma : f.residual_sd;
+  f.sigma = sigma_eps / std::sqrt(static_cast<double>(n)) * AutocorrelationFactor(f.lag1, n);
+  f.ok = true;
+  return f;
+}
+
+namespace {
+
+// Suffix sums of u^k (k = 0..4), u^k·y (k = 0..2) and y² for O(1) polynomial fits of any tail.
+struct TailSums {
+  std::vector<std::array<double, 9>> s;  // s[i] = sums over samples i..end
+  TailSums(const std::vector<double>& u, const std::vector<double>& y) : s(u.size() + 1) {
+    s.back().fill(0.0);
+    for (std::size_t k = u.size(); k-- > 0;) {
+      const double a = u[k], a2 = a * a;
+      s[k] = s[k + 1];
+      const double add[9] = {1, a, a2, a2 * a, a2 * a2, y[k], a * y[k], a2 * y[k], y[k] * y[k]};
+      for (int j = 0; j < 9; ++j) s[k][j] += add[j];
+    }
+  }
+};
+
+// Quadratic (or, for velocities, linear) fit of the tail from sample i: the change of speed
+// across [u_i, u_end] and its σ (known noise or residual estimate).
+bool TailChange(const TailSums& ts, std::size_t i, double u0, double u1, bool quadratic,
+                double known_sigma, double* change, double* sigma) {
+  const auto& s = ts.s[i];
+  const int q = quadratic ? 3 : 2;
+  Eigen::Matrix3d A;
+  Eigen::Vector3d b;
+  for (int r = 0; r < q; ++r) {
+    for (int c = 0; c < q; ++c) A(r, c) = s[r + c];
+    b[r] = s[5 + r];
+  }
+  const Eigen::MatrixXd Aq = A.topLeftCorner(q, q);
+  Eigen::LDLT<Eigen::MatrixXd> ldlt(Aq);
+  if (ldlt.info() != Eigen::Success) return false;
+  const Eigen::VectorXd a = ldlt.solve(b.head(q));
+  const Eigen::MatrixXd Ainv = ldlt.solve(Eigen::MatrixXd::Identity(q, q));
+  const double n = s[0];
+  // rss = Σy² − aᵀb for the normal-equation solution.
+  const double rss = std::max(0.0, s[8] - a.dot(b.head(q)));
+  const double var = known_sigma > 0 ? known_sigma * known_sigma : rss / std::max(1.0, n - q);
+  // Quadratic position fit: v(u) = a1 + 2 a2 u, change = 2 a2 (u1 − u0) (per unit u).
+  // Linear velocity fit: v(u) = a0 + a1 u, change = a1 (u1 − u0).
+  const int j = quadratic ? 2 : 1;
+  const double factor = (quadratic ? 2.0 : 1.0) * (u1 - u0);
+  *change = factor * a[j];
+  *sigma = std::abs(factor) * std::sqrt(var * Ainv(j, j));
+  return true;
+}
+
+}  // namespace
+
+std::vector<SteadySegment> DetectSteadySegments(const Signal& s, bool is_position,
+                                                const std::vector<ForcePiece>& pieces,
+                                                const SteadyDetectionOptions& o,
+                                                double known_sigma) {
+  std::vector<SteadySegment> out;
+  for (std::size_t p = 0; p < pieces.size(); ++p) {
+    const ForcePiece& piece = pieces[p];
+    if (piece.t1 - piece.t0 < o.min_duration_s) continue;
+    const auto lo = std::lower_bound(s.t.begin(), s.t.end(), piece.t0) - s.t.begin();
+    const auto hi = std::upper_bound(s.t.begin(), s.t.end(), piece.t1) - s.t.begin();
+    const int n = static_cast<int>(hi - lo);
+    if (n < o.min_samples) continue;
+    // u = (t − t0)/(t1 − t0) in [0, 1]; position values centred for conditioning.
+    const double span = piece.t1 - piece.t0;
+    std::vector<double> u(n), y(n);
+    const double y0 = s.y[lo];
+    for (int i = 0; i < n; ++i) {
+      u[i] = (s.t[lo + i] - piece.t0) / span;
+      y[i] = s.y[lo + i] - y0;
+    }
+    const TailSums ts(u, y);
+    const int stride = o.stride > 0 ? o.stride : std::max(1, n / 200);
+    const double t_end = s.t[hi - 1];
+    for (int i = 0; i + o.min_samples <= n; i += stride) {
+      const double t_start = s.t[lo + i];
+      if (t_end - t_start < o.min_duration_s) break;
+      double change = 0.0, sigma = 0.0;
+      if (!TailChange(ts, i, u[i], u[n - 1], is_position, known_sigma, &change, &sigma)) continue;
+      if (std::abs(change) > o.z * sigma) continue;
+      // Second test: the two halves' constant speeds agree.
+      const double t_mid = 0.5 * (t_start + t_end);
+      const SpeedFit a = is_position ? ConstantSpeedFit(s, t_start, t_mid, known_sigma)
+                                     : MeanSpeedFit(s, t_start, t_mid, known_sigma);
+      const SpeedFit b = is_position ? ConstantSpeedFit(s, t_mid, t_end, known_sigma)
+                                     : MeanSpeedFit(s, t_mid, t_end, known_sigma);
+      if (!a.ok || !b.ok) continue;
+      if (std::abs(a.speed - b.speed) > o.z * std::hypot(a.sigma, b.sigma)) continue;
+      SteadySegment seg;
+      seg.piece = static_cast<int>(p);
+      seg.fit = is_position ? ConstantSpeedFit(s, t_start, piece.t1, known_sigma)
+                            : MeanSpeedFit(s, t_start, piece.t1, known_sigma);
+      if (seg.fit.ok) out.push_back(seg);
+      break;
+    }
+  }
+  return out;
+}
+
+double Interpolate(const std::vector<double>& t, const std::vector<double>& y, double at) {
+  if (t.empty()) return kNaN;
+  if (at <= t.front()) return y.front();
+  if (at >= t.back()) return y.back();
+  const auto it = std::upper_bound(t.begin(), t.end(), at);
+  const std::size_t i = static_cast<std::size_t>(it - t.begin());
+  const double w = (at - t[i - 1]) / (t[i] - t[i - 1]);
+  return y[i - 1] + w * (y[i] - y[i - 1]);
+}
+
+double NoiseSigmaFromDifferences(const Signal& s) {
+  if (s.size() < 8) return kNaN;
+  std::vector<double> d;
+  d.reserve(s.size());
+  for (std::size_t i = 3; i < s.size(); ++i) {
+    d.push_back(std::abs(s.y[i] - 3 * s.y[i - 1] + 3 * s.y[i - 2] - s.y[i - 3]));
+  }
+  return 1.4826 * Median(d) / std::sqrt(20.0);
+}
+
+}  // namespace uuvplan::ident

@@ -1,0 +1,132 @@
+// The 1-DOF model of a vehicle: inertia, a sum of force terms, and the actuator path
+// (dead zone, first-order thruster lag) and sensor delay of the effects it includes.
+//
+// State x = [chi, xi, phi_a]: position, velocity, and (with thruster lag only) actuator force.
+//   dchi/dt  = xi
+//   dxi/dt   = Σ_j F_j(xi, phi_a, ·; theta_j) / m                       (seed 000 eq. 3)
+//   dphi_a/dt = (u - phi_a) / T,  u = sign(phi_n)·max(|phi_n| - d, 0)   (lag T, dead zone d)
+// Without lag phi_a = u. Parameters theta = [m, term parameters..., lag, deadzone,
+// sensor_delay], names from the shared vocabulary (effects.h).
+#pragma once
+
+#include <Eigen/Dense>
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "uuvplan/model/excitation.h"
+#include "uuvplan/model/force_term.h"
+#include "uuvplan/model/model_structure.h"
+#include "uuvplan/model/vehicle.h"
+
+namespace uuvplan::model {
+
+namespace internal {
+class DragTerm;
+class ConstantTerm;
+class ThrustTerm;
+class AdvanceLossTerm;
+class CouplingTerm;
+class DriftTerm;
+}  // namespace internal
+
+/// The conditions of one trial that are not states: its input, ballast, clock, other DOFs.
+struct TrialConditions {
+  const Excitation* input = nullptr;
+  int ballast_steps = 0;
+  double start_time = 0.0;              ///< campaign clock at t = 0 (s)
+  const AuxVelocities* aux = nullptr;   ///< null: other DOFs at rest
+};
+
+/// The input at one instant, sampled once per RK4 stage time: commanded force, mapping and
+/// the other DOFs' velocities.
+struct InputSample {
+  double phi_n = 0.0;
+  int mapping = -1;
+  std::array<double, kNumDofs> velocities{};
+};
+
+class DofModel {
+ public:
+  DofModel(const Vehicle& vehicle, const ModelStructure& structure);
+  DofModel(const DofModel&) = delete;
+  DofModel& operator=(const DofModel&) = delete;
+  DofModel(DofModel&&) = default;
+
+  Dof dof() const { return structure_.dof; }
+  const ModelStructure& structure() const { return structure_; }
+  const std::vector<std::string>& parameter_names() const { return names_; }
+  int num_parameters() const { return static_cast<int>(names_.size()); }
+  /// Index of a parameter in theta, or -1.
+  int ParameterIndex(std::string_view name) const;
+  int num_states() const { return has_lag() ? 3 : 2; }
+  bool has_lag() const { return lag_index_ >= 0; }
+  int sensor_delay_index() const { return delay_index_; }
+  const std::vector<std::unique_ptr<ForceTerm>>& terms() const { return terms_; }
+  /// Offset of term j's parameters in theta.
+  int term_offset(int j) const { return term_offsets_[j]; }
+
+  /// theta from named values; names missing from `values` take `fallback`'s value, or throw
+  /// InputError naming the missing parameter when there is no fallback.
+  Eigen::VectorXd Theta(const std::map<std::string, double>& values,
+                        const std::map<std::string, double>* fallback = nullptr) const;
+
+  /// The input of trial `c` at time t (the aux velocities only when a coupling term needs them).
+  InputSample SampleInput(double t, const TrialConditions& c) const;
+  /// The term context at time t for state x and input `in`.
+  TermContext Context(double t, const double* x, const InputSample& in, const TrialConditions& c,
+                      const double* theta) const;
+  /// Commanded force after the dead zone: u = sign(phi_n)·max(|phi_n| - d, 0).
+  double ActuatorInput(double phi_n, const double* theta) const;
+
+  /// dx/dt at time t, state x, input `in`.
+  void Derivative(double t, const double* x, const InputSample& in, const TrialConditions& c,
+                  const double* theta, double* dx) const;
+  /// dx/dt and its Jacobians A = ∂f/∂x (nx × nx) and B = ∂f/∂theta (nx × ntheta).
+  void Linearize(double t, const double* x, const InputSample& in, const TrialConditions& c,
+                 const double* theta, double* dx, Eigen::Ref<Eigen::MatrixXd> A,
+                 Eigen::Ref<Eigen::MatrixXd> B) const;
+  /// The same, sampling the input of `c` at t.
+  void Derivative(double t, const double* x, const TrialConditions& c, const double* theta,
+                  double* dx) const {
+    Derivative(t, x, SampleInput(t, c), c, theta, dx);
+  }
+  void Linearize(double t, const double* x, const TrialConditions& c, const double* theta,
+                 double* dx, Eigen::Ref<Eigen::MatrixXd> A, Eigen::Ref<Eigen::MatrixXd> B) const {
+    Linearize(t, x, SampleInput(t, c), c, theta, dx, A, B);
+  }
+  /// Total force Σ F_j (N or N·m) at a context.
+  double TotalForce(const TermContext& tc, const double* theta) const;
+
+ private:
+  // The terms by their concrete type, for the simulation loop (no virtual dispatch).
+  template <typename T>
+  struct Typed {
+    const T* term = nullptr;
+    int offset = 0;
+  };
+  template <typename Visitor>
+  void VisitTerms(Visitor&& visit) const;
+  template <typename T>
+  void Adopt(std::unique_ptr<T> term, Typed<T>* typed);
+
+  ModelStructure structure_;
+  Typed<internal::DragTerm> drag_;
+  Typed<internal::ConstantTerm> constant_;
+  Typed<internal::ThrustTerm> thrust_;
+  Typed<internal::AdvanceLossTerm> advance_;
+  Typed<internal::CouplingTerm> coupling_;
+  Typed<internal::DriftTerm> drift_;
+  std::vector<std::unique_ptr<ForceTerm>> terms_;
+  std::vector<int> term_offsets_;
+  std::vector<std::string> names_;
+  bool needs_aux_ = false;
+  int lag_index_ = -1;
+  int deadzone_index_ = -1;
+  int delay_index_ = -1;
+};
+
+}  // namespace uuvplan::model

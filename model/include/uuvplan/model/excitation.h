@@ -1,0 +1,58 @@
+// What drives a trial: the commanded nominal force phi_n(t) on the DOF and the thrust mapping
+// in force, and the trial kinds of the contract's schedule (steady, sine, segments), plus a
+// recorded log's commands held between rows (zero-order hold, notes/pitfalls.md).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "uuvplan/model/dof.h"
+
+namespace uuvplan::model {
+
+class Excitation {
+ public:
+  virtual ~Excitation() = default;
+  /// Commanded nominal force phi_n at time t (s from the trial start).
+  virtual double Force(double t) const = 0;
+  /// Vehicle mapping index in force at t (-1 = none).
+  virtual int Mapping(double t) const = 0;
+  /// Both at once (one lookup for held samples).
+  virtual void Sample(double t, double* force, int* mapping) const {
+    *force = Force(t);
+    *mapping = Mapping(t);
+  }
+  /// Times in (0, duration) where Force or Mapping may jump; integration steps end there.
+  virtual std::vector<double> Breakpoints() const { return {}; }
+  virtual double duration() const = 0;
+};
+
+/// phi_n = force from rest (contract §schedule `steady`).
+std::unique_ptr<Excitation> MakeSteadyExcitation(double force, int mapping, double duration);
+/// phi_n = offset + amplitude·sin(omega·t) (seed 000 eq. 15, contract §schedule `sine`).
+std::unique_ptr<Excitation> MakeSineExcitation(double offset, double amplitude, double omega,
+                                               int mapping, double duration);
+
+struct Segment {
+  double force = 0.0;
+  double duration = 0.0;
+  int mapping = -1;
+};
+/// Piecewise-constant force (contract §schedule `segments`).
+std::unique_ptr<Excitation> MakeSegmentsExcitation(std::vector<Segment> segments);
+/// Zero-order hold of samples (t_i, force_i, mapping_i): force_i holds on [t_i, t_{i+1}).
+/// NaN forces are skipped (the previous value holds). Before t_0 the first value holds.
+std::unique_ptr<Excitation> MakeHeldExcitation(std::vector<double> t, std::vector<double> force,
+                                               std::vector<int> mapping, double duration);
+
+/// Velocities of the other DOFs during a trial (for coupling terms): at time t, fills
+/// v[Index(dof)] for every DOF other than the trial's own.
+class AuxVelocities {
+ public:
+  virtual ~AuxVelocities() = default;
+  virtual void At(double t, std::array<double, kNumDofs>* v) const = 0;
+};
+
+}  // namespace uuvplan::model

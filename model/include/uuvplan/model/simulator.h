@@ -1,0 +1,39 @@
+// Free-run simulation of a DofModel from a given initial state with fixed-step RK4, and the
+// forward sensitivity equations dS/dt = A·S + B, S = ∂x/∂theta, integrated with the state
+// (the same RK4 stages), for Fisher information and output-error fits.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "uuvplan/model/dof_model.h"
+
+namespace uuvplan::model {
+
+struct SimulationOptions {
+  double step_s = 0.01;       ///< largest RK4 step (s); steps also end at every breakpoint
+  bool sensitivities = false; ///< also integrate S = ∂x/∂theta
+};
+
+struct Trajectory {
+  std::vector<double> t;  ///< output times (s)
+  Eigen::MatrixXd x;      ///< x(i, s): state s at t[i]; s = 0 position, 1 velocity, 2 actuator
+  /// With sensitivities: S[s](i, j) = ∂x_s(t_i)/∂theta_j.
+  std::vector<Eigen::MatrixXd> S;
+};
+
+/// Integrates from x0 (default: rest) at t = 0 and reports the state at `output_times`
+/// (sorted, >= 0). Every step ends at breakpoints of the input and at output times.
+Trajectory Simulate(const DofModel& model, const Eigen::VectorXd& theta,
+                    const TrialConditions& conditions, const std::vector<double>& output_times,
+                    const SimulationOptions& options, const Eigen::VectorXd* x0 = nullptr);
+
+/// What the sensors see: position and velocity at `times` delayed by the model's
+/// sensor_delay tau (y(t) = x(t - tau), rest before t = 0), with sensitivities if asked
+/// (∂y/∂tau = -dx/dt(t - tau)). Columns of the result as in Simulate: 0 position,
+/// 1 velocity (2 actuator force with thruster lag).
+Trajectory SimulateMeasured(const DofModel& model, const Eigen::VectorXd& theta,
+                            const TrialConditions& conditions, const std::vector<double>& times,
+                            const SimulationOptions& options, const Eigen::VectorXd* x0 = nullptr);
+
+}  // namespace uuvplan::model

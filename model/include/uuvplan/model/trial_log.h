@@ -1,0 +1,31 @@
+// A trial log as read from / written to CSV (contract §Trial log): time, and per DOF the
+// nominal force, measured position and velocity. Missing samples are NaN.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "uuvplan/model/dof.h"
+
+namespace uuvplan::model {
+
+struct TrialLog {
+  std::vector<double> t;  ///< s, strictly increasing
+  /// Columns per DOF (indexed by Index(dof)); empty vector = column absent; NaN = no sample.
+  std::array<std::vector<double>, kNumDofs> force;     ///< force_<dof>: N or N·m
+  std::array<std::vector<double>, kNumDofs> position;  ///< pos_<dof>: m or rad (unwrapped)
+  std::array<std::vector<double>, kNumDofs> velocity;  ///< vel_<dof>: m/s or rad/s
+  /// Optional `mapping` column: index into mapping_names per row, -1 = empty cell.
+  std::vector<int> mapping;
+  std::vector<std::string> mapping_names;
+  /// What the reader noticed and did not treat as an error (unknown columns, unwrapping).
+  std::vector<std::string> notes;
+
+  std::size_t size() const { return t.size(); }
+  bool HasForce(Dof d) const { return !force[Index(d)].empty(); }
+  bool HasPosition(Dof d) const { return !position[Index(d)].empty(); }
+  bool HasVelocity(Dof d) const { return !velocity[Index(d)].empty(); }
+};
+
+}  // namespace uuvplan::model

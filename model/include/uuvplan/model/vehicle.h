@@ -1,0 +1,67 @@
+// A vehicle as the user describes it in vehicle.yaml (contract §Vehicle): mass, size,
+// a priori inertia and added-mass bounds, thrusters, thrust mappings, per-DOF priors, sensors.
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "uuvplan/model/dof.h"
+#include "uuvplan/model/mapping.h"
+#include "uuvplan/model/thruster.h"
+
+namespace uuvplan::model {
+
+/// One measured signal of a DOF: its sampling rate and 1σ noise.
+struct SensorSpec {
+  double rate_hz = 10.0;
+  double sigma = 0.01;  ///< m or rad (position), m/s or rad/s (velocity)
+};
+
+struct DofSensors {
+  std::optional<SensorSpec> position;
+  std::optional<SensorSpec> velocity;
+};
+
+/// A priori drag fit of a DOF and its relative 1σ uncertainty.
+struct DragPrior {
+  double k = 0.0;   ///< N·s/m (N·m·s/rad)
+  double kq = 0.0;  ///< N·s²/m² (N·m·s²/rad²)
+  double rel_sigma = 0.3;
+};
+
+struct DofPrior {
+  std::optional<DragPrior> drag;
+  std::optional<std::array<double, 2>> added_mass;  ///< fraction of rigid-body value [lo, hi]
+};
+
+struct Vehicle {
+  std::string name;
+  double mass = 0.0;                          ///< kg in air
+  std::array<double, 3> size = {0, 0, 0};     ///< m: length, width, height
+  std::map<Dof, double> inertia;              ///< kg·m², rigid body, optional per rotational DOF
+  std::array<double, 2> added_mass = {0.1, 1.0};  ///< default a priori bounds (fraction)
+  std::vector<Thruster> thrusters;
+  double min_thrust = 0.0;                    ///< N: smallest |tau| of a working thruster
+  std::vector<ThrustMapping> mappings;
+  std::map<Dof, DofPrior> priors;
+  std::map<Dof, DofSensors> sensors;
+
+  /// Rigid-body inertia of a DOF: the mass for translations; for rotations the given
+  /// inertia or that of a uniform box of `size` (seed 000 §IV-D: I_z = m(l² + w²)/12).
+  double RigidInertia(Dof dof) const;
+  /// A priori added-mass bounds of a DOF as fractions (per-DOF value or the default).
+  std::array<double, 2> AddedMassBounds(Dof dof) const;
+  /// A priori bounds on the total inertia m = rigid·(1 + added fraction).
+  std::array<double, 2> InertiaBounds(Dof dof) const;
+  /// Index of the mapping called `name`, or -1.
+  int MappingIndex(const std::string& name) const;
+  /// Index of the thruster called `name`, or -1.
+  int ThrusterIndex(const std::string& name) const;
+  /// Mappings acting on `dof`, in file order.
+  std::vector<int> MappingsOf(Dof dof) const;
+};
+
+}  // namespace uuvplan::model

@@ -1,0 +1,47 @@
+#include "uuvplan/model/thruster.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace uuvplan::model {
+
+double ThrustModel::Thrust(double v) const {
+  double tau = 0.0;
+  switch (kind) {
+    case Kind::kSquare:  // seed 000 eq. 6
+      tau = (v >= 0 ? c_pos : c_neg) * v * std::abs(v);
+      break;
+    case Kind::kPoly2: {  // seed 002 eq. 1, odd extension
+      const double av = std::abs(v);
+      tau = std::copysign(a * av * av + b * av, v);
+      break;
+    }
+  }
+  return (1.0 - deduction) * tau;  // seed 003: T_a = (1 - t)·T
+}
+
+namespace {
+// Extremes of the thrust over [lo, hi]: sampled finely (the models are smooth and at most
+// quadratic per side, so a fine grid plus the ends finds them to far below any tolerance).
+std::pair<double, double> ThrustRange(const ThrustModel& m, double lo, double hi) {
+  double tmin = std::min(m.Thrust(lo), m.Thrust(hi));
+  double tmax = std::max(m.Thrust(lo), m.Thrust(hi));
+  constexpr int kSamples = 400;
+  for (int i = 1; i < kSamples; ++i) {
+    const double tau = m.Thrust(lo + (hi - lo) * i / kSamples);
+    tmin = std::min(tmin, tau);
+    tmax = std::max(tmax, tau);
+  }
+  return {tmin, tmax};
+}
+}  // namespace
+
+double Thruster::MaxForwardThrust() const {
+  return std::max(0.0, ThrustRange(model, command_min, command_max).second);
+}
+
+double Thruster::MaxReverseThrust() const {
+  return std::max(0.0, -ThrustRange(model, command_min, command_max).first);
+}
+
+}  // namespace uuvplan::model

@@ -1,0 +1,119 @@
+// Everything the designs of one DOF share: the DOF's model (the contract's standard model with
+// an installation coefficient for every non-open-water direction of its mappings), the box of
+// a priori parameter values, the sensors, the pool's free travel, the RK4 step; and the two
+// things every design does with a trial: its information at the box's design points, and the
+// hard-constraint check by simulation over the box's check grid.
+#pragma once
+
+#include <Eigen/Dense>
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "uuvplan/model/dof_model.h"
+#include "uuvplan/model/pool.h"
+#include "uuvplan/model/trial_design.h"
+#include "uuvplan/model/vehicle.h"
+#include "uuvplan/planner/criteria.h"
+#include "uuvplan/planner/parameter_box.h"
+#include "uuvplan/planner/solver.h"
+
+namespace uuvplan::planner {
+
+/// Information from earlier trials (or any prior knowledge), absolute units, on named
+/// parameters; names the DOF's model does not have are ignored.
+struct PriorInformation {
+  std::vector<std::string> names;
+  Eigen::MatrixXd M;
+  /// From a covariance of estimates (M = C⁻¹, pseudo-inverse on its range).
+  static PriorInformation FromCovariance(const std::vector<std::string>& names,
+                                         const Eigen::MatrixXd& covariance);
+};
+
+struct PlannerOptions {
+  BoxOptions box;
+  Robustness robustness = Robustness::kMaximin;
+  SolverBackend backend = SolverBackend::kNlopt;
+  SolverOptions solver;
+  /// Longest trial (s). CHOSEN: 4 minutes, about a pool team's battery-safe open-loop run;
+  /// seed 000's trials last 1-2 minutes.
+  double max_trial_duration_s = 240.0;
+  /// Pause between trials for pool time (repositioning, s); as the virtual pool's default.
+  double pause_s = 60.0;
+  /// Largest RK4 step (s); the step is otherwise a fifth of the shortest time constant.
+  double max_step_s = 0.25;
+  /// Values per box axis in hard-constraint checks (>= 2; 3 adds the axis midpoints).
+  int check_grid = 3;
+
+  bool IsValid(std::string* error) const;
+};
+
+/// Outcome of the hard-constraint check of one trial (contract §check-pool).
+struct TrialCheck {
+  bool feasible = true;
+  std::vector<std::string> reasons;      ///< each violated constraint, by how much
+  std::array<double, 2> travel = {0, 0};  ///< excursion from the start over the box [min, max]
+  double span = 0.0;                      ///< travel[1] - travel[0]
+  double available = 0.0;                 ///< free travel of the pool for this DOF (inf: none)
+  double thrust_min = 0.0;
+  double thrust_max_ratio = 0.0;
+};
+
+class DofContext {
+ public:
+  /// The a priori context of `dof` (box from the vehicle file); notes on assumptions made are
+  /// appended to `notes`. Throws model::InputError if the DOF has no sensor or no mapping.
+  static std::unique_ptr<DofContext> APriori(const model::Vehicle& vehicle,
+                                             const model::Pool& pool, model::Dof dof,
+                                             const PlannerOptions& options,
+                                             std::vector<std::string>* notes);
+  /// A context with a given box (e.g. about current estimates).
+  DofContext(const model::Vehicle& vehicle, const model::Pool& pool, model::Dof dof,
+             ParameterBox box, const PlannerOptions& options);
+
+  const model::Vehicle& vehicle() const { return vehicle_; }
+  const model::Pool& pool() const { return pool_; }
+  model::Dof dof() const { return dof_; }
+  const model::DofModel& model() const { return *model_; }
+  const ParameterBox& box() const { return box_; }
+  const PlannerOptions& options() const { return options_; }
+  const model::DofSensors& sensors() const { return sensors_; }
+  /// Parameter vectors at the design points (centre first) and the check grid.
+  const std::vector<Eigen::VectorXd>& design_thetas() const { return design_thetas_; }
+  const std::vector<Eigen::VectorXd>& check_thetas() const { return check_thetas_; }
+  /// Free travel along the DOF (m), infinite for rotations.
+  double available() const { return pool_.Available(dof_); }
+  double step_s() const { return step_s_; }
+  /// Shortest and longest linearised time constants m/k_L over the box (s).
+  double shortest_time_constant() const { return tc_min_; }
+  double longest_time_constant() const { return tc_max_; }
+  /// Index of a parameter, -1 if absent.
+  int Index(const std::string& name) const { return model_->ParameterIndex(name); }
+  std::vector<int> Indices(const std::vector<std::string>& names) const;
+  /// The prior information in this model's parameter order (zero if none).
+  Eigen::MatrixXd PriorMatrix(const PriorInformation* prior) const;
+
+  /// Fisher information of a trial (absolute units) at every design point.
+  std::vector<Eigen::MatrixXd> Information(const model::TrialDesign& design) const;
+  /// Criterion values at every design point of (trial information + extra), relative units.
+  std::vector<double> CriterionValues(const std::vector<Eigen::MatrixXd>& M, Criterion c,
+                                      const std::vector<int>& interest,
+                                      bool* any_singular = nullptr) const;
+  /// Hard constraints of a trial: thrusters (sign, min_thrust, limits), pool travel over the
+  /// check grid, duration limit.
+  TrialCheck Check(const model::TrialDesign& design) const;
+
+ private:
+  const model::Vehicle& vehicle_;
+  model::Pool pool_;
+  model::Dof dof_;
+  ParameterBox box_;
+  PlannerOptions options_;
+  std::unique_ptr<model::DofModel> model_;
+  model::DofSensors sensors_;
+  std::vector<Eigen::VectorXd> design_thetas_, check_thetas_;
+  double step_s_ = 0.1, tc_min_ = 1.0, tc_max_ = 1.0;
+};
+
+}  // namespace uuvplan::planner

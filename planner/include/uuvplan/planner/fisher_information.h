@@ -1,0 +1,66 @@
+// Fisher information of one trial for the parameters theta of a DOF's model (contract
+// §Conventions), for the sensors the vehicle really has:
+//
+//   M(xi, theta) = Σ_k w_k · S_kᵀ Σ⁻¹ S_k,   S_k = ∂y(t_k)/∂theta
+//
+// y = [position, velocity] as the sensors see them (model::SimulateMeasured), S from the
+// forward sensitivity equations integrated with the state (model/simulator.h). Each sensor
+// samples at t = i/rate_hz from the trial start (position: sonar, depth-meter, compass; velocity:
+// DVL, gyro) with independent Gaussian noise of its sigma, so Σ is diagonal per sample.
+//
+// Weights w_k are 1, except one extra sample just after the end of the trial, weighted by the
+// fraction of a sample interval the trial covers beyond its last whole sample: M is then a
+// continuous function of the duration (a solver may move the duration smoothly), and differs
+// from the strictly discrete information by at most one sample.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "uuvplan/model/dof_model.h"
+#include "uuvplan/model/excitation.h"
+#include "uuvplan/model/vehicle.h"
+
+namespace uuvplan::planner {
+
+/// What one simulation of a trial at one theta gives the planner.
+struct TrialResponse {
+  /// Fisher information, absolute units, rows/cols in DofModel::parameter_names() order
+  /// (empty when not asked for).
+  Eigen::MatrixXd M;
+  double position_min = 0.0;  ///< extremes of the position over [0, duration] (m or rad)
+  double position_max = 0.0;
+  double velocity_min = 0.0;  ///< extremes of the velocity over [0, duration]
+  double velocity_max = 0.0;
+  double final_velocity = 0.0;  ///< velocity at the end of the trial
+};
+
+/// The RK4 step used for a DOF: a fifth of the shortest time constant m/k_L over the box and
+/// never more than `max_step_s` (RK4's local error then stays below ~1e-5 of the state per
+/// step; tests/planner/fisher_information_test.cc checks the information converges).
+double ChooseStep(double shortest_time_constant_s, double max_step_s = 0.25);
+
+/// Simulates `input` from rest for `duration` at `theta` and returns the position/velocity
+/// extremes and, if `with_information`, the Fisher information of the DOF's sensors.
+/// Throws std::invalid_argument if the DOF has no sensor, or a sensor has rate <= 0 or
+/// sigma <= 0 (the vehicle reader rejects those first).
+TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd& theta,
+                            const model::Excitation& input, const model::DofSensors& sensors,
+                            double duration, double step_s, bool with_information);
+
+/// The position of the trial on a fine grid (every `step_s`) for constraint checks:
+/// returns the extremes over [0, duration] of every simulated step, not only sensor samples.
+TrialResponse SimulateExcursion(const model::DofModel& model, const Eigen::VectorXd& theta,
+                                const model::Excitation& input, double duration, double step_s);
+
+/// Position trace of a trial on a uniform grid t_i = i·dt, i = 0..n (for duration search).
+struct PositionTrace {
+  double dt = 0.0;
+  std::vector<double> position;
+  std::vector<double> velocity;
+};
+PositionTrace TracePosition(const model::DofModel& model, const Eigen::VectorXd& theta,
+                            const model::Excitation& input, double duration, double dt,
+                            double step_s);
+
+}  // namespace uuvplan::planner

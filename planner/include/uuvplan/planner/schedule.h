@@ -1,0 +1,50 @@
+// A test schedule (contract §schedule): the planned trials with their predicted excursion and
+// smallest working thrust, and the predicted precision of each DOF's parameters.
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "uuvplan/model/dof.h"
+#include "uuvplan/model/trial_design.h"
+
+namespace uuvplan::planner {
+
+struct PlannedTrial {
+  model::TrialDesign design;
+  /// Predicted excursion from the start over the whole a priori box (m or rad): [min, max].
+  std::array<double, 2> travel = {0.0, 0.0};
+  /// Smallest |tau| of a working thruster over the trial and the box (N).
+  double thrust_min = 0.0;
+};
+
+struct PredictedPrecision {
+  std::map<std::string, double> sigma;  ///< predicted 1σ per parameter name
+  std::string criterion = "D";          ///< D, Ds, A or E
+  double criterion_value = 0.0;
+};
+
+struct Schedule {
+  std::vector<PlannedTrial> trials;
+  std::map<model::Dof, PredictedPrecision> predicted;
+  /// Total pool time (s): trial durations plus the pauses between them.
+  double pool_time = 0.0;
+};
+
+/// One trial as the contract's JSON object: id, dof, kind, duration, mapping, the fields of
+/// its kind, travel, thrust_min (and ballast_steps when non-zero).
+nlohmann::json TrialToJson(const PlannedTrial& trial);
+nlohmann::json ScheduleToJson(const Schedule& schedule);
+
+/// Reads a trial object; throws model::InputError naming `where` (e.g. "plan.json: trials[2]")
+/// and the key on any missing or ill-typed field.
+PlannedTrial TrialFromJson(const nlohmann::json& j, const std::string& where);
+/// Reads a schedule JSON file (as written by `uuvplan schedule --json`), or a `next` result
+/// (its single "trial"). Throws model::InputError on malformed input.
+Schedule ReadScheduleJson(const std::string& path);
+
+}  // namespace uuvplan::planner

@@ -1,0 +1,42 @@
+// The thruster constraints of a trial (seed 000 §III-B): every working thruster's force
+// tau_i = share_i·phi_n(t) keeps its sign and stays above the vehicle's min_thrust for the whole
+// trial (no propeller reversal, no dead band: Δφ <= φ̂ in eq. 15), and stays within what the
+// thruster gives over its command range (thruster models of seed 000 eq. 6 / seed 002 eq. 1).
+// A thruster idle in a segment (share 0 in that segment's mapping) is not working there; a
+// thruster that works in several segments must push the same way in all of them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "uuvplan/model/excitation.h"
+#include "uuvplan/model/vehicle.h"
+
+namespace uuvplan::planner {
+
+/// Admissible |phi_n| for a mapping used in one direction (sign +1 or -1) for a whole run.
+struct ForceRange {
+  bool feasible = false;
+  double min_abs = 0.0;  ///< min_thrust / min_i |share_i| (no dead band, no reversal)
+  double max_abs = 0.0;  ///< min_i thrust limit of i in its direction / |share_i|
+  std::string reason;    ///< why infeasible
+};
+
+ForceRange DirectionForceRange(const model::Vehicle& vehicle, int mapping, int sign);
+
+struct ThrustCheck {
+  double thrust_min = 0.0;  ///< smallest |tau| of a working thruster over the trial (N)
+  double thrust_max_ratio = 0.0;  ///< largest |tau| / limit of a working thruster
+  bool reversal = false;
+  bool below_min = false;
+  bool overload = false;
+  std::vector<std::string> reasons;  ///< one sentence per violated constraint, with figures
+  bool ok() const { return reasons.empty(); }
+};
+
+/// Checks phi_n(t) of `input` over [0, duration] on a fine grid (4000 points and both sides of
+/// every breakpoint) against the thruster constraints.
+ThrustCheck CheckThrust(const model::Vehicle& vehicle, const model::Excitation& input,
+                        double duration);
+
+}  // namespace uuvplan::planner

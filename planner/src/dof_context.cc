@@ -1,0 +1,224 @@
+// The per-DOF design context (see dof_context.h).
+#include "uuvplan/planner/dof_context.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "uuvplan/model/effects.h"
+#include "uuvplan/model/input_error.h"
+#include "uuvplan/model/model_structure.h"
+#include "uuvplan/planner/fisher_information.h"
+#include "uuvplan/planner/seed_rules.h"
+#include "uuvplan/planner/thrust_limits.h"
+
+namespace uuvplan::planner {
+
+PriorInformation PriorInformation::FromCovariance(const std::vector<std::string>& names,
+                                                  const Eigen::MatrixXd& C) {
+  PriorInformation p;
+  p.names = names;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(C);
+  const Eigen::VectorXd& lam = es.eigenvalues();
+  const double top = lam.size() ? lam.maxCoeff() : 0.0;
+  Eigen::VectorXd inv(lam.size());
+  for (int i = 0; i < lam.size(); ++i) inv[i] = lam[i] > 1e-14 * top ? 1.0 / lam[i] : 0.0;
+  p.M = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose();
+  return p;
+}
+
+bool PlannerOptions::IsValid(std::string* error) const {
+  auto fail = [&](const std::string& m) {
+    if (error) *error = m;
+    return false;
+  };
+  if (!(max_trial_duration_s > 0)) {
+    return fail("PlannerOptions::max_trial_duration_s = " + std::to_string(max_trial_duration_s) +
+                ". Violated constraint: > 0");
+  }
+  if (!(pause_s >= 0)) {
+    return fail("PlannerOptions::pause_s = " + std::to_string(pause_s) +
+                ". Violated constraint: >= 0");
+  }
+  if (!(max_step_s > 0)) {
+    return fail("PlannerOptions::max_step_s = " + std::to_string(max_step_s) +
+                ". Violated constraint: > 0");
+  }
+  if (check_grid < 2) {
+    return fail("PlannerOptions::check_grid = " + std::to_string(check_grid) +
+                ". Violated constraint: >= 2");
+  }
+  if (!(box.drag_sigmas >= 0)) {
+    return fail("PlannerOptions::box.drag_sigmas = " + std::to_string(box.drag_sigmas) +
+                ". Violated constraint: >= 0");
+  }
+  return solver.IsValid(error);
+}
+
+namespace {
+
+model::ModelStructure StructureFor(const model::Vehicle& v, model::Dof dof) {
+  std::vector<std::string> names;
+  for (int i : v.MappingsOf(dof)) names.push_back(v.mappings[i].name);
+  return model::ModelStructure::Standard(v, dof, names, false);
+}
+
+void RequireDesignable(const model::Vehicle& v, model::Dof dof) {
+  const std::string d(model::DofName(dof));
+  auto s = v.sensors.find(dof);
+  if (s == v.sensors.end() || (!s->second.position && !s->second.velocity)) {
+    throw model::InputError("vehicle '" + v.name + "': sensors." + d,
+                            "no position or velocity sensor on " + d +
+                                ": a trial on it could not be measured (add sensors." + d + ")");
+  }
+  if (v.MappingsOf(dof).empty()) {
+    throw model::InputError("vehicle '" + v.name + "': mappings",
+                            "no thrust mapping acts on " + d + ": it cannot be excited");
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<DofContext> DofContext::APriori(const model::Vehicle& vehicle,
+                                                const model::Pool& pool, model::Dof dof,
+                                                const PlannerOptions& options,
+                                                std::vector<std::string>* notes) {
+  RequireDesignable(vehicle, dof);
+  const model::DofModel probe(vehicle, StructureFor(vehicle, dof));
+  ParameterBox box = APrioriBox(vehicle, dof, probe.parameter_names(), options.box, notes);
+  return std::make_unique<DofContext>(vehicle, pool, dof, std::move(box), options);
+}
+
+DofContext::DofContext(const model::Vehicle& vehicle, const model::Pool& pool, model::Dof dof,
+                       ParameterBox box, const PlannerOptions& options)
+    : vehicle_(vehicle), pool_(pool), dof_(dof), box_(std::move(box)), options_(options) {
+  RequireDesignable(vehicle, dof);
+  model_ = std::make_unique<model::DofModel>(vehicle, StructureFor(vehicle, dof));
+  sensors_ = vehicle.sensors.at(dof);
+  for (const auto& n : model_->parameter_names()) {
+    if (!box_.nominal.count(n)) box_.nominal[n] = 0.0;
+  }
+  for (const auto& p : box_.DesignPoints()) design_thetas_.push_back(model_->Theta(p));
+  for (const auto& p : box_.CheckPoints(options_.check_grid)) {
+    check_thetas_.push_back(model_->Theta(p));
+  }
+  // Time constants m/k_L (seed 000 eq. 13) over the box, from rest to the largest force any
+  // mapping of the DOF can give.
+  double phi_max = 0.0, phi_min = std::numeric_limits<double>::infinity();
+  for (int mi : vehicle.MappingsOf(dof)) {
+    for (int s : {+1, -1}) {
+      const ForceRange r = DirectionForceRange(vehicle, mi, s);
+      if (!r.feasible) continue;
+      phi_max = std::max(phi_max, r.max_abs);
+      phi_min = std::min(phi_min, r.min_abs);
+    }
+  }
+  if (!std::isfinite(phi_min)) phi_min = 0.0;
+  const int im = Index(model::param::kMass), ik = Index(model::param::kLinearDrag),
+            iq = Index(model::param::kQuadraticDrag);
+  tc_min_ = std::numeric_limits<double>::infinity();
+  tc_max_ = 0.0;
+  for (const auto& th : check_thetas_) {
+    const double m = th[im], k = ik >= 0 ? th[ik] : 0.0, kq = iq >= 0 ? th[iq] : 0.0;
+    const double v_hi = SteadySpeed(k, kq, phi_max);
+    const double v_lo = SteadySpeed(k, kq, phi_min);
+    const double kl_hi = LinearisedDrag(k, kq, v_hi), kl_lo = LinearisedDrag(k, kq, v_lo);
+    if (kl_hi > 0) tc_min_ = std::min(tc_min_, TimeConstant(m, kl_hi));
+    if (kl_lo > 0) tc_max_ = std::max(tc_max_, TimeConstant(m, kl_lo));
+  }
+  if (!std::isfinite(tc_min_)) tc_min_ = 1.0;
+  if (tc_max_ <= 0) tc_max_ = tc_min_;
+  step_s_ = ChooseStep(tc_min_, options_.max_step_s);
+}
+
+std::vector<int> DofContext::Indices(const std::vector<std::string>& names) const {
+  std::vector<int> out;
+  for (const auto& n : names) {
+    const int i = Index(n);
+    if (i >= 0) out.push_back(i);
+  }
+  return out;
+}
+
+Eigen::MatrixXd DofContext::PriorMatrix(const PriorInformation* prior) const {
+  const int np = model_->num_parameters();
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(np, np);
+  if (!prior) return M;
+  std::vector<int> map;
+  for (const auto& n : prior->names) map.push_back(Index(n));
+  for (std::size_t a = 0; a < map.size(); ++a) {
+    for (std::size_t b = 0; b < map.size(); ++b) {
+      if (map[a] >= 0 && map[b] >= 0) M(map[a], map[b]) += prior->M(a, b);
+    }
+  }
+  return M;
+}
+
+std::vector<Eigen::MatrixXd> DofContext::Information(const model::TrialDesign& design) const {
+  const auto input = model::MakeExcitation(vehicle_, design);
+  std::vector<Eigen::MatrixXd> out;
+  for (const auto& th : design_thetas_) {
+    out.push_back(
+        SimulateTrial(*model_, th, *input, sensors_, design.duration, step_s_, true).M);
+  }
+  return out;
+}
+
+std::vector<double> DofContext::CriterionValues(const std::vector<Eigen::MatrixXd>& M,
+                                                Criterion c, const std::vector<int>& interest,
+                                                bool* any_singular) const {
+  std::vector<double> out;
+  if (any_singular) *any_singular = false;
+  for (std::size_t j = 0; j < M.size() && j < design_thetas_.size(); ++j) {
+    const CriterionValue v =
+        EvaluateCriterion(RelativeInformation(M[j], design_thetas_[j]), c, interest);
+    out.push_back(v.value);
+    if (any_singular && v.singular) *any_singular = true;
+  }
+  return out;
+}
+
+TrialCheck DofContext::Check(const model::TrialDesign& design) const {
+  TrialCheck c;
+  c.available = available();
+  const auto input = model::MakeExcitation(vehicle_, design);
+  const ThrustCheck tc = CheckThrust(vehicle_, *input, design.duration);
+  c.thrust_min = tc.thrust_min;
+  c.thrust_max_ratio = tc.thrust_max_ratio;
+  c.reasons = tc.reasons;
+  if (!(design.duration > 0)) c.reasons.push_back("duration must be > 0 s");
+  if (design.duration > options_.max_trial_duration_s + 1e-9) {
+    std::ostringstream s;
+    s << "duration " << design.duration << " s exceeds the " << options_.max_trial_duration_s
+      << " s limit of a trial by " << design.duration - options_.max_trial_duration_s << " s";
+    c.reasons.push_back(s.str());
+  }
+  double lo = 0.0, hi = 0.0;
+  if (design.duration > 0) {
+    for (const auto& th : check_thetas_) {
+      const TrialResponse r = SimulateExcursion(*model_, th, *input, design.duration, step_s_);
+      lo = std::min(lo, r.position_min);
+      hi = std::max(hi, r.position_max);
+    }
+  }
+  c.travel = {lo, hi};
+  c.span = hi - lo;
+  if (std::isfinite(c.available) && c.span > c.available + 1e-9) {
+    std::ostringstream s;
+    const char* side = dof_ == model::Dof::kSurge   ? "length"
+                       : dof_ == model::Dof::kSway  ? "width"
+                                                    : "depth";
+    s << "travel " << c.span << " m over the a priori box (from " << lo << " to " << hi
+      << " m) exceeds the " << c.available << " m free along the pool " << side << " ("
+      << (dof_ == model::Dof::kSurge ? pool_.length
+                                     : dof_ == model::Dof::kSway ? pool_.width : pool_.depth)
+      << " m - 2·" << pool_.margin << " m margin) by " << c.span - c.available
+      << " m: needs a pool " << side << " of " << c.span + 2 * pool_.margin << " m";
+    c.reasons.push_back(s.str());
+  }
+  c.feasible = c.reasons.empty();
+  return c;
+}
+
+}  // namespace uuvplan::planner

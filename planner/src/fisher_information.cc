@@ -1,0 +1,126 @@
+// Fisher information of a trial from the forward sensitivities (see fisher_information.h).
+#include "uuvplan/planner/fisher_information.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "uuvplan/model/simulator.h"
+
+namespace uuvplan::planner {
+namespace {
+
+struct Sample {
+  double t;
+  int channel;    // 0 position, 1 velocity
+  double weight;  // w_k / sigma²
+};
+
+void AddSensor(const model::SensorSpec& spec, int channel, double duration,
+               std::vector<Sample>* samples) {
+  if (!(spec.rate_hz > 0) || !(spec.sigma > 0)) {
+    throw std::invalid_argument("sensor rate and sigma must be > 0");
+  }
+  const double inv_var = 1.0 / (spec.sigma * spec.sigma);
+  const double span = duration * spec.rate_hz;
+  const long whole = static_cast<long>(std::floor(span + 1e-9));
+  for (long k = 0; k <= whole; ++k) samples->push_back({k / spec.rate_hz, channel, inv_var});
+  const double frac = span - whole;
+  if (frac > 1e-9) samples->push_back({(whole + 1) / spec.rate_hz, channel, frac * inv_var});
+}
+
+}  // namespace
+
+double ChooseStep(double shortest_time_constant_s, double max_step_s) {
+  double h = shortest_time_constant_s / 5.0;
+  if (!(h > 0) || !std::isfinite(h)) h = max_step_s;
+  return std::min(h, max_step_s);
+}
+
+TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd& theta,
+                            const model::Excitation& input, const model::DofSensors& sensors,
+                            double duration, double step_s, bool with_information) {
+  std::vector<Sample> samples;
+  if (sensors.position) AddSensor(*sensors.position, 0, duration, &samples);
+  if (sensors.velocity) AddSensor(*sensors.velocity, 1, duration, &samples);
+  if (samples.empty()) throw std::invalid_argument("the DOF has no position or velocity sensor");
+  samples.push_back({duration, 0, 0.0});  // the end of the trial, for the extremes only
+  std::sort(samples.begin(), samples.end(),
+            [](const Sample& a, const Sample& b) { return a.t < b.t; });
+  std::vector<double> times;
+  std::vector<int> row(samples.size());
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (times.empty() || samples[i].t > times.back() + 1e-12) times.push_back(samples[i].t);
+    row[i] = static_cast<int>(times.size()) - 1;
+  }
+
+  model::TrialConditions conditions;
+  conditions.input = &input;
+  model::SimulationOptions options;
+  options.step_s = step_s;
+  options.sensitivities = with_information;
+  const model::Trajectory traj = model::SimulateMeasured(model, theta, conditions, times, options);
+
+  TrialResponse r;
+  r.position_min = r.position_max = 0.0;
+  r.velocity_min = r.velocity_max = 0.0;
+  for (std::size_t i = 0; i < times.size() && times[i] <= duration + 1e-12; ++i) {
+    r.position_min = std::min(r.position_min, traj.x(i, 0));
+    r.position_max = std::max(r.position_max, traj.x(i, 0));
+    r.velocity_min = std::min(r.velocity_min, traj.x(i, 1));
+    r.velocity_max = std::max(r.velocity_max, traj.x(i, 1));
+    if (std::abs(times[i] - duration) < 1e-12) r.final_velocity = traj.x(i, 1);
+  }
+  if (!with_information) return r;
+
+  // M = Σ_k w_k/σ² · s_kᵀ s_k, s_k the row of ∂y/∂theta of the sample's channel.
+  const int np = model.num_parameters();
+  Eigen::MatrixXd weighted(samples.size(), np);
+  int n = 0;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (samples[i].weight <= 0) continue;
+    weighted.row(n++) = std::sqrt(samples[i].weight) * traj.S[samples[i].channel].row(row[i]);
+  }
+  r.M = Eigen::MatrixXd::Zero(np, np);
+  r.M.selfadjointView<Eigen::Lower>().rankUpdate(weighted.topRows(n).transpose());
+  r.M = r.M.selfadjointView<Eigen::Lower>();
+  return r;
+}
+
+PositionTrace TracePosition(const model::DofModel& model, const Eigen::VectorXd& theta,
+                            const model::Excitation& input, double duration, double dt,
+                            double step_s) {
+  PositionTrace trace;
+  trace.dt = dt;
+  const long n = static_cast<long>(std::ceil(duration / dt - 1e-9));
+  std::vector<double> times(n + 1);
+  for (long i = 0; i <= n; ++i) times[i] = std::min(i * dt, duration);
+  model::TrialConditions conditions;
+  conditions.input = &input;
+  model::SimulationOptions options;
+  options.step_s = step_s;
+  const model::Trajectory traj = model::Simulate(model, theta, conditions, times, options);
+  trace.position.resize(n + 1);
+  trace.velocity.resize(n + 1);
+  for (long i = 0; i <= n; ++i) {
+    trace.position[i] = traj.x(i, 0);
+    trace.velocity[i] = traj.x(i, 1);
+  }
+  return trace;
+}
+
+TrialResponse SimulateExcursion(const model::DofModel& model, const Eigen::VectorXd& theta,
+                                const model::Excitation& input, double duration, double step_s) {
+  const PositionTrace trace = TracePosition(model, theta, input, duration, step_s, step_s);
+  TrialResponse r;
+  for (std::size_t i = 0; i < trace.position.size(); ++i) {
+    r.position_min = std::min(r.position_min, trace.position[i]);
+    r.position_max = std::max(r.position_max, trace.position[i]);
+    r.velocity_min = std::min(r.velocity_min, trace.velocity[i]);
+    r.velocity_max = std::max(r.velocity_max, trace.velocity[i]);
+  }
+  if (!trace.velocity.empty()) r.final_velocity = trace.velocity.back();
+  return r;
+}
+
+}  // namespace uuvplan::planner

@@ -1,0 +1,337 @@
+// Robust optimal sinusoid trial (see sine_design.h).
+#include "uuvplan/planner/sine_design.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "uuvplan/model/effects.h"
+#include "uuvplan/planner/fisher_information.h"
+#include "uuvplan/planner/seed_rules.h"
+#include "uuvplan/planner/thrust_limits.h"
+
+namespace uuvplan::planner {
+
+std::string_view DesignStatusName(DesignStatus s) {
+  switch (s) {
+    case DesignStatus::kOk: return "ok";
+    case DesignStatus::kInfeasible: return "infeasible";
+    case DesignStatus::kFailed: return "failed";
+  }
+  return "failed";
+}
+
+bool SineDesignOptions::IsValid(std::string* error) const {
+  auto fail = [&](const std::string& m) {
+    if (error) *error = m;
+    return false;
+  };
+  if (fixed_duration_s < 0) {
+    return fail("SineDesignOptions::fixed_duration_s = " + std::to_string(fixed_duration_s) +
+                ". Violated constraint: >= 0");
+  }
+  if (max_duration_s < 0) {
+    return fail("SineDesignOptions::max_duration_s = " + std::to_string(max_duration_s) +
+                ". Violated constraint: >= 0");
+  }
+  if (!(min_periods >= 0)) {
+    return fail("SineDesignOptions::min_periods = " + std::to_string(min_periods) +
+                ". Violated constraint: >= 0");
+  }
+  if (sign < -1 || sign > 1) {
+    return fail("SineDesignOptions::sign = " + std::to_string(sign) +
+                ". Violated constraint: -1, 0 or 1");
+  }
+  return true;
+}
+
+namespace {
+
+// Hull of the travel over several parameter points as the trial goes on: the first time the
+// span (max over points of position - min over points of position) exceeds `available`.
+double FirstOverflow(const DofContext& ctx, const std::vector<Eigen::VectorXd>& thetas,
+                     const model::Excitation& input, double t_max) {
+  const double dt = ctx.step_s();
+  std::vector<double> lo, hi;
+  for (const auto& th : thetas) {
+    const PositionTrace tr = TracePosition(ctx.model(), th, input, t_max, dt, ctx.step_s());
+    if (lo.empty()) {
+      lo.assign(tr.position.size(), 0.0);
+      hi.assign(tr.position.size(), 0.0);
+    }
+    double run_lo = 0.0, run_hi = 0.0;
+    for (std::size_t i = 0; i < tr.position.size() && i < lo.size(); ++i) {
+      run_lo = std::min(run_lo, tr.position[i]);
+      run_hi = std::max(run_hi, tr.position[i]);
+      lo[i] = std::min(lo[i], run_lo);
+      hi[i] = std::max(hi[i], run_hi);
+    }
+  }
+  const double avail = ctx.available();
+  for (std::size_t i = 1; i < lo.size(); ++i) {
+    const double s1 = hi[i] - lo[i];
+    if (s1 > avail) {
+      const double s0 = hi[i - 1] - lo[i - 1];
+      const double t0 = (i - 1) * dt, t1 = std::min(i * dt, t_max);
+      const double f = s1 > s0 ? (avail - s0) / (s1 - s0) : 0.0;
+      return t0 + std::clamp(f, 0.0, 1.0) * (t1 - t0);
+    }
+  }
+  return t_max;
+}
+
+struct Candidate {
+  int mapping = -1;
+  int sign = 1;
+  ForceRange range;
+};
+
+class SineProblem {
+ public:
+  SineProblem(const DofContext& ctx, const SineDesignOptions& o,
+              const std::vector<Eigen::MatrixXd>& prior, const Candidate& c, double t_max)
+      : ctx_(ctx), o_(o), prior_(prior), c_(c), t_max_(t_max) {
+    interest_ = ctx.Indices(o.interest);
+    const double mid = 0.5 * (c.range.min_abs + c.range.max_abs);
+    w_ = SineFrequencyRange(ctx, mid);
+    const double fixed = o.fixed_duration_s > 0 ? o.fixed_duration_s : t_max;
+    if (o.min_periods > 0) w_[0] = std::max(w_[0], 2 * M_PI * o.min_periods / fixed);
+    if (w_[1] <= w_[0]) w_[1] = 2.0 * w_[0];
+  }
+
+  // x = (u, r, v) -> the trial (duration not yet set).
+  model::TrialDesign Decode(const double* x) const {
+    model::TrialDesign d;
+    d.dof = ctx_.dof();
+    d.kind = model::TrialKind::kSine;
+    d.mapping = ctx_.vehicle().mappings[c_.mapping].name;
+    const double lo = c_.range.min_abs, hi = c_.range.max_abs;
+    const double off = lo + std::clamp(x[0], 0.0, 1.0) * (hi - lo);
+    const double room = std::max(0.0, std::min(off - lo, hi - off));
+    d.offset = c_.sign * off;
+    d.amplitude = std::clamp(x[1], 0.0, 1.0) * room;
+    d.omega = w_[0] * std::pow(w_[1] / w_[0], std::clamp(x[2], 0.0, 1.0));
+    return d;
+  }
+
+  // Duration of a decoded trial: fixed, or the longest that fits the pool.
+  double Duration(const model::TrialDesign& d) const {
+    if (o_.fixed_duration_s > 0) return o_.fixed_duration_s;
+    if (!std::isfinite(ctx_.available())) return t_max_;
+    const auto input = model::MakeExcitation(ctx_.vehicle(), d);
+    return FirstOverflow(ctx_, ctx_.design_thetas(), *input, t_max_);
+  }
+
+  int num_constraints() const {
+    return 1 + (o_.fixed_duration_s > 0 && std::isfinite(ctx_.available()) ? 1 : 0);
+  }
+
+  bool Evaluate(const double* x, double* phi, double* g,
+                std::vector<Eigen::MatrixXd>* info = nullptr) const {
+    model::TrialDesign d = Decode(x);
+    d.duration = Duration(d);
+    if (!(d.duration > 0)) return false;
+    const auto input = model::MakeExcitation(ctx_.vehicle(), d);
+    // g0: at least min_periods periods, scaled by the longest trial.
+    g[0] = (o_.min_periods * 2 * M_PI / d.omega - d.duration) / t_max_;
+    double lo = 0.0, hi = 0.0;
+    const auto& thetas = ctx_.design_thetas();
+    for (std::size_t j = 0; j < thetas.size(); ++j) {
+      TrialResponse r = SimulateTrial(ctx_.model(), thetas[j], *input, ctx_.sensors(),
+                                      d.duration, ctx_.step_s(), true);
+      lo = std::min(lo, r.position_min);
+      hi = std::max(hi, r.position_max);
+      Eigen::MatrixXd M = r.M;
+      if (j < prior_.size() && prior_[j].size() == M.size()) M += prior_[j];
+      phi[j] = EvaluateCriterion(RelativeInformation(M, thetas[j]), o_.criterion, interest_).value;
+      if (info) info->push_back(std::move(r.M));
+    }
+    if (num_constraints() > 1) g[1] = (hi - lo - ctx_.available()) / ctx_.available();
+    return true;
+  }
+
+  std::vector<double> Start() const {
+    // Seed 000 eq. 14-15: mid-range offset, the largest amplitude without reversal, ω_opt at
+    // the box centre for that force.
+    const double mid = 0.5 * (c_.range.min_abs + c_.range.max_abs);
+    const auto& th = ctx_.design_thetas().front();
+    const int ik = ctx_.Index(model::param::kLinearDrag), iq = ctx_.Index(model::param::kQuadraticDrag);
+    const double k = ik >= 0 ? th[ik] : 0.0, kq = iq >= 0 ? th[iq] : 0.0;
+    const double kl = LinearisedDrag(k, kq, SteadySpeed(k, kq, mid));
+    const double w = kl > 0 ? DOptimalSineFrequency(TimeConstant(th[0], kl)) : w_[0];
+    const double v = std::clamp(std::log(w / w_[0]) / std::log(w_[1] / w_[0]), 0.0, 1.0);
+    return {0.5, 1.0, v};
+  }
+
+ private:
+  const DofContext& ctx_;
+  const SineDesignOptions& o_;
+  const std::vector<Eigen::MatrixXd>& prior_;
+  Candidate c_;
+  double t_max_;
+  std::vector<int> interest_;
+  std::array<double, 2> w_;
+};
+
+}  // namespace
+
+std::array<double, 2> SineFrequencyRange(const DofContext& ctx, double force_abs) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  const int ik = ctx.Index(model::param::kLinearDrag), iq = ctx.Index(model::param::kQuadraticDrag);
+  for (const auto& th : ctx.design_thetas()) {
+    const double k = ik >= 0 ? th[ik] : 0.0, kq = iq >= 0 ? th[iq] : 0.0;
+    const double kl = LinearisedDrag(k, kq, SteadySpeed(k, kq, force_abs));
+    if (!(kl > 0)) continue;
+    const double w = DOptimalSineFrequency(TimeConstant(th[0], kl));
+    lo = std::min(lo, w);
+    hi = std::max(hi, w);
+  }
+  if (!std::isfinite(lo)) return {0.01, 10.0};
+  return {lo / 4.0, hi * 4.0};
+}
+
+double LongestFittingDuration(const DofContext& ctx, const model::TrialDesign& design,
+                              double t_max) {
+  if (!std::isfinite(ctx.available())) return t_max;
+  const auto input = model::MakeExcitation(ctx.vehicle(), design);
+  return FirstOverflow(ctx, ctx.check_thetas(), *input, t_max);
+}
+
+SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
+                            const std::vector<Eigen::MatrixXd>& prior, const std::string& id) {
+  SineDesignResult result;
+  std::string error;
+  if (!o.IsValid(&error) || !ctx.options().IsValid(&error)) {
+    result.message = error;
+    return result;
+  }
+  const double t_max = o.max_duration_s > 0 ? std::min(o.max_duration_s,
+                                                       ctx.options().max_trial_duration_s)
+                                            : ctx.options().max_trial_duration_s;
+  if (o.fixed_duration_s > ctx.options().max_trial_duration_s) {
+    result.status = DesignStatus::kInfeasible;
+    result.message = "fixed duration beyond the trial duration limit";
+    return result;
+  }
+  const auto& v = ctx.vehicle();
+  std::vector<Candidate> candidates;
+  for (int mi : v.MappingsOf(ctx.dof())) {
+    const auto& m = v.mappings[mi];
+    if (!o.mappings.empty() &&
+        std::find(o.mappings.begin(), o.mappings.end(), m.name) == o.mappings.end()) {
+      continue;
+    }
+    for (int s : {+1, -1}) {
+      if (o.sign != 0 && s != o.sign) continue;
+      if (o.open_water_only &&
+          !m.IsOpenWater(s > 0 ? model::Direction::kPos : model::Direction::kNeg)) {
+        continue;
+      }
+      Candidate c{mi, s, DirectionForceRange(v, mi, s)};
+      if (!c.range.feasible) {
+        result.notes.push_back(c.range.reason);
+        continue;
+      }
+      candidates.push_back(c);
+    }
+  }
+  if (candidates.empty()) {
+    result.status = DesignStatus::kInfeasible;
+    result.message = std::string("no mapping and direction of ") +
+                     std::string(model::DofName(ctx.dof())) +
+                     " can hold a sine without propeller reversal" +
+                     (o.open_water_only ? " in open water" : "");
+    return result;
+  }
+
+  const int J = static_cast<int>(ctx.design_thetas().size());
+  double best = -std::numeric_limits<double>::infinity();
+  for (const Candidate& c : candidates) {
+    SineProblem sp(ctx, o, prior, c, t_max);
+    DesignProblem p;
+    p.num_variables = 3;
+    p.lower = {0.0, 0.0, 0.0};
+    p.upper = {1.0, 1.0, 1.0};
+    p.x0 = sp.Start();
+    p.num_scenarios = J;
+    p.num_constraints = sp.num_constraints();
+    p.evaluate = [&sp](const double* x, double* phi, double* g) { return sp.Evaluate(x, phi, g); };
+    SolverOptions so = ctx.options().solver;
+    so.robustness = ctx.options().robustness;
+    so.extra_starts.push_back(p.x0);
+    const SolverSummary summary = Solve(ctx.options().backend, p, so);
+    if (!summary.is_success() || summary.objective <= best) {
+      if (!summary.is_success()) {
+        result.notes.push_back(v.mappings[c.mapping].name + (c.sign > 0 ? " +" : " -") + ": " +
+                               summary.BriefReport());
+      }
+      continue;
+    }
+    best = summary.objective;
+    result.summary = summary;
+    result.criterion = summary.objective;
+    result.criterion_per_point = summary.phi;
+    model::TrialDesign d = sp.Decode(summary.x.data());
+    d.id = id;
+    d.duration = sp.Duration(d);
+    result.trial.design = d;
+    result.information.clear();
+    std::vector<double> phi(J), g(p.num_constraints);
+    sp.Evaluate(summary.x.data(), phi.data(), g.data(), &result.information);
+  }
+  if (!std::isfinite(best)) {
+    result.status = DesignStatus::kFailed;
+    result.message = "no candidate mapping gave a feasible sine design";
+    return result;
+  }
+  // Hard constraints over the check grid; the design points bound the travel when it is
+  // monotone in m and drag, else shorten the trial until the check grid fits too.
+  model::TrialDesign& d = result.trial.design;
+  result.check = ctx.Check(d);
+  if (!result.check.feasible && o.fixed_duration_s == 0 && std::isfinite(ctx.available()) &&
+      result.check.span > ctx.available()) {
+    d.duration = LongestFittingDuration(ctx, d, d.duration) * (1.0 - 1e-6);
+    result.check = ctx.Check(d);
+    result.information = ctx.Information(d);
+    std::vector<Eigen::MatrixXd> total = result.information;
+    for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
+      if (prior[j].size() == total[j].size()) total[j] += prior[j];
+    }
+    result.criterion_per_point = ctx.CriterionValues(total, o.criterion, ctx.Indices(o.interest));
+    result.criterion = Aggregate(ctx.options().robustness, result.criterion_per_point);
+  }
+  result.trial.travel = result.check.travel;
+  result.trial.thrust_min = result.check.thrust_min;
+  bool singular = false;
+  {
+    std::vector<Eigen::MatrixXd> total = result.information;
+    for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
+      if (prior[j].size() == total[j].size()) total[j] += prior[j];
+    }
+    ctx.CriterionValues(total, o.criterion, ctx.Indices(o.interest), &singular);
+  }
+  if (!result.check.feasible) {
+    result.status = DesignStatus::kInfeasible;
+    std::ostringstream s;
+    s << "the best sine design violates a hard constraint:";
+    for (const auto& r : result.check.reasons) s << " " << r << ";";
+    result.message = s.str();
+  } else if (singular) {
+    result.status = DesignStatus::kInfeasible;
+    result.message =
+        "the information of this trial (with the prior) is singular: its parameters cannot all "
+        "be told apart (add steady runs in other mappings, or prior information on eta)";
+  } else if (d.duration < o.min_periods * 2 * M_PI / d.omega - 1e-6) {
+    result.status = DesignStatus::kInfeasible;
+    std::ostringstream s;
+    s << "only " << d.duration * d.omega / (2 * M_PI) << " periods fit the pool (at least "
+      << o.min_periods << " wanted)";
+    result.message = s.str();
+  } else {
+    result.status = DesignStatus::kOk;
+  }
+  return result;
+}
+
+}  // namespace uuvplan::planner

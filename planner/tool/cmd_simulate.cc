@@ -1,0 +1,234 @@
+// `uuvplan simulate --truth TRUTH.yaml --plan PLAN.json --out DIR [--seed N] [--step S]
+// [--json F]`: runs a plan on the virtual vehicle of a truth file (model/virtual_pool.h) and
+// writes the campaign as a pool team would log it: DIR/campaign.yaml, DIR/vehicle.yaml and
+// DIR/trials/<id>.csv. DIR must be new or empty; it is written whole or not at all.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "uuvplan/model/input_error.h"
+#include "uuvplan/model/io.h"
+#include "uuvplan/model/virtual_pool.h"
+#include "uuvplan/planner/schedule.h"
+
+namespace uuvplan::tool {
+namespace {
+
+namespace fs = std::filesystem;
+using model::InputError;
+
+struct SimulateOptions {
+  std::string truth;
+  std::string plan;
+  std::string out;
+  std::uint64_t seed = 1;                                      ///< VirtualPoolOptions default
+  double step_s = std::numeric_limits<double>::quiet_NaN();    ///< NaN: the truth's step
+  std::string json;
+};
+
+std::string MappingNames(const model::Vehicle& v, model::Dof dof) {
+  std::string names;
+  for (int i : v.MappingsOf(dof)) names += (names.empty() ? "" : ", ") + v.mappings[i].name;
+  return names.empty() ? "none" : names;
+}
+
+// A mapping named in the plan must be one of the truth vehicle's mappings of the trial's DOF.
+void CheckMapping(const model::Vehicle& v, const model::TrialDesign& d, const std::string& name,
+                  const std::string& where) {
+  const int i = v.MappingIndex(name);
+  if (i >= 0 && v.mappings[i].dof == d.dof) return;
+  throw InputError(where, "expected a " + std::string(model::DofName(d.dof)) +
+                              " mapping of vehicle '" + v.name + "' (" +
+                              MappingNames(v, d.dof) + "), got '" + name + "'");
+}
+
+// Everything the virtual pool needs for each trial, checked up front so that the message names
+// the plan's trial and the truth file rather than failing half-way through the campaign.
+void CheckPlanAgainstTruth(const planner::Schedule& plan, const model::Truth& truth,
+                           const std::string& plan_path, const std::string& truth_path) {
+  const model::Vehicle& v = truth.vehicle;
+  for (std::size_t i = 0; i < plan.trials.size(); ++i) {
+    const model::TrialDesign& d = plan.trials[i].design;
+    const std::string where = plan_path + ": trials[" + std::to_string(i) + "]";
+    const std::string dof(model::DofName(d.dof));
+    CheckMapping(v, d, d.mapping, where + ".mapping");
+    for (std::size_t k = 0; k < d.segments.size(); ++k) {
+      if (!d.segments[k].mapping.empty()) {
+        CheckMapping(v, d, d.segments[k].mapping,
+                     where + ".segments[" + std::to_string(k) + "].mapping");
+      }
+    }
+    if (truth.dofs.count(d.dof) == 0) {
+      throw InputError(truth_path, "missing dofs." + dof + ".params: trial '" + d.id + "' (" +
+                                       where + ") is a " + dof +
+                                       " trial, and the truth has no true " + dof +
+                                       " parameters to simulate it with");
+    }
+    const auto s = v.sensors.find(d.dof);
+    if (s == v.sensors.end() || (!s->second.position && !s->second.velocity)) {
+      throw InputError(truth_path, "missing sensors." + dof + ": trial '" + d.id +
+                                       "' needs a " + dof + " position or velocity sensor");
+    }
+  }
+}
+
+// The forces a trial asks of each mapping: (force, mapping name) at every extreme.
+std::vector<std::pair<double, std::string>> Demands(const model::TrialDesign& d) {
+  switch (d.kind) {
+    case model::TrialKind::kSteady: return {{d.force, d.mapping}};
+    case model::TrialKind::kSine:
+      return {{d.offset + std::abs(d.amplitude), d.mapping},
+              {d.offset - std::abs(d.amplitude), d.mapping}};
+    case model::TrialKind::kSegments: {
+      std::vector<std::pair<double, std::string>> out;
+      for (const auto& s : d.segments) out.push_back({s.force, s.mapping.empty() ? d.mapping : s.mapping});
+      return out;
+    }
+  }
+  return {};
+}
+
+// The virtual pool applies whatever force is asked; a real thruster saturates. Say so when a
+// plan asks more than the mapping's thrusters can give (tau_i = share_i·phi within the range).
+std::vector<std::string> SaturationNotes(const planner::Schedule& plan, const model::Vehicle& v) {
+  std::vector<std::string> notes;
+  for (const auto& t : plan.trials) {
+    for (const auto& [force, name] : Demands(t.design)) {
+      const model::ThrustMapping& m = v.mappings[v.MappingIndex(name)];
+      for (const auto& [index, share] : m.shares) {
+        const model::Thruster& th = v.thrusters[index];
+        const double tau = share * force;
+        const double limit = tau >= 0 ? th.MaxForwardThrust() : th.MaxReverseThrust();
+        if (std::abs(tau) > limit * (1 + 1e-9)) {
+          std::ostringstream s;
+          s << "trial '" << t.design.id << "' asks " << force << " " << model::ForceUnit(t.design.dof)
+            << " of mapping '" << name << "': thruster " << th.name << " would give " << tau
+            << " N but can give at most " << (tau >= 0 ? "" : "-") << limit
+            << " N (the virtual pool does not saturate thrusters)";
+          notes.push_back(s.str());
+          break;
+        }
+      }
+    }
+  }
+  return notes;
+}
+
+int RunSimulate(const SimulateOptions& o) {
+  if (!std::isnan(o.step_s) && !(o.step_s > 0 && std::isfinite(o.step_s))) {
+    throw InputError("--step", "expected a positive integration step in s, got " +
+                                   std::to_string(o.step_s));
+  }
+  std::error_code ec;
+  if (fs::exists(o.out, ec)) {
+    if (!fs::is_directory(o.out, ec)) {
+      throw InputError(o.out, "--out exists and is not a directory; choose a new directory");
+    }
+    if (!fs::is_empty(o.out, ec)) {
+      throw InputError(o.out, "--out exists and is not empty; choose a new directory (nothing "
+                              "is overwritten)");
+    }
+  }
+  model::Truth truth = model::ReadTruth(o.truth);
+  const planner::Schedule plan = planner::ReadScheduleJson(o.plan);
+  CheckPlanAgainstTruth(plan, truth, o.plan, o.truth);
+  if (!std::isnan(o.step_s)) truth.integration_step_s = o.step_s;
+
+  std::vector<model::TrialDesign> designs;
+  for (const auto& t : plan.trials) designs.push_back(t.design);
+  model::VirtualPoolOptions pool_options;
+  pool_options.seed = o.seed;
+  constexpr double kPauseS = 60.0;  // SimulateCampaign's default pause between trials
+  const model::Campaign campaign =
+      model::SimulateCampaign(truth, designs, o.out, pool_options, kPauseS);
+
+  for (const std::string& note : SaturationNotes(plan, truth.vehicle)) {
+    std::cerr << "uuvplan simulate: note: " << note << "\n";
+  }
+  // The readable table goes to stdout, unless stdout carries the JSON (--json -).
+  std::ostream& out = o.json == "-" ? std::cerr : std::cout;
+  out << "Simulated " << campaign.trials.size() << " trial(s) of plan " << o.plan
+            << " on the virtual '" << truth.vehicle.name << "' of " << o.truth << "\n"
+            << "(seed " << o.seed << ", RK4 step " << truth.integration_step_s << " s, "
+            << kPauseS << " s pause between trials)\n\n";
+  out << std::left << std::setw(22) << "trial" << std::setw(7) << "dof" << std::setw(10)
+            << "kind" << std::setw(24) << "mapping" << std::right << std::setw(10) << "duration"
+            << std::setw(8) << "rows" << "  file\n";
+  std::size_t rows = 0;
+  double trial_time = 0.0;
+  nlohmann::json trials = nlohmann::json::array();
+  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
+    const auto& e = campaign.trials[i];
+    const auto& d = designs[i];
+    rows += e.log.size();
+    trial_time += d.duration;
+    std::ostringstream dur;
+    dur << std::fixed << std::setprecision(1) << d.duration << " s";
+    out << std::left << std::setw(22) << d.id << std::setw(7) << model::DofName(d.dof)
+              << std::setw(10) << model::TrialKindName(d.kind) << std::setw(24) << d.mapping
+              << std::right << std::setw(10) << dur.str() << std::setw(8) << e.log.size() << "  "
+              << e.file << "\n";
+    trials.push_back({{"id", d.id},
+                      {"dof", std::string(model::DofName(d.dof))},
+                      {"file", e.file},
+                      {"rows", e.log.size()},
+                      {"duration", d.duration},
+                      {"start", e.start}});
+  }
+  const double clock = campaign.trials.empty()
+                           ? 0.0
+                           : campaign.trials.back().start + designs.back().duration;
+  out << "\n" << campaign.trials.size() << " trials, " << rows << " rows, " << trial_time
+            << " s of trials, " << clock << " s of pool time with pauses\n"
+            << "Campaign: " << (fs::path(o.out) / "campaign.yaml").string() << "\n";
+  if (!o.json.empty()) {
+    const nlohmann::json j = {{"campaign", (fs::path(o.out) / "campaign.yaml").string()},
+                              {"seed", o.seed},
+                              {"step", truth.integration_step_s},
+                              {"trials", trials},
+                              {"rows", rows},
+                              {"trial_time", trial_time},
+                              {"pool_time", clock}};
+    if (o.json == "-") {
+      std::cout << j.dump(2) << "\n";
+    } else {
+      model::WriteFileAtomically(o.json, j.dump(2) + "\n");
+    }
+  }
+  return kExitOk;
+}
+
+const CommandRegistration kRegistration({"simulate", 30, [](CLI::App& app,
+                                                            std::function<int()>* run) {
+  auto o = std::make_shared<SimulateOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "simulate",
+      "Run a plan on the virtual vehicle of a truth file and write the campaign (campaign.yaml, "
+      "vehicle.yaml, trials/<id>.csv) as a pool team would log it.");
+  sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")
+      ->required();
+  sub->add_option("--plan", o->plan,
+                  "plan JSON: a `schedule --json` result, or a `next --json` result (its trial)")
+      ->required();
+  sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
+      ->required();
+  sub->add_option("--seed", o->seed, "seed of the sensor noise, drop-outs and outliers")
+      ->capture_default_str();
+  sub->add_option("--step", o->step_s,
+                  "RK4 integration step in s (default: the truth's virtual_pool.step, else 0.01)");
+  sub->add_option("--json", o->json, "also write a summary as JSON to this file ('-' = stdout)");
+  sub->callback([o, run] { *run = [o] { return RunSimulate(*o); }; });
+}});
+
+}  // namespace
+}  // namespace uuvplan::tool

@@ -1,0 +1,45 @@
+// uuvplan <command> [options]: see docs/cli.md.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <exception>
+#include <iostream>
+
+#include "command.h"
+#include "uuvplan/model/input_error.h"
+
+namespace uuvplan::tool {
+std::vector<Command>& Registry() {
+  static std::vector<Command> commands;
+  return commands;
+}
+}  // namespace uuvplan::tool
+
+int main(int argc, char** argv) {
+  using namespace uuvplan::tool;
+  CLI::App app{
+      "uuvplan: plan, run and analyse hydrodynamic identification trials of underwater "
+      "vehicles (drag, added mass, thruster installation losses)",
+      "uuvplan"};
+  app.require_subcommand(1);
+  auto& commands = Registry();
+  std::sort(commands.begin(), commands.end(),
+            [](const Command& a, const Command& b) { return a.order < b.order; });
+  std::function<int()> run;
+  for (auto& c : commands) c.add(app, &run);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  try {
+    return run ? run() : kExitBadInput;
+  } catch (const uuvplan::model::InputError& e) {
+    std::cerr << "uuvplan: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "uuvplan: internal error: " << e.what() << "\n";
+    return 3;
+  }
+}

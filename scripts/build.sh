@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Installs the dependencies (Debian packages, if missing) and builds uuvplan into build/.
+# Usage: scripts/build.sh [extra cmake -D options...]
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$root/scripts/install-deps.sh"
+build="${UUVPLAN_BUILD_DIR:-$root/build}"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake --build "$build" -j"$(nproc)" >&2

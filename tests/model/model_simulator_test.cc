@@ -1,0 +1,232 @@
+// The DOF model and its simulator: RK4 order against the analytic linear solution, Jacobians
+// and sensitivities against finite differences with every effect on, breakpoints, a priori
+// inertia.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "uuvplan/model/dof_model.h"
+#include "uuvplan/model/effects.h"
+#include "uuvplan/model/simulator.h"
+
+namespace uuvplan::model {
+namespace {
+
+Vehicle TwoMappingVehicle() {
+  Vehicle v;
+  v.name = "test";
+  v.mass = 450;
+  v.size = {1.3, 0.9, 1.0};
+  ThrustMapping front{"front", Dof::kSurge, {}, OpenWater::kPositive};
+  ThrustMapping rear{"rear", Dof::kSurge, {}, OpenWater::kNegative};
+  v.mappings = {front, rear};
+  return v;
+}
+
+// m·dxi/dt = -k·xi + a + b·sin(w·t) from rest:
+//   xi(t) = a/k·(1 - e^{-t/tc}) + b/(k² + m²w²)·(k·sin wt - m·w·cos wt + m·w·e^{-t/tc})
+double LinearSineVelocity(double m, double k, double a, double b, double w, double t) {
+  const double tc = m / k;
+  const double d = k * k + m * m * w * w;
+  return a / k * (1 - std::exp(-t / tc)) +
+         b / d * (k * std::sin(w * t) - m * w * std::cos(w * t) + m * w * std::exp(-t / tc));
+}
+
+TEST(SimulatorTest, Rk4ConvergesAtFourthOrderOnTheLinearModel) {
+  const Vehicle v = TwoMappingVehicle();
+  ModelStructure s;
+  s.dof = Dof::kSurge;
+  s.quadratic_drag = false;
+  s.bias = false;
+  const DofModel model(v, s);
+  const double m = 890, k = 212.25, a = 35, b = 25, w = 2 * M_PI / 26;  // seed 000 §IV-D
+  Eigen::VectorXd theta(2);
+  theta << m, k;
+  const auto input = MakeSineExcitation(a, b, w, 0, 60);
+  const TrialConditions c{input.get()};
+  const double t_end = 60.0;
+  std::vector<double> errors;
+  for (double h : {2.0, 1.0, 0.5, 0.25}) {
+    SimulationOptions o;
+    o.step_s = h;
+    const Trajectory tr = Simulate(model, theta, c, {t_end}, o);
+    errors.push_back(std::abs(tr.x(0, 1) - LinearSineVelocity(m, k, a, b, w, t_end)));
+  }
+  for (std::size_t i = 1; i < errors.size(); ++i) {
+    // Halving the step divides a 4th-order method's global error by 2⁴ = 16; the observed
+    // order log2(e_{h}/e_{h/2}) must lie within 0.3 of 4 in this asymptotic range.
+    const double order = std::log2(errors[i - 1] / errors[i]);
+    EXPECT_NEAR(order, 4.0, 0.3) << "h = " << 2.0 / (1 << i);
+  }
+  EXPECT_LT(errors.back(), 1e-8);
+}
+
+TEST(SimulatorTest, StepsEndAtSegmentBreakpoints) {
+  // A force step at t = 1.3 s inside a 1 s RK4 step would cost the method its order; steps
+  // end at breakpoints, so the coarse simulation matches the analytic one to RK4 accuracy.
+  const Vehicle v = TwoMappingVehicle();
+  ModelStructure s;
+  s.dof = Dof::kSurge;
+  s.quadratic_drag = false;
+  s.bias = false;
+  const DofModel model(v, s);
+  Eigen::VectorXd theta(2);
+  theta << 100.0, 50.0;  // t_c = 2 s
+  const auto input = MakeSegmentsExcitation({{20.0, 1.3, 0}, {-10.0, 3.0, 1}});
+  SimulationOptions o;
+  o.step_s = 0.25;
+  const Trajectory tr = Simulate(model, theta, TrialConditions{input.get()}, {1.3, 4.3}, o);
+  const double xi1 = 20.0 / 50.0 * (1 - std::exp(-1.3 / 2.0));
+  const double xi2 = -10.0 / 50.0 + (xi1 + 10.0 / 50.0) * std::exp(-3.0 / 2.0);
+  // RK4 local error ~ (h/t_c)^5/120 per step: ~1e-7 of the speed here.
+  EXPECT_NEAR(tr.x(0, 1), xi1, 1e-6);
+  EXPECT_NEAR(tr.x(1, 1), xi2, 1e-6);
+}
+
+// Every effect on: asymmetric drag, two mappings with free eta, ballast, lag, dead zone,
+// advance loss, coupling to an exogenous yaw rate, drift, sensor delay.
+struct FullModel {
+  Vehicle vehicle = TwoMappingVehicle();
+  ModelStructure structure;
+  std::unique_ptr<DofModel> model;
+  Eigen::VectorXd theta;
+  FullModel() {
+    structure.dof = Dof::kSurge;
+    structure.ballast = true;
+    structure.free_eta = {"eta.front.neg", "eta.rear.pos"};
+    structure.asymmetric_drag = true;
+    structure.thruster_lag = true;
+    structure.deadzone = true;
+    structure.advance_speed_loss = true;
+    structure.coupling = {"rr"};
+    structure.sensor_delay = true;
+    structure.parameter_drift = true;
+    model = std::make_unique<DofModel>(vehicle, structure);
+    std::map<std::string, double> p = {
+        {"m", 890},          {"k", 46.9},         {"k_neg", 57.9},  {"kq", 306.2},
+        {"kq_neg", 331.4},   {"bias", 1.5},       {"bias_step", 0.7},
+        {"eta.front.neg", 0.89}, {"eta.rear.pos", 0.73}, {"advance_loss", 2.0},
+        {"coupling.rr", 30.0}, {"drift", -2e-4}, {"lag", 0.4},  {"deadzone", 3.0},
+        {"sensor_delay", 0.3}};
+    theta = model->Theta(p);
+  }
+};
+
+class YawRate final : public AuxVelocities {
+ public:
+  void At(double t, std::array<double, kNumDofs>* v) const override {
+    (*v)[Index(Dof::kYaw)] = 0.2 * std::sin(0.3 * t);
+  }
+};
+
+TEST(DofModelTest, ParameterLayoutFollowsTheVocabulary) {
+  FullModel f;
+  const std::vector<std::string> expected = {
+      "m", "k", "k_neg", "kq", "kq_neg", "bias", "bias_step", "eta.front.neg", "eta.rear.pos",
+      "advance_loss", "coupling.rr", "drift", "lag", "deadzone", "sensor_delay"};
+  EXPECT_EQ(f.model->parameter_names(), expected);
+  EXPECT_EQ(f.model->num_states(), 3);
+}
+
+TEST(DofModelTest, LinearizeMatchesFiniteDifferences) {
+  FullModel f;
+  const auto input = MakeSegmentsExcitation({{40.0, 5.0, 0}, {-30.0, 5.0, 1}, {2.0, 5.0, 0}});
+  const YawRate aux;
+  const TrialConditions c{input.get(), 2, 100.0, &aux};
+  const int nx = 3, np = f.model->num_parameters();
+  // States away from the drag kink at xi = 0 and the dead-zone kinks at |phi| = d.
+  for (double t : {1.0, 7.0, 12.0}) {
+    for (double xi : {-0.3, 0.05, 0.25}) {
+      const double x[3] = {1.0, xi, t < 5 ? 25.0 : -20.0};
+      double dx[3];
+      Eigen::MatrixXd A(nx, nx), B(nx, np);
+      f.model->Linearize(t, x, c, f.theta.data(), dx, A, B);
+      const double h = 1e-6;
+      for (int s = 0; s < nx; ++s) {
+        double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]}, fp[3], fm[3];
+        xp[s] += h;
+        xm[s] -= h;
+        f.model->Derivative(t, xp, c, f.theta.data(), fp);
+        f.model->Derivative(t, xm, c, f.theta.data(), fm);
+        for (int r = 0; r < nx; ++r) {
+          // FD error O(h²) on O(1) derivatives plus rounding 1e-16·|f|/h: 1e-6 absolute.
+          EXPECT_NEAR(A(r, s), (fp[r] - fm[r]) / (2 * h), 1e-6) << "A(" << r << "," << s << ")";
+        }
+      }
+      for (int j = 0; j < np; ++j) {
+        Eigen::VectorXd tp = f.theta, tm = f.theta;
+        const double hj = 1e-6 * std::max(1.0, std::abs(f.theta[j]));
+        tp[j] += hj;
+        tm[j] -= hj;
+        double fp[3], fm[3];
+        f.model->Derivative(t, x, c, tp.data(), fp);
+        f.model->Derivative(t, x, c, tm.data(), fm);
+        for (int r = 0; r < nx; ++r) {
+          EXPECT_NEAR(B(r, j), (fp[r] - fm[r]) / (2 * hj), 1e-6 * std::max(1.0, std::abs(B(r, j))))
+              << "B(" << r << ", " << f.model->parameter_names()[j] << ")";
+        }
+      }
+    }
+  }
+}
+
+TEST(SimulatorTest, SensitivitiesMatchFiniteDifferencesOfTheSimulation) {
+  FullModel f;
+  const auto input = MakeSineExcitation(30.0, 20.0, 0.25, 0, 40.0);
+  const YawRate aux;
+  const TrialConditions c{input.get(), 1, 50.0, &aux};
+  std::vector<double> times;
+  for (int i = 1; i <= 40; ++i) times.push_back(i * 1.0);
+  SimulationOptions o;
+  o.step_s = 0.02;
+  o.sensitivities = true;
+  const Trajectory tr = SimulateMeasured(*f.model, f.theta, c, times, o);
+  o.sensitivities = false;
+  for (int j = 0; j < f.model->num_parameters(); ++j) {
+    const double h = 1e-5 * std::max(1.0, std::abs(f.theta[j]));
+    Eigen::VectorXd tp = f.theta, tm = f.theta;
+    tp[j] += h;
+    tm[j] -= h;
+    const Trajectory yp = SimulateMeasured(*f.model, tp, c, times, o);
+    const Trajectory ym = SimulateMeasured(*f.model, tm, c, times, o);
+    for (int s = 0; s < 2; ++s) {
+      const Eigen::VectorXd fd = (yp.x.col(s) - ym.x.col(s)) / (2 * h);
+      const double scale = std::max(1e-3, fd.cwiseAbs().maxCoeff());
+      // The sensitivity equations are integrated with the same RK4 stages as the state, so
+      // they agree with the FD of the discrete simulation to FD accuracy (~1e-6 relative).
+      EXPECT_LT((tr.S[s].col(j) - fd).cwiseAbs().maxCoeff(), 1e-4 * scale)
+          << f.model->parameter_names()[j] << " output " << s;
+    }
+  }
+}
+
+TEST(VehicleTest, RomeoYawInertiaOfAUniformBox) {
+  // Seed 000 §IV-D: I_r = (1/12)·450·(1.3² + 0.9²) = 93.75 kg·m².
+  Vehicle v = TwoMappingVehicle();
+  EXPECT_NEAR(v.RigidInertia(Dof::kYaw), 93.75, 1e-12);
+  EXPECT_DOUBLE_EQ(v.RigidInertia(Dof::kSurge), 450.0);
+  v.inertia[Dof::kYaw] = 84.0;  // a given inertia wins over the box
+  EXPECT_DOUBLE_EQ(v.RigidInertia(Dof::kYaw), 84.0);
+  const auto bounds = v.InertiaBounds(Dof::kSurge);  // added mass 10–100% (seed 000 §III-B)
+  EXPECT_DOUBLE_EQ(bounds[0], 495.0);
+  EXPECT_DOUBLE_EQ(bounds[1], 900.0);
+}
+
+TEST(ThrusterTest, SeedModels) {
+  ThrustModel sq;  // seed 000 §IV-C: c_V = 1.02 / 1.09 N/V²
+  sq.c_pos = 1.02;
+  sq.c_neg = 1.09;
+  EXPECT_DOUBLE_EQ(sq.Thrust(5.0), 25.5);
+  EXPECT_DOUBLE_EQ(sq.Thrust(-5.0), -27.25);
+  ThrustModel p2;  // seed 002 §2.2: a = 10.84 N/V², b = -5.019 N/V, odd-extended
+  p2.kind = ThrustModel::Kind::kPoly2;
+  p2.a = 10.84;
+  p2.b = -5.019;
+  EXPECT_NEAR(p2.Thrust(2.0), 10.84 * 4 - 5.019 * 2, 1e-12);
+  EXPECT_NEAR(p2.Thrust(-2.0), -(10.84 * 4 - 5.019 * 2), 1e-12);
+  sq.deduction = 0.1;  // seed 003: T_a = (1 - t)·T
+  EXPECT_DOUBLE_EQ(sq.Thrust(5.0), 0.9 * 25.5);
+}
+
+}  // namespace
+}  // namespace uuvplan::model
