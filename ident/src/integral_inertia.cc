@@ -1,5 +1,6 @@
 #include "uuvplan/ident/integral_inertia.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -39,19 +40,20 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
     std::vector<double> t, xi;
     Eigen::MatrixXd Y;  // samples × np cumulative ∫h
     Eigen::VectorXd Y0; // cumulative ∫h0
+    double noise_var = 0.0;  // variance of the filtered velocity's noise
   };
   std::vector<Run> runs;
   int sg_window = 21;
   for (const TrialData* trial : trials) {
     const SmoothedSignal& v = trial->velocity_estimate;
     sg_window = trial->sg_window;
-    std::size_t i = 0;
-    while (i < v.size()) {
-      const int run_id = v.run[i];
+    const double input_sigma = trial->velocity_from_position ? trial->position_sigma : trial->velocity_sigma;
+    const double gain = trial->velocity_from_position ? v.derivative_gain : v.value_gain;
+    for (const auto& [begin, end] : SmoothRuns(*trial)) {
       Run run;
       run.trial = trial->index;
-      for (; i < v.size() && v.run[i] == run_id; ++i) {
-        if (v.edge[i] || std::isnan(v.value[i])) continue;
+      run.noise_var = input_sigma > 0 ? std::pow(gain * input_sigma, 2) : 0.0;
+      for (std::size_t i = begin; i < end; ++i) {
         run.t.push_back(v.t[i]);
         run.xi.push_back(v.value[i]);
       }
@@ -68,32 +70,45 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
     }
   }
   int n = 0;
-  for (const Run& run : runs) n += static_cast<int>(run.t.size());
-  const int p = 1 + 2 * static_cast<int>(runs.size());
+  std::vector<int> trial_ids;
+  for (const Run& run : runs) {
+    n += static_cast<int>(run.t.size());
+    if (std::find(trial_ids.begin(), trial_ids.end(), run.trial) == trial_ids.end()) {
+      trial_ids.push_back(run.trial);
+    }
+  }
+  // Unknowns: m, c of each run, b of each trial (the constant force is common to a trial).
+  const int R = static_cast<int>(runs.size());
+  const int p = 1 + R + static_cast<int>(trial_ids.size());
   r.num_samples = n;
   if (runs.empty() || n < p + 2) {
     r.status = FitStatus::kTooFewData;
-    r.message = "integral method: no run of at least 10 usable velocity samples";
+    r.message = "integral method: no run of at least 10 usable velocity samples away from "
+                "command steps";
     return r;
   }
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(n, p);
   Eigen::VectorXd y(n);
+  Eigen::VectorXd noise_var(n);  // variance of the filtered-velocity noise in H(:, 0)
   std::vector<int> groups(n);
   Eigen::MatrixXd Yk(n, static_cast<int>(known.size()));
   int row = 0;
-  for (std::size_t q = 0; q < runs.size(); ++q) {
+  for (int q = 0; q < R; ++q) {
     const Run& run = runs[q];
-    for (std::size_t s = 0; s < run.t.size(); ++s, ++row) {
+    const int tb = 1 + R + static_cast<int>(std::find(trial_ids.begin(), trial_ids.end(), run.trial) - trial_ids.begin());
+    for (std::size_t s = 0; s < run.t.size(); ++s) {
       double yk = run.Y0[s];
       for (std::size_t c = 0; c < known.size(); ++c) {
         Yk(row, c) = run.Y(s, known[c]);
         yk += theta_known[known[c]] * run.Y(s, known[c]);
       }
       y[row] = yk;
-      H(row, 0) = run.xi[s];                       // m      (eq. 18)
-      H(row, 1 + 2 * q) = -1.0;                    // c = m·ξ_s + k·χ_s
-      H(row, 2 + 2 * q) = -(run.t[s] - run.t[0]);  // b
-      groups[row] = static_cast<int>(q);
+      H(row, 0) = run.xi[s];                 // m      (eq. 18)
+      H(row, 1 + q) = -1.0;                  // c = m·ξ_s + k·χ_s of the run
+      H(row, tb) = -(run.t[s] - run.t[0]);   // b
+      noise_var[row] = run.noise_var;
+      groups[row] = q;
+      ++row;
     }
   }
   LeastSquaresOptions lso;
@@ -110,30 +125,61 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
                      : "");
     return r;
   }
-  r.m = fit.theta[0];
   r.sigma_eq11 = std::sqrt(fit.covariance(0, 0));
+  // Errors in variables: ξ̃ in H carries the filter's noise, E[HᵀH] = HᵀH(true) + Σ var(e_i)
+  // in the (m, m) entry, which biases m low. Corrected least squares removes it:
+  //   θ = (HᵀH − Σ_i var(e_i)·e₀e₀ᵀ)⁻¹ Hᵀy.
+  Eigen::MatrixXd N = H.transpose() * H;
+  if (o.errors_in_variables) N(0, 0) -= noise_var.sum();
+  Eigen::LDLT<Eigen::MatrixXd> ldlt(N);
+  if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().minCoeff() > 0)) {
+    r.status = FitStatus::kIllConditioned;
+    r.message = "integral method: the velocity varies less than its noise (errors in variables "
+                "dominate); excite the DOF more or use a longer filter window";
+    return r;
+  }
+  const Eigen::VectorXd est = ldlt.solve(H.transpose() * y);
+  const Eigen::VectorXd res = y - H * est;
+  r.m = est[0];
+  // Sandwich covariance of the corrected estimating equations Σ_i [h_i r_i + var(e_i)·θ_m·e₀]
+  // with Newey–West lags spanning `newey_west_windows` filter windows.
   const int lags = std::max(1, static_cast<int>(std::lround(o.newey_west_windows * sg_window)));
-  const Eigen::MatrixXd hac = NeweyWestCovariance(H, fit.residuals, nullptr, lags, &groups);
+  Eigen::MatrixXd G(n, p);
+  for (int i = 0; i < n; ++i) {
+    G.row(i) = H.row(i) * res[i];
+    if (o.errors_in_variables) G(i, 0) += noise_var[i] * r.m;
+  }
+  Eigen::MatrixXd S = G.transpose() * G;
+  for (int l = 1; l <= lags; ++l) {
+    const double kappa = 1.0 - static_cast<double>(l) / (lags + 1);
+    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(p, p);
+    for (int i = l; i < n; ++i) {
+      if (groups[i] != groups[i - l]) continue;
+      C.noalias() += G.row(i).transpose() * G.row(i - l);
+    }
+    S += kappa * (C + C.transpose());
+  }
+  const Eigen::MatrixXd Ninv = ldlt.solve(Eigen::MatrixXd::Identity(p, p));
+  const Eigen::MatrixXd hac = static_cast<double>(n) / std::max(1, n - p) * Ninv * S * Ninv;
   r.sigma_hac = std::sqrt(std::max(0.0, hac(0, 0)));
-  // ∂m̂/∂θ_j = e_0ᵀ (HᵀH)⁻¹ Hᵀ Y_j.
+  // ∂m̂/∂θ_j = e_0ᵀ N⁻¹ Hᵀ Y_j (m̂ is linear in the known parameters through y).
   double var_known = 0.0;
   if (o.propagate_known_uncertainty && known_cov && !known.empty()) {
-    const Eigen::MatrixXd N = H.transpose() * H;
-    const Eigen::VectorXd a = N.ldlt().solve(Eigen::VectorXd::Unit(p, 0));
-    const Eigen::VectorXd g = H * a;
+    const Eigen::VectorXd g = H * Ninv.col(0);
     Eigen::VectorXd J(known.size());
     for (std::size_t c = 0; c < known.size(); ++c) J[c] = g.dot(Yk.col(c));
-    Eigen::MatrixXd S(known.size(), known.size());
+    Eigen::MatrixXd Sk(known.size(), known.size());
     for (std::size_t a1 = 0; a1 < known.size(); ++a1) {
-      for (std::size_t b1 = 0; b1 < known.size(); ++b1) S(a1, b1) = (*known_cov)(known[a1], known[b1]);
+      for (std::size_t b1 = 0; b1 < known.size(); ++b1) Sk(a1, b1) = (*known_cov)(known[a1], known[b1]);
     }
-    var_known = J.dot(S * J);
+    var_known = J.dot(Sk * J);
   }
   r.sigma_known = std::sqrt(std::max(0.0, var_known));
   r.sigma = std::sqrt(r.sigma_hac * r.sigma_hac + var_known);
-  for (std::size_t q = 0; q < runs.size(); ++q) {
-    r.run_c.push_back(fit.theta[1 + 2 * q]);
-    r.run_b.push_back(fit.theta[2 + 2 * q]);
+  for (int q = 0; q < R; ++q) {
+    const int tb = 1 + R + static_cast<int>(std::find(trial_ids.begin(), trial_ids.end(), runs[q].trial) - trial_ids.begin());
+    r.run_c.push_back(est[1 + q]);
+    r.run_b.push_back(est[tb]);
     r.run_trial.push_back(runs[q].trial);
   }
   r.estimate.name = model::param::kMass;

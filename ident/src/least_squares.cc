@@ -44,7 +44,7 @@ std::string JoinNames(const std::vector<int>& columns, const std::vector<std::st
 
 Eigen::MatrixXd NeweyWestCovariance(const Eigen::MatrixXd& H, const Eigen::VectorXd& r,
                                     const Eigen::VectorXd* w, int lags,
-                                    const std::vector<int>* groups) {
+                                    const std::vector<int>* groups, bool truncated) {
   const Eigen::Index n = H.rows(), p = H.cols();
   // Scores g_i = w_i·h_i·r_i; bread A = Hᵀ W H.
   Eigen::MatrixXd G(n, p);
@@ -60,7 +60,7 @@ Eigen::MatrixXd NeweyWestCovariance(const Eigen::MatrixXd& H, const Eigen::Vecto
   }
   Eigen::MatrixXd S = G.transpose() * G;
   for (int l = 1; l <= lags; ++l) {
-    const double kappa = 1.0 - static_cast<double>(l) / (lags + 1);
+    const double kappa = truncated ? 1.0 : 1.0 - static_cast<double>(l) / (lags + 1);
     Eigen::MatrixXd C = Eigen::MatrixXd::Zero(p, p);
     for (Eigen::Index i = l; i < n; ++i) {
       if (groups && (*groups)[i] != (*groups)[i - l]) continue;
@@ -68,9 +68,42 @@ Eigen::MatrixXd NeweyWestCovariance(const Eigen::MatrixXd& H, const Eigen::Vecto
     }
     S += kappa * (C + C.transpose());
   }
+  if (truncated) {
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S);
+    S = es.eigenvectors() * es.eigenvalues().cwiseMax(0.0).asDiagonal() * es.eigenvectors().transpose();
+  }
   const Eigen::MatrixXd Ainv = A.ldlt().solve(Eigen::MatrixXd::Identity(p, p));
   const double correction = n > p ? static_cast<double>(n) / (n - p) : 1.0;
   return correction * Ainv * S * Ainv;
+}
+
+Eigen::MatrixXd DifferencedCovariance(const Eigen::MatrixXd& H, const Eigen::VectorXd& r,
+                                      const std::vector<int>& groups) {
+  return Ma1Covariance(H, H, r, groups);
+}
+
+Eigen::MatrixXd Ma1Covariance(const Eigen::MatrixXd& H, const Eigen::MatrixXd& Z,
+                              const Eigen::VectorXd& r, const std::vector<int>& groups) {
+  const Eigen::Index n = H.rows(), p = H.cols();
+  // Residual autocovariances at lags 0 and 1 within groups: Ω = γ0·I + γ1·(L + Lᵀ), with
+  // |γ1| <= γ0/2 so that Ω stays positive semi-definite (an MA(1)).
+  double g0 = r.squaredNorm() / std::max<Eigen::Index>(1, n);
+  double g1 = 0.0;
+  int pairs = 0;
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(p, p);
+  for (Eigen::Index i = 1; i < n; ++i) {
+    if (groups[i] != groups[i - 1]) continue;
+    g1 += r[i] * r[i - 1];
+    ++pairs;
+    C.noalias() += Z.row(i).transpose() * Z.row(i - 1);
+  }
+  g1 = pairs > 0 ? g1 / n : 0.0;
+  g1 = std::clamp(g1, -0.5 * g0, 0.5 * g0);
+  const double dof = n > p ? static_cast<double>(n) / (n - p) : 1.0;
+  const Eigen::MatrixXd ZOZ = dof * (g0 * (Z.transpose() * Z) + g1 * (C + C.transpose()));
+  const Eigen::MatrixXd A = Z.transpose() * H;
+  const Eigen::MatrixXd Ainv = A.fullPivLu().inverse();
+  return Ainv * ZOZ * Ainv.transpose();
 }
 
 LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
@@ -145,10 +178,17 @@ LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
     case CovarianceKind::kConservative:
       fit.covariance = (fit.dof > 0 ? std::max(1.0, fit.sigma2) : 1.0) * unit;
       break;
+    case CovarianceKind::kDifferenced: {
+      std::vector<int> g(n, 0);
+      if (groups) g = *groups;
+      fit.covariance = DifferencedCovariance(sw.asDiagonal() * H, wr, g);
+      break;
+    }
     case CovarianceKind::kNeweyWest: {
       const int lags =
           options.newey_west_lags >= 0 ? options.newey_west_lags : DefaultNeweyWestLags(int(n));
-      fit.covariance = NeweyWestCovariance(H, fit.residuals, weights, lags, groups);
+      fit.covariance = NeweyWestCovariance(H, fit.residuals, weights, lags, groups,
+                                           options.truncated_kernel);
       break;
     }
   }

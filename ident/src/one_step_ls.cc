@@ -1,11 +1,14 @@
 #include "uuvplan/ident/one_step_ls.h"
 
 #include <algorithm>
+#include <limits>
+#include <Eigen/LU>
 #include <cmath>
 #include <sstream>
 
 #include "uuvplan/ident/regression.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/simulator.h"
 
 namespace uuvplan::ident {
 
@@ -44,7 +47,8 @@ bool OneStepOptions::IsValid(std::string* error) const {
 OneStepRows BuildOneStepRows(const model::DofModel& model,
                              const std::vector<const TrialData*>& trials,
                              const Eigen::VectorXd& theta, const std::vector<int>& free,
-                             const OneStepOptions& o) {
+                             const OneStepOptions& o,
+                             const std::vector<SmoothedSignal>* instrument) {
   OneStepRows rows;
   rows.free = free;
   const int np = model.num_parameters();
@@ -53,16 +57,19 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
   for (int j : linear) {
     if (std::find(free.begin(), free.end(), j) == free.end()) fixed_linear.push_back(j);
   }
+  int run_counter = 0;
   std::vector<Eigen::RowVectorXd> F;
   std::vector<double> Y;
   double noise_var_sum = 0.0;
   int noise_count = 0;
-  for (const TrialData* trial : trials) {
+  for (std::size_t ti = 0; ti < trials.size(); ++ti) {
+    const TrialData* trial = trials[ti];
     const SmoothedSignal& v = trial->velocity_estimate;
     const double input_sigma = trial->velocity_from_position ? trial->position_sigma : trial->velocity_sigma;
     const double gain = trial->velocity_from_position ? v.derivative_gain : v.value_gain;
-    if (input_sigma > 0) {
-      noise_var_sum += 2.0 * std::pow(gain * input_sigma, 2);
+    const double row_var = input_sigma > 0 && gain > 0 ? 2.0 * std::pow(gain * input_sigma, 2) : 0.0;
+    if (row_var > 0) {
+      noise_var_sum += row_var;
       ++noise_count;
     }
     // Knot spacing: one SG window (its span in time) unless told otherwise.
@@ -71,18 +78,16 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
       const double span = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
       window = span * (trial->sg_window - 1);
     }
-    std::size_t i = 0;
-    while (i < v.size()) {
-      const int run_id = v.run[i];
+    for (const auto& [begin, end] : SmoothRuns(*trial)) {
       std::vector<double> kt, kx;
-      for (; i < v.size() && v.run[i] == run_id; ++i) {
-        if (v.edge[i] || std::isnan(v.value[i])) continue;
+      for (std::size_t i = begin; i < end; ++i) {
         if (!kt.empty() && v.t[i] - kt.back() < window - 1e-9) continue;
         kt.push_back(v.t[i]);
         kx.push_back(v.value[i]);
       }
       if (kt.size() < 2) continue;
-      const IntegratedRegressors ir = IntegrateRegressors(model, *trial, kt, theta, o.max_step_s);
+      const IntegratedRegressors ir = IntegrateRegressors(
+          model, *trial, kt, theta, o.max_step_s, instrument ? &(*instrument)[ti] : nullptr);
       for (std::size_t k = 0; k + 1 < kt.size(); ++k) {
         Eigen::RowVectorXd row(1 + free.size());
         double known = ir.h0[k];
@@ -93,7 +98,10 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
         Y.push_back(kx[k + 1] - kx[k]);
         rows.t.push_back(kt[k + 1]);
         rows.group.push_back(trial->index);
+        rows.run.push_back(run_counter);
+        rows.weight.push_back(row_var > 0 ? 1.0 / row_var : -1.0);
       }
+      ++run_counter;
     }
   }
   (void)np;
@@ -104,6 +112,11 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
     rows.Y[r] = Y[r];
   }
   rows.noise_sigma = noise_count > 0 ? std::sqrt(noise_var_sum / noise_count) : 0.0;
+  // Rows of trials without a known noise take the mean weight.
+  const double mean_w = rows.noise_sigma > 0 ? 1.0 / (rows.noise_sigma * rows.noise_sigma) : 1.0;
+  for (double& w : rows.weight) {
+    if (!(w > 0)) w = mean_w;
+  }
   return rows;
 }
 
@@ -137,6 +150,27 @@ std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofIn
     std::vector<int> free = dofs[d].free;
     if (free.empty()) free = LinearParameters(model);
     rows[d] = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, free, o);
+    // Parameters whose regressor integrates to zero in every row are not excited here: they
+    // keep their given value and are reported (e.g. η of a direction never used).
+    std::vector<int> keep;
+    for (std::size_t c = 0; c < free.size(); ++c) {
+      if (rows[d].F.rows() > 0 && rows[d].F.col(1 + c).cwiseAbs().maxCoeff() > 0) {
+        keep.push_back(static_cast<int>(c));
+      } else {
+        results[d].not_excited.push_back(model.parameter_names()[free[c]]);
+      }
+    }
+    if (keep.size() != free.size()) {
+      std::vector<int> kept_free;
+      Eigen::MatrixXd F(rows[d].F.rows(), 1 + keep.size());
+      F.col(0) = rows[d].F.col(0);
+      for (std::size_t c = 0; c < keep.size(); ++c) {
+        F.col(1 + c) = rows[d].F.col(1 + keep[c]);
+        kept_free.push_back(free[keep[c]]);
+      }
+      rows[d].F = std::move(F);
+      rows[d].free = kept_free;
+    }
     weight[d] = dofs[d].weight > 0 ? dofs[d].weight
                 : rows[d].noise_sigma > 0 ? 1.0 / (rows[d].noise_sigma * rows[d].noise_sigma)
                                           : 1.0;
@@ -155,14 +189,17 @@ std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofIn
     col0[d] = c0;
     F.block(r0, c0, R.F.rows(), R.F.cols()) = R.F;
     Y.segment(r0, R.Y.size()) = R.Y;
-    W.segment(r0, R.Y.size()).setConstant(weight[d]);
-    for (int k = 0; k < R.Y.size(); ++k) groups[r0 + k] = static_cast<int>(d) * 1000003 + R.group[k];
+    // Λ of the DOF (seed 004 eq. 13) times each row's relative weight.
+    const double mean_row = R.noise_sigma > 0 ? 1.0 / (R.noise_sigma * R.noise_sigma) : 1.0;
+    for (int k = 0; k < R.Y.size(); ++k) W[r0 + k] = weight[d] * R.weight[k] / mean_row;
+    for (int k = 0; k < R.Y.size(); ++k) groups[r0 + k] = static_cast<int>(d) * 1000003 + R.run[k];
     r0 += static_cast<int>(R.F.rows());
     c0 += static_cast<int>(R.F.cols());
   }
   LeastSquaresOptions lso;
   lso.covariance = o.covariance;
   lso.newey_west_lags = o.newey_west_lags;
+  lso.truncated_kernel = true;  // consecutive rows share an endpoint: MA(1), weight 1
   lso.max_condition = o.max_condition;
   const LinearFit fit = SolveLeastSquares(F, Y, &W, lso, &groups);
 
@@ -187,6 +224,84 @@ std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofIn
     res.psi = fit.theta.segment(col0[d], P);
     res.psi_covariance = fit.covariance.block(col0[d], col0[d], P, P);
     res.residuals = fit.residuals.segment(row0[d], res.num_rows);
+    if (o.covariance == CovarianceKind::kDifferenced) {
+      // Per DOF (the blocks are independent; the DOF's weight cancels).
+      const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
+      res.psi_covariance = DifferencedCovariance(sw.asDiagonal() * R.F, sw.cwiseProduct(res.residuals), R.run);
+    }
+    // Instrumental variables against the errors in variables of ξ̃ in F.
+    for (int it = 0; it < o.iv_iterations && res.psi[0] > 0 && res.psi.allFinite(); ++it) {
+      Eigen::VectorXd theta_now;
+      Eigen::MatrixXd unused;
+      PsiToPhysical(model, dofs[d].theta, R.free, res.psi, res.psi_covariance, &theta_now, &unused);
+      // The trial simulated by the current estimate from the data's initial state: on a fine
+      // grid (every input breakpoint, steps <= simulation_step_s) and at the data's samples.
+      std::vector<SmoothedSignal> fine, sampled;
+      bool ok = true;
+      for (const TrialData* trial : dofs[d].trials) {
+        const SmoothedSignal& v = trial->velocity_estimate;
+        std::vector<double> grid;
+        const double t_end = v.t.empty() ? 0.0 : v.t.back();
+        for (double t = 0.0; t < t_end; t += o.simulation_step_s) grid.push_back(t);
+        for (double b : trial->input->Breakpoints()) {
+          if (b < t_end) grid.push_back(b);
+        }
+        for (double t : v.t) grid.push_back(std::max(0.0, t));
+        std::sort(grid.begin(), grid.end());
+        grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+        model::SimulationOptions so;
+        so.step_s = o.simulation_step_s;
+        Eigen::VectorXd x0 = Eigen::VectorXd::Zero(model.num_states());
+        x0[1] = trial->initial_velocity;
+        const model::Trajectory tr = model::Simulate(model, theta_now, trial->conditions(), grid, so, &x0);
+        if (!tr.x.allFinite()) {
+          ok = false;
+          break;
+        }
+        SmoothedSignal f, s2;
+        f.t = grid;
+        f.value.assign(tr.x.col(1).data(), tr.x.col(1).data() + tr.x.rows());
+        s2.t = v.t;
+        for (double t : v.t) {
+          const std::size_t i = std::lower_bound(grid.begin(), grid.end(), std::max(0.0, t)) - grid.begin();
+          const double x[3] = {tr.x(i, 0), tr.x(i, 1), model.num_states() > 2 ? tr.x(i, 2) : 0.0};
+          double dx[3];
+          model.Derivative(grid[i], x, trial->conditions(), theta_now.data(), dx);
+          s2.value.push_back(tr.x(i, 1));
+          s2.derivative.push_back(dx[1]);
+        }
+        // Measured velocities are interpolated as the simulated samples are; velocities derived
+        // from positions are smooth local polynomials whose error is the filter's, not the
+        // interpolation's: no correction for them.
+        if (trial->velocity_from_position) s2 = f;
+        fine.push_back(std::move(f));
+        sampled.push_back(std::move(s2));
+      }
+      if (!ok) break;
+      const OneStepRows Z = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, R.free, o, &fine);
+      const OneStepRows Zs = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, R.free, o, &sampled);
+      if (Z.F.rows() != R.F.rows() || Zs.F.rows() != R.F.rows()) break;
+      // F corrected for the interpolation defect seen on the simulated path.
+      // Rows scaled by 1/σ of their noise (Ω keeps its form: the weight is constant in a run).
+      const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
+      const Eigen::MatrixXd Fc = sw.asDiagonal() * (R.F + (Z.F - Zs.F));
+      const Eigen::MatrixXd Zw = sw.asDiagonal() * Z.F;
+      const Eigen::VectorXd Yw = sw.cwiseProduct(R.Y);
+      const Eigen::MatrixXd A = Zw.transpose() * Fc;
+      Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+      if (!lu.isInvertible()) break;
+      const Eigen::VectorXd psi = lu.solve(Zw.transpose() * Yw);
+      if (!psi.allFinite() || !(psi[0] > 0)) break;
+      // Cov = A⁻¹ZᵀΩZA⁻ᵀ with Ω the MA(1) of the (weighted) residuals within runs: the rows
+      // share their endpoints, and the integrals add white errors besides.
+      const Eigen::VectorXd r = Yw - Fc * psi;
+      const int nr = static_cast<int>(R.Y.size());
+      res.psi = psi;
+      res.psi_covariance = Ma1Covariance(Fc, Zw, r, R.run);
+      res.residuals = R.Y - (R.F + (Z.F - Zs.F)) * psi;
+      res.cost = res.residuals.squaredNorm() / nr;
+      res.instrumental = true;
+    }
     res.cost = res.residuals.squaredNorm() / res.num_rows;
     res.condition_number = fit.condition_number;
     // This DOF's own conditioning and non-identifiable parameters.

@@ -54,17 +54,26 @@ bool OutlierOptions::IsValid(std::string* error) const {
 }
 
 std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& o,
-                                    double known_sigma) {
+                                    double known_sigma, const std::vector<double>* protect,
+                                    double protect_radius) {
   std::vector<Outlier> out;
   const std::size_t n = s.size();
   if (n < 8) return out;
   std::vector<char> skip(n, 0);
+  std::vector<char> guarded(n, 0);
+  if (protect) {
+    for (double p : *protect) {
+      const auto lo = std::lower_bound(s.t.begin(), s.t.end(), p - protect_radius) - s.t.begin();
+      const auto hi = std::upper_bound(s.t.begin(), s.t.end(), p + protect_radius) - s.t.begin();
+      for (auto i = lo; i < hi; ++i) guarded[i] = 1;
+    }
+  }
   for (int pass = 0; pass < 2; ++pass) {
     const std::vector<double> r = PredictionResiduals(s, o.half_window, skip);
     std::vector<double> abs_r;
     abs_r.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
-      if (!skip[i] && !std::isnan(r[i])) abs_r.push_back(std::abs(r[i]));
+      if (!skip[i] && !guarded[i] && !std::isnan(r[i])) abs_r.push_back(std::abs(r[i]));
     }
     const double scale = 1.4826 * MedianOf(abs_r);
     double limit = o.threshold * scale;
@@ -72,14 +81,32 @@ std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& o,
     if (!(limit > 0)) break;
     bool added = false;
     for (std::size_t i = 0; i < n; ++i) {
-      if (!skip[i] && !std::isnan(r[i]) && std::abs(r[i]) > limit) {
+      if (!skip[i] && !guarded[i] && !std::isnan(r[i]) && std::abs(r[i]) > limit) {
         skip[i] = 1;
         added = true;
       }
     }
     if (!added) break;
   }
-  // Final residuals of the flagged samples against their clean neighbours.
+  // Re-test every flagged sample against its clean neighbours: a neighbour of a spike may have
+  // been flagged only because the spike spoiled its prediction.
+  for (int pass = 0; pass < 3; ++pass) {
+    const std::vector<double> r = PredictionResiduals(s, o.half_window, skip);
+    std::vector<double> abs_r;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!skip[i] && !guarded[i] && !std::isnan(r[i])) abs_r.push_back(std::abs(r[i]));
+    }
+    double limit = o.threshold * 1.4826 * MedianOf(abs_r);
+    if (known_sigma > 0) limit = std::max(limit, o.noise_floor * known_sigma);
+    bool changed = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (skip[i] && !std::isnan(r[i]) && std::abs(r[i]) <= limit) {
+        skip[i] = 0;
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
   const std::vector<double> r = PredictionResiduals(s, o.half_window, skip);
   for (std::size_t i = 0; i < n; ++i) {
     if (skip[i]) out.push_back({i, s.t[i], s.y[i], r[i]});

@@ -442,8 +442,16 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
     if (!o.prune_insignificant || res.status != OutputErrorStatus::kConverged) break;
     int worst = -1;
     double worst_pe = kInsignificantPercentileError;
+    auto is_drag = [&](int j) {
+      const std::string& n = res.names[j];
+      return n == model::param::kLinearDrag || n == model::param::kQuadraticDrag ||
+             n == model::param::kLinearDragNeg || n == model::param::kQuadraticDragNeg;
+    };
+    const int drag_terms = static_cast<int>(std::count_if(free.begin(), free.end(), is_drag));
     for (int j : free) {
       if (std::find(o.prunable.begin(), o.prunable.end(), res.names[j]) == o.prunable.end()) continue;
+      // At least one drag term stays: a model without drag has no steady state.
+      if (is_drag(j) && drag_terms <= 1) continue;
       const double pe = PercentileError(theta[j], std::sqrt(res.covariance(j, j)));
       if (pe > worst_pe) {
         worst_pe = pe;

@@ -52,7 +52,8 @@ model::TermContext MeasuredContext(const model::DofModel& model, const TrialData
 
 IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const TrialData& trial,
                                          const std::vector<double>& b,
-                                         const Eigen::VectorXd& theta, double max_step) {
+                                         const Eigen::VectorXd& theta, double max_step,
+                                         const SmoothedSignal* velocity_source) {
   IntegratedRegressors out;
   const int np = model.num_parameters();
   const int n = b.size() < 2 ? 0 : static_cast<int>(b.size()) - 1;
@@ -64,18 +65,34 @@ IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const Tri
   std::size_t next_break = std::lower_bound(breaks.begin(), breaks.end(), b[0]) - breaks.begin();
   std::vector<double> h(np);
   const double g = 0.5 / std::sqrt(3.0);  // Gauss–Legendre nodes at mid ± g·len
-  const auto& vt = trial.velocity_estimate.t;
-  const auto& vv = trial.velocity_estimate.value;
+  const SmoothedSignal& src = velocity_source ? *velocity_source : trial.velocity_estimate;
+  const auto& vt = src.t;
+  const auto& vv = src.value;
+  // Slopes for cubic Hermite interpolation: the filter's acceleration where known.
+  const std::vector<double>* va = &src.derivative;
+  if (va && va->size() != vv.size()) va = nullptr;
   std::size_t cursor = 0;
-  // Linear interpolation with a forward-moving cursor (queries are increasing).
+  // Interpolation with a forward-moving cursor (queries are increasing): cubic Hermite between
+  // samples with the filter's accelerations (the local polynomials of the Savitzky–Golay fit),
+  // linear where an acceleration is missing.
   auto velocity = [&](double t) {
     if (vt.empty()) return 0.0;
     if (t <= vt.front()) return vv.front();
     if (t >= vt.back()) return vv.back();
     while (cursor + 1 < vt.size() && vt[cursor + 1] < t) ++cursor;
     while (cursor > 0 && vt[cursor] > t) --cursor;
-    const double w = (t - vt[cursor]) / (vt[cursor + 1] - vt[cursor]);
-    return vv[cursor] + w * (vv[cursor + 1] - vv[cursor]);
+    const double dt = vt[cursor + 1] - vt[cursor];
+    const double w = (t - vt[cursor]) / dt;
+    const double v0 = vv[cursor], v1 = vv[cursor + 1];
+    if (va) {
+      const double a0 = (*va)[cursor], a1 = (*va)[cursor + 1];
+      if (std::isfinite(a0) && std::isfinite(a1)) {
+        const double w2 = w * w, w3 = w2 * w;
+        return (2 * w3 - 3 * w2 + 1) * v0 + (w3 - 2 * w2 + w) * dt * a0 +
+               (-2 * w3 + 3 * w2) * v1 + (w3 - w2) * dt * a1;
+      }
+    }
+    return v0 + w * (v1 - v0);
   };
   for (int k = 0; k < n; ++k) {
     double a = b[k];

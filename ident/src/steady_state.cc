@@ -6,6 +6,7 @@
 
 #include "uuvplan/ident/regression.h"
 #include "uuvplan/ident/significance.h"
+#include "uuvplan/model/effects.h"
 #include "uuvplan/model/mapping.h"
 
 namespace uuvplan::ident {
@@ -27,6 +28,17 @@ double ForceSlope(const model::DofModel& model, const model::TermContext& c,
     d += model.terms()[j]->Partials(c, theta.data() + model.term_offset(int(j)), J.data()).d_xi;
   }
   return d;
+}
+
+bool IsDragName(const std::string& n) {
+  return n == model::param::kLinearDrag || n == model::param::kQuadraticDrag ||
+         n == model::param::kLinearDragNeg || n == model::param::kQuadraticDragNeg;
+}
+
+int CountDrag(const std::vector<int>& cols, const std::vector<std::string>& names) {
+  int n = 0;
+  for (int j : cols) n += IsDragName(names[j]) ? 1 : 0;
+  return n;
 }
 
 model::TermContext PointContext(const model::DofModel& model, const SteadyPoint& p,
@@ -118,6 +130,29 @@ std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetect
   return out;
 }
 
+void RefineSteadyPoints(const model::DofModel& model, const Eigen::VectorXd& theta,
+                        const std::vector<const TrialData*>& trials,
+                        std::vector<SteadyPoint>* points) {
+  const double m = theta[0];
+  if (!(m > 0)) return;
+  for (SteadyPoint& p : *points) {
+    if (p.user_marked) continue;
+    const TrialData* trial = nullptr;
+    for (const TrialData* t : trials) {
+      if (t->index == p.trial) trial = t;
+    }
+    if (!trial) continue;
+    const double kl = -ForceSlope(model, PointContext(model, p, theta), theta);
+    if (!(kl > 0)) continue;
+    const Signal& s = p.from_position ? trial->position : trial->velocity;
+    const double sigma = p.from_position ? trial->position_sigma : trial->velocity_sigma;
+    const SettlingFit f = SettlingSpeedFit(s, p.from_position, p.t0, p.t1, sigma, m / kl);
+    if (!f.ok) continue;
+    p.xi = f.speed;
+    p.sigma_xi = f.sigma;
+  }
+}
+
 SteadyStateResult SteadyStateFit(const model::DofModel& model,
                                  const std::vector<SteadyPoint>& points,
                                  const Eigen::VectorXd& theta_in, const SteadyStateOptions& o) {
@@ -156,6 +191,14 @@ SteadyStateResult SteadyStateFit(const model::DofModel& model,
   if (cols.empty()) {
     r.status = SteadyStatus::kNotExcited;
     r.message = n == 0 ? "no steady-state segment found" : "no parameter is excited by the steady segments";
+    return r;
+  }
+  if (n > 0 && y.cwiseAbs().maxCoeff() == 0.0) {
+    r.status = SteadyStatus::kNotExcited;
+    r.message = "every steady segment used a force whose installation coefficient is unknown: the "
+                "regression is homogeneous (θ = 0 fits it); η must be known (open water) for at "
+                "least one mapping and direction (seed 000 §II-A) — add legs with an open-water "
+                "mapping";
     return r;
   }
   if (n < static_cast<int>(cols.size()) + 1) {
@@ -208,6 +251,8 @@ SteadyStateResult SteadyStateFit(const model::DofModel& model,
     for (int c = 0; c < p; ++c) {
       const std::string& name = r.names[cols[c]];
       if (std::find(o.prunable.begin(), o.prunable.end(), name) == o.prunable.end()) continue;
+      // At least one drag term stays: a model without drag has no steady state.
+      if (IsDragName(name) && CountDrag(cols, r.names) <= 1) continue;
       const double pe = PercentileError(fit.theta[c], std::sqrt(fit.covariance(c, c)));
       if (pe > worst_pe) {
         worst_pe = pe;

@@ -156,9 +156,33 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
     if (used[m]) d.mappings_used.push_back(vehicle.mappings[m].name);
   }
   d.input = model::MakeHeldExcitation(d.force_t, d.force, d.mapping, d.duration);
+  {
+    const auto [fmin, fmax] = std::minmax_element(d.force.begin(), d.force.end());
+    const double range = *fmax - *fmin;
+    for (std::size_t i = 1; i < d.force.size(); ++i) {
+      if (d.mapping[i] != d.mapping[i - 1] || std::abs(d.force[i] - d.force[i - 1]) > 0.05 * range) {
+        d.force_jumps.push_back(d.force_t[i]);
+      }
+    }
+  }
 
   // Measurements of the DOF.
   Signal pos = Column(log.t, log.position[Index(dof)], d.time_offset);
+  if (model::IsRotational(dof)) {
+    // Headings may be wrapped to (−π, π] (logs built in memory, e.g. by the virtual pool, are
+    // not unwrapped by a reader): undo every step larger than π. Idempotent.
+    double offset = 0.0;
+    int jumps = 0;
+    for (std::size_t i = 1; i < pos.size(); ++i) {
+      const double step = pos.y[i] + offset - pos.y[i - 1];
+      if (std::abs(step) > M_PI) {
+        offset -= 2.0 * M_PI * std::round(step / (2.0 * M_PI));
+        ++jumps;
+      }
+      pos.y[i] += offset;
+    }
+    if (jumps > 0) d.notes.push_back("heading unwrapped (" + std::to_string(jumps) + " jumps of 2π)");
+  }
   Signal vel = Column(log.t, log.velocity[Index(dof)], d.time_offset);
   if (pos.size() < 3 && vel.size() < 3) {
     const bool any_column = log.HasPosition(dof) || log.HasVelocity(dof);
@@ -175,7 +199,12 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
                    double* estimated, const char* what) {
     if (s.size() < 3) return Signal{};
     if (o.remove_outliers) {
-      *outliers = DetectOutliers(s, o.outliers, declared);
+      // Command steps (and the start, where the trial's force is switched on) put a kink in
+      // the motion that no local quadratic predicts: those samples are not tested.
+      std::vector<double> kinks = d.force_jumps;
+      kinks.push_back(0.0);
+      const double h = (s.t.back() - s.t.front()) / std::max<std::size_t>(1, s.size() - 1);
+      *outliers = DetectOutliers(s, o.outliers, declared, &kinks, (o.outliers.half_window + 1) * h);
       if (!outliers->empty()) {
         d.notes.push_back(std::to_string(outliers->size()) + " " + what + " outlier(s) excluded (first at t = " +
                           Fmt(outliers->front().t + d.time_offset) + " s, residual " +
@@ -208,29 +237,31 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
   }
 
   // Velocity estimate (seed 000 §IV-D: Savitzky–Golay, 4th order, 21–41 points).
+  const double time_scale = InputTimeScale(d.force_t, d.force);
   SavitzkyGolayOptions sg;
   sg.order = o.sg_order;
   sg.gap_factor = o.gap_factor;
   if (d.has_velocity()) {
-    sg.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.velocity));
+    sg.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.velocity), time_scale);
     d.velocity_estimate = SavitzkyGolay(d.velocity, sg);
     // The smoothed velocity is the estimate (derivative = acceleration, unused here).
     d.velocity_from_position = false;
     d.initial_velocity = d.velocity_estimate.value.front();
     if (d.has_position()) {
       SavitzkyGolayOptions sp = sg;
-      sp.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.position));
+      sp.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.position), time_scale);
       d.initial_position = SavitzkyGolay(d.position, sp).value.front();
     } else {
       d.initial_position = std::nan("");
     }
   } else {
-    sg.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.position));
+    sg.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.position), time_scale);
     SmoothedSignal s = SavitzkyGolay(d.position, sg);
     d.initial_position = s.value.front();
     d.initial_velocity = std::isfinite(s.derivative.front()) ? s.derivative.front() : 0.0;
     d.velocity_estimate = s;
     d.velocity_estimate.value = s.derivative;  // velocity
+    d.velocity_estimate.derivative = s.second_derivative;  // acceleration
     d.velocity_from_position = true;
   }
   d.sg_window = sg.window;
@@ -264,6 +295,47 @@ std::vector<ForcePiece> ConstantForcePieces(const TrialData& d, double tol) {
     pieces.push_back({i == 0 ? 0.0 : d.force_t[i], d.duration, f, m});
   }
   return pieces;
+}
+
+double FilterHalfSpan(const TrialData& d) {
+  const SmoothedSignal& v = d.velocity_estimate;
+  if (v.size() < 2) return 0.0;
+  const double step = (v.t.back() - v.t.front()) / (v.size() - 1);
+  return 0.5 * (d.sg_window - 1) * step;
+}
+
+bool NearForceJump(const TrialData& d, double t, double half_span) {
+  const auto it = std::lower_bound(d.force_jumps.begin(), d.force_jumps.end(), t - half_span);
+  return it != d.force_jumps.end() && *it <= t + half_span;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> SmoothRuns(const TrialData& d) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  const SmoothedSignal& v = d.velocity_estimate;
+  const double half = FilterHalfSpan(d);
+  std::size_t begin = 0;
+  bool open = false;
+  std::size_t next_jump = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const bool usable = !v.edge[i] && std::isfinite(v.value[i]) && !NearForceJump(d, v.t[i], half);
+    // A jump between the previous usable sample and this one also ends the run.
+    bool crossed = false;
+    while (next_jump < d.force_jumps.size() && d.force_jumps[next_jump] <= v.t[i]) {
+      crossed = true;
+      ++next_jump;
+    }
+    const bool new_run = open && (v.run[i] != v.run[begin] || crossed);
+    if (open && (!usable || new_run)) {
+      out.push_back({begin, i});
+      open = false;
+    }
+    if (usable && !open) {
+      begin = i;
+      open = true;
+    }
+  }
+  if (open) out.push_back({begin, v.size()});
+  return out;
 }
 
 double EstimatedVelocity(const TrialData& d, double t) {

@@ -51,7 +51,21 @@ ResidualAnalysis AnalyzeResiduals(const std::vector<double>& r, int max_lag, int
     a.histogram.skewness = m3 / std::pow(m2, 1.5);
     a.histogram.excess_kurtosis = m4 / (m2 * m2) - 3.0;
   }
-  a.white = L > 0 && a.lags_outside <= std::max(1, static_cast<int>(std::floor(0.05 * L)));
+  // White when no more lags fall outside than white noise puts there 99% of the time: the 99%
+  // quantile of Binomial(L, 0.05) (lags treated as independent), e.g. 3 of 20.
+  int allowed = 0;
+  {
+    double cdf = 0.0, term = std::pow(0.95, L);  // P(X = 0)
+    for (int c = 0; c <= L; ++c) {
+      cdf += term;
+      if (cdf >= 0.99) {
+        allowed = c;
+        break;
+      }
+      term *= (L - c) / (c + 1.0) * (0.05 / 0.95);
+    }
+  }
+  a.white = L > 0 && a.lags_outside <= allowed;
   // Histogram over mean ± 4σ.
   if (bins > 0 && a.std > 0) {
     const double lo = a.mean - 4 * a.std, hi = a.mean + 4 * a.std;

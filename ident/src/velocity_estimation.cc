@@ -41,7 +41,7 @@ std::vector<std::pair<std::size_t, std::size_t>> Runs(const std::vector<double>&
 // Row vectors giving the value and the first derivative (per unit of u) at u = at of the
 // least-squares polynomial of `order` through points u: e_kᵀ (VᵀV)⁻¹ Vᵀ.
 void PolynomialWeights(const std::vector<double>& u, int order, double at, Eigen::VectorXd* wv,
-                       Eigen::VectorXd* wd) {
+                       Eigen::VectorXd* wd, Eigen::VectorXd* w2) {
   const int n = static_cast<int>(u.size());
   const int q = order + 1;
   Eigen::MatrixXd V(n, q);
@@ -54,15 +54,18 @@ void PolynomialWeights(const std::vector<double>& u, int order, double at, Eigen
   }
   const Eigen::MatrixXd P = (V.transpose() * V).ldlt().solve(V.transpose());  // q × n
   // value(at) = Σ_j a_j at^j, derivative = Σ_j j a_j at^{j-1}.
-  Eigen::VectorXd ev = Eigen::VectorXd::Zero(q), ed = Eigen::VectorXd::Zero(q);
+  Eigen::VectorXd ev = Eigen::VectorXd::Zero(q), ed = Eigen::VectorXd::Zero(q),
+                  e2 = Eigen::VectorXd::Zero(q);
   double p = 1.0;
   for (int j = 0; j < q; ++j) {
     ev[j] = p;
     if (j + 1 < q) ed[j + 1] = (j + 1) * p;
+    if (j + 2 < q) e2[j + 2] = (j + 2) * (j + 1) * p;
     p *= at;
   }
   *wv = P.transpose() * ev;
   *wd = P.transpose() * ed;
+  *w2 = P.transpose() * e2;
 }
 
 // Smooths one run [b, e) of samples into out at the same indices.
@@ -74,6 +77,7 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
     for (std::size_t i = b; i < e; ++i) {
       out->value[i] = s.y[i];
       out->derivative[i] = kNaN;
+      out->second_derivative[i] = kNaN;
       out->edge[i] = true;
     }
     return;
@@ -93,38 +97,42 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
     }
   }
   std::vector<double> u(w);
-  Eigen::VectorXd wv, wd;
+  Eigen::VectorXd wv, wd, w2;
   if (uniform) {
     for (int j = 0; j < w; ++j) u[j] = j - hw;
-    PolynomialWeights(u, q, 0.0, &wv, &wd);
+    PolynomialWeights(u, q, 0.0, &wv, &wd, &w2);
     if (!*gains_set) {
       out->value_gain = wv.norm();
       out->derivative_gain = wd.norm() / h;
       *gains_set = true;
     }
     for (int i = hw; i < n - hw; ++i) {
-      double v = 0.0, d = 0.0;
+      double v = 0.0, d = 0.0, a = 0.0;
       const double* y = &s.y[b + i - hw];
       for (int j = 0; j < w; ++j) {
         v += wv[j] * y[j];
         d += wd[j] * y[j];
+        a += w2[j] * y[j];
       }
       out->value[b + i] = v;
       out->derivative[b + i] = d / h;
+      out->second_derivative[b + i] = a / (h * h);
       out->edge[b + i] = false;
     }
     // End polynomials: the first/last window's fit evaluated at each edge point.
     for (int side = 0; side < 2; ++side) {
       const int first = side == 0 ? 0 : n - w;
       for (int i = side == 0 ? 0 : n - hw; i < (side == 0 ? hw : n); ++i) {
-        PolynomialWeights(u, q, static_cast<double>(i - first - hw), &wv, &wd);
-        double v = 0.0, d = 0.0;
+        PolynomialWeights(u, q, static_cast<double>(i - first - hw), &wv, &wd, &w2);
+        double v = 0.0, d = 0.0, a = 0.0;
         for (int j = 0; j < w; ++j) {
           v += wv[j] * s.y[b + first + j];
           d += wd[j] * s.y[b + first + j];
+          a += w2[j] * s.y[b + first + j];
         }
         out->value[b + i] = v;
         out->derivative[b + i] = d / h;
+        out->second_derivative[b + i] = a / (h * h);
         out->edge[b + i] = true;
       }
     }
@@ -134,14 +142,16 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
   for (int i = 0; i < n; ++i) {
     const int first = std::clamp(i - hw, 0, n - w);
     for (int j = 0; j < w; ++j) u[j] = (s.t[b + first + j] - s.t[b + i]) / h;
-    PolynomialWeights(u, q, 0.0, &wv, &wd);
-    double v = 0.0, d = 0.0;
+    PolynomialWeights(u, q, 0.0, &wv, &wd, &w2);
+    double v = 0.0, d = 0.0, a = 0.0;
     for (int j = 0; j < w; ++j) {
       v += wv[j] * s.y[b + first + j];
       d += wd[j] * s.y[b + first + j];
+      a += w2[j] * s.y[b + first + j];
     }
     out->value[b + i] = v;
     out->derivative[b + i] = d / h;
+    out->second_derivative[b + i] = a / (h * h);
     out->edge[b + i] = i < hw || i >= n - hw;
     if (!*gains_set && !out->edge[b + i]) {
       out->value_gain = wv.norm();
@@ -198,11 +208,52 @@ bool SteadyDetectionOptions::IsValid(std::string* error) const {
   return true;
 }
 
-int SavitzkyGolayWindow(double rate_hz) {
+int SavitzkyGolayWindow(double rate_hz, double input_time_scale_s) {
   int n = static_cast<int>(std::lround(4.0 * rate_hz));
   n = std::clamp(n, 21, 41);
+  if (input_time_scale_s > 0) {
+    const int fast = static_cast<int>(std::floor(0.25 * input_time_scale_s * rate_hz)) + 1;
+    n = std::min(n, std::max(9, fast));
+  }
   if (n % 2 == 0) ++n;
   return std::min(n, 41);
+}
+
+double InputTimeScale(const std::vector<double>& t, const std::vector<double>& f) {
+  if (f.size() < 3) return 0.0;
+  double lo = f[0], hi = f[0], mean = 0.0;
+  for (double v : f) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+    mean += v;
+  }
+  mean /= f.size();
+  const double tol = 1e-9 * std::max(std::abs(lo), std::abs(hi)) + 1e-12;
+  if (hi - lo <= tol) return 0.0;
+  std::vector<double> changes;
+  for (std::size_t i = 1; i < f.size(); ++i) {
+    if (std::abs(f[i] - f[i - 1]) > tol) changes.push_back(t[i]);
+  }
+  if (changes.size() < 0.2 * (f.size() - 1)) {
+    // Piecewise constant: durations between changes (including the first and last piece).
+    std::vector<double> legs;
+    double prev = t.front();
+    for (double c : changes) {
+      legs.push_back(c - prev);
+      prev = c;
+    }
+    legs.push_back(t.back() - prev);
+    return Median(legs);
+  }
+  std::vector<double> crossings;
+  for (std::size_t i = 1; i < f.size(); ++i) {
+    if ((f[i] - mean) * (f[i - 1] - mean) < 0) crossings.push_back(t[i]);
+  }
+  if (crossings.size() < 3) return t.back() - t.front();
+  // Full periods (every other crossing), robust to a mean that is off the sine's offset.
+  std::vector<double> periods;
+  for (std::size_t i = 2; i < crossings.size(); ++i) periods.push_back(crossings[i] - crossings[i - 2]);
+  return Median(periods);
 }
 
 SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
@@ -211,6 +262,7 @@ SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& option
   out.t = s.t;
   out.value.assign(n, kNaN);
   out.derivative.assign(n, kNaN);
+  out.second_derivative.assign(n, kNaN);
   out.edge.assign(n, true);
   out.run.assign(n, 0);
   bool gains_set = false;
@@ -264,6 +316,7 @@ SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap
   out.t = p.t;
   out.value.assign(n, kNaN);
   out.derivative.assign(n, kNaN);
+  out.second_derivative.assign(n, kNaN);
   out.edge.assign(n, true);
   out.run.assign(n, 0);
   int run = 0;
@@ -273,15 +326,23 @@ SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap
     ++run;
     if (m < 3) continue;
     std::vector<double> d(m), y(p.y.begin() + b, p.y.begin() + e);
+    // Central differences (exact for parabolas on any grid: the derivative of the parabola
+    // through three points at the middle one), second-order one-sided at the ends.
+    auto parabola_slope = [&](std::size_t i0, std::size_t at) {
+      const double t0 = p.t[b + i0], t1 = p.t[b + i0 + 1], t2 = p.t[b + i0 + 2], x = p.t[b + at];
+      const double y0 = y[i0], y1 = y[i0 + 1], y2 = y[i0 + 2];
+      return y0 * (2 * x - t1 - t2) / ((t0 - t1) * (t0 - t2)) +
+             y1 * (2 * x - t0 - t2) / ((t1 - t0) * (t1 - t2)) +
+             y2 * (2 * x - t0 - t1) / ((t2 - t0) * (t2 - t1));
+    };
     for (std::size_t i = 0; i < m; ++i) {
-      const std::size_t lo = i == 0 ? 0 : i - 1, hi = i + 1 == m ? m - 1 : i + 1;
-      d[i] = (y[hi] - y[lo]) / (p.t[b + hi] - p.t[b + lo]);
+      d[i] = parabola_slope(i == 0 ? 0 : (i + 1 == m ? m - 3 : i - 1), i);
     }
     const double rate = (m - 1) / (p.t[e - 1] - p.t[b]);
     const std::vector<double> fv = ButterworthFiltFilt(y, rate, cutoff_hz);
     const std::vector<double> fd = ButterworthFiltFilt(d, rate, cutoff_hz);
-    // The filter's transient spans about one period of the cutoff at each end.
-    const std::size_t edge = static_cast<std::size_t>(std::ceil(rate / cutoff_hz));
+    // The filter's transient spans a few periods of the cutoff at each end.
+    const std::size_t edge = static_cast<std::size_t>(std::ceil(3.0 * rate / cutoff_hz));
     for (std::size_t i = 0; i < m; ++i) {
       out.value[b + i] = fv[i];
       out.derivative[b + i] = fd[i];
@@ -360,6 +421,125 @@ SpeedFit MeanSpeedFit(const Signal& s, double t0, double t1, double known_sigma)
 
 namespace {
 
+// Linear least squares of the settling model at a fixed τ: columns [1, t − t̄, e] (positions)
+// or [1, e] (velocities), e = exp(−(t − t0)/τ). Returns the RSS and the coefficients.
+double SettlingProfile(const Signal& s, std::size_t lo, std::size_t hi, bool is_position,
+                       double t0, double tbar, double tau, Eigen::Vector3d* coef) {
+  const int q = is_position ? 3 : 2;
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  double yy = 0.0;
+  for (std::size_t i = lo; i < hi; ++i) {
+    const double e = std::exp(-(s.t[i] - t0) / tau);
+    const double row[3] = {1.0, is_position ? s.t[i] - tbar : e, e};
+    for (int a = 0; a < q; ++a) {
+      b[a] += row[a] * s.y[i];
+      for (int c = 0; c < q; ++c) A(a, c) += row[a] * row[c];
+    }
+    yy += s.y[i] * s.y[i];
+  }
+  Eigen::LDLT<Eigen::MatrixXd> ldlt(A.topLeftCorner(q, q));
+  const Eigen::VectorXd x = ldlt.solve(b.head(q));
+  coef->setZero();
+  coef->head(q) = x;
+  return std::max(0.0, yy - x.dot(b.head(q)));
+}
+
+}  // namespace
+
+SettlingFit SettlingSpeedFit(const Signal& s, bool is_position, double t0, double t1,
+                             double known_sigma, double fixed_tau) {
+  SettlingFit f;
+  f.t0 = t0;
+  f.t1 = t1;
+  const std::size_t lo = std::lower_bound(s.t.begin(), s.t.end(), t0) - s.t.begin();
+  const std::size_t hi = std::upper_bound(s.t.begin(), s.t.end(), t1) - s.t.begin();
+  const int n = static_cast<int>(hi - lo);
+  f.n = n;
+  const int p = is_position ? 4 : 3;
+  if (n < p + 4) return f;
+  const double span = s.t[hi - 1] - s.t[lo];
+  if (!(span > 0)) return f;
+  double tbar = 0.0;
+  for (std::size_t i = lo; i < hi; ++i) tbar += s.t[i];
+  tbar /= n;
+  const double start = s.t[lo];
+  // Profile over τ on a log grid, then golden-section refinement around the best point.
+  const double tau_lo = std::max(3.0 * span / (n - 1), 1e-3), tau_hi = span / 3.0;
+  if (!(tau_hi > tau_lo) && !(fixed_tau > 0)) return f;
+  constexpr int kGrid = 24;
+  Eigen::Vector3d coef;
+  double tau = fixed_tau;
+  if (!(fixed_tau > 0)) {
+  double best_rss = std::numeric_limits<double>::infinity();
+  int best = 0;
+  std::vector<double> grid(kGrid);
+  for (int g = 0; g < kGrid; ++g) {
+    grid[g] = tau_lo * std::pow(tau_hi / tau_lo, static_cast<double>(g) / (kGrid - 1));
+    const double rss = SettlingProfile(s, lo, hi, is_position, start, tbar, grid[g], &coef);
+    if (rss < best_rss) {
+      best_rss = rss;
+      best = g;
+    }
+  }
+  double a = std::log(grid[std::max(0, best - 1)]), b = std::log(grid[std::min(kGrid - 1, best + 1)]);
+  const double gr = 0.5 * (std::sqrt(5.0) - 1.0);
+  double c = b - gr * (b - a), d = a + gr * (b - a);
+  double fc = SettlingProfile(s, lo, hi, is_position, start, tbar, std::exp(c), &coef);
+  double fd = SettlingProfile(s, lo, hi, is_position, start, tbar, std::exp(d), &coef);
+  for (int it = 0; it < 20; ++it) {
+    if (fc < fd) {
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - gr * (b - a);
+      fc = SettlingProfile(s, lo, hi, is_position, start, tbar, std::exp(c), &coef);
+    } else {
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + gr * (b - a);
+      fd = SettlingProfile(s, lo, hi, is_position, start, tbar, std::exp(d), &coef);
+    }
+  }
+  tau = std::exp(0.5 * (a + b));
+  }
+  const double rss = SettlingProfile(s, lo, hi, is_position, start, tbar, tau, &coef);
+  const double B = is_position ? coef[2] : coef[1];
+  // Gauss–Newton covariance of [c, v, B, τ] (or [v∞, A, τ]).
+  Eigen::MatrixXd J(n, p);
+  for (int i = 0; i < n; ++i) {
+    const double u = s.t[lo + i] - start;
+    const double e = std::exp(-u / tau);
+    int k = 0;
+    J(i, k++) = 1.0;
+    if (is_position) J(i, k++) = s.t[lo + i] - tbar;
+    J(i, k++) = e;
+    J(i, k++) = B * u / (tau * tau) * e;
+  }
+  Eigen::MatrixXd N = J.transpose() * J;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(N);
+  const double cond = svd.singularValues()[0] / std::max(1e-300, svd.singularValues()[p - 1]);
+  // Without a visible transient τ is not determined: the covariance at fixed τ is used.
+  const int q = cond < 1e12 && !(fixed_tau > 0) ? p : p - 1;
+  const double var = known_sigma > 0 ? known_sigma * known_sigma : rss / (n - q);
+  const Eigen::MatrixXd C = var * N.topLeftCorner(q, q).ldlt().solve(Eigen::MatrixXd::Identity(q, q));
+  const int iv = is_position ? 1 : 0, ib = is_position ? 2 : 1;
+  f.speed = is_position ? coef[1] : coef[0];
+  f.sigma = std::sqrt(std::max(0.0, C(iv, iv)));
+  f.offset = coef[0];
+  f.residual_sd = std::sqrt(rss / (n - q));
+  f.tau = tau;
+  f.amplitude = B;
+  f.amplitude_sigma = std::sqrt(std::max(0.0, C(ib, ib)));
+  f.dof = n - q;
+  f.chi2 = known_sigma > 0 ? rss / (known_sigma * known_sigma) : f.dof;
+  f.ok = std::isfinite(f.speed) && std::isfinite(f.sigma) && f.sigma > 0;
+  return f;
+}
+
+namespace {
+
 // Suffix sums of u^k (k = 0..4), u^k·y (k = 0..2) and y² for O(1) polynomial fits of any tail.
 struct TailSums {
   std::vector<std::array<double, 9>> s;  // s[i] = sums over samples i..end
@@ -432,6 +612,8 @@ std::vector<SteadySegment> DetectSteadySegments(const Signal& s, bool is_positio
     for (int i = 0; i + o.min_samples <= n; i += stride) {
       const double t_start = s.t[lo + i];
       if (t_end - t_start < o.min_duration_s) break;
+      SteadySegment seg;
+      seg.piece = static_cast<int>(p);
       double change = 0.0, sigma = 0.0;
       if (!TailChange(ts, i, u[i], u[n - 1], is_position, known_sigma, &change, &sigma)) continue;
       if (std::abs(change) > o.z * sigma) continue;
@@ -443,10 +625,14 @@ std::vector<SteadySegment> DetectSteadySegments(const Signal& s, bool is_positio
                                      : MeanSpeedFit(s, t_mid, t_end, known_sigma);
       if (!a.ok || !b.ok) continue;
       if (std::abs(a.speed - b.speed) > o.z * std::hypot(a.sigma, b.sigma)) continue;
-      SteadySegment seg;
-      seg.piece = static_cast<int>(p);
       seg.fit = is_position ? ConstantSpeedFit(s, t_start, piece.t1, known_sigma)
                             : MeanSpeedFit(s, t_start, piece.t1, known_sigma);
+      if (o.transient_model) {
+        // What remains of the transient is below the tests' power but can still bias the
+        // constant speed by several σ: fit it out (SettlingSpeedFit).
+        const SettlingFit settling = SettlingSpeedFit(s, is_position, t_start, piece.t1, known_sigma);
+        if (settling.ok) seg.fit = settling;
+      }
       if (seg.fit.ok) out.push_back(seg);
       break;
     }

@@ -158,6 +158,20 @@ int Unwrap(std::vector<double>* angle) {
   return jumps;
 }
 
+}  // namespace
+
+void UnwrapAngles(TrialLog* log) {
+  for (Dof dof : {Dof::kRoll, Dof::kPitch, Dof::kYaw}) {
+    const int jumps = Unwrap(&log->position[Index(dof)]);
+    if (jumps > 0) {
+      log->notes.push_back("unwrapped pos_" + std::string(DofName(dof)) + ": " +
+                           std::to_string(jumps) + " jump(s) of more than pi rad");
+    }
+  }
+}
+
+namespace {
+
 class TrialLogParser {
  public:
   TrialLogParser(const std::string& path, const std::vector<std::string>* allowed_mappings)
@@ -183,7 +197,7 @@ class TrialLogParser {
     if (log_.t.empty()) {
       Fail(path_, header_line, "no data rows after the header: expected at least one row");
     }
-    UnwrapAngles();
+    model::UnwrapAngles(&log_);
     return std::move(log_);
   }
 
@@ -353,15 +367,6 @@ class TrialLogParser {
     log_.mapping_names.emplace_back(name);
   }
 
-  void UnwrapAngles() {
-    for (Dof dof : {Dof::kRoll, Dof::kPitch, Dof::kYaw}) {
-      const int jumps = Unwrap(&log_.position[Index(dof)]);
-      if (jumps > 0) {
-        log_.notes.push_back("unwrapped pos_" + std::string(DofName(dof)) + ": " +
-                             std::to_string(jumps) + " jump(s) of more than pi rad");
-      }
-    }
-  }
 
   const std::string path_;
   const std::vector<std::string>* allowed_mappings_;

@@ -223,7 +223,9 @@ Campaign SimulateCampaign(const Truth& truth, const std::vector<TrialDesign>& de
                           const std::string& out_dir, const VirtualPoolOptions& options,
                           double pause_s) {
   namespace fs = std::filesystem;
-  const fs::path out(out_dir);
+  // "dir/" and "dir" are the same directory; the temporary sibling must be beside it.
+  fs::path out = fs::path(out_dir).lexically_normal();
+  if (out.filename().empty()) out = out.parent_path();
   std::error_code ec;
   if (fs::exists(out) && !fs::is_empty(out, ec)) {
     throw InputError(out_dir, "output directory exists and is not empty; choose a new --out "

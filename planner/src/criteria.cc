@@ -9,10 +9,14 @@ namespace uuvplan::planner {
 
 std::string_view CriterionName(Criterion c) {
   switch (c) {
-    case Criterion::kD: return "D";
-    case Criterion::kDs: return "Ds";
-    case Criterion::kA: return "A";
-    case Criterion::kE: return "E";
+    case Criterion::kD:
+      return "D";
+    case Criterion::kDs:
+      return "Ds";
+    case Criterion::kA:
+      return "A";
+    case Criterion::kE:
+      return "E";
   }
   return "D";
 }
@@ -92,9 +96,8 @@ CriterionValue EvaluateCriterion(const Eigen::MatrixXd& M_rel, Criterion criteri
     return out;
   }
   const Eigen::MatrixXd C = InterestInformation(M_rel, s, n);
-  const Eigen::VectorXd lam = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
-                                  C, Eigen::EigenvaluesOnly)
-                                  .eigenvalues();
+  const Eigen::VectorXd lam =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(C, Eigen::EigenvaluesOnly).eigenvalues();
   out.singular = lam.minCoeff() < kSingularThreshold || !out.uninformed_interest.empty();
   switch (criterion) {
     case Criterion::kD:
@@ -110,7 +113,9 @@ CriterionValue EvaluateCriterion(const Eigen::MatrixXd& M_rel, Criterion criteri
       out.value = -std::log(tr);
       break;
     }
-    case Criterion::kE: out.value = std::log(std::max(lam.minCoeff(), kSingularFloor)); break;
+    case Criterion::kE:
+      out.value = std::log(std::max(lam.minCoeff(), kSingularFloor));
+      break;
   }
   return out;
 }

@@ -8,6 +8,7 @@
 
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/mapping.h"
 #include "uuvplan/model/model_structure.h"
 #include "uuvplan/planner/fisher_information.h"
 #include "uuvplan/planner/seed_rules.h"
@@ -130,6 +131,41 @@ DofContext::DofContext(const model::Vehicle& vehicle, const model::Pool& pool, m
   if (!std::isfinite(tc_min_)) tc_min_ = 1.0;
   if (tc_max_ <= 0) tc_max_ = tc_min_;
   step_s_ = ChooseStep(tc_min_, options_.max_step_s);
+  design_sensors_ = sensors_;
+  for (auto* spec : {&design_sensors_.position, &design_sensors_.velocity}) {
+    if (!*spec) continue;
+    const double rate = 1.0 / step_s_;
+    if ((*spec)->rate_hz > rate) {
+      (*spec)->sigma *= std::sqrt(rate / (*spec)->rate_hz);
+      (*spec)->rate_hz = rate;
+    }
+  }
+}
+
+ForceRange DofContext::ForceRangeFor(int mapping, int sign) const {
+  ForceRange r = DirectionForceRange(vehicle_, mapping, sign);
+  const double limit =
+      model::IsRotational(dof_) ? options_.max_rotation_rate : options_.max_translation_speed;
+  if (!r.feasible || !(limit > 0)) return r;
+  // phi at which k·xi + kq·xi² = phi reaches the limit at the lowest drag of the box.
+  const int ik = Index(model::param::kLinearDrag), iq = Index(model::param::kQuadraticDrag);
+  double phi = std::numeric_limits<double>::infinity();
+  for (const auto& th : check_thetas_) {
+    const double k = ik >= 0 ? th[ik] : 0.0, kq = iq >= 0 ? th[iq] : 0.0;
+    phi = std::min(phi, k * limit + kq * limit * limit);
+  }
+  if (phi < r.max_abs) {
+    r.max_abs = phi;
+    if (!(r.max_abs > r.min_abs)) {
+      r.feasible = false;
+      std::ostringstream s;
+      s << "mapping '" << vehicle_.mappings[mapping].name << "' "
+        << (sign > 0 ? "positive" : "negative") << ": min_thrust already drives "
+        << model::DofName(dof_) << " beyond the speed limit " << limit;
+      r.reason = s.str();
+    }
+  }
+  return r;
 }
 
 std::vector<int> DofContext::Indices(const std::vector<std::string>& names) const {
@@ -155,18 +191,95 @@ Eigen::MatrixXd DofContext::PriorMatrix(const PriorInformation* prior) const {
   return M;
 }
 
-std::vector<Eigen::MatrixXd> DofContext::Information(const model::TrialDesign& design) const {
-  const auto input = model::MakeExcitation(vehicle_, design);
-  std::vector<Eigen::MatrixXd> out;
-  for (const auto& th : design_thetas_) {
-    out.push_back(
-        SimulateTrial(*model_, th, *input, sensors_, design.duration, step_s_, true).M);
+Eigen::MatrixXd DofContext::TrialModel::Embed(const Eigen::MatrixXd& M, int np) const {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(np, np);
+  for (int a = 0; a < M.rows(); ++a) {
+    for (int b = 0; b < M.cols(); ++b) out(to_dof[a], to_dof[b]) = M(a, b);
   }
   return out;
 }
 
-std::vector<double> DofContext::CriterionValues(const std::vector<Eigen::MatrixXd>& M,
-                                                Criterion c, const std::vector<int>& interest,
+namespace {
+// The eta parameters a trial can reach: non-open-water (mapping, direction) pairs it uses.
+std::vector<std::string> UsedEtas(const model::Vehicle& v, const model::TrialDesign& d) {
+  std::vector<std::pair<std::string, int>> uses;  // mapping, sign bits (1 pos, 2 neg)
+  auto add = [&](const std::string& mapping, double lo, double hi) {
+    int bits = 0;
+    if (hi >= 0) bits |= 1;
+    if (lo < 0) bits |= 2;
+    uses.push_back({mapping, bits});
+  };
+  switch (d.kind) {
+    case model::TrialKind::kSteady:
+      add(d.mapping, d.force, d.force);
+      break;
+    case model::TrialKind::kSine:
+      add(d.mapping, d.offset - std::abs(d.amplitude), d.offset + std::abs(d.amplitude));
+      break;
+    case model::TrialKind::kSegments:
+      for (const auto& s : d.segments)
+        add(s.mapping.empty() ? d.mapping : s.mapping, s.force, s.force);
+      break;
+  }
+  std::vector<std::string> etas;
+  for (const auto& [name, bits] : uses) {
+    const int mi = v.MappingIndex(name);
+    if (mi < 0) continue;
+    const auto& m = v.mappings[mi];
+    if ((bits & 1) && !m.IsOpenWater(model::Direction::kPos)) {
+      etas.push_back(model::EtaName(name, model::Direction::kPos));
+    }
+    if ((bits & 2) && !m.IsOpenWater(model::Direction::kNeg)) {
+      etas.push_back(model::EtaName(name, model::Direction::kNeg));
+    }
+  }
+  std::sort(etas.begin(), etas.end());
+  etas.erase(std::unique(etas.begin(), etas.end()), etas.end());
+  return etas;
+}
+}  // namespace
+
+const DofContext::TrialModel& DofContext::ModelFor(const model::TrialDesign& design) const {
+  const std::vector<std::string> etas = UsedEtas(vehicle_, design);
+  std::string key;
+  for (const auto& e : etas) key += e + ";";
+  auto it = trial_models_.find(key);
+  if (it != trial_models_.end()) return *it->second;
+  auto tm = std::make_unique<TrialModel>();
+  model::ModelStructure s = model::ModelStructure::Standard(vehicle_, dof_, {}, false);
+  s.free_eta = etas;
+  tm->model = std::make_unique<model::DofModel>(vehicle_, s);
+  for (const auto& n : tm->model->parameter_names()) tm->to_dof.push_back(Index(n));
+  auto sub = [&](const Eigen::VectorXd& th) {
+    Eigen::VectorXd out(tm->to_dof.size());
+    for (std::size_t i = 0; i < tm->to_dof.size(); ++i) out[i] = th[tm->to_dof[i]];
+    return out;
+  };
+  for (const auto& th : design_thetas_) tm->design_thetas.push_back(sub(th));
+  // Check points that differ only in parameters this trial does not have are one point.
+  for (const auto& th : check_thetas_) {
+    Eigen::VectorXd t = sub(th);
+    bool seen = false;
+    for (const auto& u : tm->check_thetas) seen = seen || u == t;
+    if (!seen) tm->check_thetas.push_back(std::move(t));
+  }
+  return *(trial_models_[key] = std::move(tm));
+}
+
+std::vector<Eigen::MatrixXd> DofContext::Information(const model::TrialDesign& design) const {
+  const auto input = model::MakeExcitation(vehicle_, design);
+  const TrialModel& tm = ModelFor(design);
+  std::vector<Eigen::MatrixXd> out;
+  for (const auto& th : tm.design_thetas) {
+    const TrialResponse r =
+        SimulateTrial(*tm.model, th, *input, sensors_, design.duration, step_s_, true);
+    out.push_back(tm.Embed(r.M, model_->num_parameters()));
+  }
+  return out;
+}
+
+std::vector<double> DofContext::CriterionValues(const std::vector<Eigen::MatrixXd>& M, Criterion c,
+                                                const std::vector<int>& interest,
                                                 bool* any_singular) const {
   std::vector<double> out;
   if (any_singular) *any_singular = false;
@@ -196,8 +309,10 @@ TrialCheck DofContext::Check(const model::TrialDesign& design) const {
   }
   double lo = 0.0, hi = 0.0;
   if (design.duration > 0) {
-    for (const auto& th : check_thetas_) {
-      const TrialResponse r = SimulateExcursion(*model_, th, *input, design.duration, step_s_);
+    const TrialModel& tm = ModelFor(design);
+    for (const auto& th : tm.check_thetas) {
+      const TrialResponse r =
+          SimulateExcursion(*tm.model, th, *input, design.duration, std::min(step_s_, 0.1));
       lo = std::min(lo, r.position_min);
       hi = std::max(hi, r.position_max);
     }
@@ -206,13 +321,14 @@ TrialCheck DofContext::Check(const model::TrialDesign& design) const {
   c.span = hi - lo;
   if (std::isfinite(c.available) && c.span > c.available + 1e-9) {
     std::ostringstream s;
-    const char* side = dof_ == model::Dof::kSurge   ? "length"
-                       : dof_ == model::Dof::kSway  ? "width"
-                                                    : "depth";
+    const char* side = dof_ == model::Dof::kSurge  ? "length"
+                       : dof_ == model::Dof::kSway ? "width"
+                                                   : "depth";
     s << "travel " << c.span << " m over the a priori box (from " << lo << " to " << hi
       << " m) exceeds the " << c.available << " m free along the pool " << side << " ("
-      << (dof_ == model::Dof::kSurge ? pool_.length
-                                     : dof_ == model::Dof::kSway ? pool_.width : pool_.depth)
+      << (dof_ == model::Dof::kSurge  ? pool_.length
+          : dof_ == model::Dof::kSway ? pool_.width
+                                      : pool_.depth)
       << " m - 2·" << pool_.margin << " m margin) by " << c.span - c.available
       << " m: needs a pool " << side << " of " << c.span + 2 * pool_.margin << " m";
     c.reasons.push_back(s.str());

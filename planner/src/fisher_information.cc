@@ -32,7 +32,7 @@ void AddSensor(const model::SensorSpec& spec, int channel, double duration,
 }  // namespace
 
 double ChooseStep(double shortest_time_constant_s, double max_step_s) {
-  double h = shortest_time_constant_s / 5.0;
+  double h = shortest_time_constant_s / 2.0;
   if (!(h > 0) || !std::isfinite(h)) h = max_step_s;
   return std::min(h, max_step_s);
 }

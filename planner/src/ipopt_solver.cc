@@ -6,7 +6,6 @@
 // has MUMPS only; the design variables are already O(1) (notes/toolchain.md).
 #include <IpIpoptApplication.hpp>
 #include <IpTNLP.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -17,9 +16,9 @@
 namespace uuvplan::planner {
 namespace {
 
+using internal::DesignEvaluator;
 using Ipopt::Index;
 using Ipopt::Number;
-using internal::DesignEvaluator;
 
 class DesignNlp final : public Ipopt::TNLP {
  public:
@@ -167,15 +166,24 @@ class DesignNlp final : public Ipopt::TNLP {
 
 std::string ReturnName(Ipopt::SolverReturn s) {
   switch (s) {
-    case Ipopt::SUCCESS: return "SUCCESS";
-    case Ipopt::MAXITER_EXCEEDED: return "MAXITER_EXCEEDED";
-    case Ipopt::STOP_AT_TINY_STEP: return "STOP_AT_TINY_STEP";
-    case Ipopt::STOP_AT_ACCEPTABLE_POINT: return "STOP_AT_ACCEPTABLE_POINT";
-    case Ipopt::LOCAL_INFEASIBILITY: return "LOCAL_INFEASIBILITY";
-    case Ipopt::RESTORATION_FAILURE: return "RESTORATION_FAILURE";
-    case Ipopt::ERROR_IN_STEP_COMPUTATION: return "ERROR_IN_STEP_COMPUTATION";
-    case Ipopt::INVALID_NUMBER_DETECTED: return "INVALID_NUMBER_DETECTED";
-    default: return "RETURN(" + std::to_string(static_cast<int>(s)) + ")";
+    case Ipopt::SUCCESS:
+      return "SUCCESS";
+    case Ipopt::MAXITER_EXCEEDED:
+      return "MAXITER_EXCEEDED";
+    case Ipopt::STOP_AT_TINY_STEP:
+      return "STOP_AT_TINY_STEP";
+    case Ipopt::STOP_AT_ACCEPTABLE_POINT:
+      return "STOP_AT_ACCEPTABLE_POINT";
+    case Ipopt::LOCAL_INFEASIBILITY:
+      return "LOCAL_INFEASIBILITY";
+    case Ipopt::RESTORATION_FAILURE:
+      return "RESTORATION_FAILURE";
+    case Ipopt::ERROR_IN_STEP_COMPUTATION:
+      return "ERROR_IN_STEP_COMPUTATION";
+    case Ipopt::INVALID_NUMBER_DETECTED:
+      return "INVALID_NUMBER_DETECTED";
+    default:
+      return "RETURN(" + std::to_string(static_cast<int>(s)) + ")";
   }
 }
 
@@ -209,10 +217,18 @@ SolverSummary SolveWithIpopt(const DesignProblem& p, const SolverOptions& o) {
   switch (nlp->status()) {
     case Ipopt::SUCCESS:
     case Ipopt::STOP_AT_ACCEPTABLE_POINT:
-    case Ipopt::STOP_AT_TINY_STEP: s.status = SolverStatus::kConverged; break;
-    case Ipopt::MAXITER_EXCEEDED: s.status = SolverStatus::kMaxEvaluations; break;
-    case Ipopt::LOCAL_INFEASIBILITY: s.status = SolverStatus::kInfeasible; break;
-    default: s.status = SolverStatus::kFailed; break;
+    case Ipopt::STOP_AT_TINY_STEP:
+      s.status = SolverStatus::kConverged;
+      break;
+    case Ipopt::MAXITER_EXCEEDED:
+      s.status = SolverStatus::kMaxEvaluations;
+      break;
+    case Ipopt::LOCAL_INFEASIBILITY:
+      s.status = SolverStatus::kInfeasible;
+      break;
+    default:
+      s.status = SolverStatus::kFailed;
+      break;
   }
   internal::FillFromBest(ev, &s);
   if (s.status == SolverStatus::kFailed && ev.has_best() && s.max_violation <= 1e-7) {

@@ -1,12 +1,11 @@
 // NLopt backend of the design solver (see solver.h): a global phase on the penalised robust
 // aggregate (DIRECT-L, or MLSL with BOBYQA as its local method), then a local phase on the
 // epigraph form of maximin (COBYLA derivative-free; SLSQP when the problem gives gradients).
-#include <nlopt.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <nlopt.hpp>
 
 #include "design_evaluator.h"
 #include "uuvplan/planner/solver.h"
@@ -109,13 +108,20 @@ void LocalConstraints(unsigned m, double* result, unsigned n, const double* z, d
 
 std::string ResultName(nlopt::result r) {
   switch (r) {
-    case nlopt::SUCCESS: return "SUCCESS";
-    case nlopt::STOPVAL_REACHED: return "STOPVAL_REACHED";
-    case nlopt::FTOL_REACHED: return "FTOL_REACHED";
-    case nlopt::XTOL_REACHED: return "XTOL_REACHED";
-    case nlopt::MAXEVAL_REACHED: return "MAXEVAL_REACHED";
-    case nlopt::MAXTIME_REACHED: return "MAXTIME_REACHED";
-    default: return "FAILURE(" + std::to_string(static_cast<int>(r)) + ")";
+    case nlopt::SUCCESS:
+      return "SUCCESS";
+    case nlopt::STOPVAL_REACHED:
+      return "STOPVAL_REACHED";
+    case nlopt::FTOL_REACHED:
+      return "FTOL_REACHED";
+    case nlopt::XTOL_REACHED:
+      return "XTOL_REACHED";
+    case nlopt::MAXEVAL_REACHED:
+      return "MAXEVAL_REACHED";
+    case nlopt::MAXTIME_REACHED:
+      return "MAXTIME_REACHED";
+    default:
+      return "FAILURE(" + std::to_string(static_cast<int>(r)) + ")";
   }
 }
 
@@ -207,12 +213,14 @@ SolverSummary SolveWithNlopt(const DesignProblem& p, const SolverOptions& o) {
   }
   for (const auto& x : starts) {
     const std::string r = RunLocal(p, o, &ev, x);
-    raw += (raw.empty() ? "" : "; ") + std::string(p.evaluate_with_gradient ? "SLSQP:" : "COBYLA:") + r;
+    raw += (raw.empty() ? "" : "; ") +
+           std::string(p.evaluate_with_gradient ? "SLSQP:" : "COBYLA:") + r;
   }
   s.raw_status = raw;
-  s.status = raw.find("MAXEVAL") != std::string::npos && raw.find("COBYLA:MAXEVAL") != std::string::npos
-                 ? SolverStatus::kMaxEvaluations
-                 : SolverStatus::kConverged;
+  s.status =
+      raw.find("MAXEVAL") != std::string::npos && raw.find("COBYLA:MAXEVAL") != std::string::npos
+          ? SolverStatus::kMaxEvaluations
+          : SolverStatus::kConverged;
   internal::FillFromBest(ev, &s);
   return s;
 }

@@ -94,12 +94,24 @@ ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
     const double l = vehicle.size[0], w = vehicle.size[1], h = vehicle.size[2];
     constexpr double kRho = 1000.0, kCd = 1.0;
     switch (dof) {
-      case model::Dof::kSurge: kq = 0.5 * kRho * kCd * w * h; break;
-      case model::Dof::kSway: kq = 0.5 * kRho * kCd * l * h; break;
-      case model::Dof::kHeave: kq = 0.5 * kRho * kCd * l * w; break;
-      case model::Dof::kRoll: kq = kRho * kCd * l * std::pow(std::max(w, h), 4) / 64.0; break;
-      case model::Dof::kPitch: kq = kRho * kCd * w * std::pow(std::max(l, h), 4) / 64.0; break;
-      case model::Dof::kYaw: kq = kRho * kCd * h * std::pow(std::max(l, w), 4) / 64.0; break;
+      case model::Dof::kSurge:
+        kq = 0.5 * kRho * kCd * w * h;
+        break;
+      case model::Dof::kSway:
+        kq = 0.5 * kRho * kCd * l * h;
+        break;
+      case model::Dof::kHeave:
+        kq = 0.5 * kRho * kCd * l * w;
+        break;
+      case model::Dof::kRoll:
+        kq = kRho * kCd * l * std::pow(std::max(w, h), 4) / 64.0;
+        break;
+      case model::Dof::kPitch:
+        kq = kRho * kCd * w * std::pow(std::max(l, h), 4) / 64.0;
+        break;
+      case model::Dof::kYaw:
+        kq = kRho * kCd * h * std::pow(std::max(l, w), 4) / 64.0;
+        break;
     }
     k = 0.1 * kq;
     if (notes) {

@@ -5,8 +5,6 @@
 // InputError naming the file, the trial index and the key) and ignores keys it does not know
 // (the contract welcomes more keys). A trial id names its log file (trials/<id>.csv), so it is
 // limited to letters, digits and `_ . - +`, not starting with a dot.
-#include "uuvplan/planner/schedule.h"
-
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -18,12 +16,13 @@
 #include <sstream>
 
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::planner {
 namespace {
 
-using nlohmann::json;
 using model::InputError;
+using nlohmann::json;
 
 // ---------------------------------------------------------------------------------------------
 // Writing.
@@ -69,7 +68,8 @@ const json& Required(const json& obj, const std::string& where, const std::strin
                      const std::string& why) {
   const auto it = obj.find(key);
   if (it == obj.end()) {
-    throw InputError(where, "missing required key '" + key + "'" + (why.empty() ? "" : " (" + why + ")"));
+    throw InputError(where,
+                     "missing required key '" + key + "'" + (why.empty() ? "" : " (" + why + ")"));
   }
   return *it;
 }
@@ -192,15 +192,16 @@ PredictedPrecision PredictedOf(const json& v, const std::string& where) {
 
 std::map<model::Dof, PredictedPrecision> PredictedMapOf(const json& v, const std::string& where) {
   if (!v.is_object()) {
-    throw InputError(where, "expected an object {<dof>: {sigma, criterion, value}}, got " +
-                                TypeName(v));
+    throw InputError(where,
+                     "expected an object {<dof>: {sigma, criterion, value}}, got " + TypeName(v));
   }
   std::map<model::Dof, PredictedPrecision> out;
   for (const auto& [name, p] : v.items()) {
     const auto dof = model::ParseDof(name);
     if (!dof) {
-      throw InputError(where, "key '" + name + "': expected a DOF (surge, sway, heave, roll, "
-                                               "pitch, yaw)");
+      throw InputError(where, "key '" + name +
+                                  "': expected a DOF (surge, sway, heave, roll, "
+                                  "pitch, yaw)");
     }
     out[*dof] = PredictedOf(p, where + "." + name);
   }
@@ -279,17 +280,17 @@ PlannedTrial TrialFromJson(const json& j, const std::string& where) {
                        "force", "a number (N or N·m)");
       break;
     case model::TrialKind::kSine:
-      d.offset = Number(Required(j, where, "offset", "a sine trial's mean force"), where,
-                        "offset", "a number (N or N·m)");
-      d.amplitude = Number(Required(j, where, "amplitude", "a sine trial's force amplitude"),
-                           where, "amplitude", "a number (N or N·m)");
+      d.offset = Number(Required(j, where, "offset", "a sine trial's mean force"), where, "offset",
+                        "a number (N or N·m)");
+      d.amplitude = Number(Required(j, where, "amplitude", "a sine trial's force amplitude"), where,
+                           "amplitude", "a number (N or N·m)");
       d.omega = Number(Required(j, where, "omega", "a sine trial's frequency"), where, "omega",
                        "a number >= 0 (rad/s)");
       if (d.omega < 0) Expected(where, "omega", "a number >= 0 (rad/s)", j.at("omega"));
       break;
     case model::TrialKind::kSegments: {
-      d.segments = SegmentsOf(Required(j, where, "segments", "a segments trial's legs"), where,
-                              d.mapping);
+      d.segments =
+          SegmentsOf(Required(j, where, "segments", "a segments trial's legs"), where, d.mapping);
       double total = 0.0;
       for (const auto& s : d.segments) total += s.duration;
       // The legs make the trial: their durations must add up to it (to 1 µs per second, far
@@ -338,8 +339,10 @@ Schedule ReadScheduleJson(const std::string& path) {
     throw InputError(path + ":" + LineColumn(text, at), "not valid JSON: " + why);
   }
   if (!root.is_object()) {
-    throw InputError(path, "expected a schedule {\"trials\": [...]} or a `next` result "
-                           "{\"trial\": {...}}, got " + TypeName(root));
+    throw InputError(path,
+                     "expected a schedule {\"trials\": [...]} or a `next` result "
+                     "{\"trial\": {...}}, got " +
+                         TypeName(root));
   }
   Schedule schedule;
   if (const auto trials = root.find("trials"); trials != root.end()) {
@@ -351,8 +354,9 @@ Schedule ReadScheduleJson(const std::string& path) {
   } else if (const auto trial = root.find("trial"); trial != root.end()) {
     schedule.trials.push_back(TrialFromJson(*trial, path + ": trial"));
   } else {
-    throw InputError(path, "missing required key 'trials' (a schedule) or 'trial' (a `next` "
-                           "result)");
+    throw InputError(path,
+                     "missing required key 'trials' (a schedule) or 'trial' (a `next` "
+                     "result)");
   }
   if (schedule.trials.empty()) {
     throw InputError(path + ": trials", "expected at least one trial, got an empty array");

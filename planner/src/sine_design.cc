@@ -15,9 +15,12 @@ namespace uuvplan::planner {
 
 std::string_view DesignStatusName(DesignStatus s) {
   switch (s) {
-    case DesignStatus::kOk: return "ok";
-    case DesignStatus::kInfeasible: return "infeasible";
-    case DesignStatus::kFailed: return "failed";
+    case DesignStatus::kOk:
+      return "ok";
+    case DesignStatus::kInfeasible:
+      return "infeasible";
+    case DesignStatus::kFailed:
+      return "failed";
   }
   return "failed";
 }
@@ -39,6 +42,10 @@ bool SineDesignOptions::IsValid(std::string* error) const {
     return fail("SineDesignOptions::min_periods = " + std::to_string(min_periods) +
                 ". Violated constraint: >= 0");
   }
+  if (!(min_amplitude_fraction >= 0 && min_amplitude_fraction <= 1)) {
+    return fail("SineDesignOptions::min_amplitude_fraction = " +
+                std::to_string(min_amplitude_fraction) + ". Violated constraint: in [0, 1]");
+  }
   if (sign < -1 || sign > 1) {
     return fail("SineDesignOptions::sign = " + std::to_string(sign) +
                 ". Violated constraint: -1, 0 or 1");
@@ -48,28 +55,56 @@ bool SineDesignOptions::IsValid(std::string* error) const {
 
 namespace {
 
+// Designs keep this far (m) inside the pool, so that the finer check (DofContext::Check, finer
+// step, denser box grid) agrees with the design's own travel.
+constexpr double kTravelSafety = 0.005;
+
 // Hull of the travel over several parameter points as the trial goes on: the first time the
 // span (max over points of position - min over points of position) exceeds `available`.
-double FirstOverflow(const DofContext& ctx, const std::vector<Eigen::VectorXd>& thetas,
-                     const model::Excitation& input, double t_max) {
+// The point with the fastest steady speed is traced first over [0, t_max]; the others only up
+// to where it overflows (the hull overflows no later than any single point does).
+double FirstOverflow(const DofContext& ctx, const model::DofModel& model,
+                     const std::vector<Eigen::VectorXd>& thetas, const model::Excitation& input,
+                     double t_max) {
   const double dt = ctx.step_s();
+  const int ik = model.ParameterIndex(model::param::kLinearDrag);
+  const int iq = model.ParameterIndex(model::param::kQuadraticDrag);
+  std::vector<std::size_t> order(thetas.size());
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
+  auto speed = [&](const Eigen::VectorXd& th) {
+    const double k = ik >= 0 ? th[ik] : 0.0, kq = iq >= 0 ? th[iq] : 0.0;
+    return std::make_pair(-SteadySpeed(k, kq, 1.0), th[0]);  // fastest, then lightest, first
+  };
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return speed(thetas[a]) < speed(thetas[b]); });
+  const double avail = ctx.available() - kTravelSafety;
   std::vector<double> lo, hi;
-  for (const auto& th : thetas) {
-    const PositionTrace tr = TracePosition(ctx.model(), th, input, t_max, dt, ctx.step_s());
-    if (lo.empty()) {
-      lo.assign(tr.position.size(), 0.0);
-      hi.assign(tr.position.size(), 0.0);
+  double horizon = t_max;
+  for (std::size_t n = 0; n < order.size(); ++n) {
+    const PositionTrace tr =
+        TracePosition(model, thetas[order[n]], input, horizon, dt, ctx.step_s());
+    if (lo.size() < tr.position.size()) {
+      lo.resize(tr.position.size(), 0.0);
+      hi.resize(tr.position.size(), 0.0);
     }
     double run_lo = 0.0, run_hi = 0.0;
-    for (std::size_t i = 0; i < tr.position.size() && i < lo.size(); ++i) {
+    for (std::size_t i = 0; i < tr.position.size(); ++i) {
       run_lo = std::min(run_lo, tr.position[i]);
       run_hi = std::max(run_hi, tr.position[i]);
       lo[i] = std::min(lo[i], run_lo);
       hi[i] = std::max(hi[i], run_hi);
     }
+    if (n == 0) {
+      for (std::size_t i = 1; i < lo.size(); ++i) {
+        if (hi[i] - lo[i] > avail) {
+          horizon = std::min(t_max, (i + 1) * dt);
+          break;
+        }
+      }
+    }
   }
-  const double avail = ctx.available();
-  for (std::size_t i = 1; i < lo.size(); ++i) {
+  const std::size_t n_valid = static_cast<std::size_t>(std::ceil(horizon / dt - 1e-9)) + 1;
+  for (std::size_t i = 1; i < lo.size() && i < n_valid; ++i) {
     const double s1 = hi[i] - lo[i];
     if (s1 > avail) {
       const double s0 = hi[i - 1] - lo[i - 1];
@@ -78,7 +113,7 @@ double FirstOverflow(const DofContext& ctx, const std::vector<Eigen::VectorXd>& 
       return t0 + std::clamp(f, 0.0, 1.0) * (t1 - t0);
     }
   }
-  return t_max;
+  return horizon < t_max ? horizon : t_max;
 }
 
 struct Candidate {
@@ -98,6 +133,8 @@ class SineProblem {
     const double fixed = o.fixed_duration_s > 0 ? o.fixed_duration_s : t_max;
     if (o.min_periods > 0) w_[0] = std::max(w_[0], 2 * M_PI * o.min_periods / fixed);
     if (w_[1] <= w_[0]) w_[1] = 2.0 * w_[0];
+    const double x_mid[3] = {0.5, 0.5, 0.5};
+    tm_ = &ctx.ModelFor(Decode(x_mid));  // one direction throughout: the same model for all x
   }
 
   // x = (u, r, v) -> the trial (duration not yet set).
@@ -106,11 +143,13 @@ class SineProblem {
     d.dof = ctx_.dof();
     d.kind = model::TrialKind::kSine;
     d.mapping = ctx_.vehicle().mappings[c_.mapping].name;
-    const double lo = c_.range.min_abs, hi = c_.range.max_abs;
-    const double off = lo + std::clamp(x[0], 0.0, 1.0) * (hi - lo);
-    const double room = std::max(0.0, std::min(off - lo, hi - off));
+    const double lo = c_.range.min_abs, hi = c_.range.max_abs, rho = o_.min_amplitude_fraction;
+    const double o_max = (hi + rho * lo) / (1.0 + rho);
+    const double off = lo + std::clamp(x[0], 0.0, 1.0) * (o_max - lo);
+    const double depth = off - lo;
+    const double top = std::max(rho * depth, std::min(depth, hi - off));
     d.offset = c_.sign * off;
-    d.amplitude = std::clamp(x[1], 0.0, 1.0) * room;
+    d.amplitude = rho * depth + std::clamp(x[1], 0.0, 1.0) * (top - rho * depth);
     d.omega = w_[0] * std::pow(w_[1] / w_[0], std::clamp(x[2], 0.0, 1.0));
     return d;
   }
@@ -120,7 +159,7 @@ class SineProblem {
     if (o_.fixed_duration_s > 0) return o_.fixed_duration_s;
     if (!std::isfinite(ctx_.available())) return t_max_;
     const auto input = model::MakeExcitation(ctx_.vehicle(), d);
-    return FirstOverflow(ctx_, ctx_.design_thetas(), *input, t_max_);
+    return FirstOverflow(ctx_, *tm_->model, tm_->design_thetas, *input, t_max_);
   }
 
   int num_constraints() const {
@@ -137,17 +176,20 @@ class SineProblem {
     g[0] = (o_.min_periods * 2 * M_PI / d.omega - d.duration) / t_max_;
     double lo = 0.0, hi = 0.0;
     const auto& thetas = ctx_.design_thetas();
+    const int np = ctx_.model().num_parameters();
     for (std::size_t j = 0; j < thetas.size(); ++j) {
-      TrialResponse r = SimulateTrial(ctx_.model(), thetas[j], *input, ctx_.sensors(),
-                                      d.duration, ctx_.step_s(), true);
+      TrialResponse r = SimulateTrial(*tm_->model, tm_->design_thetas[j], *input,
+                                      ctx_.design_sensors(), d.duration, ctx_.step_s(), true);
       lo = std::min(lo, r.position_min);
       hi = std::max(hi, r.position_max);
-      Eigen::MatrixXd M = r.M;
+      Eigen::MatrixXd M = tm_->Embed(r.M, np);
+      if (info) info->push_back(M);
       if (j < prior_.size() && prior_[j].size() == M.size()) M += prior_[j];
       phi[j] = EvaluateCriterion(RelativeInformation(M, thetas[j]), o_.criterion, interest_).value;
-      if (info) info->push_back(std::move(r.M));
     }
-    if (num_constraints() > 1) g[1] = (hi - lo - ctx_.available()) / ctx_.available();
+    if (num_constraints() > 1) {
+      g[1] = (hi - lo - (ctx_.available() - kTravelSafety)) / ctx_.available();
+    }
     return true;
   }
 
@@ -156,7 +198,8 @@ class SineProblem {
     // the box centre for that force.
     const double mid = 0.5 * (c_.range.min_abs + c_.range.max_abs);
     const auto& th = ctx_.design_thetas().front();
-    const int ik = ctx_.Index(model::param::kLinearDrag), iq = ctx_.Index(model::param::kQuadraticDrag);
+    const int ik = ctx_.Index(model::param::kLinearDrag),
+              iq = ctx_.Index(model::param::kQuadraticDrag);
     const double k = ik >= 0 ? th[ik] : 0.0, kq = iq >= 0 ? th[iq] : 0.0;
     const double kl = LinearisedDrag(k, kq, SteadySpeed(k, kq, mid));
     const double w = kl > 0 ? DOptimalSineFrequency(TimeConstant(th[0], kl)) : w_[0];
@@ -172,6 +215,7 @@ class SineProblem {
   double t_max_;
   std::vector<int> interest_;
   std::array<double, 2> w_;
+  const DofContext::TrialModel* tm_ = nullptr;
 };
 
 }  // namespace
@@ -195,7 +239,8 @@ double LongestFittingDuration(const DofContext& ctx, const model::TrialDesign& d
                               double t_max) {
   if (!std::isfinite(ctx.available())) return t_max;
   const auto input = model::MakeExcitation(ctx.vehicle(), design);
-  return FirstOverflow(ctx, ctx.check_thetas(), *input, t_max);
+  const DofContext::TrialModel& tm = ctx.ModelFor(design);
+  return FirstOverflow(ctx, *tm.model, tm.check_thetas, *input, t_max);
 }
 
 SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
@@ -206,9 +251,9 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
     result.message = error;
     return result;
   }
-  const double t_max = o.max_duration_s > 0 ? std::min(o.max_duration_s,
-                                                       ctx.options().max_trial_duration_s)
-                                            : ctx.options().max_trial_duration_s;
+  const double t_max = o.max_duration_s > 0
+                           ? std::min(o.max_duration_s, ctx.options().max_trial_duration_s)
+                           : ctx.options().max_trial_duration_s;
   if (o.fixed_duration_s > ctx.options().max_trial_duration_s) {
     result.status = DesignStatus::kInfeasible;
     result.message = "fixed duration beyond the trial duration limit";
@@ -228,9 +273,27 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
           !m.IsOpenWater(s > 0 ? model::Direction::kPos : model::Direction::kNeg)) {
         continue;
       }
-      Candidate c{mi, s, DirectionForceRange(v, mi, s)};
+      Candidate c{mi, s, ctx.ForceRangeFor(mi, s)};
       if (!c.range.feasible) {
         result.notes.push_back(c.range.reason);
+        continue;
+      }
+      // Mirror images: the standard model is odd in xi and phi (k·xi + kq·xi|xi|), so with no
+      // bias and eta = 1 a direction whose force range equals an earlier candidate's opposite
+      // direction has the same information; it is not designed twice.
+      bool mirror = false;
+      for (const Candidate& e : candidates) {
+        mirror = mirror || (e.sign == -s && std::abs(e.range.min_abs - c.range.min_abs) < 1e-9 &&
+                            std::abs(e.range.max_abs - c.range.max_abs) < 1e-9 &&
+                            v.mappings[e.mapping].IsOpenWater(e.sign > 0 ? model::Direction::kPos
+                                                                         : model::Direction::kNeg));
+      }
+      const int ib = ctx.Index(model::param::kBias);
+      for (const auto& th : ctx.design_thetas()) mirror = mirror && (ib < 0 || th[ib] == 0.0);
+      if (mirror && m.IsOpenWater(s > 0 ? model::Direction::kPos : model::Direction::kNeg)) {
+        result.notes.push_back(m.name + (s > 0 ? " +" : " -") +
+                               ": mirror image of a candidate already designed (same force "
+                               "range, no bias, open water): same information, not repeated");
         continue;
       }
       candidates.push_back(c);
@@ -238,10 +301,9 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
   }
   if (candidates.empty()) {
     result.status = DesignStatus::kInfeasible;
-    result.message = std::string("no mapping and direction of ") +
-                     std::string(model::DofName(ctx.dof())) +
-                     " can hold a sine without propeller reversal" +
-                     (o.open_water_only ? " in open water" : "");
+    result.message =
+        std::string("no mapping and direction of ") + std::string(model::DofName(ctx.dof())) +
+        " can hold a sine without propeller reversal" + (o.open_water_only ? " in open water" : "");
     return result;
   }
 
@@ -260,7 +322,7 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
     SolverOptions so = ctx.options().solver;
     so.robustness = ctx.options().robustness;
     so.extra_starts.push_back(p.x0);
-    const SolverSummary summary = Solve(ctx.options().backend, p, so);
+    const SolverSummary summary = Solve(ctx.options().sine_backend, p, so);
     if (!summary.is_success() || summary.objective <= best) {
       if (!summary.is_success()) {
         result.notes.push_back(v.mappings[c.mapping].name + (c.sign > 0 ? " +" : " -") + ": " +
@@ -276,9 +338,16 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
     d.id = id;
     d.duration = sp.Duration(d);
     result.trial.design = d;
-    result.information.clear();
-    std::vector<double> phi(J), g(p.num_constraints);
-    sp.Evaluate(summary.x.data(), phi.data(), g.data(), &result.information);
+  }
+  if (std::isfinite(best)) {
+    // The reported information and criterion: the real sensors (design_sensors() approximates).
+    result.information = ctx.Information(result.trial.design);
+    std::vector<Eigen::MatrixXd> total = result.information;
+    for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
+      if (prior[j].size() == total[j].size()) total[j] += prior[j];
+    }
+    result.criterion_per_point = ctx.CriterionValues(total, o.criterion, ctx.Indices(o.interest));
+    result.criterion = Aggregate(ctx.options().robustness, result.criterion_per_point);
   }
   if (!std::isfinite(best)) {
     result.status = DesignStatus::kFailed;

@@ -10,9 +10,12 @@ namespace uuvplan::planner {
 
 std::string_view RobustnessName(Robustness r) {
   switch (r) {
-    case Robustness::kNominal: return "nominal";
-    case Robustness::kMaximin: return "maximin";
-    case Robustness::kAverage: return "average";
+    case Robustness::kNominal:
+      return "nominal";
+    case Robustness::kMaximin:
+      return "maximin";
+    case Robustness::kAverage:
+      return "average";
   }
   return "maximin";
 }
@@ -23,10 +26,14 @@ std::string_view SolverBackendName(SolverBackend b) {
 
 std::string_view SolverStatusName(SolverStatus s) {
   switch (s) {
-    case SolverStatus::kConverged: return "converged";
-    case SolverStatus::kMaxEvaluations: return "max_evaluations";
-    case SolverStatus::kInfeasible: return "infeasible";
-    case SolverStatus::kFailed: return "failed";
+    case SolverStatus::kConverged:
+      return "converged";
+    case SolverStatus::kMaxEvaluations:
+      return "max_evaluations";
+    case SolverStatus::kInfeasible:
+      return "infeasible";
+    case SolverStatus::kFailed:
+      return "failed";
   }
   return "failed";
 }
@@ -41,8 +48,8 @@ bool SolverOptions::IsValid(std::string* error) const {
                 std::to_string(max_global_evaluations) + ". Violated constraint: >= 0");
   }
   if (max_local_evaluations < 1) {
-    return fail("SolverOptions::max_local_evaluations = " +
-                std::to_string(max_local_evaluations) + ". Violated constraint: >= 1");
+    return fail("SolverOptions::max_local_evaluations = " + std::to_string(max_local_evaluations) +
+                ". Violated constraint: >= 1");
   }
   if (!(relative_tolerance > 0)) {
     return fail("SolverOptions::relative_tolerance = " + std::to_string(relative_tolerance) +
@@ -62,8 +69,10 @@ bool SolverOptions::IsValid(std::string* error) const {
 double Aggregate(Robustness r, const std::vector<double>& phi) {
   if (phi.empty()) return -std::numeric_limits<double>::infinity();
   switch (r) {
-    case Robustness::kNominal: return phi.front();
-    case Robustness::kMaximin: return *std::min_element(phi.begin(), phi.end());
+    case Robustness::kNominal:
+      return phi.front();
+    case Robustness::kMaximin:
+      return *std::min_element(phi.begin(), phi.end());
     case Robustness::kAverage:
       return std::accumulate(phi.begin(), phi.end(), 0.0) / static_cast<double>(phi.size());
   }

@@ -43,8 +43,7 @@ ForceRange DirectionForceRange(const model::Vehicle& v, int mapping, int sign) {
   return r;
 }
 
-ThrustCheck CheckThrust(const model::Vehicle& v, const model::Excitation& input,
-                        double duration) {
+ThrustCheck CheckThrust(const model::Vehicle& v, const model::Excitation& input, double duration) {
   ThrustCheck c;
   const int nt = static_cast<int>(v.thrusters.size());
   std::vector<double> fwd(nt), rev(nt);
@@ -84,7 +83,8 @@ ThrustCheck CheckThrust(const model::Vehicle& v, const model::Excitation& input,
         worst_min_t = t;
       }
       const double limit = tau >= 0 ? fwd[ti] : rev[ti];
-      ratio_max[ti] = std::max(ratio_max[ti], limit > 0 ? a / limit : std::numeric_limits<double>::infinity());
+      ratio_max[ti] =
+          std::max(ratio_max[ti], limit > 0 ? a / limit : std::numeric_limits<double>::infinity());
     }
   }
   c.thrust_min = std::isfinite(worst_min) ? worst_min : 0.0;

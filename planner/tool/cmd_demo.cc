@@ -1,10 +1,11 @@
 // `uuvplan demo [--cases DIR] [--out DIR] [--seed N]`: the built-in ROMEO story, no files
-// needed. For now (until the identification and planning commands land) it runs the heave
-// campaign of seed 000 §IV-D on the virtual pool: five trials, one per ballast step (a diver's
-// lead of about 0.7 kg in water added each time), each a series of up and down steady legs in
-// the vertical-all mapping as in Fig. 4, and writes the campaign for `uuvplan identify`.
+// needed (issue #5 §3):
+//  1. the a priori surge schedule in ROMEO's pool and its pool check (planner);
+//  2. the design–identify loop on the virtual ROMEO until 5% percentile error (planner + ident);
+//  3. the heave campaign of seed 000 §IV-D (five ballast steps, up and down steady legs in
+//     vertical-all, Fig. 4) on a vehicle with the paper's propeller–hull interaction
+//     (eta = 0.56 pulling up): the standard model's error, the cause named, the gain (diagnose).
 #include <CLI/CLI.hpp>
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -12,16 +13,20 @@
 #include <iostream>
 #include <iterator>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "command.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/io.h"
 #include "uuvplan/model/virtual_pool.h"
+#include "diagnosis_json.h"
+#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/planner/design_loop.h"
+#include "uuvplan/planner/pool_check.h"
 #include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/schedule_planner.h"
 
 namespace uuvplan::tool {
 namespace {
@@ -86,13 +91,75 @@ int RunDemo(const DemoOptions& o) {
   const std::string truth_path = (fs::path(o.cases) / "truth.yaml").string();
   const model::Truth truth = model::ReadTruth(truth_path);
   if (truth.vehicle.MappingIndex(kMapping) < 0 || truth.dofs.count(model::Dof::kHeave) == 0) {
-    throw InputError(truth_path, "the demo needs ROMEO's heave truth (dofs.heave.params) and its "
-                                 "'vertical-all' mapping; give --cases the cases/romeo folder");
+    throw InputError(truth_path,
+                     "the demo needs ROMEO's heave truth (dofs.heave.params) and its "
+                     "'vertical-all' mapping; give --cases the cases/romeo folder");
   }
-  const std::string out = o.out.empty() ? MakeTempDir() : o.out;
+  // "dir/" and "dir" are the same directory; SimulateCampaign builds its temporary sibling by
+  // appending to the name, so the name must not end with a separator.
+  fs::path out_path = fs::path(o.out.empty() ? MakeTempDir() : o.out).lexically_normal();
+  if (out_path.filename().empty() && out_path.has_parent_path()) out_path = out_path.parent_path();
+  const std::string out = out_path.string();
   const std::vector<planner::PlannedTrial> plan = HeavePlan();
 
-  std::cout << "uuvplan demo: ROMEO (seed 000), the heave campaign of §IV-D on the virtual pool\n\n"
+  std::cout << "uuvplan demo: ROMEO (seed 000), 450 kg open-frame ROV\n\n";
+  const std::string pool_path = (fs::path(o.cases) / "pool.yaml").string();
+  const model::Pool pool = model::ReadPool(pool_path);
+  std::cout << std::fixed << std::setprecision(3);
+
+  // 1. The a priori schedule for surge and whether the pool hosts it.
+  planner::ScheduleOptions so;
+  so.dofs = {model::Dof::kSurge};
+  const planner::ScheduleResult schedule = planner::PlanSchedule(truth.vehicle, pool, so);
+  std::cout << "1. A priori surge schedule in pool '" << pool.name << "' ("
+            << pool.Available(model::Dof::kSurge) << " m free), robust over m in ["
+            << truth.vehicle.InertiaBounds(model::Dof::kSurge)[0] << ", "
+            << truth.vehicle.InertiaBounds(model::Dof::kSurge)[1] << "] kg:\n";
+  for (const auto& t : schedule.schedule.trials) {
+    const auto& d = t.design;
+    std::cout << "   " << std::left << std::setw(14) << d.id << std::right << std::setw(9)
+              << model::TrialKindName(d.kind) << "  " << std::setw(6) << std::setprecision(1)
+              << d.duration << " s  mapping " << d.mapping << "  travel [" << t.travel[0] << ", "
+              << t.travel[1] << "] m\n";
+  }
+  for (const auto& [dof, pred] : schedule.schedule.predicted) {
+    std::cout << "   predicted sigma:";
+    for (const auto& [name, sigma] : pred.sigma) std::cout << " " << name << " " << std::setprecision(3) << sigma;
+    std::cout << "\n";
+  }
+  const planner::PoolCheckResult check =
+      planner::CheckPool(truth.vehicle, pool, schedule.schedule, planner::PoolCheckOptions{});
+  std::cout << "   pool check: " << (check.feasible ? "the pool hosts every trial" : "NOT feasible")
+            << " (needs length " << std::setprecision(1) << check.required_length << " m)\n\n";
+
+  // 2. The design–identify loop on the virtual ROMEO.
+  planner::LoopOptions lo;
+  lo.seed = o.seed;
+  lo.budget = 12;
+  lo.step.dofs = {model::Dof::kSurge};
+  std::cout << "2. Design -> run (virtual pool) -> identify -> re-plan, surge, until every "
+               "parameter of interest is below 5%:\n";
+  const planner::LoopResult loop = planner::RunLoop(
+      truth, pool, lo, [](const planner::LoopIteration& it) {
+        std::cout << "   trial " << std::setw(2) << it.index + 1 << " (" << it.source << ")";
+        for (const auto& p : it.progress) {
+          std::cout << "  worst " << p.worst << " " << std::setprecision(1) << p.worst_percent << "%";
+        }
+        std::cout << "  pool time " << std::setprecision(0) << it.pool_time << " s\n";
+      });
+  std::cout << "   " << (loop.converged ? "converged" : "did not converge") << " after "
+            << loop.iterations.size() << " trials, " << std::setprecision(0) << loop.pool_time
+            << " s of pool time\n";
+  for (const auto& p : loop.progress) {
+    for (const auto& ip : p.interest) {
+      const auto& tp = truth.dofs.at(p.dof).params;
+      std::cout << "   " << std::left << std::setw(30) << ip.name << std::right << std::setprecision(3)
+                << ip.value << " ± " << ip.sigma << "  (" << std::setprecision(1) << ip.percent
+                << "%)  truth " << std::setprecision(3)
+                << (tp.count(ip.name) ? tp.at(ip.name) : std::nan("")) << "\n";
+    }
+  }
+  std::cout << std::setprecision(3) << "\n3. Diagnosis: the heave campaign of seed 000 §IV-D on the virtual pool\n"
             << "Truth: " << truth_path << "\n  heave:";
   for (const auto& [name, value] : truth.dofs.at(model::Dof::kHeave).params) {
     std::cout << " " << name << " = " << value;
@@ -124,14 +191,17 @@ int RunDemo(const DemoOptions& o) {
   const std::string plan_path = (fs::path(out) / "plan.json").string();
   model::WriteFileAtomically(
       plan_path, nlohmann::json{{"trials", trials},
-                                {"note", "built by `uuvplan demo` (seed 000 §IV-D, Fig. 4); no "
-                                         "travel, thrust_min or predicted precision: those come "
-                                         "from `uuvplan schedule`"}}
-                         .dump(2) + "\n");
+                                {"note",
+                                 "built by `uuvplan demo` (seed 000 §IV-D, Fig. 4); no "
+                                 "travel, thrust_min or predicted precision: those come "
+                                 "from `uuvplan schedule`"}}
+                         .dump(2) +
+                     "\n");
 
   std::cout << std::left << std::setw(18) << "trial" << std::right << std::setw(8) << "ballast"
             << std::setw(10) << "duration" << std::setw(8) << "rows" << std::setw(14)
-            << "depth samples" << "  file\n";
+            << "depth samples"
+            << "  file\n";
   std::size_t rows = 0;
   for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
     const auto& e = campaign.trials[i];
@@ -143,30 +213,51 @@ int RunDemo(const DemoOptions& o) {
               << e.log.size() << std::setw(14) << samples << "  " << e.file << "\n";
   }
   std::cout << "\nWrote " << campaign.trials.size() << " trials (" << rows << " rows) to " << out
-            << ":\n  campaign.yaml, vehicle.yaml, trials/*.csv, plan.json\n"
-            << "  re-run the same campaign: uuvplan simulate --truth " << truth_path
-            << " --plan " << plan_path << " --out NEW_DIR --seed " << o.seed << "\n\n"
-            << "Not in this demo yet: identifying the heave model from this campaign (drag, "
-               "weight, ballast step and eta with their sigma, seed 000 Table II), planning the "
-               "trials, and diagnosing what the model misses. They arrive with the identify, "
-               "schedule, next, loop and diagnose commands; this demo will then tell the whole "
-               "story. No estimate is shown here because none has been computed.\n";
+            << " (campaign.yaml, vehicle.yaml, trials/*.csv, plan.json)\n\n";
+
+  const ident::DiagnosisResult diagnosis = ident::Diagnose(campaign, ident::DiagnoseOptions{});
+  std::cout << "The standard model (all eta = 1) fitted to it, as seed 000 Fig. 6 warns, "
+               "absorbs the weaker upward thrust into the weight:\n";
+  if (const auto* d = diagnosis.nominal.Find(model::Dof::kHeave)) {
+    for (const auto& p : d->params) {
+      std::cout << "   " << std::left << std::setw(10) << p.name << std::right << std::setprecision(3)
+                << p.value << " ± " << p.sigma << "\n";
+    }
+  }
+  std::cout << "Findings:\n";
+  if (diagnosis.findings.empty()) std::cout << "   none\n";
+  for (const auto& f : diagnosis.findings) {
+    std::cout << "   " << model::EffectName(f.effect) << " (" << model::DofName(f.dof)
+              << "): " << f.what << "\n";
+    for (const auto& p : f.params) {
+      std::cout << "     " << p.name << " = " << std::setprecision(3) << p.value << " ± "
+                << p.sigma << "  (paper, Table II: 0.56 ± 0.023)\n";
+    }
+    std::cout << "     free-run velocity MAE " << std::setprecision(4) << f.gain.before << " -> "
+              << f.gain.after << " m/s (" << std::setprecision(0) << 100 * f.gain.relative
+              << "% better, " << f.gain.on << ")\n";
+  }
+  std::cout << "\nMore: uuvplan diagnose " << out << "/campaign.yaml  (full report)\n";
   return kExitOk;
 }
 
-const CommandRegistration kRegistration({"demo", 80, [](CLI::App& app,
-                                                        std::function<int()>* run) {
-  auto o = std::make_shared<DemoOptions>();
-  CLI::App* sub = app.add_subcommand(
-      "demo", "The story on the built-in ROMEO case, no files needed: for now, the heave "
-              "campaign of seed 000 simulated on the virtual pool.");
-  sub->add_option("--cases", o->cases, "folder with ROMEO's truth.yaml")->capture_default_str();
-  sub->add_option("--out", o->out,
-                  "campaign directory to create (must be new or empty; default: a new "
-                  "temporary directory)");
-  sub->add_option("--seed", o->seed, "seed of the virtual pool's noise")->capture_default_str();
-  sub->callback([o, run] { *run = [o] { return RunDemo(*o); }; });
-}});
+const CommandRegistration kRegistration(
+    {"demo", 80, [](CLI::App& app, std::function<int()>* run) {
+       auto o = std::make_shared<DemoOptions>();
+       CLI::App* sub = app.add_subcommand(
+           "demo",
+           "The whole story on the built-in ROMEO case, no files needed: the a priori schedule "
+           "and pool check, the design-identify loop converging, and a diagnosis of the paper's "
+           "propeller-hull interaction (eta = 0.56 upward).");
+       sub->add_option("--cases", o->cases, "folder with ROMEO's truth.yaml")
+           ->capture_default_str();
+       sub->add_option("--out", o->out,
+                       "campaign directory to create (must be new or empty; default: a new "
+                       "temporary directory)");
+       sub->add_option("--seed", o->seed, "seed of the virtual pool's noise")
+           ->capture_default_str();
+       sub->callback([o, run] { *run = [o] { return RunDemo(*o); }; });
+     }});
 
 }  // namespace
 }  // namespace uuvplan::tool

@@ -3,17 +3,15 @@
 // writes the campaign as a pool team would log it: DIR/campaign.yaml, DIR/vehicle.yaml and
 // DIR/trials/<id>.csv. DIR must be new or empty; it is written whole or not at all.
 #include <CLI/CLI.hpp>
-
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "command.h"
 #include "uuvplan/model/input_error.h"
@@ -31,8 +29,8 @@ struct SimulateOptions {
   std::string truth;
   std::string plan;
   std::string out;
-  std::uint64_t seed = 1;                                      ///< VirtualPoolOptions default
-  double step_s = std::numeric_limits<double>::quiet_NaN();    ///< NaN: the truth's step
+  std::uint64_t seed = 1;                                    ///< VirtualPoolOptions default
+  double step_s = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the truth's step
   std::string json;
 };
 
@@ -48,8 +46,8 @@ void CheckMapping(const model::Vehicle& v, const model::TrialDesign& d, const st
   const int i = v.MappingIndex(name);
   if (i >= 0 && v.mappings[i].dof == d.dof) return;
   throw InputError(where, "expected a " + std::string(model::DofName(d.dof)) +
-                              " mapping of vehicle '" + v.name + "' (" +
-                              MappingNames(v, d.dof) + "), got '" + name + "'");
+                              " mapping of vehicle '" + v.name + "' (" + MappingNames(v, d.dof) +
+                              "), got '" + name + "'");
 }
 
 // Everything the virtual pool needs for each trial, checked up front so that the message names
@@ -76,8 +74,8 @@ void CheckPlanAgainstTruth(const planner::Schedule& plan, const model::Truth& tr
     }
     const auto s = v.sensors.find(d.dof);
     if (s == v.sensors.end() || (!s->second.position && !s->second.velocity)) {
-      throw InputError(truth_path, "missing sensors." + dof + ": trial '" + d.id +
-                                       "' needs a " + dof + " position or velocity sensor");
+      throw InputError(truth_path, "missing sensors." + dof + ": trial '" + d.id + "' needs a " +
+                                       dof + " position or velocity sensor");
     }
   }
 }
@@ -85,13 +83,15 @@ void CheckPlanAgainstTruth(const planner::Schedule& plan, const model::Truth& tr
 // The forces a trial asks of each mapping: (force, mapping name) at every extreme.
 std::vector<std::pair<double, std::string>> Demands(const model::TrialDesign& d) {
   switch (d.kind) {
-    case model::TrialKind::kSteady: return {{d.force, d.mapping}};
+    case model::TrialKind::kSteady:
+      return {{d.force, d.mapping}};
     case model::TrialKind::kSine:
       return {{d.offset + std::abs(d.amplitude), d.mapping},
               {d.offset - std::abs(d.amplitude), d.mapping}};
     case model::TrialKind::kSegments: {
       std::vector<std::pair<double, std::string>> out;
-      for (const auto& s : d.segments) out.push_back({s.force, s.mapping.empty() ? d.mapping : s.mapping});
+      for (const auto& s : d.segments)
+        out.push_back({s.force, s.mapping.empty() ? d.mapping : s.mapping});
       return out;
     }
   }
@@ -111,9 +111,10 @@ std::vector<std::string> SaturationNotes(const planner::Schedule& plan, const mo
         const double limit = tau >= 0 ? th.MaxForwardThrust() : th.MaxReverseThrust();
         if (std::abs(tau) > limit * (1 + 1e-9)) {
           std::ostringstream s;
-          s << "trial '" << t.design.id << "' asks " << force << " " << model::ForceUnit(t.design.dof)
-            << " of mapping '" << name << "': thruster " << th.name << " would give " << tau
-            << " N but can give at most " << (tau >= 0 ? "" : "-") << limit
+          s << "trial '" << t.design.id << "' asks " << force << " "
+            << model::ForceUnit(t.design.dof) << " of mapping '" << name << "': thruster "
+            << th.name << " would give " << tau << " N but can give at most "
+            << (tau >= 0 ? "" : "-") << limit
             << " N (the virtual pool does not saturate thrusters)";
           notes.push_back(s.str());
           break;
@@ -124,10 +125,20 @@ std::vector<std::string> SaturationNotes(const planner::Schedule& plan, const mo
   return notes;
 }
 
-int RunSimulate(const SimulateOptions& o) {
+// "dir/" and "dir" are the same directory; SimulateCampaign builds its temporary sibling by
+// appending to the name, so the name must not end with a separator.
+std::string DirectoryName(const std::string& path) {
+  fs::path p = fs::path(path).lexically_normal();
+  if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();
+  return p.string();
+}
+
+int RunSimulate(const SimulateOptions& options) {
+  SimulateOptions o = options;
+  o.out = DirectoryName(o.out);
   if (!std::isnan(o.step_s) && !(o.step_s > 0 && std::isfinite(o.step_s))) {
-    throw InputError("--step", "expected a positive integration step in s, got " +
-                                   std::to_string(o.step_s));
+    throw InputError("--step",
+                     "expected a positive integration step in s, got " + std::to_string(o.step_s));
   }
   std::error_code ec;
   if (fs::exists(o.out, ec)) {
@@ -135,8 +146,9 @@ int RunSimulate(const SimulateOptions& o) {
       throw InputError(o.out, "--out exists and is not a directory; choose a new directory");
     }
     if (!fs::is_empty(o.out, ec)) {
-      throw InputError(o.out, "--out exists and is not empty; choose a new directory (nothing "
-                              "is overwritten)");
+      throw InputError(o.out,
+                       "--out exists and is not empty; choose a new directory (nothing "
+                       "is overwritten)");
     }
   }
   model::Truth truth = model::ReadTruth(o.truth);
@@ -158,12 +170,13 @@ int RunSimulate(const SimulateOptions& o) {
   // The readable table goes to stdout, unless stdout carries the JSON (--json -).
   std::ostream& out = o.json == "-" ? std::cerr : std::cout;
   out << "Simulated " << campaign.trials.size() << " trial(s) of plan " << o.plan
-            << " on the virtual '" << truth.vehicle.name << "' of " << o.truth << "\n"
-            << "(seed " << o.seed << ", RK4 step " << truth.integration_step_s << " s, "
-            << kPauseS << " s pause between trials)\n\n";
-  out << std::left << std::setw(22) << "trial" << std::setw(7) << "dof" << std::setw(10)
-            << "kind" << std::setw(24) << "mapping" << std::right << std::setw(10) << "duration"
-            << std::setw(8) << "rows" << "  file\n";
+      << " on the virtual '" << truth.vehicle.name << "' of " << o.truth << "\n"
+      << "(seed " << o.seed << ", RK4 step " << truth.integration_step_s << " s, " << kPauseS
+      << " s pause between trials)\n\n";
+  out << std::left << std::setw(22) << "trial" << std::setw(7) << "dof" << std::setw(10) << "kind"
+      << std::setw(24) << "mapping" << std::right << std::setw(10) << "duration" << std::setw(8)
+      << "rows"
+      << "  file\n";
   std::size_t rows = 0;
   double trial_time = 0.0;
   nlohmann::json trials = nlohmann::json::array();
@@ -175,9 +188,8 @@ int RunSimulate(const SimulateOptions& o) {
     std::ostringstream dur;
     dur << std::fixed << std::setprecision(1) << d.duration << " s";
     out << std::left << std::setw(22) << d.id << std::setw(7) << model::DofName(d.dof)
-              << std::setw(10) << model::TrialKindName(d.kind) << std::setw(24) << d.mapping
-              << std::right << std::setw(10) << dur.str() << std::setw(8) << e.log.size() << "  "
-              << e.file << "\n";
+        << std::setw(10) << model::TrialKindName(d.kind) << std::setw(24) << d.mapping << std::right
+        << std::setw(10) << dur.str() << std::setw(8) << e.log.size() << "  " << e.file << "\n";
     trials.push_back({{"id", d.id},
                       {"dof", std::string(model::DofName(d.dof))},
                       {"file", e.file},
@@ -185,12 +197,12 @@ int RunSimulate(const SimulateOptions& o) {
                       {"duration", d.duration},
                       {"start", e.start}});
   }
-  const double clock = campaign.trials.empty()
-                           ? 0.0
-                           : campaign.trials.back().start + designs.back().duration;
-  out << "\n" << campaign.trials.size() << " trials, " << rows << " rows, " << trial_time
-            << " s of trials, " << clock << " s of pool time with pauses\n"
-            << "Campaign: " << (fs::path(o.out) / "campaign.yaml").string() << "\n";
+  const double clock =
+      campaign.trials.empty() ? 0.0 : campaign.trials.back().start + designs.back().duration;
+  out << "\n"
+      << campaign.trials.size() << " trials, " << rows << " rows, " << trial_time
+      << " s of trials, " << clock << " s of pool time with pauses\n"
+      << "Campaign: " << (fs::path(o.out) / "campaign.yaml").string() << "\n";
   if (!o.json.empty()) {
     const nlohmann::json j = {{"campaign", (fs::path(o.out) / "campaign.yaml").string()},
                               {"seed", o.seed},
@@ -208,27 +220,31 @@ int RunSimulate(const SimulateOptions& o) {
   return kExitOk;
 }
 
-const CommandRegistration kRegistration({"simulate", 30, [](CLI::App& app,
-                                                            std::function<int()>* run) {
-  auto o = std::make_shared<SimulateOptions>();
-  CLI::App* sub = app.add_subcommand(
-      "simulate",
-      "Run a plan on the virtual vehicle of a truth file and write the campaign (campaign.yaml, "
-      "vehicle.yaml, trials/<id>.csv) as a pool team would log it.");
-  sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")
-      ->required();
-  sub->add_option("--plan", o->plan,
-                  "plan JSON: a `schedule --json` result, or a `next --json` result (its trial)")
-      ->required();
-  sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
-      ->required();
-  sub->add_option("--seed", o->seed, "seed of the sensor noise, drop-outs and outliers")
-      ->capture_default_str();
-  sub->add_option("--step", o->step_s,
-                  "RK4 integration step in s (default: the truth's virtual_pool.step, else 0.01)");
-  sub->add_option("--json", o->json, "also write a summary as JSON to this file ('-' = stdout)");
-  sub->callback([o, run] { *run = [o] { return RunSimulate(*o); }; });
-}});
+const CommandRegistration kRegistration(
+    {"simulate", 30, [](CLI::App& app, std::function<int()>* run) {
+       auto o = std::make_shared<SimulateOptions>();
+       CLI::App* sub =
+           app.add_subcommand("simulate",
+                              "Run a plan on the virtual vehicle of a truth file and write the "
+                              "campaign (campaign.yaml, "
+                              "vehicle.yaml, trials/<id>.csv) as a pool team would log it.");
+       sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")
+           ->required();
+       sub->add_option(
+              "--plan", o->plan,
+              "plan JSON: a `schedule --json` result, or a `next --json` result (its trial)")
+           ->required();
+       sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
+           ->required();
+       sub->add_option("--seed", o->seed, "seed of the sensor noise, drop-outs and outliers")
+           ->capture_default_str();
+       sub->add_option(
+           "--step", o->step_s,
+           "RK4 integration step in s (default: the truth's virtual_pool.step, else 0.01)");
+       sub->add_option("--json", o->json,
+                       "also write a summary as JSON to this file ('-' = stdout)");
+       sub->callback([o, run] { *run = [o] { return RunSimulate(*o); }; });
+     }});
 
 }  // namespace
 }  // namespace uuvplan::tool

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "uuvplan/model/input_error.h"
@@ -39,7 +40,8 @@ class ScratchDir {
  public:
   ScratchDir() {
     std::string pattern = ::testing::TempDir() + "uuvplan_io_XXXXXX";
-    root_ = ::mkdtemp(pattern.data());
+    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp " + pattern);
+    root_ = pattern;
     std::filesystem::copy(SourcePath("tests/data/io"), root_,
                           std::filesystem::copy_options::recursive);
   }

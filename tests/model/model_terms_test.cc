@@ -80,7 +80,9 @@ TEST(ForceTermTest, PartialsMatchCentralDifferences) {
       cm.xi -= kStep;
       const double d_xi = (term->Value(cp, p.theta.data()) - term->Value(cm, p.theta.data())) /
                           (2 * kStep);
-      if (p.c.xi != 0.0) EXPECT_NEAR(a.d_xi, d_xi, kTol) << term->parameter_names().size();
+      if (p.c.xi != 0.0) {  // |xi| has a kink at 0: its one-sided partials differ there
+        EXPECT_NEAR(a.d_xi, d_xi, kTol);
+      }
       cp = p.c;
       cm = p.c;
       cp.phi += kStep;

@@ -14,8 +14,8 @@
 namespace uuvplan::planner {
 namespace {
 
-using ::testing::HasSubstr;
 using nlohmann::json;
+using ::testing::HasSubstr;
 
 PlannedTrial SteadyTrial() {
   PlannedTrial t;
@@ -105,7 +105,8 @@ TEST(ScheduleJson, SineAndSegmentsFields) {
   EXPECT_EQ(seg["ballast_steps"], 3);
   ASSERT_EQ(seg["segments"].size(), 3u);
   // Every segment carries its mapping (contract): the trial's when the design leaves it empty.
-  EXPECT_EQ(seg["segments"][0], json({{"force", 60.0}, {"duration", 20.0}, {"mapping", "vertical-all"}}));
+  EXPECT_EQ(seg["segments"][0],
+            json({{"force", 60.0}, {"duration", 20.0}, {"mapping", "vertical-all"}}));
   EXPECT_EQ(seg["segments"][2]["mapping"], "vertical-front");
 }
 

@@ -129,11 +129,11 @@ IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& 
 Eigen::VectorXd PriorTheta(const model::Vehicle& vehicle, const model::DofModel& model,
                            const std::map<std::string, double>& guess);
 
-/// Heuristic closed-loop check of a trial's logged force: a designed open-loop input is
-/// piecewise constant (changes at fewer than 20% of its rows) or smooth (median |Δ²φ| below
-/// 0.3·median |Δφ|); an irregular force that changes at every row is the signature of a
-/// controller reacting to measurement noise. Returns the roughness ratio (0 if piecewise
-/// constant); above 0.3 means "closed loop suspected".
+/// Heuristic closed-loop check of a trial's logged force. Over the sequence of distinct
+/// consecutive command values: a designed piecewise-constant input (legs, steps, telegraph,
+/// PRBS) takes few levels (at most max(10, 10%) of its changes) → 0; otherwise the roughness
+/// median |Δ²φ| / median |Δφ| tells a smooth designed input (a sampled sine, ≪ 0.3) from a
+/// controller reacting to measurement noise (≳ 0.3: closed loop suspected).
 double CommandRoughness(const TrialData& trial);
 
 }  // namespace uuvplan::ident

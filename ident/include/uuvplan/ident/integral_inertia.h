@@ -6,8 +6,11 @@
 //
 // (c = m·ξ_s + k·χ_s collects the initial conditions, b the mean disturbance and the
 // integration bias.) With every force term except the constant ones known (from the
-// steady-state fit), y(t_i) = H_i·[m, c, b]ᵀ (eqs. 17–19) with H_i = [ξ_i, −1, −(t_i − t_s)];
-// each run of samples (trial, or part of a trial between gaps) has its own c and b.
+// steady-state fit), y(t_i) = H_i·[m, c, b]ᵀ (eqs. 17–19) with H_i = [ξ_i, −1, −(t_i − t_s)].
+// Runs are split at gaps and at large command steps (the filtered velocity is distorted
+// across the kink of the acceleration); each run has its own c, each trial its own b.
+// The filtered ξ̃ in H is noisy: corrected least squares removes the errors-in-variables
+// bias, θ = (HᵀH − Σ var(e_i)·e₀e₀ᵀ)⁻¹Hᵀy, var(e) from the sensor σ and the filter's gain.
 //
 // Uncertainty: the residuals are correlated over the Savitzky–Golay window (ξ is filtered),
 // so the textbook eqs. 11–12 σ is too small (notes/pitfalls.md). The reported σ_m combines a
@@ -32,6 +35,9 @@ struct IntegralInertiaOptions {
   double newey_west_windows = 2.0;
   /// Propagate the covariance of the known parameters into σ_m.
   bool propagate_known_uncertainty = true;
+  /// Correct the errors-in-variables bias of the noisy filtered velocity in H (corrected
+  /// least squares with the filter's known noise variance).
+  bool errors_in_variables = true;
   /// Integration step for the regressor integrals (s).
   double max_step_s = 0.05;
   double max_condition = 1e8;

@@ -27,12 +27,20 @@ enum class CovarianceKind {
   kKnownNoise,    ///< weights are 1/σ² of a known noise
   kConservative,  ///< known noise, inflated by s² when the residuals are larger than it
   kNeweyWest,     ///< autocorrelation-robust sandwich (Bartlett kernel)
+  /// Consecutive rows of a group share a noise term (e.g. y_k = … + e_k − e_{k−1}, and white
+  /// errors besides): the residual is MA(1) within groups, Ω = γ0·I + γ1·(L + Lᵀ) with γ0, γ1
+  /// the residual autocovariances at lags 0 and 1 (|γ1| <= γ0/2), Cov(θ) = A⁻¹HᵀΩHA⁻¹·n/(n−p).
+  kDifferenced,
 };
 
 struct LeastSquaresOptions {
   CovarianceKind covariance = CovarianceKind::kResidual;
   /// Newey–West lags L; negative: automatic, floor(4·(n/100)^(2/9)).
   int newey_west_lags = -1;
+  /// Uniform (truncated) instead of Bartlett weights for the Newey–West lags: exact for an
+  /// MA(L) residual such as the shared endpoints of consecutive integral rows (negative
+  /// eigenvalues of the middle matrix are clipped at zero).
+  bool truncated_kernel = false;
   /// Column-scaled condition number above which the regression is reported ill-conditioned
   /// (the estimate is still computed, by a truncated SVD).
   double max_condition = 1e8;
@@ -76,7 +84,16 @@ LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
 /// The Newey–West sandwich covariance for a solved regression (see the file comment).
 Eigen::MatrixXd NeweyWestCovariance(const Eigen::MatrixXd& H, const Eigen::VectorXd& residuals,
                                     const Eigen::VectorXd* weights, int lags,
-                                    const std::vector<int>* groups);
+                                    const std::vector<int>* groups, bool truncated = false);
+
+/// The kDifferenced covariance of an unweighted regression (see CovarianceKind).
+Eigen::MatrixXd DifferencedCovariance(const Eigen::MatrixXd& H, const Eigen::VectorXd& residuals,
+                                      const std::vector<int>& groups);
+
+/// The same for an instrumental-variable estimate θ = (ZᵀH)⁻¹Zᵀy (Z = H: least squares):
+/// Cov(θ) = (ZᵀH)⁻¹·ZᵀΩZ·(ZᵀH)⁻ᵀ·n/(n−p), Ω the MA(1) of the residuals within groups.
+Eigen::MatrixXd Ma1Covariance(const Eigen::MatrixXd& H, const Eigen::MatrixXd& Z,
+                              const Eigen::VectorXd& residuals, const std::vector<int>& groups);
 
 /// Automatic Newey–West lag count floor(4·(n/100)^(2/9)).
 int DefaultNeweyWestLags(int n);

@@ -19,7 +19,11 @@
 // biases m low (errors in variables, notes/pitfalls.md), so by default knots are one
 // Savitzky–Golay window apart (the endpoint errors of consecutive rows are then nearly
 // independent, and the integrals of ξ̃ average the noise away). Rows share an endpoint, so
-// the covariance is Newey–West with one lag per trial by default.
+// the residuals are an MA(1) within each run (differenced endpoint noise plus the white errors
+// of the integrals): the covariance estimates that structure (CovarianceKind::kDifferenced)
+// instead of assuming white residuals, which overstates σ several-fold for position-derived
+// velocities. Rows never span a large command step (runs are split there), and rows are
+// weighted by their trial's noise (trials filtered with different windows differ tenfold).
 #pragma once
 
 #include <Eigen/Dense>
@@ -51,10 +55,23 @@ Eigen::Matrix4d ToPhysicalJacobian(const SeedCoefficients& c);
 struct OneStepOptions {
   /// Knot spacing (s): 0 = every sample (seeds 002/004); negative = one Savitzky–Golay window.
   double window_s = -1.0;
-  CovarianceKind covariance = CovarianceKind::kNeweyWest;
-  int newey_west_lags = 1;  ///< rows share an endpoint: MA(1)
+  /// Rows share their endpoint ξ̃(t_k) with the next row: the residuals are differences of a
+  /// level noise, whose covariance is known up to σ² (kDifferenced); kNeweyWest and the
+  /// seeds' kResidual (white residuals) are available.
+  CovarianceKind covariance = CovarianceKind::kDifferenced;
+  int newey_west_lags = 1;
   double max_step_s = 0.05; ///< integration sub-step
   double max_condition = 1e8;
+  /// Errors in variables: ξ̃ in the integrals is noisy, which biases the plain least squares
+  /// (m high by 10% on VSOR-like data). Instrumental variables remove the bias: the same
+  /// integrals along the velocity simulated by the current estimate (uncorrelated with the
+  /// measurement noise) are the instruments, ψ = (ZᵀF)⁻¹ZᵀY, iterated `iv_iterations` times
+  /// from the plain least-squares answer. The same simulation also corrects F, for measured
+  /// velocities, for what the interpolation between samples misses (the ripple of a held
+  /// command faster than the sensor: F += ∫h(ξ_sim) − ∫h(interpolated ξ_sim samples)).
+  /// 0 = the seeds' plain least squares.
+  int iv_iterations = 2;
+  double simulation_step_s = 0.02;  ///< for the instruments' simulations
   bool IsValid(std::string* error) const;
 };
 
@@ -64,15 +81,22 @@ struct OneStepRows {
   Eigen::VectorXd Y;         ///< ξ̃(t_k) − ξ̃(t_{k−1})
   std::vector<double> t;     ///< knot time t_k of each row (trial time)
   std::vector<int> group;    ///< trial index of each row
+  std::vector<int> run;      ///< run of each row (rows of a run share endpoints), unique
+  /// 1/σ² of each row's noise (its trial's filtered-velocity noise, 2·(gain·σ_sensor)²): rows
+  /// of trials filtered with different windows differ in noise by an order of magnitude.
+  std::vector<double> weight;
   std::vector<int> free;     ///< model indices of ψ[1..]
   double noise_sigma = 0.0;  ///< σ of Y's noise (√2·σ of ξ̃), for weights
 };
 
 /// Builds the rows for `trials` of one DOF; `free` lists the model parameters to estimate
-/// (regressor-linear, not m); all others take their value in `theta`.
+/// (regressor-linear, not m); all others take their value in `theta`. With `instrument`
+/// (one velocity per trial, same order), F is computed along those velocities instead of the
+/// measured ones (the knots and Y stay those of the data): the instruments Z.
 OneStepRows BuildOneStepRows(const model::DofModel& model, const std::vector<const TrialData*>& trials,
                              const Eigen::VectorXd& theta, const std::vector<int>& free,
-                             const OneStepOptions& options);
+                             const OneStepOptions& options,
+                             const std::vector<SmoothedSignal>* instrument = nullptr);
 
 struct OneStepDofInput {
   const model::DofModel* model = nullptr;
@@ -99,9 +123,11 @@ struct OneStepDofResult {
   std::vector<ParameterEstimate> estimates;  ///< m and the free parameters
   double condition_number = 0.0;
   std::vector<std::string> not_identifiable;
+  std::vector<std::string> not_excited;  ///< free parameters whose regressor is zero in these trials
   Eigen::VectorXd residuals;
   int num_rows = 0;
   double cost = 0.0;  ///< J = (1/N)·Σ ε² (seed 004 eq. 5)
+  bool instrumental = false;  ///< the estimate is the instrumental-variable one
   bool ok() const { return status == FitStatus::kOk; }
 };
 

@@ -28,8 +28,12 @@ struct Outlier {
 };
 
 /// The outliers of `s` (sorted by index). `known_sigma` (<= 0: unknown) sets the noise floor.
+/// Samples within `protect_radius` seconds of a time in `protect` (e.g. command steps, where the
+/// motion has a kink that no local quadratic predicts) are never declared outliers.
 std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& options,
-                                    double known_sigma = -1.0);
+                                    double known_sigma = -1.0,
+                                    const std::vector<double>* protect = nullptr,
+                                    double protect_radius = 0.0);
 
 /// `s` without the given samples.
 Signal RemoveSamples(const Signal& s, const std::vector<Outlier>& outliers);

@@ -41,8 +41,12 @@ struct IntegratedRegressors {
   Eigen::MatrixXd H;
   Eigen::VectorXd h0;
 };
+/// `velocity` (may be null: the trial's velocity_estimate) replaces the measured velocity, e.g.
+/// by a simulated one to build instrumental variables: its `value` is the velocity and its
+/// `derivative` (may be empty: linear interpolation) the acceleration at its times.
 IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const TrialData& trial,
                                          const std::vector<double>& boundaries,
-                                         const Eigen::VectorXd& theta, double max_step_s);
+                                         const Eigen::VectorXd& theta, double max_step_s,
+                                         const SmoothedSignal* velocity = nullptr);
 
 }  // namespace uuvplan::ident

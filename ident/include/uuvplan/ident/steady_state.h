@@ -56,6 +56,13 @@ std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetect
                                       const std::vector<std::pair<double, double>>* user_windows =
                                           nullptr);
 
+/// Second pass over the steady speeds once a model is known: each point's segment is re-fitted
+/// with the settling model at τ = m/k_L (k_L = −∂F/∂ξ at the point, seed 000 eq. 13) from
+/// `theta`, which removes the transient tail without the imprecision of a free τ.
+void RefineSteadyPoints(const model::DofModel& model, const Eigen::VectorXd& theta,
+                        const std::vector<const TrialData*>& trials,
+                        std::vector<SteadyPoint>* points);
+
 struct SteadyStateOptions {
   SteadyDetectionOptions detection;
   enum class Weighting { kNone, kVelocityVariance };

@@ -72,9 +72,13 @@ struct TrialData {
   std::unique_ptr<model::Excitation> input;          ///< zero-order hold of the rows
   std::unique_ptr<LogAuxVelocities> aux;             ///< null when no other vel_ column
   std::vector<std::string> mappings_used;            ///< vehicle mapping names seen
+  /// Times of the large command changes (steps of more than 5% of the force range, and
+  /// mapping changes): the filtered velocity is distorted within half a filter window of them.
+  std::vector<double> force_jumps;
 
   /// Velocity estimate: smoothed measured velocity if the DOF has a velocity column, else the
-  /// Savitzky–Golay derivative of the positions. `velocity_from_position` says which.
+  /// Savitzky–Golay derivative of the positions (`velocity_from_position` says which); its
+  /// `derivative` is the acceleration of the same local polynomials.
   SmoothedSignal velocity_estimate;
   bool velocity_from_position = true;
   int sg_window = 21;
@@ -108,5 +112,17 @@ std::vector<ForcePiece> ConstantForcePieces(const TrialData& trial, double force
 
 /// Velocity estimate at time t (linear interpolation of velocity_estimate).
 double EstimatedVelocity(const TrialData& trial, double t);
+
+/// Half the time span of the Savitzky–Golay window of the velocity estimate (s).
+double FilterHalfSpan(const TrialData& trial);
+
+/// True when t lies within `half_span` of a large command change (force_jumps).
+bool NearForceJump(const TrialData& trial, double t, double half_span);
+
+/// Index ranges [begin, end) of velocity_estimate samples usable by the integral methods:
+/// inside one filter run, away from its edges, finite, and not within half a filter window of
+/// a large command change (a run is split there: the filtered velocity is distorted across
+/// the kink of the acceleration, and integrating through it would bias the regression).
+std::vector<std::pair<std::size_t, std::size_t>> SmoothRuns(const TrialData& trial);
 
 }  // namespace uuvplan::ident

@@ -3,8 +3,8 @@
 //    with the measurement: the velocity mean absolute error of seed 002 eq. 37,
 //    e = mean(|ν_model − ν_measured|), and the position RMS error;
 //  - residual analysis as seed 004 §5.2: mean, standard deviation, normalised autocorrelation
-//    with its 95% bounds ±1.96/√N (white if at most 5% of the lags fall outside), and a
-//    histogram summary (bins, skewness, excess kurtosis).
+//    with its 95% bounds ±1.96/√N (white unless more lags fall outside than white noise puts
+//    there 99% of the time: 3 of 20), and a histogram summary (bins, skewness, kurtosis).
 // Done on `fit` and `validate` trials alike, for cross-validation across trials (002 §6.1).
 #pragma once
 
@@ -33,7 +33,7 @@ struct ResidualAnalysis {
   std::vector<double> autocorrelation;  ///< lags 0..max_lag (lag 0 = 1)
   double bound95 = 0.0;                 ///< 1.96/√n
   int lags_outside = 0;                 ///< lags 1..max_lag with |ρ| > bound95
-  bool white = false;                   ///< lags_outside <= 5% of the lags (at least 1 allowed)
+  bool white = false;                   ///< lags_outside <= 99% quantile of Binomial(lags, 0.05)
   double lag_step_s = 0.0;              ///< time between residual samples (median)
   Histogram histogram;
 };

@@ -35,13 +35,22 @@ struct SavitzkyGolayOptions {
 };
 
 /// The window seed 000 §IV-D would use at this sampling rate: about 4 s of samples, odd, within
-/// 21–41 points (3.33 Hz sonar → 21, 10 Hz heading/depth → 41).
-int SavitzkyGolayWindow(double rate_hz);
+/// 21–41 points (3.33 Hz sonar → 21, 10 Hz heading/depth → 41). When the input changes faster
+/// (`input_time_scale_s` > 0: the median leg of a piecewise-constant input, or the period of
+/// a smooth one), the span is also kept below a quarter of it so that the filter follows the
+/// motion (down to 9 points, the fewest a 4th-order fit can smooth with).
+int SavitzkyGolayWindow(double rate_hz, double input_time_scale_s = 0.0);
+
+/// The time scale of a logged input: the median duration of its constant pieces when it is
+/// piecewise constant, else twice the median time between sign changes of its deviation from
+/// the mean (the period of a sine). 0 when it cannot be told (constant input).
+double InputTimeScale(const std::vector<double>& t, const std::vector<double>& force);
 
 struct SmoothedSignal {
   std::vector<double> t;
   std::vector<double> value;       ///< smoothed signal
   std::vector<double> derivative;  ///< its time derivative (NaN where a run is too short)
+  std::vector<double> second_derivative;  ///< its second time derivative (NaN if unknown)
   std::vector<bool> edge;          ///< within half a window of a run end (trim before fitting)
   std::vector<int> run;            ///< run index (runs are separated by gaps)
   /// Noise gains of the centred filter: σ_value = gain·σ_input, σ_derivative = gain_d·σ_input
@@ -82,6 +91,25 @@ SpeedFit ConstantSpeedFit(const Signal& position, double t0, double t1,
                           double known_sigma = -1.0);
 SpeedFit MeanSpeedFit(const Signal& velocity, double t0, double t1, double known_sigma = -1.0);
 
+/// The steady speed of a segment that may still hold the tail of a transient: near a steady
+/// speed v∞ the model (3) is linear, ξ(t) = v∞ + A·e^{−(t−t0)/τ} (τ = m/k_L, seed 000 eq. 13),
+/// so chi(t) = c + v∞·(t − t̄) + B·e^{−(t−t0)/τ} (positions) or ξ(t) = v∞ + A·e^{−(t−t0)/τ}
+/// (velocities) is fitted, τ by a profile search, and σ(v∞) from the Gauss–Newton covariance
+/// of all four (three) parameters. A transient too small to detect by a constant-speed test
+/// still biases a constant-speed fit by several σ when the segment is a few τ long; this fit
+/// removes that bias. `tau`, `amplitude` describe the transient; chi2 = Σ r²/σ².
+struct SettlingFit : SpeedFit {
+  double tau = 0.0;
+  double amplitude = 0.0;
+  double amplitude_sigma = 0.0;
+  double chi2 = 0.0;
+  int dof = 0;
+};
+/// `fixed_tau` > 0 holds τ at that value (e.g. m/k_L from an identified model): the fit is
+/// then linear in the other parameters and far more precise.
+SettlingFit SettlingSpeedFit(const Signal& s, bool is_position, double t0, double t1,
+                             double known_sigma, double fixed_tau = -1.0);
+
 /// A time interval during which the commanded force and mapping are constant.
 struct ForcePiece {
   double t0 = 0.0, t1 = 0.0;
@@ -97,6 +125,10 @@ struct SteadyDetectionOptions {
   double z = 2.0;
   /// Candidate starts are tried every `stride` samples (0: automatic, about 200 candidates).
   int stride = 0;
+  /// Fit the tail of the transient (SettlingSpeedFit) instead of a constant speed: the start
+  /// is the first candidate whose settling fit is consistent with the noise (χ² within 2σ of
+  /// its degrees of freedom). False: seed 000's constant-speed fit after the settling tests.
+  bool transient_model = true;
   bool IsValid(std::string* error) const;
 };
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "uuvplan/model/campaign.h"
+#include "uuvplan/model/input_error.h"
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/trial_log.h"
 #include "uuvplan/model/truth.h"

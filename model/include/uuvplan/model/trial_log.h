@@ -28,4 +28,9 @@ struct TrialLog {
   bool HasVelocity(Dof d) const { return !velocity[Index(d)].empty(); }
 };
 
+/// Unwraps pos_roll/pitch/yaw wrapped to (-pi, pi] (what ReadTrialLog does): wherever two
+/// consecutive samples differ by more than pi, later samples shift by the multiple of 2·pi that
+/// brings the step back within pi. Notes what it did in log->notes.
+void UnwrapAngles(TrialLog* log);
+
 }  // namespace uuvplan::model

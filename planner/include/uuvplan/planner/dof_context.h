@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "uuvplan/planner/criteria.h"
 #include "uuvplan/planner/parameter_box.h"
 #include "uuvplan/planner/solver.h"
+#include "uuvplan/planner/thrust_limits.h"
 
 namespace uuvplan::planner {
 
@@ -34,17 +36,34 @@ struct PriorInformation {
 struct PlannerOptions {
   BoxOptions box;
   Robustness robustness = Robustness::kMaximin;
-  SolverBackend backend = SolverBackend::kNlopt;
-  SolverOptions solver;
+  /// Sine designs are multimodal in the frequency (the trial's end phase): NLopt's global
+  /// search. Steady-level weights are a concave problem: Ipopt.
+  SolverBackend sine_backend = SolverBackend::kNlopt;
+  SolverBackend steady_backend = SolverBackend::kIpopt;
+  /// Budgets tuned on ROMEO surge's sine design (bench/planner_bench --budgets): DIRECT-L with
+  /// 150 evaluations, then COBYLA from its best point and from the seed-rule point, 40 each,
+  /// reach the criterion of 500-1000-evaluation searches to 0.01 (80 + 30 stop at a local
+  /// optimum 0.15 lower, 7% worse in σ).
+  SolverOptions solver = [] {
+    SolverOptions o;
+    o.max_global_evaluations = 150;
+    o.max_local_evaluations = 40;
+    return o;
+  }();
   /// Longest trial (s). CHOSEN: 4 minutes, about a pool team's battery-safe open-loop run;
   /// seed 000's trials last 1-2 minutes.
   double max_trial_duration_s = 240.0;
   /// Pause between trials for pool time (repositioning, s); as the virtual pool's default.
   double pause_s = 60.0;
-  /// Largest RK4 step (s); the step is otherwise a fifth of the shortest time constant.
-  double max_step_s = 0.25;
+  /// Largest RK4 step (s); the step is otherwise half the shortest time constant.
+  double max_step_s = 0.5;
   /// Values per box axis in hard-constraint checks (>= 2; 3 adds the axis midpoints).
   int check_grid = 3;
+  /// Largest steady speed a design may ask for (0: no limit), at the fastest point of the box.
+  /// Translations are limited by the pool. Rotations are not, and the a priori drag fits hold
+  /// only where they were measured. CHOSEN 0.35 rad/s: seed 000 Fig. 11 spans ±20 °/s.
+  double max_translation_speed = 0.0;
+  double max_rotation_rate = 0.35;
 
   bool IsValid(std::string* error) const;
 };
@@ -52,7 +71,7 @@ struct PlannerOptions {
 /// Outcome of the hard-constraint check of one trial (contract §check-pool).
 struct TrialCheck {
   bool feasible = true;
-  std::vector<std::string> reasons;      ///< each violated constraint, by how much
+  std::vector<std::string> reasons;       ///< each violated constraint, by how much
   std::array<double, 2> travel = {0, 0};  ///< excursion from the start over the box [min, max]
   double span = 0.0;                      ///< travel[1] - travel[0]
   double available = 0.0;                 ///< free travel of the pool for this DOF (inf: none)
@@ -64,9 +83,8 @@ class DofContext {
  public:
   /// The a priori context of `dof` (box from the vehicle file); notes on assumptions made are
   /// appended to `notes`. Throws model::InputError if the DOF has no sensor or no mapping.
-  static std::unique_ptr<DofContext> APriori(const model::Vehicle& vehicle,
-                                             const model::Pool& pool, model::Dof dof,
-                                             const PlannerOptions& options,
+  static std::unique_ptr<DofContext> APriori(const model::Vehicle& vehicle, const model::Pool& pool,
+                                             model::Dof dof, const PlannerOptions& options,
                                              std::vector<std::string>* notes);
   /// A context with a given box (e.g. about current estimates).
   DofContext(const model::Vehicle& vehicle, const model::Pool& pool, model::Dof dof,
@@ -79,6 +97,11 @@ class DofContext {
   const ParameterBox& box() const { return box_; }
   const PlannerOptions& options() const { return options_; }
   const model::DofSensors& sensors() const { return sensors_; }
+  /// The sensors as the optimisers see them: a sensor faster than one sample per RK4 step is
+  /// replaced by one at 1/step_s with σ·sqrt(rate'/rate), the same information per unit time
+  /// (a coarser Riemann sum of ∫ SᵀS dt; the optimum moves by far less than the solver's
+  /// tolerance, and every reported figure uses the real sensors).
+  const model::DofSensors& design_sensors() const { return design_sensors_; }
   /// Parameter vectors at the design points (centre first) and the check grid.
   const std::vector<Eigen::VectorXd>& design_thetas() const { return design_thetas_; }
   const std::vector<Eigen::VectorXd>& check_thetas() const { return check_thetas_; }
@@ -88,6 +111,23 @@ class DofContext {
   /// Shortest and longest linearised time constants m/k_L over the box (s).
   double shortest_time_constant() const { return tc_min_; }
   double longest_time_constant() const { return tc_max_; }
+  /// The model of one trial: the DOF's model with only the installation coefficients of the
+  /// (mapping, direction) pairs the trial uses (the others have no sensitivity; leaving them
+  /// out makes the sensitivity simulation cheaper), and the map back to the DOF's parameters.
+  struct TrialModel {
+    std::unique_ptr<model::DofModel> model;
+    std::vector<int> to_dof;  ///< to_dof[i]: index in the DOF's theta of trial parameter i
+    std::vector<Eigen::VectorXd> design_thetas, check_thetas;
+    /// The trial's information (trial parameters) as the DOF's (np × np, zeros elsewhere).
+    Eigen::MatrixXd Embed(const Eigen::MatrixXd& M, int np) const;
+  };
+  /// Cached by the set of installation coefficients (not thread-safe: one context per thread).
+  const TrialModel& ModelFor(const model::TrialDesign& design) const;
+
+  /// Admissible |phi_n| of a mapping in one direction (thrust_limits.h), capped so that the
+  /// steady speed at the fastest box point stays within the options' speed limit.
+  ForceRange ForceRangeFor(int mapping, int sign) const;
+
   /// Index of a parameter, -1 if absent.
   int Index(const std::string& name) const { return model_->ParameterIndex(name); }
   std::vector<int> Indices(const std::vector<std::string>& names) const;
@@ -111,8 +151,9 @@ class DofContext {
   ParameterBox box_;
   PlannerOptions options_;
   std::unique_ptr<model::DofModel> model_;
-  model::DofSensors sensors_;
+  model::DofSensors sensors_, design_sensors_;
   std::vector<Eigen::VectorXd> design_thetas_, check_thetas_;
+  mutable std::map<std::string, std::unique_ptr<TrialModel>> trial_models_;
   double step_s_ = 0.1, tc_min_ = 1.0, tc_max_ = 1.0;
 };
 

@@ -8,8 +8,11 @@
 // unknown within its bounds.
 //
 // Design variables (all in [0, 1], so that the no-reversal and thruster limits are bounds):
-//   u: |offset| = φ_min + u·(φ_max - φ_min)
-//   r: amplitude = r·min(|offset| - φ_min, φ_max - |offset|)     (Δφ <= φ̂ - φ_min, eq. 15)
+//   u: |offset| = φ_min + u·(o_max - φ_min),  o_max = (φ_max + ρ·φ_min)/(1 + ρ)
+//   r: amplitude = d·(ρ + r·(min(1, (φ_max - |offset|)/d) - ρ)),  d = |offset| - φ_min
+//      i.e. ρ·d <= amplitude <= min(d, φ_max - |offset|): no reversal nor dead band
+//      (Δφ <= φ̂ - φ_min, eq. 15), within the thrusters, and swinging at least the fraction
+//      ρ = min_amplitude_fraction of the way down to the no-reversal limit
 //   v: ω = ω_lo·(ω_hi/ω_lo)^v, [ω_lo, ω_hi] = [ω_opt,min/4, 4·ω_opt,max] over the box
 // Duration: the longest that keeps the travel over the box inside the pool (information grows
 // with every sample, so a shorter trial is never better), at most max_duration_s; or fixed, with
@@ -30,8 +33,20 @@ struct SineDesignOptions {
   std::vector<std::string> interest = {"m"};  ///< Ds/A/E interest set (D ignores it)
   /// 0: the longest duration that fits the pool (<= max_duration_s); > 0: this duration.
   double fixed_duration_s = 0.0;
-  double max_duration_s = 0.0;  ///< 0: the context's max_trial_duration_s
-  double min_periods = 1.0;     ///< at least this many periods in the trial
+  /// Longest sine trial (s), within the context's max_trial_duration_s. CHOSEN 120 s: seed
+  /// 000 Fig. 14's sine trial lasts about 100 s. Rotations (no pool limit) run this long.
+  double max_duration_s = 120.0;
+  /// At least this many periods in the trial. CHOSEN 2: seed 000 §IV-D excites "a couple of
+  /// sinusoidal periods". With 1 the optimum on ROMEO surge degenerates into a single slow
+  /// swell whose information comes mostly from the start from rest.
+  double min_periods = 2.0;
+  /// Smallest amplitude as a fraction ρ of |offset| - φ_min (the largest swing without
+  /// reversal). CHOSEN 0.5: below it the trial is a steady run with a ripple, which the steady
+  /// design already covers; under the standard model most inertia information comes from the
+  /// start from rest, and without this bound a schedule whose steady runs are already planned
+  /// drives the amplitude to zero (docs/planning.md). Seed 000's designs: 25/(35 - φ_min) and
+  /// 4/(5 - φ_min), both above 0.7.
+  double min_amplitude_fraction = 0.5;
   /// Only directions where the mapping works in open water (eta = 1 known, seed 000 §IV-D): in
   /// another direction eta scales the force and, without prior information on it, m cannot be
   /// told from eta·phi (the information is singular).
@@ -49,12 +64,12 @@ std::string_view DesignStatusName(DesignStatus s);
 struct SineDesignResult {
   DesignStatus status = DesignStatus::kFailed;
   std::string message;
-  PlannedTrial trial;             ///< the design with its checked travel and thrust_min
-  TrialCheck check;               ///< hard constraints over the check grid
-  double criterion = 0.0;         ///< robust aggregate of the criterion (with the prior)
-  std::vector<double> criterion_per_point;  ///< at each design point of the box
+  PlannedTrial trial;                        ///< the design with its checked travel and thrust_min
+  TrialCheck check;                          ///< hard constraints over the check grid
+  double criterion = 0.0;                    ///< robust aggregate of the criterion (with the prior)
+  std::vector<double> criterion_per_point;   ///< at each design point of the box
   std::vector<Eigen::MatrixXd> information;  ///< the trial's own M at each design point
-  SolverSummary summary;          ///< of the best candidate mapping/direction
+  SolverSummary summary;                     ///< of the best candidate mapping/direction
   std::vector<std::string> notes;
 };
 

@@ -49,10 +49,10 @@ struct SolverOptions {
   GlobalMethod global = GlobalMethod::kDirectL;  ///< NLopt only; kNone: local from x0
   int max_global_evaluations = 150;
   int max_local_evaluations = 200;
-  int max_iterations = 200;           ///< Ipopt iterations
-  double relative_tolerance = 1e-6;   ///< on the objective (NLopt) / Ipopt's tol
-  double penalty = 1e3;               ///< ρ of the global phase's constraint penalty
-  double fd_step = 1e-5;              ///< forward-difference step in x (O(1) variables)
+  int max_iterations = 200;          ///< Ipopt iterations
+  double relative_tolerance = 1e-6;  ///< on the objective (NLopt) / Ipopt's tol
+  double penalty = 1e3;              ///< ρ of the global phase's constraint penalty
+  double fd_step = 1e-5;             ///< forward-difference step in x (O(1) variables)
   /// A local phase started from each of these points too (NLopt) after the global one.
   std::vector<std::vector<double>> extra_starts;
 
@@ -68,9 +68,9 @@ struct [[nodiscard]] SolverSummary {
   std::string raw_status;  ///< the backend's own return code, as text
   std::string message;
   std::vector<double> x;
-  double objective = 0.0;    ///< R(φ(x))
-  std::vector<double> phi;   ///< φ_j(x)
-  std::vector<double> g;     ///< g_c(x)
+  double objective = 0.0;   ///< R(φ(x))
+  std::vector<double> phi;  ///< φ_j(x)
+  std::vector<double> g;    ///< g_c(x)
   double max_violation = 0.0;
   int evaluations = 0;
 

@@ -25,7 +25,7 @@ struct ForceRange {
 ForceRange DirectionForceRange(const model::Vehicle& vehicle, int mapping, int sign);
 
 struct ThrustCheck {
-  double thrust_min = 0.0;  ///< smallest |tau| of a working thruster over the trial (N)
+  double thrust_min = 0.0;        ///< smallest |tau| of a working thruster over the trial (N)
   double thrust_max_ratio = 0.0;  ///< largest |tau| / limit of a working thruster
   bool reversal = false;
   bool below_min = false;

@@ -1,0 +1,120 @@
+// Diagnosis (issue #5): what the standard model's simulation gets wrong, which physical effect
+// causes it, the extended model, and what the extension gains.
+//
+//  1. The standard model (contract: all η = 1, symmetric drag, no extra terms) is identified.
+//  2. Every trial is simulated free-run with it; the errors are broken down by thrust
+//     direction and mapping, by direction of motion, by speed, by small commands, by lag
+//     (cross-correlation of simulated and measured velocity) and by campaign time.
+//  3. Each candidate effect (model::Effect) extends the model; the extension is fitted by output
+//     error from the current estimate and kept only when the evidence is significant:
+//       likelihood ratio  D = 2·(C₀ − C₁)/s₁²  ~ χ²(Δp) under "no effect",
+//     C the output-error cost ½‖r‖², s₁² = 2·C₁/(N − P₁), at level `significance` per test
+//     (Bonferroni over the candidates), AND a new parameter at least `min_z` standard deviations
+//     from its null value (η = 1, others 0). Effects are added greedily, largest D first, and the
+//     rest re-tested against the extended model, so several effects can be combined.
+//  4. The gain of each finding is the velocity MAE (seed 002 eq. 37) of the free-run simulation
+//     before and after adding it, on the `validate` trials, or by 2-fold cross-validation across
+//     trials when none is marked.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "uuvplan/ident/estimate.h"
+#include "uuvplan/ident/identify.h"
+#include "uuvplan/ident/output_error.h"
+#include "uuvplan/model/campaign.h"
+#include "uuvplan/model/effects.h"
+#include "uuvplan/model/model_structure.h"
+
+namespace uuvplan::ident {
+
+struct DiagnoseOptions {
+  /// Level of each likelihood-ratio test. With ~12 candidates per DOF, 1e-3 keeps the chance
+  /// of any false finding on clean data near 1%.
+  double significance = 1e-3;
+  /// A new parameter must lie this many σ from its null value (η = 1, others 0).
+  double min_z = 3.0;
+  int max_effects = 3;  ///< per DOF
+  std::vector<model::Effect> candidates = {std::begin(model::kAllEffects),
+                                           std::end(model::kAllEffects)};
+  /// DOFs to diagnose; empty: every DOF with a fit trial.
+  std::vector<model::Dof> dofs;
+  IdentifyOptions identify;        ///< for the nominal (standard-model) identification
+  OutputErrorOptions output_error; ///< for the candidate fits
+  bool IsValid(std::string* error) const;
+};
+
+/// Where the standard model's free-run simulation goes wrong, per group of samples:
+/// relative error of the simulated speed, Σ|ξ_sim| / Σ|ξ_meas| − 1.
+struct ErrorGroup {
+  std::string label;     ///< e.g. "thrust negative in vertical-all", "speed > 0.3 m/s"
+  double relative = 0.0; ///< +0.38: the simulation overpredicts the speed by 38%
+  double mae = 0.0;      ///< velocity MAE in the group
+  int samples = 0;
+};
+
+struct ErrorBreakdown {
+  model::Dof dof = model::Dof::kSurge;
+  std::vector<ErrorGroup> by_thrust;  ///< per mapping and direction of the nominal force
+  std::vector<ErrorGroup> by_motion;  ///< per direction of motion
+  std::vector<ErrorGroup> by_speed;   ///< low / high speed (split at the median |ξ|)
+  std::vector<ErrorGroup> by_command; ///< small commands (|φ| < 20% of the largest) / others
+  double lag_s = 0.0;                 ///< measured velocity lags the simulation by this (s)
+  double drift_per_hour = 0.0;        ///< trend of the relative speed error over campaign time
+  double velocity_mae = 0.0;          ///< overall
+};
+
+struct DiagnosisGain {
+  std::string metric = "velocity_mae";
+  double before = 0.0;
+  double after = 0.0;
+  double relative = 0.0;  ///< (before − after) / before
+  std::string on;         ///< "validate" or "cross-validation"
+};
+
+struct Finding {
+  model::Effect effect = model::Effect::kInstallationLoss;
+  model::Dof dof = model::Dof::kSurge;
+  std::string what;                       ///< what the standard simulation gets wrong
+  std::vector<ParameterEstimate> params;  ///< the extension's parameters
+  double statistic = 0.0;                 ///< likelihood ratio D
+  int added_parameters = 0;
+  double p_value = 1.0;
+  DiagnosisGain gain;
+};
+
+/// One candidate's test (also those not retained), for the report.
+struct CandidateTest {
+  model::Effect effect = model::Effect::kInstallationLoss;
+  model::Dof dof = model::Dof::kSurge;
+  std::string detail;  ///< e.g. the coupling pair, or why it was not testable
+  double statistic = 0.0;
+  int added_parameters = 0;
+  double p_value = 1.0;
+  double max_z = 0.0;
+  bool significant = false;
+  int round = 0;  ///< greedy round (0 = against the standard model)
+};
+
+struct DiagnosisResult {
+  IdentifyResult nominal;
+  std::vector<Finding> findings;  ///< ordered by gain, largest first
+  std::vector<ErrorBreakdown> breakdowns;
+  std::vector<CandidateTest> tests;
+  /// The extended structure and its estimate per DOF (the standard one when nothing found).
+  std::vector<DofIdentification> extended;
+  std::vector<std::string> notes;
+};
+
+/// Diagnoses the campaign. Throws model::InputError for unusable input.
+DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions& options);
+
+/// The standard structure of the contract for a DOF: all η = 1 (no free η), symmetric drag,
+/// no effects; bias_step when the trials' ballast differs.
+model::ModelStructure NominalStructure(const model::Vehicle& vehicle, model::Dof dof,
+                                       const std::vector<std::string>& mappings_used,
+                                       bool ballast);
+
+}  // namespace uuvplan::ident

@@ -1,0 +1,115 @@
+// The planner's public entry points (the API `next` and `loop` build on):
+//
+//   PlanSchedule     the whole test schedule of a vehicle (a new payload): for each requested
+//                    DOF the steady runs for drag and installation coefficients (seed 000
+//                    §III-A), then one sine trial for the inertia designed given what the steady
+//                    runs leave unknown (§III-B), ordered, with durations, predicted σ per
+//                    parameter and total pool time (contract §schedule).
+//   DesignNextTrial  ONE next trial for a DOF given current estimates and their covariance
+//                    (sequential design: the covariance's inverse is the prior information and
+//                    the box is centred on the estimates).
+//   PredictPrecision the predicted σ and criterion of any set of trials (e.g. a user's plan).
+//
+// Predicted σ are the worst over the design points of the box (max_j sqrt((M_j⁻¹)_ii), the
+// Cramér–Rao bound at the least favourable a priori parameters) and criterion values are the
+// robust aggregate (maximin by default) of the D criterion in relative units (criteria.h).
+#pragma once
+
+#include <Eigen/Dense>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "uuvplan/model/dof.h"
+#include "uuvplan/model/pool.h"
+#include "uuvplan/model/vehicle.h"
+#include "uuvplan/planner/dof_context.h"
+#include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/sine_design.h"
+#include "uuvplan/planner/steady_design.h"
+
+namespace uuvplan::planner {
+
+struct ScheduleOptions {
+  PlannerOptions planner;
+  SteadyDesignOptions steady;
+  SineDesignOptions sine;
+  /// DOFs to plan, in this order; empty: every DOF with a mapping and a sensor (surge, sway,
+  /// heave, roll, pitch, yaw).
+  std::vector<model::Dof> dofs;
+  bool steady_runs = true;  ///< plan the steady runs
+  bool sine_trial = true;   ///< plan the sine trial
+  /// Information from earlier trials per DOF (absolute units); added to every design.
+  std::map<model::Dof, PriorInformation> prior;
+
+  bool IsValid(std::string* error) const;
+};
+
+/// kOk: every DOF completely planned; kPartial: some trials could not be planned (see the
+/// DOFs' messages: what is missing and the pool it would need); kInfeasible: nothing planned.
+enum class PlanStatus { kOk, kPartial, kInfeasible };
+std::string_view PlanStatusName(PlanStatus s);
+
+struct DofPlan {
+  model::Dof dof = model::Dof::kSurge;
+  /// kOk: at least one trial planned; `complete` also says every requested part was.
+  DesignStatus status = DesignStatus::kFailed;
+  bool complete = false;
+  std::string message;
+  std::vector<PlannedTrial> trials;
+  std::vector<TrialCheck> checks;
+  PredictedPrecision predicted;
+  /// Free travel (m or rad) the DOF's smallest useful trial needs; NaN when it was planned.
+  double required_travel = 0.0;
+  std::vector<std::string> notes;
+};
+
+struct ScheduleResult {
+  PlanStatus status = PlanStatus::kInfeasible;
+  std::string message;
+  Schedule schedule;  ///< the feasible trials of every DOF, in order
+  std::vector<DofPlan> dofs;
+  std::vector<std::string> notes;
+};
+
+ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& pool,
+                            const ScheduleOptions& options);
+
+/// Predicted precision of `info` (absolute, at each design point of ctx's box): worst σ per
+/// informed parameter, and the robust D criterion (relative units). Parameters no trial
+/// reaches are left out, with a note.
+PredictedPrecision PredictPrecision(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
+                                    std::vector<std::string>* notes = nullptr);
+
+/// The information of a list of trials of ctx's DOF at each design point (plus `prior`).
+std::vector<Eigen::MatrixXd> TrialsInformation(const DofContext& ctx,
+                                               const std::vector<PlannedTrial>& trials,
+                                               const PriorInformation* prior = nullptr);
+
+struct NextTrialOptions {
+  ScheduleOptions schedule;  ///< planner, steady and sine settings (dofs, prior unused)
+  /// Half-width of the box about the estimates, in σ of each estimate. CHOSEN 2 (95%).
+  double box_sigmas = 2.0;
+  Criterion criterion = Criterion::kD;  ///< on all parameters the trials reach
+  std::string id = "next";
+};
+
+struct NextTrialResult {
+  DesignStatus status = DesignStatus::kFailed;
+  std::string message;
+  PlannedTrial trial;
+  TrialCheck check;
+  PredictedPrecision predicted;                          ///< after the trial (prior + trial)
+  double criterion_before = 0.0, criterion_after = 0.0;  ///< robust criterion
+  std::vector<std::string> notes;
+};
+
+/// Designs the most informative single next trial of `dof` (a sine, or one steady leg from
+/// rest in some mapping and direction) given current `estimates` (by parameter name) and their
+/// `covariance` (rows/cols in `names` order). The box is the estimates ± box_sigmas·σ.
+NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool& pool,
+                                model::Dof dof, const ParameterValues& estimates,
+                                const std::vector<std::string>& names,
+                                const Eigen::MatrixXd& covariance, const NextTrialOptions& options);
+
+}  // namespace uuvplan::planner

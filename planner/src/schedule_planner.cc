@@ -1,0 +1,292 @@
+// The whole schedule, the next trial, and predicted precision (see schedule_planner.h).
+#include "uuvplan/planner/schedule_planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "uuvplan/model/effects.h"
+#include "uuvplan/model/input_error.h"
+
+namespace uuvplan::planner {
+
+std::string_view PlanStatusName(PlanStatus s) {
+  switch (s) {
+    case PlanStatus::kOk:
+      return "ok";
+    case PlanStatus::kPartial:
+      return "partial";
+    case PlanStatus::kInfeasible:
+      return "infeasible";
+  }
+  return "infeasible";
+}
+
+bool ScheduleOptions::IsValid(std::string* error) const {
+  return planner.IsValid(error) && steady.IsValid(error) && sine.IsValid(error);
+}
+
+std::vector<Eigen::MatrixXd> TrialsInformation(const DofContext& ctx,
+                                               const std::vector<PlannedTrial>& trials,
+                                               const PriorInformation* prior) {
+  const Eigen::MatrixXd M0 = ctx.PriorMatrix(prior);
+  std::vector<Eigen::MatrixXd> total(ctx.design_thetas().size(), M0);
+  for (const auto& t : trials) {
+    if (t.design.dof != ctx.dof()) continue;
+    const auto info = ctx.Information(t.design);
+    for (std::size_t j = 0; j < total.size(); ++j) total[j] += info[j];
+  }
+  return total;
+}
+
+PredictedPrecision PredictPrecision(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
+                                    std::vector<std::string>* notes) {
+  PredictedPrecision p;
+  p.criterion = std::string(CriterionName(Criterion::kD));
+  const auto& names = ctx.model().parameter_names();
+  std::vector<double> worst(names.size(), -1.0);
+  std::vector<double> crit;
+  for (std::size_t j = 0; j < info.size(); ++j) {
+    const Eigen::VectorXd s = PredictedSigma(info[j], ctx.design_thetas()[j]);
+    for (int i = 0; i < s.size(); ++i) {
+      if (std::isnan(s[i])) continue;
+      worst[i] = std::max(worst[i], s[i]);
+    }
+    crit.push_back(
+        EvaluateCriterion(RelativeInformation(info[j], ctx.design_thetas()[j]), Criterion::kD, {})
+            .value);
+  }
+  p.criterion_value = Aggregate(ctx.options().robustness, crit);
+  const std::string dof(model::DofName(ctx.dof()));
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (worst[i] < 0) {
+      if (notes) notes->push_back(dof + ": no trial reaches " + names[i] + " (not identified)");
+    } else if (!std::isfinite(worst[i])) {
+      if (notes) {
+        notes->push_back(dof + ": " + names[i] +
+                         " cannot be told apart from the other parameters by these trials");
+      }
+    } else {
+      p.sigma[names[i]] = worst[i];
+      // Seed 000 §IV-D: a percentile error above 51.02% means the parameter is statistically
+      // insignificant at 95% (indistinguishable from zero).
+      double nominal = std::numeric_limits<double>::infinity();
+      for (const auto& th : ctx.design_thetas()) nominal = std::min(nominal, std::abs(th[i]));
+      if (notes && nominal > 0 && worst[i] / nominal > 0.5102) {
+        std::ostringstream s;
+        s << dof << ": predicted σ(" << names[i] << ") = " << worst[i] << " is "
+          << 100.0 * worst[i] / nominal
+          << "% of its smallest a priori value: these trials would not determine it (seed 000: "
+             "above 51% a parameter is insignificant)";
+        notes->push_back(s.str());
+      }
+    }
+  }
+  return p;
+}
+
+namespace {
+
+std::vector<model::Dof> DofsToPlan(const model::Vehicle& v, const ScheduleOptions& o) {
+  if (!o.dofs.empty()) return o.dofs;
+  std::vector<model::Dof> out;
+  for (model::Dof d : model::kAllDofs) {
+    auto s = v.sensors.find(d);
+    const bool sensed = s != v.sensors.end() && (s->second.position || s->second.velocity);
+    if (sensed && !v.MappingsOf(d).empty()) out.push_back(d);
+  }
+  return out;
+}
+
+std::vector<Eigen::MatrixXd> PriorPerPoint(const DofContext& ctx, const PriorInformation* prior) {
+  return std::vector<Eigen::MatrixXd>(ctx.design_thetas().size(), ctx.PriorMatrix(prior));
+}
+
+}  // namespace
+
+ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& pool,
+                            const ScheduleOptions& o) {
+  ScheduleResult result;
+  std::string error;
+  if (!o.IsValid(&error)) {
+    result.message = error;
+    return result;
+  }
+  const std::vector<model::Dof> dofs = DofsToPlan(vehicle, o);
+  if (dofs.empty()) {
+    result.message = "vehicle '" + vehicle.name +
+                     "' has no DOF with both a thrust mapping and a sensor: nothing to plan";
+    return result;
+  }
+  int planned = 0, complete = 0;
+  for (model::Dof dof : dofs) {
+    DofPlan plan;
+    plan.dof = dof;
+    const std::string name(model::DofName(dof));
+    std::unique_ptr<DofContext> ctx =
+        DofContext::APriori(vehicle, pool, dof, o.planner, &plan.notes);
+    auto pit = o.prior.find(dof);
+    const PriorInformation* user_prior = pit == o.prior.end() ? nullptr : &pit->second;
+    std::vector<Eigen::MatrixXd> info = PriorPerPoint(*ctx, user_prior);
+    std::vector<std::string> failures;
+    if (o.steady_runs) {
+      SteadyDesignResult st = DesignSteady(*ctx, o.steady, info, name + "-steady");
+      for (auto& n : st.notes) plan.notes.push_back(std::move(n));
+      if (st.status == DesignStatus::kOk) {
+        for (std::size_t j = 0; j < info.size(); ++j) info[j] += st.information[j];
+        for (std::size_t i = 0; i < st.trials.size(); ++i) {
+          plan.trials.push_back(st.trials[i]);
+          plan.checks.push_back(st.checks[i]);
+        }
+      } else {
+        failures.push_back("steady runs: " + st.message);
+        plan.required_travel = std::max(plan.required_travel, st.required_travel);
+      }
+    }
+    if (o.sine_trial) {
+      SineDesignResult sn = DesignSine(*ctx, o.sine, info, name + "-sine");
+      for (auto& n : sn.notes) plan.notes.push_back(std::move(n));
+      if (sn.status == DesignStatus::kOk) {
+        for (std::size_t j = 0; j < info.size(); ++j) info[j] += sn.information[j];
+        plan.trials.push_back(sn.trial);
+        plan.checks.push_back(sn.check);
+      } else {
+        failures.push_back("sine trial: " + sn.message);
+        if (sn.check.span > 0) plan.required_travel = std::max(plan.required_travel, sn.check.span);
+      }
+    }
+    if (plan.trials.empty()) {
+      plan.status = DesignStatus::kInfeasible;
+      std::ostringstream m;
+      m << name << " cannot be planned in pool '" << pool.name << "':";
+      for (const auto& f : failures) m << " " << f;
+      plan.message = m.str();
+    } else {
+      plan.status = DesignStatus::kOk;
+      plan.complete = failures.empty();
+      if (plan.complete) plan.required_travel = std::numeric_limits<double>::quiet_NaN();
+      for (const auto& f : failures) plan.notes.push_back(name + ": " + f);
+      if (!plan.complete) {
+        std::ostringstream m;
+        m << name << " only partly planned in pool '" << pool.name << "':";
+        for (const auto& f : failures) m << " " << f;
+        plan.message = m.str();
+      }
+      plan.predicted = PredictPrecision(*ctx, info, &plan.notes);
+      result.schedule.predicted[dof] = plan.predicted;
+      for (const auto& t : plan.trials) result.schedule.trials.push_back(t);
+      ++planned;
+      if (plan.complete) ++complete;
+    }
+    result.dofs.push_back(std::move(plan));
+  }
+  double time = 0.0;
+  for (const auto& t : result.schedule.trials) time += t.design.duration;
+  if (!result.schedule.trials.empty()) {
+    time += o.planner.pause_s * (result.schedule.trials.size() - 1);
+  }
+  result.schedule.pool_time = time;
+  if (complete == static_cast<int>(dofs.size())) {
+    result.status = PlanStatus::kOk;
+  } else {
+    result.status = planned > 0 ? PlanStatus::kPartial : PlanStatus::kInfeasible;
+    std::ostringstream m;
+    for (const auto& p : result.dofs) {
+      if (!p.complete) m << p.message << " ";
+    }
+    result.message = m.str();
+  }
+  return result;
+}
+
+NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool& pool,
+                                model::Dof dof, const ParameterValues& estimates,
+                                const std::vector<std::string>& names,
+                                const Eigen::MatrixXd& covariance, const NextTrialOptions& o) {
+  NextTrialResult result;
+  std::string error;
+  if (!o.schedule.IsValid(&error)) {
+    result.message = error;
+    return result;
+  }
+  if (covariance.rows() != static_cast<int>(names.size()) ||
+      covariance.cols() != static_cast<int>(names.size())) {
+    result.message = "covariance must be square with one row per name";
+    return result;
+  }
+  ParameterValues sigmas;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    sigmas[names[i]] = std::sqrt(std::max(0.0, covariance(i, i)));
+  }
+  // The DOF's parameter names (the standard structure of the a priori context).
+  std::unique_ptr<DofContext> probe =
+      DofContext::APriori(vehicle, pool, dof, o.schedule.planner, &result.notes);
+  ParameterValues centre = probe->box().nominal;
+  for (const auto& [k, val] : estimates) {
+    if (centre.count(k)) centre[k] = val;
+  }
+  ParameterBox box = EstimateBox(centre, sigmas, probe->model().parameter_names(), o.box_sigmas,
+                                 o.schedule.planner.box);
+  DofContext ctx(vehicle, pool, dof, std::move(box), o.schedule.planner);
+  const PriorInformation prior = PriorInformation::FromCovariance(names, covariance);
+  const std::vector<Eigen::MatrixXd> M0 = PriorPerPoint(ctx, &prior);
+  result.criterion_before =
+      Aggregate(ctx.options().robustness, ctx.CriterionValues(M0, o.criterion, {}));
+
+  // Candidates: the sine designed for this criterion, and each steady leg from rest.
+  double best = -std::numeric_limits<double>::infinity();
+  std::vector<Eigen::MatrixXd> best_info;
+  SineDesignOptions so = o.schedule.sine;
+  so.criterion = o.criterion;
+  so.interest.clear();
+  const SineDesignResult sn = DesignSine(ctx, so, M0, o.id);
+  for (const auto& n : sn.notes) result.notes.push_back(n);
+  if (sn.status == DesignStatus::kOk) {
+    best = sn.criterion;
+    result.trial = sn.trial;
+    result.check = sn.check;
+    best_info = sn.information;
+  }
+  const SteadyCandidates cands = MakeSteadyCandidates(ctx, o.schedule.steady);
+  for (const auto& leg : cands.legs) {
+    model::TrialDesign d;
+    d.id = o.id;
+    d.dof = dof;
+    d.kind = model::TrialKind::kSteady;
+    d.mapping = leg.mapping;
+    d.force = leg.force;
+    d.duration = leg.duration();
+    std::vector<Eigen::MatrixXd> info = ctx.Information(d);
+    std::vector<Eigen::MatrixXd> total = info;
+    for (std::size_t j = 0; j < total.size(); ++j) total[j] += M0[j];
+    const double c =
+        Aggregate(ctx.options().robustness, ctx.CriterionValues(total, o.criterion, {}));
+    if (c > best + 1e-9) {
+      const TrialCheck check = ctx.Check(d);
+      if (!check.feasible) continue;
+      best = c;
+      result.trial.design = d;
+      result.trial.travel = check.travel;
+      result.trial.thrust_min = check.thrust_min;
+      result.check = check;
+      best_info = info;
+    }
+  }
+  if (!std::isfinite(best)) {
+    result.status = DesignStatus::kInfeasible;
+    result.message = "no trial of " + std::string(model::DofName(dof)) + " fits pool '" +
+                     pool.name + "': " + sn.message + cands.infeasible;
+    return result;
+  }
+  std::vector<Eigen::MatrixXd> total = best_info;
+  for (std::size_t j = 0; j < total.size(); ++j) total[j] += M0[j];
+  result.criterion_after = best;
+  result.predicted = PredictPrecision(ctx, total, &result.notes);
+  result.predicted.criterion = std::string(CriterionName(o.criterion));
+  result.predicted.criterion_value = best;
+  result.status = DesignStatus::kOk;
+  return result;
+}
+
+}  // namespace uuvplan::planner

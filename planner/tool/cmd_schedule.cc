@@ -1,0 +1,194 @@
+// `uuvplan schedule VEHICLE --pool POOL [--dof D]... [--json F]`: the test schedule of a vehicle
+// (a new payload) in a pool — steady runs and legs for drag and installation coefficients, a
+// sine trial for the inertia, per DOF, robust over the a priori box (docs/planning.md).
+// Exit status: 0 every requested DOF fully planned; 1 some trials cannot be hosted by the pool
+// (the partial schedule is still printed and written, with what is missing and why);
+// 2 bad input.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "command.h"
+#include "uuvplan/model/input_error.h"
+#include "uuvplan/model/io.h"
+#include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/schedule_planner.h"
+
+namespace uuvplan::tool {
+namespace {
+
+struct ScheduleCliOptions {
+  std::string vehicle;
+  std::string pool;
+  std::vector<std::string> dofs;
+  std::string json;
+  std::string robust = "maximin";
+  double max_duration_s = 240.0;
+  bool no_steady = false;
+  bool no_sine = false;
+};
+
+planner::Robustness ParseRobustness(const std::string& s) {
+  if (s == "maximin") return planner::Robustness::kMaximin;
+  if (s == "average") return planner::Robustness::kAverage;
+  if (s == "nominal") return planner::Robustness::kNominal;
+  throw model::InputError("--robust", "expected maximin, average or nominal, got '" + s + "'");
+}
+
+std::string Force(const model::TrialDesign& d) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1);
+  switch (d.kind) {
+    case model::TrialKind::kSteady:
+      s << d.force;
+      break;
+    case model::TrialKind::kSine:
+      s << d.offset << " ± " << d.amplitude << ", ω " << std::setprecision(3) << d.omega << " (T "
+        << std::setprecision(1) << 2 * M_PI / d.omega << " s)";
+      break;
+    case model::TrialKind::kSegments:
+      for (std::size_t i = 0; i < d.segments.size(); ++i) {
+        const auto& g = d.segments[i];
+        s << (i ? " | " : "") << g.force << " " << std::setprecision(0) << g.duration << "s"
+          << std::setprecision(1) << (g.mapping.empty() ? "" : " " + g.mapping);
+      }
+      break;
+  }
+  return s.str();
+}
+
+void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
+                   const model::Pool& pool, std::ostream& out) {
+  out << "Schedule for " << v.name << " in pool " << pool.name
+      << " (free: " << pool.length - 2 * pool.margin << " m length, "
+      << pool.width - 2 * pool.margin << " m width, " << pool.depth - 2 * pool.margin
+      << " m depth): " << planner::PlanStatusName(r.status) << "\n\n";
+  out << std::left << std::setw(17) << "id" << std::setw(9) << "kind" << std::setw(22) << "mapping"
+      << std::right << std::setw(8) << "T (s)"
+      << "  " << std::left << std::setw(17) << "travel" << std::right << std::setw(9) << "|tau|min"
+      << "  force\n";
+  for (const auto& t : r.schedule.trials) {
+    const auto& d = t.design;
+    std::ostringstream travel;
+    travel << std::fixed << std::setprecision(2) << "[" << t.travel[0] << ", " << t.travel[1]
+           << "]";
+    out << std::left << std::setw(17) << d.id << std::setw(9) << model::TrialKindName(d.kind)
+        << std::setw(22) << d.mapping << std::right << std::fixed << std::setprecision(1)
+        << std::setw(8) << d.duration << "  " << std::left << std::setw(17) << travel.str()
+        << std::right << std::setw(9) << std::setprecision(2) << t.thrust_min << "  " << Force(d)
+        << "\n";
+  }
+  out << "\nPredicted 1σ (worst over the a priori box) and robust D criterion:\n";
+  for (const auto& [dof, p] : r.schedule.predicted) {
+    out << "  " << std::left << std::setw(6) << model::DofName(dof) << std::right << " D "
+        << std::setprecision(2) << p.criterion_value << ":";
+    for (const auto& [name, s] : p.sigma)
+      out << "  " << name << " " << std::setprecision(3) << std::defaultfloat << s;
+    out << std::fixed << "\n";
+  }
+  out << std::fixed << std::setprecision(0) << "\nPool time: " << r.schedule.pool_time << " s ("
+      << std::setprecision(1) << r.schedule.pool_time / 60.0 << " min, pauses included), "
+      << r.schedule.trials.size() << " trials\n";
+  for (const auto& d : r.dofs) {
+    if (!d.complete && !d.message.empty()) out << "\n" << d.message << "\n";
+  }
+  bool header = false;
+  for (const auto& d : r.dofs) {
+    for (const auto& n : d.notes) {
+      if (!header) out << "\nNotes:\n";
+      header = true;
+      out << "  - " << n << "\n";
+    }
+  }
+}
+
+int RunSchedule(const ScheduleCliOptions& o) {
+  const model::Vehicle vehicle = model::ReadVehicle(o.vehicle);
+  const model::Pool pool = model::ReadPool(o.pool);
+  planner::ScheduleOptions so;
+  so.planner.robustness = ParseRobustness(o.robust);
+  so.planner.max_trial_duration_s = o.max_duration_s;
+  so.steady_runs = !o.no_steady;
+  so.sine_trial = !o.no_sine;
+  for (const auto& d : o.dofs) {
+    const auto dof = model::ParseDof(d);
+    if (!dof) {
+      throw model::InputError("--dof",
+                              "expected surge, sway, heave, roll, pitch or yaw, got '" + d + "'");
+    }
+    const std::string name(model::DofName(*dof));
+    if (vehicle.MappingsOf(*dof).empty()) {
+      throw model::InputError(o.vehicle + ": mappings",
+                              "--dof " + name + ": no thrust mapping acts on " + name);
+    }
+    auto s = vehicle.sensors.find(*dof);
+    if (s == vehicle.sensors.end() || (!s->second.position && !s->second.velocity)) {
+      throw model::InputError(o.vehicle + ": sensors." + name,
+                              "--dof " + name + ": no position or velocity sensor on " + name);
+    }
+    so.dofs.push_back(*dof);
+  }
+  std::string error;
+  if (!so.IsValid(&error)) throw model::InputError("options", error);
+  const planner::ScheduleResult r = planner::PlanSchedule(vehicle, pool, so);
+  const bool to_stdout = o.json == "-";
+  PrintSchedule(r, vehicle, pool, to_stdout ? std::cerr : std::cout);
+  if (!o.json.empty()) {
+    nlohmann::json j = planner::ScheduleToJson(r.schedule);
+    j["status"] = std::string(planner::PlanStatusName(r.status));
+    nlohmann::json notes = nlohmann::json::array();
+    nlohmann::json missing = nlohmann::json::object();
+    for (const auto& d : r.dofs) {
+      for (const auto& n : d.notes) notes.push_back(n);
+      if (!d.complete) {
+        nlohmann::json m = {{"message", d.message}};
+        if (d.required_travel > 0) {
+          m["required_travel"] = d.required_travel;
+          m["required_pool"] = d.required_travel + 2 * pool.margin;
+        }
+        missing[std::string(model::DofName(d.dof))] = m;
+      }
+    }
+    j["notes"] = notes;
+    if (!missing.empty()) j["not_planned"] = missing;
+    const std::string text = j.dump(2) + "\n";
+    if (to_stdout) {
+      std::cout << text;
+    } else {
+      model::WriteFileAtomically(o.json, text);
+    }
+  }
+  return r.status == planner::PlanStatus::kOk ? kExitOk : kExitActionNeeded;
+}
+
+const CommandRegistration kRegistration(
+    {"schedule", 10, [](CLI::App& app, std::function<int()>* run) {
+       auto o = std::make_shared<ScheduleCliOptions>();
+       CLI::App* sub = app.add_subcommand(
+           "schedule",
+           "The test schedule of a vehicle in a pool: steady runs and legs for drag and "
+           "installation coefficients, a sine trial for the inertia, robust over the a priori "
+           "box (exit 1 if the pool cannot host every trial).");
+       sub->add_option("VEHICLE", o->vehicle, "vehicle file (YAML)")->required();
+       sub->add_option("--pool", o->pool, "pool file (YAML)")->required();
+       sub->add_option("--dof", o->dofs,
+                       "DOF to plan (repeatable; default every DOF with a mapping and a sensor)");
+       sub->add_option("--json", o->json, "write the schedule as JSON to this file ('-' = stdout)");
+       sub->add_option("--robust", o->robust, "maximin (default), average or nominal")
+           ->capture_default_str();
+       sub->add_option("--max-duration", o->max_duration_s, "longest trial (s)")
+           ->capture_default_str()
+           ->check(CLI::PositiveNumber);
+       sub->add_flag("--no-steady", o->no_steady, "plan no steady runs");
+       sub->add_flag("--no-sine", o->no_sine, "plan no sine trial");
+       sub->callback([o, run] { *run = [o] { return RunSchedule(*o); }; });
+     }});
+
+}  // namespace
+}  // namespace uuvplan::tool

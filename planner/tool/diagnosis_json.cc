@@ -1,0 +1,119 @@
+#include "diagnosis_json.h"
+
+#include <iomanip>
+
+#include "ident_json.h"
+
+namespace uuvplan::tool {
+namespace {
+
+using nlohmann::json;
+
+json GroupsJson(const std::vector<ident::ErrorGroup>& groups) {
+  json out = json::array();
+  for (const auto& g : groups) {
+    out.push_back({{"label", g.label}, {"relative", g.relative}, {"velocity_mae", g.mae},
+                   {"samples", g.samples}});
+  }
+  return out;
+}
+
+}  // namespace
+
+json DiagnosisJson(const ident::DiagnosisResult& r) {
+  json out;
+  out["nominal"] = IdentifyJson(r.nominal);
+  json findings = json::array();
+  for (const auto& f : r.findings) {
+    json params = json::object();
+    for (const auto& p : f.params) params[p.name] = {{"value", p.value}, {"sigma", p.sigma}};
+    findings.push_back({{"effect", std::string(model::EffectName(f.effect))},
+                        {"dof", std::string(model::DofName(f.dof))},
+                        {"what", f.what},
+                        {"extension", {{"params", params}}},
+                        {"gain",
+                         {{"metric", f.gain.metric},
+                          {"before", f.gain.before},
+                          {"after", f.gain.after},
+                          {"relative", f.gain.relative},
+                          {"on", f.gain.on}}},
+                        {"statistic", f.statistic},
+                        {"p_value", f.p_value},
+                        {"added_parameters", f.added_parameters}});
+  }
+  out["findings"] = findings;
+  json tests = json::array();
+  for (const auto& t : r.tests) {
+    tests.push_back({{"effect", std::string(model::EffectName(t.effect))},
+                     {"dof", std::string(model::DofName(t.dof))},
+                     {"detail", t.detail},
+                     {"round", t.round},
+                     {"statistic", t.statistic},
+                     {"added_parameters", t.added_parameters},
+                     {"p_value", t.p_value},
+                     {"max_z", t.max_z},
+                     {"significant", t.significant}});
+  }
+  out["tests"] = tests;
+  json breakdown = json::object();
+  for (const auto& b : r.breakdowns) {
+    breakdown[std::string(model::DofName(b.dof))] = {
+        {"by_thrust", GroupsJson(b.by_thrust)},   {"by_motion", GroupsJson(b.by_motion)},
+        {"by_speed", GroupsJson(b.by_speed)},     {"by_command", GroupsJson(b.by_command)},
+        {"lag_s", b.lag_s},                       {"drift_per_hour", b.drift_per_hour},
+        {"velocity_mae", b.velocity_mae}};
+  }
+  out["breakdown"] = breakdown;
+  out["notes"] = r.notes;
+  return out;
+}
+
+void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
+  out << "Standard model (contract: all eta = 1, symmetric drag, no extra terms):\n";
+  PrintIdentifyTable(r.nominal, out);
+  out << std::fixed;
+  for (const auto& b : r.breakdowns) {
+    const std::string unit(model::VelocityUnit(b.dof));
+    out << "\nWhere the standard model's free-run simulation goes wrong (" << model::DofName(b.dof)
+        << ", velocity MAE " << std::setprecision(4) << b.velocity_mae << " " << unit << "):\n";
+    auto print = [&](const std::vector<ident::ErrorGroup>& groups) {
+      for (const auto& g : groups) {
+        out << "  " << std::left << std::setw(48) << g.label << std::right << std::setprecision(1)
+            << std::showpos << 100.0 * g.relative << std::noshowpos << "% speed  (MAE "
+            << std::setprecision(4) << g.mae << " " << unit << ", " << g.samples << " samples)\n";
+      }
+    };
+    print(b.by_thrust);
+    print(b.by_motion);
+    print(b.by_speed);
+    print(b.by_command);
+    out << "  measured velocity lags the simulation by " << std::setprecision(2) << b.lag_s
+        << " s; speed error drifts " << std::showpos << std::setprecision(1)
+        << 100.0 * b.drift_per_hour << std::noshowpos << "% per hour of campaign\n";
+  }
+  out << "\nFindings (ordered by gain):\n";
+  if (r.findings.empty()) out << "  none: the standard model explains the data\n";
+  int i = 0;
+  for (const auto& f : r.findings) {
+    out << "  " << ++i << ". " << model::EffectName(f.effect) << " (" << model::DofName(f.dof)
+        << "): " << f.what << "\n     extension:";
+    for (const auto& p : f.params) {
+      out << " " << p.name << " = " << std::setprecision(4) << p.value << " ± " << p.sigma;
+    }
+    out << "\n     evidence: likelihood ratio D = " << std::setprecision(1) << f.statistic << " on "
+        << f.added_parameters << " parameter(s), p = " << std::scientific << std::setprecision(1)
+        << f.p_value << std::fixed << "\n     gain: velocity MAE " << std::setprecision(4)
+        << f.gain.before << " -> " << f.gain.after << " (" << std::setprecision(0)
+        << 100.0 * f.gain.relative << "% better) on " << f.gain.on << "\n";
+  }
+  out << "\nCandidate effects tested (p < 1e-3 and a new parameter >= 3 sigma from 'no effect'):\n";
+  for (const auto& t : r.tests) {
+    out << "  round " << t.round << "  " << std::left << std::setw(20)
+        << model::EffectName(t.effect) << std::setw(4) << t.detail << std::right
+        << "  D = " << std::setw(10) << std::setprecision(1) << t.statistic << "  z = "
+        << std::setw(6) << t.max_z << (t.significant ? "  significant" : "") << "\n";
+  }
+  for (const auto& n : r.notes) out << "note: " << n << "\n";
+}
+
+}  // namespace uuvplan::tool

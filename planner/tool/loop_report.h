@@ -1,0 +1,34 @@
+// Printing and JSON shared by `next` and `loop` (planner/design_loop.h): one trial on one line,
+// the parameters of interest of each DOF against the target, and their JSON forms.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "uuvplan/model/truth.h"
+#include "uuvplan/planner/design_loop.h"
+#include "uuvplan/planner/schedule.h"
+
+namespace uuvplan::tool {
+
+/// "sine  surge-front  120.0 s  35.0 ± 25.0 N, T 26.0 s" — kind, mapping, duration, force.
+std::string TrialLine(const model::TrialDesign& d);
+
+/// Per DOF: each parameter of interest with value ± σ and percentile error against the target;
+/// with `truth`, also the true value and the error of the estimate.
+void PrintProgress(const std::vector<planner::DofProgress>& progress, double target_percent,
+                   std::ostream& out, const model::Truth* truth = nullptr);
+
+/// {<dof>: {"converged", "worst", "worst_percent", "trials", "usable", "status",
+///          "interest": {<name>: {"value", "sigma", "percent"}}}} (null for not estimated).
+nlohmann::json ProgressJson(const std::vector<planner::DofProgress>& progress);
+
+/// {<dof>: {"sigma": {<name>: s}, "criterion", "value"}} as in a schedule's "predicted".
+nlohmann::json PredictedJson(model::Dof dof, const planner::PredictedPrecision& p);
+
+/// Writes `j` to `path` atomically, or to stdout when `path` is "-".
+void WriteJson(const std::string& path, const nlohmann::json& j);
+
+}  // namespace uuvplan::tool

@@ -1,0 +1,154 @@
+// Bad data gets clear errors or warnings, never silent garbage: a trial that does not excite
+// the parameters (condition number and the parameters named), too few steady-state segments,
+// all-NaN or missing columns, unknown mappings, invalid options, gaps, closed-loop logs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "ident_cases.h"
+#include "uuvplan/ident/identify.h"
+#include "uuvplan/ident/monte_carlo.h"
+#include "uuvplan/model/input_error.h"
+
+namespace uuvplan::ident {
+namespace {
+
+using model::Dof;
+
+bool AnyContains(const std::vector<std::string>& v, const std::string& a, const std::string& b = "") {
+  for (const auto& s : v) {
+    if (s.find(a) != std::string::npos && (b.empty() || s.find(b) != std::string::npos)) return true;
+  }
+  return false;
+}
+
+std::string ErrorOf(const model::Campaign& c, const IdentifyOptions& o = {}) {
+  try {
+    Identify(c, o);
+  } catch (const model::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(BadDataTest, OneConstantForceDoesNotExciteTheModel) {
+  // One steady leg from rest at one force: the drag terms and the inertia cannot all be
+  // separated. The result must say which parameters are not identifiable and give the
+  // condition number, not report confident numbers.
+  const model::Truth truth = testing::CaseTruth("romeo");
+  model::TrialDesign d = testing::Segments("const", Dof::kSurge, "surge-front", {{30, 120}});
+  const model::Campaign c = VirtualCampaign(truth, {d}, 3);
+  const IdentifyResult r = Identify(c, IdentifyOptions{});
+  const DofIdentification* s = r.Find(Dof::kSurge);
+  ASSERT_NE(s, nullptr);
+  EXPECT_NE(s->status, IdentifyStatus::kOk);
+  EXPECT_TRUE(AnyContains(s->warnings, "not identifiable", "condition number")) << s->message;
+  // The steady-state method saw one segment for its unknowns and says how many it needs.
+  EXPECT_TRUE(AnyContains(s->notes, "too few steady-state segments", "at least"));
+}
+
+TEST(BadDataTest, AllNaNPositionColumnIsAnInputErrorNamingFileAndColumn) {
+  const model::Truth truth = testing::CaseTruth("romeo");
+  model::Campaign c = VirtualCampaign(truth, {testing::RomeoSurgeDesigns()[3]}, 3);
+  c.trials[0].path = "trials/surge_sine.csv";
+  for (double& v : c.trials[0].log.position[model::Index(Dof::kSurge)]) v = std::nan("");
+  const std::string e = ErrorOf(c);
+  EXPECT_NE(e.find("trials/surge_sine.csv"), std::string::npos) << e;
+  EXPECT_NE(e.find("pos_surge"), std::string::npos) << e;
+  EXPECT_NE(e.find("fewer than 3 samples"), std::string::npos) << e;
+}
+
+TEST(BadDataTest, MissingOrEmptyForceColumnIsAnInputError) {
+  const model::Truth truth = testing::CaseTruth("romeo");
+  model::Campaign c = VirtualCampaign(truth, {testing::RomeoSurgeDesigns()[3]}, 3);
+  c.trials[0].path = "trials/x.csv";
+  for (double& v : c.trials[0].log.force[model::Index(Dof::kSurge)]) v = std::nan("");
+  EXPECT_NE(ErrorOf(c).find("force_surge has no value"), std::string::npos) << ErrorOf(c);
+  c.trials[0].log.force[model::Index(Dof::kSurge)].clear();
+  EXPECT_NE(ErrorOf(c).find("no column force_surge"), std::string::npos) << ErrorOf(c);
+}
+
+TEST(BadDataTest, UnknownMappingIsAnInputError) {
+  const model::Truth truth = testing::CaseTruth("romeo");
+  model::Campaign c = VirtualCampaign(truth, {testing::RomeoSurgeDesigns()[3]}, 3);
+  c.trials[0].mapping = "surge-sideways";
+  EXPECT_NE(ErrorOf(c).find("'surge-sideways' is not a mapping"), std::string::npos) << ErrorOf(c);
+}
+
+TEST(BadDataTest, InvalidOptionsAreRefusedWithTheViolatedConstraint) {
+  const model::Truth truth = testing::CaseTruth("romeo");
+  const model::Campaign c = VirtualCampaign(truth, {testing::RomeoSurgeDesigns()[3]}, 3);
+  IdentifyOptions o;
+  o.data.sg_window = 20;  // even
+  EXPECT_NE(ErrorOf(c, o).find("sg_window"), std::string::npos);
+  o = IdentifyOptions{};
+  o.output_error.step_s = -1;
+  EXPECT_NE(ErrorOf(c, o).find("step_s > 0"), std::string::npos);
+}
+
+TEST(BadDataTest, GapsAreFoundAndReported) {
+  // Seed 000 Fig. 14: missing sonar samples between 70–85 s. A 15 s hole in the record is a
+  // gap in the report and the identification still succeeds.
+  const model::Truth truth = testing::CaseTruth("romeo");
+  model::Campaign c = VirtualCampaign(truth, testing::RomeoSurgeDesigns(), 3);
+  auto& log = c.trials[3].log;
+  for (std::size_t i = 0; i < log.size(); ++i) {
+    if (log.t[i] > 70 && log.t[i] < 85) log.position[model::Index(Dof::kSurge)][i] = std::nan("");
+  }
+  const IdentifyResult r = Identify(c, IdentifyOptions{});
+  bool found = false;
+  for (const auto& g : r.trials[3].gaps) found = found || (g.t0 < 70.5 && g.t1 > 84.5);
+  EXPECT_TRUE(found);
+  EXPECT_NE(r.status, IdentifyStatus::kFailed);
+  EXPECT_TRUE(AnyContains(r.trials[3].notes, "gap"));
+}
+
+TEST(BadDataTest, ClosedLoopLogIsFlaggedAndTheInertiaNotTrusted) {
+  // A vehicle held by a PD controller on noisy measurements: the logged force changes at every
+  // row with the noise (the signature of closed loop) and correlates with the velocity. The
+  // result must say so and mark m unreliable (notes/pitfalls.md).
+  model::Truth truth = testing::CaseTruth("romeo");
+  const double m = 890, k = 46.9, kq = 306.2, dt = 0.05;
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> n01(0, 1);
+  model::TrialLog log;
+  double x = 0.0, v = 0.0;
+  for (int i = 0; i < 4000; ++i) {
+    const double t = i * dt;
+    const double ref = 2.0 * std::sin(0.05 * t);
+    const double x_meas = x + 0.02 * n01(rng);
+    const double v_meas = v + 0.01 * n01(rng);
+    const double f = 120.0 * (ref - x_meas) - 300.0 * v_meas;
+    log.t.push_back(t);
+    log.force[model::Index(Dof::kSurge)].push_back(f);
+    log.position[model::Index(Dof::kSurge)].push_back(x_meas);
+    for (int s = 0; s < 10; ++s) {  // Euler sub-steps of the true dynamics
+      const double a = (-k * v - kq * v * std::abs(v) + f) / m;
+      x += v * dt / 10;
+      v += a * dt / 10;
+    }
+  }
+  model::Campaign c;
+  c.vehicle = truth.vehicle;
+  model::TrialEntry e;
+  e.file = e.path = "closed_loop.csv";
+  e.dof = Dof::kSurge;
+  e.mapping = "horizontal-all-surge";
+  e.log = std::move(log);
+  c.trials.push_back(std::move(e));
+  IdentifyOptions o;
+  o.structures[Dof::kSurge] = model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {}, false);
+  const IdentifyResult r = Identify(c, o);
+  const DofIdentification* s = r.Find(Dof::kSurge);
+  ASSERT_NE(s, nullptr);
+  EXPECT_TRUE(s->closed_loop_suspected);
+  EXPECT_TRUE(AnyContains(s->warnings, "closed-loop"));
+  EXPECT_NE(std::find(s->unreliable.begin(), s->unreliable.end(), "m"), s->unreliable.end());
+  // The open-loop virtual trials are not flagged.
+  const IdentifyResult open = Identify(VirtualCampaign(truth, testing::RomeoSurgeDesigns(), 3), IdentifyOptions{});
+  EXPECT_FALSE(open.Find(Dof::kSurge)->closed_loop_suspected);
+}
+
+}  // namespace
+}  // namespace uuvplan::ident

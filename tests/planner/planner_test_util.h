@@ -1,0 +1,58 @@
+// Vehicles for the planner's tests: ROMEO from cases/romeo (seed 000), and a minimal vehicle
+// with one open-water mapping for analytic oracles.
+#pragma once
+
+#include <string>
+
+#include "uuvplan/model/io.h"
+#include "uuvplan/model/pool.h"
+#include "uuvplan/model/vehicle.h"
+
+namespace uuvplan::planner::testing {
+
+inline std::string RomeoPath(const std::string& file) {
+  return std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/" + file;
+}
+
+inline model::Vehicle Romeo() { return model::ReadVehicle(RomeoPath("vehicle.yaml")); }
+inline model::Pool RomeoPool() { return model::ReadPool(RomeoPath("pool.yaml")); }
+
+/// One surge mapping "both" (eta = 1 both ways) on one thruster of large range; surge drag
+/// k, kq; a velocity sensor (rate, sigma) and/or a position sensor.
+inline model::Vehicle SimpleVehicle(double mass, double k, double kq, bool velocity_sensor,
+                                    bool position_sensor) {
+  model::Vehicle v;
+  v.name = "simple";
+  v.mass = mass;
+  v.size = {1.0, 1.0, 1.0};
+  v.added_mass = {0.0, 0.0};
+  model::Thruster t;
+  t.name = "T";
+  t.model.kind = model::ThrustModel::Kind::kSquare;
+  t.model.c_pos = t.model.c_neg = 1.0;
+  t.command_min = -100.0;
+  t.command_max = 100.0;
+  v.thrusters = {t};
+  v.min_thrust = 0.0;
+  v.mappings = {{"all", model::Dof::kSurge, {{0, 1.0}}, model::OpenWater::kBoth}};
+  model::DofPrior prior;
+  prior.drag = model::DragPrior{k, kq, 0.0};
+  v.priors[model::Dof::kSurge] = prior;
+  model::DofSensors s;
+  if (velocity_sensor) s.velocity = model::SensorSpec{10.0, 0.01};
+  if (position_sensor) s.position = model::SensorSpec{10.0, 0.01};
+  v.sensors[model::Dof::kSurge] = s;
+  return v;
+}
+
+inline model::Pool BigPool() {
+  model::Pool p;
+  p.name = "big";
+  p.length = 1e6;
+  p.width = 1e6;
+  p.depth = 1e6;
+  p.margin = 0.0;
+  return p;
+}
+
+}  // namespace uuvplan::planner::testing

@@ -1,0 +1,201 @@
+// The whole schedule, the pool check and the next-trial design on ROMEO (cases/romeo), and the
+// `schedule` / `check-pool` commands' exit statuses and JSON.
+#include "uuvplan/planner/schedule_planner.h"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "planner_test_util.h"
+#include "uuvplan/planner/pool_check.h"
+
+namespace uuvplan::planner {
+namespace {
+
+ScheduleOptions SurgeOnly() {
+  ScheduleOptions o;
+  o.dofs = {model::Dof::kSurge};
+  return o;
+}
+
+class RomeoSchedule : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    vehicle_ = new model::Vehicle(testing::Romeo());
+    pool_ = new model::Pool(testing::RomeoPool());
+    surge_ = new ScheduleResult(PlanSchedule(*vehicle_, *pool_, SurgeOnly()));
+  }
+  static void TearDownTestSuite() {
+    delete surge_;
+    delete pool_;
+    delete vehicle_;
+  }
+  static model::Vehicle* vehicle_;
+  static model::Pool* pool_;
+  static ScheduleResult* surge_;
+};
+model::Vehicle* RomeoSchedule::vehicle_ = nullptr;
+model::Pool* RomeoSchedule::pool_ = nullptr;
+ScheduleResult* RomeoSchedule::surge_ = nullptr;
+
+TEST_F(RomeoSchedule, SurgeScheduleIsCompleteOrderedAndTimed) {
+  const ScheduleResult& r = *surge_;
+  ASSERT_EQ(r.status, PlanStatus::kOk) << r.message;
+  ASSERT_GE(r.schedule.trials.size(), 2u);
+  // Steady runs first, the sine for the inertia last (seed 000 §III: drag, then inertia).
+  EXPECT_EQ(r.schedule.trials.back().design.kind, model::TrialKind::kSine);
+  double total = 0.0;
+  for (const auto& t : r.schedule.trials) total += t.design.duration;
+  total += 60.0 * (r.schedule.trials.size() - 1);  // PlannerOptions::pause_s
+  EXPECT_NEAR(r.schedule.pool_time, total, 1e-9);
+  // Every parameter of the surge model gets a predicted σ, all finite and positive.
+  const PredictedPrecision& p = r.schedule.predicted.at(model::Dof::kSurge);
+  for (const char* name : {"m", "k", "kq", "bias", "eta.surge-front.neg", "eta.surge-rear.pos",
+                           "eta.horizontal-all-surge.pos", "eta.horizontal-all-surge.neg"}) {
+    ASSERT_TRUE(p.sigma.count(name)) << name;
+    EXPECT_GT(p.sigma.at(name), 0.0);
+    EXPECT_TRUE(std::isfinite(p.sigma.at(name)));
+  }
+  EXPECT_EQ(p.criterion, "D");
+}
+
+TEST_F(RomeoSchedule, SurgeScheduleFitsItsPoolAndA6mPoolIsRefused) {
+  const PoolCheckResult ok = CheckPool(*vehicle_, *pool_, surge_->schedule, {});
+  EXPECT_TRUE(ok.feasible);
+  for (const auto& t : ok.trials) EXPECT_TRUE(t.check.feasible) << t.id;
+  EXPECT_LE(ok.required_length, pool_->length + 1e-9);
+  EXPECT_FALSE(ok.has_alternative);
+
+  model::Pool small = *pool_;
+  small.name = "six-metre";
+  small.length = 6.0;
+  const PoolCheckResult no = CheckPool(*vehicle_, small, surge_->schedule, {});
+  EXPECT_FALSE(no.feasible);
+  // The required length is the plan's largest travel + 2·margin: the 23 m pool it was made for.
+  EXPECT_NEAR(no.required_length, ok.required_length, 1e-9);
+  EXPECT_GT(no.required_length, 20.0);
+  EXPECT_LE(no.required_length, 23.0 + 1e-9);
+  bool said = false;
+  for (const auto& t : no.trials) {
+    if (t.check.feasible) continue;
+    ASSERT_FALSE(t.check.reasons.empty());
+    said = said || t.check.reasons.front().find("exceeds the 3 m free along the pool length") !=
+                       std::string::npos;
+  }
+  EXPECT_TRUE(said);
+  // What would work in 6 m: the planner's best schedule for it, and the information it loses.
+  ASSERT_TRUE(no.has_alternative);
+  for (const auto& t : no.alternative.schedule.trials) {
+    EXPECT_LE(t.travel[1] - t.travel[0], 3.0 + 1e-9) << t.design.id;
+  }
+  ASSERT_TRUE(no.information_loss.count(model::Dof::kSurge));
+  EXPECT_GT(no.information_loss.at(model::Dof::kSurge), 0.0);
+  EXPECT_LE(no.information_loss.at(model::Dof::kSurge), 1.0);
+}
+
+TEST_F(RomeoSchedule, PriorInformationReducesThePredictedSigma) {
+  // An earlier trial that measured m to 1% (σ = 8 kg at ~700 kg) adds to every design.
+  ScheduleOptions o = SurgeOnly();
+  o.steady_runs = false;
+  ScheduleResult without = PlanSchedule(*vehicle_, *pool_, o);
+  PriorInformation prior;
+  prior.names = {"m"};
+  prior.M = Eigen::MatrixXd::Constant(1, 1, 1.0 / 64.0);
+  o.prior[model::Dof::kSurge] = prior;
+  ScheduleResult with = PlanSchedule(*vehicle_, *pool_, o);
+  ASSERT_EQ(without.status, PlanStatus::kOk) << without.message;
+  ASSERT_EQ(with.status, PlanStatus::kOk) << with.message;
+  EXPECT_LT(with.schedule.predicted.at(model::Dof::kSurge).sigma.at("m"),
+            without.schedule.predicted.at(model::Dof::kSurge).sigma.at("m"));
+}
+
+TEST_F(RomeoSchedule, NextTrialAddsInformationToCurrentEstimates) {
+  // After the seed's steady runs: estimates near Table IV with its σ (k 4.9, kq 15.9) and m
+  // known to 56 kg (§IV-D: 890 ± 56). The next trial must increase the robust D criterion and
+  // shrink σ(m).
+  const std::vector<std::string> names = {"m", "k", "kq", "bias"};
+  Eigen::Matrix4d C = Eigen::Vector4d(56.0 * 56.0, 4.9 * 4.9, 15.9 * 15.9, 1.0).asDiagonal();
+  const ParameterValues est = {{"m", 890.0}, {"k", 46.9}, {"kq", 306.2}, {"bias", 0.0}};
+  const NextTrialResult r =
+      DesignNextTrial(*vehicle_, *pool_, model::Dof::kSurge, est, names, C, NextTrialOptions{});
+  ASSERT_EQ(r.status, DesignStatus::kOk) << r.message;
+  EXPECT_TRUE(r.check.feasible);
+  EXPECT_GT(r.criterion_after, r.criterion_before);
+  ASSERT_TRUE(r.predicted.sigma.count("m"));
+  EXPECT_LT(r.predicted.sigma.at("m"), 56.0);
+}
+
+TEST_F(RomeoSchedule, WholeRomeoScheduleSaysHeaveDoesNotFit) {
+  // Heave: 2 m of free depth (cases/romeo/pool.yaml); the seed ran heave under the Antarctic ice.
+  ScheduleOptions o;
+  const ScheduleResult r = PlanSchedule(*vehicle_, *pool_, o);
+  EXPECT_EQ(r.status, PlanStatus::kPartial) << r.message;
+  ASSERT_EQ(r.dofs.size(), 4u);  // surge, sway, heave, yaw: the DOFs with mappings and sensors
+  for (const auto& d : r.dofs) {
+    if (d.dof == model::Dof::kHeave) {
+      EXPECT_FALSE(d.complete);
+      EXPECT_NE(d.message.find("heave"), std::string::npos);
+      EXPECT_GT(d.required_travel, 2.0);
+    } else {
+      EXPECT_TRUE(d.complete) << d.message;
+    }
+  }
+}
+
+// The command line (UUVPLAN_BINARY): exit statuses and JSON of schedule and check-pool.
+int RunTool(const std::string& args) {
+  const std::string cmd = std::string(UUVPLAN_BINARY) + " " + args + " > /dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(PlannerCli, ScheduleAndCheckPool) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("uuvplan_planner_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string vehicle = testing::RomeoPath("vehicle.yaml");
+  const std::string pool = testing::RomeoPath("pool.yaml");
+  const std::string plan = (dir / "plan.json").string();
+  ASSERT_EQ(RunTool("schedule " + vehicle + " --pool " + pool + " --dof surge --json " + plan), 0);
+  std::ifstream in(plan);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_TRUE(j.contains("trials"));
+  ASSERT_TRUE(j["predicted"].contains("surge"));
+  EXPECT_TRUE(j["predicted"]["surge"]["sigma"].contains("m"));
+  for (const auto& t : j["trials"]) {
+    EXPECT_TRUE(t.contains("travel"));
+    EXPECT_TRUE(t.contains("thrust_min"));
+  }
+  // The plan fits its own pool (exit 0) and not a 6 m one (exit 1, with the required length).
+  const std::string out = (dir / "check.json").string();
+  EXPECT_EQ(
+      RunTool("check-pool " + vehicle + " --pool " + pool + " --plan " + plan + " --json " + out),
+      0);
+  const fs::path small = dir / "small.yaml";
+  std::ofstream(small) << "name: small\nlength: 6\nwidth: 12\ndepth: 5\nmargin: 1.5\n";
+  EXPECT_EQ(RunTool("check-pool " + vehicle + " --pool " + small.string() + " --plan " + plan +
+                    " --json " + out),
+            1);
+  std::ifstream cin(out);
+  const nlohmann::json c = nlohmann::json::parse(cin);
+  EXPECT_FALSE(c["feasible"].get<bool>());
+  EXPECT_GT(c["required"]["length"].get<double>(), 20.0);
+  EXPECT_FALSE(c["trials"][0]["reasons"].empty());
+  EXPECT_TRUE(c.contains("fits"));
+  // Bad input: exit 2.
+  EXPECT_EQ(RunTool("schedule " + vehicle + " --pool " + pool + " --dof twist"), 2);
+  EXPECT_EQ(RunTool("schedule " + (dir / "missing.yaml").string() + " --pool " + pool), 2);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace uuvplan::planner
