@@ -8,6 +8,7 @@
 //                             [--truth FILE] [--pool FILE] [--no-paper] [--no-loop]
 //                             [--paper-ls] [--verbose]
 // Default: cases/romeo/truth.yaml and pool.yaml, surge heave yaw, seed 1, budget 40, target 5.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -107,10 +108,22 @@ int main(int argc, char** argv) {
                 pr.trials.size(), pr.pool_time, wall);
     for (std::size_t i = 0; i < pr.trials.size(); ++i) {
       const auto& d = pr.trials[i].design;
-      std::printf("  %-28s %-8s %-22s %6.1f s  travel [%.2f, %.2f]%s\n", d.id.c_str(),
-                  std::string(model::TrialKindName(d.kind)).c_str(), d.mapping.c_str(),
-                  d.duration, pr.trials[i].travel[0], pr.trials[i].travel[1],
-                  pr.checks[i].feasible ? "" : "  (planner check: infeasible)");
+      // Excursion actually logged on the virtual vehicle (the a priori box's is wider).
+      const auto& pos = pr.campaign.trials[i].log.position[model::Index(d.dof)];
+      double lo = 0.0, hi = 0.0, p0 = NAN;
+      for (double p : pos) {
+        if (std::isnan(p)) continue;
+        if (std::isnan(p0)) p0 = p;
+        lo = std::min(lo, p - p0);
+        hi = std::max(hi, p - p0);
+      }
+      std::printf("  %-28s %-8s %-22s %6.1f s  logged travel [%.2f, %.2f], box [%.2f, %.2f]%s\n",
+                  d.id.c_str(), std::string(model::TrialKindName(d.kind)).c_str(),
+                  d.mapping.c_str(), d.duration, lo, hi, pr.trials[i].travel[0],
+                  pr.trials[i].travel[1], pr.checks[i].feasible ? "" : "  (planner check: infeasible)");
+      if (verbose) {
+        for (const auto& reason : pr.checks[i].reasons) std::printf("      %s\n", reason.c_str());
+      }
     }
     for (const auto& n : pr.notes) std::printf("  note: %s\n", n.c_str());
     for (const auto& d : pr.estimates.dofs) {

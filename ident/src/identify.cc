@@ -324,11 +324,28 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
       }
     }
     OutputErrorResult oe = OutputErrorFit(model, fit, start, s0, oo);
-    if (oe.status == OutputErrorStatus::kFailed) {
-      // The least-squares start may be too far off for the simulation; try the a priori values.
-      OutputErrorResult retry = OutputErrorFit(model, fit, prior, s0, oo);
-      if (retry.ok()) {
-        r.notes.push_back("output error started from the a priori values (" + oe.message + ")");
+    // A least-squares start far from the answer can lead Levenberg–Marquardt to a poor local
+    // minimum (residuals above the noise: s² more than 4 standard errors √(2/dof) above 1, or
+    // a negative drag) or nowhere: restart from the a priori values and keep the better fit.
+    auto suspicious = [&](const OutputErrorResult& f) {
+      if (!f.ok()) return true;
+      const int dof = std::max(1, f.num_residuals - np);
+      if (f.sigma2 > 1.0 + 4.0 * std::sqrt(2.0 / dof)) return true;
+      for (int j = 0; j < np; ++j) {
+        const std::string& n = r.parameter_names[j];
+        if ((n == model::param::kLinearDrag || n == model::param::kQuadraticDrag) && f.theta[j] < 0) return true;
+      }
+      return false;
+    };
+    if (suspicious(oe)) {
+      Eigen::VectorXd alt = prior;
+      for (int j = 0; j < np; ++j) {
+        if (s0[j] == ParameterState::kDropped) alt[j] = 0.0;
+      }
+      OutputErrorResult retry = OutputErrorFit(model, fit, alt, s0, oo);
+      if (retry.ok() && (!oe.ok() || retry.cost < oe.cost)) {
+        r.notes.push_back("output error restarted from the a priori values (from the "
+                          "least-squares answer: " + oe.message + ")");
         oe = std::move(retry);
       }
     }

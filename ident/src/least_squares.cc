@@ -1,5 +1,7 @@
 #include "uuvplan/ident/least_squares.h"
 
+#include "uuvplan/ident/chi_square.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -175,9 +177,13 @@ LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
     case CovarianceKind::kKnownNoise:
       fit.covariance = unit;
       break;
-    case CovarianceKind::kConservative:
-      fit.covariance = (fit.dof > 0 ? std::max(1.0, fit.sigma2) : 1.0) * unit;
+    case CovarianceKind::kConservative: {
+      // Inflate the known-noise covariance by s² only when the residuals say the noise is
+      // larger than known: s²·dof beyond the 99% point of χ²(dof) (P < 1%).
+      const bool larger = fit.dof > 0 && ChiSquareSurvival(fit.sigma2 * fit.dof, fit.dof) < 0.01;
+      fit.covariance = (larger ? fit.sigma2 : 1.0) * unit;
       break;
+    }
     case CovarianceKind::kDifferenced: {
       std::vector<int> g(n, 0);
       if (groups) g = *groups;

@@ -120,6 +120,11 @@ class Problem {
 
   int num_z() const { return num_z_; }
   int num_r() const { return num_r_; }
+  /// Measurements left out (gross errors found after a first fit): residual and Jacobian 0.
+  void Exclude(const std::vector<char>& mask) { excluded_ = mask; }
+  int num_excluded() const {
+    return static_cast<int>(std::count(excluded_.begin(), excluded_.end(), 1));
+  }
   const std::vector<TrialProblem>& trials() const { return trials_; }
 
   Eigen::VectorXd InitialZ() const {
@@ -189,6 +194,11 @@ class Problem {
       fill(tp.pos_at, tp.pos_y, tp.pos_w, 0);
       fill(tp.vel_at, tp.vel_y, tp.vel_w, 1);
     }
+    for (std::size_t i = 0; i < excluded_.size(); ++i) {
+      if (!excluded_[i]) continue;
+      (*r)[i] = 0.0;
+      if (J) J->row(i).setZero();
+    }
     return r->allFinite() && (!J || J->allFinite());
   }
 
@@ -199,6 +209,7 @@ class Problem {
   OutputErrorOptions o_;
   std::vector<TrialProblem> trials_;
   int num_z_ = 0, num_r_ = 0;
+  std::vector<char> excluded_;
 };
 
 // Mean lag-1 autocorrelation of the residuals within each trial's position and velocity parts.
@@ -371,12 +382,13 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
   Eigen::VectorXd theta = theta0;
   std::vector<TrialInitialState> initial;
   bool have_initial = false;
+  int excluded_total = 0;
   while (true) {
     std::vector<int> free;
     for (int j = 0; j < np; ++j) {
       if (res.state[j] == ParameterState::kEstimated) free.push_back(j);
     }
-    const Problem p(model, trials, theta, free, have_initial ? &initial : nullptr, o);
+    Problem p(model, trials, theta, free, have_initial ? &initial : nullptr, o);
     if (p.num_r() <= p.num_z()) {
       res.status = OutputErrorStatus::kFailed;
       res.message = "output error: " + std::to_string(p.num_r()) + " measurements for " +
@@ -390,12 +402,40 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
       res.message = "output error: " + lm.message;
       return res;
     }
+    // Gross errors the data preparation let through (an outlier next to a command step, say)
+    // would pull a least-squares fit: residuals beyond 6 robust standard deviations (and 5
+    // declared σ) are left out and the fit repeated once.
+    {
+      std::vector<double> a(lm.r.size());
+      for (Eigen::Index i = 0; i < lm.r.size(); ++i) a[i] = std::abs(lm.r[i]);
+      std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
+      const double limit = std::max(5.0, 6.0 * 1.4826 * a[a.size() / 2]);
+      std::vector<char> mask(lm.r.size(), 0);
+      int gross = 0;
+      for (Eigen::Index i = 0; i < lm.r.size(); ++i) {
+        if (std::abs(lm.r[i]) > limit) {
+          mask[i] = 1;
+          ++gross;
+        }
+      }
+      if (gross > 0 && gross < lm.r.size() / 100 + 1) {
+        p.Exclude(mask);
+        LmOutcome again = LevenbergMarquardt(p, lm.z, o);
+        res.iterations += again.iterations;
+        if (!again.failed) {
+          lm = std::move(again);
+          excluded_total = gross;
+        } else {
+          p.Exclude({});
+        }
+      }
+    }
     theta = p.Theta(lm.z);
     initial = p.Initial(lm.z);
     have_initial = true;
-    res.num_residuals = p.num_r();
+    res.num_residuals = p.num_r() - p.num_excluded();
     res.cost = 0.5 * lm.r.squaredNorm();
-    res.sigma2 = lm.r.squaredNorm() / (p.num_r() - p.num_z());
+    res.sigma2 = lm.r.squaredNorm() / (res.num_residuals - p.num_z());
     // Covariance of z: (JᵀJ)⁻¹ (CRB form), scaled by s²; HAC when the residuals are coloured.
     LeastSquaresOptions lso;
     lso.covariance = CovarianceKind::kKnownNoise;
@@ -478,6 +518,11 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
       all[j].significant = false;
     }
     res.estimates.push_back(all[j]);
+  }
+  if (excluded_total > 0) {
+    res.notes.push_back(std::to_string(excluded_total) +
+                        " measurement(s) more than 6 robust σ from the fitted model left out as "
+                        "gross errors");
   }
   if (res.hac_covariance) {
     res.notes.push_back("output-error residuals are not white (mean lag-1 autocorrelation " +

@@ -87,29 +87,52 @@ std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetect
                                       const std::vector<std::pair<double, double>>* user) {
   std::vector<SteadyPoint> out;
   const std::vector<ForcePiece> pieces = ConstantForcePieces(trial, force_tolerance);
-  const bool from_position = trial.has_position();
-  const Signal& s = from_position ? trial.position : trial.velocity;
-  const double sigma = from_position ? trial.position_sigma : trial.velocity_sigma;
+  // Each source measured on the trial's DOF (positions: seed 000's LS slope; velocities: their
+  // mean) gives its own segments; the more precise estimate of each piece is kept.
   std::vector<SteadySegment> segments;
-  if (user && !user->empty()) {
-    for (const auto& [a, b] : *user) {
-      // The piece containing the window's middle; the window must not span a force change.
-      const double mid = 0.5 * (a + b);
-      for (std::size_t p = 0; p < pieces.size(); ++p) {
-        if (pieces[p].t0 <= mid && mid < pieces[p].t1) {
-          SteadySegment seg;
-          seg.piece = static_cast<int>(p);
-          seg.user_marked = true;
-          const double lo = std::max(a, pieces[p].t0), hi = std::min(b, pieces[p].t1);
-          seg.fit = from_position ? ConstantSpeedFit(s, lo, hi, sigma) : MeanSpeedFit(s, lo, hi, sigma);
-          if (seg.fit.ok) segments.push_back(seg);
+  std::vector<char> segment_from_position;
+  for (const bool from_position : {true, false}) {
+    if (from_position ? !trial.has_position() : !trial.has_velocity()) continue;
+    const Signal& s = from_position ? trial.position : trial.velocity;
+    const double sigma = from_position ? trial.position_sigma : trial.velocity_sigma;
+    std::vector<SteadySegment> found;
+    if (user && !user->empty()) {
+      for (const auto& [a, b] : *user) {
+        // The piece containing the window's middle; the window must not span a force change.
+        const double mid = 0.5 * (a + b);
+        for (std::size_t p = 0; p < pieces.size(); ++p) {
+          if (pieces[p].t0 <= mid && mid < pieces[p].t1) {
+            SteadySegment seg;
+            seg.piece = static_cast<int>(p);
+            seg.user_marked = true;
+            const double lo = std::max(a, pieces[p].t0), hi = std::min(b, pieces[p].t1);
+            seg.fit = from_position ? ConstantSpeedFit(s, lo, hi, sigma) : MeanSpeedFit(s, lo, hi, sigma);
+            if (seg.fit.ok) found.push_back(seg);
+          }
         }
       }
+    } else {
+      found = DetectSteadySegments(s, from_position, pieces, o, sigma);
     }
-  } else {
-    segments = DetectSteadySegments(s, from_position, pieces, o, sigma);
+    for (const SteadySegment& seg : found) {
+      bool replaced = false;
+      for (std::size_t k = 0; k < segments.size(); ++k) {
+        if (segments[k].piece != seg.piece) continue;
+        if (seg.fit.sigma < segments[k].fit.sigma) {
+          segments[k] = seg;
+          segment_from_position[k] = from_position;
+        }
+        replaced = true;
+      }
+      if (!replaced) {
+        segments.push_back(seg);
+        segment_from_position.push_back(from_position);
+      }
+    }
   }
-  for (const SteadySegment& seg : segments) {
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    const SteadySegment& seg = segments[k];
+    const bool from_position = segment_from_position[k];
     const ForcePiece& piece = pieces[seg.piece];
     SteadyPoint p;
     p.trial = trial.index;

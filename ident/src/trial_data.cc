@@ -201,10 +201,14 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
     if (o.remove_outliers) {
       // Command steps (and the start, where the trial's force is switched on) put a kink in
       // the motion that no local quadratic predicts: those samples are not tested.
+      // Positions are smooth through such kinks (the acceleration jumps, the position does
+      // not): only velocities are protected.
       std::vector<double> kinks = d.force_jumps;
       kinks.push_back(0.0);
       const double h = (s.t.back() - s.t.front()) / std::max<std::size_t>(1, s.size() - 1);
-      *outliers = DetectOutliers(s, o.outliers, declared, &kinks, (o.outliers.half_window + 1) * h);
+      const bool protect = std::string(what) == "velocity";
+      *outliers = DetectOutliers(s, o.outliers, declared, protect ? &kinks : nullptr,
+                                 (o.outliers.half_window + 1) * h);
       if (!outliers->empty()) {
         d.notes.push_back(std::to_string(outliers->size()) + " " + what + " outlier(s) excluded (first at t = " +
                           Fmt(outliers->front().t + d.time_offset) + " s, residual " +

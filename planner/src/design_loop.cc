@@ -265,12 +265,28 @@ bool PlanForDof(Planner& planner, const model::Campaign& campaign, const DofProg
     }
     want_why = "its installation coefficient is not estimated yet";
   }
+  ParameterValues estimates;
+  std::vector<std::string> names;
+  Eigen::MatrixXd covariance(0, 0);
+  if (id != nullptr && id->status != ident::IdentifyStatus::kFailed) {
+    std::vector<std::string> input_notes;
+    DesignInputs(planner.vehicle, *id, planner.options.usable_percent, &estimates, &names,
+                 &covariance, &input_notes);
+    for (const auto& n : input_notes) d->notes.push_back(name + ": " + n);
+  }
   auto take_apriori = [&](const PlannedTrial* t, const std::string& why_this) {
     d->dof = dof;
     d->source = "a priori schedule";
     d->trial = *t;
-    auto p = sched.schedule.predicted.find(dof);
-    if (p != sched.schedule.predicted.end()) d->predicted = p->second;
+    // Predicted precision after this trial: its information over the a priori box plus the
+    // prior information of the estimates so far (what DesignNextTrial reports for its trials).
+    std::vector<std::string> ctx_notes;
+    const std::unique_ptr<DofContext> ctx = DofContext::APriori(
+        planner.vehicle, planner.pool, dof, planner.options.schedule.planner, &ctx_notes);
+    PriorInformation prior;
+    if (!names.empty()) prior = PriorInformation::FromCovariance(names, covariance);
+    d->predicted =
+        PredictPrecision(*ctx, TrialsInformation(*ctx, {*t}, names.empty() ? nullptr : &prior));
     d->notes.push_back(name + ": a priori trial '" + t->design.id + "' (" + why_this + ")");
     return true;
   };
@@ -291,15 +307,6 @@ bool PlanForDof(Planner& planner, const model::Campaign& campaign, const DofProg
     *why = name + ": " + sched.message;
     return false;
   }
-  ParameterValues estimates;
-  std::vector<std::string> names;
-  Eigen::MatrixXd covariance(0, 0);
-  if (id != nullptr && id->status != ident::IdentifyStatus::kFailed) {
-    std::vector<std::string> input_notes;
-    DesignInputs(planner.vehicle, *id, planner.options.usable_percent, &estimates, &names,
-                 &covariance, &input_notes);
-    for (const auto& n : input_notes) d->notes.push_back(name + ": " + n);
-  }
   NextTrialOptions no = planner.options.next;
   no.schedule = planner.options.schedule;
   no.schedule.dofs = {dof};
@@ -314,9 +321,19 @@ bool PlanForDof(Planner& planner, const model::Campaign& campaign, const DofProg
     no.id = os.str();
     ++k;
   } while (ids.count(no.id));
+  // DesignNextTrial needs a covariance to invert (PriorInformation::FromCovariance fails on an
+  // empty one): without any usable estimate, a vague prior on m (σ = 1000 × its upper a priori
+  // bound: relative information 1e-6, nothing) stands for "no information".
+  std::vector<std::string> design_names = names;
+  Eigen::MatrixXd design_covariance = covariance;
+  if (design_names.empty()) {
+    const double vague = 1e3 * planner.vehicle.InertiaBounds(dof)[1];
+    design_names = {model::param::kMass};
+    design_covariance = Eigen::MatrixXd::Constant(1, 1, vague * vague);
+  }
   auto design = [&](const NextTrialOptions& o, const std::string& what) {
-    const NextTrialResult nt =
-        DesignNextTrial(planner.vehicle, planner.pool, dof, estimates, names, covariance, o);
+    const NextTrialResult nt = DesignNextTrial(planner.vehicle, planner.pool, dof, estimates,
+                                               design_names, design_covariance, o);
     for (const auto& n : nt.notes) d->notes.push_back(name + ": " + n);
     if (nt.status != DesignStatus::kOk) {
       d->notes.push_back(name + ": " + what + ": " + std::string(DesignStatusName(nt.status)) +

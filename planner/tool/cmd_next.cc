@@ -6,7 +6,9 @@
 // Exit status: 0 a trial is planned, or every parameter of interest is already below the
 // target (then "trial" is null); 1 no trial that is still needed fits the pool; 2 bad input.
 #include <CLI/CLI.hpp>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -66,13 +68,17 @@ int RunNext(const NextCliOptions& o) {
   switch (r.status) {
     case planner::NextStatus::kTrial: {
       const auto& d = r.trial.design;
+      std::ostringstream travel;
+      travel << std::fixed << std::setprecision(2) << "[" << r.trial.travel[0] << ", "
+             << r.trial.travel[1] << "] " << model::PositionUnit(d.dof) << ", smallest thrust "
+             << r.trial.thrust_min << " N";
       out << "Next: " << d.id << " (" << model::DofName(d.dof) << ", " << r.source << ")\n  "
-          << TrialLine(d) << "\n  travel [" << r.trial.travel[0] << ", " << r.trial.travel[1]
-          << "] " << model::PositionUnit(d.dof) << ", smallest thrust " << r.trial.thrust_min
-          << " N\n  " << r.message << "\n";
+          << TrialLine(d) << "\n  travel " << travel.str() << "\n  " << r.message << "\n";
       if (!r.predicted.sigma.empty()) {
         out << "  predicted σ after it:";
-        for (const auto& [name, s] : r.predicted.sigma) out << "  " << name << " " << s;
+        for (const auto& [name, s] : r.predicted.sigma) {
+          out << "  " << name << " " << std::setprecision(3) << s;
+        }
         out << "\n";
       }
       break;

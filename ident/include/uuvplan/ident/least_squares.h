@@ -4,7 +4,8 @@
 //   theta = (Hᵀ W H)⁻¹ Hᵀ W y                                  (seed 002 eq. 35, W = diag(w))
 //   eq. 11/12 ("residual"):  Cov = s²·(Hᵀ W H)⁻¹,  s² = rᵀ W r / (n − p)
 //   known noise:             Cov = (Hᵀ W H)⁻¹          (w_i = 1/σ_i², the noise is known)
-//   conservative:            Cov = max(1, s²)·(Hᵀ W H)⁻¹ (known noise unless the fit says worse)
+//   conservative:            Cov = (Hᵀ W H)⁻¹, times s² when s²·(n − p) exceeds the 99% point of
+//                            χ²(n − p) (known noise unless the residuals say it is larger)
 //   Newey–West (HAC):        Cov = (HᵀWH)⁻¹ S (HᵀWH)⁻¹·n/(n − p),
 //                            S = Σ_l κ_l Σ_i (w_i h_i r_i)(w_{i-l} h_{i-l} r_{i-l})ᵀ + transpose,
 //                            Bartlett κ_l = 1 − l/(L + 1); lags never cross a group boundary.
@@ -25,7 +26,7 @@ namespace uuvplan::ident {
 enum class CovarianceKind {
   kResidual,      ///< seed 000 eqs. 11–12: noise variance estimated from the residuals
   kKnownNoise,    ///< weights are 1/σ² of a known noise
-  kConservative,  ///< known noise, inflated by s² when the residuals are larger than it
+  kConservative,  ///< known noise, inflated by s² when the residuals are significantly larger
   kNeweyWest,     ///< autocorrelation-robust sandwich (Bartlett kernel)
   /// Consecutive rows of a group share a noise term (e.g. y_k = … + e_k − e_{k−1}, and white
   /// errors besides): the residual is MA(1) within groups, Ω = γ0·I + γ1·(L + Lᵀ) with γ0, γ1

@@ -1,0 +1,355 @@
+// The design–identify loop (planner/design_loop.h) and seed 000's procedure as its yardstick
+// (planner/paper_procedure.h) on the virtual ROMEO of cases/romeo (issue #5):
+//  - the loop reaches 5% percentile error on m, the drag of interest and every η of surge,
+//    heave and yaw in no more pool time than seed 000's procedure, whose own estimators (steady
+//    state LS + integral method, §III) leave at least one parameter above 5%;
+//  - the loop's estimates agree with the truth within their σ, are deterministic for a seed,
+//    and its pool time is Σ durations + pauses;
+//  - `next` takes seed 000's order on an empty campaign and reports convergence; budget and
+//    bad input are reported (CLI exit codes 1 and 2).
+// Runtime: the whole 3-DOF loop and the seed procedure take a few seconds (bench/loop_bench.cc
+// prints the same comparison with every iteration, for any seed).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "../tool/tool_test_util.h"
+#include "planner_test_util.h"
+#include "uuvplan/ident/monte_carlo.h"
+#include "uuvplan/model/io.h"
+#include "uuvplan/planner/design_loop.h"
+#include "uuvplan/planner/paper_procedure.h"
+
+namespace uuvplan::planner {
+namespace {
+
+using model::Dof;
+using testing::RomeoPath;
+using testing::RomeoPool;
+
+// Issue #5's target: 5% percentile error on every parameter of interest.
+constexpr double kTarget = 5.0;
+
+model::Truth RomeoTruth() { return model::ReadTruth(RomeoPath("truth.yaml")); }
+
+const std::vector<Dof>& RomeoDofs() {
+  static const std::vector<Dof> dofs = {Dof::kSurge, Dof::kHeave, Dof::kYaw};
+  return dofs;
+}
+
+// One run of the loop on ROMEO surge, heave and yaw (seed 1), shared by the tests.
+const LoopResult& RomeoLoop() {
+  static const LoopResult r = [] {
+    LoopOptions o;
+    o.step.dofs = RomeoDofs();
+    o.step.target_percent = kTarget;
+    o.seed = 1;
+    return RunLoop(RomeoTruth(), RomeoPool(), o);
+  }();
+  return r;
+}
+
+// Seed 000's procedure with its own estimators (Identify without the output-error stage: the
+// steady-state LS of eqs. 7-12/20 and the integral method of eqs. 16-19).
+const PaperProcedureResult& RomeoPaper() {
+  static const PaperProcedureResult r = [] {
+    PaperProcedureOptions o;
+    o.dofs = RomeoDofs();
+    o.seed = 1;
+    o.identify.refine = false;
+    return RunPaperProcedure(RomeoTruth(), RomeoPool(), o);
+  }();
+  return r;
+}
+
+const DofProgress* Find(const std::vector<DofProgress>& progress, Dof dof) {
+  for (const auto& p : progress) {
+    if (p.dof == dof) return &p;
+  }
+  return nullptr;
+}
+
+TEST(DesignLoopTest, RomeoReachesFivePercentInLessPoolTimeThanSeedProcedure) {
+  const LoopResult& loop = RomeoLoop();
+  const PaperProcedureResult& paper = RomeoPaper();
+  ASSERT_EQ(loop.status, LoopStatus::kConverged) << loop.message;
+  EXPECT_TRUE(loop.converged);
+  // Every parameter of interest of every DOF estimated, below the target.
+  ASSERT_EQ(loop.progress.size(), RomeoDofs().size());
+  for (const auto& p : loop.progress) {
+    EXPECT_TRUE(p.converged) << model::DofName(p.dof) << " " << p.worst;
+    for (const auto& q : p.interest) {
+      EXPECT_TRUE(q.estimated) << q.name;
+      EXPECT_LE(q.percent, kTarget) << model::DofName(p.dof) << " " << q.name;
+    }
+  }
+  // The seed's procedure with its own estimators leaves at least one parameter of interest
+  // above 5% (on seed 1: heave η pulling up near 20%, seed 000 Table II reports 4.1% from the
+  // real heave data; the virtual one has only 2 m of depth and short legs).
+  int above = 0;
+  std::string worst;
+  for (const auto& p : paper.progress) {
+    for (const auto& q : p.interest) {
+      if (!(q.percent <= kTarget)) {
+        ++above;
+        worst += std::string(model::DofName(p.dof)) + " " + q.name + " " +
+                 std::to_string(q.percent) + "%; ";
+      }
+    }
+  }
+  EXPECT_GE(above, 1) << "the seed procedure met the target everywhere";
+  // The loop needs no more pool time (trial durations + 60 s pauses, same accounting).
+  EXPECT_LE(loop.pool_time, paper.pool_time)
+      << "loop " << loop.pool_time << " s, seed procedure " << paper.pool_time << " s (" << worst
+      << ")";
+  // And per DOF too.
+  for (Dof dof : RomeoDofs()) {
+    ASSERT_TRUE(loop.dof_pool_time.count(dof));
+    ASSERT_TRUE(paper.dof_pool_time.count(dof));
+    EXPECT_LE(loop.dof_pool_time.at(dof), paper.dof_pool_time.at(dof)) << model::DofName(dof);
+  }
+}
+
+TEST(DesignLoopTest, LoopEstimatesAgreeWithTheTruth) {
+  const LoopResult& loop = RomeoLoop();
+  const model::Truth truth = RomeoTruth();
+  for (const auto& p : loop.progress) {
+    for (const auto& q : p.interest) {
+      ASSERT_TRUE(q.estimated) << q.name;
+      const double v = ident::TrueParameter(truth, p.dof, q.name);
+      // 4σ: 16 parameters, a Gaussian error beyond 4σ has probability 6e-5 each; the σ are
+      // the identification's (checked against Monte Carlo by the ident tests). A diverged fit
+      // or a design that confounds η with m would show here as many σ off.
+      EXPECT_LE(std::abs(q.value - v), 4.0 * q.sigma)
+          << model::DofName(p.dof) << " " << q.name << " = " << q.value << " ± " << q.sigma
+          << ", true " << v;
+    }
+  }
+}
+
+TEST(DesignLoopTest, DragOfInterestFollowsSignificance) {
+  // Yaw's true kq is 0 (Table III, low speed): its drag of interest is k. Surge and heave have
+  // a significant kq (Tables II, IV): kq.
+  const LoopResult& loop = RomeoLoop();
+  const DofProgress* yaw = Find(loop.progress, Dof::kYaw);
+  const DofProgress* surge = Find(loop.progress, Dof::kSurge);
+  const DofProgress* heave = Find(loop.progress, Dof::kHeave);
+  ASSERT_TRUE(yaw && surge && heave);
+  EXPECT_EQ(yaw->interest[1].name, "k");
+  EXPECT_EQ(surge->interest[1].name, "kq");
+  EXPECT_EQ(heave->interest[1].name, "kq");
+  // Every installation coefficient of the DOF's mappings is of interest (Table I directions
+  // that are not open water): surge 4, heave 1, yaw 4.
+  EXPECT_EQ(surge->interest.size(), 2u + 4u);
+  EXPECT_EQ(heave->interest.size(), 2u + 1u);
+  EXPECT_EQ(yaw->interest.size(), 2u + 4u);
+}
+
+TEST(DesignLoopTest, PoolTimeIsDurationsPlusPauses) {
+  const LoopResult& loop = RomeoLoop();
+  ASSERT_FALSE(loop.iterations.empty());
+  const double pause = PlannerOptions{}.pause_s;
+  double t = 0.0;
+  for (std::size_t i = 0; i < loop.iterations.size(); ++i) {
+    const auto& it = loop.iterations[i];
+    EXPECT_DOUBLE_EQ(it.start, i == 0 ? 0.0 : t + pause);
+    t = it.start + it.trial.design.duration;
+    EXPECT_DOUBLE_EQ(it.pool_time, t);
+    EXPECT_EQ(it.index, static_cast<int>(i));
+  }
+  EXPECT_DOUBLE_EQ(loop.pool_time, t);
+  // Trial ids are unique: they name the trials' log files.
+  std::set<std::string> ids;
+  for (const auto& it : loop.iterations) EXPECT_TRUE(ids.insert(it.trial.design.id).second);
+}
+
+TEST(DesignLoopTest, SeedOrderFirstThenSequentialDesign) {
+  // Each DOF starts with a trial of its a priori schedule (seed 000 §III: steady runs first);
+  // at least one later trial is designed from the estimates.
+  const LoopResult& loop = RomeoLoop();
+  std::set<Dof> seen;
+  int sequential = 0;
+  for (const auto& it : loop.iterations) {
+    if (seen.insert(it.dof).second) EXPECT_EQ(it.source, "a priori schedule") << it.trial.design.id;
+    if (it.source == "sequential design") ++sequential;
+  }
+  EXPECT_GE(sequential, 1);
+}
+
+TEST(DesignLoopTest, DeterministicForASeed) {
+  LoopOptions o;
+  o.step.dofs = {Dof::kSurge};
+  o.seed = 7;
+  const model::Truth truth = RomeoTruth();
+  const LoopResult a = RunLoop(truth, RomeoPool(), o);
+  const LoopResult b = RunLoop(truth, RomeoPool(), o);
+  ASSERT_EQ(a.iterations.size(), b.iterations.size());
+  for (std::size_t i = 0; i < a.iterations.size(); ++i) {
+    EXPECT_EQ(a.iterations[i].trial.design.id, b.iterations[i].trial.design.id);
+    const auto& pa = a.iterations[i].params.at(Dof::kSurge);
+    const auto& pb = b.iterations[i].params.at(Dof::kSurge);
+    ASSERT_EQ(pa.size(), pb.size());
+    for (std::size_t j = 0; j < pa.size(); ++j) {
+      EXPECT_EQ(pa[j].value, pb[j].value) << pa[j].name;  // bit for bit
+    }
+  }
+  // Another seed draws other noise: the first estimates differ.
+  o.seed = 8;
+  const LoopResult c = RunLoop(truth, RomeoPool(), o);
+  ASSERT_FALSE(c.iterations.empty());
+  EXPECT_NE(c.iterations[0].params.at(Dof::kSurge)[0].value,
+            a.iterations[0].params.at(Dof::kSurge)[0].value);
+}
+
+TEST(DesignLoopTest, BudgetSpentIsReported) {
+  LoopOptions o;
+  o.step.dofs = {Dof::kSurge};
+  o.budget = 2;  // surge needs at least 4 trials: every η needs its mapping and direction
+  const LoopResult r = RunLoop(RomeoTruth(), RomeoPool(), o);
+  EXPECT_EQ(r.status, LoopStatus::kBudgetSpent);
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.iterations.size(), 2u);
+  EXPECT_NE(r.message.find("budget"), std::string::npos) << r.message;
+}
+
+TEST(DesignLoopTest, NextOnAnEmptyCampaignStartsWithAnOpenWaterRun) {
+  model::Campaign c;
+  c.path = "<memory>";
+  c.vehicle = testing::Romeo();
+  DesignLoopOptions o;
+  o.dofs = {Dof::kSurge};
+  const NextStepResult r = NextStep(c, RomeoPool(), o);
+  ASSERT_EQ(r.status, NextStatus::kTrial) << r.message;
+  EXPECT_EQ(r.dof, Dof::kSurge);
+  EXPECT_EQ(r.source, "a priori schedule");
+  ASSERT_EQ(r.progress.size(), 1u);
+  EXPECT_TRUE(std::isinf(r.progress[0].worst_percent));
+  // Seed 000 §II-A: η must be known for one mapping — the first run pushes forward in
+  // surge-front or backward in surge-rear (Table I's open-water directions).
+  const model::TrialDesign& d = r.trial.design;
+  bool open_water = false;
+  auto check = [&](const std::string& m, double f) {
+    open_water |= (m == "surge-front" && f > 0) || (m == "surge-rear" && f < 0);
+  };
+  if (d.kind == model::TrialKind::kSegments) {
+    for (const auto& s : d.segments) check(s.mapping.empty() ? d.mapping : s.mapping, s.force);
+  } else {
+    check(d.mapping, d.kind == model::TrialKind::kSine ? d.offset : d.force);
+  }
+  EXPECT_TRUE(open_water) << d.id;
+}
+
+TEST(DesignLoopTest, NextAfterConvergenceAsksForNothing) {
+  const LoopResult& loop = RomeoLoop();
+  DesignLoopOptions o;
+  o.dofs = RomeoDofs();
+  const NextStepResult r = NextStep(loop.campaign, RomeoPool(), o);
+  // NextStep identifies the whole campaign at once; the loop identified DOF by DOF: the same
+  // estimates, so the same verdict.
+  EXPECT_EQ(r.status, NextStatus::kConverged) << r.message;
+}
+
+TEST(PaperProcedureTest, EncodesSeedSectionIVD) {
+  const model::Vehicle v = testing::Romeo();
+  const model::Pool pool = RomeoPool();
+  PaperProcedureOptions o;
+  std::vector<std::string> notes;
+  // Surge: steady legs in all six mapping directions, then the 35 + 25 sin(2π t / 26 s) sine
+  // in surge-front (§IV-D).
+  const auto surge = PaperProcedureDesigns(v, pool, Dof::kSurge, o, &notes);
+  ASSERT_FALSE(surge.empty());
+  std::set<std::pair<std::string, int>> directions;
+  for (const auto& d : surge) {
+    if (d.kind == model::TrialKind::kSteady) directions.insert({d.mapping, d.force > 0 ? 1 : -1});
+    for (const auto& s : d.segments) directions.insert({s.mapping, s.force > 0 ? 1 : -1});
+  }
+  EXPECT_EQ(directions.size(), 6u);
+  const auto& sine = surge.back();
+  ASSERT_EQ(sine.kind, model::TrialKind::kSine);
+  EXPECT_EQ(sine.mapping, "surge-front");
+  EXPECT_DOUBLE_EQ(sine.offset, 35.0);
+  EXPECT_DOUBLE_EQ(sine.amplitude, 25.0);
+  EXPECT_NEAR(2 * M_PI / sine.omega, 26.0, 1e-12);
+  // "a couple of sinusoidal periods in a maneuvering space of about 20 m"
+  EXPECT_GE(sine.duration * sine.omega / (2 * M_PI), 2.0);
+  // Heave: five experiments with 0..4 ballast steps, up and down legs, no sine.
+  const auto heave = PaperProcedureDesigns(v, pool, Dof::kHeave, o, &notes);
+  std::set<int> ballast;
+  for (const auto& d : heave) {
+    EXPECT_NE(d.kind, model::TrialKind::kSine);
+    ballast.insert(d.ballast_steps);
+  }
+  EXPECT_EQ(ballast, (std::set<int>{0, 1, 2, 3, 4}));
+  // Yaw: -5 + 4 sin(2π t / 24 s) with the front-right/rear-left thrusters (open water
+  // counter-clockwise), steady yaw rates within ±20 °/s.
+  const auto yaw = PaperProcedureDesigns(v, pool, Dof::kYaw, o, &notes);
+  ASSERT_FALSE(yaw.empty());
+  EXPECT_EQ(yaw.back().mapping, "yaw-fr-rl");
+  EXPECT_DOUBLE_EQ(yaw.back().offset, -5.0);
+  EXPECT_DOUBLE_EQ(yaw.back().amplitude, 4.0);
+  EXPECT_NEAR(2 * M_PI / yaw.back().omega, 24.0, 1e-12);
+  const double k = v.priors.at(Dof::kYaw).drag->k;
+  for (const auto& d : yaw) {
+    for (const auto& s : d.segments) {
+      // A priori steady rate φ/k within 20 °/s (linear a priori yaw drag, Table III), except
+      // where the thrusters' minimum force forces more.
+      EXPECT_LE(std::abs(s.force) / k, 20.0 * M_PI / 180 * (1 + 1e-9) + 5.1 / k);
+    }
+  }
+}
+
+// The command line: exit 1 when the budget runs out, 2 on bad input; JSON keys of the
+// contract. Skipped when the uuvplan binary has not been built with this test program.
+class LoopCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!std::filesystem::exists(UUVPLAN_BINARY)) GTEST_SKIP() << "uuvplan not built";
+  }
+  tool_test::TempDir dir_;
+};
+
+TEST_F(LoopCliTest, BudgetAndBadInputExitCodes) {
+  const std::string base = "loop --truth '" + RomeoPath("truth.yaml") + "' --pool '" +
+                           RomeoPath("pool.yaml") + "' --dof surge";
+  const auto spent = tool_test::RunTool(base + " --budget 1 --json '" + (dir_ / "l.json") + "'",
+                                        dir_);
+  EXPECT_EQ(spent.status, 1) << spent.err;
+  const auto j = nlohmann::json::parse(tool_test::ReadText(dir_ / "l.json"));
+  EXPECT_FALSE(j.at("converged").get<bool>());
+  ASSERT_EQ(j.at("iterations").size(), 1u);
+  EXPECT_TRUE(j["iterations"][0].at("trial").contains("kind"));
+  EXPECT_TRUE(j["iterations"][0].at("params").at("surge").at("m").contains("sigma"));
+  EXPECT_GT(j.at("pool_time").get<double>(), 0.0);
+  EXPECT_EQ(tool_test::RunTool(base + " --target -1", dir_).status, 2);
+  EXPECT_EQ(tool_test::RunTool(base + " --budget 0", dir_).status, 2);
+  const auto roll = tool_test::RunTool(base + " --dof roll", dir_);
+  EXPECT_EQ(roll.status, 2);
+  EXPECT_NE(roll.err.find("dofs.roll"), std::string::npos) << roll.err;
+}
+
+TEST_F(LoopCliTest, NextWritesEstimatesTrialAndPredicted) {
+  // An empty campaign of the ROMEO vehicle: the next trial is the first of seed 000's order.
+  const std::string campaign = dir_.Write(
+      "campaign.yaml", "vehicle: '" + RomeoPath("vehicle.yaml") + "'\ntrials: []\n");
+  const auto r = tool_test::RunTool("next '" + campaign + "' --pool '" + RomeoPath("pool.yaml") +
+                                        "' --dof yaw --json '" + (dir_ / "n.json") + "'",
+                                    dir_);
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  const auto j = nlohmann::json::parse(tool_test::ReadText(dir_ / "n.json"));
+  EXPECT_TRUE(j.contains("estimates"));
+  EXPECT_EQ(j.at("trial").at("dof"), "yaw");
+  EXPECT_TRUE(j.at("predicted").contains("yaw"));
+  // The trial can be run by `simulate --plan` (ReadScheduleJson reads a next result).
+  const auto sim = tool_test::RunTool("simulate --truth '" + RomeoPath("truth.yaml") +
+                                          "' --plan '" + (dir_ / "n.json") + "' --out '" +
+                                          (dir_ / "c") + "'",
+                                      dir_);
+  EXPECT_EQ(sim.status, 0) << sim.err;
+}
+
+}  // namespace
+}  // namespace uuvplan::planner
