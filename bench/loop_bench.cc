@@ -33,9 +33,8 @@ void PrintProgress(const char* who, const model::Truth& truth,
   for (const auto& p : progress) {
     const auto t = dof_time.find(p.dof);
     std::printf("  %-6s %-6s pool time %7.0f s, %2d trials, worst %s %.2f%%%s\n", who,
-                std::string(model::DofName(p.dof)).c_str(),
-                t == dof_time.end() ? 0.0 : t->second, p.trials, p.worst.c_str(),
-                p.worst_percent, p.converged ? " (target met)" : "");
+                std::string(model::DofName(p.dof)).c_str(), t == dof_time.end() ? 0.0 : t->second,
+                p.trials, p.worst.c_str(), p.worst_percent, p.converged ? " (target met)" : "");
     for (const auto& q : p.interest) {
       const double truev = ident::TrueParameter(truth, p.dof, q.name);
       std::printf("      %-28s %10.4g ± %-9.3g %7.2f%%   true %-8.4g error %+.2f%% (%.1fσ)\n",
@@ -120,7 +119,8 @@ int main(int argc, char** argv) {
       std::printf("  %-28s %-8s %-22s %6.1f s  logged travel [%.2f, %.2f], box [%.2f, %.2f]%s\n",
                   d.id.c_str(), std::string(model::TrialKindName(d.kind)).c_str(),
                   d.mapping.c_str(), d.duration, lo, hi, pr.trials[i].travel[0],
-                  pr.trials[i].travel[1], pr.checks[i].feasible ? "" : "  (planner check: infeasible)");
+                  pr.trials[i].travel[1],
+                  pr.checks[i].feasible ? "" : "  (planner check: infeasible)");
       if (verbose) {
         for (const auto& reason : pr.checks[i].reasons) std::printf("      %s\n", reason.c_str());
       }
@@ -160,16 +160,17 @@ int main(int argc, char** argv) {
         });
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("Loop: %s after %zu trials, pool time %.0f s (%.1f s wall, worst iteration "
-                "%.1f s)\n  %s\n",
-                std::string(planner::LoopStatusName(lr.status)).c_str(), lr.iterations.size(),
-                lr.pool_time, wall, worst_wall, lr.message.c_str());
+    std::printf(
+        "Loop: %s after %zu trials, pool time %.0f s (%.1f s wall, worst iteration "
+        "%.1f s)\n  %s\n",
+        std::string(planner::LoopStatusName(lr.status)).c_str(), lr.iterations.size(), lr.pool_time,
+        wall, worst_wall, lr.message.c_str());
     PrintProgress("loop", truth, lr.progress, lr.dof_pool_time);
     loop_time = lr.pool_time;
   }
   if (run_paper && run_loop) {
-    std::printf("Pool time: loop %.0f s, seed 000 procedure %.0f s (loop/paper %.2f)\n",
-                loop_time, paper_time, loop_time / paper_time);
+    std::printf("Pool time: loop %.0f s, seed 000 procedure %.0f s (loop/paper %.2f)\n", loop_time,
+                paper_time, loop_time / paper_time);
   }
   return 0;
 }

@@ -3,12 +3,13 @@
 // The target case is the virtual pool's: commands held at the controller rate (20 Hz) and the
 // coupling's yaw rate held from its 10 Hz log, as a real trial is run and logged. A continuous
 // sine input and yaw rate (libm sin at every RK4 stage) is reported beside it.
-// Run: build/bench/simulate_bench [repetitions]
+// Run: build/bench/simulate_bench [repetitions] [state]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/simulator.h"
@@ -53,6 +54,7 @@ double BestMs(int reps, F&& f) {
 
 int main(int argc, char** argv) {
   const int reps = argc > 1 ? std::atoi(argv[1]) : 20;
+  const bool state_only = argc > 2 && std::string(argv[2]) == "state";  // for profiling
   Vehicle v;
   v.name = "bench";
   v.mass = 450;
@@ -93,6 +95,10 @@ int main(int argc, char** argv) {
 
   double sink = 0.0;
   const double ms = BestMs(reps, [&] { sink += SimulateMeasured(model, theta, c, times, o).x(100, 1); });
+  if (state_only) {
+    std::printf("simulate: held 20 Hz commands, state only  best of %d: %.2f ms\n", reps, ms);
+    return sink == 12345.0;
+  }
   const double ms_sine =
       BestMs(reps, [&] { sink += SimulateMeasured(model, theta, c_sine, times, o).x(100, 1); });
   o.sensitivities = true;

@@ -1,6 +1,7 @@
 #include "uuvplan/ident/identify.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -153,6 +154,13 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
       r.validate_trials.push_back(d.index);
     }
   }
+  for (const TrialData& d : all) {
+    if (d.dof != dof) continue;
+    for (const std::string& c : d.unusable_columns) {
+      r.warnings.push_back(d.name + ": column " + c + " has no usable value (all NaN?): the " +
+                           "trial is identified from its other measurement only");
+    }
+  }
   if (fit.empty()) {
     r.status = IdentifyStatus::kFailed;
     r.message = "no fit trial for " + std::string(model::DofName(dof)) +
@@ -184,6 +192,11 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
   r.closed_loop_suspected = o.closed_loop == ClosedLoop::kYes ||
                             (o.closed_loop == ClosedLoop::kAuto && 2 * rough > static_cast<int>(fit.size()));
 
+  using Clock = std::chrono::steady_clock;
+  auto seconds_since = [](Clock::time_point a) {
+    return std::chrono::duration<double>(Clock::now() - a).count();
+  };
+  auto stage = Clock::now();
   // 2. Steady state (seed 000 eqs. 7–12, 20).
   int long_pieces = 0;
   for (const TrialData* d : fit) {
@@ -256,6 +269,8 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
                       " s (the speed did not settle within the noise; make the legs longer)");
   }
 
+  r.timing["steady_state+integral"] = seconds_since(stage);
+  stage = Clock::now();
   // 3a. One-step integral LS (seeds 002/004) on every regressor-linear parameter not dropped.
   std::vector<int> free_ls;
   for (int j : LinearParameters(model)) {
@@ -302,14 +317,22 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
                          "); the output-error fit starts from the a priori values");
   }
 
+  r.timing["one_step_ls"] = seconds_since(stage);
+  stage = Clock::now();
   // 4. Output error, from the least-squares answer.
   Eigen::VectorXd theta = theta_ls;
   Eigen::MatrixXd cov = cov_ls;
   std::vector<ParameterState> state = state_ls;
   if (o.refine) {
+    // Parameters the least squares dropped as insignificant are free again here: significance
+    // is a property of an estimator's own covariance, and the output error's is much smaller
+    // (integrated positions make a small bias, invisible to the steady speeds, highly
+    // significant). The output error re-tests them with its own σ (51.02%, seed 000 §IV-D)
+    // and drops them again only if they are still insignificant.
     std::vector<ParameterState> s0(np, ParameterState::kEstimated);
+    std::vector<std::string> reinstated;
     for (int j = 0; j < np; ++j) {
-      if (state_ls[j] == ParameterState::kDropped) s0[j] = ParameterState::kDropped;
+      if (state_ls[j] == ParameterState::kDropped) reinstated.push_back(r.parameter_names[j]);
       if (not_excited.count(r.parameter_names[j])) s0[j] = ParameterState::kFixed;
     }
     Eigen::VectorXd start = theta_ls;
@@ -340,7 +363,7 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
     if (suspicious(oe)) {
       Eigen::VectorXd alt = prior;
       for (int j = 0; j < np; ++j) {
-        if (s0[j] == ParameterState::kDropped) alt[j] = 0.0;
+        if (state_ls[j] == ParameterState::kDropped) alt[j] = 0.0;
       }
       OutputErrorResult retry = OutputErrorFit(model, fit, alt, s0, oo);
       if (retry.ok() && (!oe.ok() || retry.cost < oe.cost)) {
@@ -360,25 +383,57 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
         }
       }
       if (!fixed.empty()) {
+        oe = OutputErrorFit(model, fit, start, s0, oo);
+        // The other estimates are conditional on the held values: were those wrong (a priori
+        // guesses), the rest absorb the difference with a σ that does not show it (ROMEO heave
+        // with W and η held at 0 and 1: kq twice its true value at "±4%"). They are reported
+        // but marked unreliable.
+        std::vector<std::string> conditional;
+        for (int j = 0; j < np; ++j) {
+          if (oe.state[j] == ParameterState::kEstimated) {
+            conditional.push_back(r.parameter_names[j]);
+            r.unreliable.push_back(r.parameter_names[j]);
+          }
+        }
         r.warnings.push_back("output error: not identifiable from these trials (held at their "
                              "least-squares/a priori values): " + Join(fixed) +
                              " (condition number " + Fmt(oe.condition_number, 3) +
-                             "; excite them, e.g. with forces of both signs on every mapping)");
-        oe = OutputErrorFit(model, fit, start, s0, oo);
+                             "; excite them, e.g. with forces of both signs on every mapping); "
+                             "the other estimates (" + Join(conditional) +
+                             ") are conditional on the held values and their σ does not include "
+                             "that: NOT reliable");
       }
     }
     for (const auto& n : oe.notes) r.notes.push_back("output error: " + n);
-    if (oe.ok()) {
+    // The refinement is reported only when Levenberg–Marquardt converged to an admissible
+    // minimum. Otherwise (iteration limit, failed simulation, singular information) its
+    // numbers are not an estimate: the least-squares answer is reported instead, with a
+    // warning — or, when there is no least-squares answer, the output error's with a warning.
+    const bool have_ls = r.estimator != FinalEstimator::kNone;
+    const bool converged = oe.status == OutputErrorStatus::kConverged;
+    if (converged || (!have_ls && oe.ok())) {
       theta = oe.theta;
       cov = oe.covariance;
       state = oe.state;
       r.estimator = FinalEstimator::kOutputError;
-      if (oe.status == OutputErrorStatus::kMaxIterations) {
+      if (!converged) {
         r.warnings.push_back("output error stopped at the iteration limit (" +
-                             std::to_string(oe.iterations) + ")");
+                             std::to_string(oe.iterations) +
+                             ") without converging and there is no least-squares answer to "
+                             "fall back to: its estimates are reported but may not be a minimum");
+      }
+      for (const std::string& n : reinstated) {
+        const int j = model.ParameterIndex(n);
+        if (state[j] == ParameterState::kEstimated) {
+          r.notes.push_back(n + " (dropped as insignificant by the least squares) is significant "
+                            "for the output error: " + Fmt(theta[j]) + " ± " +
+                            Fmt(std::sqrt(cov(j, j))) + " (its own covariance)");
+        }
       }
     } else {
-      r.warnings.push_back(oe.message + "; the least-squares estimates are reported");
+      r.warnings.push_back(oe.message + " — the output-error refinement did not converge; the "
+                           "least-squares estimates (" +
+                           std::string(FinalEstimatorName(r.estimator)) + ") are reported");
     }
     r.output_error = std::move(oe);
   }
@@ -427,6 +482,8 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
     r.message = "no estimate";
   }
 
+  r.timing["output_error"] = seconds_since(stage);
+  stage = Clock::now();
   // 5. Validation on every trial of the DOF.
   if (r.estimator != FinalEstimator::kNone) {
     std::vector<TrialFit> fits;
@@ -445,10 +502,11 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
       r.warnings.push_back("the identified model does not explain the measurements to their noise "
                            "level (output-error residuals strongly correlated, lag-1 " +
                            Fmt(r.output_error->residual_lag1, 3) +
-                           "): model error; σ are from a Newey–West sandwich and describe the "
-                           "fit of this model, not the truth (try `uuvplan diagnose`)");
+                           "): model error; σ are autocorrelation-robust and describe the fit "
+                           "of this model, not the truth (try `uuvplan diagnose`)");
     }
   }
+  r.timing["validation"] = seconds_since(stage);
   if (r.status != IdentifyStatus::kFailed) {
     r.status = r.warnings.empty() ? IdentifyStatus::kOk : IdentifyStatus::kWarnings;
     r.message = "estimated by " + std::string(FinalEstimatorName(r.estimator));

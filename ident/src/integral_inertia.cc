@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "uuvplan/ident/regression.h"
@@ -44,6 +45,14 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
   };
   std::vector<Run> runs;
   int sg_window = 21;
+  // Rows: the usable samples, thinned to at most kMaxRows in all (the integrals between kept
+  // samples still follow every sample of the filtered velocity; only the equations thin out).
+  constexpr std::size_t kMaxRows = 20000;
+  std::size_t usable = 0;
+  for (const TrialData* trial : trials) {
+    for (const auto& [begin, end] : SmoothRuns(*trial)) usable += end - begin;
+  }
+  const std::size_t stride = std::max<std::size_t>(1, (usable + kMaxRows - 1) / kMaxRows);
   for (const TrialData* trial : trials) {
     const SmoothedSignal& v = trial->velocity_estimate;
     sg_window = trial->sg_window;
@@ -53,7 +62,7 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
       Run run;
       run.trial = trial->index;
       run.noise_var = input_sigma > 0 ? std::pow(gain * input_sigma, 2) : 0.0;
-      for (std::size_t i = begin; i < end; ++i) {
+      for (std::size_t i = begin; i < end; i += stride) {
         run.t.push_back(v.t[i]);
         run.xi.push_back(v.value[i]);
       }
@@ -69,17 +78,47 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
       runs.push_back(std::move(run));
     }
   }
-  int n = 0;
+  int total = 0;
   std::vector<int> trial_ids;
   for (const Run& run : runs) {
-    n += static_cast<int>(run.t.size());
+    total += static_cast<int>(run.t.size());
     if (std::find(trial_ids.begin(), trial_ids.end(), run.trial) == trial_ids.end()) {
       trial_ids.push_back(run.trial);
     }
   }
   // Unknowns: m, c of each run, b of each trial (the constant force is common to a trial).
+  // Each row has three non-zeros: H_i = ξ_i·e_0 − e_{c(run)} − (t_i − t_s)·e_{b(trial)}.
   const int R = static_cast<int>(runs.size());
   const int p = 1 + R + static_cast<int>(trial_ids.size());
+  struct Row {
+    double xi, dt, y, noise_var;
+    int c, b, group;
+    std::vector<double> yk;  // cumulative integrals of the known parameters' regressors
+  };
+  std::vector<Row> rows;
+  rows.reserve(total);
+  for (int q = 0; q < R; ++q) {
+    const Run& run = runs[q];
+    const int tb = 1 + R + static_cast<int>(std::find(trial_ids.begin(), trial_ids.end(), run.trial) - trial_ids.begin());
+    for (std::size_t s = 0; s < run.t.size(); ++s) {
+      Row row;
+      row.yk.resize(known.size());
+      double yk = run.Y0[s];
+      for (std::size_t c = 0; c < known.size(); ++c) {
+        row.yk[c] = run.Y(s, known[c]);
+        yk += theta_known[known[c]] * run.Y(s, known[c]);
+      }
+      row.y = yk;
+      row.xi = run.xi[s];
+      row.dt = run.t[s] - run.t[0];
+      row.noise_var = run.noise_var;
+      row.c = 1 + q;
+      row.b = tb;
+      row.group = q;
+      rows.push_back(std::move(row));
+    }
+  }
+  const int n = static_cast<int>(rows.size());
   r.num_samples = n;
   if (runs.empty() || n < p + 2) {
     r.status = FitStatus::kTooFewData;
@@ -87,87 +126,90 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
                 "command steps";
     return r;
   }
-  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(n, p);
-  Eigen::VectorXd y(n);
-  Eigen::VectorXd noise_var(n);  // variance of the filtered-velocity noise in H(:, 0)
-  std::vector<int> groups(n);
-  Eigen::MatrixXd Yk(n, static_cast<int>(known.size()));
-  int row = 0;
-  for (int q = 0; q < R; ++q) {
-    const Run& run = runs[q];
-    const int tb = 1 + R + static_cast<int>(std::find(trial_ids.begin(), trial_ids.end(), run.trial) - trial_ids.begin());
-    for (std::size_t s = 0; s < run.t.size(); ++s) {
-      double yk = run.Y0[s];
-      for (std::size_t c = 0; c < known.size(); ++c) {
-        Yk(row, c) = run.Y(s, known[c]);
-        yk += theta_known[known[c]] * run.Y(s, known[c]);
-      }
-      y[row] = yk;
-      H(row, 0) = run.xi[s];                 // m      (eq. 18)
-      H(row, 1 + q) = -1.0;                  // c = m·ξ_s + k·χ_s of the run
-      H(row, tb) = -(run.t[s] - run.t[0]);   // b
-      noise_var[row] = run.noise_var;
-      groups[row] = q;
-      ++row;
+  auto row_dot = [](const Row& w, const Eigen::VectorXd& v) {
+    return w.xi * v[0] - v[w.c] - w.dt * v[w.b];
+  };
+  // Normal equations N = HᵀH, Hᵀy accumulated from the sparse rows.
+  Eigen::MatrixXd N = Eigen::MatrixXd::Zero(p, p);
+  Eigen::VectorXd hty = Eigen::VectorXd::Zero(p);
+  double noise_sum = 0.0;
+  for (const Row& w : rows) {
+    const int idx[3] = {0, w.c, w.b};
+    const double val[3] = {w.xi, -1.0, -w.dt};
+    for (int a1 = 0; a1 < 3; ++a1) {
+      hty[idx[a1]] += val[a1] * w.y;
+      for (int b1 = 0; b1 < 3; ++b1) N(idx[a1], idx[b1]) += val[a1] * val[b1];
     }
+    noise_sum += w.noise_var;
   }
-  LeastSquaresOptions lso;
-  lso.covariance = CovarianceKind::kResidual;  // eqs. 11–12
-  lso.max_condition = o.max_condition;
-  const LinearFit fit = SolveLeastSquares(H, y, nullptr, lso);
-  r.condition_number = fit.condition_number;
-  if (fit.status != FitStatus::kOk) {
-    r.status = fit.status;
-    r.message = "integral method: " + fit.message +
-                (fit.status == FitStatus::kIllConditioned
-                     ? " — the velocity does not vary enough apart from a constant and a trend "
-                       "(excite the DOF dynamically, e.g. a sine at the d-optimal frequency, seed 000 eq. 14)"
-                     : "");
+  // Condition number of the column-scaled problem.
+  {
+    const Eigen::VectorXd d = N.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+    const Eigen::MatrixXd Ns = d.asDiagonal() * N * d.asDiagonal();
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Ns);
+    const double lo = std::max(es.eigenvalues().minCoeff(), 0.0), hi = es.eigenvalues().maxCoeff();
+    r.condition_number = lo > 0 ? std::sqrt(hi / lo) : std::numeric_limits<double>::infinity();
+  }
+  if (!(r.condition_number < o.max_condition)) {
+    r.status = FitStatus::kIllConditioned;
+    std::ostringstream os;
+    os.precision(3);
+    os << "integral method: ill-conditioned regression (condition number " << r.condition_number
+       << ") — the velocity does not vary enough apart from a constant and a trend (excite the "
+          "DOF dynamically, e.g. a sine at the d-optimal frequency, seed 000 eq. 14)";
+    r.message = os.str();
     return r;
   }
-  r.sigma_eq11 = std::sqrt(fit.covariance(0, 0));
   // Errors in variables: ξ̃ in H carries the filter's noise, E[HᵀH] = HᵀH(true) + Σ var(e_i)
   // in the (m, m) entry, which biases m low. Corrected least squares removes it:
   //   θ = (HᵀH − Σ_i var(e_i)·e₀e₀ᵀ)⁻¹ Hᵀy.
-  Eigen::MatrixXd N = H.transpose() * H;
-  if (o.errors_in_variables) N(0, 0) -= noise_var.sum();
-  Eigen::LDLT<Eigen::MatrixXd> ldlt(N);
+  Eigen::MatrixXd Nc = N;
+  if (o.errors_in_variables) Nc(0, 0) -= noise_sum;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt(Nc);
   if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().minCoeff() > 0)) {
     r.status = FitStatus::kIllConditioned;
     r.message = "integral method: the velocity varies less than its noise (errors in variables "
                 "dominate); excite the DOF more or use a longer filter window";
     return r;
   }
-  const Eigen::VectorXd est = ldlt.solve(H.transpose() * y);
-  const Eigen::VectorXd res = y - H * est;
+  const Eigen::VectorXd est = ldlt.solve(hty);
   r.m = est[0];
-  // Sandwich covariance of the corrected estimating equations Σ_i [h_i r_i + var(e_i)·θ_m·e₀]
-  // with Newey–West lags spanning `newey_west_windows` filter windows.
-  const int lags = std::max(1, static_cast<int>(std::lround(o.newey_west_windows * sg_window)));
-  Eigen::MatrixXd G(n, p);
+  const Eigen::VectorXd a0 = ldlt.solve(Eigen::VectorXd::Unit(p, 0));  // row 0 of Nc⁻¹
+  // Residuals, the eq. 11–12 σ, and the influence ψ_i = e₀ᵀNc⁻¹(h_i r_i + var(e_i)·m·e₀) of
+  // each row on m, whose Newey–West sum (lags spanning `newey_west_windows` filter windows,
+  // within runs) is the variance of m.
+  std::vector<double> psi(n);
+  double rss = 0.0;
   for (int i = 0; i < n; ++i) {
-    G.row(i) = H.row(i) * res[i];
-    if (o.errors_in_variables) G(i, 0) += noise_var[i] * r.m;
+    const Row& w = rows[i];
+    const double res = w.y - row_dot(w, est);
+    rss += res * res;
+    psi[i] = row_dot(w, a0) * res + (o.errors_in_variables ? a0[0] * w.noise_var * r.m : 0.0);
   }
-  Eigen::MatrixXd S = G.transpose() * G;
+  const Eigen::VectorXd a0_plain = N.ldlt().solve(Eigen::VectorXd::Unit(p, 0));
+  r.sigma_eq11 = std::sqrt(std::max(0.0, rss / std::max(1, n - p) * a0_plain[0]));
+  const int lags = std::max(1, static_cast<int>(std::lround(o.newey_west_windows * sg_window /
+                                                             static_cast<double>(stride))));
+  double var_hac = 0.0;
+  for (int i = 0; i < n; ++i) var_hac += psi[i] * psi[i];
   for (int l = 1; l <= lags; ++l) {
     const double kappa = 1.0 - static_cast<double>(l) / (lags + 1);
-    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(p, p);
+    double c = 0.0;
     for (int i = l; i < n; ++i) {
-      if (groups[i] != groups[i - l]) continue;
-      C.noalias() += G.row(i).transpose() * G.row(i - l);
+      if (rows[i].group == rows[i - l].group) c += psi[i] * psi[i - l];
     }
-    S += kappa * (C + C.transpose());
+    var_hac += 2.0 * kappa * c;
   }
-  const Eigen::MatrixXd Ninv = ldlt.solve(Eigen::MatrixXd::Identity(p, p));
-  const Eigen::MatrixXd hac = static_cast<double>(n) / std::max(1, n - p) * Ninv * S * Ninv;
-  r.sigma_hac = std::sqrt(std::max(0.0, hac(0, 0)));
-  // ∂m̂/∂θ_j = e_0ᵀ N⁻¹ Hᵀ Y_j (m̂ is linear in the known parameters through y).
+  var_hac *= static_cast<double>(n) / std::max(1, n - p);
+  r.sigma_hac = std::sqrt(std::max(0.0, var_hac));
+  // ∂m̂/∂θ_j = e₀ᵀ Nc⁻¹ Hᵀ Y_j (m̂ is linear in the known parameters through y).
   double var_known = 0.0;
   if (o.propagate_known_uncertainty && known_cov && !known.empty()) {
-    const Eigen::VectorXd g = H * Ninv.col(0);
-    Eigen::VectorXd J(known.size());
-    for (std::size_t c = 0; c < known.size(); ++c) J[c] = g.dot(Yk.col(c));
+    Eigen::VectorXd J = Eigen::VectorXd::Zero(known.size());
+    for (const Row& w : rows) {
+      const double g = row_dot(w, a0);
+      for (std::size_t c = 0; c < known.size(); ++c) J[c] += g * w.yk[c];
+    }
     Eigen::MatrixXd Sk(known.size(), known.size());
     for (std::size_t a1 = 0; a1 < known.size(); ++a1) {
       for (std::size_t b1 = 0; b1 < known.size(); ++b1) Sk(a1, b1) = (*known_cov)(known[a1], known[b1]);

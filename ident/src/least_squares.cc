@@ -99,13 +99,99 @@ Eigen::MatrixXd Ma1Covariance(const Eigen::MatrixXd& H, const Eigen::MatrixXd& Z
     ++pairs;
     C.noalias() += Z.row(i).transpose() * Z.row(i - 1);
   }
-  g1 = pairs > 0 ? g1 / n : 0.0;
+  // Mean over the pairs that exist (n − number of groups): dividing by n would shrink γ1
+  // towards 0 by the share of group boundaries and overstate σ for short runs.
+  g1 = pairs > 0 ? g1 / pairs : 0.0;
   g1 = std::clamp(g1, -0.5 * g0, 0.5 * g0);
   const double dof = n > p ? static_cast<double>(n) / (n - p) : 1.0;
   const Eigen::MatrixXd ZOZ = dof * (g0 * (Z.transpose() * Z) + g1 * (C + C.transpose()));
   const Eigen::MatrixXd A = Z.transpose() * H;
   const Eigen::MatrixXd Ainv = A.fullPivLu().inverse();
   return Ainv * ZOZ * Ainv.transpose();
+}
+
+Eigen::MatrixXd Ma1HacCovariance(const Eigen::MatrixXd& H, const Eigen::MatrixXd& Z,
+                                 const Eigen::VectorXd& r, const std::vector<int>& groups) {
+  const Eigen::Index n = H.rows(), p = H.cols();
+  const Eigen::MatrixXd A = Z.transpose() * H;
+  const Eigen::MatrixXd Ainv = A.fullPivLu().inverse();
+  // Leverages of the (IV) hat matrix P = H·A⁻¹·Zᵀ (r = (I − P)·e): E[r_i²] ≈ (1 − h_ii)·σ_i²,
+  // so each residual is scaled by 1/√(1 − h_ii) (HC2, MacKinnon & White 1985) — without it the
+  // sandwich is biased low by ~p/n, most where rows are few and influential.
+  Eigen::VectorXd u(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double h = H.row(i).dot(Ainv * Z.row(i).transpose());
+    u[i] = r[i] / std::sqrt(std::max(0.05, 1.0 - h));  // h < 0.95: guard a single dominant row
+  }
+  // Middle matrix: Σ_i z_i z_iᵀ u_i² + Σ_{adjacent pairs in a group} (z_i z_{i−1}ᵀ + z_{i−1} z_iᵀ)
+  // u_i u_{i−1} — each row's own variance and its own covariance with the neighbour it shares
+  // an endpoint with (truncated kernel, lag 1: exact for an MA(1)).
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(p, p);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    S.noalias() += (u[i] * u[i]) * Z.row(i).transpose() * Z.row(i);
+    if (i > 0 && groups[i] == groups[i - 1]) {
+      const Eigen::MatrixXd C = (u[i] * u[i - 1]) * Z.row(i).transpose() * Z.row(i - 1);
+      S += C + C.transpose();
+    }
+  }
+  // The truncated kernel need not be positive semi-definite in a sample: clip at zero.
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S);
+  S = es.eigenvectors() * es.eigenvalues().cwiseMax(0.0).asDiagonal() * es.eigenvectors().transpose();
+  return Ainv * S * Ainv.transpose();
+}
+
+Eigen::MatrixXd Ma1VarianceModelCovariance(const Eigen::MatrixXd& H, const Eigen::MatrixXd& Z,
+                                           const Eigen::VectorXd& r, const std::vector<int>& groups,
+                                           const Eigen::MatrixXd& features,
+                                           Eigen::VectorXd* variance_out) {
+  const Eigen::Index n = H.rows(), p = H.cols();
+  const Eigen::MatrixXd A = Z.transpose() * H;
+  const Eigen::MatrixXd Ainv = A.fullPivLu().inverse();
+  // 1. Leverage-corrected squared residuals (HC2): E[r_i²] ≈ (1 − h_ii)·σ_i², h_ii the diagonal
+  //    of the (IV) hat matrix H·A⁻¹·Zᵀ.
+  Eigen::VectorXd u(n), u2(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double h = H.row(i).dot(Ainv * Z.row(i).transpose());
+    u[i] = r[i] / std::sqrt(std::max(0.05, 1.0 - h));  // guard: a single row of leverage > 0.95
+    u2[i] = u[i] * u[i];
+  }
+  // 2. Variance model σ_i² = c·[1, x_i] (x_i: the row's features) fitted to ũ_i² by least
+  //    squares — a few pooled coefficients instead of one noisy ũ_i² per row (White's HC with
+  //    ~50 rows and 4 unknowns scatters σ by a factor 2 between repetitions). Collinear
+  //    features (e.g. equal rows) reduce to the homoscedastic mean through the truncated SVD.
+  const Eigen::Index q = 1 + features.cols();
+  Eigen::MatrixXd X(n, q);
+  X.col(0).setOnes();
+  if (q > 1) X.rightCols(q - 1) = features;
+  LeastSquaresOptions lo;
+  lo.max_condition = 1e6;
+  const LinearFit vf = SolveLeastSquares(X, u2, nullptr, lo);
+  const double mean_u2 = u2.mean();
+  Eigen::VectorXd v = Eigen::VectorXd::Constant(n, mean_u2);
+  if (vf.theta.size() == q && vf.theta.allFinite()) v = X * vf.theta;
+  // A fitted variance is never below 5% of the mean one (a linear model can cross zero at the
+  // edge of its data; 5% keeps every row's weight in the sandwich finite but small).
+  v = v.cwiseMax(0.05 * mean_u2);
+  // 3. Lag-1 correlation pooled over the adjacent pairs within groups, on the standardised
+  //    residuals, |ρ| <= 1/2 (the MA(1) bound that keeps Ω positive semi-definite for any run).
+  double num = 0.0, den = 0.0;
+  for (Eigen::Index i = 1; i < n; ++i) {
+    if (groups[i] != groups[i - 1]) continue;
+    num += u[i] * u[i - 1];
+    den += std::sqrt(v[i] * v[i - 1]);
+  }
+  const double rho = den > 0 ? std::clamp(num / den, -0.5, 0.5) : 0.0;
+  // 4. Sandwich A⁻¹·ZᵀΩZ·A⁻ᵀ, Ω_ii = v_i, Ω_{i,i−1} = ρ·√(v_i v_{i−1}) within groups.
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(p, p);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    S.noalias() += v[i] * Z.row(i).transpose() * Z.row(i);
+    if (i > 0 && groups[i] == groups[i - 1]) {
+      const Eigen::MatrixXd C = (rho * std::sqrt(v[i] * v[i - 1])) * Z.row(i).transpose() * Z.row(i - 1);
+      S += C + C.transpose();
+    }
+  }
+  if (variance_out) *variance_out = v;
+  return Ainv * S * Ainv.transpose();
 }
 
 LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,

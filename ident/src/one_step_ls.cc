@@ -5,6 +5,9 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <sstream>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
 
 #include "uuvplan/ident/regression.h"
 #include "uuvplan/model/effects.h"
@@ -243,10 +246,14 @@ std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofIn
         std::vector<double> grid;
         const double t_end = v.t.empty() ? 0.0 : v.t.back();
         for (double t = 0.0; t < t_end; t += o.simulation_step_s) grid.push_back(t);
-        for (double b : trial->input->Breakpoints()) {
+        for (double b : trial->breakpoints) {
           if (b < t_end) grid.push_back(b);
         }
-        for (double t : v.t) grid.push_back(std::max(0.0, t));
+        const double spacing = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
+        const bool dense = spacing <= o.simulation_step_s;
+        if (!dense) {
+          for (double t : v.t) grid.push_back(std::max(0.0, t));
+        }
         std::sort(grid.begin(), grid.end());
         grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
         model::SimulationOptions so;
@@ -261,19 +268,24 @@ std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofIn
         SmoothedSignal f, s2;
         f.t = grid;
         f.value.assign(tr.x.col(1).data(), tr.x.col(1).data() + tr.x.rows());
-        s2.t = v.t;
-        for (double t : v.t) {
-          const std::size_t i = std::lower_bound(grid.begin(), grid.end(), std::max(0.0, t)) - grid.begin();
-          const double x[3] = {tr.x(i, 0), tr.x(i, 1), model.num_states() > 2 ? tr.x(i, 2) : 0.0};
-          double dx[3];
-          model.Derivative(grid[i], x, trial->conditions(), theta_now.data(), dx);
-          s2.value.push_back(tr.x(i, 1));
-          s2.derivative.push_back(dx[1]);
-        }
         // Measured velocities are interpolated as the simulated samples are; velocities derived
         // from positions are smooth local polynomials whose error is the filter's, not the
-        // interpolation's: no correction for them.
-        if (trial->velocity_from_position) s2 = f;
+        // interpolation's; and samples denser than the fine grid leave no defect: no
+        // correction for those.
+        if (trial->velocity_from_position || dense) {
+          s2 = f;
+        } else {
+          s2.t = v.t;
+          std::size_t i = 0;
+          for (double t : v.t) {
+            while (i + 1 < grid.size() && grid[i] < std::max(0.0, t)) ++i;  // t is on the grid
+            const double x[3] = {tr.x(i, 0), tr.x(i, 1), model.num_states() > 2 ? tr.x(i, 2) : 0.0};
+            double dx[3];
+            model.Derivative(grid[i], x, trial->conditions(), theta_now.data(), dx);
+            s2.value.push_back(tr.x(i, 1));
+            s2.derivative.push_back(dx[1]);
+          }
+        }
         fine.push_back(std::move(f));
         sampled.push_back(std::move(s2));
       }
@@ -296,11 +308,54 @@ std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofIn
       // share their endpoints, and the integrals add white errors besides.
       const Eigen::VectorXd r = Yw - Fc * psi;
       const int nr = static_cast<int>(R.Y.size());
+      // Converged when no coefficient moved by more than 5% of its σ.
+      // Each row's sensitivity to a velocity error held over the row, A_k = (∂F_k/∂ξ)·ψ (central
+      // difference, exact for the quadratic terms): the integral of the filtered ξ̃'s error
+      // enters row k through A_k (VSOR: A_k = −∫(k + 2kq|ξ|)/m ds grows with the speed), the
+      // endpoint errors do not. Features [A_k, A_k²] of the variance model.
+      Eigen::VectorXd Ak = Eigen::VectorXd::Zero(nr);
+      {
+        double vmax = 0.0;
+        for (const TrialData* trial : dofs[d].trials) {
+          for (double x : trial->velocity_estimate.value) vmax = std::max(vmax, std::abs(x));
+        }
+        const double dv = 1e-3 * std::max(vmax, 1e-6);
+        std::vector<SmoothedSignal> plus, minus;
+        for (const TrialData* trial : dofs[d].trials) {
+          plus.push_back(trial->velocity_estimate);
+          minus.push_back(trial->velocity_estimate);
+          for (double& x : plus.back().value) x += dv;
+          for (double& x : minus.back().value) x -= dv;
+        }
+        const OneStepRows Fp = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, R.free, o, &plus);
+        const OneStepRows Fm = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, R.free, o, &minus);
+        if (Fp.F.rows() == nr && Fm.F.rows() == nr) {
+          Ak = sw.cwiseProduct((Fp.F - Fm.F) * psi) / (2.0 * dv);
+        }
+      }
+      Eigen::MatrixXd features(nr, 2);
+      features.col(0) = Ak;
+      features.col(1) = Ak.cwiseAbs2();
+      const Eigen::MatrixXd cov = Ma1VarianceModelCovariance(Fc, Zw, r, R.run, features);
+      if (std::getenv("OSDBG")) {
+        const int nr2 = static_cast<int>(r.size());
+        std::map<int,int> runlen; for (int x : R.run) runlen[x]++;
+        std::fprintf(stderr, "DBG rows %d runs %zu:", nr2, runlen.size());
+        for (int l = 0; l <= 4; ++l) { double c = 0; int np2 = 0; for (int i = l; i < nr2; ++i) if (R.run[i] == R.run[i-l]) { c += r[i]*r[i-l]; ++np2; } std::fprintf(stderr, " l%d %.3g(%d)", l, np2 ? c/np2 : 0.0, np2); }
+        const Eigen::MatrixXd c0 = Ma1Covariance(Fc, Zw, r, R.run);
+        std::fprintf(stderr, " sig hac/ma1:"); for (int j = 0; j < psi.size(); ++j) std::fprintf(stderr, " %.3f", std::sqrt(cov(j,j)/c0(j,j)));
+        std::fprintf(stderr, "\n");
+      }
+      bool converged = true;
+      for (int j = 0; j < psi.size(); ++j) {
+        converged = converged && std::abs(psi[j] - res.psi[j]) <= 0.05 * std::sqrt(std::max(0.0, cov(j, j)));
+      }
       res.psi = psi;
-      res.psi_covariance = Ma1Covariance(Fc, Zw, r, R.run);
+      res.psi_covariance = cov;
       res.residuals = R.Y - (R.F + (Z.F - Zs.F)) * psi;
       res.cost = res.residuals.squaredNorm() / nr;
       res.instrumental = true;
+      if (converged) break;
     }
     res.cost = res.residuals.squaredNorm() / res.num_rows;
     res.condition_number = fit.condition_number;

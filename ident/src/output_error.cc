@@ -26,12 +26,66 @@ struct TrialProblem {
   std::vector<double> times;         // sorted union of the used sample times
   std::vector<int> pos_at, vel_at;   // measurement k is at times[pos_at[k]]
   std::vector<double> pos_y, vel_y;
-  double pos_w = 0.0, vel_w = 0.0;   // 1/σ
+  std::vector<double> pos_w, vel_w;  // 1/σ of each (binned) measurement
   TrialInitialState init;
   int z_chi0 = -1, z_xi0 = -1;       // indices in z
   int r_offset = 0;                  // first residual of this trial
+  // Dense samples: the simulation's output grid, and for each time its interval g
+  // (grid[g] <= t <= grid[g + 1]); empty grid: simulate at `times`.
+  std::vector<double> grid;
+  std::vector<int> interval;
+  struct Hermite {
+    double h00, h10, h01, h11, u;  // cubic Hermite basis at the time (h10, h11 times h)
+  };
+  std::vector<Hermite> weights;
   int num_residuals() const { return static_cast<int>(pos_y.size() + vel_y.size()); }
 };
+
+// Samples faster than the RK4 step are averaged into bins about one step long (never across a
+// gap): the bin mean at the mean time, with weight √n/σ. For motion that is linear across a
+// bin this loses nothing (the mean is a sufficient statistic); it keeps the simulation's
+// output times, and so its cost, independent of the sensor rate.
+struct Binned {
+  std::vector<double> t, y, w;
+};
+Binned Bin(const Signal& s, double sigma, double step, const std::vector<double>& breaks) {
+  Binned b;
+  const double w1 = 1.0 / (sigma > 0 ? sigma : 1.0);
+  const std::size_t n = s.size();
+  double h = n > 1 ? (s.t.back() - s.t.front()) / (n - 1) : step;
+  if (h >= 0.5 * step) {
+    for (std::size_t k = 0; k < n; ++k) {
+      if (s.t[k] < 0) continue;
+      b.t.push_back(s.t[k]);
+      b.y.push_back(s.y[k]);
+      b.w.push_back(w1);
+    }
+    return b;
+  }
+  std::size_t k = 0;
+  while (k < n) {
+    if (s.t[k] < 0) {
+      ++k;
+      continue;
+    }
+    const double start = s.t[k];
+    // A bin ends at the next input breakpoint: the motion has a kink there.
+    const auto next = std::upper_bound(breaks.begin(), breaks.end(), start);
+    const double stop = std::min(start + step, next == breaks.end() ? start + step : *next);
+    double st = 0.0, sy = 0.0;
+    int c = 0;
+    while (k < n && (c == 0 || (s.t[k] < stop && s.t[k] - s.t[k - 1] < 3.0 * h))) {
+      st += s.t[k];
+      sy += s.y[k];
+      ++c;
+      ++k;
+    }
+    b.t.push_back(st / c);
+    b.y.push_back(sy / c);
+    b.w.push_back(w1 * std::sqrt(static_cast<double>(c)));
+  }
+  return b;
+}
 
 bool Admissible(const model::DofModel& model, const Eigen::VectorXd& theta) {
   const auto& names = model.parameter_names();
@@ -58,9 +112,11 @@ class Problem {
       const bool use_pos = o.use_position && d->has_position();
       const bool use_vel = o.use_velocity && d->has_velocity();
       if (!use_pos && !use_vel) continue;
+      const Binned pos = use_pos ? Bin(d->position, d->position_sigma, o.bin_s, d->breakpoints) : Binned{};
+      const Binned vel = use_vel ? Bin(d->velocity, d->velocity_sigma, o.bin_s, d->breakpoints) : Binned{};
       std::vector<double> times;
-      if (use_pos) times.insert(times.end(), d->position.t.begin(), d->position.t.end());
-      if (use_vel) times.insert(times.end(), d->velocity.t.begin(), d->velocity.t.end());
+      times.insert(times.end(), pos.t.begin(), pos.t.end());
+      times.insert(times.end(), vel.t.begin(), vel.t.end());
       std::sort(times.begin(), times.end());
       times.erase(std::unique(times.begin(), times.end()), times.end());
       // Simulation starts at t = 0; samples before it (none after PrepareTrial) are dropped.
@@ -69,21 +125,15 @@ class Problem {
       auto index_of = [&](double t) {
         return static_cast<int>(std::lower_bound(times.begin(), times.end(), t) - times.begin());
       };
-      if (use_pos) {
-        tp.pos_w = 1.0 / (d->position_sigma > 0 ? d->position_sigma : 1.0);
-        for (std::size_t k = 0; k < d->position.size(); ++k) {
-          if (d->position.t[k] < 0) continue;
-          tp.pos_at.push_back(index_of(d->position.t[k]));
-          tp.pos_y.push_back(d->position.y[k]);
-        }
+      for (std::size_t k = 0; k < pos.t.size(); ++k) {
+        tp.pos_at.push_back(index_of(pos.t[k]));
+        tp.pos_y.push_back(pos.y[k]);
+        tp.pos_w.push_back(pos.w[k]);
       }
-      if (use_vel) {
-        tp.vel_w = 1.0 / (d->velocity_sigma > 0 ? d->velocity_sigma : 1.0);
-        for (std::size_t k = 0; k < d->velocity.size(); ++k) {
-          if (d->velocity.t[k] < 0) continue;
-          tp.vel_at.push_back(index_of(d->velocity.t[k]));
-          tp.vel_y.push_back(d->velocity.y[k]);
-        }
+      for (std::size_t k = 0; k < vel.t.size(); ++k) {
+        tp.vel_at.push_back(index_of(vel.t[k]));
+        tp.vel_y.push_back(vel.y[k]);
+        tp.vel_w.push_back(vel.w[k]);
       }
       // Initial state: given, or guessed from the smoothed data.
       const TrialInitialState* given = nullptr;
@@ -106,6 +156,32 @@ class Problem {
         if (use_pos && d->velocity_estimate.size() > 0 && std::isfinite(d->velocity_estimate.value.front())) {
           // Smoothed position at t = 0 from the SG end polynomial is not kept; the first
           // sample is a fine start for a parameter that enters linearly.
+        }
+      }
+      if (o.grid_s > 0 && model.sensor_delay_index() < 0 && !times.empty()) {
+        // Grid: every breakpoint, and points at most grid_s apart in between.
+        std::vector<double> grid = {0.0};
+        auto extend_to = [&](double t) {
+          const double last = grid.back();
+          const int pieces = static_cast<int>(std::ceil((t - last) / o.grid_s - 1e-9));
+          for (int k = 1; k < pieces; ++k) grid.push_back(last + (t - last) * k / pieces);
+          if (t > last) grid.push_back(t);
+        };
+        for (double b : d->breakpoints) {
+          if (b > 0 && b < times.back()) extend_to(b);
+        }
+        extend_to(times.back());
+        if (grid.size() < times.size()) {
+          tp.grid = std::move(grid);
+          std::size_t g = 0;
+          for (double t : times) {
+            while (g + 2 < tp.grid.size() && tp.grid[g + 1] < t) ++g;
+            tp.interval.push_back(static_cast<int>(g));
+            const double h = tp.grid[g + 1] - tp.grid[g];
+            const double u = h > 0 ? std::clamp((t - tp.grid[g]) / h, 0.0, 1.0) : 0.0;
+            tp.weights.push_back({(1 + 2 * u) * (1 - u) * (1 - u), h * u * (1 - u) * (1 - u),
+                                  u * u * (3 - 2 * u), h * u * u * (u - 1), u});
+          }
         }
       }
       if (tp.init.chi0_estimated) tp.z_chi0 = z++;
@@ -168,9 +244,11 @@ class Problem {
       x0[0] = tp.z_chi0 >= 0 ? z[tp.z_chi0] : tp.init.chi0;
       x0[1] = tp.z_xi0 >= 0 ? z[tp.z_xi0] : tp.init.xi0;
       const model::TrialConditions c = tp.trial->conditions();
-      const model::Trajectory tr = model::SimulateMeasured(model_, theta, c, tp.times, so, &x0);
-      if (!tr.x.allFinite()) return false;
-      model::Trajectory tr_xi;
+      const std::vector<double>& at = tp.grid.empty() ? tp.times : tp.grid;
+      const model::Trajectory sim = model::SimulateMeasured(model_, theta, c, at, so, &x0);
+      if (!sim.x.allFinite()) return false;
+      const View tr(tp, sim, model_, theta, c);
+      model::Trajectory sim_xi;
       double h_xi = 0.0;
       if (J && tp.z_xi0 >= 0) {
         h_xi = 1e-6 * std::max(1e-3, std::abs(x0[1]));
@@ -178,17 +256,21 @@ class Problem {
         x1[1] += h_xi;
         model::SimulationOptions plain = so;
         plain.sensitivities = false;
-        tr_xi = model::SimulateMeasured(model_, theta, c, tp.times, plain, &x1);
+        sim_xi = model::SimulateMeasured(model_, theta, c, at, plain, &x1);
       }
+      const View tr_xi(tp, sim_xi, model_, theta, c);
       int row = tp.r_offset;
-      auto fill = [&](const std::vector<int>& at, const std::vector<double>& y, double w, int s) {
+      auto fill = [&](const std::vector<int>& at, const std::vector<double>& y,
+                      const std::vector<double>& wv, int s) {
         for (std::size_t k = 0; k < y.size(); ++k, ++row) {
           const int i = at[k];
-          (*r)[row] = w * (y[k] - tr.x(i, s));
+          const double w = wv[k];
+          const double x = tr.x(i, s);
+          (*r)[row] = w * (y[k] - x);
           if (!J) continue;
-          for (std::size_t c2 = 0; c2 < free_.size(); ++c2) (*J)(row, c2) = -w * tr.S[s](i, free_[c2]);
+          for (std::size_t c2 = 0; c2 < free_.size(); ++c2) (*J)(row, c2) = -w * tr.S(i, s, free_[c2]);
           if (tp.z_chi0 >= 0 && s == 0) (*J)(row, tp.z_chi0) = -w;
-          if (tp.z_xi0 >= 0) (*J)(row, tp.z_xi0) = -w * (tr_xi.x(i, s) - tr.x(i, s)) / h_xi;
+          if (tp.z_xi0 >= 0) (*J)(row, tp.z_xi0) = -w * (tr_xi.x(i, s) - x) / h_xi;
         }
       };
       fill(tp.pos_at, tp.pos_y, tp.pos_w, 0);
@@ -203,6 +285,53 @@ class Problem {
   }
 
  private:
+  // A simulation seen at tp.times: run there (as is), or on tp.grid and interpolated
+  // (OutputErrorOptions::grid_s): position and velocity by cubic Hermite with dx/dt from the
+  // model and the interval's input held at both ends (one-sided derivatives at breakpoints),
+  // other states and the sensitivities linearly. Nothing is materialised at the sample times.
+  class View {
+   public:
+    View(const TrialProblem& tp, const model::Trajectory& g, const model::DofModel& model,
+         const Eigen::VectorXd& theta, const model::TrialConditions& c)
+        : tp_(tp), g_(g) {
+      if (tp.grid.empty() || g.x.rows() == 0) return;
+      const int nx = static_cast<int>(g.x.cols());
+      const std::size_t ng = tp.grid.size();
+      dl_.resize(ng, 2);
+      dr_.resize(ng, 2);
+      std::vector<double> x(nx), dx(nx);
+      for (std::size_t k = 0; k + 1 < ng; ++k) {
+        const model::InputSample in = model.SampleInput(tp.grid[k], c);
+        for (int s = 0; s < nx; ++s) x[s] = g.x(k, s);
+        model.Derivative(tp.grid[k], x.data(), in, c, theta.data(), dx.data());
+        dl_(k, 0) = dx[0];
+        dl_(k, 1) = dx[1];
+        for (int s = 0; s < nx; ++s) x[s] = g.x(k + 1, s);
+        model.Derivative(tp.grid[k + 1], x.data(), in, c, theta.data(), dx.data());
+        dr_(k, 0) = dx[0];
+        dr_(k, 1) = dx[1];
+      }
+    }
+    double x(int i, int s) const {
+      if (tp_.grid.empty()) return g_.x(i, s);
+      const int k = tp_.interval[i];
+      const TrialProblem::Hermite& w = tp_.weights[i];
+      if (s >= 2) return (1 - w.u) * g_.x(k, s) + w.u * g_.x(k + 1, s);
+      return w.h00 * g_.x(k, s) + w.h10 * dl_(k, s) + w.h01 * g_.x(k + 1, s) + w.h11 * dr_(k, s);
+    }
+    double S(int i, int s, int j) const {
+      if (tp_.grid.empty()) return g_.S[s](i, j);
+      const int k = tp_.interval[i];
+      const double u = tp_.weights[i].u;
+      return (1 - u) * g_.S[s](k, j) + u * g_.S[s](k + 1, j);
+    }
+
+   private:
+    const TrialProblem& tp_;
+    const model::Trajectory& g_;
+    Eigen::MatrixXd dl_, dr_;  // dx/dt (position, velocity) at the left and right end of each interval
+  };
+
   const model::DofModel& model_;
   Eigen::VectorXd theta_;
   std::vector<int> free_;
@@ -234,27 +363,56 @@ double ResidualLag1(const Problem& p, const Eigen::VectorXd& r) {
   return count > 0 ? sum / count : 0.0;
 }
 
-// Newey–West bandwidth from the data: twice the first lag where the residual autocorrelation
-// falls below 2/√n, at most n/5.
-int DataDrivenLags(const Eigen::VectorXd& r) {
+// Correlation length of the residuals: the first lag where their autocorrelation falls below
+// 2/√n (searched up to n/20 and 5000 lags).
+int CorrelationLength(const Eigen::VectorXd& r) {
   const int n = static_cast<int>(r.size());
-  if (n < 10) return 1;
+  if (n < 40) return 1;
   const Eigen::VectorXd c = r.array() - r.mean();
   const double den = c.squaredNorm();
   if (!(den > 0)) return 1;
   const double bound = 2.0 / std::sqrt(static_cast<double>(n));
-  for (int l = 1; l < n / 5; ++l) {
-    const double rho = c.head(n - l).dot(c.tail(n - l)) / den;
-    if (std::abs(rho) < bound) return std::max(1, 2 * l);
+  const int max_lag = std::min(n / 20, 5000);
+  for (int l = 1; l < max_lag; ++l) {
+    if (std::abs(c.head(n - l).dot(c.tail(n - l)) / den) < bound) return l;
   }
-  return n / 5;
+  return max_lag;
+}
+
+// Autocorrelation-robust covariance by batch means: the scores g_i = J_iᵀ r_i summed over
+// contiguous blocks (within a trial) at least twice the residuals' correlation length; the
+// block sums are nearly independent, Cov = (JᵀJ)⁻¹·Σ_b G_b G_bᵀ·(JᵀJ)⁻¹. O(n·p²) whatever the
+// correlation length (a Newey–West sum over thousands of lags would be O(n·L·p²)).
+Eigen::MatrixXd BatchMeansCovariance(const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
+                                     const std::vector<int>& groups, int block) {
+  const Eigen::Index n = J.rows(), p = J.cols();
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(p, p);
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(p);
+  int in_block = 0, blocks = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (i > 0 && (groups[i] != groups[i - 1] || in_block >= block)) {
+      S.noalias() += g * g.transpose();
+      g.setZero();
+      in_block = 0;
+      ++blocks;
+    }
+    g.noalias() += J.row(i).transpose() * r[i];
+    ++in_block;
+  }
+  S.noalias() += g * g.transpose();
+  ++blocks;
+  const Eigen::MatrixXd A = J.transpose() * J;
+  const Eigen::MatrixXd Ainv = A.ldlt().solve(Eigen::MatrixXd::Identity(p, p));
+  const double correction = blocks > 1 ? static_cast<double>(blocks) / (blocks - 1) : 1.0;
+  return correction * Ainv * S * Ainv;
 }
 
 }  // namespace
 
 bool OutputErrorOptions::IsValid(std::string* error) const {
-  if (max_iterations < 1 || !(tolerance > 0) || !(step_s > 0) || !(max_condition > 1)) {
-    if (error) *error = "OutputErrorOptions: max_iterations >= 1, tolerance > 0, step_s > 0, max_condition > 1";
+  if (max_iterations < 1 || !(tolerance > 0) || !(step_s > 0) || !(max_condition > 1) ||
+      !(bin_s > 0) || !(grid_s >= 0)) {
+    if (error) *error = "OutputErrorOptions: max_iterations >= 1, tolerance > 0, step_s > 0, bin_s > 0, grid_s >= 0, max_condition > 1";
     return false;
   }
   if (!use_position && !use_velocity) {
@@ -286,6 +444,18 @@ struct LmOutcome {
   std::string message;
 };
 
+// Levenberg–Marquardt with Marquardt's diagonal scaling (Marquardt 1963): the step solves
+// (JᵀJ + λ·diag(JᵀJ))·δ = −Jᵀr; a step is accepted only if it lowers the cost ½‖r‖² and keeps
+// the parameters admissible and the simulation finite, λ shrinks after an accepted step and
+// grows until one is found. Converged when the Gauss–Newton step at the current point is
+// statistically negligible: its length in the metric of the estimate's covariance s²·(JᵀJ)⁻¹,
+//   δ_GNᵀ (JᵀJ) δ_GN / s² = gᵀ(JᵀJ)⁻¹g / s²  <  kNegligibleStep² ,   g = Jᵀr,
+// i.e. under a hundredth of a standard deviation. A tiny step taken under heavy damping is
+// not convergence (the classic false stop of LM far from the minimum), nor is a point where no
+// step lowers the cost while the Gauss–Newton step is still long: both are reported as not
+// converged and the caller falls back.
+constexpr double kNegligibleStep = 0.1;
+
 LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputErrorOptions& o) {
   LmOutcome out;
   Eigen::VectorXd r;
@@ -299,14 +469,31 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
   double cost = 0.5 * r.squaredNorm();
   double lambda = 1e-3;
   const int P = p.num_z();
+  Eigen::VectorXd r_trial;
+  Eigen::MatrixXd J_trial;
+  const int dof = std::max(1, p.num_r() - p.num_excluded() - P);
+  // Gauss–Newton decrement in units of the estimate's standard deviations (squared).
+  auto decrement = [&](const Eigen::MatrixXd& A, const Eigen::VectorXd& g) {
+    const Eigen::VectorXd d = A.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+    const Eigen::MatrixXd As = d.asDiagonal() * A * d.asDiagonal();  // unit diagonal
+    const Eigen::VectorXd gs = d.asDiagonal() * g;
+    const Eigen::VectorXd step = As.ldlt().solve(gs);
+    const double s2 = std::max(2.0 * cost / dof, 1e-300);
+    const double dec = gs.dot(step) / s2;
+    return std::isfinite(dec) ? std::abs(dec) : std::numeric_limits<double>::infinity();
+  };
   for (int it = 0; it < o.max_iterations; ++it) {
-    out.iterations = it + 1;
     const Eigen::MatrixXd A = J.transpose() * J;
     const Eigen::VectorXd g = J.transpose() * r;
+    if (decrement(A, g) < kNegligibleStep * kNegligibleStep) {
+      out.converged = true;
+      break;
+    }
+    out.iterations = it + 1;
     const Eigen::VectorXd d = A.diagonal().cwiseMax(1e-300);
     bool accepted = false;
-    double rel_step = 0.0, rel_decrease = 0.0;
-    for (int tries = 0; tries < 20; ++tries) {
+    double rel_decrease = 0.0;
+    for (int tries = 0; tries < 30; ++tries) {
       Eigen::MatrixXd M = A;
       M.diagonal() += lambda * d;
       const Eigen::VectorXd step = -M.ldlt().solve(g);
@@ -315,21 +502,19 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
         continue;
       }
       const Eigen::VectorXd z_new = z + step;
-      Eigen::VectorXd r_new;
-      if (!p.Evaluate(z_new, &r_new, nullptr)) {
+      // The trial point is simulated with its sensitivities: most steps are accepted, and an
+      // accepted step then needs no second simulation for its Jacobian.
+      if (!p.Evaluate(z_new, &r_trial, &J_trial)) {
         lambda *= 10;
         continue;
       }
-      const double cost_new = 0.5 * r_new.squaredNorm();
+      const double cost_new = 0.5 * r_trial.squaredNorm();
       if (cost_new <= cost) {
         rel_decrease = (cost - cost_new) / std::max(cost, 1e-300);
-        rel_step = 0.0;
-        for (int j = 0; j < P; ++j) {
-          // Step relative to the parameter's σ-scale (√ of A's diagonal is 1/σ-ish).
-          rel_step = std::max(rel_step, std::abs(step[j]) * std::sqrt(d[j]));
-        }
         z = z_new;
         cost = cost_new;
+        std::swap(r, r_trial);
+        std::swap(J, J_trial);
         lambda = std::max(1e-12, lambda / 3);
         accepted = true;
         break;
@@ -337,24 +522,32 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
       lambda *= 4;
     }
     if (!accepted) {
-      // No decrease in any direction tried: at the minimum to numerical precision.
-      out.converged = true;
+      // No step lowers the cost. At the minimum to rounding when the Gauss–Newton step is
+      // tiny in σ units (checked by the caller's final test below); otherwise stalled.
+      out.converged = decrement(A, g) < 1.0;
+      if (!out.converged) {
+        out.message = "Levenberg–Marquardt stalled (no step lowers the cost, the Gauss–Newton "
+                      "step is still " + Fmt(std::sqrt(decrement(A, g)), 3) + " σ long)";
+      }
       break;
     }
-    if (!p.Evaluate(z, &r, &J)) {
-      out.failed = true;
-      out.message = "the simulation fails during the iterations";
-      break;
-    }
-    // Converged when the cost no longer decreases and the step is far below one σ.
-    if (rel_decrease < o.tolerance || rel_step < 1e-6) {
-      out.converged = true;
-      break;
+    // The cost no longer changes at all (to the tolerance) with an undamped step: done.
+    if (rel_decrease < o.tolerance && lambda < 1e-2) {
+      const Eigen::MatrixXd A1 = J.transpose() * J;
+      const Eigen::VectorXd g1 = J.transpose() * r;
+      if (decrement(A1, g1) < 1.0) {
+        out.converged = true;
+        break;
+      }
     }
   }
+  if (!out.converged && !out.failed && out.message.empty()) {
+    out.message = "Levenberg–Marquardt did not converge in " + std::to_string(o.max_iterations) +
+                  " iterations";
+  }
   out.z = z;
-  out.r = r;
-  out.J = J;
+  out.r = std::move(r);
+  out.J = std::move(J);
   return out;
 }
 
@@ -452,12 +645,13 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
     Eigen::MatrixXd cov_z = res.sigma2 * crb_z;
     res.hac_covariance = false;
     if (res.residual_lag1 > o.whiteness_threshold) {
+      // Residuals correlated over the record (model error or coloured noise): batch means.
       std::vector<int> groups(p.num_r());
       for (const TrialProblem& tp : p.trials()) {
         for (int k = 0; k < tp.num_residuals(); ++k) groups[tp.r_offset + k] = tp.trial->index;
       }
-      const int lags = DataDrivenLags(lm.r);
-      const Eigen::MatrixXd hac = NeweyWestCovariance(lm.J, lm.r, nullptr, lags, &groups);
+      const int block = std::max(2, 2 * CorrelationLength(lm.r));
+      const Eigen::MatrixXd hac = BatchMeansCovariance(lm.J, lm.r, groups, block);
       // Never report less than the white-noise covariance.
       cov_z = hac;
       for (int j = 0; j < cov_z.rows(); ++j) {
@@ -479,6 +673,7 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
     res.status = lin.status != FitStatus::kOk ? OutputErrorStatus::kIllConditioned
                  : lm.converged                ? OutputErrorStatus::kConverged
                                                : OutputErrorStatus::kMaxIterations;
+    if (!lm.converged) res.notes.push_back(lm.message);
     if (!o.prune_insignificant || res.status != OutputErrorStatus::kConverged) break;
     int worst = -1;
     double worst_pe = kInsignificantPercentileError;
@@ -527,7 +722,8 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
   if (res.hac_covariance) {
     res.notes.push_back("output-error residuals are not white (mean lag-1 autocorrelation " +
                         Fmt(res.residual_lag1, 3) +
-                        "): model error or coloured noise; σ from a Newey–West sandwich");
+                        "): model error or coloured noise; σ from batch means of the scores "
+                        "(blocks of twice the residuals' correlation length)");
   }
   std::ostringstream os;
   os.precision(4);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "uuvplan/ident/regression.h"
@@ -236,9 +237,85 @@ SteadyStateResult SteadyStateFit(const model::DofModel& model,
     return r;
   }
 
+  // Repeating a leg adds precision, not information: the unknowns need as many distinct
+  // operating points (mapping, force, ballast, other DOFs' speeds) as there are of them. A
+  // two-level telegraph, say, leaves k, kq, bias and η undetermined (k = kq = 0 with
+  // bias = −φ and η = −1 fits ±φ exactly), whatever the condition number of the noisy rows.
+  {
+    std::vector<SteadyPoint> distinct;
+    for (const SteadyPoint& a : points) {
+      bool seen = false;
+      for (const SteadyPoint& b : distinct) {
+        bool same = a.mapping == b.mapping && a.ballast_steps == b.ballast_steps &&
+                    std::abs(a.phi - b.phi) <= 1e-6 * std::max({1.0, std::abs(a.phi), std::abs(b.phi)});
+        for (int k = 0; k < model::kNumDofs && same; ++k) {
+          if (k == model::Index(model.dof())) continue;
+          same = std::abs(a.velocities[k] - b.velocities[k]) <= 1e-3 * (1 + std::abs(b.velocities[k]));
+        }
+        seen = seen || same;
+      }
+      if (!seen) distinct.push_back(a);
+    }
+    const int p = static_cast<int>(cols.size());
+    const int d = static_cast<int>(distinct.size());
+    if (d < p) {
+      // The regression is singular: its rows span at most d < p directions of the unknowns
+      // (the scatter of the measured speeds only hides it). Report the condition number of the
+      // rows as measured, and name the parameters in the null space of the distinct operating
+      // points' rows (column-scaled, components above LeastSquaresOptions::null_component).
+      Eigen::MatrixXd H(n, p), Hd(d, p);
+      for (int c = 0; c < p; ++c) H.col(c) = Hall.col(cols[c]);
+      for (int i = 0; i < d; ++i) {
+        double h0 = 0.0;
+        EvaluateRegressor(model, PointContext(model, distinct[i], theta_in), theta_in, h.data(), &h0);
+        for (int c = 0; c < p; ++c) Hd(i, c) = h[cols[c]];
+      }
+      for (int c = 0; c < p; ++c) {
+        const double s = H.col(c).norm();
+        if (s > 0) {
+          H.col(c) /= s;
+          Hd.col(c) /= s;
+        }
+      }
+      const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(H).singularValues();
+      r.condition_number = sv[p - 1] > 0 ? sv[0] / sv[p - 1] : std::numeric_limits<double>::infinity();
+      Eigen::MatrixXd Hsq = Eigen::MatrixXd::Zero(p, p);  // Hd padded with zero rows to p × p
+      Hsq.topRows(d) = Hd;
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Hsq, Eigen::ComputeFullV);
+      const double smax = svd.singularValues()[0];
+      const double null_component = LeastSquaresOptions{}.null_component;
+      std::vector<int> null_cols;
+      for (int k = 0; k < p; ++k) {
+        if (svd.singularValues()[k] > 1e-10 * smax) continue;  // rank of the distinct rows
+        for (int c = 0; c < p; ++c) {
+          if (std::abs(svd.matrixV()(c, k)) > null_component &&
+              std::find(null_cols.begin(), null_cols.end(), c) == null_cols.end()) {
+            null_cols.push_back(c);
+          }
+        }
+      }
+      std::sort(null_cols.begin(), null_cols.end());
+      std::vector<std::string> col_names;
+      for (int j : cols) col_names.push_back(r.names[j]);
+      for (int c : null_cols) r.not_identifiable.push_back(col_names[c]);
+      r.status = SteadyStatus::kIllConditioned;
+      r.message = "steady-state regression is singular: the " + std::to_string(n) +
+                  " steady segments hold only " + std::to_string(d) +
+                  " distinct operating point(s) for " + std::to_string(p) + " unknowns (" +
+                  JoinNames([&] {
+                    std::vector<int> all(p);
+                    for (int c = 0; c < p; ++c) all[c] = c;
+                    return all;
+                  }(), col_names) +
+                  "), condition number " + Fmt(r.condition_number, 3) +
+                  " of the measured rows; not identifiable: " + JoinNames(null_cols, col_names) +
+                  " (add steady legs at other force levels, in both directions and with each "
+                  "mapping)";
+      return r;
+    }
+  }
   LeastSquaresOptions lso;
-  lso.covariance = o.weighting == SteadyStateOptions::Weighting::kNone ? o.covariance
-                                                                       : o.covariance;
+  lso.covariance = o.covariance;
   lso.max_condition = o.max_condition;
   std::vector<char> dropped(np, 0);
   std::vector<double> before_value(np, 0.0), before_sigma(np, 0.0);

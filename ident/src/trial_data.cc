@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include <Eigen/Dense>
 
@@ -29,10 +30,7 @@ Signal Column(const std::vector<double>& t, const std::vector<double>& col, doub
 
 double MedianRate(const Signal& s) {
   if (s.size() < 2) return 1.0;
-  std::vector<double> steps;
-  for (std::size_t i = 1; i < s.size(); ++i) steps.push_back(s.t[i] - s.t[i - 1]);
-  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
-  const double h = steps[steps.size() / 2];
+  const double h = MedianStep(s.t, 0, s.size());
   return h > 0 ? 1.0 / h : 1.0;
 }
 
@@ -156,6 +154,8 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
     if (used[m]) d.mappings_used.push_back(vehicle.mappings[m].name);
   }
   d.input = model::MakeHeldExcitation(d.force_t, d.force, d.mapping, d.duration);
+  d.breakpoints = d.input->Breakpoints();
+  std::sort(d.breakpoints.begin(), d.breakpoints.end());
   {
     const auto [fmin, fmax] = std::minmax_element(d.force.begin(), d.force.end());
     const double range = *fmax - *fmin;
@@ -224,12 +224,19 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
     }
     return s;
   };
-  d.position = clean(pos, spec && spec->position ? spec->position->sigma : -1.0,
+  d.position = clean(std::move(pos), spec && spec->position ? spec->position->sigma : -1.0,
                      &d.position_outliers, &d.position_sigma, &d.position_sigma_estimated,
                      "position");
-  d.velocity = clean(vel, spec && spec->velocity ? spec->velocity->sigma : -1.0,
+  d.velocity = clean(std::move(vel), spec && spec->velocity ? spec->velocity->sigma : -1.0,
                      &d.velocity_outliers, &d.velocity_sigma, &d.velocity_sigma_estimated,
                      "velocity");
+  // A column that is present but empty (all NaN) is not used; the other measurement carries
+  // the trial, and the caller is told which column was ignored.
+  if (log.HasPosition(dof) && !d.has_position()) d.unusable_columns.push_back("pos_" + dof_name);
+  if (log.HasVelocity(dof) && !d.has_velocity()) d.unusable_columns.push_back("vel_" + dof_name);
+  for (const std::string& c : d.unusable_columns) {
+    d.notes.push_back("column " + c + " has fewer than 3 values (all NaN?): not used");
+  }
   const Signal& main = d.has_velocity() ? d.velocity : d.position;
   d.gaps = FindGaps(main.t, o.gap_factor);
   if (!d.gaps.empty()) {

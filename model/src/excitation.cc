@@ -12,6 +12,7 @@ class SteadyExcitation final : public Excitation {
       : force_(force), mapping_(mapping), duration_(duration) {}
   double Force(double) const override { return force_; }
   int Mapping(double) const override { return mapping_; }
+  bool piecewise_constant() const override { return true; }
   double duration() const override { return duration_; }
 
  private:
@@ -64,6 +65,7 @@ class HeldExcitation final : public Excitation {
     }
     return b;
   }
+  bool piecewise_constant() const override { return true; }
   double duration() const override { return duration_; }
 
  private:

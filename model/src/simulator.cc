@@ -4,50 +4,82 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dof_model_kernel.h"
+
 namespace uuvplan::model {
 namespace {
 
-// Inputs are right-continuous at breakpoints; a step ending at b must see the left limit, so
-// stage times are held just below the interval's end.
-inline double Inside(double t, double b) { return std::min(t, b - 1e-12 * std::max(1.0, b)); }
+using Kernel = internal::DofModelKernel;
+
+// Inputs are right-continuous at breakpoints; a step [a, b] ending at b must see the left
+// limit, so stage times are held just below the interval's end — but never before its start
+// (a step shorter than that margin, e.g. between an output time and a breakpoint a rounding
+// error apart, samples at a).
+inline double Inside(double t, double a, double b) {
+  return std::max(a, std::min(t, b - 1e-12 * std::max(1.0, b)));
+}
 
 // Integrates from x0 at t = 0 and records the state at output_times[i] - shift (the state x0
 // for shifted times before 0). Every RK4 step ends at the input's breakpoints and at the
 // (shifted) output times, which are merged on the fly.
-Trajectory Integrate(const DofModel& model, const Eigen::VectorXd& theta,
-                     const TrialConditions& c, const std::vector<double>& output_times,
-                     double shift, const SimulationOptions& options, const Eigen::VectorXd* x0) {
+// NX = number of states (2, or 3 with thruster lag), a template parameter so that the state
+// loops unroll.
+template <int NX>
+Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
+                      const TrialConditions& c, const std::vector<double>& output_times,
+                      double shift, const SimulationOptions& options, const Eigen::VectorXd* x0) {
   if (!(options.step_s > 0)) throw std::invalid_argument("SimulationOptions::step_s must be > 0");
   if (!std::is_sorted(output_times.begin(), output_times.end()) ||
       (!output_times.empty() && output_times.front() < 0)) {
     throw std::invalid_argument("Simulate: output times must be sorted and >= 0");
   }
-  const int nx = model.num_states();
+  constexpr int nx = NX;
   const int np = model.num_parameters();
   const double* th = theta.data();
+  const Kernel::Inverses inv = Kernel::Invert(model, th);
   const bool sens = options.sensitivities;
   const std::size_t n_out = output_times.size();
 
   Trajectory out;
   out.t = output_times;
   out.x.resize(n_out, nx);
-  if (sens) out.S.assign(nx, Eigen::MatrixXd(n_out, np));
+  if (sens) {
+    out.S.resize(nx);  // sized in place: copying a prototype would touch 3 × n_out × np doubles
+    for (auto& s : out.S) s.resize(n_out, np);
+  }
 
   double x[3] = {0, 0, 0};
   if (x0) {
     for (int s = 0; s < nx && s < x0->size(); ++s) x[s] = (*x0)[s];
   }
-  // S is stored transposed (np × nx) so that recording a row of out.S is a contiguous read.
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(nx, np);
-  Eigen::MatrixXd A(nx, nx), B(nx, np), K1(nx, np), K2(nx, np), K3(nx, np), K4(nx, np),
-      Stmp(nx, np);
+  // S = ∂x/∂theta, row-major NX × np (row s: the sensitivities of state s), with the RK4
+  // stage slopes K and the stage argument St alike; A (NX × NX) and B (NX × np) as the kernel
+  // writes them.
+  const int ns = sens ? nx * np : 0;
+  std::vector<double> S(ns, 0.0), St(ns), K1(ns), K2(ns), K3(ns), K4(ns), B(ns);
+  double A[NX * NX];
+  // K = A·St + B with St = S + c·K_prev (c = 0 for the first stage).
+  auto slope = [&](const double* k_prev, double c_prev, double* K) {
+    for (int j = 0; j < ns; ++j) St[j] = k_prev ? S[j] + c_prev * k_prev[j] : S[j];
+    for (int r = 0; r < nx; ++r) {
+      double* Kr = K + r * np;
+      const double* Br = B.data() + r * np;
+      for (int j = 0; j < np; ++j) {
+        double v = Br[j];
+        for (int q = 0; q < nx; ++q) v += A[r * NX + q] * St[q * np + j];
+        Kr[j] = v;
+      }
+    }
+  };
 
   std::size_t next_out = 0;
   auto record = [&](double t) {
     while (next_out < n_out && output_times[next_out] - shift <= t) {
       for (int s = 0; s < nx; ++s) out.x(next_out, s) = x[s];
       if (sens) {
-        for (int s = 0; s < nx; ++s) out.S[s].row(next_out) = S.row(s);
+        for (int s = 0; s < nx; ++s) {
+          for (int j = 0; j < np; ++j) out.S[s](next_out, j) = S[s * np + j];
+        }
       }
       ++next_out;
     }
@@ -60,6 +92,9 @@ Trajectory Integrate(const DofModel& model, const Eigen::VectorXd& theta,
 
   // The input is sampled once per stage time; a step's end sample starts the next step
   // unless the step ended at a breakpoint (where the input jumps).
+  // A piecewise-constant input does not change inside a step (steps end at its breakpoints):
+  // only the other DOFs' velocities are sampled at the inner stage times.
+  const bool held = c.input && c.input->piecewise_constant();
   double t = 0.0;
   InputSample in_a = model.SampleInput(0.0, c);
   while (next_out < n_out) {
@@ -70,40 +105,40 @@ Trajectory Integrate(const DofModel& model, const Eigen::VectorXd& theta,
     const double h = (b - t) / n;
     for (int k = 0; k < n; ++k) {
       const double ta = t + k * h;
-      const double tm = Inside(ta + 0.5 * h, b), te = Inside(ta + h, b);
-      const InputSample in_m = model.SampleInput(tm, c);
-      const InputSample in_e = model.SampleInput(te, c);
+      const double tm = Inside(ta + 0.5 * h, ta, b), te = Inside(ta + h, ta, b);
+      InputSample in_m = in_a, in_e = in_a;
+      if (!held) {
+        in_m = Kernel::SampleInput(model, tm, c);
+        in_e = Kernel::SampleInput(model, te, c);
+      } else if (c.aux && model.needs_aux()) {
+        c.aux->At(tm, &in_m.velocities);
+        c.aux->At(te, &in_e.velocities);
+      }
       double k1[3], k2[3], k3[3], k4[3], xt[3];
       // Classical RK4 on x (and on S with the same stages): x += h/6·(k1 + 2k2 + 2k3 + k4).
       if (!sens) {
-        model.Derivative(ta, x, in_a, c, th, k1);
+        Kernel::Derivative(model, ta, x, in_a, c, th, inv, k1);
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k1[s];
-        model.Derivative(tm, xt, in_m, c, th, k2);
+        Kernel::Derivative(model, tm, xt, in_m, c, th, inv, k2);
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k2[s];
-        model.Derivative(tm, xt, in_m, c, th, k3);
+        Kernel::Derivative(model, tm, xt, in_m, c, th, inv, k3);
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + h * k3[s];
-        model.Derivative(te, xt, in_e, c, th, k4);
+        Kernel::Derivative(model, te, xt, in_e, c, th, inv, k4);
       } else {
         // dS/dt = A·S + B (forward sensitivity equations), A = ∂f/∂x, B = ∂f/∂theta.
-        model.Linearize(ta, x, in_a, c, th, k1, A, B);
-        K1.noalias() = A.lazyProduct(S);  // tiny: no GEMM blocking
-        K1 += B;
+        double* Bp = B.data();
+        Kernel::Linearize<NX>(model, ta, x, in_a, c, th, inv, k1, A, Bp);
+        slope(nullptr, 0.0, K1.data());
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k1[s];
-        model.Linearize(tm, xt, in_m, c, th, k2, A, B);
-        Stmp = S + 0.5 * h * K1;
-        K2.noalias() = A.lazyProduct(Stmp);
-        K2 += B;
+        Kernel::Linearize<NX>(model, tm, xt, in_m, c, th, inv, k2, A, Bp);
+        slope(K1.data(), 0.5 * h, K2.data());
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k2[s];
-        model.Linearize(tm, xt, in_m, c, th, k3, A, B);
-        Stmp = S + 0.5 * h * K2;
-        K3.noalias() = A.lazyProduct(Stmp);
-        K3 += B;
+        Kernel::Linearize<NX>(model, tm, xt, in_m, c, th, inv, k3, A, Bp);
+        slope(K2.data(), 0.5 * h, K3.data());
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + h * k3[s];
-        model.Linearize(te, xt, in_e, c, th, k4, A, B);
-        Stmp = S + h * K3;
-        K4.noalias() = A.lazyProduct(Stmp);
-        K4 += B;
-        S += (h / 6.0) * (K1 + 2.0 * K2 + 2.0 * K3 + K4);
+        Kernel::Linearize<NX>(model, te, xt, in_e, c, th, inv, k4, A, Bp);
+        slope(K3.data(), h, K4.data());
+        for (int j = 0; j < ns; ++j) S[j] += (h / 6.0) * (K1[j] + 2.0 * K2[j] + 2.0 * K3[j] + K4[j]);
       }
       for (int s = 0; s < nx; ++s) x[s] += (h / 6.0) * (k1[s] + 2 * k2[s] + 2 * k3[s] + k4[s]);
       in_a = in_e;
@@ -115,6 +150,13 @@ Trajectory Integrate(const DofModel& model, const Eigen::VectorXd& theta,
     record(t);
   }
   return out;
+}
+
+Trajectory Integrate(const DofModel& model, const Eigen::VectorXd& theta,
+                     const TrialConditions& c, const std::vector<double>& output_times,
+                     double shift, const SimulationOptions& options, const Eigen::VectorXd* x0) {
+  return model.num_states() == 3 ? IntegrateN<3>(model, theta, c, output_times, shift, options, x0)
+                                 : IntegrateN<2>(model, theta, c, output_times, shift, options, x0);
 }
 
 }  // namespace

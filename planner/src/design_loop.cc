@@ -61,9 +61,8 @@ void RequirePlannable(const model::Vehicle& v, Dof dof, const std::string& where
   }
   const auto s = v.sensors.find(dof);
   if (s == v.sensors.end() || (!s->second.position && !s->second.velocity)) {
-    throw model::InputError(where, "vehicle '" + v.name + "' has no " + name +
-                                       " sensor (sensors." + name +
-                                       "): nothing to identify it from");
+    throw model::InputError(where, "vehicle '" + v.name + "' has no " + name + " sensor (sensors." +
+                                       name + "): nothing to identify it from");
   }
 }
 
@@ -119,7 +118,8 @@ void DesignInputs(const model::Vehicle& vehicle, const ident::DofIdentification&
     if (p.state == ident::ParameterState::kDropped) (*estimates)[p.name] = p.value;
     if (p.state != ident::ParameterState::kEstimated) continue;
     if (!(std::isfinite(p.sigma) && p.sigma > 0 && std::isfinite(p.value))) continue;
-    const double percent = p.value != 0.0 ? 100.0 * p.sigma / std::abs(p.value) : std::numeric_limits<double>::infinity();
+    const double percent = p.value != 0.0 ? 100.0 * p.sigma / std::abs(p.value)
+                                          : std::numeric_limits<double>::infinity();
     const bool nuisance = p.name == model::param::kBias || p.name == model::param::kBiasStep;
     if (!plausible(p.name, p.value)) {
       notes->push_back(p.name + " = " + Fmt(p.value) +
@@ -165,9 +165,8 @@ bool Uses(const model::TrialDesign& d, const std::string& mapping, int sign) {
     case model::TrialKind::kSteady:
       return d.mapping == mapping && Sign(d.force) == sign;
     case model::TrialKind::kSine:
-      return d.mapping == mapping &&
-             (Sign(d.offset + std::abs(d.amplitude)) == sign ||
-              Sign(d.offset - std::abs(d.amplitude)) == sign);
+      return d.mapping == mapping && (Sign(d.offset + std::abs(d.amplitude)) == sign ||
+                                      Sign(d.offset - std::abs(d.amplitude)) == sign);
     case model::TrialKind::kSegments:
       for (const auto& s : d.segments) {
         if ((s.mapping.empty() ? d.mapping : s.mapping) == mapping && Sign(s.force) == sign) {
@@ -298,8 +297,8 @@ bool PlanForDof(Planner& planner, const model::Campaign& campaign, const DofProg
     }
   }
   if (!progress.usable && !pending.empty() && want.empty()) {
-    return take_apriori(pending.front(),
-                        progress.trials == 0 ? "no trial yet"
+    return take_apriori(pending.front(), progress.trials == 0
+                                             ? "no trial yet"
                                              : "estimates not usable yet: " + progress.worst +
                                                    " at " + Fmt(progress.worst_percent) + "%");
   }
@@ -321,16 +320,10 @@ bool PlanForDof(Planner& planner, const model::Campaign& campaign, const DofProg
     no.id = os.str();
     ++k;
   } while (ids.count(no.id));
-  // DesignNextTrial needs a covariance to invert (PriorInformation::FromCovariance fails on an
-  // empty one): without any usable estimate, a vague prior on m (σ = 1000 × its upper a priori
-  // bound: relative information 1e-6, nothing) stands for "no information".
-  std::vector<std::string> design_names = names;
-  Eigen::MatrixXd design_covariance = covariance;
-  if (design_names.empty()) {
-    const double vague = 1e3 * planner.vehicle.InertiaBounds(dof)[1];
-    design_names = {model::param::kMass};
-    design_covariance = Eigen::MatrixXd::Constant(1, 1, vague * vague);
-  }
+  // Without any usable estimate the covariance is empty: no prior information, the a priori
+  // box (PriorInformation::FromCovariance).
+  const std::vector<std::string>& design_names = names;
+  const Eigen::MatrixXd& design_covariance = covariance;
   auto design = [&](const NextTrialOptions& o, const std::string& what) {
     const NextTrialResult nt = DesignNextTrial(planner.vehicle, planner.pool, dof, estimates,
                                                design_names, design_covariance, o);
@@ -376,8 +369,8 @@ bool PlanForDof(Planner& planner, const model::Campaign& campaign, const DofProg
   return false;
 }
 
-Decision Decide(Planner& planner, const model::Campaign& campaign,
-                const std::vector<Dof>& dofs, const ident::IdentifyResult& estimates) {
+Decision Decide(Planner& planner, const model::Campaign& campaign, const std::vector<Dof>& dofs,
+                const ident::IdentifyResult& estimates) {
   Decision d;
   for (Dof dof : dofs) {
     int trials = 0;
@@ -408,8 +401,9 @@ Decision Decide(Planner& planner, const model::Campaign& campaign,
       d.status = NextStatus::kTrial;
       std::ostringstream m;
       m << std::string(model::DofName(p->dof)) << " is furthest from the target (" << p->worst
-        << " at " << (std::isfinite(p->worst_percent) ? Fmt(p->worst_percent) + "%"
-                                                      : std::string("not estimated yet"))
+        << " at "
+        << (std::isfinite(p->worst_percent) ? Fmt(p->worst_percent) + "%"
+                                            : std::string("not estimated yet"))
         << "): " << d.source << " trial '" << d.trial.design.id << "'";
       d.message = m.str();
       return d;
@@ -489,13 +483,15 @@ bool DesignLoopOptions::IsValid(std::string* error) const {
 
 bool LoopOptions::IsValid(std::string* error) const {
   if (budget < 1) {
-    if (error) *error = "LoopOptions::budget = " + std::to_string(budget) +
-                        ". Violated constraint: budget >= 1";
+    if (error)
+      *error =
+          "LoopOptions::budget = " + std::to_string(budget) + ". Violated constraint: budget >= 1";
     return false;
   }
   if (!(command_rate_hz > 0)) {
-    if (error) *error = "LoopOptions::command_rate_hz = " + Fmt(command_rate_hz) +
-                        ". Violated constraint: > 0";
+    if (error)
+      *error =
+          "LoopOptions::command_rate_hz = " + Fmt(command_rate_hz) + ". Violated constraint: > 0";
     return false;
   }
   return step.IsValid(error);
@@ -503,18 +499,24 @@ bool LoopOptions::IsValid(std::string* error) const {
 
 std::string_view NextStatusName(NextStatus s) {
   switch (s) {
-    case NextStatus::kTrial: return "trial";
-    case NextStatus::kConverged: return "converged";
-    case NextStatus::kInfeasible: return "infeasible";
+    case NextStatus::kTrial:
+      return "trial";
+    case NextStatus::kConverged:
+      return "converged";
+    case NextStatus::kInfeasible:
+      return "infeasible";
   }
   return "infeasible";
 }
 
 std::string_view LoopStatusName(LoopStatus s) {
   switch (s) {
-    case LoopStatus::kConverged: return "converged";
-    case LoopStatus::kBudgetSpent: return "budget_spent";
-    case LoopStatus::kInfeasible: return "infeasible";
+    case LoopStatus::kConverged:
+      return "converged";
+    case LoopStatus::kBudgetSpent:
+      return "budget_spent";
+    case LoopStatus::kInfeasible:
+      return "infeasible";
   }
   return "infeasible";
 }
@@ -525,8 +527,9 @@ DofProgress EvaluateProgress(const model::Vehicle& vehicle, Dof dof,
   DofProgress p;
   p.dof = dof;
   p.trials = trials;
-  p.status = id == nullptr ? "no trial" : std::string(ident::IdentifyStatusName(id->status)) +
-                                              (id->message.empty() ? "" : ": " + id->message);
+  p.status = id == nullptr ? "no trial"
+                           : std::string(ident::IdentifyStatusName(id->status)) +
+                                 (id->message.empty() ? "" : ": " + id->message);
   auto get = [&](const std::string& name) {
     InterestParameter q;
     q.name = name;
@@ -713,8 +716,8 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
     it.predicted = d.predicted;
     it.notes = d.notes;
     it.start = clock;
-    campaign.trials.push_back(RunVirtualEntry(truth, d.trial.design, it.index, clock,
-                                              options.seed, options.command_rate_hz));
+    campaign.trials.push_back(RunVirtualEntry(truth, d.trial.design, it.index, clock, options.seed,
+                                              options.command_rate_hz));
     clock += d.trial.design.duration + pause;
     per_dof[d.dof].push_back(d.trial.design);
     result.pool_time = clock - pause;
@@ -753,8 +756,7 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
       it.progress.push_back(
           EvaluateProgress(vehicle, dof, estimates.Find(dof), trials, options.step));
     }
-    it.wall_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    it.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (on_iteration) on_iteration(it);
     result.iterations.push_back(std::move(it));
   }

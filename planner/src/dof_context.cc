@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
@@ -19,6 +20,16 @@ namespace uuvplan::planner {
 PriorInformation PriorInformation::FromCovariance(const std::vector<std::string>& names,
                                                   const Eigen::MatrixXd& C) {
   PriorInformation p;
+  if (C.size() == 0) {  // no estimates yet: no prior information (names dropped with it)
+    p.M = Eigen::MatrixXd::Zero(0, 0);
+    return p;
+  }
+  if (C.rows() != C.cols() || C.rows() != static_cast<Eigen::Index>(names.size())) {
+    throw std::invalid_argument("PriorInformation::FromCovariance: covariance " +
+                                std::to_string(C.rows()) + " x " + std::to_string(C.cols()) +
+                                " for " + std::to_string(names.size()) +
+                                " names. Violated constraint: square, one row per name");
+  }
   p.names = names;
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(C);
   const Eigen::VectorXd& lam = es.eigenvalues();
@@ -180,7 +191,14 @@ std::vector<int> DofContext::Indices(const std::vector<std::string>& names) cons
 Eigen::MatrixXd DofContext::PriorMatrix(const PriorInformation* prior) const {
   const int np = model_->num_parameters();
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(np, np);
-  if (!prior) return M;
+  if (!prior || prior->names.empty()) return M;
+  if (prior->M.rows() != static_cast<Eigen::Index>(prior->names.size()) ||
+      prior->M.cols() != prior->M.rows()) {
+    throw std::invalid_argument("PriorInformation: M is " + std::to_string(prior->M.rows()) +
+                                " x " + std::to_string(prior->M.cols()) + " for " +
+                                std::to_string(prior->names.size()) +
+                                " names. Violated constraint: square, one row per name");
+  }
   std::vector<int> map;
   for (const auto& n : prior->names) map.push_back(Index(n));
   for (std::size_t a = 0; a < map.size(); ++a) {

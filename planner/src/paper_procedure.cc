@@ -43,11 +43,11 @@ std::vector<Leg> MappingLegs(const model::Vehicle& v, const model::Pool& pool, D
                              double k, double kq, const PaperProcedureOptions& o,
                              std::vector<std::string>* notes) {
   const std::string& name = v.mappings[mi].name;
-  const double vmax =
-      model::IsRotational(dof) ? o.max_rotation_rate : o.max_translation_speed;
+  const double vmax = model::IsRotational(dof) ? o.max_rotation_rate : o.max_translation_speed;
   const double m_max = v.InertiaBounds(dof)[1];
   const double available = pool.Available(dof);
-  std::array<ForceRange, 2> range = {DirectionForceRange(v, mi, +1), DirectionForceRange(v, mi, -1)};
+  std::array<ForceRange, 2> range = {DirectionForceRange(v, mi, +1),
+                                     DirectionForceRange(v, mi, -1)};
   std::vector<Leg> legs;
   for (int j = 1; j <= o.levels; ++j) {
     const double speed = vmax * j / o.levels;
@@ -56,9 +56,9 @@ std::vector<Leg> MappingLegs(const model::Vehicle& v, const model::Pool& pool, D
       const ForceRange& r = range[s];
       if (!r.feasible) {
         if (j == 1) {
-          notes->push_back(std::string(model::DofName(dof)) + ": mapping " + name + " cannot hold " +
-                           (sign > 0 ? "positive" : "negative") + " forces (" + r.reason +
-                           "): no legs that way");
+          notes->push_back(std::string(model::DofName(dof)) + ": mapping " + name +
+                           " cannot hold " + (sign > 0 ? "positive" : "negative") + " forces (" +
+                           r.reason + "): no legs that way");
         }
         continue;
       }
@@ -68,15 +68,15 @@ std::vector<Leg> MappingLegs(const model::Vehicle& v, const model::Pool& pool, D
         const double c = std::clamp(f, r.min_abs, r.max_abs);
         notes->push_back(std::string(model::DofName(dof)) + ": " + name + " level " +
                          std::to_string(j) + " needs " + Fmt(f) + " " +
-                         std::string(model::ForceUnit(dof)) + ", outside what its thrusters give [" +
-                         Fmt(r.min_abs) + ", " + Fmt(r.max_abs) + "]: " + Fmt(c) + " used");
+                         std::string(model::ForceUnit(dof)) +
+                         ", outside what its thrusters give [" + Fmt(r.min_abs) + ", " +
+                         Fmt(r.max_abs) + "]: " + Fmt(c) + " used");
         f = c;
       }
       const double xi = SteadySpeed(k, kq, f);
       const double tau = TimeConstant(m_max, LinearisedDrag(k, kq, xi));
       double T = o.settle_time_constants * tau + o.hold_s;
-      if (std::isfinite(available) &&
-          TravelFromRest(xi, tau, T) > o.travel_fraction * available) {
+      if (std::isfinite(available) && TravelFromRest(xi, tau, T) > o.travel_fraction * available) {
         // Bisection on the monotone travel for the time that uses the allowed travel.
         double lo = 0.0, hi = T;
         for (int it = 0; it < 60; ++it) {
@@ -93,8 +93,7 @@ std::vector<Leg> MappingLegs(const model::Vehicle& v, const model::Pool& pool, D
 
 // Chains legs into trials of at most `max_s` (a single leg is a steady trial).
 std::vector<model::TrialDesign> PackLegs(Dof dof, const std::string& id_prefix,
-                                         const std::vector<Leg>& legs, double max_s,
-                                         int ballast) {
+                                         const std::vector<Leg>& legs, double max_s, int ballast) {
   std::vector<model::TrialDesign> out;
   std::vector<Leg> cur;
   auto flush = [&]() {
@@ -176,8 +175,7 @@ std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& v,
   }
   // A priori drag: the vehicle's dofs.<dof>.drag (else the planner's bluff-body estimate).
   const model::DofModel full(v, model::ModelStructure::Standard(v, dof, mappings, false));
-  const ParameterBox box =
-      APrioriBox(v, dof, full.parameter_names(), o.planner.box, notes);
+  const ParameterBox box = APrioriBox(v, dof, full.parameter_names(), o.planner.box, notes);
   const double k = box.Nominal("k"), kq = box.Nominal("kq");
 
   std::vector<model::TrialDesign> out;
@@ -196,8 +194,8 @@ std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& v,
   } else {
     for (int i : v.MappingsOf(dof)) {
       auto legs = MappingLegs(v, pool, dof, i, k, kq, o, notes);
-      auto t = PackLegs(dof, "paper-" + v.mappings[i].name, legs, o.planner.max_trial_duration_s,
-                        0);
+      auto t =
+          PackLegs(dof, "paper-" + v.mappings[i].name, legs, o.planner.max_trial_duration_s, 0);
       out.insert(out.end(), t.begin(), t.end());
     }
   }
@@ -261,8 +259,8 @@ PaperProcedureResult RunPaperProcedure(const model::Truth& truth, const model::P
   for (Dof d : dofs) {
     auto designs = PaperProcedureDesigns(truth.vehicle, pool, d, o, &r.notes);
     std::vector<std::string> ctx_notes;
-    std::unique_ptr<DofContext> ctx = DofContext::APriori(truth.vehicle, pool, d, o.planner,
-                                                          &ctx_notes);
+    std::unique_ptr<DofContext> ctx =
+        DofContext::APriori(truth.vehicle, pool, d, o.planner, &ctx_notes);
     for (const auto& design : designs) {
       PlannedTrial t;
       t.design = design;
@@ -277,12 +275,13 @@ PaperProcedureResult RunPaperProcedure(const model::Truth& truth, const model::P
   }
   double clock = 0.0;
   for (std::size_t i = 0; i < all.size(); ++i) {
-    c.trials.push_back(RunVirtualEntry(truth, all[i], static_cast<int>(i), clock, o.seed,
-                                       o.command_rate_hz));
+    c.trials.push_back(
+        RunVirtualEntry(truth, all[i], static_cast<int>(i), clock, o.seed, o.command_rate_hz));
     clock += all[i].duration + o.planner.pause_s;
   }
   r.pool_time = PoolTime(all, o.planner.pause_s);
-  for (const auto& [d, designs] : per_dof) r.dof_pool_time[d] = PoolTime(designs, o.planner.pause_s);
+  for (const auto& [d, designs] : per_dof)
+    r.dof_pool_time[d] = PoolTime(designs, o.planner.pause_s);
   ident::IdentifyOptions io = o.identify;
   io.dofs = dofs;
   r.estimates = ident::Identify(c, io);

@@ -24,6 +24,17 @@ std::string_view PlanStatusName(PlanStatus s) {
 }
 
 bool ScheduleOptions::IsValid(std::string* error) const {
+  for (const auto& [dof, p] : prior) {
+    if (p.M.rows() != static_cast<Eigen::Index>(p.names.size()) || p.M.cols() != p.M.rows()) {
+      if (error) {
+        *error = "ScheduleOptions::prior[" + std::string(model::DofName(dof)) + "].M is " +
+                 std::to_string(p.M.rows()) + " x " + std::to_string(p.M.cols()) + " for " +
+                 std::to_string(p.names.size()) +
+                 " names. Violated constraint: square, one row per name";
+      }
+      return false;
+    }
+  }
   return planner.IsValid(error) && steady.IsValid(error) && sine.IsValid(error);
 }
 
@@ -228,14 +239,38 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
   }
   ParameterBox box = EstimateBox(centre, sigmas, probe->model().parameter_names(), o.box_sigmas,
                                  o.schedule.planner.box);
+  // An axis whose parameters have no estimate with a σ keeps its a priori range.
+  for (auto& axis : box.axes) {
+    bool estimated = false;
+    for (const auto& p : axis.params)
+      estimated = estimated || (estimates.count(p) && sigmas.count(p));
+    if (estimated) continue;
+    for (const auto& a : probe->box().axes) {
+      if (a.name != axis.name) continue;
+      // Factors of the a priori range about the (a priori) centre.
+      const std::string& ref = axis.params.front();
+      const double scale =
+          box.Nominal(ref) != 0.0 ? probe->box().Nominal(ref) / box.Nominal(ref) : 1.0;
+      axis.lo = a.lo * scale;
+      axis.hi = a.hi * scale;
+    }
+  }
   DofContext ctx(vehicle, pool, dof, std::move(box), o.schedule.planner);
   const PriorInformation prior = PriorInformation::FromCovariance(names, covariance);
   const std::vector<Eigen::MatrixXd> M0 = PriorPerPoint(ctx, &prior);
   result.criterion_before =
       Aggregate(ctx.options().robustness, ctx.CriterionValues(M0, o.criterion, {}));
 
-  // Candidates: the sine designed for this criterion, and each steady leg from rest.
+  // Candidates: the sine designed for this criterion, and each steady leg from rest. They are
+  // ranked by the criterion they reach or, with per_pool_time, by its gain per second of pool
+  // time (the trial plus the pause before the next one; a cost-normalised criterion).
+  const double pause = ctx.options().pause_s;
+  auto score = [&](double criterion, double duration) {
+    if (!o.per_pool_time) return criterion;
+    return (criterion - result.criterion_before) / (duration + pause);
+  };
   double best = -std::numeric_limits<double>::infinity();
+  double best_score = best;
   std::vector<Eigen::MatrixXd> best_info;
   SineDesignOptions so = o.schedule.sine;
   so.criterion = o.criterion;
@@ -244,6 +279,7 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
   for (const auto& n : sn.notes) result.notes.push_back(n);
   if (sn.status == DesignStatus::kOk) {
     best = sn.criterion;
+    best_score = score(sn.criterion, sn.trial.design.duration);
     result.trial = sn.trial;
     result.check = sn.check;
     best_info = sn.information;
@@ -262,10 +298,13 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
     for (std::size_t j = 0; j < total.size(); ++j) total[j] += M0[j];
     const double c =
         Aggregate(ctx.options().robustness, ctx.CriterionValues(total, o.criterion, {}));
-    if (c > best + 1e-9) {
+    const double sc = score(c, d.duration);
+    // 1e-9: the criteria are O(1..100) logs; a tie keeps the earlier candidate (the sine).
+    if (sc > best_score + 1e-9) {
       const TrialCheck check = ctx.Check(d);
       if (!check.feasible) continue;
       best = c;
+      best_score = sc;
       result.trial.design = d;
       result.trial.travel = check.travel;
       result.trial.thrust_min = check.thrust_min;

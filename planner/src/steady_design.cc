@@ -50,6 +50,7 @@ std::vector<int> EfficientRounding(const std::vector<double>& w, int N) {
   std::vector<int> n(C, 0);
   if (N <= 0 || C == 0) return n;
   const double top = *std::max_element(w.begin(), w.end());
+  if (!(top > 0)) return n;  // no support: nothing to apportion (all-zero or NaN weights)
   int p = 0;
   for (double x : w) p += x > 1e-3 * top ? 1 : 0;
   // n_c = ceil((N - p/2)·w_c) on the support, then the apportionment adjustments.
@@ -508,6 +509,12 @@ SteadyDesignResult DesignSteady(const DofContext& ctx, const SteadyDesignOptions
   }
   for (int c = 0; c < C; ++c) {
     for (int k = 0; k < n[c]; ++k) result.legs.push_back(result.candidates[c]);
+  }
+  if (result.legs.empty()) {
+    result.status = DesignStatus::kFailed;
+    result.message =
+        "approximate design without support (no positive weight): " + result.summary.BriefReport();
+    return result;
   }
 
   // 4. Pack legs into trials: alternate directions, compatible thrusters, within the pool.

@@ -6,6 +6,7 @@
 //     vertical-all, Fig. 4) on a vehicle with the paper's propeller–hull interaction
 //     (eta = 0.56 pulling up): the standard model's error, the cause named, the gain (diagnose).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include <iostream>
 #include <iterator>
 #include <memory>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -73,6 +75,15 @@ std::vector<planner::PlannedTrial> HeavePlan() {
   return plan;
 }
 
+// "v ± s" with s to two significant digits and v to the same decimals.
+std::string WithSigma(double v, double s) {
+  const int decimals =
+      s > 0 && std::isfinite(s) ? std::clamp(1 - static_cast<int>(std::floor(std::log10(s))), 0, 6) : 3;
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(decimals) << v << " ± " << s;
+  return out.str();
+}
+
 std::string MakeTempDir() {
   std::string pattern = (fs::temp_directory_path() / "uuvplan-demo-XXXXXX").string();
   if (mkdtemp(pattern.data()) == nullptr) {
@@ -123,9 +134,15 @@ int RunDemo(const DemoOptions& o) {
               << t.travel[1] << "] m\n";
   }
   for (const auto& [dof, pred] : schedule.schedule.predicted) {
-    std::cout << "   predicted sigma:";
-    for (const auto& [name, sigma] : pred.sigma) std::cout << " " << name << " " << std::setprecision(3) << sigma;
-    std::cout << "\n";
+    std::cout << "   predicted sigma (whole schedule, a priori):\n     ";
+    int column = 0;
+    for (const auto& [name, sigma] : pred.sigma) {
+      std::ostringstream item;
+      item << name << " " << std::setprecision(2) << std::defaultfloat << sigma;
+      std::cout << std::left << std::setw(38) << item.str() << std::right;
+      if (++column % 3 == 0) std::cout << "\n     ";
+    }
+    std::cout << std::fixed << "\n";
   }
   const planner::PoolCheckResult check =
       planner::CheckPool(truth.vehicle, pool, schedule.schedule, planner::PoolCheckOptions{});
@@ -220,8 +237,8 @@ int RunDemo(const DemoOptions& o) {
                "absorbs the weaker upward thrust into the weight:\n";
   if (const auto* d = diagnosis.nominal.Find(model::Dof::kHeave)) {
     for (const auto& p : d->params) {
-      std::cout << "   " << std::left << std::setw(10) << p.name << std::right << std::setprecision(3)
-                << p.value << " ± " << p.sigma << "\n";
+      std::cout << "   " << std::left << std::setw(10) << p.name << std::right
+                << WithSigma(p.value, p.sigma) << "\n";
     }
   }
   std::cout << "Findings:\n";
@@ -230,8 +247,8 @@ int RunDemo(const DemoOptions& o) {
     std::cout << "   " << model::EffectName(f.effect) << " (" << model::DofName(f.dof)
               << "): " << f.what << "\n";
     for (const auto& p : f.params) {
-      std::cout << "     " << p.name << " = " << std::setprecision(3) << p.value << " ± "
-                << p.sigma << "  (paper, Table II: 0.56 ± 0.023)\n";
+      std::cout << "     " << p.name << " = " << WithSigma(p.value, p.sigma)
+                << "  (truth 0.56; paper, Table II: 0.56 ± 0.023)\n";
     }
     std::cout << "     free-run velocity MAE " << std::setprecision(4) << f.gain.before << " -> "
               << f.gain.after << " m/s (" << std::setprecision(0) << 100 * f.gain.relative

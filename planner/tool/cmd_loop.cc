@@ -28,6 +28,12 @@ namespace uuvplan::tool {
 namespace {
 
 using model::InputError;
+
+std::string Str(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
 using nlohmann::json;
 
 struct LoopCliOptions {
@@ -96,12 +102,11 @@ json IterationJson(const planner::LoopIteration& it) {
 
 int RunLoopCommand(const LoopCliOptions& o) {
   if (!(o.target > 0) || !std::isfinite(o.target)) {
-    throw InputError("--target", "expected a percentile error > 0 (%), got " +
-                                     std::to_string(o.target));
+    throw InputError("--target", "expected a percentile error > 0 (%), got " + Str(o.target));
   }
   if (o.budget < 1) {
-    throw InputError("--budget", "expected a number of trials >= 1, got " +
-                                     std::to_string(o.budget));
+    throw InputError("--budget",
+                     "expected a number of trials >= 1, got " + std::to_string(o.budget));
   }
   const model::Truth truth = model::ReadTruth(o.truth);
   const model::Pool pool = model::ReadPool(o.pool);
@@ -113,8 +118,8 @@ int RunLoopCommand(const LoopCliOptions& o) {
     const auto d = model::ParseDof(n);
     if (!d) throw InputError("--dof " + n, "expected surge, sway, heave, roll, pitch or yaw");
     if (!truth.dofs.count(*d)) {
-      throw InputError(o.truth, "missing dofs." + n + ".params: --dof " + n +
-                                    " needs the true " + n + " parameters to simulate");
+      throw InputError(o.truth, "missing dofs." + n + ".params: --dof " + n + " needs the true " +
+                                    n + " parameters to simulate");
     }
     lo.step.dofs.push_back(*d);
   }
@@ -129,11 +134,12 @@ int RunLoopCommand(const LoopCliOptions& o) {
       truth, pool, lo,
       [&](const planner::LoopIteration& it) { PrintIteration(it, o.target, o.verbose, out); });
 
-  out << "\n" << (r.converged ? "Converged" : "NOT converged") << " after "
-      << r.iterations.size() << " trial(s): " << r.message << "\n"
+  out << "\n"
+      << (r.converged ? "Converged" : "NOT converged") << " after " << r.iterations.size()
+      << " trial(s): " << r.message << "\n"
       << "Pool time: " << std::fixed << std::setprecision(0) << r.pool_time << " s ("
-      << std::setprecision(1) << r.pool_time / 60.0 << " min, "
-      << lo.step.schedule.planner.pause_s << " s pauses between trials included)";
+      << std::setprecision(1) << r.pool_time / 60.0 << " min, " << lo.step.schedule.planner.pause_s
+      << " s pauses between trials included)";
   for (const auto& [dof, t] : r.dof_pool_time) {
     out << std::setprecision(0) << "; " << model::DofName(dof) << " " << t << " s";
   }
@@ -182,8 +188,10 @@ const CommandRegistration kRegistration(
        sub->add_option("--dof", o->dofs,
                        "DOF to identify (repeatable; default: every DOF the truth has "
                        "parameters for)");
-       sub->add_option("--json", o->json, "also write the result as JSON to this file ('-' = stdout)");
-       sub->add_flag("--verbose", o->verbose, "print each iteration's design and identification notes");
+       sub->add_option("--json", o->json,
+                       "also write the result as JSON to this file ('-' = stdout)");
+       sub->add_flag("--verbose", o->verbose,
+                     "print each iteration's design and identification notes");
        sub->callback([o, run] { *run = [o] { return RunLoopCommand(*o); }; });
      }});
 

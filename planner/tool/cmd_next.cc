@@ -8,8 +8,8 @@
 #include <CLI/CLI.hpp>
 #include <iomanip>
 #include <iostream>
-#include <sstream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,6 +24,12 @@ namespace uuvplan::tool {
 namespace {
 
 using model::InputError;
+
+std::string Str(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
 
 struct NextCliOptions {
   std::string campaign;
@@ -45,8 +51,7 @@ std::vector<model::Dof> ParseDofs(const std::vector<std::string>& names) {
 
 int RunNext(const NextCliOptions& o) {
   if (!(o.target > 0)) {
-    throw InputError("--target", "expected a percentile error > 0 (%), got " +
-                                     std::to_string(o.target));
+    throw InputError("--target", "expected a percentile error > 0 (%), got " + Str(o.target));
   }
   const model::Campaign campaign = model::ReadCampaign(o.campaign);
   const model::Pool pool = model::ReadPool(o.pool);
@@ -98,9 +103,9 @@ int RunNext(const NextCliOptions& o) {
     nlohmann::json j;
     j["estimates"] = IdentifyJson(r.estimates);
     j["trial"] = r.status == planner::NextStatus::kTrial ? planner::TrialToJson(r.trial)
-                                                        : nlohmann::json(nullptr);
+                                                         : nlohmann::json(nullptr);
     j["predicted"] = r.status == planner::NextStatus::kTrial ? PredictedJson(r.dof, r.predicted)
-                                                            : nlohmann::json::object();
+                                                             : nlohmann::json::object();
     j["status"] = std::string(planner::NextStatusName(r.status));
     j["message"] = r.message;
     j["source"] = r.source;
@@ -128,7 +133,8 @@ const CommandRegistration kRegistration(
        sub->add_option("--target", o->target,
                        "percentile error 100·σ/|θ| (%) every parameter of interest must reach")
            ->capture_default_str();
-       sub->add_option("--json", o->json, "also write the result as JSON to this file ('-' = stdout)");
+       sub->add_option("--json", o->json,
+                       "also write the result as JSON to this file ('-' = stdout)");
        sub->callback([o, run] { *run = [o] { return RunNext(*o); }; });
      }});
 

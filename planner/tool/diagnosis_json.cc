@@ -1,5 +1,6 @@
 #include "diagnosis_json.h"
 
+#include <cmath>
 #include <iomanip>
 
 #include "ident_json.h"
@@ -52,7 +53,9 @@ json DiagnosisJson(const ident::DiagnosisResult& r) {
                      {"added_parameters", t.added_parameters},
                      {"p_value", t.p_value},
                      {"max_z", t.max_z},
-                     {"significant", t.significant}});
+                     {"significant", t.significant},
+                     {"gain", std::isfinite(t.gain) ? json(t.gain) : json(nullptr)},
+                     {"accepted", t.accepted}});
   }
   out["tests"] = tests;
   json breakdown = json::object();
@@ -106,12 +109,18 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
         << f.gain.before << " -> " << f.gain.after << " (" << std::setprecision(0)
         << 100.0 * f.gain.relative << "% better) on " << f.gain.on << "\n";
   }
-  out << "\nCandidate effects tested (p < 1e-3 and a new parameter >= 3 sigma from 'no effect'):\n";
+  out << "\nCandidate effects tested (significant: p < 1e-3 and a new parameter >= 3 sigma from "
+         "'no effect'; accepted: also >= 0.5% better on held-out data):\n";
   for (const auto& t : r.tests) {
     out << "  round " << t.round << "  " << std::left << std::setw(20)
         << model::EffectName(t.effect) << std::setw(4) << t.detail << std::right
         << "  D = " << std::setw(10) << std::setprecision(1) << t.statistic << "  z = "
-        << std::setw(6) << t.max_z << (t.significant ? "  significant" : "") << "\n";
+        << std::setw(6) << t.max_z << (t.significant ? "  significant" : "");
+    if (std::isfinite(t.gain)) {
+      out << ", held-out gain " << std::setprecision(1) << 100.0 * t.gain << "%"
+          << (t.accepted ? "  ACCEPTED" : "  (not enough)");
+    }
+    out << "\n";
   }
   for (const auto& n : r.notes) out << "note: " << n << "\n";
 }

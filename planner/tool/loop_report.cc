@@ -40,8 +40,8 @@ std::string TrialLine(const model::TrialDesign& d) {
     case model::TrialKind::kSegments:
       for (std::size_t i = 0; i < d.segments.size(); ++i) {
         const auto& g = d.segments[i];
-        s << (i ? " | " : "") << g.force << " " << unit << " " << std::setprecision(0)
-          << g.duration << " s" << std::setprecision(1)
+        s << (i ? " | " : "") << g.force << " " << unit << " " << std::setprecision(0) << g.duration
+          << " s" << std::setprecision(1)
           << (g.mapping.empty() || g.mapping == d.mapping ? "" : " " + g.mapping);
       }
       break;
@@ -67,16 +67,16 @@ void PrintProgress(const std::vector<planner::DofProgress>& progress, double tar
              << std::setw(10) << std::setprecision(3) << q.sigma << std::right << std::setw(8)
              << Percent(q.percent) << (q.percent <= target ? "  ok" : "    ");
       } else {
-        line << std::setw(34) << "not estimated yet" << "    ";
+        line << std::setw(34) << "not estimated yet"
+             << "    ";
       }
       if (truth != nullptr) {
         const double v = ident::TrueParameter(*truth, p.dof, q.name);
         line << "   true " << std::setprecision(5) << v;
         if (q.estimated && v != 0) {
-          line << std::fixed << std::setprecision(2) << "  error "
-               << std::showpos << 100.0 * (q.value - v) / std::abs(v) << "%" << std::noshowpos
-               << " (" << std::setprecision(1) << (q.value - v) / q.sigma << "σ)"
-               << std::defaultfloat;
+          line << std::fixed << std::setprecision(2) << "  error " << std::showpos
+               << 100.0 * (q.value - v) / std::abs(v) << "%" << std::noshowpos << " ("
+               << std::setprecision(1) << (q.value - v) / q.sigma << "σ)" << std::defaultfloat;
         }
       }
       out << line.str() << "\n";
@@ -89,18 +89,15 @@ json ProgressJson(const std::vector<planner::DofProgress>& progress) {
   for (const auto& p : progress) {
     json interest = json::object();
     for (const auto& q : p.interest) {
-      interest[q.name] = q.estimated ? json{{"value", Num(q.value)},
-                                            {"sigma", Num(q.sigma)},
-                                            {"percent", Num(q.percent)}}
-                                     : json(nullptr);
+      interest[q.name] =
+          q.estimated
+              ? json{{"value", Num(q.value)}, {"sigma", Num(q.sigma)}, {"percent", Num(q.percent)}}
+              : json(nullptr);
     }
-    j[std::string(model::DofName(p.dof))] = {{"converged", p.converged},
-                                             {"worst", p.worst},
-                                             {"worst_percent", Num(p.worst_percent)},
-                                             {"trials", p.trials},
-                                             {"usable", p.usable},
-                                             {"status", p.status},
-                                             {"interest", interest}};
+    j[std::string(model::DofName(p.dof))] = {
+        {"converged", p.converged}, {"worst", p.worst},   {"worst_percent", Num(p.worst_percent)},
+        {"trials", p.trials},       {"usable", p.usable}, {"status", p.status},
+        {"interest", interest}};
   }
   return j;
 }

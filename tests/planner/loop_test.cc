@@ -11,6 +11,7 @@
 // prints the same comparison with every iteration, for any seed).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -23,6 +24,7 @@
 #include "uuvplan/model/io.h"
 #include "uuvplan/planner/design_loop.h"
 #include "uuvplan/planner/paper_procedure.h"
+#include "uuvplan/planner/thrust_limits.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -103,9 +105,8 @@ TEST(DesignLoopTest, RomeoReachesFivePercentInLessPoolTimeThanSeedProcedure) {
   }
   EXPECT_GE(above, 1) << "the seed procedure met the target everywhere";
   // The loop needs no more pool time (trial durations + 60 s pauses, same accounting).
-  EXPECT_LE(loop.pool_time, paper.pool_time)
-      << "loop " << loop.pool_time << " s, seed procedure " << paper.pool_time << " s (" << worst
-      << ")";
+  EXPECT_LE(loop.pool_time, paper.pool_time) << "loop " << loop.pool_time << " s, seed procedure "
+                                             << paper.pool_time << " s (" << worst << ")";
   // And per DOF too.
   for (Dof dof : RomeoDofs()) {
     ASSERT_TRUE(loop.dof_pool_time.count(dof));
@@ -292,12 +293,17 @@ TEST(PaperProcedureTest, EncodesSeedSectionIVD) {
   EXPECT_DOUBLE_EQ(yaw.back().offset, -5.0);
   EXPECT_DOUBLE_EQ(yaw.back().amplitude, 4.0);
   EXPECT_NEAR(2 * M_PI / yaw.back().omega, 24.0, 1e-12);
+  // Steady torques: the a priori steady rate φ/k (linear a priori yaw drag, Table III) within
+  // 20 °/s, unless the mapping's smallest working torque (min_thrust) is larger.
   const double k = v.priors.at(Dof::kYaw).drag->k;
   for (const auto& d : yaw) {
-    for (const auto& s : d.segments) {
-      // A priori steady rate φ/k within 20 °/s (linear a priori yaw drag, Table III), except
-      // where the thrusters' minimum force forces more.
-      EXPECT_LE(std::abs(s.force) / k, 20.0 * M_PI / 180 * (1 + 1e-9) + 5.1 / k);
+    std::vector<model::SegmentDesign> legs = d.segments;
+    if (d.kind == model::TrialKind::kSteady) legs.push_back({d.force, d.duration, d.mapping});
+    for (const auto& s : legs) {
+      const int mi = v.MappingIndex(s.mapping.empty() ? d.mapping : s.mapping);
+      const double min_abs = DirectionForceRange(v, mi, s.force > 0 ? 1 : -1).min_abs;
+      EXPECT_LE(std::abs(s.force), std::max(k * 20.0 * M_PI / 180, min_abs) * (1 + 1e-9))
+          << d.id << " " << s.force;
     }
   }
 }
@@ -315,8 +321,8 @@ class LoopCliTest : public ::testing::Test {
 TEST_F(LoopCliTest, BudgetAndBadInputExitCodes) {
   const std::string base = "loop --truth '" + RomeoPath("truth.yaml") + "' --pool '" +
                            RomeoPath("pool.yaml") + "' --dof surge";
-  const auto spent = tool_test::RunTool(base + " --budget 1 --json '" + (dir_ / "l.json") + "'",
-                                        dir_);
+  const auto spent =
+      tool_test::RunTool(base + " --budget 1 --json '" + (dir_ / "l.json") + "'", dir_);
   EXPECT_EQ(spent.status, 1) << spent.err;
   const auto j = nlohmann::json::parse(tool_test::ReadText(dir_ / "l.json"));
   EXPECT_FALSE(j.at("converged").get<bool>());
@@ -333,8 +339,8 @@ TEST_F(LoopCliTest, BudgetAndBadInputExitCodes) {
 
 TEST_F(LoopCliTest, NextWritesEstimatesTrialAndPredicted) {
   // An empty campaign of the ROMEO vehicle: the next trial is the first of seed 000's order.
-  const std::string campaign = dir_.Write(
-      "campaign.yaml", "vehicle: '" + RomeoPath("vehicle.yaml") + "'\ntrials: []\n");
+  const std::string campaign =
+      dir_.Write("campaign.yaml", "vehicle: '" + RomeoPath("vehicle.yaml") + "'\ntrials: []\n");
   const auto r = tool_test::RunTool("next '" + campaign + "' --pool '" + RomeoPath("pool.yaml") +
                                         "' --dof yaw --json '" + (dir_ / "n.json") + "'",
                                     dir_);
@@ -344,10 +350,10 @@ TEST_F(LoopCliTest, NextWritesEstimatesTrialAndPredicted) {
   EXPECT_EQ(j.at("trial").at("dof"), "yaw");
   EXPECT_TRUE(j.at("predicted").contains("yaw"));
   // The trial can be run by `simulate --plan` (ReadScheduleJson reads a next result).
-  const auto sim = tool_test::RunTool("simulate --truth '" + RomeoPath("truth.yaml") +
-                                          "' --plan '" + (dir_ / "n.json") + "' --out '" +
-                                          (dir_ / "c") + "'",
-                                      dir_);
+  const auto sim =
+      tool_test::RunTool("simulate --truth '" + RomeoPath("truth.yaml") + "' --plan '" +
+                             (dir_ / "n.json") + "' --out '" + (dir_ / "c") + "'",
+                         dir_);
   EXPECT_EQ(sim.status, 0) << sim.err;
 }
 

@@ -133,6 +133,41 @@ TEST_F(RomeoSchedule, NextTrialAddsInformationToCurrentEstimates) {
   EXPECT_LT(r.predicted.sigma.at("m"), 56.0);
 }
 
+TEST_F(RomeoSchedule, NextTrialPerPoolTimeGainsMostPerSecond) {
+  // The same state as above, ranked by the gain of the robust D per second of pool time
+  // (duration + the 60 s pause) instead of by the D reached: the chosen trial's rate is at
+  // least that of the trial the default ranking picks, and the default's D at least the other's.
+  const std::vector<std::string> names = {"m", "k", "kq", "bias"};
+  Eigen::Matrix4d C = Eigen::Vector4d(56.0 * 56.0, 4.9 * 4.9, 15.9 * 15.9, 1.0).asDiagonal();
+  const ParameterValues est = {{"m", 890.0}, {"k", 46.9}, {"kq", 306.2}, {"bias", 0.0}};
+  NextTrialOptions total_o, rate_o;
+  rate_o.per_pool_time = true;
+  const NextTrialResult total =
+      DesignNextTrial(*vehicle_, *pool_, model::Dof::kSurge, est, names, C, total_o);
+  const NextTrialResult rate =
+      DesignNextTrial(*vehicle_, *pool_, model::Dof::kSurge, est, names, C, rate_o);
+  ASSERT_EQ(total.status, DesignStatus::kOk) << total.message;
+  ASSERT_EQ(rate.status, DesignStatus::kOk) << rate.message;
+  EXPECT_TRUE(rate.check.feasible);
+  const double pause = PlannerOptions{}.pause_s;
+  auto per_second = [pause](const NextTrialResult& r) {
+    return (r.criterion_after - r.criterion_before) / (r.trial.design.duration + pause);
+  };
+  // Same prior, same box, same candidates: the comparisons are exact up to the 1e-9 tie margin.
+  EXPECT_NEAR(rate.criterion_before, total.criterion_before, 1e-12);
+  EXPECT_GE(per_second(rate), per_second(total) - 1e-9);
+  EXPECT_GE(total.criterion_after, rate.criterion_after - 1e-9);
+}
+
+TEST_F(RomeoSchedule, NextTrialWithoutEstimatesIsDesigned) {
+  // No estimates yet (empty covariance): no prior information, the box of the vehicle file.
+  const NextTrialResult r = DesignNextTrial(*vehicle_, *pool_, model::Dof::kSurge, {}, {},
+                                            Eigen::MatrixXd(0, 0), NextTrialOptions{});
+  ASSERT_EQ(r.status, DesignStatus::kOk) << r.message;
+  EXPECT_TRUE(r.check.feasible);
+  EXPECT_TRUE(r.predicted.sigma.count("m"));
+}
+
 TEST_F(RomeoSchedule, WholeRomeoScheduleSaysHeaveDoesNotFit) {
   // Heave: 2 m of free depth (cases/romeo/pool.yaml); the seed ran heave under the Antarctic ice.
   ScheduleOptions o;

@@ -27,6 +27,8 @@ TEST(EfficientRounding, ApportionsExactlyAndKeepsTheSupport) {
   const std::vector<int> n = EfficientRounding({0.49, 1e-6, 0.51}, 7);
   EXPECT_EQ(std::accumulate(n.begin(), n.end(), 0), 7);
   EXPECT_EQ(n[1], 0);
+  // No support at all (a failed approximate design): no runs, rather than an index of -1.
+  EXPECT_EQ(EfficientRounding({0.0, 0.0}, 4), (std::vector<int>{0, 0}));
 }
 
 class RomeoSteady : public ::testing::Test {

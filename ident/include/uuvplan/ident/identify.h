@@ -93,6 +93,9 @@ struct DofIdentification {
   bool closed_loop_suspected = false;
   std::vector<std::string> notes;
   std::vector<std::string> warnings;
+  /// Wall time of each stage (s): "steady_state+integral", "one_step_ls", "output_error",
+  /// "validation".
+  std::map<std::string, double> timing;
 
   /// The reported estimate of parameter `name`, or null.
   const ParameterEstimate* Param(const std::string& name) const;

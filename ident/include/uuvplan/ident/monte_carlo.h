@@ -4,8 +4,8 @@
 // counted, together with the spread of the estimates against the mean reported σ and, for the
 // output-error fit, against the Cramér–Rao bound at the truth.
 //
-// Full size: bench/identify_bench --coverage (200 repetitions per case); the CI runs a seeded
-// subset (tests/ident/ident_coverage_test.cc).
+// Full size: tests/validation/identify_validation.cc (200 repetitions per case, figures in
+// docs/validation.md); the CI runs a seeded subset (tests/ident/ident_coverage_test.cc).
 #pragma once
 
 #include <cstdint>

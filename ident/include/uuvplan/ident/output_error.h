@@ -13,8 +13,10 @@
 //   Cov(z) = s²·(JᵀJ)⁻¹,   J = ∂r/∂z,  s² = ‖r‖²/(N − P)
 //
 // tends to the Cramér–Rao bound (JᵀJ)⁻¹ computed from the same sensitivities at the truth. When
-// the residuals are not white (model error, real data) a Newey–West sandwich with a
-// data-driven bandwidth is used instead, and said so.
+// the residuals are not white (model error, real data) an autocorrelation-robust sandwich is
+// used instead (batch means of the scores over blocks twice the residuals' correlation
+// length, never below the white-noise covariance), and said so. Sensor samples faster than
+// the RK4 step are averaged into one-step bins (weight √n/σ) before fitting.
 #pragma once
 
 #include <Eigen/Dense>
@@ -33,6 +35,16 @@ struct OutputErrorOptions {
   int max_iterations = 40;
   double tolerance = 1e-8;   ///< relative decrease of the cost and of the step to stop
   double step_s = 0.02;      ///< RK4 step of the simulations (s)
+  /// Samples closer than half this are averaged into bins this long (s): the mean is a
+  /// sufficient statistic while the motion is linear across a bin (τ of 0.3 s and more).
+  double bin_s = 0.02;
+  /// Dense measurements (more sample times than this grid has points): the simulation reports
+  /// the state only on a grid of every input breakpoint and points at most grid_s apart (its RK4
+  /// steps stay <= step_s), and is interpolated to the sample times: cubic Hermite for position
+  /// and velocity (dx/dt from the model; error ~ grid_s^4·|d⁴x/dt⁴|/384), linear for the
+  /// sensitivities (they only steer the iterations and set the covariance: relative error
+  /// ~ (grid_s/τ)²/8). Not used with a sensor delay. 0 = always simulate at the sample times.
+  double grid_s = 0.05;
   InitialVelocity initial_velocity = InitialVelocity::kAuto;
   bool use_position = true;
   bool use_velocity = true;

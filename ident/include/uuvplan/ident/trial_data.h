@@ -70,6 +70,7 @@ struct TrialData {
   std::vector<double> force_t, force;
   std::vector<int> mapping;
   std::unique_ptr<model::Excitation> input;          ///< zero-order hold of the rows
+  std::vector<double> breakpoints;                   ///< input->Breakpoints(), sorted, cached
   std::unique_ptr<LogAuxVelocities> aux;             ///< null when no other vel_ column
   std::vector<std::string> mappings_used;            ///< vehicle mapping names seen
   /// Times of the large command changes (steps of more than 5% of the force range, and
@@ -93,6 +94,9 @@ struct TrialData {
   std::vector<Outlier> position_outliers, velocity_outliers;
   std::vector<Gap> gaps;
   std::vector<std::string> notes;
+  /// Measurement columns of the DOF present in the log but without usable values (all NaN or
+  /// fewer than 3 samples), e.g. "vel_yaw": not used, and said so (Identify warns).
+  std::vector<std::string> unusable_columns;
 
   bool has_position() const { return position.size() >= 3; }
   bool has_velocity() const { return velocity.size() >= 3; }

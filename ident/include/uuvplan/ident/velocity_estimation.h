@@ -145,6 +145,10 @@ std::vector<SteadySegment> DetectSteadySegments(const Signal& s, bool is_positio
                                                 const SteadyDetectionOptions& options,
                                                 double known_sigma = -1.0);
 
+/// Median of the steps t[i] − t[i−1] over [begin, end) (from at most ~20,000 evenly spread
+/// steps of a long record).
+double MedianStep(const std::vector<double>& t, std::size_t begin, std::size_t end);
+
 /// Linear interpolation of samples at time t (held constant beyond the ends).
 double Interpolate(const std::vector<double>& t, const std::vector<double>& y, double at);
 

@@ -31,6 +31,7 @@ class ThrustTerm;
 class AdvanceLossTerm;
 class CouplingTerm;
 class DriftTerm;
+struct DofModelKernel;
 }  // namespace internal
 
 /// The conditions of one trial that are not states: its input, ballast, clock, other DOFs.
@@ -64,6 +65,8 @@ class DofModel {
   int ParameterIndex(std::string_view name) const;
   int num_states() const { return has_lag() ? 3 : 2; }
   bool has_lag() const { return lag_index_ >= 0; }
+  /// True when a term needs the other DOFs' velocities (TrialConditions::aux).
+  bool needs_aux() const { return needs_aux_; }
   int sensor_delay_index() const { return delay_index_; }
   const std::vector<std::unique_ptr<ForceTerm>>& terms() const { return terms_; }
   /// Offset of term j's parameters in theta.
@@ -102,14 +105,13 @@ class DofModel {
   double TotalForce(const TermContext& tc, const double* theta) const;
 
  private:
+  friend struct internal::DofModelKernel;  // the simulation loop's inlined derivative
   // The terms by their concrete type, for the simulation loop (no virtual dispatch).
   template <typename T>
   struct Typed {
     const T* term = nullptr;
     int offset = 0;
   };
-  template <typename Visitor>
-  void VisitTerms(Visitor&& visit) const;
   template <typename T>
   void Adopt(std::unique_ptr<T> term, Typed<T>* typed);
 

@@ -26,6 +26,9 @@ class Excitation {
   }
   /// Times in (0, duration) where Force or Mapping may jump; integration steps end there.
   virtual std::vector<double> Breakpoints() const { return {}; }
+  /// True when Force and Mapping change only at Breakpoints() (steady, segments, held logs):
+  /// the input is then constant over every integration step.
+  virtual bool piecewise_constant() const { return false; }
   virtual double duration() const = 0;
 };
 

@@ -116,8 +116,8 @@ NextStepResult NextStep(const model::Campaign& campaign, const model::Pool& pool
 
 struct LoopOptions {
   DesignLoopOptions step;
-  int budget = 40;          ///< most trials to run before giving up
-  std::uint64_t seed = 1;   ///< trial i draws from splitmix64(seed ^ splitmix64(i + 1))
+  int budget = 40;                ///< most trials to run before giving up
+  std::uint64_t seed = 1;         ///< trial i draws from splitmix64(seed ^ splitmix64(i + 1))
   double command_rate_hz = 20.0;  ///< virtual pool's command rate (VirtualPoolOptions)
 
   bool IsValid(std::string* error) const;
@@ -151,10 +151,10 @@ struct LoopResult {
   std::string message;
   bool converged = false;
   std::vector<LoopIteration> iterations;
-  std::vector<DofProgress> progress;  ///< final
-  ident::IdentifyResult estimates;    ///< final identification, DOF by DOF
-  model::Campaign campaign;           ///< the virtual campaign that was run (in memory)
-  double pool_time = 0.0;             ///< Σ durations + pauses (s)
+  std::vector<DofProgress> progress;           ///< final
+  ident::IdentifyResult estimates;             ///< final identification, DOF by DOF
+  model::Campaign campaign;                    ///< the virtual campaign that was run (in memory)
+  double pool_time = 0.0;                      ///< Σ durations + pauses (s)
   std::map<model::Dof, double> dof_pool_time;  ///< the same restricted to each DOF's trials
   std::vector<std::string> notes;
 };

@@ -28,7 +28,9 @@ namespace uuvplan::planner {
 struct PriorInformation {
   std::vector<std::string> names;
   Eigen::MatrixXd M;
-  /// From a covariance of estimates (M = C⁻¹, pseudo-inverse on its range).
+  /// From a covariance of estimates (M = C⁻¹, pseudo-inverse on its range); an empty
+  /// covariance (no estimates yet) gives no information (no names, 0 × 0 M). Throws
+  /// std::invalid_argument unless C is square with one row per name.
   static PriorInformation FromCovariance(const std::vector<std::string>& names,
                                          const Eigen::MatrixXd& covariance);
 };
@@ -37,9 +39,12 @@ struct PlannerOptions {
   BoxOptions box;
   Robustness robustness = Robustness::kMaximin;
   /// Sine designs are multimodal in the frequency (the trial's end phase): NLopt's global
-  /// search. Steady-level weights are a concave problem: Ipopt.
+  /// search. Steady-level weights are a smooth concave problem with an analytic gradient:
+  /// either backend finds its optimum (tests cross-check them to 1e-7); NLopt's SLSQP does it
+  /// in < 1 ms on ROMEO where Ipopt 3.11 (MUMPS, limited-memory BFGS) takes 50-600 ms, a
+  /// quarter of the whole schedule's time (docs/performance.md, "Planner").
   SolverBackend sine_backend = SolverBackend::kNlopt;
-  SolverBackend steady_backend = SolverBackend::kIpopt;
+  SolverBackend steady_backend = SolverBackend::kNlopt;
   /// Budgets tuned on ROMEO surge's sine design (bench/planner_bench --budgets): DIRECT-L with
   /// 150 evaluations, then COBYLA from its best point and from the seed-rule point, 40 each,
   /// reach the criterion of 500-1000-evaluation searches to 0.01 (80 + 30 stop at a local
@@ -131,7 +136,8 @@ class DofContext {
   /// Index of a parameter, -1 if absent.
   int Index(const std::string& name) const { return model_->ParameterIndex(name); }
   std::vector<int> Indices(const std::vector<std::string>& names) const;
-  /// The prior information in this model's parameter order (zero if none).
+  /// The prior information in this model's parameter order (zero if none). Throws
+  /// std::invalid_argument when prior->M is not square with one row per name.
   Eigen::MatrixXd PriorMatrix(const PriorInformation* prior) const;
 
   /// Fisher information of a trial (absolute units) at every design point.

@@ -46,7 +46,7 @@ struct PaperProcedureOptions {
   /// applied thrusts" and Fig. 5 shows a handful per weight.
   int levels = 3;
   /// Largest a priori steady speed, seed 000 §IV-D and Fig. 11.
-  double max_translation_speed = 0.35;          ///< m/s
+  double max_translation_speed = 0.35;           ///< m/s
   double max_rotation_rate = 20.0 * M_PI / 180;  ///< rad/s
   /// Settling: 4 time constants leave 1.8% of a first-order step (the 2% band).
   double settle_time_constants = 4.0;
@@ -72,9 +72,9 @@ struct PaperProcedureOptions {
 };
 
 struct PaperProcedureResult {
-  std::vector<PlannedTrial> trials;  ///< in the order run (travel/thrust_min from the checks)
-  std::vector<TrialCheck> checks;    ///< the planner's hard constraints on each trial
-  ident::IdentifyResult estimates;   ///< Identify on the whole campaign
+  std::vector<PlannedTrial> trials;   ///< in the order run (travel/thrust_min from the checks)
+  std::vector<TrialCheck> checks;     ///< the planner's hard constraints on each trial
+  ident::IdentifyResult estimates;    ///< Identify on the whole campaign
   std::vector<DofProgress> progress;  ///< parameters of interest, as the loop judges them
   double pool_time = 0.0;             ///< Σ durations + pauses (s)
   std::map<model::Dof, double> dof_pool_time;

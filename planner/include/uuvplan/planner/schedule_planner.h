@@ -91,6 +91,11 @@ struct NextTrialOptions {
   /// Half-width of the box about the estimates, in σ of each estimate. CHOSEN 2 (95%).
   double box_sigmas = 2.0;
   Criterion criterion = Criterion::kD;  ///< on all parameters the trials reach
+  /// Rank the candidates by the criterion's gain per second of pool time (trial duration +
+  /// PlannerOptions::pause_s) rather than by the criterion reached. Off by default: on the
+  /// ROMEO loop (seeds 1-8) it gave the same pool time on 7 seeds and 16 s more on one (it
+  /// picks a short leg, and the long sine is still needed next); docs/planning.md.
+  bool per_pool_time = false;
   std::string id = "next";
 };
 
@@ -104,9 +109,11 @@ struct NextTrialResult {
   std::vector<std::string> notes;
 };
 
-/// Designs the most informative single next trial of `dof` (a sine, or one steady leg from
-/// rest in some mapping and direction) given current `estimates` (by parameter name) and their
-/// `covariance` (rows/cols in `names` order). The box is the estimates ± box_sigmas·σ.
+/// Designs the single next trial of `dof` (a sine, or one steady leg from rest in some mapping
+/// and direction) that adds the most information (or the most per second of pool time, see
+/// NextTrialOptions::per_pool_time) given current `estimates` (by parameter name) and their
+/// `covariance` (rows/cols in `names` order; empty: no estimates yet). The box is the
+/// estimates ± box_sigmas·σ.
 NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool& pool,
                                 model::Dof dof, const ParameterValues& estimates,
                                 const std::vector<std::string>& names,

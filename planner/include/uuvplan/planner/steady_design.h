@@ -93,7 +93,8 @@ DesignProblem SteadyWeightsProblem(const DofContext& ctx,
                                    const std::vector<std::vector<Eigen::MatrixXd>>& M, int N,
                                    const std::vector<Eigen::MatrixXd>& prior, Criterion criterion);
 
-/// Efficient rounding of an approximate design to N runs (Pukelsheim & Rieder 1992).
+/// Efficient rounding of an approximate design to N runs (Pukelsheim & Rieder 1992). Weights
+/// below 1e-3 of the largest are not support points; without any positive weight, no runs.
 std::vector<int> EfficientRounding(const std::vector<double>& weights, int N);
 
 }  // namespace uuvplan::planner

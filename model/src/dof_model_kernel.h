@@ -1,0 +1,121 @@
+// DofModel's right-hand side, inline for the simulation loop (simulator.cc) and DofModel
+// itself (dof_model.cc): with the terms held by their final type the compiler inlines
+// Derivative → TotalForce → each term's Value into the RK4 stages. Model library only.
+#pragma once
+
+#include <cmath>
+
+#include "force_terms_impl.h"
+#include "uuvplan/model/dof_model.h"
+
+namespace uuvplan::model::internal {
+
+struct DofModelKernel {
+  /// u = sign(phi_n)·max(|phi_n| - d, 0), the commanded force after the dead zone.
+  static double ActuatorInput(const DofModel& m, double phi_n, const double* theta) {
+    if (m.deadzone_index_ < 0) return phi_n;
+    const double excess = std::abs(phi_n) - theta[m.deadzone_index_];
+    return excess > 0 ? std::copysign(excess, phi_n) : 0.0;
+  }
+
+  static InputSample SampleInput(const DofModel& m, double t, const TrialConditions& c) {
+    InputSample in;
+    if (c.input) c.input->Sample(t, &in.phi_n, &in.mapping);
+    if (m.needs_aux_ && c.aux) c.aux->At(t, &in.velocities);
+    return in;
+  }
+
+  [[gnu::always_inline]] static TermContext Context(const DofModel& m, double t, const double* x, const InputSample& in,
+                             const TrialConditions& c, const double* theta) {
+    TermContext tc;
+    tc.xi = x[1];
+    tc.phi = m.has_lag() ? x[2] : ActuatorInput(m, in.phi_n, theta);
+    tc.mapping = in.mapping;
+    tc.t_campaign = c.start_time + t;
+    tc.ballast_steps = c.ballast_steps;
+    if (m.needs_aux_) tc.velocities = in.velocities;
+    return tc;
+  }
+
+  [[gnu::always_inline]] static double TotalForce(const DofModel& m, const TermContext& tc, const double* theta) {
+    // Summed as a tree, not left to right: the state-dependent terms (drag, advance loss,
+    // coupling) then meet the others after two additions instead of five.
+    auto value = [&](const auto& typed) {
+      return typed.term ? typed.term->Value(tc, theta + typed.offset) : 0.0;
+    };
+    return (value(m.drag_) + value(m.advance_)) + (value(m.coupling_) + value(m.thrust_)) +
+           (value(m.constant_) + value(m.drift_));
+  }
+
+  /// 1/m and 1/T: they do not depend on the state, so the caller computes them once and the
+  /// RK4 stages multiply (a division costs ~4× a multiplication in latency).
+  struct Inverses {
+    double mass = 0.0, lag = 0.0;
+  };
+  static Inverses Invert(const DofModel& m, const double* theta) {
+    return {1.0 / theta[0], m.has_lag() ? 1.0 / theta[m.lag_index_] : 0.0};
+  }
+
+  /// dx/dt (dof_model.h): [xi, ΣF/m, (u - phi_a)/T].
+  [[gnu::always_inline]] static void Derivative(const DofModel& m, double t, const double* x,
+                                                const InputSample& in, const TrialConditions& c,
+                                                const double* theta, const Inverses& inv,
+                                                double* dx) {
+    const TermContext tc = Context(m, t, x, in, c, theta);
+    dx[0] = x[1];
+    dx[1] = TotalForce(m, tc, theta) * inv.mass;
+    if (m.has_lag()) dx[2] = (ActuatorInput(m, in.phi_n, theta) - x[2]) * inv.lag;
+  }
+
+  /// dx/dt with its Jacobians, row-major: A = ∂f/∂x (NX × NX), B = ∂f/∂theta (NX × np); both
+  /// fully written. Row 1: ∂(ΣF/m)/∂θ = J_term/m, ∂/∂m = −ΣF/m²; row 2 (lag):
+  /// ∂((u − φ_a)/T)/∂T = −(u − φ_a)/T², ∂/∂d = (∂u/∂d)/T.
+  template <int NX>
+  static void Linearize(const DofModel& m, double t, const double* x, const InputSample& in,
+                        const TrialConditions& c, const double* theta, const Inverses& inv,
+                        double* dx, double* A, double* B) {
+    const int np = m.num_parameters();
+    const TermContext tc = Context(m, t, x, in, c, theta);
+    for (int i = 0; i < NX * NX; ++i) A[i] = 0.0;
+    for (int i = 0; i < NX * np; ++i) B[i] = 0.0;
+    double* b1 = B + np;
+    double force = 0.0, d_xi = 0.0, d_phi = 0.0;
+    auto visit = [&](const auto& typed) {
+      if (!typed.term) return;
+      const TermPartials p = typed.term->Partials(tc, theta + typed.offset, b1 + typed.offset);
+      force += p.value;
+      d_xi += p.d_xi;
+      d_phi += p.d_phi;
+    };
+    visit(m.drag_);
+    visit(m.constant_);
+    visit(m.thrust_);
+    visit(m.advance_);
+    visit(m.coupling_);
+    visit(m.drift_);
+    for (int j = 1; j < np; ++j) b1[j] *= inv.mass;
+    b1[0] = -force * inv.mass * inv.mass;
+    dx[0] = x[1];
+    dx[1] = force * inv.mass;
+    A[0 * NX + 1] = 1.0;
+    A[1 * NX + 1] = d_xi * inv.mass;
+
+    const double phi_n = in.phi_n;
+    const double u = ActuatorInput(m, phi_n, theta);
+    // du/dd of the dead zone u = sign(phi_n)·max(|phi_n| - d, 0).
+    const int dz = m.deadzone_index_;
+    const double du_dd =
+        (dz >= 0 && std::abs(phi_n) > theta[dz]) ? -std::copysign(1.0, phi_n) : 0.0;
+    if constexpr (NX == 3) {
+      A[1 * NX + 2] = d_phi * inv.mass;
+      A[2 * NX + 2] = -inv.lag;
+      dx[2] = (u - x[2]) * inv.lag;
+      B[2 * np + m.lag_index_] = -(u - x[2]) * inv.lag * inv.lag;
+      if (dz >= 0) B[2 * np + dz] = du_dd * inv.lag;
+    } else if (dz >= 0) {
+      b1[dz] = d_phi * du_dd * inv.mass;
+    }
+  }
+};
+
+}  // namespace uuvplan::model::internal

@@ -1,0 +1,121 @@
+// Full-size validation of the identification's uncertainties (issue #3, docs/validation.md):
+//
+//  1. Coverage: for cases/romeo (surge forward/backward with three mappings and the §IV-D sine;
+//     heave with five ballast steps and η = 0.56; yaw with three mappings and the sine),
+//     cases/vsor and cases/uris, the same virtual campaign is identified with R independent
+//     seeds; for every estimator that reports σ and every parameter, the fraction of 95%
+//     intervals θ̂ ± 1.96σ that cover the truth must lie in [90%, 99%], and the fraction within
+//     3σ is printed.
+//  2. Cramér–Rao: the output-error estimates' spread over R repetitions of the ROMEO surge sine
+//     (offset 35 N, amplitude 25 N, period 26 s, 260 s) must lie within 25% of the bound at the
+//     truth.
+//
+// Run: build-ident/tests/identify_validation [repetitions = 200] [case = all]
+//      (case: romeo_surge, romeo_heave, romeo_yaw, vsor, uris, crb)
+// Exit status 1 when a claim fails. Model selection is off (fixed structures): coverage is a
+// property of an estimator of a given model. The CI subset is tests/ident/ident_coverage_test.cc.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "ident/ident_cases.h"
+#include "uuvplan/ident/monte_carlo.h"
+
+using namespace uuvplan;
+using model::Dof;
+
+namespace {
+
+struct Case {
+  std::string name, truth;
+  std::vector<model::TrialDesign> designs;
+};
+
+double Seconds(std::chrono::steady_clock::time_point a) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int reps = argc > 1 ? std::atoi(argv[1]) : 200;
+  const std::string only = argc > 2 ? argv[2] : "";
+  namespace t = ident::testing;
+  const std::vector<Case> cases = {{"romeo_surge", "romeo", t::RomeoSurgeDesigns()},
+                                   {"romeo_heave", "romeo", t::RomeoHeaveDesigns()},
+                                   {"romeo_yaw", "romeo", t::RomeoYawDesigns()},
+                                   {"vsor", "vsor", t::VsorDesigns()},
+                                   {"uris", "uris", t::UrisDesigns()}};
+  int exit_code = 0;
+  int cells = 0, in_band = 0;
+  for (const Case& c : cases) {
+    if (!only.empty() && only != c.name) continue;
+    ident::MonteCarloOptions o;
+    o.repetitions = reps;
+    o.seed = 7;  // the CI subset uses the same seed: its repetitions are the first ones here
+    o.identify.prune_insignificant = false;
+    o.cramer_rao = false;
+    const auto t0 = std::chrono::steady_clock::now();
+    const ident::MonteCarloReport r = ident::RunMonteCarlo(t::CaseTruth(c.truth), c.designs, o);
+    std::printf("== %s: %d repetitions, %d failures, %.0f s\n%s", c.name.c_str(), r.repetitions,
+                r.failures, Seconds(t0), r.Table().c_str());
+    if (r.failures > 0) exit_code = 1;
+    for (const ident::CoverageCell& cell : r.cells) {
+      if (cell.estimator == "final") continue;  // the output error (or LS fallback), counted once
+      const double cov = cell.coverage();
+      if (cell.n < 0.8 * r.repetitions) {
+        // The estimator declined in most repetitions (e.g. too few steady segments detected):
+        // no coverage claim for it here; listed so that it is seen.
+        std::printf("  (rarely reported: %s %s %s in %d of %d repetitions)\n",
+                    cell.estimator.c_str(), std::string(model::DofName(cell.dof)).c_str(),
+                    cell.name.c_str(), cell.n, r.repetitions);
+        continue;
+      }
+      ++cells;
+      // The issue's band for a 95% interval: [90%, 99%] of the repetitions.
+      const bool ok = cov >= 0.90 && cov <= 0.99;
+      in_band += ok;
+      if (!ok) {
+        exit_code = 1;
+        std::printf("  OUT OF BAND: %s %s %s coverage %.1f%% (n = %d), sd/σ = %.2f\n",
+                    cell.estimator.c_str(), std::string(model::DofName(cell.dof)).c_str(),
+                    cell.name.c_str(), 100 * cov, cell.n, cell.sd / cell.mean_sigma);
+      }
+    }
+    std::fflush(stdout);
+  }
+  if (only.empty() || only == "crb") {
+    const model::Truth truth = t::CaseTruth("romeo");
+    ident::MonteCarloOptions o;
+    o.repetitions = reps;
+    o.seed = 11;
+    o.identify.prune_insignificant = false;
+    // The sine never reverses the force: no installation coefficient is excited.
+    o.identify.structures[Dof::kSurge] =
+        model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {}, false);
+    model::TrialDesign sine = t::RomeoSurgeDesigns()[3];
+    sine.duration = 260;  // ten periods
+    const auto t0 = std::chrono::steady_clock::now();
+    const ident::MonteCarloReport r = ident::RunMonteCarlo(truth, {sine}, o);
+    std::printf("== crb (ROMEO surge sine, 260 s): %d repetitions, %d failures, %.0f s\n%s",
+                r.repetitions, r.failures, Seconds(t0), r.Table().c_str());
+    if (r.failures > 0) exit_code = 1;
+    for (const char* name : {"m", "k", "kq", "bias"}) {
+      const ident::CoverageCell* cell = r.Find("output_error", Dof::kSurge, name);
+      const double ratio = cell && cell->crb_sigma > 0 ? cell->sd / cell->crb_sigma : NAN;
+      // The issue's claim: the Monte Carlo spread within 25% of the Cramér–Rao bound.
+      const bool ok = std::abs(ratio - 1.0) <= 0.25;
+      std::printf("  output-error sd / √CRB for %-4s = %.3f  %s\n", name, ratio,
+                  ok ? "ok" : "FAIL");
+      if (!ok) exit_code = 1;
+    }
+  }
+  if (cells > 0) {
+    std::printf("coverage in [90%%, 99%%]: %d of %d estimator×parameter cells\n", in_band, cells);
+  }
+  std::printf("%s\n", exit_code == 0 ? "all claims hold" : "SOME CLAIMS FAIL");
+  return exit_code;
+}
