@@ -110,36 +110,6 @@ Eigen::MatrixXd Ma1Covariance(const Eigen::MatrixXd& H, const Eigen::MatrixXd& Z
   return Ainv * ZOZ * Ainv.transpose();
 }
 
-Eigen::MatrixXd Ma1HacCovariance(const Eigen::MatrixXd& H, const Eigen::MatrixXd& Z,
-                                 const Eigen::VectorXd& r, const std::vector<int>& groups) {
-  const Eigen::Index n = H.rows(), p = H.cols();
-  const Eigen::MatrixXd A = Z.transpose() * H;
-  const Eigen::MatrixXd Ainv = A.fullPivLu().inverse();
-  // Leverages of the (IV) hat matrix P = H·A⁻¹·Zᵀ (r = (I − P)·e): E[r_i²] ≈ (1 − h_ii)·σ_i²,
-  // so each residual is scaled by 1/√(1 − h_ii) (HC2, MacKinnon & White 1985) — without it the
-  // sandwich is biased low by ~p/n, most where rows are few and influential.
-  Eigen::VectorXd u(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double h = H.row(i).dot(Ainv * Z.row(i).transpose());
-    u[i] = r[i] / std::sqrt(std::max(0.05, 1.0 - h));  // h < 0.95: guard a single dominant row
-  }
-  // Middle matrix: Σ_i z_i z_iᵀ u_i² + Σ_{adjacent pairs in a group} (z_i z_{i−1}ᵀ + z_{i−1} z_iᵀ)
-  // u_i u_{i−1} — each row's own variance and its own covariance with the neighbour it shares
-  // an endpoint with (truncated kernel, lag 1: exact for an MA(1)).
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(p, p);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    S.noalias() += (u[i] * u[i]) * Z.row(i).transpose() * Z.row(i);
-    if (i > 0 && groups[i] == groups[i - 1]) {
-      const Eigen::MatrixXd C = (u[i] * u[i - 1]) * Z.row(i).transpose() * Z.row(i - 1);
-      S += C + C.transpose();
-    }
-  }
-  // The truncated kernel need not be positive semi-definite in a sample: clip at zero.
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S);
-  S = es.eigenvectors() * es.eigenvalues().cwiseMax(0.0).asDiagonal() * es.eigenvectors().transpose();
-  return Ainv * S * Ainv.transpose();
-}
-
 Eigen::MatrixXd Ma1VarianceModelCovariance(const Eigen::MatrixXd& H, const Eigen::MatrixXd& Z,
                                            const Eigen::VectorXd& r, const std::vector<int>& groups,
                                            const Eigen::MatrixXd& features,

@@ -5,9 +5,6 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <sstream>
-#include <cstdio>
-#include <cstdlib>
-#include <map>
 
 #include "uuvplan/ident/regression.h"
 #include "uuvplan/model/effects.h"
@@ -304,8 +301,11 @@ std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofIn
       if (!lu.isInvertible()) break;
       const Eigen::VectorXd psi = lu.solve(Zw.transpose() * Yw);
       if (!psi.allFinite() || !(psi[0] > 0)) break;
-      // Cov = A⁻¹ZᵀΩZA⁻ᵀ with Ω the MA(1) of the (weighted) residuals within runs: the rows
-      // share their endpoints, and the integrals add white errors besides.
+      // Cov = A⁻¹ZᵀΩZA⁻ᵀ with Ω a heteroscedastic MA(1) of the (weighted) residuals within runs:
+      // the rows share their endpoints (seed 002 eqs. 20–26: Y_k = ξ̃(t_k) − ξ̃(t_{k−1})), and the
+      // integrals add errors that grow with the row's sensitivity to the velocity. White's
+      // per-row r_k² (HC) was tried: with ~50 rows and 4 unknowns (URIS yaw, pitch) its σ
+      // scattered by a factor 2 and covered 68–81%; the fitted variance model pools them.
       const Eigen::VectorXd r = Yw - Fc * psi;
       const int nr = static_cast<int>(R.Y.size());
       // Converged when no coefficient moved by more than 5% of its σ.
@@ -337,15 +337,6 @@ std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofIn
       features.col(0) = Ak;
       features.col(1) = Ak.cwiseAbs2();
       const Eigen::MatrixXd cov = Ma1VarianceModelCovariance(Fc, Zw, r, R.run, features);
-      if (std::getenv("OSDBG")) {
-        const int nr2 = static_cast<int>(r.size());
-        std::map<int,int> runlen; for (int x : R.run) runlen[x]++;
-        std::fprintf(stderr, "DBG rows %d runs %zu:", nr2, runlen.size());
-        for (int l = 0; l <= 4; ++l) { double c = 0; int np2 = 0; for (int i = l; i < nr2; ++i) if (R.run[i] == R.run[i-l]) { c += r[i]*r[i-l]; ++np2; } std::fprintf(stderr, " l%d %.3g(%d)", l, np2 ? c/np2 : 0.0, np2); }
-        const Eigen::MatrixXd c0 = Ma1Covariance(Fc, Zw, r, R.run);
-        std::fprintf(stderr, " sig hac/ma1:"); for (int j = 0; j < psi.size(); ++j) std::fprintf(stderr, " %.3f", std::sqrt(cov(j,j)/c0(j,j)));
-        std::fprintf(stderr, "\n");
-      }
       bool converged = true;
       for (int j = 0; j < psi.size(); ++j) {
         converged = converged && std::abs(psi[j] - res.psi[j]) <= 0.05 * std::sqrt(std::max(0.0, cov(j, j)));

@@ -38,6 +38,10 @@ struct IntegralInertiaOptions {
   /// Correct the errors-in-variables bias of the noisy filtered velocity in H (corrected
   /// least squares with the filter's known noise variance).
   bool errors_in_variables = true;
+  /// With a measured velocity, use its samples (white noise of the declared σ, removed by the
+  /// errors-in-variables correction) in H and in the drag integrals instead of the smoothed
+  /// ones; the noise part of σ_m is then the exact propagation of that white noise (σ_white).
+  bool raw_measured_velocity = true;
   /// Integration step for the regressor integrals (s).
   double max_step_s = 0.05;
   double max_condition = 1e8;
@@ -51,6 +55,7 @@ struct IntegralInertiaResult {
   double sigma = 0.0;             ///< reported σ_m (HAC ⊕ propagated)
   double sigma_eq11 = 0.0;        ///< seed 000 eqs. 11–12
   double sigma_hac = 0.0;         ///< Newey–West only
+  double sigma_white = 0.0;       ///< known white sensor noise propagated (raw measured velocity; 0 otherwise)
   double sigma_known = 0.0;       ///< from the known parameters' covariance
   std::vector<double> run_c, run_b;  ///< per run of samples
   std::vector<int> run_trial;        ///< trial index of each run

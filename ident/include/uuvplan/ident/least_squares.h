@@ -96,13 +96,6 @@ Eigen::MatrixXd DifferencedCovariance(const Eigen::MatrixXd& H, const Eigen::Vec
 Eigen::MatrixXd Ma1Covariance(const Eigen::MatrixXd& H, const Eigen::MatrixXd& Z,
                               const Eigen::VectorXd& residuals, const std::vector<int>& groups);
 
-/// Heteroscedasticity- and autocorrelation-consistent version of Ma1Covariance (White /
-/// Newey–West with a truncated lag-1 kernel within groups, HC2 leverage correction):
-/// Cov(θ) = A⁻¹·S·A⁻ᵀ, A = ZᵀH, S = Σ_i z_i z_iᵀ ũ_i² + Σ_{i,i−1 same group} (z_i z_{i−1}ᵀ +
-/// z_{i−1} z_iᵀ)·ũ_i ũ_{i−1}, ũ_i = r_i/√(1 − h_ii), h_ii = h_i A⁻¹ z_iᵀ; S clipped to PSD.
-Eigen::MatrixXd Ma1HacCovariance(const Eigen::MatrixXd& H, const Eigen::MatrixXd& Z,
-                                 const Eigen::VectorXd& residuals, const std::vector<int>& groups);
-
 /// Ma1Covariance with a heteroscedastic Ω from a parametric variance model: the leverage-
 /// corrected squared residuals ũ_i² = r_i²/(1 − h_ii) are regressed on [1, features_i] (least
 /// squares), v_i the fitted values (≥ 5% of their mean); ρ the lag-1 correlation of ũ/√v

@@ -20,9 +20,13 @@
 // Savitzky–Golay window apart (the endpoint errors of consecutive rows are then nearly
 // independent, and the integrals of ξ̃ average the noise away). Rows share an endpoint, so
 // the residuals are an MA(1) within each run (differenced endpoint noise plus the white errors
-// of the integrals): the covariance estimates that structure (CovarianceKind::kDifferenced)
-// instead of assuming white residuals, which overstates σ several-fold for position-derived
-// velocities. Rows never span a large command step (runs are split there), and rows are
+// of the integrals): the covariance estimates that structure instead of assuming white
+// residuals, which overstates σ several-fold for position-derived velocities. With the
+// instrumental variables (default) it is a sandwich over a heteroscedastic MA(1) fitted to the
+// leverage-corrected residuals (Ma1VarianceModelCovariance): variance v_k = c0 + c1·A_k +
+// c2·A_k², A_k = (∂F_k/∂ξ)·ψ the row's sensitivity to a velocity error held over it (the
+// integral errors grow with the speed where the drag is quadratic), lag-1 correlation ρ pooled;
+// without them (iv_iterations = 0) the homoscedastic MA(1) (CovarianceKind::kDifferenced). Rows never span a large command step (runs are split there), and rows are
 // weighted by their trial's noise (trials filtered with different windows differ tenfold).
 #pragma once
 
