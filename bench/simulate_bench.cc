@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
   const HeldYawRate held_aux(duration);
   const YawRate aux;
   const TrialConditions c{held.get(), 1, 0.0, &held_aux};
-  const TrialConditions c_sine{sine.get(), 1, 0.0, &aux};
+  const TrialConditions c_sine{sine.get(), 1, 0.0, &held_aux};
   std::vector<double> times;
   for (int i = 0; i <= static_cast<int>(duration * rate); ++i) times.push_back(i / rate);
   SimulationOptions o;

@@ -458,6 +458,10 @@ ErrorBreakdown Breakdown(const model::Vehicle& vehicle, const model::DofModel& m
       sxx += (t - mt) * (t - mt);
     }
     b.drift_per_hour = sxx > 0 ? sxy / sxx : 0.0;
+    const auto [first, last] = std::minmax_element(
+        drift_points.begin(), drift_points.end(),
+        [](const auto& a, const auto& c) { return a.first < c.first; });
+    b.campaign_span_h = last->first - first->first;
   }
   return b;
 }
@@ -539,10 +543,22 @@ std::string What(const Finding& f, const ErrorBreakdown& b, const std::string& d
       s << "errors follow the motion of other degrees of freedom (" << detail.substr(0, 1)
         << "·" << detail.substr(1, 1) << ")";
       return s.str();
-    case Effect::kParameterDrift:
-      s << "the simulated speed error drifts by " << Percent(b.drift_per_hour)
-        << " per hour of campaign";
+    case Effect::kParameterDrift: {
+      // drift·t_c·φ (force_terms_impl.h): the thrust's relative change per second of campaign.
+      const double per_s = f.params.empty() ? 0.0 : f.params[0].value;
+      std::ostringstream rate;
+      rate.precision(2);
+      rate << std::abs(100.0 * per_s * 3600.0);
+      s << "the thrust " << (per_s >= 0 ? "grows" : "falls") << " by "
+        << Percent(per_s * 3600.0 * b.campaign_span_h) << " from the first to the last trial ("
+        << b.campaign_span_h << " h apart, " << rate.str() << "% per hour)";
+      if (b.campaign_span_h > 24.0) {
+        s << ". The trials are days apart: ballast, battery or thrust map may differ between "
+             "sessions; if each session used its own command amplitude, a thrust map wrong in "
+             "shape looks the same (compare one amplitude across sessions)";
+      }
       return s.str();
+    }
   }
   return std::string(model::EffectName(f.effect));
 }

@@ -134,15 +134,21 @@ int RunDemo(const DemoOptions& o) {
               << t.travel[1] << "] m\n";
   }
   for (const auto& [dof, pred] : schedule.schedule.predicted) {
-    std::cout << "   predicted sigma (whole schedule, a priori):\n     ";
+    std::cout << "   predicted sigma (whole schedule, a priori):\n";
+    std::string line;  // three columns of 38 characters, no trailing blanks
     int column = 0;
     for (const auto& [name, sigma] : pred.sigma) {
       std::ostringstream item;
       item << name << " " << std::setprecision(2) << std::defaultfloat << sigma;
-      std::cout << std::left << std::setw(38) << item.str() << std::right;
-      if (++column % 3 == 0) std::cout << "\n     ";
+      line += item.str();
+      if (++column % 3 == 0 || column == static_cast<int>(pred.sigma.size())) {
+        std::cout << "     " << line << "\n";
+        line.clear();
+      } else {
+        line.resize(std::max<std::size_t>(line.size() + 1, 38 * (column % 3)), ' ');
+      }
     }
-    std::cout << std::fixed << "\n";
+    std::cout << std::fixed;
   }
   const planner::PoolCheckResult check =
       planner::CheckPool(truth.vehicle, pool, schedule.schedule, planner::PoolCheckOptions{});

@@ -101,7 +101,7 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
     out << "  " << ++i << ". " << model::EffectName(f.effect) << " (" << model::DofName(f.dof)
         << "): " << f.what << "\n     extension:";
     for (const auto& p : f.params) {
-      out << " " << p.name << " = " << std::setprecision(4) << p.value << " ± " << p.sigma;
+      out << " " << p.name << " = " << Cell(p.value) << " ± " << Cell(p.sigma);
     }
     out << "\n     evidence: likelihood ratio D = " << std::setprecision(1) << f.statistic << " on "
         << f.added_parameters << " parameter(s), p = " << std::scientific << std::setprecision(1)

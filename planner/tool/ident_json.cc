@@ -238,16 +238,12 @@ json IdentifyJson(const ident::IdentifyResult& r) {
           {"notes", r.notes}};
 }
 
-namespace {
-
-std::string Cell(double v, int precision = 4) {
+std::string Cell(double v, int precision) {
   if (!std::isfinite(v)) return "-";
   std::ostringstream os;
   os << std::setprecision(precision) << v;
   return os.str();
 }
-
-}  // namespace
 
 void PrintIdentifyTable(const ident::IdentifyResult& r, std::ostream& out) {
   for (const auto& d : r.dofs) {

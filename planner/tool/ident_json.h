@@ -32,4 +32,7 @@ nlohmann::json ParamsJson(const ident::DofIdentification& dof);
 /// fit figures, then warnings and what was excluded from the data.
 void PrintIdentifyTable(const ident::IdentifyResult& result, std::ostream& out);
 
+/// A number for a table: `precision` significant digits, "-" when not finite.
+std::string Cell(double v, int precision = 4);
+
 }  // namespace uuvplan::tool

@@ -9,6 +9,7 @@
 #include "support/hidden_effect.h"
 #include "uuvplan/ident/chi_square.h"
 #include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/model/io.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -100,6 +101,29 @@ TEST(DiagnosisTest, CouplingSigmaIncludesTheNoiseOfTheLoggedVelocities) {
   bool noted = false;
   for (const auto& n : a.notes) noted = noted || n.find("noise of the logged velocities") != std::string::npos;
   EXPECT_TRUE(noted);
+}
+
+// Real logs are the final judge (docs/diagnosis.md, "On real logs"; the identification of the
+// same logs is tested in ident_cli_test.cc). ../shared/data/bluerov-yaw-2016/README.md, defect 2:
+// the fit improves markedly when the torque passes through a first-order lag of about 60 ms (a
+// 20–30 ms pure delay fits less well). The diagnosis must name that effect first, with a lag of
+// the same order — 40–120 ms: the README's 60 ms came from an equation-error fit on a grid of
+// lags, and motor spin-up plus command transport make the exact value uncertain — and it must
+// pay off on the held-out runs yaw_4, yaw_5: ≥ 10% (a ~70 ms lag against a time constant
+// I/k ≈ 0.25 s; 19% on these logs).
+TEST(DiagnosisTest, RealBluerovYawRunsShowTheThrusterLag) {
+  const model::Campaign campaign =
+      model::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) + "/data/bluerov-yaw-2016/campaign.yaml");
+  const DiagnosisResult r = Diagnose(campaign, DiagnoseOptions{});
+  ASSERT_FALSE(r.findings.empty());
+  const Finding& first = r.findings.front();
+  EXPECT_EQ(first.effect, model::Effect::kThrusterLag);
+  EXPECT_EQ(first.dof, model::Dof::kYaw);
+  ASSERT_EQ(first.params.size(), 1u);
+  EXPECT_GT(first.params[0].value, 0.04);
+  EXPECT_LT(first.params[0].value, 0.12);
+  EXPECT_EQ(first.gain.on, "validate");
+  EXPECT_GT(first.gain.relative, 0.10);
 }
 
 }  // namespace

@@ -3,9 +3,11 @@
 // inertia.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "uuvplan/model/dof_model.h"
+#include "uuvplan/model/excitation.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/simulator.h"
 
@@ -235,6 +237,31 @@ TEST(SimulatorTest, PiecewiseConstantInputIsSampledOncePerStepWithTheSameResult)
   const Trajectory reference = SimulateMeasured(*f.model, f.theta, {&slow, 1, 50.0, &aux}, times, o);
   // Same arithmetic on the same samples: equal to rounding.
   EXPECT_LT((fast.x - reference.x).cwiseAbs().maxCoeff(), 1e-12 * (1 + reference.x.cwiseAbs().maxCoeff()));
+}
+
+TEST(ExcitationTest, SineAgreesWithLibmAtStageTimesShiftsAndRevisits) {
+  // SineExcitation answers an evenly spaced run of times by rotating its last value
+  // (excitation.cc). Whatever the order of the queries, the answer must be
+  // offset + amplitude·sin(ω·t) to rounding: 1e-12 of |offset| + |amplitude| (the argument ω·t
+  // itself carries ~1e-14 relative rounding at t = 600 s, a rotation 1e-16, 256 between anchors).
+  const double offset = 35.0, amplitude = 25.0, omega = 2 * M_PI / 26;
+  const auto sine = MakeSineExcitation(offset, amplitude, omega, 0, 600.0);
+  const double tol = 1e-12 * (offset + amplitude);
+  double worst = 0.0;
+  auto check = [&](double t) {
+    worst = std::max(worst, std::abs(sine->Force(t) - (offset + amplitude * std::sin(omega * t))));
+  };
+  // RK4 stages of a 0.01 s step, on a grid shifted by a sensor delay of 0.3 s (spacings that
+  // differ by ~1e-12 s from step to step), each step end asked twice.
+  for (int k = 0; k < 60000; ++k) {
+    const double ta = k * 0.01 - 0.3, te = (k + 1) * 0.01 - 0.3;
+    check(ta + 0.5 * (te - ta));
+    check(te);
+    check(te);
+  }
+  // Back in time, an irregular spacing, then a new even run.
+  for (double t : {12.0, 11.5, 11.5 + 1e-7, 300.123, 300.133, 300.143, 300.153, 0.0}) check(t);
+  EXPECT_LE(worst, tol);
 }
 
 TEST(VehicleTest, RomeoYawInertiaOfAUniformBox) {

@@ -21,6 +21,14 @@ int main(int argc, char** argv) {
   const std::string only = argc > 3 ? argv[3] : "";
   std::vector<std::optional<model::Effect>> effects = {std::nullopt};
   for (model::Effect e : model::kAllEffects) effects.push_back(e);
+  bool known = only.empty() || only == "none";
+  for (model::Effect e : model::kAllEffects) known = known || only == model::EffectName(e);
+  if (draws <= 0 || first == 0 || !known || argc > 4) {
+    std::fprintf(stderr,
+                 "usage: diagnose_validation [draws per effect > 0, default 200] [first seed > 0, "
+                 "default 1] [effect: none or one of the contract's effect names]\n");
+    return 2;
+  }
   int exit_code = 0;
   for (const auto& effect : effects) {
     const std::string name = effect ? std::string(model::EffectName(*effect)) : "none";

@@ -49,6 +49,14 @@ int main(int argc, char** argv) {
                                    {"romeo_yaw", "romeo", t::RomeoYawDesigns()},
                                    {"vsor", "vsor", t::VsorDesigns()},
                                    {"uris", "uris", t::UrisDesigns()}};
+  bool known = only.empty() || only == "crb";
+  for (const Case& c : cases) known = known || only == c.name;
+  if (reps <= 1 || !known || argc > 3) {
+    std::fprintf(stderr,
+                 "usage: identify_validation [repetitions > 1, default 200] [case: romeo_surge, "
+                 "romeo_heave, romeo_yaw, vsor, uris or crb]\n");
+    return 2;
+  }
   int exit_code = 0;
   int cells = 0, in_band = 0;
   for (const Case& c : cases) {

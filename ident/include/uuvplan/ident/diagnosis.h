@@ -76,6 +76,7 @@ struct ErrorBreakdown {
   std::vector<ErrorGroup> by_command; ///< small commands (|φ| < 20% of the largest) / others
   double lag_s = 0.0;                 ///< measured velocity lags the simulation by this (s)
   double drift_per_hour = 0.0;        ///< trend of the relative speed error over campaign time
+  double campaign_span_h = 0.0;       ///< campaign time between the first and last trial's middle
   double velocity_mae = 0.0;          ///< overall
 };
 
