@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <string>
 
 #include "uuvplan/model/dof_model.h"
@@ -65,17 +66,20 @@ int main(int argc, char** argv) {
   s.ballast = true;
   s.free_eta = {"eta.front.neg", "eta.rear.pos"};
   s.asymmetric_drag = s.thruster_lag = s.deadzone = s.advance_speed_loss = true;
-  s.sensor_delay = s.parameter_drift = true;
+  s.sensor_delay = s.parameter_drift = s.thrust_map = true;
+  s.thrust_reference = 60.0;
   s.coupling = {"vr", "rr"};
   const DofModel model(v, s);
-  const Eigen::VectorXd theta = model.Theta({{"m", 890},        {"k", 46.9},
+  const std::map<std::string, double> named = {{"m", 890},        {"k", 46.9},
                                               {"k_neg", 57.9},  {"kq", 306.2},
                                               {"kq_neg", 331.4}, {"bias", 1.5},
                                               {"bias_step", 0.7}, {"eta.front.neg", 0.89},
                                               {"eta.rear.pos", 0.73}, {"advance_loss", 2.0},
                                               {"coupling.vr", 100.0}, {"coupling.rr", 30.0},
                                               {"drift", -2e-4}, {"lag", 0.4},
-                                              {"deadzone", 3.0}, {"sensor_delay", 0.3}});
+                                              {"deadzone", 3.0}, {"sensor_delay", 0.3},
+                                              {"thrust_exponent", -0.3}};
+  const Eigen::VectorXd theta = model.Theta(named);
   const double duration = 600.0, rate = 100.0;
   const auto sine = MakeSineExcitation(35.0, 25.0, 2 * M_PI / 26, 0, duration);
   std::vector<double> cmd_t, cmd_f;
@@ -101,6 +105,14 @@ int main(int argc, char** argv) {
   }
   const double ms_sine =
       BestMs(reps, [&] { sink += SimulateMeasured(model, theta, c_sine, times, o).x(100, 1); });
+  // The thrust map's shape costs an exp and a log per input sample: once per breakpoint of a
+  // held input, twice per step of a continuous one. Issue #2's terms are all but that one.
+  ModelStructure s2 = s;
+  s2.thrust_map = false;
+  const DofModel model2(v, s2);
+  const Eigen::VectorXd theta2 = model2.Theta({}, &named);
+  const double ms_sine2 =
+      BestMs(reps, [&] { sink += SimulateMeasured(model2, theta2, c_sine, times, o).x(100, 1); });
   o.sensitivities = true;
   const double ms_s =
       BestMs(std::max(1, reps / 4), [&] { sink += SimulateMeasured(model, theta, c, times, o).x(100, 1); });
@@ -109,6 +121,7 @@ int main(int argc, char** argv) {
   std::printf("simulate: held 20 Hz commands, state only  best of %d: %.2f ms (target < 5 ms)\n",
               reps, ms);
   std::printf("simulate: continuous sine, state only      best of %d: %.2f ms\n", reps, ms_sine);
+  std::printf("simulate: continuous sine, no thrust_map   best of %d: %.2f ms\n", reps, ms_sine2);
   std::printf("simulate: held commands + sensitivities   best of %d: %.2f ms\n",
               std::max(1, reps / 4), ms_s);
   return sink == 12345.0;  // keep the work observable

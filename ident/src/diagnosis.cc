@@ -275,6 +275,27 @@ std::vector<Candidate> CandidatesFor(Effect effect, const model::Vehicle& vehicl
         }
       }
       break;
+    case Effect::kThrustMap:
+      if (!s.thrust_map) {
+        // The shape shows only across command levels: at a single |φ| it is a pure scale
+        // (absorbed by m, k, kq, bias). Levels spanning less than a factor 1.5 are not tested.
+        const double fmax = MaxForce(trials);
+        double fmin = fmax;
+        for (const TrialData* t : trials) {
+          for (double f : t->force) {
+            if (std::abs(f) > 0.01 * fmax) fmin = std::min(fmin, std::abs(f));
+          }
+        }
+        if (fmax > 0 && fmin < fmax / 1.5) {
+          Candidate c = make("");
+          c.structure.thrust_map = true;
+          c.structure.thrust_reference = fmax;  // η, m, k, kq keep their meaning at the largest command
+          c.start[model::param::kThrustExponent] = 0.0;
+          c.added.push_back(model::param::kThrustExponent);
+          out.push_back(c);
+        }
+      }
+      break;
   }
   return out;
 }
@@ -557,6 +578,20 @@ std::string What(const Finding& f, const ErrorBreakdown& b, const std::string& d
              "sessions; if each session used its own command amplitude, a thrust map wrong in "
              "shape looks the same (compare one amplitude across sessions)";
       }
+      return s.str();
+    }
+    case Effect::kThrustMap: {
+      // u = u0·(|u0|/u_ref)^p: at a fifth of the largest command the force is 0.2^p of nominal.
+      const double p = f.params.empty() ? 0.0 : f.params[0].value;
+      const double fifth = std::pow(0.2, p) - 1.0;
+      s << "the delivered force grows as |command|^" << 1.0 + p << ", not in proportion: at a "
+        << "fifth of the largest command it is " << Percent(fifth) << (fifth >= 0 ? " above" : " below")
+        << " what the thrust map says";
+      if (const ErrorGroup* g = Labeled(b.by_command, "small commands (|phi| < 20% of the largest)")) {
+        s << " (the standard simulation " << Over(g->relative) << " speed by " << Percent(g->relative)
+          << " for small commands)";
+      }
+      s << ": the thrust map is wrong in shape";
       return s.str();
     }
   }

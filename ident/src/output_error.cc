@@ -93,6 +93,8 @@ bool Admissible(const model::DofModel& model, const Eigen::VectorXd& theta) {
     const std::string& n = names[j];
     if ((n == model::param::kMass || n == model::param::kLag) && !(theta[j] > 0)) return false;
     if ((n == model::param::kDeadzone || n == model::param::kSensorDelay) && !(theta[j] >= 0)) return false;
+    // thrust_map: the delivered force u0·(|u0|/u_ref)^p must grow with the command.
+    if (n == model::param::kThrustExponent && !(theta[j] > -0.95)) return false;
     if (!std::isfinite(theta[j])) return false;
   }
   return true;
@@ -301,7 +303,7 @@ class Problem {
       dr_.resize(ng, 2);
       std::vector<double> x(nx), dx(nx);
       for (std::size_t k = 0; k + 1 < ng; ++k) {
-        const model::InputSample in = model.SampleInput(tp.grid[k], c);
+        const model::InputSample in = model.SampleInput(tp.grid[k], c, theta.data());
         for (int s = 0; s < nx; ++s) x[s] = g.x(k, s);
         model.Derivative(tp.grid[k], x.data(), in, c, theta.data(), dx.data());
         dl_(k, 0) = dx[0];

@@ -49,6 +49,15 @@ DofModel::DofModel(const Vehicle& vehicle, const ModelStructure& s) : structure_
     delay_index_ = static_cast<int>(names_.size());
     names_.push_back(param::kSensorDelay);
   }
+  if (s.thrust_map) {
+    if (!(s.thrust_reference > 0) || !std::isfinite(s.thrust_reference)) {
+      throw InputError(std::string(DofName(s.dof)),
+                       "thrust_map reference force " + std::to_string(s.thrust_reference) +
+                           ": expected a positive number");
+    }
+    thrust_exponent_index_ = static_cast<int>(names_.size());
+    names_.push_back(param::kThrustExponent);
+  }
 }
 
 int DofModel::ParameterIndex(std::string_view name) const {
@@ -77,13 +86,13 @@ double DofModel::ActuatorInput(double phi_n, const double* theta) const {
   return internal::DofModelKernel::ActuatorInput(*this, phi_n, theta);
 }
 
-InputSample DofModel::SampleInput(double t, const TrialConditions& c) const {
-  return internal::DofModelKernel::SampleInput(*this, t, c);
+InputSample DofModel::SampleInput(double t, const TrialConditions& c, const double* theta) const {
+  return internal::DofModelKernel::SampleInput(*this, t, c, theta);
 }
 
 TermContext DofModel::Context(double t, const double* x, const InputSample& in,
-                              const TrialConditions& c, const double* theta) const {
-  return internal::DofModelKernel::Context(*this, t, x, in, c, theta);
+                              const TrialConditions& c) const {
+  return internal::DofModelKernel::Context(*this, t, x, in, c);
 }
 
 double DofModel::TotalForce(const TermContext& tc, const double* theta) const {

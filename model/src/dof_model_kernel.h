@@ -11,25 +11,52 @@
 namespace uuvplan::model::internal {
 
 struct DofModelKernel {
-  /// u = sign(phi_n)·max(|phi_n| - d, 0), the commanded force after the dead zone.
-  static double ActuatorInput(const DofModel& m, double phi_n, const double* theta) {
-    if (m.deadzone_index_ < 0) return phi_n;
-    const double excess = std::abs(phi_n) - theta[m.deadzone_index_];
-    return excess > 0 ? std::copysign(excess, phi_n) : 0.0;
+  /// The actuator path of seed-free effects, evaluated once per input sample (not per RK4
+  /// stage: a held input is sampled once per step):
+  ///   u0 = sign(phi_n)·max(|phi_n| − d, 0)     dead zone;      ∂u0/∂d = −sign(phi_n) outside it
+  ///   u  = u0·r^p,  r = |u0|/u_ref              thrust map;     ∂u/∂u0 = (1 + p)·r^p, ∂u/∂p = u·ln r
+  static void Actuate(const DofModel& m, const double* theta, InputSample* in) {
+    const double phi_n = in->phi_n;
+    const int dz = m.deadzone_index_, tm = m.thrust_exponent_index_;
+    double u0 = phi_n, du0_dd = 0.0;
+    if (dz >= 0) {
+      const double excess = std::abs(phi_n) - theta[dz];
+      u0 = excess > 0 ? std::copysign(excess, phi_n) : 0.0;
+      du0_dd = excess > 0 ? -std::copysign(1.0, phi_n) : 0.0;
+    }
+    in->u = u0;
+    in->du_dd = du0_dd;
+    in->du_dp = 0.0;
+    if (tm >= 0 && u0 != 0.0) {
+      const double ln_r = std::log(std::abs(u0) / m.structure_.thrust_reference);
+      const double g = std::exp(theta[tm] * ln_r);
+      in->u = u0 * g;
+      in->du_dd = (1.0 + theta[tm]) * g * du0_dd;
+      in->du_dp = in->u * ln_r;
+    }
   }
 
-  static InputSample SampleInput(const DofModel& m, double t, const TrialConditions& c) {
+  static double ActuatorInput(const DofModel& m, double phi_n, const double* theta) {
+    InputSample in;
+    in.phi_n = phi_n;
+    Actuate(m, theta, &in);
+    return in.u;
+  }
+
+  static InputSample SampleInput(const DofModel& m, double t, const TrialConditions& c,
+                                 const double* theta) {
     InputSample in;
     if (c.input) c.input->Sample(t, &in.phi_n, &in.mapping);
     if (m.needs_aux_ && c.aux) c.aux->At(t, &in.velocities);
+    Actuate(m, theta, &in);
     return in;
   }
 
-  [[gnu::always_inline]] static TermContext Context(const DofModel& m, double t, const double* x, const InputSample& in,
-                             const TrialConditions& c, const double* theta) {
+  [[gnu::always_inline]] static TermContext Context(const DofModel& m, double t, const double* x,
+                                                    const InputSample& in, const TrialConditions& c) {
     TermContext tc;
     tc.xi = x[1];
-    tc.phi = m.has_lag() ? x[2] : ActuatorInput(m, in.phi_n, theta);
+    tc.phi = m.has_lag() ? x[2] : in.u;
     tc.mapping = in.mapping;
     tc.t_campaign = c.start_time + t;
     tc.ballast_steps = c.ballast_steps;
@@ -61,10 +88,10 @@ struct DofModelKernel {
                                                 const InputSample& in, const TrialConditions& c,
                                                 const double* theta, const Inverses& inv,
                                                 double* dx) {
-    const TermContext tc = Context(m, t, x, in, c, theta);
+    const TermContext tc = Context(m, t, x, in, c);
     dx[0] = x[1];
     dx[1] = TotalForce(m, tc, theta) * inv.mass;
-    if (m.has_lag()) dx[2] = (ActuatorInput(m, in.phi_n, theta) - x[2]) * inv.lag;
+    if (m.has_lag()) dx[2] = (in.u - x[2]) * inv.lag;
   }
 
   /// dx/dt with its Jacobians, row-major: A = ∂f/∂x (NX × NX), B = ∂f/∂theta (NX × np); both
@@ -75,7 +102,7 @@ struct DofModelKernel {
                         const TrialConditions& c, const double* theta, const Inverses& inv,
                         double* dx, double* A, double* B) {
     const int np = m.num_parameters();
-    const TermContext tc = Context(m, t, x, in, c, theta);
+    const TermContext tc = Context(m, t, x, in, c);
     for (int i = 0; i < NX * NX; ++i) A[i] = 0.0;
     for (int i = 0; i < NX * np; ++i) B[i] = 0.0;
     double* b1 = B + np;
@@ -100,20 +127,18 @@ struct DofModelKernel {
     A[0 * NX + 1] = 1.0;
     A[1 * NX + 1] = d_xi * inv.mass;
 
-    const double phi_n = in.phi_n;
-    const double u = ActuatorInput(m, phi_n, theta);
-    // du/dd of the dead zone u = sign(phi_n)·max(|phi_n| - d, 0).
-    const int dz = m.deadzone_index_;
-    const double du_dd =
-        (dz >= 0 && std::abs(phi_n) > theta[dz]) ? -std::copysign(1.0, phi_n) : 0.0;
+    const int dz = m.deadzone_index_, tm = m.thrust_exponent_index_;
+    const double u = in.u, du_dd = in.du_dd, du_dp = in.du_dp;
     if constexpr (NX == 3) {
       A[1 * NX + 2] = d_phi * inv.mass;
       A[2 * NX + 2] = -inv.lag;
       dx[2] = (u - x[2]) * inv.lag;
       B[2 * np + m.lag_index_] = -(u - x[2]) * inv.lag * inv.lag;
       if (dz >= 0) B[2 * np + dz] = du_dd * inv.lag;
-    } else if (dz >= 0) {
-      b1[dz] = d_phi * du_dd * inv.mass;
+      if (tm >= 0) B[2 * np + tm] = du_dp * inv.lag;
+    } else {
+      if (dz >= 0) b1[dz] = d_phi * du_dd * inv.mass;
+      if (tm >= 0) b1[tm] = d_phi * du_dp * inv.mass;
     }
   }
 };

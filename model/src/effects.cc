@@ -5,9 +5,9 @@
 namespace uuvplan::model {
 
 namespace {
-constexpr std::array<std::string_view, 8> kNames = {
-    "installation_loss", "asymmetric_drag", "thruster_lag", "deadzone",
-    "advance_speed_loss", "coupling",       "sensor_delay", "parameter_drift"};
+constexpr std::array<std::string_view, 9> kNames = {
+    "installation_loss", "asymmetric_drag", "thruster_lag",    "deadzone",  "advance_speed_loss",
+    "coupling",          "sensor_delay",    "parameter_drift", "thrust_map"};
 }
 
 std::string_view EffectName(Effect e) { return kNames[static_cast<int>(e)]; }

@@ -96,7 +96,7 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
   // only the other DOFs' velocities are sampled at the inner stage times.
   const bool held = c.input && c.input->piecewise_constant();
   double t = 0.0;
-  InputSample in_a = model.SampleInput(0.0, c);
+  InputSample in_a = model.SampleInput(0.0, c, th);
   while (next_out < n_out) {
     while (next_break < breaks.size() && breaks[next_break] <= t) ++next_break;
     double b = output_times[next_out] - shift;
@@ -108,8 +108,8 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
       const double tm = Inside(ta + 0.5 * h, ta, b), te = Inside(ta + h, ta, b);
       InputSample in_m = in_a, in_e = in_a;
       if (!held) {
-        in_m = Kernel::SampleInput(model, tm, c);
-        in_e = Kernel::SampleInput(model, te, c);
+        in_m = Kernel::SampleInput(model, tm, c, th);
+        in_e = Kernel::SampleInput(model, te, c, th);
       } else if (c.aux && model.needs_aux()) {
         c.aux->At(tm, &in_m.velocities);
         c.aux->At(te, &in_e.velocities);
@@ -145,7 +145,7 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
     }
     t = b;
     if (next_break < breaks.size() && breaks[next_break] <= t) {
-      in_a = model.SampleInput(t, c);  // right limit after a jump
+      in_a = model.SampleInput(t, c, th);  // right limit after a jump
     }
     record(t);
   }

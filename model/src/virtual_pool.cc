@@ -112,7 +112,9 @@ ModelStructure TruthStructure(const Truth& truth, Dof dof) {
     if (name == param::kAdvanceLoss) s.advance_speed_loss = true;
     if (name == param::kSensorDelay) s.sensor_delay = true;
     if (name == param::kDrift) s.parameter_drift = true;
+    if (name == param::kThrustExponent) s.thrust_map = true;
   }
+  s.thrust_reference = it->second.thrust_reference;
   return s;
 }
 

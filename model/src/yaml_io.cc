@@ -618,6 +618,17 @@ void ParseSingle(const MapValue& m, const char* name, double (*read)(const Value
   SetParam(truth, name, read(v), v);
 }
 
+// thrust_map: {thrust_exponent: p > -1, reference: u_ref > 0}, u = u0·(|u0|/u_ref)^p.
+void ParseThrustMap(const MapValue& m, DofTruth* truth) {
+  m.AllowOnly({param::kThrustExponent, "reference"});
+  const Value p = m.Required(param::kThrustExponent);
+  SetParam(truth, param::kThrustExponent,
+           NumberIf(p, "a number > -1 (the delivered force must grow with the command)",
+                    [](double x) { return x > -1; }),
+           p);
+  truth->thrust_reference = Positive(m.Required("reference"));
+}
+
 // asymmetric_drag: {k_neg, kq_neg}, drag for xi < 0; a value not given is the same as for
 // xi >= 0 (params k, kq).
 void ParseAsymmetricDrag(const MapValue& m, DofTruth* truth) {
@@ -697,6 +708,9 @@ void ParseEffectSettings(Effect effect, const Value& v, Dof dof, const Vehicle& 
       break;
     case Effect::kParameterDrift:
       ParseSingle(m, param::kDrift, AnyNumber, truth);
+      break;
+    case Effect::kThrustMap:
+      ParseThrustMap(m, truth);
       break;
   }
 }

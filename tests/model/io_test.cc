@@ -10,6 +10,7 @@
 
 #include "io_test_util.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/virtual_pool.h"
 
 namespace uuvplan::model {
 namespace {
@@ -671,7 +672,35 @@ TEST(ReadTruthTest, UnknownEffect) {
               HasSubstr(At("truth.yaml", line) +
                         " dofs.surge.effects: expected an effect (installation_loss, "
                         "asymmetric_drag, thruster_lag, deadzone, advance_speed_loss, coupling, "
-                        "sensor_delay, parameter_drift), got 'dead_band'"));
+                        "sensor_delay, parameter_drift, thrust_map), got 'dead_band'"));
+}
+
+TEST(ReadTruthTest, ThrustMapNeedsAMonotoneExponentAndAReference) {
+  {
+    ScratchDir dir;
+    dir.Edit("truth.yaml", "deadzone: {deadzone: 2.5}",
+             "thrust_map: {thrust_exponent: -0.4, reference: 60}");
+    const Truth truth = ReadTruth(dir.Path("truth.yaml"));
+    const ModelStructure s = TruthStructure(truth, Dof::kSurge);
+    EXPECT_TRUE(s.thrust_map);
+    EXPECT_EQ(s.thrust_reference, 60.0);
+    EXPECT_EQ(truth.dofs.at(Dof::kSurge).params.at("thrust_exponent"), -0.4);
+  }
+  {
+    ScratchDir dir;
+    const int line = dir.Edit("truth.yaml", "deadzone: {deadzone: 2.5}",
+                              "thrust_map: {thrust_exponent: -1.2, reference: 60}");
+    EXPECT_THAT(ErrorOf([&] { ReadTruth(dir.Path("truth.yaml")); }),
+                HasSubstr(At("truth.yaml", line) + " dofs.surge.effects.thrust_map.thrust_exponent: "
+                          "expected a number > -1 (the delivered force must grow with the "
+                          "command), got '-1.2'"));
+  }
+  {
+    ScratchDir dir;
+    dir.Edit("truth.yaml", "deadzone: {deadzone: 2.5}", "thrust_map: {thrust_exponent: 0.3}");
+    EXPECT_THAT(ErrorOf([&] { ReadTruth(dir.Path("truth.yaml")); }),
+                HasSubstr("dofs.surge.effects.thrust_map: missing required key 'reference'"));
+  }
 }
 
 TEST(ReadTruthTest, UnknownEffectSetting) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/excitation.h"
@@ -86,7 +87,7 @@ TEST(SimulatorTest, StepsEndAtSegmentBreakpoints) {
 }
 
 // Every effect on: asymmetric drag, two mappings with free eta, ballast, lag, dead zone,
-// advance loss, coupling to an exogenous yaw rate, drift, sensor delay.
+// advance loss, coupling to an exogenous yaw rate, drift, sensor delay, thrust-map shape.
 struct FullModel {
   Vehicle vehicle = TwoMappingVehicle();
   ModelStructure structure;
@@ -103,13 +104,15 @@ struct FullModel {
     structure.coupling = {"rr"};
     structure.sensor_delay = true;
     structure.parameter_drift = true;
+    structure.thrust_map = true;
+    structure.thrust_reference = 40.0;
     model = std::make_unique<DofModel>(vehicle, structure);
     std::map<std::string, double> p = {
         {"m", 890},          {"k", 46.9},         {"k_neg", 57.9},  {"kq", 306.2},
         {"kq_neg", 331.4},   {"bias", 1.5},       {"bias_step", 0.7},
         {"eta.front.neg", 0.89}, {"eta.rear.pos", 0.73}, {"advance_loss", 2.0},
         {"coupling.rr", 30.0}, {"drift", -2e-4}, {"lag", 0.4},  {"deadzone", 3.0},
-        {"sensor_delay", 0.3}};
+        {"sensor_delay", 0.3}, {"thrust_exponent", -0.3}};
     theta = model->Theta(p);
   }
 };
@@ -125,9 +128,46 @@ TEST(DofModelTest, ParameterLayoutFollowsTheVocabulary) {
   FullModel f;
   const std::vector<std::string> expected = {
       "m", "k", "k_neg", "kq", "kq_neg", "bias", "bias_step", "eta.front.neg", "eta.rear.pos",
-      "advance_loss", "coupling.rr", "drift", "lag", "deadzone", "sensor_delay"};
+      "advance_loss", "coupling.rr", "drift", "lag", "deadzone", "sensor_delay", "thrust_exponent"};
   EXPECT_EQ(f.model->parameter_names(), expected);
   EXPECT_EQ(f.model->num_states(), 3);
+}
+
+// A = ∂f/∂x and B = ∂f/∂θ of Linearize against central differences of Derivative at states x
+// (nx = 2 or 3 entries each).
+void ExpectLinearizeMatchesFiniteDifferences(const DofModel& model, const Eigen::VectorXd& theta,
+                                             const TrialConditions& c, double t,
+                                             const std::vector<double>& x) {
+  const int nx = model.num_states(), np = model.num_parameters();
+  double dx[3];
+  Eigen::MatrixXd A(nx, nx), B(nx, np);
+  model.Linearize(t, x.data(), c, theta.data(), dx, A, B);
+  const double h = 1e-6;
+  for (int s = 0; s < nx; ++s) {
+    std::vector<double> xp = x, xm = x;
+    double fp[3], fm[3];
+    xp[s] += h;
+    xm[s] -= h;
+    model.Derivative(t, xp.data(), c, theta.data(), fp);
+    model.Derivative(t, xm.data(), c, theta.data(), fm);
+    for (int r = 0; r < nx; ++r) {
+      // FD error O(h²) on O(1) derivatives plus rounding 1e-16·|f|/h: 1e-6 absolute.
+      EXPECT_NEAR(A(r, s), (fp[r] - fm[r]) / (2 * h), 1e-6) << "A(" << r << "," << s << ")";
+    }
+  }
+  for (int j = 0; j < np; ++j) {
+    Eigen::VectorXd tp = theta, tm = theta;
+    const double hj = 1e-6 * std::max(1.0, std::abs(theta[j]));
+    tp[j] += hj;
+    tm[j] -= hj;
+    double fp[3], fm[3];
+    model.Derivative(t, x.data(), c, tp.data(), fp);
+    model.Derivative(t, x.data(), c, tm.data(), fm);
+    for (int r = 0; r < nx; ++r) {
+      EXPECT_NEAR(B(r, j), (fp[r] - fm[r]) / (2 * hj), 1e-6 * std::max(1.0, std::abs(B(r, j))))
+          << "B(" << r << ", " << model.parameter_names()[j] << ") at t = " << t;
+    }
+  }
 }
 
 TEST(DofModelTest, LinearizeMatchesFiniteDifferences) {
@@ -135,40 +175,29 @@ TEST(DofModelTest, LinearizeMatchesFiniteDifferences) {
   const auto input = MakeSegmentsExcitation({{40.0, 5.0, 0}, {-30.0, 5.0, 1}, {2.0, 5.0, 0}});
   const YawRate aux;
   const TrialConditions c{input.get(), 2, 100.0, &aux};
-  const int nx = 3, np = f.model->num_parameters();
   // States away from the drag kink at xi = 0 and the dead-zone kinks at |phi| = d.
   for (double t : {1.0, 7.0, 12.0}) {
     for (double xi : {-0.3, 0.05, 0.25}) {
-      const double x[3] = {1.0, xi, t < 5 ? 25.0 : -20.0};
-      double dx[3];
-      Eigen::MatrixXd A(nx, nx), B(nx, np);
-      f.model->Linearize(t, x, c, f.theta.data(), dx, A, B);
-      const double h = 1e-6;
-      for (int s = 0; s < nx; ++s) {
-        double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]}, fp[3], fm[3];
-        xp[s] += h;
-        xm[s] -= h;
-        f.model->Derivative(t, xp, c, f.theta.data(), fp);
-        f.model->Derivative(t, xm, c, f.theta.data(), fm);
-        for (int r = 0; r < nx; ++r) {
-          // FD error O(h²) on O(1) derivatives plus rounding 1e-16·|f|/h: 1e-6 absolute.
-          EXPECT_NEAR(A(r, s), (fp[r] - fm[r]) / (2 * h), 1e-6) << "A(" << r << "," << s << ")";
-        }
-      }
-      for (int j = 0; j < np; ++j) {
-        Eigen::VectorXd tp = f.theta, tm = f.theta;
-        const double hj = 1e-6 * std::max(1.0, std::abs(f.theta[j]));
-        tp[j] += hj;
-        tm[j] -= hj;
-        double fp[3], fm[3];
-        f.model->Derivative(t, x, c, tp.data(), fp);
-        f.model->Derivative(t, x, c, tm.data(), fm);
-        for (int r = 0; r < nx; ++r) {
-          EXPECT_NEAR(B(r, j), (fp[r] - fm[r]) / (2 * hj), 1e-6 * std::max(1.0, std::abs(B(r, j))))
-              << "B(" << r << ", " << f.model->parameter_names()[j] << ")";
-        }
-      }
+      ExpectLinearizeMatchesFiniteDifferences(*f.model, f.theta, c, t, {1.0, xi, t < 5 ? 25.0 : -20.0});
     }
+  }
+}
+
+TEST(DofModelTest, LinearizeWithoutLagMatchesFiniteDifferences) {
+  // Without lag the actuator path (dead zone, thrust-map shape) enters ∂(ΣF/m)/∂θ directly.
+  Vehicle vehicle = TwoMappingVehicle();
+  ModelStructure s;
+  s.dof = Dof::kSurge;
+  s.deadzone = s.thrust_map = true;
+  s.thrust_reference = 40.0;
+  const DofModel model(vehicle, s);
+  const Eigen::VectorXd theta = model.Theta(
+      {{"m", 890}, {"k", 46.9}, {"kq", 306.2}, {"bias", 1.5}, {"deadzone", 3.0}, {"thrust_exponent", 0.25}});
+  EXPECT_EQ(model.num_states(), 2);
+  const auto input = MakeSegmentsExcitation({{40.0, 5.0, 0}, {-30.0, 5.0, 1}, {7.0, 5.0, 0}});
+  const TrialConditions c{input.get(), 0, 0.0, nullptr};
+  for (double t : {1.0, 7.0, 12.0}) {
+    for (double xi : {-0.3, 0.05, 0.25}) ExpectLinearizeMatchesFiniteDifferences(model, theta, c, t, {1.0, xi});
   }
 }
 

@@ -183,6 +183,13 @@ HiddenEffectCase DrawHiddenEffectCase(std::optional<Effect> effect, std::uint64_
       case Effect::kParameterDrift:
         set("drift", (draw.Coin() ? -1.0 : 1.0) * draw.Uniform(0.15, 0.3) / campaign_time);
         break;
+      case Effect::kThrustMap:
+        // u = φ·(|φ|/F)^p about the largest command F: at the smallest step (0.15·F) the
+        // thrust is 0.15^p = 0.47–0.68 or 1.46–2.1 times nominal (notes/pitfalls.md: the
+        // BlueROV's table is off 4.8-fold at its smallest command).
+        truth.thrust_reference = force;
+        set("thrust_exponent", (draw.Coin() ? -1.0 : 1.0) * draw.Uniform(0.2, 0.4));
+        break;
     }
   }
   return c;

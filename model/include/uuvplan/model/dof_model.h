@@ -4,9 +4,10 @@
 // State x = [chi, xi, phi_a]: position, velocity, and (with thruster lag only) actuator force.
 //   dchi/dt  = xi
 //   dxi/dt   = Σ_j F_j(xi, phi_a, ·; theta_j) / m                       (seed 000 eq. 3)
-//   dphi_a/dt = (u - phi_a) / T,  u = sign(phi_n)·max(|phi_n| - d, 0)   (lag T, dead zone d)
+//   dphi_a/dt = (u - phi_a) / T,  u = u0·(|u0|/u_ref)^p,  u0 = sign(phi_n)·max(|phi_n| - d, 0)
+//                                  (lag T, dead zone d, thrust-map exponent p)
 // Without lag phi_a = u. Parameters theta = [m, term parameters..., lag, deadzone,
-// sensor_delay], names from the shared vocabulary (effects.h).
+// sensor_delay, thrust_exponent], names from the shared vocabulary (effects.h).
 #pragma once
 
 #include <Eigen/Dense>
@@ -42,12 +43,16 @@ struct TrialConditions {
   const AuxVelocities* aux = nullptr;   ///< null: other DOFs at rest
 };
 
-/// The input at one instant, sampled once per RK4 stage time: commanded force, mapping and
-/// the other DOFs' velocities.
+/// The input at one instant, sampled once per RK4 stage time (and once per step for a
+/// piecewise-constant input): commanded force, mapping, the other DOFs' velocities, and the
+/// actuator path at phi_n for the theta it was sampled with.
 struct InputSample {
   double phi_n = 0.0;
   int mapping = -1;
   std::array<double, kNumDofs> velocities{};
+  double u = 0.0;      ///< after the dead zone and the thrust map's shape (DofModel::ActuatorInput)
+  double du_dd = 0.0;  ///< ∂u/∂deadzone
+  double du_dp = 0.0;  ///< ∂u/∂thrust_exponent
 };
 
 class DofModel {
@@ -77,15 +82,17 @@ class DofModel {
   Eigen::VectorXd Theta(const std::map<std::string, double>& values,
                         const std::map<std::string, double>* fallback = nullptr) const;
 
-  /// The input of trial `c` at time t (the aux velocities only when a coupling term needs them).
-  InputSample SampleInput(double t, const TrialConditions& c) const;
+  /// The input of trial `c` at time t (the aux velocities only when a coupling term needs them)
+  /// and its actuator path for `theta`.
+  InputSample SampleInput(double t, const TrialConditions& c, const double* theta) const;
   /// The term context at time t for state x and input `in`.
-  TermContext Context(double t, const double* x, const InputSample& in, const TrialConditions& c,
-                      const double* theta) const;
-  /// Commanded force after the dead zone: u = sign(phi_n)·max(|phi_n| - d, 0).
+  TermContext Context(double t, const double* x, const InputSample& in,
+                      const TrialConditions& c) const;
+  /// Commanded force after the dead zone and the thrust map's shape:
+  /// u = u0·(|u0|/u_ref)^p, u0 = sign(phi_n)·max(|phi_n| - d, 0).
   double ActuatorInput(double phi_n, const double* theta) const;
 
-  /// dx/dt at time t, state x, input `in`.
+  /// dx/dt at time t, state x, input `in` (sampled with the same theta).
   void Derivative(double t, const double* x, const InputSample& in, const TrialConditions& c,
                   const double* theta, double* dx) const;
   /// dx/dt and its Jacobians A = ∂f/∂x (nx × nx) and B = ∂f/∂theta (nx × ntheta).
@@ -95,11 +102,11 @@ class DofModel {
   /// The same, sampling the input of `c` at t.
   void Derivative(double t, const double* x, const TrialConditions& c, const double* theta,
                   double* dx) const {
-    Derivative(t, x, SampleInput(t, c), c, theta, dx);
+    Derivative(t, x, SampleInput(t, c, theta), c, theta, dx);
   }
   void Linearize(double t, const double* x, const TrialConditions& c, const double* theta,
                  double* dx, Eigen::Ref<Eigen::MatrixXd> A, Eigen::Ref<Eigen::MatrixXd> B) const {
-    Linearize(t, x, SampleInput(t, c), c, theta, dx, A, B);
+    Linearize(t, x, SampleInput(t, c, theta), c, theta, dx, A, B);
   }
   /// Total force Σ F_j (N or N·m) at a context.
   double TotalForce(const TermContext& tc, const double* theta) const;
@@ -129,6 +136,7 @@ class DofModel {
   int lag_index_ = -1;
   int deadzone_index_ = -1;
   int delay_index_ = -1;
+  int thrust_exponent_index_ = -1;
 };
 
 }  // namespace uuvplan::model

@@ -13,6 +13,9 @@
 //                                          (seed 003 3-DOF model: surge c_vr·v·r, c_rr·r², yaw c_ur·u·r)
 //   sensor_delay                           sensor_delay: y(t) = x(t - tau) (s)
 //   drift                                  parameter_drift: F = drift·t_c·phi_a, t_c campaign time (1/s)
+//   thrust_exponent                        thrust_map: u ← u·(|u|/u_ref)^p, the delivered force of a
+//                                          thrust map wrong in shape (notes/pitfalls.md; u_ref, the
+//                                          force at which the map is right, is a setting)
 #pragma once
 
 #include <optional>
@@ -30,15 +33,17 @@ enum class Effect {
   kCoupling,
   kSensorDelay,
   kParameterDrift,
+  kThrustMap,
 };
 
 inline constexpr Effect kAllEffects[] = {
     Effect::kInstallationLoss, Effect::kAsymmetricDrag, Effect::kThrusterLag,
     Effect::kDeadzone,         Effect::kAdvanceSpeedLoss, Effect::kCoupling,
-    Effect::kSensorDelay,      Effect::kParameterDrift};
+    Effect::kSensorDelay,      Effect::kParameterDrift,   Effect::kThrustMap};
 
 /// The contract's names: installation_loss, asymmetric_drag, thruster_lag, deadzone,
-/// advance_speed_loss, coupling, sensor_delay, parameter_drift.
+/// advance_speed_loss, coupling, sensor_delay, parameter_drift; and thrust_map (an addition to
+/// the contract's table).
 std::string_view EffectName(Effect effect);
 std::optional<Effect> ParseEffect(std::string_view name);
 
@@ -55,6 +60,7 @@ inline constexpr const char* kDeadzone = "deadzone";
 inline constexpr const char* kAdvanceLoss = "advance_loss";
 inline constexpr const char* kSensorDelay = "sensor_delay";
 inline constexpr const char* kDrift = "drift";
+inline constexpr const char* kThrustExponent = "thrust_exponent";
 inline constexpr const char* kCouplingPrefix = "coupling.";
 inline constexpr const char* kEtaPrefix = "eta.";
 }  // namespace param

@@ -24,6 +24,9 @@ struct ModelStructure {
   std::vector<std::string> coupling;    ///< velocity-letter pairs, e.g. "vr", "rr", "ur"
   bool sensor_delay = false;
   bool parameter_drift = false;
+  bool thrust_map = false;
+  /// thrust_map: the commanded force at which the nominal map is right, u_ref > 0 (N or N·m).
+  double thrust_reference = 1.0;
 
   /// The standard structure of the contract: m, k, kq, bias, bias_step when `ballast`,
   /// and eta of every non-open-water direction of each of `mappings_used`.

@@ -31,6 +31,8 @@ struct DofTruth {
   std::map<std::string, double> params;
   /// Other DOFs' velocities during this DOF's trials (for coupling), by velocity letter.
   std::map<char, AuxMotion> aux_motion;
+  /// thrust_map: the commanded force at which the nominal thrust map is right (N or N·m).
+  double thrust_reference = 1.0;
 };
 
 struct Truth {
