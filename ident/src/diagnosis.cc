@@ -161,7 +161,8 @@ std::vector<char> AvailableLetters(Dof dof, const std::vector<const TrialData*>&
 
 std::vector<Candidate> CandidatesFor(Effect effect, const model::Vehicle& vehicle,
                                      const StructureFit& base,
-                                     const std::vector<const TrialData*>& trials) {
+                                     const std::vector<const TrialData*>& trials,
+                                     bool campaign_clock) {
   std::vector<Candidate> out;
   const ModelStructure& s = base.structure;
   const Values& v = base.values;
@@ -266,7 +267,7 @@ std::vector<Candidate> CandidatesFor(Effect effect, const model::Vehicle& vehicl
           t0 = std::min(t0, t->start_time);
           t1 = std::max(t1, t->start_time + t->duration);
         }
-        if (trials.size() >= 2 && t1 - t0 > 0) {
+        if (campaign_clock && trials.size() >= 2 && t1 - t0 > 0) {
           Candidate c = make("");
           c.structure.parameter_drift = true;
           c.start["drift"] = 0.0;
@@ -359,9 +360,10 @@ std::string Percent(double r) {
 
 std::string Over(double r) { return r >= 0 ? "overpredicts" : "underpredicts"; }
 
+// campaign_clock: every trial has a `start` on the campaign clock (else no drift over it).
 ErrorBreakdown Breakdown(const model::Vehicle& vehicle, const model::DofModel& model,
                          const Eigen::VectorXd& theta, const std::vector<const TrialData*>& trials,
-                         double step_s) {
+                         double step_s, bool campaign_clock) {
   ErrorBreakdown b;
   b.dof = model.dof();
   struct Acc {
@@ -465,7 +467,9 @@ ErrorBreakdown Breakdown(const model::Vehicle& vehicle, const model::DofModel& m
   b.by_command = groups(command);
   b.velocity_mae = n_all ? abs_err / n_all : 0.0;
   b.lag_s = shifts[std::max_element(corr.begin(), corr.end()) - corr.begin()];
-  if (drift_points.size() >= 2) {
+  if (!campaign_clock) {
+    b.drift_per_hour = b.campaign_span_h = std::numeric_limits<double>::quiet_NaN();
+  } else if (drift_points.size() >= 2) {
     double mt = 0, me = 0;
     for (auto [t, e] : drift_points) {
       mt += t;
@@ -763,6 +767,9 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
     nominal_options.structures[dof] = NominalStructure(vehicle, dof, mappings, ballast.size() > 1);
   }
   result.nominal = Identify(campaign, nominal_options);
+  const bool campaign_clock =
+      std::all_of(campaign.trials.begin(), campaign.trials.end(),
+                  [](const model::TrialEntry& e) { return e.has_start; });
 
   for (Dof dof : dofs) {
     const DofIdentification* nominal = result.nominal.Find(dof);
@@ -801,7 +808,23 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
     }
     std::vector<const TrialData*> all = fit;
     all.insert(all.end(), validate.begin(), validate.end());
-    const ErrorBreakdown breakdown = Breakdown(vehicle, *current.model, current.oe.theta, all, oe.step_s);
+    const ErrorBreakdown breakdown =
+        Breakdown(vehicle, *current.model, current.oe.theta, all, oe.step_s, campaign_clock);
+    if (!campaign_clock && std::count(options.candidates.begin(), options.candidates.end(),
+                                      Effect::kParameterDrift)) {
+      result.notes.push_back(std::string(model::DofName(dof)) +
+                             ": parameter_drift not tested: the campaign gives no `start` time "
+                             "for every trial, so the campaign clock is unknown");
+    }
+    if (nominal->closed_loop_suspected) {
+      result.warnings.push_back(
+          std::string(model::DofName(dof)) +
+          ": closed-loop data suspected (see the identification's warning): the logged force "
+          "reacts to the motion through a controller, so an effect found here may describe the "
+          "loop rather than the vehicle (a controller's delay looks like sensor_delay or "
+          "thruster_lag, its gains like drag or a thrust-map shape); confirm with open-loop "
+          "trials");
+    }
     result.breakdowns.push_back(breakdown);
 
     // 2–3. Greedy forward selection of significant effects.
@@ -816,7 +839,7 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
       std::vector<Significant> significant;
       for (Effect effect : options.candidates) {
         if (used.count(effect)) continue;
-        for (const Candidate& c : CandidatesFor(effect, vehicle, current, fit)) {
+        for (const Candidate& c : CandidatesFor(effect, vehicle, current, fit, campaign_clock)) {
           Values s = current.values;
           for (const auto& [n, v0] : c.start) s[n] = v0;
           StructureFit ext = FitStructure(vehicle, c.structure, fit, s, current.dropped, oe);

@@ -67,6 +67,7 @@ json DiagnosisJson(const ident::DiagnosisResult& r) {
         {"velocity_mae", b.velocity_mae}};
   }
   out["breakdown"] = breakdown;
+  out["warnings"] = r.warnings;
   out["notes"] = r.notes;
   return out;
 }
@@ -91,10 +92,16 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
     print(b.by_speed);
     print(b.by_command);
     out << "  measured velocity lags the simulation by " << std::setprecision(2) << b.lag_s
-        << " s; speed error drifts " << std::showpos << std::setprecision(1)
-        << 100.0 * b.drift_per_hour << std::noshowpos << "% per hour of campaign\n";
+        << " s; ";
+    if (std::isfinite(b.drift_per_hour)) {
+      out << "speed error drifts " << std::showpos << std::setprecision(1)
+          << 100.0 * b.drift_per_hour << std::noshowpos << "% per hour of campaign\n";
+    } else {
+      out << "drift over the campaign not assessed (no `start` times: campaign clock unknown)\n";
+    }
   }
   out << "\nFindings (ordered by gain):\n";
+  for (const auto& w : r.warnings) out << "  WARNING: " << w << "\n";
   if (r.findings.empty()) out << "  none: the standard model explains the data\n";
   int i = 0;
   for (const auto& f : r.findings) {

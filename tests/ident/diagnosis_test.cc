@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <iterator>
 
 #include "support/hidden_effect.h"
@@ -147,6 +148,24 @@ TEST(DiagnosisTest, RealBluerovRunsOfAllAmplitudesShowTheThrustMapShape) {
   EXPECT_GT(first.params[0].value, -0.7);
   EXPECT_LT(first.params[0].value, -0.3);
   EXPECT_GT(first.gain.relative, 0.10);
+}
+
+// tartan-pool-2022 is closed-loop flight without trial start times (its README, defect 1;
+// notes/pitfalls.md: say so rather than report a confident answer). The diagnosis must put the
+// closed-loop caveat beside its findings, and not test or quote a drift over a campaign clock
+// the file does not give.
+TEST(DiagnosisTest, RealClosedLoopLogsWithoutClockAreQualified) {
+  const model::Campaign campaign =
+      model::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) + "/data/tartan-pool-2022/campaign.yaml");
+  DiagnoseOptions o;
+  o.dofs = {model::Dof::kHeave};
+  const DiagnosisResult r = Diagnose(campaign, o);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_THAT(r.warnings[0], ::testing::HasSubstr("heave: closed-loop data suspected"));
+  ASSERT_EQ(r.breakdowns.size(), 1u);
+  EXPECT_TRUE(std::isnan(r.breakdowns[0].drift_per_hour));
+  for (const CandidateTest& t : r.tests) EXPECT_NE(t.effect, model::Effect::kParameterDrift);
+  EXPECT_THAT(r.notes, ::testing::Contains(::testing::HasSubstr("parameter_drift not tested")));
 }
 
 }  // namespace

@@ -75,8 +75,10 @@ struct ErrorBreakdown {
   std::vector<ErrorGroup> by_speed;   ///< low / high speed (split at the median |ξ|)
   std::vector<ErrorGroup> by_command; ///< small commands (|φ| < 20% of the largest) / others
   double lag_s = 0.0;                 ///< measured velocity lags the simulation by this (s)
-  double drift_per_hour = 0.0;        ///< trend of the relative speed error over campaign time
-  double campaign_span_h = 0.0;       ///< campaign time between the first and last trial's middle
+  /// Trend of the relative speed error over campaign time, and the campaign time between the
+  /// first and last trial's middle; NaN when a trial has no `start` (campaign clock unknown).
+  double drift_per_hour = 0.0;
+  double campaign_span_h = 0.0;
   double velocity_mae = 0.0;          ///< overall
 };
 
@@ -123,6 +125,8 @@ struct DiagnosisResult {
   std::vector<CandidateTest> tests;
   /// The extended structure and its estimate per DOF (the standard one when nothing found).
   std::vector<DofIdentification> extended;
+  /// What limits the findings' meaning (e.g. closed-loop data), to show beside them.
+  std::vector<std::string> warnings;
   std::vector<std::string> notes;
 };
 
