@@ -160,10 +160,14 @@ ForceRange DofContext::ForceRangeFor(int mapping, int sign) const {
   if (!r.feasible || !(limit > 0)) return r;
   // phi at which k·xi + kq·xi² = phi reaches the limit at the lowest drag of the box.
   const int ik = Index(model::param::kLinearDrag), iq = Index(model::param::kQuadraticDrag);
-  double phi = std::numeric_limits<double>::infinity();
+  double phi = std::numeric_limits<double>::infinity(), k_low = 0.0, kq_low = 0.0;
   for (const auto& th : check_thetas_) {
     const double k = ik >= 0 ? th[ik] : 0.0, kq = iq >= 0 ? th[iq] : 0.0;
-    phi = std::min(phi, k * limit + kq * limit * limit);
+    if (k * limit + kq * limit * limit < phi) {
+      phi = k * limit + kq * limit * limit;
+      k_low = k;
+      kq_low = kq;
+    }
   }
   if (phi < r.max_abs) {
     r.max_abs = phi;
@@ -171,8 +175,13 @@ ForceRange DofContext::ForceRangeFor(int mapping, int sign) const {
       r.feasible = false;
       std::ostringstream s;
       s << "mapping '" << vehicle_.mappings[mapping].name << "' "
-        << (sign > 0 ? "positive" : "negative") << ": min_thrust already drives "
-        << model::DofName(dof_) << " beyond the speed limit " << limit;
+        << (sign > 0 ? "positive" : "negative") << ": min_thrust needs |phi| >= " << r.min_abs
+        << ", which drives " << model::DofName(dof_) << " beyond the speed limit " << limit
+        << (model::IsRotational(dof_) ? " rad/s (max_rotation_rate)" : " m/s (max_translation_speed)")
+        << " at the lowest a priori drag (k = " << k_low << ", kq = " << kq_low
+        << "; the limit is reached at |phi| = " << phi
+        << "): give the vehicle file an a priori drag fit for " << model::DofName(dof_)
+        << " or a lower min_thrust";
       r.reason = s.str();
     }
   }

@@ -303,7 +303,8 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
     result.status = DesignStatus::kInfeasible;
     result.message =
         std::string("no mapping and direction of ") + std::string(model::DofName(ctx.dof())) +
-        " can hold a sine without propeller reversal" + (o.open_water_only ? " in open water" : "");
+        " can hold a sine without propeller reversal" + (o.open_water_only ? " in open water" : "") +
+        (result.notes.empty() ? "" : " within the speed limit (see the notes)");
     return result;
   }
 
@@ -338,6 +339,29 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
     d.id = id;
     d.duration = sp.Duration(d);
     result.trial.design = d;
+  }
+  // A "sine" whose amplitude vanishes is a steady run from rest: the force range left between
+  // min_thrust and the speed limit is too narrow for a swing that adds more than the start from
+  // rest does (VSOR yaw: [3.11, 4.25] N·m). Report it as what it is, and say why.
+  if (std::isfinite(best) &&
+      result.trial.design.amplitude <= 1e-3 * std::abs(result.trial.design.offset)) {
+    model::TrialDesign& d = result.trial.design;
+    const ForceRange range = ctx.ForceRangeFor(v.MappingIndex(d.mapping), d.offset > 0 ? 1 : -1);
+    std::ostringstream s;
+    s << d.mapping << ": the best sine has no amplitude — a steady run from rest at "
+      << d.offset << " for " << d.duration << " s carries more information than any swing within "
+      << "the force range [" << range.min_abs << ", " << range.max_abs
+      << "] that min_thrust and the speed limit leave; planned as that steady run (a wider "
+         "range — lower min_thrust, a larger max_rotation_rate / max_translation_speed — would "
+         "allow a true sine)";
+    result.notes.push_back(s.str());
+    d.kind = model::TrialKind::kSteady;
+    d.force = d.offset;
+    d.offset = d.amplitude = d.omega = 0.0;
+    const std::string suffix = "-sine";
+    if (d.id.size() > suffix.size() && d.id.compare(d.id.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      d.id = d.id.substr(0, d.id.size() - suffix.size()) + "-long-steady";
+    }
   }
   if (std::isfinite(best)) {
     // The reported information and criterion: the real sensors (design_sensors() approximates).
@@ -391,7 +415,8 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
     result.message =
         "the information of this trial (with the prior) is singular: its parameters cannot all "
         "be told apart (add steady runs in other mappings, or prior information on eta)";
-  } else if (d.duration < o.min_periods * 2 * M_PI / d.omega - 1e-6) {
+  } else if (d.kind == model::TrialKind::kSine &&
+             d.duration < o.min_periods * 2 * M_PI / d.omega - 1e-6) {
     result.status = DesignStatus::kInfeasible;
     std::ostringstream s;
     s << "only " << d.duration * d.omega / (2 * M_PI) << " periods fit the pool (at least "

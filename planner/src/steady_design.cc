@@ -375,7 +375,7 @@ SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignO
     for (int s : {+1, -1}) {
       const ForceRange r = ctx.ForceRangeFor(mi, s);
       if (!r.feasible) {
-        out.notes.push_back(r.reason);
+        infeasible << " " << r.reason << ";";
         continue;
       }
       const double lo = r.min_abs * 1.02;  // a 2% margin over min_thrust

@@ -50,7 +50,8 @@ const CommandRegistration kRegistration(
            "diagnose",
            "What the standard model's simulation gets wrong on measured trials, which physical "
            "effect causes it (installation loss, asymmetric drag, thruster lag, dead zone, "
-           "advance-speed loss, coupling, sensor delay, drift), the extended model and its gain.");
+           "advance-speed loss, coupling, sensor delay, drift, a thrust map wrong in shape), the extended "
+           "model and its gain.");
        sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml")->required();
        sub->add_option("--json", o->json, "also write the result as JSON to this file ('-' = stdout)");
        sub->add_option("--dof", o->dofs, "diagnose only this DOF (repeatable)");

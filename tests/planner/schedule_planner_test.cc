@@ -185,6 +185,25 @@ TEST_F(RomeoSchedule, WholeRomeoScheduleSaysHeaveDoesNotFit) {
   }
 }
 
+TEST(UrisSchedule, RotationWithoutADragPriorSaysWhatIsMissing) {
+  // cases/uris gives no a priori drag; the bluff-body estimate of yaw is tiny (k ≈ 0.008), so
+  // the yaw torque of min_thrust (0.1 N·m) would spin URIS past the 0.35 rad/s rate limit.
+  // The schedule cannot plan yaw, and must say why with the numbers and what would fix it.
+  const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/uris/";
+  ScheduleOptions o;
+  o.dofs = {model::Dof::kYaw};
+  const ScheduleResult r = PlanSchedule(model::ReadVehicle(dir + "vehicle.yaml"),
+                                        model::ReadPool(dir + "pool.yaml"), o);
+  ASSERT_EQ(r.dofs.size(), 1u);
+  EXPECT_EQ(r.dofs[0].status, DesignStatus::kInfeasible);
+  EXPECT_NE(r.dofs[0].message.find("min_thrust needs |phi| >= 0.1, which drives yaw beyond the "
+                                   "speed limit 0.35 rad/s"),
+            std::string::npos)
+      << r.dofs[0].message;
+  EXPECT_NE(r.dofs[0].message.find("give the vehicle file an a priori drag fit for yaw"),
+            std::string::npos);
+}
+
 // The command line (UUVPLAN_BINARY): exit statuses and JSON of schedule and check-pool.
 int RunTool(const std::string& args) {
   const std::string cmd = std::string(UUVPLAN_BINARY) + " " + args + " > /dev/null 2>&1";

@@ -3,6 +3,7 @@
 // against Ipopt on the same robust problems.
 #include "uuvplan/planner/sine_design.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/planner/criteria.h"
 #include "uuvplan/planner/fisher_information.h"
+#include "uuvplan/planner/schedule_planner.h"
 #include "uuvplan/planner/steady_design.h"
 #include "uuvplan/planner/thrust_limits.h"
 
@@ -209,6 +211,36 @@ TEST(RomeoYawSine, RespectsMinThrustAndTheRateLimit) {
   const TrialCheck c = ctx->Check(seed);
   EXPECT_FALSE(c.feasible);
   EXPECT_NEAR(c.thrust_min, 1.0 * 0.78567, 1e-3);
+}
+
+TEST(VsorYawSine, NoRoomForASwingGivesALongSteadyRunAndSaysWhy) {
+  // VSOR yaw (cases/vsor): min_thrust 2 N on two thrusters of share 0.64282 needs 3.11 N·m; the
+  // 0.35 rad/s rate limit at the lowest a priori (bluff-body) drag caps the torque at 4.25 N·m.
+  // After the schedule's steady runs, a run from rest beats any swing in that range on Ds(m)
+  // (σ(m) 0.087 against 0.110 for 4.0 ± 0.8 N·m): the sine's optimum has no amplitude. It must
+  // be reported as the steady run it is, with the reason, not as a sine of amplitude 0.
+  const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/vsor/";
+  const model::Vehicle v = model::ReadVehicle(dir + "vehicle.yaml");
+  const model::Pool pool = model::ReadPool(dir + "pool.yaml");
+  const auto ctx = DofContext::APriori(v, pool, model::Dof::kYaw, {}, nullptr);
+  const ForceRange range = ctx->ForceRangeFor(v.MappingIndex("yaw-ht1-ht7"), +1);
+  EXPECT_NEAR(range.min_abs, 2.0 / 0.64282, 1e-3);
+  EXPECT_LT(range.max_abs, 1.5 * range.min_abs);
+  ScheduleOptions o;
+  o.dofs = {model::Dof::kYaw};
+  const ScheduleResult r = PlanSchedule(v, pool, o);
+  ASSERT_EQ(r.dofs.size(), 1u);
+  const model::TrialDesign* long_run = nullptr;
+  for (const PlannedTrial& t : r.schedule.trials) {
+    if (t.design.kind == model::TrialKind::kSine) {
+      EXPECT_GT(t.design.amplitude, 1e-3 * std::abs(t.design.offset)) << "a sine must swing";
+    }
+    if (t.design.id == "yaw-long-steady") long_run = &t.design;
+  }
+  ASSERT_NE(long_run, nullptr);
+  EXPECT_EQ(long_run->kind, model::TrialKind::kSteady);
+  EXPECT_NEAR(long_run->force, range.min_abs, 1e-6 * range.min_abs);
+  EXPECT_THAT(r.dofs[0].notes, ::testing::Contains(::testing::HasSubstr("the best sine has no amplitude")));
 }
 
 }  // namespace
