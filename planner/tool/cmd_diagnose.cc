@@ -1,6 +1,7 @@
 // `uuvplan diagnose CAMPAIGN [--json F] [--dof D]...`: what the standard model's simulation
 // gets wrong, the physical effect that causes it, the extended model and its gain
-// (ident/diagnosis.h, docs/diagnosis.md). Exit 0 (findings are results, not errors), 2 on bad
+// (ident/diagnosis.h, docs/diagnosis.md). Exit 0 (findings are results, not errors), 1 when no
+// DOF could be diagnosed (its standard model could not be fitted: the notes say why), 2 on bad
 // input.
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -40,7 +41,7 @@ int Run(const DiagnoseCommandOptions& co) {
       model::WriteFileAtomically(co.json, text);
     }
   }
-  return kExitOk;
+  return result.breakdowns.empty() ? kExitActionNeeded : kExitOk;
 }
 
 const CommandRegistration kRegistration(

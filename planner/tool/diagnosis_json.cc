@@ -102,7 +102,16 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
   }
   out << "\nFindings (ordered by gain):\n";
   for (const auto& w : r.warnings) out << "  WARNING: " << w << "\n";
-  if (r.findings.empty()) out << "  none: the standard model explains the data\n";
+  if (r.findings.empty()) {
+    // breakdowns: one per DOF whose standard model could be fitted and diagnosed.
+    if (r.breakdowns.empty()) {
+      out << "  none: no DOF could be diagnosed (see the notes)\n";
+    } else {
+      out << "  none: the standard model explains the data of";
+      for (const auto& b : r.breakdowns) out << " " << model::DofName(b.dof);
+      out << "\n";
+    }
+  }
   int i = 0;
   for (const auto& f : r.findings) {
     out << "  " << ++i << ". " << model::EffectName(f.effect) << " (" << model::DofName(f.dof)

@@ -197,6 +197,22 @@ TEST(Cli, SimulateMissingTruthFileExitsTwoNamingIt) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+TEST(Cli, DiagnoseWithNothingDiagnosableExitsOneAndSaysSo) {
+  // Three samples of one surge trial: the standard model cannot be fitted (5 unknowns), so
+  // nothing is diagnosed. That is a result to act on (exit 1), not "the model explains the data".
+  const TempDir dir;
+  fs::create_directories(dir / "trials");
+  fs::copy_file(std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/vehicle.yaml", dir / "vehicle.yaml");
+  dir.Write("trials/a.csv", "t,force_surge,pos_surge\n0,1,0\n1,1,0.1\n2,1,0.2\n");
+  const std::string campaign = dir.Write(
+      "campaign.yaml",
+      "vehicle: vehicle.yaml\ntrials:\n  - file: trials/a.csv\n    dof: surge\n    mapping: surge-front\n");
+  const ToolRun r = RunTool("diagnose '" + campaign + "'", dir);
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_THAT(r.out, HasSubstr("none: no DOF could be diagnosed (see the notes)"));
+  EXPECT_THAT(r.out, HasSubstr("surge: output-error fit of the standard model failed"));
+}
+
 TEST(Cli, SimulateMalformedPlanExitsTwoNamingFileTrialAndKey) {
   const TempDir dir;
   struct Case {
