@@ -479,7 +479,18 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
   }
   if (r.estimator == FinalEstimator::kNone) {
     r.status = IdentifyStatus::kFailed;
-    r.message = "no estimate";
+    r.message = "no estimate: no estimator could fit these trials (see the warnings); they do "
+                "not excite the model (longer trials, steady runs at several levels, a sine)";
+  } else if (std::none_of(r.params.begin(), r.params.end(), [](const ParameterEstimate& e) {
+               return e.state == ParameterState::kEstimated && e.significant;
+             })) {
+    // Seed 000 §IV-D: every estimate has a percentile error above 51.02% — numbers, but no
+    // usable estimate (e.g. a trial far too short for the model).
+    r.status = IdentifyStatus::kFailed;
+    r.message = "no parameter is identified: every estimate is insignificant (percentile error "
+                "above 51.02%); the trials do not excite the model (longer trials, steady runs "
+                "at several levels, a sine)";
+    r.warnings.push_back(r.message);
   }
 
   r.timing["output_error"] = seconds_since(stage);

@@ -49,6 +49,25 @@ TEST(BadDataTest, OneConstantForceDoesNotExciteTheModel) {
   EXPECT_TRUE(AnyContains(s->notes, "too few steady-state segments", "at least"));
 }
 
+TEST(BadDataTest, ATrialAtRestIdentifiesNothingAndSaysSo) {
+  // 20 s of ROMEO surge with no thrust: the vehicle stays at rest (truth bias 0); no estimator
+  // can fit it. That is no usable estimate: status failed, which `uuvplan identify` turns into
+  // exit 1, with what would fix it. (A run whose estimates all come out insignificant fails
+  // the same way: IdentifyCliTest.ThreeSamplesIdentifyNothingAndExitOne.)
+  const model::Truth truth = testing::CaseTruth("romeo");
+  model::TrialDesign d = testing::Segments("rest", Dof::kSurge, "surge-front", {{0, 20}});
+  const model::Campaign c = VirtualCampaign(truth, {d}, 3);
+  const IdentifyResult r = Identify(c, IdentifyOptions{});
+  const DofIdentification* s = r.Find(Dof::kSurge);
+  ASSERT_NE(s, nullptr);
+  for (const auto& e : s->params) EXPECT_FALSE(e.significant && e.state == ParameterState::kEstimated) << e.name;
+  EXPECT_EQ(s->status, IdentifyStatus::kFailed) << s->message;
+  EXPECT_EQ(r.status, IdentifyStatus::kFailed);
+  EXPECT_NE(s->message.find("longer trials, steady runs at several levels, a sine"),
+            std::string::npos)
+      << s->message;
+}
+
 TEST(BadDataTest, AllNaNPositionColumnIsAnInputErrorNamingFileAndColumn) {
   const model::Truth truth = testing::CaseTruth("romeo");
   model::Campaign c = VirtualCampaign(truth, {testing::RomeoSurgeDesigns()[3]}, 3);

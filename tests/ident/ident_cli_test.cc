@@ -96,6 +96,23 @@ TEST(IdentifyCliTest, DashWritesJsonToStdoutAndBadInputExits2) {
   fs::remove_all(dir);
 }
 
+TEST(IdentifyCliTest, ThreeSamplesIdentifyNothingAndExitOne) {
+  // Three position samples of a surge trial: the output error returns numbers (m ≈ 0.5 ± 1e9),
+  // every one insignificant (percentile error > 51.02%, seed 000 §IV-D). That is no usable
+  // estimate: exit 1, saying so and what would fix it.
+  const fs::path dir = TempDir("three");
+  fs::create_directories(dir / "trials");
+  fs::copy_file(std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/vehicle.yaml", dir / "vehicle.yaml");
+  std::ofstream(dir / "trials" / "a.csv") << "t,force_surge,pos_surge\n0,1,0\n1,1,0.1\n2,1,0.2\n";
+  std::ofstream(dir / "campaign.yaml")
+      << "vehicle: vehicle.yaml\ntrials:\n  - file: trials/a.csv\n    dof: surge\n    mapping: surge-front\n";
+  const RunResult r = RunUuvplan("identify " + (dir / "campaign.yaml").string());
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("no parameter is identified: every estimate is insignificant"), std::string::npos)
+      << r.out;
+  fs::remove_all(dir);
+}
+
 TEST(IdentifyCliTest, RealBlueRovYawRuns) {
   // ../shared/data/bluerov-yaw-2016 (README "Sanity fit"): the output-error fit of yaw_1..3
   // gives I ≈ 1.04 kg·m², k ≈ 4.5 N·m·s and a validate MAE of 0.15–0.18 rad/s. The identified
