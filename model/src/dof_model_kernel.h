@@ -11,7 +11,7 @@
 namespace uuvplan::model::internal {
 
 struct DofModelKernel {
-  /// The actuator path of seed-free effects, evaluated once per input sample (not per RK4
+  /// The actuator path (effects beyond the seeds), evaluated once per input sample (not per RK4
   /// stage: a held input is sampled once per step):
   ///   u0 = sign(phi_n)·max(|phi_n| − d, 0)     dead zone;      ∂u0/∂d = −sign(phi_n) outside it
   ///   u  = u0·r^p,  r = |u0|/u_ref              thrust map;     ∂u/∂u0 = (1 + p)·r^p, ∂u/∂p = u·ln r
