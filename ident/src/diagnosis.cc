@@ -524,15 +524,14 @@ std::string What(const Finding& f, const ErrorBreakdown& b, const std::string& d
         const std::string label =
             std::string("thrust ") + (neg ? "negative" : "positive") + " in " + mapping;
         // The fitted η says how much thrust is missing; the standard model's speed error there
-        // is usually much smaller, because its m, drag and bias absorb most of the loss (seed
-        // 000 Fig. 6), so it is quoted second.
+        // can be much smaller, when its m, drag and bias absorb part of the loss (seed 000
+        // Fig. 6: the heave weight), so it is quoted second.
         s << "thrust " << (neg ? "negative" : "positive") << " in mapping " << mapping
           << " delivers " << Percent(1 - worst->value) << (worst->value <= 1 ? " less" : " more")
           << " than the open-water model";
         if (const ErrorGroup* g = Labeled(b.by_thrust, label)) {
-          s << " (the standard model, eta = 1, absorbs most of it into its other parameters: its "
-               "simulation still "
-            << Over(g->relative) << " speed there by " << Percent(g->relative) << ")";
+          s << " (with eta = 1 the standard model's simulation " << Over(g->relative)
+            << " speed there by " << Percent(g->relative) << ")";
         }
         return s.str();
       }
