@@ -93,7 +93,8 @@ bool Admissible(const model::DofModel& model, const Eigen::VectorXd& theta) {
     const std::string& n = names[j];
     if ((n == model::param::kMass || n == model::param::kLag) && !(theta[j] > 0)) return false;
     if ((n == model::param::kDeadzone || n == model::param::kSensorDelay) && !(theta[j] >= 0)) return false;
-    // thrust_map: the delivered force u0·(|u0|/u_ref)^p must grow with the command.
+    // thrust_map: the delivered force u0·(|u0|/u_ref)^p must grow with the command (p > −1);
+    // 1 + p ≥ 0.05 keeps the fit off the flat map, where m, drag and p cannot be told apart.
     if (n == model::param::kThrustExponent && !(theta[j] > -0.95)) return false;
     if (!std::isfinite(theta[j])) return false;
   }

@@ -163,8 +163,9 @@ ForceRange DofContext::ForceRangeFor(int mapping, int sign) const {
   double phi = std::numeric_limits<double>::infinity(), k_low = 0.0, kq_low = 0.0;
   for (const auto& th : check_thetas_) {
     const double k = ik >= 0 ? th[ik] : 0.0, kq = iq >= 0 ? th[iq] : 0.0;
-    if (k * limit + kq * limit * limit < phi) {
-      phi = k * limit + kq * limit * limit;
+    const double at_limit = k * limit + kq * limit * limit;
+    if (at_limit < phi) {
+      phi = at_limit;
       k_low = k;
       kq_low = kq;
     }

@@ -41,6 +41,7 @@ int Run(const DiagnoseCommandOptions& co) {
       model::WriteFileAtomically(co.json, text);
     }
   }
+  // A breakdown exists for each DOF whose standard model was fitted, i.e. diagnosed.
   return result.breakdowns.empty() ? kExitActionNeeded : kExitOk;
 }
 
