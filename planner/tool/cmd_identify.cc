@@ -3,9 +3,6 @@
 // the fit of the identified model (ident/identify.h, docs/identification.md). Exit status 0
 // when every DOF was identified, 1 when some DOF could not be (the message says what would fix
 // it), 2 on bad input.
-#include <CLI/CLI.hpp>
-#include <iostream>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,20 +11,27 @@
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/io.h"
+#include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::tool {
 namespace {
 
 using model::InputError;
 
+// The values of --closed-loop.
+constexpr model::EnumNames<ident::ClosedLoop, 3> kClosedLoopNames{{{
+    {ident::ClosedLoop::kAuto, "auto"},
+    {ident::ClosedLoop::kYes, "yes"},
+    {ident::ClosedLoop::kNo, "no"},
+}}};
+
 struct IdentifyCommandOptions {
   std::string campaign;
   std::string json;
   std::vector<std::string> dofs;
   std::vector<std::string> steady;
-  bool no_refine = false;
-  bool no_prune = false;
-  std::string closed_loop = "auto";
+  std::string closed_loop{kClosedLoopNames.Name(ident::IdentifyOptions{}.closed_loop)};
+  ident::IdentifyOptions identify;  ///< --no-refine, --no-prune bound here
 };
 
 // TRIAL:T0:T1 with TRIAL a campaign trial's file (as written) or its 0-based index.
@@ -67,67 +71,50 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
 
 int RunIdentify(const IdentifyCommandOptions& co) {
   const model::Campaign campaign = model::ReadCampaign(co.campaign);
-  ident::IdentifyOptions o;
-  for (const std::string& name : co.dofs) {
-    const auto dof = model::ParseDof(name);
-    if (!dof) {
-      throw InputError("--dof " + name, "expected one of surge, sway, heave, roll, pitch, yaw");
-    }
-    o.dofs.push_back(*dof);
-  }
+  ident::IdentifyOptions o = co.identify;
+  o.dofs = ParseDofFlags(co.dofs);
   for (const std::string& s : co.steady) AddSteadyWindow(s, campaign, &o);
-  o.refine = !co.no_refine;
-  o.prune_insignificant = !co.no_prune;
-  if (co.closed_loop == "yes") {
-    o.closed_loop = ident::ClosedLoop::kYes;
-  } else if (co.closed_loop == "no") {
-    o.closed_loop = ident::ClosedLoop::kNo;
-  } else if (co.closed_loop != "auto") {
+  const auto closed_loop = kClosedLoopNames.Parse(co.closed_loop);
+  if (!closed_loop) {
     throw InputError("--closed-loop " + co.closed_loop, "expected yes, no or auto");
   }
+  o.closed_loop = *closed_loop;
   const ident::IdentifyResult result = ident::Identify(campaign, o);
 
-  std::ostream& out = co.json == "-" ? std::cerr : std::cout;
+  std::ostream& out = ReportStream(co.json);
   out << "Identification of " << co.campaign << " (vehicle '" << campaign.vehicle.name << "', "
       << campaign.trials.size() << " trials)\n\n";
   PrintIdentifyTable(result, out);
-  if (!co.json.empty()) {
-    const std::string text = IdentifyJson(result).dump(2) + "\n";
-    if (co.json == "-") {
-      std::cout << text;
-    } else {
-      model::WriteFileAtomically(co.json, text);
-    }
-  }
+  if (!co.json.empty()) WriteJson(co.json, IdentifyJson(result));
   return result.status == ident::IdentifyStatus::kFailed ? kExitActionNeeded : kExitOk;
 }
 
-const CommandRegistration kRegistration(
-    {"identify", 40, [](CLI::App& app, std::function<int()>* run) {
-       auto o = std::make_shared<IdentifyCommandOptions>();
-       CLI::App* sub = app.add_subcommand(
-           "identify",
-           "Estimate every DOF's parameters (m, k, kq, bias, bias_step, eta) with standard "
-           "deviations from a campaign, and score the identified model by free-run simulation "
-           "on its fit and validate trials.");
-       sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml")->required();
-       sub->add_option("--json", o->json, "also write the result as JSON to this file ('-' = stdout)");
-       sub->add_option("--dof", o->dofs, "identify only this DOF (repeatable; default: every DOF "
-                                         "with fit trials)");
-       sub->add_option("--steady", o->steady,
-                       "mark a steady-state window TRIAL:T0:T1 (trial file or index, log time in "
-                       "s; repeatable); the trial's steady segments are then not detected")
-           ->take_all();
-       sub->add_flag("--no-refine", o->no_refine,
-                     "skip the output-error refinement (report the least-squares estimates)");
-       sub->add_flag("--no-prune", o->no_prune,
-                     "keep insignificant drag/bias parameters (no model selection by the "
-                     "51.02% rule)");
-       sub->add_option("--closed-loop", o->closed_loop,
-                       "whether the logs were recorded in closed loop: auto (detect), yes, no")
-           ->capture_default_str();
-       sub->callback([o, run] { *run = [o] { return RunIdentify(*o); }; });
-     }});
+void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
+  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml")->required();
+  AddJsonOption(sub, &o->json, "also write the result");
+  sub->add_option("--dof", o->dofs,
+                  "identify only this DOF (repeatable; default: every DOF with fit trials)");
+  sub->add_option("--steady", o->steady,
+                  "mark a steady-state window TRIAL:T0:T1 (trial file or index, log time in "
+                  "s; repeatable); the trial's steady segments are then not detected")
+      ->take_all();
+  sub->add_flag_callback(
+      "--no-refine", [o] { o->identify.refine = false; },
+      "skip the output-error refinement (report the least-squares estimates)");
+  sub->add_flag_callback(
+      "--no-prune", [o] { o->identify.prune_insignificant = false; },
+      "keep insignificant drag/bias parameters (no model selection by the 51.02% rule)");
+  sub->add_option("--closed-loop", o->closed_loop,
+                  "whether the logs were recorded in closed loop: auto (detect), yes, no")
+      ->capture_default_str();
+}
+
+const CommandRegistration kRegistration(MakeCommand<IdentifyCommandOptions>(
+    "identify", 40,
+    "Estimate every DOF's parameters (m, k, kq, bias, bias_step, eta) with standard "
+    "deviations from a campaign, and score the identified model by free-run simulation "
+    "on its fit and validate trials.",
+    BindIdentify, RunIdentify));
 
 }  // namespace
 }  // namespace uuvplan::tool

@@ -7,12 +7,8 @@
 // estimates, σ, pool time) and the total pool time. Deterministic for a given seed.
 // Exit status: 0 converged; 1 not converged within the budget, or a DOF cannot be given the
 // trial it needs in this pool; 2 bad input.
-#include <CLI/CLI.hpp>
 #include <cmath>
-#include <cstdint>
 #include <iomanip>
-#include <iostream>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -22,29 +18,22 @@
 #include "loop_report.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/io.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design_loop.h"
 
 namespace uuvplan::tool {
 namespace {
 
 using model::InputError;
-
-std::string Str(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 using nlohmann::json;
 
 struct LoopCliOptions {
   std::string truth;
   std::string pool;
   std::vector<std::string> dofs;
-  double target = 5.0;
-  int budget = planner::LoopOptions{}.budget;
-  std::uint64_t seed = 1;
   std::string json;
   bool verbose = false;
+  planner::LoopOptions loop;  ///< --target, --budget, --seed bound here
 };
 
 json Num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
@@ -100,40 +89,34 @@ json IterationJson(const planner::LoopIteration& it) {
           {"notes", it.notes}};
 }
 
-int RunLoopCommand(const LoopCliOptions& o) {
-  if (!(o.target > 0) || !std::isfinite(o.target)) {
-    throw InputError("--target", "expected a percentile error > 0 (%), got " + Str(o.target));
+// Before any file is read: a target and a budget the loop can reach.
+void CheckLoopFlags(const planner::LoopOptions& lo) {
+  const double target = lo.step.target_percent;
+  if (!(target > 0) || !std::isfinite(target)) {
+    throw InputError("--target",
+                     "expected a percentile error > 0 (%), got " + model::ShortestNumber(target));
   }
-  if (o.budget < 1) {
+  if (lo.budget < 1) {
     throw InputError("--budget",
-                     "expected a number of trials >= 1, got " + std::to_string(o.budget));
+                     "expected a number of trials >= 1, got " + std::to_string(lo.budget));
   }
-  const model::Truth truth = model::ReadTruth(o.truth);
-  const model::Pool pool = model::ReadPool(o.pool);
-  planner::LoopOptions lo;
-  lo.step.target_percent = o.target;
-  lo.budget = o.budget;
-  lo.seed = o.seed;
-  for (const auto& n : o.dofs) {
-    const auto d = model::ParseDof(n);
-    if (!d) throw InputError("--dof " + n, "expected surge, sway, heave, roll, pitch or yaw");
-    if (!truth.dofs.count(*d)) {
+}
+
+// The DOFs of --dof, each one the truth has the parameters to simulate.
+std::vector<model::Dof> SimulableDofs(const LoopCliOptions& o, const model::Truth& truth) {
+  const std::vector<model::Dof> dofs = ParseDofFlags(o.dofs);
+  for (const model::Dof dof : dofs) {
+    const std::string n(model::DofName(dof));
+    if (!truth.dofs.count(dof)) {
       throw InputError(o.truth, "missing dofs." + n + ".params: --dof " + n + " needs the true " +
                                     n + " parameters to simulate");
     }
-    lo.step.dofs.push_back(*d);
   }
+  return dofs;
+}
 
-  std::ostream& out = o.json == "-" ? std::cerr : std::cout;
-  out << "Design–identify loop on the virtual '" << truth.vehicle.name << "' of " << o.truth
-      << " in pool " << pool.name << " (target " << o.target << "%, budget " << o.budget
-      << " trials, seed " << o.seed << ")\n"
-      << "Parameters of interest: m; kq where significant, else k; every η "
-         "(* = above the target)\n\n";
-  const planner::LoopResult r = planner::RunLoop(
-      truth, pool, lo,
-      [&](const planner::LoopIteration& it) { PrintIteration(it, o.target, o.verbose, out); });
-
+void PrintLoopSummary(const planner::LoopResult& r, const planner::LoopOptions& lo,
+                      const model::Truth& truth, std::ostream& out) {
   out << "\n"
       << (r.converged ? "Converged" : "NOT converged") << " after " << r.iterations.size()
       << " trial(s): " << r.message << "\n"
@@ -144,56 +127,70 @@ int RunLoopCommand(const LoopCliOptions& o) {
     out << std::setprecision(0) << "; " << model::DofName(dof) << " " << t << " s";
   }
   out << std::defaultfloat << "\n\nFinal estimates against the truth:\n";
-  PrintProgress(r.progress, o.target, out, &truth);
+  PrintProgress(r.progress, lo.step.target_percent, out, &truth);
+}
 
-  if (!o.json.empty()) {
-    json iterations = json::array();
-    for (const auto& it : r.iterations) iterations.push_back(IterationJson(it));
-    json dof_time = json::object();
-    for (const auto& [dof, t] : r.dof_pool_time) dof_time[std::string(model::DofName(dof))] = t;
-    const json j = {{"iterations", iterations},
-                    {"converged", r.converged},
-                    {"pool_time", r.pool_time},
-                    {"status", std::string(planner::LoopStatusName(r.status))},
-                    {"message", r.message},
-                    {"target", o.target},
-                    {"budget", o.budget},
-                    {"seed", o.seed},
-                    {"dof_pool_time", dof_time},
-                    {"progress", ProgressJson(r.progress)},
-                    {"estimates", IdentifyJson(r.estimates)}};
-    WriteJson(o.json, j);
-  }
+json LoopJson(const planner::LoopResult& r, const planner::LoopOptions& lo) {
+  json iterations = json::array();
+  for (const auto& it : r.iterations) iterations.push_back(IterationJson(it));
+  json dof_time = json::object();
+  for (const auto& [dof, t] : r.dof_pool_time) dof_time[std::string(model::DofName(dof))] = t;
+  return {{"iterations", iterations},
+          {"converged", r.converged},
+          {"pool_time", r.pool_time},
+          {"status", std::string(planner::LoopStatusName(r.status))},
+          {"message", r.message},
+          {"target", lo.step.target_percent},
+          {"budget", lo.budget},
+          {"seed", lo.seed},
+          {"dof_pool_time", dof_time},
+          {"progress", ProgressJson(r.progress)},
+          {"estimates", IdentifyJson(r.estimates)}};
+}
+
+int RunLoopCommand(const LoopCliOptions& o) {
+  CheckLoopFlags(o.loop);
+  const model::Truth truth = model::ReadTruth(o.truth);
+  const model::Pool pool = model::ReadPool(o.pool);
+  planner::LoopOptions lo = o.loop;
+  lo.step.dofs = SimulableDofs(o, truth);
+  const double target = lo.step.target_percent;
+  std::ostream& out = ReportStream(o.json);
+  out << "Design–identify loop on the virtual '" << truth.vehicle.name << "' of " << o.truth
+      << " in pool " << pool.name << " (target " << target << "%, budget " << lo.budget
+      << " trials, seed " << lo.seed << ")\n"
+      << "Parameters of interest: m; kq where significant, else k; every η "
+         "(* = above the target)\n\n";
+  const planner::LoopResult r = planner::RunLoop(
+      truth, pool, lo,
+      [&](const planner::LoopIteration& it) { PrintIteration(it, target, o.verbose, out); });
+  PrintLoopSummary(r, lo, truth, out);
+  if (!o.json.empty()) WriteJson(o.json, LoopJson(r, lo));
   return r.converged ? kExitOk : kExitActionNeeded;
 }
 
-const CommandRegistration kRegistration(
-    {"loop", 46, [](CLI::App& app, std::function<int()>* run) {
-       auto o = std::make_shared<LoopCliOptions>();
-       CLI::App* sub = app.add_subcommand(
-           "loop",
-           "Design → run (virtual) → identify → re-plan until every parameter of interest's "
-           "percentile error is below the target, or the trial budget is spent.");
-       sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")
-           ->required();
-       sub->add_option("--pool", o->pool, "pool.yaml")->required();
-       sub->add_option("--target", o->target,
-                       "percentile error 100·σ/|θ| (%) every parameter of interest must reach")
-           ->capture_default_str();
-       sub->add_option("--budget", o->budget, "most trials to run")->capture_default_str();
-       sub->add_option("--seed", o->seed,
-                       "seed of the virtual pool (trial i draws from its own stream, as "
-                       "`simulate`)")
-           ->capture_default_str();
-       sub->add_option("--dof", o->dofs,
-                       "DOF to identify (repeatable; default: every DOF the truth has "
-                       "parameters for)");
-       sub->add_option("--json", o->json,
-                       "also write the result as JSON to this file ('-' = stdout)");
-       sub->add_flag("--verbose", o->verbose,
-                     "print each iteration's design and identification notes");
-       sub->callback([o, run] { *run = [o] { return RunLoopCommand(*o); }; });
-     }});
+void BindLoop(CLI::App* sub, LoopCliOptions* o) {
+  sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")->required();
+  sub->add_option("--pool", o->pool, "pool.yaml")->required();
+  sub->add_option("--target", o->loop.step.target_percent,
+                  "percentile error 100·σ/|θ| (%) every parameter of interest must reach")
+      ->capture_default_str();
+  sub->add_option("--budget", o->loop.budget, "most trials to run")->capture_default_str();
+  sub->add_option("--seed", o->loop.seed,
+                  "seed of the virtual pool (trial i draws from its own stream, as `simulate`)")
+      ->capture_default_str();
+  sub->add_option("--dof", o->dofs,
+                  "DOF to identify (repeatable; default: every DOF the truth has parameters "
+                  "for)");
+  AddJsonOption(sub, &o->json, "also write the result");
+  sub->add_flag("--verbose", o->verbose, "print each iteration's design and identification notes");
+}
+
+const CommandRegistration kRegistration(MakeCommand<LoopCliOptions>(
+    "loop", 46,
+    "Design → run (virtual) → identify → re-plan until every parameter of interest's "
+    "percentile error is below the target, or the trial budget is spent.",
+    BindLoop, RunLoopCommand));
 
 }  // namespace
 }  // namespace uuvplan::tool

@@ -4,12 +4,9 @@
 // Exit status: 0 every requested DOF fully planned; 1 some trials cannot be hosted by the pool
 // (the partial schedule is still printed and written, with what is missing and why);
 // 2 bad input.
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
-#include <memory>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -28,17 +25,33 @@ struct ScheduleCliOptions {
   std::string pool;
   std::vector<std::string> dofs;
   std::string json;
-  std::string robust = "maximin";
-  double max_duration_s = 240.0;
-  bool no_steady = false;
-  bool no_sine = false;
+  std::string robust{planner::RobustnessName(planner::ScheduleOptions{}.planner.robustness)};
+  planner::ScheduleOptions schedule;  ///< --max-duration, --no-steady, --no-sine bound here
 };
 
 planner::Robustness ParseRobustness(const std::string& s) {
-  if (s == "maximin") return planner::Robustness::kMaximin;
-  if (s == "average") return planner::Robustness::kAverage;
-  if (s == "nominal") return planner::Robustness::kNominal;
+  for (const auto r : {planner::Robustness::kMaximin, planner::Robustness::kAverage,
+                       planner::Robustness::kNominal}) {
+    if (planner::RobustnessName(r) == s) return r;
+  }
   throw model::InputError("--robust", "expected maximin, average or nominal, got '" + s + "'");
+}
+
+// Every DOF asked for must have a thrust mapping to drive it and a sensor to observe it.
+void CheckDofsPlannable(const std::vector<model::Dof>& dofs, const model::Vehicle& vehicle,
+                        const std::string& vehicle_path) {
+  for (const model::Dof dof : dofs) {
+    const std::string name(model::DofName(dof));
+    if (vehicle.MappingsOf(dof).empty()) {
+      throw model::InputError(vehicle_path + ": mappings",
+                              "--dof " + name + ": no thrust mapping acts on " + name);
+    }
+    auto s = vehicle.sensors.find(dof);
+    if (s == vehicle.sensors.end() || (!s->second.position && !s->second.velocity)) {
+      throw model::InputError(vehicle_path + ": sensors." + name,
+                              "--dof " + name + ": no position or velocity sensor on " + name);
+    }
+  }
 }
 
 std::string Force(const model::TrialDesign& d) {
@@ -108,87 +121,67 @@ void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
   }
 }
 
+// {schedule..., "status", "notes": [...], "not_planned": {<dof>: {"message", "required_travel",
+// "required_pool"}}} (docs/cli.md, the schedule JSON).
+nlohmann::json ScheduleResultJson(const planner::ScheduleResult& r, const model::Pool& pool) {
+  nlohmann::json j = planner::ScheduleToJson(r.schedule);
+  j["status"] = std::string(planner::PlanStatusName(r.status));
+  nlohmann::json notes = nlohmann::json::array();
+  nlohmann::json missing = nlohmann::json::object();
+  for (const auto& d : r.dofs) {
+    for (const auto& n : d.notes) notes.push_back(n);
+    if (!d.complete) {
+      nlohmann::json m = {{"message", d.message}};
+      if (d.required_travel > 0) {
+        m["required_travel"] = d.required_travel;
+        m["required_pool"] = d.required_travel + 2 * pool.margin;
+      }
+      missing[std::string(model::DofName(d.dof))] = m;
+    }
+  }
+  j["notes"] = notes;
+  if (!missing.empty()) j["not_planned"] = missing;
+  return j;
+}
+
 int RunSchedule(const ScheduleCliOptions& o) {
   const model::Vehicle vehicle = model::ReadVehicle(o.vehicle);
   const model::Pool pool = model::ReadPool(o.pool);
-  planner::ScheduleOptions so;
+  planner::ScheduleOptions so = o.schedule;
   so.planner.robustness = ParseRobustness(o.robust);
-  so.planner.max_trial_duration_s = o.max_duration_s;
-  so.steady_runs = !o.no_steady;
-  so.sine_trial = !o.no_sine;
-  for (const auto& d : o.dofs) {
-    const auto dof = model::ParseDof(d);
-    if (!dof) {
-      throw model::InputError("--dof",
-                              "expected surge, sway, heave, roll, pitch or yaw, got '" + d + "'");
-    }
-    const std::string name(model::DofName(*dof));
-    if (vehicle.MappingsOf(*dof).empty()) {
-      throw model::InputError(o.vehicle + ": mappings",
-                              "--dof " + name + ": no thrust mapping acts on " + name);
-    }
-    auto s = vehicle.sensors.find(*dof);
-    if (s == vehicle.sensors.end() || (!s->second.position && !s->second.velocity)) {
-      throw model::InputError(o.vehicle + ": sensors." + name,
-                              "--dof " + name + ": no position or velocity sensor on " + name);
-    }
-    so.dofs.push_back(*dof);
-  }
+  so.dofs = ParseDofFlags(o.dofs);
+  CheckDofsPlannable(so.dofs, vehicle, o.vehicle);
   std::string error;
   if (!so.IsValid(&error)) throw model::InputError("options", error);
   const planner::ScheduleResult r = planner::PlanSchedule(vehicle, pool, so);
-  const bool to_stdout = o.json == "-";
-  PrintSchedule(r, vehicle, pool, to_stdout ? std::cerr : std::cout);
-  if (!o.json.empty()) {
-    nlohmann::json j = planner::ScheduleToJson(r.schedule);
-    j["status"] = std::string(planner::PlanStatusName(r.status));
-    nlohmann::json notes = nlohmann::json::array();
-    nlohmann::json missing = nlohmann::json::object();
-    for (const auto& d : r.dofs) {
-      for (const auto& n : d.notes) notes.push_back(n);
-      if (!d.complete) {
-        nlohmann::json m = {{"message", d.message}};
-        if (d.required_travel > 0) {
-          m["required_travel"] = d.required_travel;
-          m["required_pool"] = d.required_travel + 2 * pool.margin;
-        }
-        missing[std::string(model::DofName(d.dof))] = m;
-      }
-    }
-    j["notes"] = notes;
-    if (!missing.empty()) j["not_planned"] = missing;
-    const std::string text = j.dump(2) + "\n";
-    if (to_stdout) {
-      std::cout << text;
-    } else {
-      model::WriteFileAtomically(o.json, text);
-    }
-  }
+  PrintSchedule(r, vehicle, pool, ReportStream(o.json));
+  if (!o.json.empty()) WriteJson(o.json, ScheduleResultJson(r, pool));
   return r.status == planner::PlanStatus::kOk ? kExitOk : kExitActionNeeded;
 }
 
-const CommandRegistration kRegistration(
-    {"schedule", 10, [](CLI::App& app, std::function<int()>* run) {
-       auto o = std::make_shared<ScheduleCliOptions>();
-       CLI::App* sub = app.add_subcommand(
-           "schedule",
-           "The test schedule of a vehicle in a pool: steady runs and legs for drag and "
-           "installation coefficients, a sine trial for the inertia, robust over the a priori "
-           "box (exit 1 if the pool cannot host every trial).");
-       sub->add_option("VEHICLE", o->vehicle, "vehicle file (YAML)")->required();
-       sub->add_option("--pool", o->pool, "pool file (YAML)")->required();
-       sub->add_option("--dof", o->dofs,
-                       "DOF to plan (repeatable; default every DOF with a mapping and a sensor)");
-       sub->add_option("--json", o->json, "write the schedule as JSON to this file ('-' = stdout)");
-       sub->add_option("--robust", o->robust, "maximin (default), average or nominal")
-           ->capture_default_str();
-       sub->add_option("--max-duration", o->max_duration_s, "longest trial (s)")
-           ->capture_default_str()
-           ->check(CLI::PositiveNumber);
-       sub->add_flag("--no-steady", o->no_steady, "plan no steady runs");
-       sub->add_flag("--no-sine", o->no_sine, "plan no sine trial");
-       sub->callback([o, run] { *run = [o] { return RunSchedule(*o); }; });
-     }});
+void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {
+  sub->add_option("VEHICLE", o->vehicle, "vehicle file (YAML)")->required();
+  sub->add_option("--pool", o->pool, "pool file (YAML)")->required();
+  sub->add_option("--dof", o->dofs,
+                  "DOF to plan (repeatable; default every DOF with a mapping and a sensor)");
+  AddJsonOption(sub, &o->json, "write the schedule");
+  sub->add_option("--robust", o->robust, "maximin (default), average or nominal")
+      ->capture_default_str();
+  sub->add_option("--max-duration", o->schedule.planner.max_trial_duration_s, "longest trial (s)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub->add_flag_callback(
+      "--no-steady", [o] { o->schedule.steady_runs = false; }, "plan no steady runs");
+  sub->add_flag_callback(
+      "--no-sine", [o] { o->schedule.sine_trial = false; }, "plan no sine trial");
+}
+
+const CommandRegistration kRegistration(MakeCommand<ScheduleCliOptions>(
+    "schedule", 10,
+    "The test schedule of a vehicle in a pool: steady runs and legs for drag and "
+    "installation coefficients, a sine trial for the inertia, robust over the a priori "
+    "box (exit 1 if the pool cannot host every trial).",
+    BindSchedule, RunSchedule));
 
 }  // namespace
 }  // namespace uuvplan::tool

@@ -2,14 +2,11 @@
 // [--json F]`: runs a plan on the virtual vehicle of a truth file (model/virtual_pool.h) and
 // writes the campaign as a pool team would log it: DIR/campaign.yaml, DIR/vehicle.yaml and
 // DIR/trials/<id>.csv. DIR must be new or empty; it is written whole or not at all.
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <limits>
-#include <memory>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
@@ -29,10 +26,14 @@ struct SimulateOptions {
   std::string truth;
   std::string plan;
   std::string out;
-  std::uint64_t seed = 1;                                    ///< VirtualPoolOptions default
   double step_s = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the truth's step
   std::string json;
+  model::VirtualPoolOptions virtual_pool;  ///< --seed bound here
 };
+
+// SimulateCampaign's default pause between trials (s).
+// TODO(issue #12, planner engineer): read it from VirtualPoolOptions once the pause lives there.
+constexpr double kPauseS = 60.0;
 
 std::string MappingNames(const model::Vehicle& v, model::Dof dof) {
   std::string names;
@@ -125,12 +126,77 @@ std::vector<std::string> SaturationNotes(const planner::Schedule& plan, const mo
   return notes;
 }
 
-// "dir/" and "dir" are the same directory; SimulateCampaign builds its temporary sibling by
-// appending to the name, so the name must not end with a separator.
-std::string DirectoryName(const std::string& path) {
-  fs::path p = fs::path(path).lexically_normal();
-  if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();
-  return p.string();
+// --out must be new or empty: nothing is overwritten.
+void CheckNewOrEmpty(const std::string& out) {
+  std::error_code ec;
+  if (!fs::exists(out, ec)) return;
+  if (!fs::is_directory(out, ec)) {
+    throw InputError(out, "--out exists and is not a directory; choose a new directory");
+  }
+  if (!fs::is_empty(out, ec)) {
+    throw InputError(out,
+                     "--out exists and is not empty; choose a new directory (nothing "
+                     "is overwritten)");
+  }
+}
+
+// Figures of the simulated campaign, for the table's last line and the JSON.
+struct CampaignTotals {
+  std::size_t rows = 0;
+  double trial_time = 0.0;  ///< s of trials
+  double clock = 0.0;       ///< s of pool time, pauses included
+};
+
+CampaignTotals Totals(const model::Campaign& campaign,
+                      const std::vector<model::TrialDesign>& designs) {
+  CampaignTotals t;
+  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
+    t.rows += campaign.trials[i].log.size();
+    t.trial_time += designs[i].duration;
+  }
+  if (!campaign.trials.empty()) t.clock = campaign.trials.back().start + designs.back().duration;
+  return t;
+}
+
+void PrintCampaignTable(const model::Campaign& campaign,
+                        const std::vector<model::TrialDesign>& designs, std::ostream& out) {
+  out << std::left << std::setw(22) << "trial" << std::setw(7) << "dof" << std::setw(10) << "kind"
+      << std::setw(24) << "mapping" << std::right << std::setw(10) << "duration" << std::setw(8)
+      << "rows"
+      << "  file\n";
+  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
+    const auto& e = campaign.trials[i];
+    const auto& d = designs[i];
+    std::ostringstream dur;
+    dur << std::fixed << std::setprecision(1) << d.duration << " s";
+    out << std::left << std::setw(22) << d.id << std::setw(7) << model::DofName(d.dof)
+        << std::setw(10) << model::TrialKindName(d.kind) << std::setw(24) << d.mapping << std::right
+        << std::setw(10) << dur.str() << std::setw(8) << e.log.size() << "  " << e.file << "\n";
+  }
+}
+
+nlohmann::json SimulationJson(const model::Campaign& campaign,
+                              const std::vector<model::TrialDesign>& designs,
+                              const SimulateOptions& o, double step_s) {
+  nlohmann::json trials = nlohmann::json::array();
+  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
+    const auto& e = campaign.trials[i];
+    const auto& d = designs[i];
+    trials.push_back({{"id", d.id},
+                      {"dof", std::string(model::DofName(d.dof))},
+                      {"file", e.file},
+                      {"rows", e.log.size()},
+                      {"duration", d.duration},
+                      {"start", e.start}});
+  }
+  const CampaignTotals totals = Totals(campaign, designs);
+  return {{"campaign", (fs::path(o.out) / "campaign.yaml").string()},
+          {"seed", o.virtual_pool.seed},
+          {"step", step_s},
+          {"trials", trials},
+          {"rows", totals.rows},
+          {"trial_time", totals.trial_time},
+          {"pool_time", totals.clock}};
 }
 
 int RunSimulate(const SimulateOptions& options) {
@@ -140,17 +206,7 @@ int RunSimulate(const SimulateOptions& options) {
     throw InputError("--step",
                      "expected a positive integration step in s, got " + std::to_string(o.step_s));
   }
-  std::error_code ec;
-  if (fs::exists(o.out, ec)) {
-    if (!fs::is_directory(o.out, ec)) {
-      throw InputError(o.out, "--out exists and is not a directory; choose a new directory");
-    }
-    if (!fs::is_empty(o.out, ec)) {
-      throw InputError(o.out,
-                       "--out exists and is not empty; choose a new directory (nothing "
-                       "is overwritten)");
-    }
-  }
+  CheckNewOrEmpty(o.out);
   model::Truth truth = model::ReadTruth(o.truth);
   const planner::Schedule plan = planner::ReadScheduleJson(o.plan);
   CheckPlanAgainstTruth(plan, truth, o.plan, o.truth);
@@ -158,93 +214,47 @@ int RunSimulate(const SimulateOptions& options) {
 
   std::vector<model::TrialDesign> designs;
   for (const auto& t : plan.trials) designs.push_back(t.design);
-  model::VirtualPoolOptions pool_options;
-  pool_options.seed = o.seed;
-  constexpr double kPauseS = 60.0;  // SimulateCampaign's default pause between trials
   const model::Campaign campaign =
-      model::SimulateCampaign(truth, designs, o.out, pool_options, kPauseS);
+      model::SimulateCampaign(truth, designs, o.out, o.virtual_pool, kPauseS);
 
   for (const std::string& note : SaturationNotes(plan, truth.vehicle)) {
     std::cerr << "uuvplan simulate: note: " << note << "\n";
   }
-  // The readable table goes to stdout, unless stdout carries the JSON (--json -).
-  std::ostream& out = o.json == "-" ? std::cerr : std::cout;
+  std::ostream& out = ReportStream(o.json);
   out << "Simulated " << campaign.trials.size() << " trial(s) of plan " << o.plan
       << " on the virtual '" << truth.vehicle.name << "' of " << o.truth << "\n"
-      << "(seed " << o.seed << ", RK4 step " << truth.integration_step_s << " s, " << kPauseS
-      << " s pause between trials)\n\n";
-  out << std::left << std::setw(22) << "trial" << std::setw(7) << "dof" << std::setw(10) << "kind"
-      << std::setw(24) << "mapping" << std::right << std::setw(10) << "duration" << std::setw(8)
-      << "rows"
-      << "  file\n";
-  std::size_t rows = 0;
-  double trial_time = 0.0;
-  nlohmann::json trials = nlohmann::json::array();
-  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
-    const auto& e = campaign.trials[i];
-    const auto& d = designs[i];
-    rows += e.log.size();
-    trial_time += d.duration;
-    std::ostringstream dur;
-    dur << std::fixed << std::setprecision(1) << d.duration << " s";
-    out << std::left << std::setw(22) << d.id << std::setw(7) << model::DofName(d.dof)
-        << std::setw(10) << model::TrialKindName(d.kind) << std::setw(24) << d.mapping << std::right
-        << std::setw(10) << dur.str() << std::setw(8) << e.log.size() << "  " << e.file << "\n";
-    trials.push_back({{"id", d.id},
-                      {"dof", std::string(model::DofName(d.dof))},
-                      {"file", e.file},
-                      {"rows", e.log.size()},
-                      {"duration", d.duration},
-                      {"start", e.start}});
-  }
-  const double clock =
-      campaign.trials.empty() ? 0.0 : campaign.trials.back().start + designs.back().duration;
+      << "(seed " << o.virtual_pool.seed << ", RK4 step " << truth.integration_step_s << " s, "
+      << kPauseS << " s pause between trials)\n\n";
+  PrintCampaignTable(campaign, designs, out);
+  const CampaignTotals totals = Totals(campaign, designs);
   out << "\n"
-      << campaign.trials.size() << " trials, " << rows << " rows, " << trial_time
-      << " s of trials, " << clock << " s of pool time with pauses\n"
+      << campaign.trials.size() << " trials, " << totals.rows << " rows, " << totals.trial_time
+      << " s of trials, " << totals.clock << " s of pool time with pauses\n"
       << "Campaign: " << (fs::path(o.out) / "campaign.yaml").string() << "\n";
-  if (!o.json.empty()) {
-    const nlohmann::json j = {{"campaign", (fs::path(o.out) / "campaign.yaml").string()},
-                              {"seed", o.seed},
-                              {"step", truth.integration_step_s},
-                              {"trials", trials},
-                              {"rows", rows},
-                              {"trial_time", trial_time},
-                              {"pool_time", clock}};
-    if (o.json == "-") {
-      std::cout << j.dump(2) << "\n";
-    } else {
-      model::WriteFileAtomically(o.json, j.dump(2) + "\n");
-    }
-  }
+  if (!o.json.empty()) WriteJson(o.json, SimulationJson(campaign, designs, o, truth.integration_step_s));
   return kExitOk;
 }
 
-const CommandRegistration kRegistration(
-    {"simulate", 30, [](CLI::App& app, std::function<int()>* run) {
-       auto o = std::make_shared<SimulateOptions>();
-       CLI::App* sub =
-           app.add_subcommand("simulate",
-                              "Run a plan on the virtual vehicle of a truth file and write the "
-                              "campaign (campaign.yaml, "
-                              "vehicle.yaml, trials/<id>.csv) as a pool team would log it.");
-       sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")
-           ->required();
-       sub->add_option(
-              "--plan", o->plan,
-              "plan JSON: a `schedule --json` result, or a `next --json` result (its trial)")
-           ->required();
-       sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
-           ->required();
-       sub->add_option("--seed", o->seed, "seed of the sensor noise, drop-outs and outliers")
-           ->capture_default_str();
-       sub->add_option(
-           "--step", o->step_s,
-           "RK4 integration step in s (default: the truth's virtual_pool.step, else 0.01)");
-       sub->add_option("--json", o->json,
-                       "also write a summary as JSON to this file ('-' = stdout)");
-       sub->callback([o, run] { *run = [o] { return RunSimulate(*o); }; });
-     }});
+void BindSimulate(CLI::App* sub, SimulateOptions* o) {
+  sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")->required();
+  sub->add_option("--plan", o->plan,
+                  "plan JSON: a `schedule --json` result, or a `next --json` result (its trial)")
+      ->required();
+  sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
+      ->required();
+  sub->add_option("--seed", o->virtual_pool.seed,
+                  "seed of the sensor noise, drop-outs and outliers")
+      ->capture_default_str();
+  sub->add_option("--step", o->step_s,
+                  "RK4 integration step in s (default: the truth's virtual_pool.step, else 0.01)");
+  AddJsonOption(sub, &o->json, "also write a summary");
+}
+
+const CommandRegistration kRegistration(MakeCommand<SimulateOptions>(
+    "simulate", 30,
+    "Run a plan on the virtual vehicle of a truth file and write the campaign (campaign.yaml, "
+    "vehicle.yaml, trials/<id>.csv) as a pool team would log it.",
+    BindSimulate, RunSimulate));
 
 }  // namespace
 }  // namespace uuvplan::tool

@@ -1,15 +1,20 @@
 // The uuvplan command line: one file per command; each registers itself here so that main.cc
-// never changes. Commands hold no numerics: they read input, call the libraries, print and
-// write JSON. Exit status (contract): 0 success, 1 a result the user must act on, 2 bad input.
+// never changes. Commands hold no numerics: a command binds its flags to the library's Options
+// (defaults read from them), calls one library function, prints its result and writes it as
+// JSON. Exit status (contract): 0 success, 1 a result the user must act on, 2 bad input.
+// Environment variables are read here, in the tool, never in the libraries.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
-namespace CLI {
-class App;
-}
+#include "uuvplan/model/dof.h"
 
 namespace uuvplan::tool {
 
@@ -30,5 +35,35 @@ std::vector<Command>& Registry();
 struct CommandRegistration {
   explicit CommandRegistration(Command c) { Registry().push_back(std::move(c)); }
 };
+
+/// The command `name` (`description` in --help): when chosen, `bind` has added its flags to a
+/// fresh `Options` (whose initial values are the defaults) and `run` is called with them.
+template <typename Options>
+Command MakeCommand(std::string name, int order, std::string description,
+                    void (*bind)(CLI::App* sub, Options* options),
+                    int (*run)(const Options& options)) {
+  return {name, order, [=](CLI::App& app, std::function<int()>* chosen) {
+            auto options = std::make_shared<Options>();
+            CLI::App* sub = app.add_subcommand(name, description);
+            bind(sub, options.get());
+            sub->callback([=] { *chosen = [=] { return run(*options); }; });
+          }};
+}
+
+/// `--json F`: "<what> as JSON to this file ('-' = stdout)".
+CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& what);
+
+/// Where the readable report goes: stdout, or stderr when the JSON goes there (`--json -`).
+std::ostream& ReportStream(const std::string& json_path);
+
+/// Writes `j` to `path` atomically, or to stdout when `path` is "-".
+void WriteJson(const std::string& path, const nlohmann::json& j);
+
+/// `path` without a trailing separator ("dir/" and "dir" are the same directory):
+/// SimulateCampaign builds its temporary sibling by appending to the name.
+std::string DirectoryName(const std::string& path);
+
+/// The DOFs named by repeated `--dof` flags; InputError naming the flag and the bad name.
+std::vector<model::Dof> ParseDofFlags(const std::vector<std::string>& names);
 
 }  // namespace uuvplan::tool

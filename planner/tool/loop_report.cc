@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <iomanip>
-#include <iostream>
 #include <sstream>
 
 #include "uuvplan/ident/monte_carlo.h"
@@ -107,15 +106,6 @@ json PredictedJson(model::Dof dof, const planner::PredictedPrecision& p) {
   for (const auto& [name, s] : p.sigma) sigma[name] = Num(s);
   return {{std::string(model::DofName(dof)),
            {{"sigma", sigma}, {"criterion", p.criterion}, {"value", Num(p.criterion_value)}}}};
-}
-
-void WriteJson(const std::string& path, const json& j) {
-  const std::string text = j.dump(2) + "\n";
-  if (path == "-") {
-    std::cout << text;
-  } else {
-    model::WriteFileAtomically(path, text);
-  }
 }
 
 }  // namespace uuvplan::tool

@@ -28,7 +28,4 @@ nlohmann::json ProgressJson(const std::vector<planner::DofProgress>& progress);
 /// {<dof>: {"sigma": {<name>: s}, "criterion", "value"}} as in a schedule's "predicted".
 nlohmann::json PredictedJson(model::Dof dof, const planner::PredictedPrecision& p);
 
-/// Writes `j` to `path` atomically, or to stdout when `path` is "-".
-void WriteJson(const std::string& path, const nlohmann::json& j);
-
 }  // namespace uuvplan::tool

@@ -8,13 +8,6 @@
 #include "command.h"
 #include "uuvplan/model/input_error.h"
 
-namespace uuvplan::tool {
-std::vector<Command>& Registry() {
-  static std::vector<Command> commands;
-  return commands;
-}
-}  // namespace uuvplan::tool
-
 int main(int argc, char** argv) {
   using namespace uuvplan::tool;
   CLI::App app{
