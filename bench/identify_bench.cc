@@ -25,6 +25,7 @@
 #include <random>
 #include <string>
 
+#include "ident/ident_cases.h"  // CaseTruth, Segments, Sine: the test cases' builders
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/monte_carlo.h"  // TrueParameter
 #include "uuvplan/model/io.h"
@@ -35,42 +36,12 @@ namespace {
 
 using namespace uuvplan;
 using Clock = std::chrono::steady_clock;
+using ident::testing::CaseTruth;
+using ident::testing::Segments;
+using ident::testing::Sine;
 
 double Seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
-}
-
-model::Truth CaseTruth(const std::string& name) {
-  return model::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + name + "/truth.yaml");
-}
-
-model::TrialDesign Segments(const std::string& id, model::Dof dof, const std::string& mapping,
-                            const std::vector<std::pair<double, double>>& legs, int ballast = 0) {
-  model::TrialDesign d;
-  d.id = id;
-  d.dof = dof;
-  d.kind = model::TrialKind::kSegments;
-  d.mapping = mapping;
-  d.ballast_steps = ballast;
-  for (const auto& [f, s] : legs) {
-    d.segments.push_back({f, s, ""});
-    d.duration += s;
-  }
-  return d;
-}
-
-model::TrialDesign Sine(const std::string& id, model::Dof dof, const std::string& mapping,
-                        double offset, double amplitude, double period, double duration) {
-  model::TrialDesign d;
-  d.id = id;
-  d.dof = dof;
-  d.kind = model::TrialKind::kSine;
-  d.mapping = mapping;
-  d.offset = offset;
-  d.amplitude = amplitude;
-  d.omega = 2 * M_PI / period;
-  d.duration = duration;
-  return d;
 }
 
 // Legs of random duration in [lo, hi] s and random level in ±[a_lo, a_hi], alternating sign.
