@@ -63,8 +63,9 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
     }
   }
   if (index < 0) {
-    throw InputError("--steady " + spec, "'" + trial + "' is not a trial of the campaign (give its "
-                                                        "file as written in the campaign, or its index)");
+    throw InputError("--steady " + spec, "'" + trial +
+                                             "' is not a trial of the campaign (give its "
+                                             "file as written in the campaign, or its index)");
   }
   o->steady_windows[index].push_back({t0, t1});
 }

@@ -231,7 +231,9 @@ int RunSimulate(const SimulateOptions& options) {
       << campaign.trials.size() << " trials, " << totals.rows << " rows, " << totals.trial_time
       << " s of trials, " << totals.clock << " s of pool time with pauses\n"
       << "Campaign: " << (fs::path(o.out) / "campaign.yaml").string() << "\n";
-  if (!o.json.empty()) WriteJson(o.json, SimulationJson(campaign, designs, o, truth.integration_step_s));
+  if (!o.json.empty()) {
+    WriteJson(o.json, SimulationJson(campaign, designs, o, truth.integration_step_s));
+  }
   return kExitOk;
 }
 

@@ -1,6 +1,5 @@
 // uuvplan <command> [options]: see docs/cli.md.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <exception>
 #include <iostream>
