@@ -5,17 +5,17 @@
 #include <limits>
 #include <sstream>
 
+#include "options_check.h"
 #include "uuvplan/ident/regression.h"
 #include "uuvplan/model/effects.h"
 
 namespace uuvplan::ident {
 
 bool IntegralInertiaOptions::IsValid(std::string* error) const {
-  if (!(newey_west_windows >= 0) || !(max_step_s > 0) || !(max_condition > 1)) {
-    if (error) *error = "IntegralInertiaOptions: newey_west_windows >= 0, max_step_s > 0, max_condition > 1";
-    return false;
-  }
-  return true;
+  return Require(newey_west_windows >= 0 && max_step_s > 0 && max_condition > 1,
+                 "IntegralInertiaOptions: newey_west_windows >= 0, max_step_s > 0, "
+                 "max_condition > 1",
+                 error);
 }
 
 IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
