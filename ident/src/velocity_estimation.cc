@@ -248,15 +248,25 @@ double InputTimeScale(const std::vector<double>& t, const std::vector<double>& f
   return Median(periods);
 }
 
-SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
+namespace {
+
+// A smoothed signal at times t with nothing estimated yet (NaN, every sample an edge, run 0).
+SmoothedSignal Unsmoothed(const std::vector<double>& t) {
   SmoothedSignal out;
-  const std::size_t n = s.size();
-  out.t = s.t;
+  const std::size_t n = t.size();
+  out.t = t;
   out.value.assign(n, kNaN);
   out.derivative.assign(n, kNaN);
   out.second_derivative.assign(n, kNaN);
   out.edge.assign(n, true);
   out.run.assign(n, 0);
+  return out;
+}
+
+}  // namespace
+
+SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
+  SmoothedSignal out = Unsmoothed(s.t);
   bool gains_set = false;
   int run = 0;
   for (const auto& [b, e] : Runs(s.t, options.gap_factor)) {
@@ -303,14 +313,7 @@ std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rat
 }
 
 SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap_factor) {
-  SmoothedSignal out;
-  const std::size_t n = p.size();
-  out.t = p.t;
-  out.value.assign(n, kNaN);
-  out.derivative.assign(n, kNaN);
-  out.second_derivative.assign(n, kNaN);
-  out.edge.assign(n, true);
-  out.run.assign(n, 0);
+  SmoothedSignal out = Unsmoothed(p.t);
   int run = 0;
   for (const auto& [b, e] : Runs(p.t, gap_factor)) {
     const std::size_t m = e - b;
