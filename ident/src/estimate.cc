@@ -3,16 +3,17 @@
 #include <cmath>
 
 #include "uuvplan/ident/significance.h"
+#include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::ident {
 
 std::string_view ParameterStateName(ParameterState s) {
-  switch (s) {
-    case ParameterState::kEstimated: return "estimated";
-    case ParameterState::kDropped: return "dropped";
-    case ParameterState::kFixed: return "fixed";
-  }
-  return "estimated";
+  static constexpr model::EnumNames<ParameterState, 3> kNames{{{
+      {ParameterState::kEstimated, "estimated"},
+      {ParameterState::kDropped, "dropped"},
+      {ParameterState::kFixed, "fixed"},
+  }}};
+  return kNames.Name(s);
 }
 
 double ParameterEstimate::percentile_error() const {

@@ -6,30 +6,32 @@
 #include <cmath>
 #include <sstream>
 
+#include "options_check.h"
+#include "uuvplan/model/util/enum_names.h"
+
 namespace uuvplan::ident {
 
+namespace {
+
+constexpr model::EnumNames<FitStatus, 4> kFitStatusNames{{{
+    {FitStatus::kOk, "ok"},
+    {FitStatus::kIllConditioned, "ill_conditioned"},
+    {FitStatus::kTooFewData, "too_few_data"},
+    {FitStatus::kNoData, "no_data"},
+}}};
+
+}  // namespace
+
 bool LeastSquaresOptions::IsValid(std::string* error) const {
-  if (!(max_condition > 1)) {
-    if (error) *error = "LeastSquaresOptions::max_condition = " + std::to_string(max_condition) +
-                        ". Violated constraint: max_condition > 1";
-    return false;
-  }
-  if (!(null_component > 0 && null_component < 1)) {
-    if (error) *error = "LeastSquaresOptions::null_component must lie in (0, 1)";
-    return false;
-  }
-  return true;
+  return Require(max_condition > 1,
+                 "LeastSquaresOptions::max_condition = " + std::to_string(max_condition) +
+                     ". Violated constraint: max_condition > 1",
+                 error) &&
+         Require(null_component > 0 && null_component < 1,
+                 "LeastSquaresOptions::null_component must lie in (0, 1)", error);
 }
 
-std::string_view FitStatusName(FitStatus status) {
-  switch (status) {
-    case FitStatus::kOk: return "ok";
-    case FitStatus::kIllConditioned: return "ill_conditioned";
-    case FitStatus::kTooFewData: return "too_few_data";
-    case FitStatus::kNoData: return "no_data";
-  }
-  return "ok";
-}
+std::string_view FitStatusName(FitStatus status) { return kFitStatusNames.Name(status); }
 
 int DefaultNeweyWestLags(int n) {
   return std::max(1, static_cast<int>(std::floor(4.0 * std::pow(n / 100.0, 2.0 / 9.0))));

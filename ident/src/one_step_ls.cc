@@ -6,9 +6,11 @@
 #include <cmath>
 #include <sstream>
 
+#include "options_check.h"
 #include "uuvplan/ident/regression.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/simulator.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 
@@ -37,11 +39,8 @@ Eigen::Matrix4d ToPhysicalJacobian(const SeedCoefficients& c) {
 }
 
 bool OneStepOptions::IsValid(std::string* error) const {
-  if (!(max_step_s > 0) || !(max_condition > 1) || newey_west_lags < 0) {
-    if (error) *error = "OneStepOptions: max_step_s > 0, max_condition > 1, newey_west_lags >= 0";
-    return false;
-  }
-  return true;
+  return Require(max_step_s > 0 && max_condition > 1 && newey_west_lags >= 0,
+                 "OneStepOptions: max_step_s > 0, max_condition > 1, newey_west_lags >= 0", error);
 }
 
 OneStepRows BuildOneStepRows(const model::DofModel& model,
@@ -139,276 +138,317 @@ void PsiToPhysical(const model::DofModel& model, const Eigen::VectorXd& theta_gi
   *cov = J * psi_cov * J.transpose();
 }
 
-std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofInput>& dofs,
-                                                  const OneStepOptions& o) {
-  std::vector<OneStepDofResult> results(dofs.size());
-  std::vector<OneStepRows> rows(dofs.size());
+namespace {
+
+// The rows of one DOF without the parameters no row excites: those keep their given value and
+// are reported (e.g. η of a direction never used).
+OneStepRows DofRows(const OneStepDofInput& in, const OneStepOptions& o, OneStepDofResult* res) {
+  const model::DofModel& model = *in.model;
+  std::vector<int> free = in.free;
+  if (free.empty()) free = LinearParameters(model);
+  OneStepRows rows = BuildOneStepRows(model, in.trials, in.theta, free, o);
+  std::vector<int> keep;
+  for (std::size_t c = 0; c < free.size(); ++c) {
+    if (rows.F.rows() > 0 && rows.F.col(1 + c).cwiseAbs().maxCoeff() > 0) {
+      keep.push_back(static_cast<int>(c));
+    } else {
+      res->not_excited.push_back(model.parameter_names()[free[c]]);
+    }
+  }
+  if (keep.size() != free.size()) {
+    std::vector<int> kept_free;
+    Eigen::MatrixXd F(rows.F.rows(), 1 + keep.size());
+    F.col(0) = rows.F.col(0);
+    for (std::size_t c = 0; c < keep.size(); ++c) {
+      F.col(1 + c) = rows.F.col(1 + keep[c]);
+      kept_free.push_back(free[keep[c]]);
+    }
+    rows.F = std::move(F);
+    rows.free = kept_free;
+  }
+  return rows;
+}
+
+// The stacked block-diagonal system of all DOFs (seed 004 eqs. 12–14).
+struct StackedSystem {
+  Eigen::MatrixXd F;
+  Eigen::VectorXd Y, W;
+  std::vector<int> groups;
+  std::vector<int> row0, col0;  // first row and column of each DOF's block
+};
+
+StackedSystem Stack(const std::vector<OneStepDofInput>& dofs, const std::vector<OneStepRows>& rows) {
   std::vector<double> weight(dofs.size(), 1.0);
   int total_rows = 0, total_cols = 0;
   for (std::size_t d = 0; d < dofs.size(); ++d) {
-    const model::DofModel& model = *dofs[d].model;
-    std::vector<int> free = dofs[d].free;
-    if (free.empty()) free = LinearParameters(model);
-    rows[d] = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, free, o);
-    // Parameters whose regressor integrates to zero in every row are not excited here: they
-    // keep their given value and are reported (e.g. η of a direction never used).
-    std::vector<int> keep;
-    for (std::size_t c = 0; c < free.size(); ++c) {
-      if (rows[d].F.rows() > 0 && rows[d].F.col(1 + c).cwiseAbs().maxCoeff() > 0) {
-        keep.push_back(static_cast<int>(c));
-      } else {
-        results[d].not_excited.push_back(model.parameter_names()[free[c]]);
-      }
-    }
-    if (keep.size() != free.size()) {
-      std::vector<int> kept_free;
-      Eigen::MatrixXd F(rows[d].F.rows(), 1 + keep.size());
-      F.col(0) = rows[d].F.col(0);
-      for (std::size_t c = 0; c < keep.size(); ++c) {
-        F.col(1 + c) = rows[d].F.col(1 + keep[c]);
-        kept_free.push_back(free[keep[c]]);
-      }
-      rows[d].F = std::move(F);
-      rows[d].free = kept_free;
-    }
     weight[d] = dofs[d].weight > 0 ? dofs[d].weight
                 : rows[d].noise_sigma > 0 ? 1.0 / (rows[d].noise_sigma * rows[d].noise_sigma)
                                           : 1.0;
     total_rows += static_cast<int>(rows[d].Y.size());
     total_cols += static_cast<int>(rows[d].F.cols());
   }
-  // Stacked block-diagonal system (seed 004 eqs. 12–14).
-  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(total_rows, total_cols);
-  Eigen::VectorXd Y(total_rows), W(total_rows);
-  std::vector<int> groups(total_rows);
-  std::vector<int> row0(dofs.size()), col0(dofs.size());
+  StackedSystem s{Eigen::MatrixXd::Zero(total_rows, total_cols), Eigen::VectorXd(total_rows),
+                  Eigen::VectorXd(total_rows), std::vector<int>(total_rows),
+                  std::vector<int>(dofs.size()), std::vector<int>(dofs.size())};
   int r0 = 0, c0 = 0;
   for (std::size_t d = 0; d < dofs.size(); ++d) {
     const OneStepRows& R = rows[d];
-    row0[d] = r0;
-    col0[d] = c0;
-    F.block(r0, c0, R.F.rows(), R.F.cols()) = R.F;
-    Y.segment(r0, R.Y.size()) = R.Y;
+    s.row0[d] = r0;
+    s.col0[d] = c0;
+    s.F.block(r0, c0, R.F.rows(), R.F.cols()) = R.F;
+    s.Y.segment(r0, R.Y.size()) = R.Y;
     // Λ of the DOF (seed 004 eq. 13) times each row's relative weight.
     const double mean_row = R.noise_sigma > 0 ? 1.0 / (R.noise_sigma * R.noise_sigma) : 1.0;
-    for (int k = 0; k < R.Y.size(); ++k) W[r0 + k] = weight[d] * R.weight[k] / mean_row;
-    for (int k = 0; k < R.Y.size(); ++k) groups[r0 + k] = static_cast<int>(d) * 1000003 + R.run[k];
+    for (int k = 0; k < R.Y.size(); ++k) s.W[r0 + k] = weight[d] * R.weight[k] / mean_row;
+    for (int k = 0; k < R.Y.size(); ++k) s.groups[r0 + k] = static_cast<int>(d) * 1000003 + R.run[k];
     r0 += static_cast<int>(R.F.rows());
     c0 += static_cast<int>(R.F.cols());
   }
+  return s;
+}
+
+// The trial simulated by the current estimate from the data's initial state: on a fine grid
+// (every input breakpoint, steps <= simulation_step_s) and at the data's samples. False when
+// a simulation diverges.
+bool SimulatedVelocities(const model::DofModel& model, const std::vector<const TrialData*>& trials,
+                         const Eigen::VectorXd& theta, const OneStepOptions& o,
+                         std::vector<SmoothedSignal>* fine, std::vector<SmoothedSignal>* sampled) {
+  for (const TrialData* trial : trials) {
+    const SmoothedSignal& v = trial->velocity_estimate;
+    std::vector<double> grid;
+    const double t_end = v.t.empty() ? 0.0 : v.t.back();
+    for (double t = 0.0; t < t_end; t += o.simulation_step_s) grid.push_back(t);
+    for (double b : trial->breakpoints) {
+      if (b < t_end) grid.push_back(b);
+    }
+    const double spacing = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
+    const bool dense = spacing <= o.simulation_step_s;
+    if (!dense) {
+      for (double t : v.t) grid.push_back(std::max(0.0, t));
+    }
+    std::sort(grid.begin(), grid.end());
+    grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+    model::SimulationOptions so;
+    so.step_s = o.simulation_step_s;
+    Eigen::VectorXd x0 = Eigen::VectorXd::Zero(model.num_states());
+    x0[1] = trial->initial_velocity;
+    const model::Trajectory tr = model::Simulate(model, theta, trial->conditions(), grid, so, &x0);
+    if (!tr.x.allFinite()) return false;
+    SmoothedSignal f, s2;
+    f.t = grid;
+    f.value.assign(tr.x.col(1).data(), tr.x.col(1).data() + tr.x.rows());
+    // Measured velocities are interpolated as the simulated samples are; velocities derived
+    // from positions are smooth local polynomials whose error is the filter's, not the
+    // interpolation's; and samples denser than the fine grid leave no defect: no correction
+    // for those.
+    if (trial->velocity_from_position || dense) {
+      s2 = f;
+    } else {
+      s2.t = v.t;
+      std::size_t i = 0;
+      for (double t : v.t) {
+        while (i + 1 < grid.size() && grid[i] < std::max(0.0, t)) ++i;  // t is on the grid
+        const double x[3] = {tr.x(i, 0), tr.x(i, 1), model.num_states() > 2 ? tr.x(i, 2) : 0.0};
+        double dx[3];
+        model.Derivative(grid[i], x, trial->conditions(), theta.data(), dx);
+        s2.value.push_back(tr.x(i, 1));
+        s2.derivative.push_back(dx[1]);
+      }
+    }
+    fine->push_back(std::move(f));
+    sampled->push_back(std::move(s2));
+  }
+  return true;
+}
+
+// Each row's sensitivity to a velocity error held over the row, A_k = (∂F_k/∂ξ)·ψ (central
+// difference, exact for the quadratic terms), rows scaled by `sw`: the integral of the
+// filtered ξ̃'s error enters row k through A_k (VSOR: A_k = −∫(k + 2kq|ξ|)/m ds grows with the
+// speed), the endpoint errors do not. Zero when the perturbed rows do not match.
+Eigen::VectorXd RowSensitivity(const OneStepDofInput& in, const OneStepRows& R,
+                               const OneStepOptions& o, const Eigen::VectorXd& psi,
+                               const Eigen::VectorXd& sw) {
+  const int nr = static_cast<int>(R.Y.size());
+  double vmax = 0.0;
+  for (const TrialData* trial : in.trials) {
+    for (double x : trial->velocity_estimate.value) vmax = std::max(vmax, std::abs(x));
+  }
+  const double dv = 1e-3 * std::max(vmax, 1e-6);
+  std::vector<SmoothedSignal> plus, minus;
+  for (const TrialData* trial : in.trials) {
+    plus.push_back(trial->velocity_estimate);
+    minus.push_back(trial->velocity_estimate);
+    for (double& x : plus.back().value) x += dv;
+    for (double& x : minus.back().value) x -= dv;
+  }
+  const OneStepRows Fp = BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &plus);
+  const OneStepRows Fm = BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &minus);
+  if (Fp.F.rows() != nr || Fm.F.rows() != nr) return Eigen::VectorXd::Zero(nr);
+  return sw.cwiseProduct((Fp.F - Fm.F) * psi) / (2.0 * dv);
+}
+
+// One instrumental-variables iteration against the errors in variables of ξ̃ in F: the
+// instruments Z are the rows along the velocity simulated by the current estimate, F is
+// corrected for the interpolation defect seen on the simulated path. Returns whether to
+// iterate again (false: converged, or the step failed and the previous answer stands).
+bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const OneStepOptions& o,
+                      OneStepDofResult* res) {
+  Eigen::VectorXd theta_now;
+  Eigen::MatrixXd unused;
+  PsiToPhysical(*in.model, in.theta, R.free, res->psi, res->psi_covariance, &theta_now, &unused);
+  std::vector<SmoothedSignal> fine, sampled;
+  if (!SimulatedVelocities(*in.model, in.trials, theta_now, o, &fine, &sampled)) return false;
+  const OneStepRows Z = BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &fine);
+  const OneStepRows Zs = BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &sampled);
+  if (Z.F.rows() != R.F.rows() || Zs.F.rows() != R.F.rows()) return false;
+  // Rows scaled by 1/σ of their noise (Ω keeps its form: the weight is constant in a run).
+  const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
+  const Eigen::MatrixXd Fc = sw.asDiagonal() * (R.F + (Z.F - Zs.F));
+  const Eigen::MatrixXd Zw = sw.asDiagonal() * Z.F;
+  const Eigen::VectorXd Yw = sw.cwiseProduct(R.Y);
+  const Eigen::MatrixXd A = Zw.transpose() * Fc;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+  if (!lu.isInvertible()) return false;
+  const Eigen::VectorXd psi = lu.solve(Zw.transpose() * Yw);
+  if (!psi.allFinite() || !(psi[0] > 0)) return false;
+  // Cov = A⁻¹ZᵀΩZA⁻ᵀ with Ω a heteroscedastic MA(1) of the (weighted) residuals within runs:
+  // the rows share their endpoints (seed 002 eqs. 20–26: Y_k = ξ̃(t_k) − ξ̃(t_{k−1})), and the
+  // integrals add errors that grow with the row's sensitivity to the velocity. White's
+  // per-row r_k² (HC) was tried: with ~50 rows and 4 unknowns (URIS yaw, pitch) its σ
+  // scattered by a factor 2 and covered 68–81%; the fitted variance model pools them.
+  const Eigen::VectorXd r = Yw - Fc * psi;
+  const Eigen::VectorXd Ak = RowSensitivity(in, R, o, psi, sw);
+  Eigen::MatrixXd features(Ak.size(), 2);  // of the variance model: [A_k, A_k²]
+  features.col(0) = Ak;
+  features.col(1) = Ak.cwiseAbs2();
+  const Eigen::MatrixXd cov = Ma1VarianceModelCovariance(Fc, Zw, r, R.run, features);
+  // Converged when no coefficient moved by more than 5% of its σ.
+  bool converged = true;
+  for (int j = 0; j < psi.size(); ++j) {
+    converged = converged && std::abs(psi[j] - res->psi[j]) <= 0.05 * std::sqrt(std::max(0.0, cov(j, j)));
+  }
+  res->psi = psi;
+  res->psi_covariance = cov;
+  res->residuals = R.Y - (R.F + (Z.F - Zs.F)) * psi;
+  res->cost = res->residuals.squaredNorm() / static_cast<int>(R.Y.size());
+  res->instrumental = true;
+  return !converged;
+}
+
+// Seed coefficients (seed 002: α, β, γ, δ) when the model is the standard one.
+void StoreSeedCoefficients(const OneStepRows& R, OneStepDofResult* res) {
+  auto find_free = [&](const char* name) {
+    for (std::size_t c = 0; c < R.free.size(); ++c) {
+      if (res->names[R.free[c]] == name) return static_cast<int>(c) + 1;
+    }
+    return -1;
+  };
+  const int ik = find_free(model::param::kLinearDrag), iq = find_free(model::param::kQuadraticDrag),
+            ib = find_free(model::param::kBias);
+  if (ik <= 0 || iq <= 0 || ib <= 0) return;
+  res->standard = true;
+  res->seed.alpha = -res->psi[ik];
+  res->seed.beta = -res->psi[iq];
+  res->seed.gamma = res->psi[0];
+  res->seed.delta = res->psi[ib];
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(4, R.F.cols());  // [α β γ δ] = S·ψ
+  S(0, ik) = -1;
+  S(1, iq) = -1;
+  S(2, 0) = 1;
+  S(3, ib) = 1;
+  res->seed_covariance = S * res->psi_covariance * S.transpose();
+}
+
+// The DOF's conditioning, its physical parameters from ψ, estimates and status.
+void FinishDof(const OneStepDofInput& in, const OneStepRows& R, const LeastSquaresOptions& lso,
+               OneStepDofResult* res) {
+  const model::DofModel& model = *in.model;
+  res->cost = res->residuals.squaredNorm() / res->num_rows;
+  // This DOF's own conditioning and non-identifiable parameters.
+  const LinearFit own = SolveLeastSquares(R.F, R.Y, nullptr, lso);
+  res->condition_number = own.condition_number;
+  for (int c : own.not_identifiable) {
+    res->not_identifiable.push_back(c == 0 ? std::string(model::param::kMass) : res->names[R.free[c - 1]]);
+  }
+  if (!(res->psi[0] > 0) || own.status != FitStatus::kOk) {
+    res->status = FitStatus::kIllConditioned;
+    std::string why = own.status != FitStatus::kOk ? own.message : "gamma = 1/m is not positive";
+    if (R.F.col(0).cwiseAbs().maxCoeff() == 0) {
+      why = "no force with a known installation coefficient: the model is homogeneous in its "
+            "parameters, η must be known (open water) for at least one mapping (seed 000 §II-A)";
+    }
+    res->message = "one-step LS: " + why +
+                   (res->not_identifiable.empty()
+                        ? std::string()
+                        : "; not identifiable: " + model::Join(res->not_identifiable));
+    return;
+  }
+  PsiToPhysical(model, in.theta, R.free, res->psi, res->psi_covariance, &res->theta,
+                &res->covariance);
+  res->state[0] = ParameterState::kEstimated;
+  for (int j : R.free) res->state[j] = ParameterState::kEstimated;
+  const std::vector<ParameterEstimate> all = MakeEstimates(res->names, res->theta, res->covariance, res->state);
+  for (std::size_t j = 0; j < all.size(); ++j) {
+    if (res->state[j] == ParameterState::kEstimated) res->estimates.push_back(all[j]);
+  }
+  StoreSeedCoefficients(R, res);
+  res->status = FitStatus::kOk;
+  std::ostringstream os;
+  os.precision(4);
+  os << "one-step integral LS on " << res->num_rows << " rows, condition number "
+     << res->condition_number;
+  res->message = os.str();
+}
+
+// One DOF's answer from the stacked fit: its block of ψ, refined by instrumental variables.
+void SolveDof(const OneStepDofInput& in, const OneStepRows& R, const LinearFit& fit, int row0,
+              int col0, const OneStepOptions& o, const LeastSquaresOptions& lso,
+              OneStepDofResult* res) {
+  const model::DofModel& model = *in.model;
+  const int P = static_cast<int>(R.F.cols());
+  res->num_rows = static_cast<int>(R.Y.size());
+  res->names = model.parameter_names();
+  res->state.assign(model.num_parameters(), ParameterState::kFixed);
+  res->theta = in.theta;
+  res->covariance = Eigen::MatrixXd::Zero(model.num_parameters(), model.num_parameters());
+  res->coefficient_names.push_back("gamma");
+  for (int j : R.free) res->coefficient_names.push_back(res->names[j] + "/m");
+  if (res->num_rows < P + 1) {
+    res->status = FitStatus::kTooFewData;
+    res->message = "one-step LS: " + std::to_string(res->num_rows) + " rows for " +
+                   std::to_string(P) + " unknowns (the trials are too short for the knot spacing)";
+    return;
+  }
+  res->psi = fit.theta.segment(col0, P);
+  res->psi_covariance = fit.covariance.block(col0, col0, P, P);
+  res->residuals = fit.residuals.segment(row0, res->num_rows);
+  if (o.covariance == CovarianceKind::kDifferenced) {
+    // Per DOF (the blocks are independent; the DOF's weight cancels).
+    const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
+    res->psi_covariance = DifferencedCovariance(sw.asDiagonal() * R.F, sw.cwiseProduct(res->residuals), R.run);
+  }
+  for (int it = 0; it < o.iv_iterations && res->psi[0] > 0 && res->psi.allFinite(); ++it) {
+    if (!InstrumentalStep(in, R, o, res)) break;
+  }
+  FinishDof(in, R, lso, res);
+}
+
+}  // namespace
+
+std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofInput>& dofs,
+                                                  const OneStepOptions& o) {
+  std::vector<OneStepDofResult> results(dofs.size());
+  std::vector<OneStepRows> rows(dofs.size());
+  for (std::size_t d = 0; d < dofs.size(); ++d) rows[d] = DofRows(dofs[d], o, &results[d]);
+  const StackedSystem s = Stack(dofs, rows);
   LeastSquaresOptions lso;
   lso.covariance = o.covariance;
   lso.newey_west_lags = o.newey_west_lags;
   lso.truncated_kernel = true;  // consecutive rows share an endpoint: MA(1), weight 1
   lso.max_condition = o.max_condition;
-  const LinearFit fit = SolveLeastSquares(F, Y, &W, lso, &groups);
-
+  const LinearFit fit = SolveLeastSquares(s.F, s.Y, &s.W, lso, &s.groups);
   for (std::size_t d = 0; d < dofs.size(); ++d) {
-    OneStepDofResult& res = results[d];
-    const model::DofModel& model = *dofs[d].model;
-    const OneStepRows& R = rows[d];
-    const int P = static_cast<int>(R.F.cols());
-    res.num_rows = static_cast<int>(R.Y.size());
-    res.names = model.parameter_names();
-    res.state.assign(model.num_parameters(), ParameterState::kFixed);
-    res.theta = dofs[d].theta;
-    res.covariance = Eigen::MatrixXd::Zero(model.num_parameters(), model.num_parameters());
-    res.coefficient_names.push_back("gamma");
-    for (int j : R.free) res.coefficient_names.push_back(res.names[j] + "/m");
-    if (res.num_rows < P + 1) {
-      res.status = FitStatus::kTooFewData;
-      res.message = "one-step LS: " + std::to_string(res.num_rows) + " rows for " +
-                    std::to_string(P) + " unknowns (the trials are too short for the knot spacing)";
-      continue;
-    }
-    res.psi = fit.theta.segment(col0[d], P);
-    res.psi_covariance = fit.covariance.block(col0[d], col0[d], P, P);
-    res.residuals = fit.residuals.segment(row0[d], res.num_rows);
-    if (o.covariance == CovarianceKind::kDifferenced) {
-      // Per DOF (the blocks are independent; the DOF's weight cancels).
-      const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
-      res.psi_covariance = DifferencedCovariance(sw.asDiagonal() * R.F, sw.cwiseProduct(res.residuals), R.run);
-    }
-    // Instrumental variables against the errors in variables of ξ̃ in F.
-    for (int it = 0; it < o.iv_iterations && res.psi[0] > 0 && res.psi.allFinite(); ++it) {
-      Eigen::VectorXd theta_now;
-      Eigen::MatrixXd unused;
-      PsiToPhysical(model, dofs[d].theta, R.free, res.psi, res.psi_covariance, &theta_now, &unused);
-      // The trial simulated by the current estimate from the data's initial state: on a fine
-      // grid (every input breakpoint, steps <= simulation_step_s) and at the data's samples.
-      std::vector<SmoothedSignal> fine, sampled;
-      bool ok = true;
-      for (const TrialData* trial : dofs[d].trials) {
-        const SmoothedSignal& v = trial->velocity_estimate;
-        std::vector<double> grid;
-        const double t_end = v.t.empty() ? 0.0 : v.t.back();
-        for (double t = 0.0; t < t_end; t += o.simulation_step_s) grid.push_back(t);
-        for (double b : trial->breakpoints) {
-          if (b < t_end) grid.push_back(b);
-        }
-        const double spacing = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
-        const bool dense = spacing <= o.simulation_step_s;
-        if (!dense) {
-          for (double t : v.t) grid.push_back(std::max(0.0, t));
-        }
-        std::sort(grid.begin(), grid.end());
-        grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
-        model::SimulationOptions so;
-        so.step_s = o.simulation_step_s;
-        Eigen::VectorXd x0 = Eigen::VectorXd::Zero(model.num_states());
-        x0[1] = trial->initial_velocity;
-        const model::Trajectory tr = model::Simulate(model, theta_now, trial->conditions(), grid, so, &x0);
-        if (!tr.x.allFinite()) {
-          ok = false;
-          break;
-        }
-        SmoothedSignal f, s2;
-        f.t = grid;
-        f.value.assign(tr.x.col(1).data(), tr.x.col(1).data() + tr.x.rows());
-        // Measured velocities are interpolated as the simulated samples are; velocities derived
-        // from positions are smooth local polynomials whose error is the filter's, not the
-        // interpolation's; and samples denser than the fine grid leave no defect: no
-        // correction for those.
-        if (trial->velocity_from_position || dense) {
-          s2 = f;
-        } else {
-          s2.t = v.t;
-          std::size_t i = 0;
-          for (double t : v.t) {
-            while (i + 1 < grid.size() && grid[i] < std::max(0.0, t)) ++i;  // t is on the grid
-            const double x[3] = {tr.x(i, 0), tr.x(i, 1), model.num_states() > 2 ? tr.x(i, 2) : 0.0};
-            double dx[3];
-            model.Derivative(grid[i], x, trial->conditions(), theta_now.data(), dx);
-            s2.value.push_back(tr.x(i, 1));
-            s2.derivative.push_back(dx[1]);
-          }
-        }
-        fine.push_back(std::move(f));
-        sampled.push_back(std::move(s2));
-      }
-      if (!ok) break;
-      const OneStepRows Z = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, R.free, o, &fine);
-      const OneStepRows Zs = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, R.free, o, &sampled);
-      if (Z.F.rows() != R.F.rows() || Zs.F.rows() != R.F.rows()) break;
-      // F corrected for the interpolation defect seen on the simulated path.
-      // Rows scaled by 1/σ of their noise (Ω keeps its form: the weight is constant in a run).
-      const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
-      const Eigen::MatrixXd Fc = sw.asDiagonal() * (R.F + (Z.F - Zs.F));
-      const Eigen::MatrixXd Zw = sw.asDiagonal() * Z.F;
-      const Eigen::VectorXd Yw = sw.cwiseProduct(R.Y);
-      const Eigen::MatrixXd A = Zw.transpose() * Fc;
-      Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
-      if (!lu.isInvertible()) break;
-      const Eigen::VectorXd psi = lu.solve(Zw.transpose() * Yw);
-      if (!psi.allFinite() || !(psi[0] > 0)) break;
-      // Cov = A⁻¹ZᵀΩZA⁻ᵀ with Ω a heteroscedastic MA(1) of the (weighted) residuals within runs:
-      // the rows share their endpoints (seed 002 eqs. 20–26: Y_k = ξ̃(t_k) − ξ̃(t_{k−1})), and the
-      // integrals add errors that grow with the row's sensitivity to the velocity. White's
-      // per-row r_k² (HC) was tried: with ~50 rows and 4 unknowns (URIS yaw, pitch) its σ
-      // scattered by a factor 2 and covered 68–81%; the fitted variance model pools them.
-      const Eigen::VectorXd r = Yw - Fc * psi;
-      const int nr = static_cast<int>(R.Y.size());
-      // Converged when no coefficient moved by more than 5% of its σ.
-      // Each row's sensitivity to a velocity error held over the row, A_k = (∂F_k/∂ξ)·ψ (central
-      // difference, exact for the quadratic terms): the integral of the filtered ξ̃'s error
-      // enters row k through A_k (VSOR: A_k = −∫(k + 2kq|ξ|)/m ds grows with the speed), the
-      // endpoint errors do not. Features [A_k, A_k²] of the variance model.
-      Eigen::VectorXd Ak = Eigen::VectorXd::Zero(nr);
-      {
-        double vmax = 0.0;
-        for (const TrialData* trial : dofs[d].trials) {
-          for (double x : trial->velocity_estimate.value) vmax = std::max(vmax, std::abs(x));
-        }
-        const double dv = 1e-3 * std::max(vmax, 1e-6);
-        std::vector<SmoothedSignal> plus, minus;
-        for (const TrialData* trial : dofs[d].trials) {
-          plus.push_back(trial->velocity_estimate);
-          minus.push_back(trial->velocity_estimate);
-          for (double& x : plus.back().value) x += dv;
-          for (double& x : minus.back().value) x -= dv;
-        }
-        const OneStepRows Fp = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, R.free, o, &plus);
-        const OneStepRows Fm = BuildOneStepRows(model, dofs[d].trials, dofs[d].theta, R.free, o, &minus);
-        if (Fp.F.rows() == nr && Fm.F.rows() == nr) {
-          Ak = sw.cwiseProduct((Fp.F - Fm.F) * psi) / (2.0 * dv);
-        }
-      }
-      Eigen::MatrixXd features(nr, 2);
-      features.col(0) = Ak;
-      features.col(1) = Ak.cwiseAbs2();
-      const Eigen::MatrixXd cov = Ma1VarianceModelCovariance(Fc, Zw, r, R.run, features);
-      bool converged = true;
-      for (int j = 0; j < psi.size(); ++j) {
-        converged = converged && std::abs(psi[j] - res.psi[j]) <= 0.05 * std::sqrt(std::max(0.0, cov(j, j)));
-      }
-      res.psi = psi;
-      res.psi_covariance = cov;
-      res.residuals = R.Y - (R.F + (Z.F - Zs.F)) * psi;
-      res.cost = res.residuals.squaredNorm() / nr;
-      res.instrumental = true;
-      if (converged) break;
-    }
-    res.cost = res.residuals.squaredNorm() / res.num_rows;
-    res.condition_number = fit.condition_number;
-    // This DOF's own conditioning and non-identifiable parameters.
-    const LinearFit own = SolveLeastSquares(R.F, R.Y, nullptr, lso);
-    res.condition_number = own.condition_number;
-    for (int c : own.not_identifiable) {
-      res.not_identifiable.push_back(c == 0 ? std::string(model::param::kMass) : res.names[R.free[c - 1]]);
-    }
-    if (!(res.psi[0] > 0) || own.status != FitStatus::kOk) {
-      res.status = FitStatus::kIllConditioned;
-      std::string why = own.status != FitStatus::kOk ? own.message : "gamma = 1/m is not positive";
-      if (R.F.col(0).cwiseAbs().maxCoeff() == 0) {
-        why = "no force with a known installation coefficient: the model is homogeneous in its "
-              "parameters, η must be known (open water) for at least one mapping (seed 000 §II-A)";
-      }
-      res.message = "one-step LS: " + why +
-                    (res.not_identifiable.empty()
-                         ? std::string()
-                         : "; not identifiable: " + [&] {
-                             std::string s;
-                             for (const auto& n : res.not_identifiable) s += (s.empty() ? "" : ", ") + n;
-                             return s;
-                           }());
-      continue;
-    }
-    PsiToPhysical(model, dofs[d].theta, R.free, res.psi, res.psi_covariance, &res.theta,
-                  &res.covariance);
-    res.state[0] = ParameterState::kEstimated;
-    for (int j : R.free) res.state[j] = ParameterState::kEstimated;
-    const std::vector<ParameterEstimate> all = MakeEstimates(res.names, res.theta, res.covariance, res.state);
-    for (std::size_t j = 0; j < all.size(); ++j) {
-      if (res.state[j] == ParameterState::kEstimated) res.estimates.push_back(all[j]);
-    }
-    // Seed coefficients when the model is the standard one.
-    auto find_free = [&](const char* name) {
-      for (std::size_t c = 0; c < R.free.size(); ++c) {
-        if (res.names[R.free[c]] == name) return static_cast<int>(c) + 1;
-      }
-      return -1;
-    };
-    const int ik = find_free(model::param::kLinearDrag), iq = find_free(model::param::kQuadraticDrag),
-              ib = find_free(model::param::kBias);
-    if (ik > 0 && iq > 0 && ib > 0) {
-      res.standard = true;
-      res.seed.alpha = -res.psi[ik];
-      res.seed.beta = -res.psi[iq];
-      res.seed.gamma = res.psi[0];
-      res.seed.delta = res.psi[ib];
-      Eigen::MatrixXd S = Eigen::MatrixXd::Zero(4, P);  // [α β γ δ] = S·ψ
-      S(0, ik) = -1;
-      S(1, iq) = -1;
-      S(2, 0) = 1;
-      S(3, ib) = 1;
-      res.seed_covariance = S * res.psi_covariance * S.transpose();
-    }
-    res.status = FitStatus::kOk;
-    std::ostringstream os;
-    os.precision(4);
-    os << "one-step integral LS on " << res.num_rows << " rows, condition number "
-       << res.condition_number;
-    res.message = os.str();
+    SolveDof(dofs[d], rows[d], fit, s.row0[d], s.col0[d], o, lso, &results[d]);
   }
   return results;
 }

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "options_check.h"
+
 namespace uuvplan::ident {
 namespace {
 
@@ -84,11 +86,8 @@ double PredictionResidual(const Signal& s, int hw, const std::vector<char>& skip
 }  // namespace
 
 bool OutlierOptions::IsValid(std::string* error) const {
-  if (half_window < 2 || !(threshold > 0) || noise_floor < 0) {
-    if (error) *error = "OutlierOptions: need half_window >= 2, threshold > 0, noise_floor >= 0";
-    return false;
-  }
-  return true;
+  return Require(half_window >= 2 && threshold > 0 && !(noise_floor < 0),
+                 "OutlierOptions: need half_window >= 2, threshold > 0, noise_floor >= 0", error);
 }
 
 std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& o,

@@ -5,20 +5,19 @@
 #include <limits>
 #include <sstream>
 
+#include "number_text.h"
+#include "model_selection.h"
+#include "number_text.h"
+#include "options_check.h"
 #include "uuvplan/ident/least_squares.h"
 #include "uuvplan/ident/significance.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/simulator.h"
+#include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
-
-std::string Fmt(double v, int precision = 4) {
-  std::ostringstream os;
-  os.precision(precision);
-  os << v;
-  return os.str();
-}
 
 // One trial's measurements on a common time grid.
 struct TrialProblem {
@@ -413,26 +412,23 @@ Eigen::MatrixXd BatchMeansCovariance(const Eigen::MatrixXd& J, const Eigen::Vect
 }  // namespace
 
 bool OutputErrorOptions::IsValid(std::string* error) const {
-  if (max_iterations < 1 || !(tolerance > 0) || !(step_s > 0) || !(max_condition > 1) ||
-      !(bin_s > 0) || !(grid_s >= 0)) {
-    if (error) *error = "OutputErrorOptions: max_iterations >= 1, tolerance > 0, step_s > 0, bin_s > 0, grid_s >= 0, max_condition > 1";
-    return false;
-  }
-  if (!use_position && !use_velocity) {
-    if (error) *error = "OutputErrorOptions: use_position or use_velocity must be true";
-    return false;
-  }
-  return true;
+  return Require(max_iterations >= 1 && tolerance > 0 && step_s > 0 && max_condition > 1 &&
+                     bin_s > 0 && grid_s >= 0,
+                 "OutputErrorOptions: max_iterations >= 1, tolerance > 0, step_s > 0, bin_s > 0, "
+                 "grid_s >= 0, max_condition > 1",
+                 error) &&
+         Require(use_position || use_velocity,
+                 "OutputErrorOptions: use_position or use_velocity must be true", error);
 }
 
 std::string_view OutputErrorStatusName(OutputErrorStatus s) {
-  switch (s) {
-    case OutputErrorStatus::kConverged: return "converged";
-    case OutputErrorStatus::kMaxIterations: return "max_iterations";
-    case OutputErrorStatus::kIllConditioned: return "ill_conditioned";
-    case OutputErrorStatus::kFailed: return "failed";
-  }
-  return "failed";
+  static constexpr model::EnumNames<OutputErrorStatus, 4> kNames{{{
+      {OutputErrorStatus::kConverged, "converged"},
+      {OutputErrorStatus::kMaxIterations, "max_iterations"},
+      {OutputErrorStatus::kIllConditioned, "ill_conditioned"},
+      {OutputErrorStatus::kFailed, "failed"},
+  }}};
+  return kNames.Name(s);
 }
 
 namespace {
@@ -554,6 +550,124 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
   return out;
 }
 
+
+}  // namespace
+
+namespace {
+
+// Gross errors the data preparation let through (an outlier next to a command step, say)
+// would pull a least-squares fit: residuals beyond 6 robust standard deviations (and 5
+// declared σ) are left out and the fit repeated once. Returns how many were left out.
+int RefitWithoutGrossErrors(Problem* p, const OutputErrorOptions& o, LmOutcome* lm,
+                            int* iterations) {
+  std::vector<double> a(lm->r.size());
+  for (Eigen::Index i = 0; i < lm->r.size(); ++i) a[i] = std::abs(lm->r[i]);
+  std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
+  const double limit = std::max(5.0, 6.0 * 1.4826 * a[a.size() / 2]);
+  std::vector<char> mask(lm->r.size(), 0);
+  int gross = 0;
+  for (Eigen::Index i = 0; i < lm->r.size(); ++i) {
+    if (std::abs(lm->r[i]) > limit) {
+      mask[i] = 1;
+      ++gross;
+    }
+  }
+  if (gross == 0 || gross >= lm->r.size() / 100 + 1) return 0;
+  p->Exclude(mask);
+  LmOutcome again = LevenbergMarquardt(*p, lm->z, o);
+  *iterations += again.iterations;
+  if (again.failed) {
+    p->Exclude({});
+    return 0;
+  }
+  *lm = std::move(again);
+  return gross;
+}
+
+// Residuals correlated over the record (model error or coloured noise): the batch-means
+// covariance of z, never less than the white-noise one s²·crb_z.
+Eigen::MatrixXd RobustCovariance(const Problem& p, const LmOutcome& lm, double sigma2,
+                                 const Eigen::MatrixXd& crb_z) {
+  std::vector<int> groups(p.num_r());
+  for (const TrialProblem& tp : p.trials()) {
+    for (int k = 0; k < tp.num_residuals(); ++k) groups[tp.r_offset + k] = tp.trial->index;
+  }
+  const int block = std::max(2, 2 * CorrelationLength(lm.r));
+  const Eigen::MatrixXd hac = BatchMeansCovariance(lm.J, lm.r, groups, block);
+  for (int j = 0; j < hac.rows(); ++j) {
+    if (hac(j, j) < sigma2 * crb_z(j, j)) return sigma2 * crb_z;
+  }
+  return hac;
+}
+
+// Cov(z) = s²·(JᵀJ)⁻¹ (HAC when the residuals are coloured) and the CRB (JᵀJ)⁻¹, in the model
+// layout; s², condition number, unidentifiable parameters and the status of the fit.
+void StoreCovariance(const Problem& p, const LmOutcome& lm, const std::vector<int>& free,
+                     const OutputErrorOptions& o, OutputErrorResult* res) {
+  res->num_residuals = p.num_r() - p.num_excluded();
+  res->cost = 0.5 * lm.r.squaredNorm();
+  res->sigma2 = lm.r.squaredNorm() / (res->num_residuals - p.num_z());
+  LeastSquaresOptions lso;
+  lso.covariance = CovarianceKind::kKnownNoise;
+  lso.max_condition = o.max_condition;
+  const LinearFit lin = SolveLeastSquares(lm.J, lm.r, nullptr, lso);
+  res->condition_number = lin.condition_number;
+  res->not_identifiable.clear();
+  for (int c : lin.not_identifiable) {
+    res->not_identifiable.push_back(c < static_cast<int>(free.size()) ? res->names[free[c]]
+                                                                       : "initial state");
+  }
+  const Eigen::MatrixXd& crb_z = lin.covariance;
+  res->residual_lag1 = ResidualLag1(p, lm.r);
+  res->hac_covariance = res->residual_lag1 > o.whiteness_threshold;
+  const Eigen::MatrixXd cov_z =
+      res->hac_covariance ? RobustCovariance(p, lm, res->sigma2, crb_z) : res->sigma2 * crb_z;
+  res->covariance.setZero();
+  res->crb.setZero();
+  for (std::size_t a = 0; a < free.size(); ++a) {
+    for (std::size_t b = 0; b < free.size(); ++b) {
+      res->covariance(free[a], free[b]) = cov_z(a, b);
+      res->crb(free[a], free[b]) = crb_z(a, b);
+    }
+  }
+  res->status = lin.status != FitStatus::kOk ? OutputErrorStatus::kIllConditioned
+                : lm.converged               ? OutputErrorStatus::kConverged
+                                             : OutputErrorStatus::kMaxIterations;
+  if (!lm.converged) res->notes.push_back(lm.message);
+}
+
+// Seed 000 §IV-D model selection: the free parameter to drop (the worst insignificant
+// prunable one), or -1; its value and σ are kept and a note says why.
+int DropWorst(const std::vector<int>& free, const OutputErrorOptions& o, Eigen::VectorXd* theta,
+              std::vector<double>* before_value, std::vector<double>* before_sigma,
+              OutputErrorResult* res) {
+  std::vector<PruneCandidate> candidates;
+  for (int j : free) {
+    candidates.push_back({res->names[j], (*theta)[j], std::sqrt(res->covariance(j, j))});
+  }
+  double worst_pe = 0.0;
+  const int c = WorstInsignificant(candidates, o.prunable, &worst_pe);
+  if (c < 0 || free.size() <= 1) return -1;
+  const int worst = free[c];
+  (*before_value)[worst] = (*theta)[worst];
+  (*before_sigma)[worst] = std::sqrt(res->covariance(worst, worst));
+  res->notes.push_back(res->names[worst] + " = " + Fmt((*theta)[worst]) + " ± " +
+                       Fmt((*before_sigma)[worst]) + " (" + Fmt(worst_pe, 3) +
+                       "% > 51.02%): insignificant at 95%, dropped and the rest refitted");
+  (*theta)[worst] = 0.0;
+  res->state[worst] = ParameterState::kDropped;
+  return worst;
+}
+
+std::string Message(const OutputErrorResult& res) {
+  std::ostringstream os;
+  os.precision(4);
+  os << "output error: " << OutputErrorStatusName(res.status) << " after " << res.iterations
+     << " iterations on " << res.num_residuals << " measurements, s² = " << res.sigma2;
+  if (!res.not_identifiable.empty()) os << "; not identifiable: " << model::Join(res.not_identifiable);
+  return os.str();
+}
+
 }  // namespace
 
 OutputErrorResult OutputErrorFit(const model::DofModel& model,
@@ -576,15 +690,15 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
   }
   std::vector<double> before_value(np, 0.0), before_sigma(np, 0.0);
   Eigen::VectorXd theta = theta0;
-  std::vector<TrialInitialState> initial;
-  bool have_initial = false;
+  std::vector<TrialInitialState> initial;  // of the last fit, the next one's start
   int excluded_total = 0;
+  // Fit, then drop the worst insignificant parameter and refit from where the fit ended.
   while (true) {
     std::vector<int> free;
     for (int j = 0; j < np; ++j) {
       if (res.state[j] == ParameterState::kEstimated) free.push_back(j);
     }
-    Problem p(model, trials, theta, free, have_initial ? &initial : nullptr, o);
+    Problem p(model, trials, theta, free, initial.empty() ? nullptr : &initial, o);
     if (p.num_r() <= p.num_z()) {
       res.status = OutputErrorStatus::kFailed;
       res.message = "output error: " + std::to_string(p.num_r()) + " measurements for " +
@@ -598,125 +712,18 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
       res.message = "output error: " + lm.message;
       return res;
     }
-    // Gross errors the data preparation let through (an outlier next to a command step, say)
-    // would pull a least-squares fit: residuals beyond 6 robust standard deviations (and 5
-    // declared σ) are left out and the fit repeated once.
-    {
-      std::vector<double> a(lm.r.size());
-      for (Eigen::Index i = 0; i < lm.r.size(); ++i) a[i] = std::abs(lm.r[i]);
-      std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
-      const double limit = std::max(5.0, 6.0 * 1.4826 * a[a.size() / 2]);
-      std::vector<char> mask(lm.r.size(), 0);
-      int gross = 0;
-      for (Eigen::Index i = 0; i < lm.r.size(); ++i) {
-        if (std::abs(lm.r[i]) > limit) {
-          mask[i] = 1;
-          ++gross;
-        }
-      }
-      if (gross > 0 && gross < lm.r.size() / 100 + 1) {
-        p.Exclude(mask);
-        LmOutcome again = LevenbergMarquardt(p, lm.z, o);
-        res.iterations += again.iterations;
-        if (!again.failed) {
-          lm = std::move(again);
-          excluded_total = gross;
-        } else {
-          p.Exclude({});
-        }
-      }
-    }
+    const int gross = RefitWithoutGrossErrors(&p, o, &lm, &res.iterations);
+    if (gross > 0) excluded_total = gross;
     theta = p.Theta(lm.z);
     initial = p.Initial(lm.z);
-    have_initial = true;
-    res.num_residuals = p.num_r() - p.num_excluded();
-    res.cost = 0.5 * lm.r.squaredNorm();
-    res.sigma2 = lm.r.squaredNorm() / (res.num_residuals - p.num_z());
-    // Covariance of z: (JᵀJ)⁻¹ (CRB form), scaled by s²; HAC when the residuals are coloured.
-    LeastSquaresOptions lso;
-    lso.covariance = CovarianceKind::kKnownNoise;
-    lso.max_condition = o.max_condition;
-    const LinearFit lin = SolveLeastSquares(lm.J, lm.r, nullptr, lso);
-    res.condition_number = lin.condition_number;
-    res.not_identifiable.clear();
-    for (int c : lin.not_identifiable) {
-      res.not_identifiable.push_back(c < static_cast<int>(free.size()) ? res.names[free[c]]
-                                                                        : "initial state");
-    }
-    const Eigen::MatrixXd crb_z = lin.covariance;
-    res.residual_lag1 = ResidualLag1(p, lm.r);
-    Eigen::MatrixXd cov_z = res.sigma2 * crb_z;
-    res.hac_covariance = false;
-    if (res.residual_lag1 > o.whiteness_threshold) {
-      // Residuals correlated over the record (model error or coloured noise): batch means.
-      std::vector<int> groups(p.num_r());
-      for (const TrialProblem& tp : p.trials()) {
-        for (int k = 0; k < tp.num_residuals(); ++k) groups[tp.r_offset + k] = tp.trial->index;
-      }
-      const int block = std::max(2, 2 * CorrelationLength(lm.r));
-      const Eigen::MatrixXd hac = BatchMeansCovariance(lm.J, lm.r, groups, block);
-      // Never report less than the white-noise covariance.
-      cov_z = hac;
-      for (int j = 0; j < cov_z.rows(); ++j) {
-        if (hac(j, j) < res.sigma2 * crb_z(j, j)) {
-          cov_z = res.sigma2 * crb_z;
-          break;
-        }
-      }
-      res.hac_covariance = true;
-    }
-    res.covariance.setZero();
-    res.crb.setZero();
-    for (std::size_t a = 0; a < free.size(); ++a) {
-      for (std::size_t b = 0; b < free.size(); ++b) {
-        res.covariance(free[a], free[b]) = cov_z(a, b);
-        res.crb(free[a], free[b]) = crb_z(a, b);
-      }
-    }
-    res.status = lin.status != FitStatus::kOk ? OutputErrorStatus::kIllConditioned
-                 : lm.converged                ? OutputErrorStatus::kConverged
-                                               : OutputErrorStatus::kMaxIterations;
-    if (!lm.converged) res.notes.push_back(lm.message);
+    StoreCovariance(p, lm, free, o, &res);
     if (!o.prune_insignificant || res.status != OutputErrorStatus::kConverged) break;
-    int worst = -1;
-    double worst_pe = kInsignificantPercentileError;
-    auto is_drag = [&](int j) {
-      const std::string& n = res.names[j];
-      return n == model::param::kLinearDrag || n == model::param::kQuadraticDrag ||
-             n == model::param::kLinearDragNeg || n == model::param::kQuadraticDragNeg;
-    };
-    const int drag_terms = static_cast<int>(std::count_if(free.begin(), free.end(), is_drag));
-    for (int j : free) {
-      if (std::find(o.prunable.begin(), o.prunable.end(), res.names[j]) == o.prunable.end()) continue;
-      // At least one drag term stays: a model without drag has no steady state.
-      if (is_drag(j) && drag_terms <= 1) continue;
-      const double pe = PercentileError(theta[j], std::sqrt(res.covariance(j, j)));
-      if (pe > worst_pe) {
-        worst_pe = pe;
-        worst = j;
-      }
-    }
-    if (worst < 0 || free.size() <= 1) break;
-    before_value[worst] = theta[worst];
-    before_sigma[worst] = std::sqrt(res.covariance(worst, worst));
-    res.notes.push_back(res.names[worst] + " = " + Fmt(theta[worst]) + " ± " +
-                        Fmt(before_sigma[worst]) + " (" + Fmt(worst_pe, 3) +
-                        "% > 51.02%): insignificant at 95%, dropped and the rest refitted");
-    theta[worst] = 0.0;
-    res.state[worst] = ParameterState::kDropped;
+    if (DropWorst(free, o, &theta, &before_value, &before_sigma, &res) < 0) break;
   }
   res.theta = theta;
   res.initial = initial;
-  std::vector<ParameterEstimate> all = MakeEstimates(res.names, res.theta, res.covariance, res.state);
-  for (int j = 0; j < np; ++j) {
-    if (res.state[j] == ParameterState::kFixed) continue;
-    if (res.state[j] == ParameterState::kDropped) {
-      all[j].value_before_drop = before_value[j];
-      all[j].sigma_before_drop = before_sigma[j];
-      all[j].significant = false;
-    }
-    res.estimates.push_back(all[j]);
-  }
+  res.estimates = EstimatedAndDropped(res.names, res.theta, res.covariance, res.state,
+                                      before_value, before_sigma);
   if (excluded_total > 0) {
     res.notes.push_back(std::to_string(excluded_total) +
                         " measurement(s) more than 6 robust σ from the fitted model left out as "
@@ -728,15 +735,7 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
                         "): model error or coloured noise; σ from batch means of the scores "
                         "(blocks of twice the residuals' correlation length)");
   }
-  std::ostringstream os;
-  os.precision(4);
-  os << "output error: " << OutputErrorStatusName(res.status) << " after " << res.iterations
-     << " iterations on " << res.num_residuals << " measurements, s² = " << res.sigma2;
-  if (!res.not_identifiable.empty()) {
-    os << "; not identifiable: ";
-    for (std::size_t i = 0; i < res.not_identifiable.size(); ++i) os << (i ? ", " : "") << res.not_identifiable[i];
-  }
-  res.message = os.str();
+  res.message = Message(res);
   return res;
 }
 

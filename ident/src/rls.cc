@@ -2,21 +2,17 @@
 
 #include <cmath>
 
+#include "options_check.h"
 #include "uuvplan/ident/regression.h"
 
 namespace uuvplan::ident {
 
 bool RlsOptions::IsValid(std::string* error) const {
-  if (!(lambda > 0.9 && lambda <= 1.0)) {
-    if (error) *error = "RlsOptions::lambda = " + std::to_string(lambda) +
-                        ". Violated constraint: 0.9 < lambda <= 1 (seed 004)";
-    return false;
-  }
-  if (!(p0 > 0)) {
-    if (error) *error = "RlsOptions::p0 must be > 0";
-    return false;
-  }
-  return true;
+  return Require(lambda > 0.9 && lambda <= 1.0,
+                 "RlsOptions::lambda = " + std::to_string(lambda) +
+                     ". Violated constraint: 0.9 < lambda <= 1 (seed 004)",
+                 error) &&
+         Require(p0 > 0, "RlsOptions::p0 must be > 0", error);
 }
 
 RlsTrajectory RecursiveLeastSquares(const Eigen::MatrixXd& F, const Eigen::VectorXd& Y,

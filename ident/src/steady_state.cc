@@ -5,20 +5,19 @@
 #include <limits>
 #include <sstream>
 
+#include "number_text.h"
+#include "model_selection.h"
+#include "number_text.h"
+#include "options_check.h"
 #include "uuvplan/ident/regression.h"
 #include "uuvplan/ident/significance.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/mapping.h"
+#include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
-
-std::string Fmt(double v, int precision = 4) {
-  std::ostringstream os;
-  os.precision(precision);
-  os << v;
-  return os.str();
-}
 
 // dF/dξ of the whole model at a context (for the effective variance of a row).
 double ForceSlope(const model::DofModel& model, const model::TermContext& c,
@@ -29,17 +28,6 @@ double ForceSlope(const model::DofModel& model, const model::TermContext& c,
     d += model.terms()[j]->Partials(c, theta.data() + model.term_offset(int(j)), J.data()).d_xi;
   }
   return d;
-}
-
-bool IsDragName(const std::string& n) {
-  return n == model::param::kLinearDrag || n == model::param::kQuadraticDrag ||
-         n == model::param::kLinearDragNeg || n == model::param::kQuadraticDragNeg;
-}
-
-int CountDrag(const std::vector<int>& cols, const std::vector<std::string>& names) {
-  int n = 0;
-  for (int j : cols) n += IsDragName(names[j]) ? 1 : 0;
-  return n;
 }
 
 model::TermContext PointContext(const model::DofModel& model, const SteadyPoint& p,
@@ -58,22 +46,19 @@ model::TermContext PointContext(const model::DofModel& model, const SteadyPoint&
 }  // namespace
 
 bool SteadyStateOptions::IsValid(std::string* error) const {
-  if (!detection.IsValid(error)) return false;
-  if (!(max_condition > 1) || reweight_iterations < 0) {
-    if (error) *error = "SteadyStateOptions: max_condition > 1 and reweight_iterations >= 0";
-    return false;
-  }
-  return true;
+  return detection.IsValid(error) &&
+         Require(max_condition > 1 && reweight_iterations >= 0,
+                 "SteadyStateOptions: max_condition > 1 and reweight_iterations >= 0", error);
 }
 
 std::string_view SteadyStatusName(SteadyStatus s) {
-  switch (s) {
-    case SteadyStatus::kOk: return "ok";
-    case SteadyStatus::kTooFewSegments: return "too_few_segments";
-    case SteadyStatus::kIllConditioned: return "ill_conditioned";
-    case SteadyStatus::kNotExcited: return "not_excited";
-  }
-  return "ok";
+  static constexpr model::EnumNames<SteadyStatus, 4> kNames{{{
+      {SteadyStatus::kOk, "ok"},
+      {SteadyStatus::kTooFewSegments, "too_few_segments"},
+      {SteadyStatus::kIllConditioned, "ill_conditioned"},
+      {SteadyStatus::kNotExcited, "not_excited"},
+  }}};
+  return kNames.Name(s);
 }
 
 bool SteadyStateResult::Estimated(const std::string& name) const {
@@ -177,6 +162,231 @@ void RefineSteadyPoints(const model::DofModel& model, const Eigen::VectorXd& the
   }
 }
 
+namespace {
+
+// The regression rows at the given theta (non-linear terms evaluated at it):
+// 0 = h·θ + h0  ⇒  −h0 = h·θ  (eqs. 7–10).
+void SteadyRows(const model::DofModel& model, const std::vector<SteadyPoint>& points,
+                const Eigen::VectorXd& theta, Eigen::MatrixXd* H, Eigen::VectorXd* y) {
+  const int n = static_cast<int>(points.size()), np = model.num_parameters();
+  H->resize(n, np);
+  y->resize(n);
+  std::vector<double> h(np);
+  for (int i = 0; i < n; ++i) {
+    double h0 = 0.0;
+    EvaluateRegressor(model, PointContext(model, points[i], theta), theta, h.data(), &h0);
+    for (int j = 0; j < np; ++j) (*H)(i, j) = h[j];
+    (*y)[i] = -h0;
+  }
+}
+
+// The unknowns: regressor-linear parameters some point excites (the others are noted).
+std::vector<int> ExcitedColumns(const model::DofModel& model, const Eigen::MatrixXd& Hall,
+                                SteadyStateResult* r) {
+  std::vector<int> cols;
+  for (int j : LinearParameters(model)) {
+    if (Hall.rows() > 0 && Hall.col(j).cwiseAbs().maxCoeff() > 0) {
+      cols.push_back(j);
+    } else {
+      r->not_excited.push_back(r->names[j]);
+    }
+  }
+  if (!r->not_excited.empty()) {
+    r->notes.push_back("not excited by any steady segment (kept at their given values): " +
+                       model::Join(r->not_excited));
+  }
+  return cols;
+}
+
+// Whether there are unknowns, a non-homogeneous regression and enough points; else the
+// status says why.
+bool EnoughPoints(const std::vector<int>& cols, const Eigen::VectorXd& y, SteadyStateResult* r) {
+  const int n = r->num_points;
+  if (cols.empty()) {
+    r->status = SteadyStatus::kNotExcited;
+    r->message = n == 0 ? "no steady-state segment found" : "no parameter is excited by the steady segments";
+    return false;
+  }
+  if (n > 0 && y.cwiseAbs().maxCoeff() == 0.0) {
+    r->status = SteadyStatus::kNotExcited;
+    r->message = "every steady segment used a force whose installation coefficient is unknown: the "
+                 "regression is homogeneous (θ = 0 fits it); η must be known (open water) for at "
+                 "least one mapping and direction (seed 000 §II-A) — add legs with an open-water "
+                 "mapping";
+    return false;
+  }
+  if (n < static_cast<int>(cols.size()) + 1) {
+    r->status = SteadyStatus::kTooFewSegments;
+    std::vector<std::string> names;
+    for (int j : cols) names.push_back(r->names[j]);
+    r->message = "too few steady-state segments: " + std::to_string(n) + " found for " +
+                 std::to_string(cols.size()) + " unknowns (" + model::Join(names) + "); at least " +
+                 std::to_string(cols.size() + 1) +
+                 " are needed (add constant-force legs at other speeds, each long enough to settle)";
+    for (int j : cols) r->state[j] = ParameterState::kFixed;
+    return false;
+  }
+  return true;
+}
+
+// Repeating a leg adds precision, not information: the unknowns need as many distinct
+// operating points (mapping, force, ballast, other DOFs' speeds) as there are of them. A
+// two-level telegraph, say, leaves k, kq, bias and η undetermined (k = kq = 0 with
+// bias = −φ and η = −1 fits ±φ exactly), whatever the condition number of the noisy rows.
+std::vector<SteadyPoint> DistinctPoints(const model::DofModel& model,
+                                        const std::vector<SteadyPoint>& points) {
+  std::vector<SteadyPoint> distinct;
+  for (const SteadyPoint& a : points) {
+    bool seen = false;
+    for (const SteadyPoint& b : distinct) {
+      bool same = a.mapping == b.mapping && a.ballast_steps == b.ballast_steps &&
+                  std::abs(a.phi - b.phi) <= 1e-6 * std::max({1.0, std::abs(a.phi), std::abs(b.phi)});
+      for (int k = 0; k < model::kNumDofs && same; ++k) {
+        if (k == model::Index(model.dof())) continue;
+        same = std::abs(a.velocities[k] - b.velocities[k]) <= 1e-3 * (1 + std::abs(b.velocities[k]));
+      }
+      seen = seen || same;
+    }
+    if (!seen) distinct.push_back(a);
+  }
+  return distinct;
+}
+
+// Columns (of the p unknowns) in the null space of the distinct operating points' rows `Hd`
+// (column-scaled, components above LeastSquaresOptions::null_component).
+std::vector<int> NullColumns(const Eigen::MatrixXd& Hd, int p) {
+  Eigen::MatrixXd Hsq = Eigen::MatrixXd::Zero(p, p);  // Hd padded with zero rows to p × p
+  Hsq.topRows(Hd.rows()) = Hd;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Hsq, Eigen::ComputeFullV);
+  const double smax = svd.singularValues()[0];
+  const double null_component = LeastSquaresOptions{}.null_component;
+  std::vector<int> null_cols;
+  for (int k = 0; k < p; ++k) {
+    if (svd.singularValues()[k] > 1e-10 * smax) continue;  // rank of the distinct rows
+    for (int c = 0; c < p; ++c) {
+      if (std::abs(svd.matrixV()(c, k)) > null_component &&
+          std::find(null_cols.begin(), null_cols.end(), c) == null_cols.end()) {
+        null_cols.push_back(c);
+      }
+    }
+  }
+  std::sort(null_cols.begin(), null_cols.end());
+  return null_cols;
+}
+
+// Fewer distinct points d than unknowns p: the regression is singular (the scatter of the
+// measured speeds only hides it). Reports the condition number of the rows as measured and
+// the parameters in the null space of the distinct points' rows.
+void ReportSingular(const model::DofModel& model, const Eigen::MatrixXd& Hall,
+                    const std::vector<SteadyPoint>& distinct, const std::vector<int>& cols,
+                    const Eigen::VectorXd& theta, SteadyStateResult* r) {
+  const int n = r->num_points, p = static_cast<int>(cols.size());
+  const int d = static_cast<int>(distinct.size());
+  Eigen::MatrixXd H(n, p), Hd_all, Hd(d, p);
+  Eigen::VectorXd y_unused;
+  for (int c = 0; c < p; ++c) H.col(c) = Hall.col(cols[c]);
+  SteadyRows(model, distinct, theta, &Hd_all, &y_unused);
+  for (int c = 0; c < p; ++c) Hd.col(c) = Hd_all.col(cols[c]);
+  for (int c = 0; c < p; ++c) {
+    const double s = H.col(c).norm();
+    if (s > 0) {
+      H.col(c) /= s;
+      Hd.col(c) /= s;
+    }
+  }
+  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(H).singularValues();
+  r->condition_number = sv[p - 1] > 0 ? sv[0] / sv[p - 1] : std::numeric_limits<double>::infinity();
+  std::vector<std::string> col_names;
+  for (int j : cols) col_names.push_back(r->names[j]);
+  std::vector<std::string> null_names;
+  for (int c : NullColumns(Hd, p)) null_names.push_back(col_names[c]);
+  r->not_identifiable = null_names;
+  r->status = SteadyStatus::kIllConditioned;
+  r->message = "steady-state regression is singular: the " + std::to_string(n) +
+               " steady segments hold only " + std::to_string(d) +
+               " distinct operating point(s) for " + std::to_string(p) + " unknowns (" +
+               model::Join(col_names) + "), condition number " + Fmt(r->condition_number, 3) +
+               " of the measured rows; not identifiable: " + model::Join(null_names) +
+               " (add steady legs at other force levels, in both directions and with each "
+               "mapping)";
+}
+
+// One least-squares fit of the columns `cols`; with velocity-variance weighting (eq. 12's
+// effective variance (∂F/∂ξ·σ_ξ)² per point) reweighted at the current estimate.
+LinearFit WeightedFit(const model::DofModel& model, const std::vector<SteadyPoint>& points,
+                      const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
+                      const std::vector<int>& cols, const SteadyStateOptions& o,
+                      const LeastSquaresOptions& lso, Eigen::VectorXd* theta) {
+  const int n = static_cast<int>(H.rows()), p = static_cast<int>(cols.size());
+  const bool weighted = o.weighting == SteadyStateOptions::Weighting::kVelocityVariance;
+  LeastSquaresOptions first = lso;
+  if (weighted) first.covariance = CovarianceKind::kResidual;
+  LinearFit fit = SolveLeastSquares(H, y, nullptr, first);
+  if (!weighted) return fit;
+  Eigen::VectorXd w = Eigen::VectorXd::Ones(n);
+  for (int it = 0; it < std::max(1, o.reweight_iterations); ++it) {
+    for (int c = 0; c < p; ++c) (*theta)[cols[c]] = fit.theta[c];
+    for (int i = 0; i < n; ++i) {
+      const double slope = ForceSlope(model, PointContext(model, points[i], *theta), *theta);
+      const double var = slope * slope * points[i].sigma_xi * points[i].sigma_xi;
+      w[i] = var > 0 ? 1.0 / var : 1.0;
+    }
+    fit = SolveLeastSquares(H, y, &w, lso);
+  }
+  return fit;
+}
+
+// The fit with model selection (seed 000 §IV-D): drop the worst insignificant prunable
+// parameter and refit until none is left. Fills r's theta, state and estimates.
+LinearFit FitWithSelection(const model::DofModel& model, const std::vector<SteadyPoint>& points,
+                           const Eigen::MatrixXd& Hall, const Eigen::VectorXd& y,
+                           std::vector<int>* cols, const SteadyStateOptions& o,
+                           SteadyStateResult* r) {
+  const int n = r->num_points, np = model.num_parameters();
+  LeastSquaresOptions lso;
+  lso.covariance = o.covariance;
+  lso.max_condition = o.max_condition;
+  std::vector<double> before_value(np, 0.0), before_sigma(np, 0.0);
+  Eigen::VectorXd theta = r->theta;
+  LinearFit fit;
+  while (true) {
+    const int p = static_cast<int>(cols->size());
+    Eigen::MatrixXd H(n, p);
+    for (int c = 0; c < p; ++c) H.col(c) = Hall.col((*cols)[c]);
+    // y − (dropped columns at 0) = y: dropped parameters contribute nothing.
+    fit = WeightedFit(model, points, H, y, *cols, o, lso, &theta);
+    for (int c = 0; c < p; ++c) theta[(*cols)[c]] = fit.theta[c];
+    if (!o.prune_insignificant || fit.status != FitStatus::kOk) break;
+    std::vector<PruneCandidate> candidates;
+    for (int c = 0; c < p; ++c) {
+      candidates.push_back({r->names[(*cols)[c]], fit.theta[c], std::sqrt(fit.covariance(c, c))});
+    }
+    double worst_pe = 0.0;
+    const int worst = WorstInsignificant(candidates, o.prunable, &worst_pe);
+    if (worst < 0 || p == 1) break;
+    const int j = (*cols)[worst];
+    r->state[j] = ParameterState::kDropped;
+    before_value[j] = fit.theta[worst];
+    before_sigma[j] = std::sqrt(fit.covariance(worst, worst));
+    theta[j] = 0.0;
+    r->notes.push_back(r->names[j] + " = " + Fmt(before_value[j]) + " ± " + Fmt(before_sigma[j]) +
+                       " has a percentile error of " + Fmt(worst_pe, 3) +
+                       "% > 51.02%: insignificant at 95%, dropped and the rest refitted "
+                       "(seed 000 §IV-D)");
+    cols->erase(cols->begin() + worst);
+  }
+  r->theta = theta;
+  for (std::size_t c = 0; c < cols->size(); ++c) {
+    r->state[(*cols)[c]] = ParameterState::kEstimated;
+    for (std::size_t d = 0; d < cols->size(); ++d) r->covariance((*cols)[c], (*cols)[d]) = fit.covariance(c, d);
+  }
+  r->estimates = EstimatedAndDropped(r->names, r->theta, r->covariance, r->state, before_value,
+                                     before_sigma);
+  return fit;
+}
+
+}  // namespace
+
 SteadyStateResult SteadyStateFit(const model::DofModel& model,
                                  const std::vector<SteadyPoint>& points,
                                  const Eigen::VectorXd& theta_in, const SteadyStateOptions& o) {
@@ -187,224 +397,32 @@ SteadyStateResult SteadyStateFit(const model::DofModel& model,
   r.covariance = Eigen::MatrixXd::Zero(np, np);
   r.state.assign(np, ParameterState::kFixed);
   r.num_points = static_cast<int>(points.size());
-  const int n = r.num_points;
-
-  // Rows of the regression at the given theta (non-linear terms evaluated at it).
-  Eigen::MatrixXd Hall(n, np);
-  Eigen::VectorXd y(n);
-  std::vector<double> h(np);
-  for (int i = 0; i < n; ++i) {
-    double h0 = 0.0;
-    EvaluateRegressor(model, PointContext(model, points[i], theta_in), theta_in, h.data(), &h0);
-    for (int j = 0; j < np; ++j) Hall(i, j) = h[j];
-    y[i] = -h0;  // 0 = h·θ + h0  ⇒  −h0 = h·θ  (eqs. 7–10)
-  }
-  std::vector<int> cols;
-  for (int j : LinearParameters(model)) {
-    if (n > 0 && Hall.col(j).cwiseAbs().maxCoeff() > 0) {
-      cols.push_back(j);
-    } else {
-      r.not_excited.push_back(r.names[j]);
-    }
-  }
-  if (!r.not_excited.empty()) {
-    std::string list;
-    for (const auto& s : r.not_excited) list += (list.empty() ? "" : ", ") + s;
-    r.notes.push_back("not excited by any steady segment (kept at their given values): " + list);
-  }
-  if (cols.empty()) {
-    r.status = SteadyStatus::kNotExcited;
-    r.message = n == 0 ? "no steady-state segment found" : "no parameter is excited by the steady segments";
+  Eigen::MatrixXd Hall;
+  Eigen::VectorXd y;
+  SteadyRows(model, points, theta_in, &Hall, &y);
+  std::vector<int> cols = ExcitedColumns(model, Hall, &r);
+  if (!EnoughPoints(cols, y, &r)) return r;
+  const std::vector<SteadyPoint> distinct = DistinctPoints(model, points);
+  if (distinct.size() < cols.size()) {
+    ReportSingular(model, Hall, distinct, cols, theta_in, &r);
     return r;
   }
-  if (n > 0 && y.cwiseAbs().maxCoeff() == 0.0) {
-    r.status = SteadyStatus::kNotExcited;
-    r.message = "every steady segment used a force whose installation coefficient is unknown: the "
-                "regression is homogeneous (θ = 0 fits it); η must be known (open water) for at "
-                "least one mapping and direction (seed 000 §II-A) — add legs with an open-water "
-                "mapping";
-    return r;
-  }
-  if (n < static_cast<int>(cols.size()) + 1) {
-    r.status = SteadyStatus::kTooFewSegments;
-    std::string list;
-    for (int j : cols) list += (list.empty() ? "" : ", ") + r.names[j];
-    r.message = "too few steady-state segments: " + std::to_string(n) + " found for " +
-                std::to_string(cols.size()) + " unknowns (" + list + "); at least " +
-                std::to_string(cols.size() + 1) +
-                " are needed (add constant-force legs at other speeds, each long enough to settle)";
-    for (int j : cols) r.state[j] = ParameterState::kFixed;
-    return r;
-  }
-
-  // Repeating a leg adds precision, not information: the unknowns need as many distinct
-  // operating points (mapping, force, ballast, other DOFs' speeds) as there are of them. A
-  // two-level telegraph, say, leaves k, kq, bias and η undetermined (k = kq = 0 with
-  // bias = −φ and η = −1 fits ±φ exactly), whatever the condition number of the noisy rows.
-  {
-    std::vector<SteadyPoint> distinct;
-    for (const SteadyPoint& a : points) {
-      bool seen = false;
-      for (const SteadyPoint& b : distinct) {
-        bool same = a.mapping == b.mapping && a.ballast_steps == b.ballast_steps &&
-                    std::abs(a.phi - b.phi) <= 1e-6 * std::max({1.0, std::abs(a.phi), std::abs(b.phi)});
-        for (int k = 0; k < model::kNumDofs && same; ++k) {
-          if (k == model::Index(model.dof())) continue;
-          same = std::abs(a.velocities[k] - b.velocities[k]) <= 1e-3 * (1 + std::abs(b.velocities[k]));
-        }
-        seen = seen || same;
-      }
-      if (!seen) distinct.push_back(a);
-    }
-    const int p = static_cast<int>(cols.size());
-    const int d = static_cast<int>(distinct.size());
-    if (d < p) {
-      // The regression is singular: its rows span at most d < p directions of the unknowns
-      // (the scatter of the measured speeds only hides it). Report the condition number of the
-      // rows as measured, and name the parameters in the null space of the distinct operating
-      // points' rows (column-scaled, components above LeastSquaresOptions::null_component).
-      Eigen::MatrixXd H(n, p), Hd(d, p);
-      for (int c = 0; c < p; ++c) H.col(c) = Hall.col(cols[c]);
-      for (int i = 0; i < d; ++i) {
-        double h0 = 0.0;
-        EvaluateRegressor(model, PointContext(model, distinct[i], theta_in), theta_in, h.data(), &h0);
-        for (int c = 0; c < p; ++c) Hd(i, c) = h[cols[c]];
-      }
-      for (int c = 0; c < p; ++c) {
-        const double s = H.col(c).norm();
-        if (s > 0) {
-          H.col(c) /= s;
-          Hd.col(c) /= s;
-        }
-      }
-      const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(H).singularValues();
-      r.condition_number = sv[p - 1] > 0 ? sv[0] / sv[p - 1] : std::numeric_limits<double>::infinity();
-      Eigen::MatrixXd Hsq = Eigen::MatrixXd::Zero(p, p);  // Hd padded with zero rows to p × p
-      Hsq.topRows(d) = Hd;
-      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Hsq, Eigen::ComputeFullV);
-      const double smax = svd.singularValues()[0];
-      const double null_component = LeastSquaresOptions{}.null_component;
-      std::vector<int> null_cols;
-      for (int k = 0; k < p; ++k) {
-        if (svd.singularValues()[k] > 1e-10 * smax) continue;  // rank of the distinct rows
-        for (int c = 0; c < p; ++c) {
-          if (std::abs(svd.matrixV()(c, k)) > null_component &&
-              std::find(null_cols.begin(), null_cols.end(), c) == null_cols.end()) {
-            null_cols.push_back(c);
-          }
-        }
-      }
-      std::sort(null_cols.begin(), null_cols.end());
-      std::vector<std::string> col_names;
-      for (int j : cols) col_names.push_back(r.names[j]);
-      for (int c : null_cols) r.not_identifiable.push_back(col_names[c]);
-      r.status = SteadyStatus::kIllConditioned;
-      r.message = "steady-state regression is singular: the " + std::to_string(n) +
-                  " steady segments hold only " + std::to_string(d) +
-                  " distinct operating point(s) for " + std::to_string(p) + " unknowns (" +
-                  JoinNames([&] {
-                    std::vector<int> all(p);
-                    for (int c = 0; c < p; ++c) all[c] = c;
-                    return all;
-                  }(), col_names) +
-                  "), condition number " + Fmt(r.condition_number, 3) +
-                  " of the measured rows; not identifiable: " + JoinNames(null_cols, col_names) +
-                  " (add steady legs at other force levels, in both directions and with each "
-                  "mapping)";
-      return r;
-    }
-  }
-  LeastSquaresOptions lso;
-  lso.covariance = o.covariance;
-  lso.max_condition = o.max_condition;
-  std::vector<char> dropped(np, 0);
-  std::vector<double> before_value(np, 0.0), before_sigma(np, 0.0);
-  Eigen::VectorXd theta = theta_in;
-  LinearFit fit;
-  while (true) {
-    const int p = static_cast<int>(cols.size());
-    Eigen::MatrixXd H(n, p);
-    for (int c = 0; c < p; ++c) H.col(c) = Hall.col(cols[c]);
-    // y − (dropped columns at 0) = y: dropped parameters contribute nothing.
-    Eigen::VectorXd w = Eigen::VectorXd::Ones(n);
-    LeastSquaresOptions first = lso;
-    if (o.weighting == SteadyStateOptions::Weighting::kVelocityVariance) {
-      first.covariance = CovarianceKind::kResidual;
-    }
-    fit = SolveLeastSquares(H, y, nullptr, first);
-    if (o.weighting == SteadyStateOptions::Weighting::kVelocityVariance) {
-      for (int it = 0; it < std::max(1, o.reweight_iterations); ++it) {
-        for (int c = 0; c < p; ++c) theta[cols[c]] = fit.theta[c];
-        for (int i = 0; i < n; ++i) {
-          const double slope = ForceSlope(model, PointContext(model, points[i], theta), theta);
-          const double var = slope * slope * points[i].sigma_xi * points[i].sigma_xi;
-          w[i] = var > 0 ? 1.0 / var : 1.0;
-        }
-        fit = SolveLeastSquares(H, y, &w, lso);
-      }
-    }
-    for (int c = 0; c < p; ++c) theta[cols[c]] = fit.theta[c];
-    if (!o.prune_insignificant || fit.status != FitStatus::kOk) break;
-    // Seed 000 §IV-D: drop the prunable parameter with the largest percentile error > 51.02%.
-    int worst = -1;
-    double worst_pe = kInsignificantPercentileError;
-    for (int c = 0; c < p; ++c) {
-      const std::string& name = r.names[cols[c]];
-      if (std::find(o.prunable.begin(), o.prunable.end(), name) == o.prunable.end()) continue;
-      // At least one drag term stays: a model without drag has no steady state.
-      if (IsDragName(name) && CountDrag(cols, r.names) <= 1) continue;
-      const double pe = PercentileError(fit.theta[c], std::sqrt(fit.covariance(c, c)));
-      if (pe > worst_pe) {
-        worst_pe = pe;
-        worst = c;
-      }
-    }
-    if (worst < 0 || p == 1) break;
-    const int j = cols[worst];
-    dropped[j] = 1;
-    before_value[j] = fit.theta[worst];
-    before_sigma[j] = std::sqrt(fit.covariance(worst, worst));
-    theta[j] = 0.0;
-    r.notes.push_back(r.names[j] + " = " + Fmt(before_value[j]) + " ± " + Fmt(before_sigma[j]) +
-                      " has a percentile error of " + Fmt(worst_pe, 3) +
-                      "% > 51.02%: insignificant at 95%, dropped and the rest refitted "
-                      "(seed 000 §IV-D)");
-    cols.erase(cols.begin() + worst);
-  }
-  r.theta = theta;
+  const LinearFit fit = FitWithSelection(model, points, Hall, y, &cols, o, &r);
   r.sigma2 = fit.sigma2;
   r.condition_number = fit.condition_number;
-  for (int i = 0; i < n; ++i) r.residuals.push_back(fit.residuals[i]);
-  for (std::size_t c = 0; c < cols.size(); ++c) {
-    r.state[cols[c]] = ParameterState::kEstimated;
-    for (std::size_t d = 0; d < cols.size(); ++d) r.covariance(cols[c], cols[d]) = fit.covariance(c, d);
-  }
-  for (int j = 0; j < np; ++j) {
-    if (dropped[j]) r.state[j] = ParameterState::kDropped;
-  }
+  for (int i = 0; i < r.num_points; ++i) r.residuals.push_back(fit.residuals[i]);
   for (int j : fit.not_identifiable) r.not_identifiable.push_back(r.names[cols[j]]);
-  std::vector<ParameterEstimate> all = MakeEstimates(r.names, r.theta, r.covariance, r.state);
-  for (int j = 0; j < np; ++j) {
-    if (r.state[j] == ParameterState::kFixed) continue;
-    if (r.state[j] == ParameterState::kDropped) {
-      all[j].value_before_drop = before_value[j];
-      all[j].sigma_before_drop = before_sigma[j];
-      all[j].significant = false;
-    }
-    r.estimates.push_back(all[j]);
-  }
+  std::vector<std::string> col_names;
+  for (int j : cols) col_names.push_back(r.names[j]);
   if (fit.status == FitStatus::kOk) {
     r.status = SteadyStatus::kOk;
-    r.message = std::to_string(n) + " steady segments, condition number " + Fmt(fit.condition_number, 3);
+    r.message = std::to_string(r.num_points) + " steady segments, condition number " +
+                Fmt(fit.condition_number, 3);
   } else {
     r.status = SteadyStatus::kIllConditioned;
     r.message = "steady-state regression is ill-conditioned (condition number " +
                 Fmt(fit.condition_number, 3) + "); not identifiable from these segments: " +
-                JoinNames(fit.not_identifiable, [&] {
-                  std::vector<std::string> v;
-                  for (int j : cols) v.push_back(r.names[j]);
-                  return v;
-                }()) +
+                JoinNames(fit.not_identifiable, col_names) +
                 " (add steady legs at other speeds / in the other direction / with other mappings)";
   }
   return r;

@@ -7,6 +7,8 @@
 
 #include <Eigen/Dense>
 
+#include "number_text.h"
+#include "options_check.h"
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::ident {
@@ -32,13 +34,6 @@ double MedianRate(const Signal& s) {
   if (s.size() < 2) return 1.0;
   const double h = MedianStep(s.t, 0, s.size());
   return h > 0 ? 1.0 / h : 1.0;
-}
-
-std::string Fmt(double v) {
-  std::ostringstream os;
-  os.precision(4);
-  os << v;
-  return os.str();
 }
 
 
@@ -76,16 +71,13 @@ bool StartsAtRest(const TrialData& d) {
 }  // namespace
 
 bool TrialDataOptions::IsValid(std::string* error) const {
-  if (sg_order < 1 || sg_order > 8 || sg_window < 0 || (sg_window > 0 && sg_window % 2 == 0) ||
-      (sg_window > 0 && sg_window < sg_order + 2)) {
-    if (error) *error = "TrialDataOptions: sg_order in [1, 8]; sg_window 0 (auto) or odd >= order + 2";
-    return false;
-  }
-  if (!(gap_factor > 1) || !(force_tolerance >= 0)) {
-    if (error) *error = "TrialDataOptions: gap_factor > 1 and force_tolerance >= 0";
-    return false;
-  }
-  return outliers.IsValid(error);
+  const bool window_ok = sg_window == 0 || (sg_window > 0 && sg_window % 2 == 1 && sg_window >= sg_order + 2);
+  return Require(sg_order >= 1 && sg_order <= 8 && window_ok,
+                 "TrialDataOptions: sg_order in [1, 8]; sg_window 0 (auto) or odd >= order + 2",
+                 error) &&
+         Require(gap_factor > 1 && force_tolerance >= 0,
+                 "TrialDataOptions: gap_factor > 1 and force_tolerance >= 0", error) &&
+         outliers.IsValid(error);
 }
 
 LogAuxVelocities::LogAuxVelocities(Dof own, std::array<Signal, model::kNumDofs> velocities)
@@ -98,26 +90,15 @@ void LogAuxVelocities::At(double t, std::array<double, model::kNumDofs>* v) cons
   }
 }
 
-TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehicle& vehicle,
-                       const TrialDataOptions& o) {
-  const model::TrialLog& log = e.log;
-  const Dof dof = e.dof;
-  const std::string dof_name(model::DofName(dof));
-  const std::string where = e.path.empty() ? e.file : e.path;
-  TrialData d;
-  d.index = index;
-  d.name = e.file;
-  d.path = e.path;
-  d.dof = dof;
-  d.use = e.use;
-  d.ballast_steps = e.ballast_steps;
-  if (log.t.empty()) throw model::InputError(where, "no data rows");
-  d.time_offset = log.t.front();
-  d.start_time = e.start + d.time_offset;
-  d.duration = log.t.back() - log.t.front();
+namespace {
 
-  // Force and mapping rows (zero-order hold).
-  if (!log.HasForce(dof)) {
+// The logged force of the DOF and the mapping in force on each row (zero-order hold,
+// notes/pitfalls.md), as the trial's excitation; the command steps (force_jumps).
+void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle,
+               const std::string& where, TrialData* d) {
+  const model::TrialLog& log = e.log;
+  const std::string dof_name(model::DofName(d->dof));
+  if (!log.HasForce(d->dof)) {
     throw model::InputError(where, "no column force_" + dof_name +
                                        ": expected the nominal force of the trial's DOF");
   }
@@ -134,56 +115,99 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
                                          "' is not a mapping of vehicle '" + vehicle.name + "'");
     }
   }
-  const auto& fcol = log.force[Index(dof)];
+  const auto& fcol = log.force[Index(d->dof)];
   std::vector<char> used(vehicle.mappings.size(), 0);
   for (std::size_t i = 0; i < fcol.size(); ++i) {
     if (std::isnan(fcol[i])) continue;
     int m = default_mapping;
     if (!log.mapping.empty() && log.mapping[i] >= 0) m = name_to_vehicle[log.mapping[i]];
-    d.force_t.push_back(log.t[i] - d.time_offset);
-    d.force.push_back(fcol[i]);
-    d.mapping.push_back(m);
+    d->force_t.push_back(log.t[i] - d->time_offset);
+    d->force.push_back(fcol[i]);
+    d->mapping.push_back(m);
     if (m >= 0) used[m] = 1;
   }
-  if (d.force.empty()) {
+  if (d->force.empty()) {
     throw model::InputError(where, "column force_" + dof_name +
                                        " has no value (all cells empty or NaN): expected the "
                                        "nominal force of every command row");
   }
   for (std::size_t m = 0; m < used.size(); ++m) {
-    if (used[m]) d.mappings_used.push_back(vehicle.mappings[m].name);
+    if (used[m]) d->mappings_used.push_back(vehicle.mappings[m].name);
   }
-  d.input = model::MakeHeldExcitation(d.force_t, d.force, d.mapping, d.duration);
-  d.breakpoints = d.input->Breakpoints();
-  std::sort(d.breakpoints.begin(), d.breakpoints.end());
-  {
-    const auto [fmin, fmax] = std::minmax_element(d.force.begin(), d.force.end());
-    const double range = *fmax - *fmin;
-    for (std::size_t i = 1; i < d.force.size(); ++i) {
-      if (d.mapping[i] != d.mapping[i - 1] || std::abs(d.force[i] - d.force[i - 1]) > 0.05 * range) {
-        d.force_jumps.push_back(d.force_t[i]);
-      }
+  d->input = model::MakeHeldExcitation(d->force_t, d->force, d->mapping, d->duration);
+  d->breakpoints = d->input->Breakpoints();
+  std::sort(d->breakpoints.begin(), d->breakpoints.end());
+  const auto [fmin, fmax] = std::minmax_element(d->force.begin(), d->force.end());
+  const double range = *fmax - *fmin;
+  for (std::size_t i = 1; i < d->force.size(); ++i) {
+    if (d->mapping[i] != d->mapping[i - 1] || std::abs(d->force[i] - d->force[i - 1]) > 0.05 * range) {
+      d->force_jumps.push_back(d->force_t[i]);
     }
   }
+}
 
-  // Measurements of the DOF.
-  Signal pos = Column(log.t, log.position[Index(dof)], d.time_offset);
-  if (model::IsRotational(dof)) {
-    // Headings may be wrapped to (−π, π] (logs built in memory, e.g. by the virtual pool, are
-    // not unwrapped by a reader): undo every step larger than π. Idempotent.
-    double offset = 0.0;
-    int jumps = 0;
-    for (std::size_t i = 1; i < pos.size(); ++i) {
-      const double step = pos.y[i] + offset - pos.y[i - 1];
-      if (std::abs(step) > M_PI) {
-        offset -= 2.0 * M_PI * std::round(step / (2.0 * M_PI));
-        ++jumps;
-      }
-      pos.y[i] += offset;
+// Headings may be wrapped to (−π, π] (logs built in memory, e.g. by the virtual pool, are not
+// unwrapped by a reader): undo every step larger than π. Idempotent.
+void UnwrapHeading(Signal* pos, TrialData* d) {
+  double offset = 0.0;
+  int jumps = 0;
+  for (std::size_t i = 1; i < pos->size(); ++i) {
+    const double step = pos->y[i] + offset - pos->y[i - 1];
+    if (std::abs(step) > M_PI) {
+      offset -= 2.0 * M_PI * std::round(step / (2.0 * M_PI));
+      ++jumps;
     }
-    if (jumps > 0) d.notes.push_back("heading unwrapped (" + std::to_string(jumps) + " jumps of 2π)");
+    pos->y[i] += offset;
   }
-  Signal vel = Column(log.t, log.velocity[Index(dof)], d.time_offset);
+  if (jumps > 0) d->notes.push_back("heading unwrapped (" + std::to_string(jumps) + " jumps of 2π)");
+}
+
+// One measurement with its outliers excluded (reported in `outliers`), and its noise σ:
+// `declared` when positive, else estimated from the differences (`estimated`).
+struct CleanOutput {
+  std::vector<Outlier>* outliers;
+  double* sigma;
+  double* estimated;
+};
+
+Signal Clean(Signal s, double declared, const char* what, const TrialDataOptions& o,
+             const CleanOutput& out, TrialData* d) {
+  if (s.size() < 3) return Signal{};
+  if (o.remove_outliers) {
+    // Command steps (and the start, where the trial's force is switched on) put a kink in
+    // the motion that no local quadratic predicts: those samples are not tested.
+    // Positions are smooth through such kinks (the acceleration jumps, the position does
+    // not): only velocities are protected.
+    std::vector<double> kinks = d->force_jumps;
+    kinks.push_back(0.0);
+    const double h = (s.t.back() - s.t.front()) / std::max<std::size_t>(1, s.size() - 1);
+    const bool protect = std::string(what) == "velocity";
+    *out.outliers = DetectOutliers(s, o.outliers, declared, protect ? &kinks : nullptr,
+                                   (o.outliers.half_window + 1) * h);
+    if (!out.outliers->empty()) {
+      d->notes.push_back(std::to_string(out.outliers->size()) + " " + what + " outlier(s) excluded (first at t = " +
+                         Fmt(out.outliers->front().t + d->time_offset) + " s, residual " +
+                         Fmt(out.outliers->front().residual) + ")");
+      s = RemoveSamples(s, *out.outliers);
+    }
+  }
+  *out.estimated = NoiseSigmaFromDifferences(s);
+  *out.sigma = declared > 0 ? declared : *out.estimated;
+  if (declared > 0 && *out.estimated > 0 && (*out.estimated > 3 * declared)) {
+    d->notes.push_back(std::string(what) + " noise estimated from the data (" + Fmt(*out.estimated) +
+                       ") is more than 3× the declared sensor sigma (" + Fmt(declared) + ")");
+  }
+  return s;
+}
+
+// The DOF's position and velocity samples, cleaned; unusable columns and gaps reported.
+void ReadMeasurements(const model::TrialLog& log, const model::Vehicle& vehicle,
+                      const std::string& where, const TrialDataOptions& o, TrialData* d) {
+  const Dof dof = d->dof;
+  const std::string dof_name(model::DofName(dof));
+  Signal pos = Column(log.t, log.position[Index(dof)], d->time_offset);
+  if (model::IsRotational(dof)) UnwrapHeading(&pos, d);
+  Signal vel = Column(log.t, log.velocity[Index(dof)], d->time_offset);
   if (pos.size() < 3 && vel.size() < 3) {
     const bool any_column = log.HasPosition(dof) || log.HasVelocity(dof);
     throw model::InputError(where, any_column
@@ -195,99 +219,101 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
   }
   const auto sensors = vehicle.sensors.find(dof);
   const model::DofSensors* spec = sensors == vehicle.sensors.end() ? nullptr : &sensors->second;
-  auto clean = [&](Signal s, double declared, std::vector<Outlier>* outliers, double* sigma,
-                   double* estimated, const char* what) {
-    if (s.size() < 3) return Signal{};
-    if (o.remove_outliers) {
-      // Command steps (and the start, where the trial's force is switched on) put a kink in
-      // the motion that no local quadratic predicts: those samples are not tested.
-      // Positions are smooth through such kinks (the acceleration jumps, the position does
-      // not): only velocities are protected.
-      std::vector<double> kinks = d.force_jumps;
-      kinks.push_back(0.0);
-      const double h = (s.t.back() - s.t.front()) / std::max<std::size_t>(1, s.size() - 1);
-      const bool protect = std::string(what) == "velocity";
-      *outliers = DetectOutliers(s, o.outliers, declared, protect ? &kinks : nullptr,
-                                 (o.outliers.half_window + 1) * h);
-      if (!outliers->empty()) {
-        d.notes.push_back(std::to_string(outliers->size()) + " " + what + " outlier(s) excluded (first at t = " +
-                          Fmt(outliers->front().t + d.time_offset) + " s, residual " +
-                          Fmt(outliers->front().residual) + ")");
-        s = RemoveSamples(s, *outliers);
-      }
-    }
-    *estimated = NoiseSigmaFromDifferences(s);
-    *sigma = declared > 0 ? declared : *estimated;
-    if (declared > 0 && *estimated > 0 && (*estimated > 3 * declared)) {
-      d.notes.push_back(std::string(what) + " noise estimated from the data (" + Fmt(*estimated) +
-                        ") is more than 3× the declared sensor sigma (" + Fmt(declared) + ")");
-    }
-    return s;
-  };
-  d.position = clean(std::move(pos), spec && spec->position ? spec->position->sigma : -1.0,
-                     &d.position_outliers, &d.position_sigma, &d.position_sigma_estimated,
-                     "position");
-  d.velocity = clean(std::move(vel), spec && spec->velocity ? spec->velocity->sigma : -1.0,
-                     &d.velocity_outliers, &d.velocity_sigma, &d.velocity_sigma_estimated,
-                     "velocity");
+  d->position = Clean(std::move(pos), spec && spec->position ? spec->position->sigma : -1.0,
+                      "position", o,
+                      {&d->position_outliers, &d->position_sigma, &d->position_sigma_estimated}, d);
+  d->velocity = Clean(std::move(vel), spec && spec->velocity ? spec->velocity->sigma : -1.0,
+                      "velocity", o,
+                      {&d->velocity_outliers, &d->velocity_sigma, &d->velocity_sigma_estimated}, d);
   // A column that is present but empty (all NaN) is not used; the other measurement carries
   // the trial, and the caller is told which column was ignored.
-  if (log.HasPosition(dof) && !d.has_position()) d.unusable_columns.push_back("pos_" + dof_name);
-  if (log.HasVelocity(dof) && !d.has_velocity()) d.unusable_columns.push_back("vel_" + dof_name);
-  for (const std::string& c : d.unusable_columns) {
-    d.notes.push_back("column " + c + " has fewer than 3 values (all NaN?): not used");
+  if (log.HasPosition(dof) && !d->has_position()) d->unusable_columns.push_back("pos_" + dof_name);
+  if (log.HasVelocity(dof) && !d->has_velocity()) d->unusable_columns.push_back("vel_" + dof_name);
+  for (const std::string& c : d->unusable_columns) {
+    d->notes.push_back("column " + c + " has fewer than 3 values (all NaN?): not used");
   }
-  const Signal& main = d.has_velocity() ? d.velocity : d.position;
-  d.gaps = FindGaps(main.t, o.gap_factor);
-  if (!d.gaps.empty()) {
+  const Signal& main = d->has_velocity() ? d->velocity : d->position;
+  d->gaps = FindGaps(main.t, o.gap_factor);
+  if (!d->gaps.empty()) {
     double longest = 0.0;
-    for (const Gap& g : d.gaps) longest = std::max(longest, g.t1 - g.t0);
-    d.notes.push_back(std::to_string(d.gaps.size()) + " gap(s) in the " +
-                      (d.has_velocity() ? "velocity" : "position") + " samples (longest " +
-                      Fmt(longest) + " s); filters do not cross them");
+    for (const Gap& g : d->gaps) longest = std::max(longest, g.t1 - g.t0);
+    d->notes.push_back(std::to_string(d->gaps.size()) + " gap(s) in the " +
+                       (d->has_velocity() ? "velocity" : "position") + " samples (longest " +
+                       Fmt(longest) + " s); filters do not cross them");
   }
+}
 
-  // Velocity estimate (seed 000 §IV-D: Savitzky–Golay, 4th order, 21–41 points).
-  const double time_scale = InputTimeScale(d.force_t, d.force);
+// Velocity estimate (seed 000 §IV-D: Savitzky–Golay, 4th order, 21–41 points): the smoothed
+// measured velocity, or the derivative of the smoothed position.
+void EstimateVelocity(const TrialDataOptions& o, TrialData* d) {
+  const double time_scale = InputTimeScale(d->force_t, d->force);
+  auto window = [&](const Signal& s) {
+    return o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(s), time_scale);
+  };
   SavitzkyGolayOptions sg;
   sg.order = o.sg_order;
   sg.gap_factor = o.gap_factor;
-  if (d.has_velocity()) {
-    sg.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.velocity), time_scale);
-    d.velocity_estimate = SavitzkyGolay(d.velocity, sg);
+  if (d->has_velocity()) {
+    sg.window = window(d->velocity);
+    d->velocity_estimate = SavitzkyGolay(d->velocity, sg);
     // The smoothed velocity is the estimate (derivative = acceleration, unused here).
-    d.velocity_from_position = false;
-    d.initial_velocity = d.velocity_estimate.value.front();
-    if (d.has_position()) {
+    d->velocity_from_position = false;
+    d->initial_velocity = d->velocity_estimate.value.front();
+    if (d->has_position()) {
       SavitzkyGolayOptions sp = sg;
-      sp.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.position), time_scale);
-      d.initial_position = SavitzkyGolay(d.position, sp).value.front();
+      sp.window = window(d->position);
+      d->initial_position = SavitzkyGolay(d->position, sp).value.front();
     } else {
-      d.initial_position = std::nan("");
+      d->initial_position = std::nan("");
     }
   } else {
-    sg.window = o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(d.position), time_scale);
-    SmoothedSignal s = SavitzkyGolay(d.position, sg);
-    d.initial_position = s.value.front();
-    d.initial_velocity = std::isfinite(s.derivative.front()) ? s.derivative.front() : 0.0;
-    d.velocity_estimate = s;
-    d.velocity_estimate.value = s.derivative;  // velocity
-    d.velocity_estimate.derivative = s.second_derivative;  // acceleration
-    d.velocity_from_position = true;
+    sg.window = window(d->position);
+    SmoothedSignal s = SavitzkyGolay(d->position, sg);
+    d->initial_position = s.value.front();
+    d->initial_velocity = std::isfinite(s.derivative.front()) ? s.derivative.front() : 0.0;
+    d->velocity_estimate = s;
+    d->velocity_estimate.value = s.derivative;  // velocity
+    d->velocity_estimate.derivative = s.second_derivative;  // acceleration
+    d->velocity_from_position = true;
   }
-  d.sg_window = sg.window;
-  d.starts_at_rest = StartsAtRest(d);
-  if (d.starts_at_rest) d.initial_velocity = 0.0;
+  d->sg_window = sg.window;
+  d->starts_at_rest = StartsAtRest(*d);
+  if (d->starts_at_rest) d->initial_velocity = 0.0;
+}
 
-  // Other DOFs' velocities (coupling).
+// Other DOFs' velocities (coupling).
+void ReadAuxVelocities(const model::TrialLog& log, TrialData* d) {
   std::array<Signal, model::kNumDofs> aux;
   bool any_aux = false;
   for (Dof other : model::kAllDofs) {
-    if (other == dof) continue;
-    aux[Index(other)] = Column(log.t, log.velocity[Index(other)], d.time_offset);
+    if (other == d->dof) continue;
+    aux[Index(other)] = Column(log.t, log.velocity[Index(other)], d->time_offset);
     any_aux = any_aux || !aux[Index(other)].empty();
   }
-  if (any_aux) d.aux = std::make_unique<LogAuxVelocities>(dof, std::move(aux));
+  if (any_aux) d->aux = std::make_unique<LogAuxVelocities>(d->dof, std::move(aux));
+}
+
+}  // namespace
+
+TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehicle& vehicle,
+                       const TrialDataOptions& o) {
+  const model::TrialLog& log = e.log;
+  const std::string where = e.path.empty() ? e.file : e.path;
+  TrialData d;
+  d.index = index;
+  d.name = e.file;
+  d.path = e.path;
+  d.dof = e.dof;
+  d.use = e.use;
+  d.ballast_steps = e.ballast_steps;
+  if (log.t.empty()) throw model::InputError(where, "no data rows");
+  d.time_offset = log.t.front();
+  d.start_time = e.start + d.time_offset;
+  d.duration = log.t.back() - log.t.front();
+  ReadForce(e, vehicle, where, &d);
+  ReadMeasurements(log, vehicle, where, o, &d);
+  EstimateVelocity(o, &d);
+  ReadAuxVelocities(log, &d);
   for (const std::string& n : log.notes) d.notes.push_back(n);
   return d;
 }

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "options_check.h"
+
 namespace uuvplan::ident {
 namespace {
 
@@ -80,6 +82,22 @@ void PolynomialWeights(const std::vector<double>& u, int order, double at, Eigen
   *w2 = P.transpose() * e2;
 }
 
+// The local polynomial's value, slope and curvature at sample `at`: the weights applied to
+// the w samples from `y` (u in units of the step h).
+void StoreLocalFit(const Eigen::VectorXd& wv, const Eigen::VectorXd& wd, const Eigen::VectorXd& w2,
+                   const double* y, int w, double h, std::size_t at, bool edge, SmoothedSignal* out) {
+  double v = 0.0, d = 0.0, a = 0.0;
+  for (int j = 0; j < w; ++j) {
+    v += wv[j] * y[j];
+    d += wd[j] * y[j];
+    a += w2[j] * y[j];
+  }
+  out->value[at] = v;
+  out->derivative[at] = d / h;
+  out->second_derivative[at] = a / (h * h);
+  out->edge[at] = edge;
+}
+
 // Smooths one run [b, e) of samples into out at the same indices.
 void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order, int window,
                SmoothedSignal* out, bool* gains_set) {
@@ -117,33 +135,14 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
       *gains_set = true;
     }
     for (int i = hw; i < n - hw; ++i) {
-      double v = 0.0, d = 0.0, a = 0.0;
-      const double* y = &s.y[b + i - hw];
-      for (int j = 0; j < w; ++j) {
-        v += wv[j] * y[j];
-        d += wd[j] * y[j];
-        a += w2[j] * y[j];
-      }
-      out->value[b + i] = v;
-      out->derivative[b + i] = d / h;
-      out->second_derivative[b + i] = a / (h * h);
-      out->edge[b + i] = false;
+      StoreLocalFit(wv, wd, w2, &s.y[b + i - hw], w, h, b + i, false, out);
     }
     // End polynomials: the first/last window's fit evaluated at each edge point.
     for (int side = 0; side < 2; ++side) {
       const int first = side == 0 ? 0 : n - w;
       for (int i = side == 0 ? 0 : n - hw; i < (side == 0 ? hw : n); ++i) {
         PolynomialWeights(u, q, static_cast<double>(i - first - hw), &wv, &wd, &w2);
-        double v = 0.0, d = 0.0, a = 0.0;
-        for (int j = 0; j < w; ++j) {
-          v += wv[j] * s.y[b + first + j];
-          d += wd[j] * s.y[b + first + j];
-          a += w2[j] * s.y[b + first + j];
-        }
-        out->value[b + i] = v;
-        out->derivative[b + i] = d / h;
-        out->second_derivative[b + i] = a / (h * h);
-        out->edge[b + i] = true;
+        StoreLocalFit(wv, wd, w2, &s.y[b + first], w, h, b + i, true, out);
       }
     }
     return;
@@ -153,16 +152,7 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
     const int first = std::clamp(i - hw, 0, n - w);
     for (int j = 0; j < w; ++j) u[j] = (s.t[b + first + j] - s.t[b + i]) / h;
     PolynomialWeights(u, q, 0.0, &wv, &wd, &w2);
-    double v = 0.0, d = 0.0, a = 0.0;
-    for (int j = 0; j < w; ++j) {
-      v += wv[j] * s.y[b + first + j];
-      d += wd[j] * s.y[b + first + j];
-      a += w2[j] * s.y[b + first + j];
-    }
-    out->value[b + i] = v;
-    out->derivative[b + i] = d / h;
-    out->second_derivative[b + i] = a / (h * h);
-    out->edge[b + i] = i < hw || i >= n - hw;
+    StoreLocalFit(wv, wd, w2, &s.y[b + first], w, h, b + i, i < hw || i >= n - hw, out);
     if (!*gains_set && !out->edge[b + i]) {
       out->value_gain = wv.norm();
       out->derivative_gain = wd.norm() / h;
@@ -192,30 +182,22 @@ double AutocorrelationFactor(double rho, int n) {
 }  // namespace
 
 bool SavitzkyGolayOptions::IsValid(std::string* error) const {
-  if (order < 1 || order > 8) {
-    if (error) *error = "SavitzkyGolayOptions::order = " + std::to_string(order) +
-                        ". Violated constraint: 1 <= order <= 8";
-    return false;
-  }
-  if (window < order + 2 || window % 2 == 0) {
-    if (error) *error = "SavitzkyGolayOptions::window = " + std::to_string(window) +
-                        ". Violated constraint: odd and >= order + 2";
-    return false;
-  }
-  if (!(gap_factor > 1)) {
-    if (error) *error = "SavitzkyGolayOptions::gap_factor must be > 1";
-    return false;
-  }
-  return true;
+  return Require(order >= 1 && order <= 8,
+                 "SavitzkyGolayOptions::order = " + std::to_string(order) +
+                     ". Violated constraint: 1 <= order <= 8",
+                 error) &&
+         Require(window >= order + 2 && window % 2 != 0,
+                 "SavitzkyGolayOptions::window = " + std::to_string(window) +
+                     ". Violated constraint: odd and >= order + 2",
+                 error) &&
+         Require(gap_factor > 1, "SavitzkyGolayOptions::gap_factor must be > 1", error);
 }
 
 bool SteadyDetectionOptions::IsValid(std::string* error) const {
-  if (!(min_duration_s > 0) || min_samples < 4 || !(z > 0) || stride < 0) {
-    if (error) *error = "SteadyDetectionOptions: need min_duration_s > 0, min_samples >= 4, z > 0, "
-                        "stride >= 0";
-    return false;
-  }
-  return true;
+  return Require(min_duration_s > 0 && min_samples >= 4 && z > 0 && stride >= 0,
+                 "SteadyDetectionOptions: need min_duration_s > 0, min_samples >= 4, z > 0, "
+                 "stride >= 0",
+                 error);
 }
 
 int SavitzkyGolayWindow(double rate_hz, double input_time_scale_s) {
@@ -266,15 +248,25 @@ double InputTimeScale(const std::vector<double>& t, const std::vector<double>& f
   return Median(periods);
 }
 
-SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
+namespace {
+
+// A smoothed signal at times t with nothing estimated yet (NaN, every sample an edge, run 0).
+SmoothedSignal Unsmoothed(const std::vector<double>& t) {
   SmoothedSignal out;
-  const std::size_t n = s.size();
-  out.t = s.t;
+  const std::size_t n = t.size();
+  out.t = t;
   out.value.assign(n, kNaN);
   out.derivative.assign(n, kNaN);
   out.second_derivative.assign(n, kNaN);
   out.edge.assign(n, true);
   out.run.assign(n, 0);
+  return out;
+}
+
+}  // namespace
+
+SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
+  SmoothedSignal out = Unsmoothed(s.t);
   bool gains_set = false;
   int run = 0;
   for (const auto& [b, e] : Runs(s.t, options.gap_factor)) {
@@ -321,14 +313,7 @@ std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rat
 }
 
 SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap_factor) {
-  SmoothedSignal out;
-  const std::size_t n = p.size();
-  out.t = p.t;
-  out.value.assign(n, kNaN);
-  out.derivative.assign(n, kNaN);
-  out.second_derivative.assign(n, kNaN);
-  out.edge.assign(n, true);
-  out.run.assign(n, 0);
+  SmoothedSignal out = Unsmoothed(p.t);
   int run = 0;
   for (const auto& [b, e] : Runs(p.t, gap_factor)) {
     const std::size_t m = e - b;
@@ -362,14 +347,39 @@ SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap
   return out;
 }
 
-SpeedFit ConstantSpeedFit(const Signal& s, double t0, double t1, double known_sigma) {
+namespace {
+
+// The fit's window: t0, t1, and the samples [*lo, *hi) inside it (f.n of them).
+SpeedFit SpeedWindow(const Signal& s, double t0, double t1, std::ptrdiff_t* lo, std::ptrdiff_t* hi) {
   SpeedFit f;
   f.t0 = t0;
   f.t1 = t1;
-  const auto lo = std::lower_bound(s.t.begin(), s.t.end(), t0) - s.t.begin();
-  const auto hi = std::upper_bound(s.t.begin(), s.t.end(), t1) - s.t.begin();
-  const int n = static_cast<int>(hi - lo);
-  f.n = n;
+  *lo = std::lower_bound(s.t.begin(), s.t.end(), t0) - s.t.begin();
+  *hi = std::upper_bound(s.t.begin(), s.t.end(), t1) - s.t.begin();
+  f.n = static_cast<int>(*hi - *lo);
+  return f;
+}
+
+// From the residuals r of a fit with `fitted` coefficients: the residual σ (eq. 12), their
+// lag-1 autocorrelation, and the speed's σ = σ_ε/√spread (eq. 11; σ_ε known or eq. 12),
+// inflated for autocorrelated residuals.
+void SetSpeedSigma(const std::vector<double>& r, int fitted, double known_sigma, double spread,
+                   SpeedFit* f) {
+  double rss = 0.0;
+  for (double x : r) rss += x * x;
+  f->residual_sd = std::sqrt(rss / (f->n - fitted));
+  f->lag1 = Lag1(r);
+  const double sigma_eps = known_sigma > 0 ? known_sigma : f->residual_sd;
+  f->sigma = sigma_eps / std::sqrt(spread) * AutocorrelationFactor(f->lag1, f->n);
+  f->ok = true;
+}
+
+}  // namespace
+
+SpeedFit ConstantSpeedFit(const Signal& s, double t0, double t1, double known_sigma) {
+  std::ptrdiff_t lo = 0, hi = 0;
+  SpeedFit f = SpeedWindow(s, t0, t1, &lo, &hi);
+  const int n = f.n;
   if (n < 3) return f;
   double tm = 0.0, ym = 0.0;
   for (auto i = lo; i < hi; ++i) {
@@ -388,44 +398,24 @@ SpeedFit ConstantSpeedFit(const Signal& s, double t0, double t1, double known_si
   f.offset = ym;
   std::vector<double> r;
   r.reserve(n);
-  double rss = 0.0;
-  for (auto i = lo; i < hi; ++i) {
-    r.push_back(s.y[i] - ym - f.speed * (s.t[i] - tm));
-    rss += r.back() * r.back();
-  }
-  f.residual_sd = std::sqrt(rss / (n - 2));
-  f.lag1 = Lag1(r);
-  // Eq. 11 for the slope: σ_v² = σ_ε² / Σ(t − t̄)², σ_ε from eq. 12 or known.
-  const double sigma_eps = known_sigma > 0 ? known_sigma : f.residual_sd;
-  f.sigma = sigma_eps / std::sqrt(stt) * AutocorrelationFactor(f.lag1, n);
-  f.ok = true;
+  for (auto i = lo; i < hi; ++i) r.push_back(s.y[i] - ym - f.speed * (s.t[i] - tm));
+  // Eq. 11 for the slope: σ_v² = σ_ε² / Σ(t − t̄)².
+  SetSpeedSigma(r, 2, known_sigma, stt, &f);
   return f;
 }
 
 SpeedFit MeanSpeedFit(const Signal& s, double t0, double t1, double known_sigma) {
-  SpeedFit f;
-  f.t0 = t0;
-  f.t1 = t1;
-  const auto lo = std::lower_bound(s.t.begin(), s.t.end(), t0) - s.t.begin();
-  const auto hi = std::upper_bound(s.t.begin(), s.t.end(), t1) - s.t.begin();
-  const int n = static_cast<int>(hi - lo);
-  f.n = n;
+  std::ptrdiff_t lo = 0, hi = 0;
+  SpeedFit f = SpeedWindow(s, t0, t1, &lo, &hi);
+  const int n = f.n;
   if (n < 2) return f;
   double mean = 0.0;
   for (auto i = lo; i < hi; ++i) mean += s.y[i];
   mean /= n;
   std::vector<double> r;
-  double rss = 0.0;
-  for (auto i = lo; i < hi; ++i) {
-    r.push_back(s.y[i] - mean);
-    rss += r.back() * r.back();
-  }
+  for (auto i = lo; i < hi; ++i) r.push_back(s.y[i] - mean);
   f.speed = mean;
-  f.residual_sd = std::sqrt(rss / (n - 1));
-  f.lag1 = Lag1(r);
-  const double sigma_eps = known_sigma > 0 ? known_sigma : f.residual_sd;
-  f.sigma = sigma_eps / std::sqrt(static_cast<double>(n)) * AutocorrelationFactor(f.lag1, n);
-  f.ok = true;
+  SetSpeedSigma(r, 1, known_sigma, static_cast<double>(n), &f);
   return f;
 }
 

@@ -128,5 +128,39 @@ TEST(RecoveryTest, RomeoOutliersAndDropoutsAreExcludedAndReported) {
   EXPECT_LT(outliers, 1.5 * expected);
 }
 
+TEST(RecoveryTest, SummaryGivesStatusStageTimingsAndOneLinePerDof) {
+  // IdentifyResult::Summary (Ceres' Solver::Summary is the model): the result's status, the
+  // four stages timed for every DOF and summed, a one-line Brief() and a Full() with a line
+  // per DOF.
+  const model::Campaign campaign =
+      VirtualCampaign(testing::CaseTruth("romeo"), testing::RomeoSurgeDesigns(), 7);
+  const IdentifyResult r = Identify(campaign, IdentifyOptions{});
+  ASSERT_FALSE(r.dofs.empty());
+  const std::vector<std::string> stages = {"prepare", "estimate", "refine", "validate"};
+  for (const auto& d : r.dofs) {
+    ASSERT_EQ(d.timing.size(), stages.size());
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+      EXPECT_EQ(d.timing[i].stage, stages[i]);
+      EXPECT_GE(d.timing[i].seconds, 0.0);
+    }
+  }
+  const IdentifySummary s = r.Summary();
+  EXPECT_EQ(s.status, r.status);
+  EXPECT_EQ(s.num_trials, static_cast<int>(r.trials.size()));
+  ASSERT_EQ(s.stages.size(), stages.size());
+  double per_dof_refine = 0.0;
+  for (const auto& d : r.dofs) per_dof_refine += d.timing[2].seconds;
+  EXPECT_DOUBLE_EQ(s.stages[2].seconds, per_dof_refine);
+  const std::string brief = s.Brief();
+  EXPECT_EQ(brief.find('\n'), std::string::npos);
+  EXPECT_EQ(brief.rfind("identify: " + std::string(IdentifyStatusName(r.status)), 0), 0u) << brief;
+  EXPECT_NE(brief.find("surge " + std::string(FinalEstimatorName(r.dofs[0].estimator))),
+            std::string::npos) << brief;
+  const std::string full = s.Full();
+  EXPECT_EQ(full.rfind(brief + "\n", 0), 0u) << full;
+  EXPECT_NE(full.find("refine"), std::string::npos) << full;
+  EXPECT_NE(full.find("  surge: "), std::string::npos) << full;
+}
+
 }  // namespace
 }  // namespace uuvplan::ident

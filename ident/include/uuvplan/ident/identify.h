@@ -2,17 +2,19 @@
 // parameter estimates with standard deviations, and the identified model is scored by
 // free-run simulation on its `fit` and `validate` trials.
 //
-// Per DOF, in order (docs/identification.md):
-//  1. trials are prepared: outliers excluded and reported, gaps found, velocity estimated
-//     (Savitzky–Golay, seed 000 §IV-D), the logged force held between rows;
-//  2. steady-state segments are detected (or taken from the user's windows) and the drag,
+// Per DOF, four stages (ident/src/identify_stages.h, docs/identification.md):
+//  1. prepare: trials prepared (outliers excluded and reported, gaps found, velocity estimated
+//     by Savitzky–Golay, seed 000 §IV-D, the logged force held between rows), the DOF's fit and
+//     validate trials, its model structure and start values (PriorTheta);
+//  2. estimate: steady-state segments detected (or taken from the user's windows) and the drag,
 //     bias, ballast step and installation coefficients fitted (seed 000 eqs. 7–12, 20), with
-//     model selection by significance (51.02%);
-//  3. the inertia by the integral method with the drag known (seed 000 eqs. 16–19), and the
-//     one-step integral least squares of all regressor-linear parameters (seeds 002/004);
-//  4. the output-error (maximum-likelihood) refinement of all parameters, started from the
-//     least-squares answer — the reported estimate when it converges;
-//  5. free-run validation (velocity MAE, seed 002 eq. 37; position RMS; residual whiteness).
+//     model selection by significance (51.02%); the inertia by the integral method with the
+//     drag known (seed 000 eqs. 16–19), and the one-step integral least squares of all
+//     regressor-linear parameters (seeds 002/004);
+//  3. refine: the output-error (maximum-likelihood) refinement of all parameters, started from
+//     the least-squares answer — the reported estimate when it converges;
+//  4. validate: plausibility of the estimates, free-run validation (velocity MAE, seed 002
+//     eq. 37; position RMS; residual whiteness).
 // Ill-posed cases (no excitation, too few steady segments, singular regressions, closed-loop
 // data) are reported with what would fix them; nothing is silently dropped.
 #pragma once
@@ -72,6 +74,12 @@ std::string_view IdentifyStatusName(IdentifyStatus s);
 enum class FinalEstimator { kOutputError, kSteadyStateIntegral, kOneStep, kNone };
 std::string_view FinalEstimatorName(FinalEstimator e);
 
+/// Wall time of one stage of the identification (s).
+struct StageTime {
+  std::string stage;
+  double seconds = 0.0;
+};
+
 struct DofIdentification {
   model::Dof dof = model::Dof::kSurge;
   IdentifyStatus status = IdentifyStatus::kOk;
@@ -93,9 +101,10 @@ struct DofIdentification {
   bool closed_loop_suspected = false;
   std::vector<std::string> notes;
   std::vector<std::string> warnings;
-  /// Wall time of each stage (s): "steady_state+integral", "one_step_ls", "output_error",
-  /// "validation".
-  std::map<std::string, double> timing;
+  /// Wall time of each stage, in order: "prepare" (this DOF's trials' share of the data
+  /// preparation and the model set-up), "estimate" (steady state, integral method, one-step
+  /// least squares), "refine" (output error), "validate" (plausibility and free runs).
+  std::vector<StageTime> timing;
 
   /// The reported estimate of parameter `name`, or null.
   const ParameterEstimate* Param(const std::string& name) const;
@@ -113,6 +122,29 @@ struct TrialReport {
   std::vector<std::string> notes;
 };
 
+/// What an identification did, in the style of Ceres' Solver::Summary: the status, the wall
+/// time of each stage summed over the DOFs, and the estimator and status of each DOF.
+struct IdentifySummary {
+  struct DofLine {
+    model::Dof dof = model::Dof::kSurge;
+    IdentifyStatus status = IdentifyStatus::kFailed;
+    FinalEstimator estimator = FinalEstimator::kNone;
+    int num_parameters = 0, num_fit_trials = 0, num_validate_trials = 0;
+    int num_warnings = 0;
+    std::string message;
+  };
+  IdentifyStatus status = IdentifyStatus::kFailed;
+  std::string message;
+  int num_trials = 0;
+  std::vector<StageTime> stages;  ///< prepare, estimate, refine, validate (all DOFs)
+  std::vector<DofLine> dofs;
+  double total_seconds() const;
+  /// One line: "identify: warnings, 2 DOF(s) from 6 trial(s) in 0.41 s (surge output_error, …)".
+  std::string Brief() const;
+  /// A few lines: the brief line, the stage timings, one line per DOF.
+  std::string Full() const;
+};
+
 struct IdentifyResult {
   IdentifyStatus status = IdentifyStatus::kFailed;
   std::string message;
@@ -120,6 +152,8 @@ struct IdentifyResult {
   std::vector<TrialReport> trials;
   std::vector<std::string> notes;
   const DofIdentification* Find(model::Dof dof) const;
+  /// The summary of this result (status, stage timings, one line per DOF).
+  IdentifySummary Summary() const;
 };
 
 /// Identifies the campaign. Throws model::InputError for unusable input (a trial without
@@ -128,7 +162,8 @@ struct IdentifyResult {
 IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& options);
 
 /// A priori parameter values of a DOF model (vehicle inertia bounds' midpoint, drag prior,
-/// η = 1, …) overridden by `guess`.
+/// η = 1, …) overridden by `guess`: the nominal-θ policy of identification (the starting
+/// values of every stage), one function so that it can be swapped.
 Eigen::VectorXd PriorTheta(const model::Vehicle& vehicle, const model::DofModel& model,
                            const std::map<std::string, double>& guess);
 

@@ -1,0 +1,89 @@
+// Stage 1 of identifying a DOF, prepare: which trials fit and which validate, the model
+// structure they call for, and whether the logged force looks like a controller's.
+#include <algorithm>
+#include <cmath>
+
+#include "identify_stages.h"
+
+namespace uuvplan::ident {
+
+double CommandRoughness(const TrialData& d) {
+  // The sequence of distinct consecutive command values (holds removed).
+  std::vector<double> v;
+  for (double f : d.force) {
+    if (v.empty() || f != v.back()) v.push_back(f);
+  }
+  if (v.size() < 10) return 0.0;
+  // A designed piecewise-constant input (steps, legs, telegraph, PRBS) revisits a few levels.
+  std::vector<double> levels = v;
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  if (levels.size() <= std::max<std::size_t>(10, v.size() / 10)) return 0.0;
+  // Many levels: smooth (a sampled sine) or irregular (a controller reacting to noise).
+  std::vector<double> d1, d2;
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    d1.push_back(std::abs(v[i] - v[i - 1]));
+    if (i >= 2) d2.push_back(std::abs(v[i] - 2 * v[i - 1] + v[i - 2]));
+  }
+  auto median = [](std::vector<double> x) {
+    std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+    return x[x.size() / 2];
+  };
+  const double m1 = median(d1);
+  return m1 > 0 ? median(d2) / m1 : 0.0;
+}
+
+namespace stages {
+
+DofTrials SelectTrials(model::Dof dof, const std::vector<TrialData>& all, DofIdentification* r) {
+  DofTrials t;
+  for (const TrialData& d : all) {
+    if (d.dof != dof) continue;
+    if (d.use == model::TrialUse::kFit) {
+      t.fit.push_back(&d);
+      r->fit_trials.push_back(d.index);
+      for (const auto& m : d.mappings_used) {
+        if (std::find(t.mappings.begin(), t.mappings.end(), m) == t.mappings.end()) {
+          t.mappings.push_back(m);
+        }
+      }
+      t.ballast_values.insert(d.ballast_steps);
+    } else {
+      t.validate.push_back(&d);
+      r->validate_trials.push_back(d.index);
+    }
+  }
+  for (const TrialData& d : all) {
+    if (d.dof != dof) continue;
+    for (const std::string& c : d.unusable_columns) {
+      r->warnings.push_back(d.name + ": column " + c + " has no usable value (all NaN?): the " +
+                            "trial is identified from its other measurement only");
+    }
+  }
+  return t;
+}
+
+model::ModelStructure ChooseStructure(const model::Vehicle& vehicle, model::Dof dof,
+                                      const DofTrials& trials, const IdentifyOptions& o) {
+  if (auto it = o.structures.find(dof); it != o.structures.end()) {
+    model::ModelStructure s = it->second;
+    s.dof = dof;
+    return s;
+  }
+  return model::ModelStructure::Standard(vehicle, dof, trials.mappings,
+                                         trials.ballast_values.size() > 1);
+}
+
+// Closed loop when told so, or (kAuto) when most fit trials' commands are rough
+// (CommandRoughness > 0.3).
+bool SuspectClosedLoop(const std::vector<const TrialData*>& fit, ClosedLoop setting) {
+  int rough = 0;
+  for (const TrialData* d : fit) {
+    if (CommandRoughness(*d) > 0.3) ++rough;
+  }
+  return setting == ClosedLoop::kYes ||
+         (setting == ClosedLoop::kAuto && 2 * rough > static_cast<int>(fit.size()));
+}
+
+}  // namespace stages
+}  // namespace uuvplan::ident

@@ -1,0 +1,36 @@
+// Model selection by significance (seed 000 §IV-D), shared by the steady-state and the
+// output-error fits: drop the prunable parameter with the largest percentile error above
+// 51.02% and refit, until every prunable parameter is significant.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "uuvplan/ident/estimate.h"
+
+namespace uuvplan::ident {
+
+/// A parameter that model selection may drop: its name, estimate and σ in the current fit.
+struct PruneCandidate {
+  const std::string& name;
+  double value, sigma;
+};
+
+/// The index in `candidates` of the parameter to drop, or -1: the one named in `prunable`
+/// with the largest percentile error above 51.02% (first of equals), never the last drag term
+/// among the candidates (a model without drag has no steady state). *worst_pe is set to its
+/// percentile error.
+int WorstInsignificant(const std::vector<PruneCandidate>& candidates,
+                       const std::vector<std::string>& prunable, double* worst_pe);
+
+/// The estimated and dropped parameters (fixed ones left out) of a fit, dropped ones with the
+/// value and σ they had in the last fit that still had them.
+std::vector<ParameterEstimate> EstimatedAndDropped(const std::vector<std::string>& names,
+                                                   const Eigen::VectorXd& theta,
+                                                   const Eigen::MatrixXd& covariance,
+                                                   const std::vector<ParameterState>& state,
+                                                   const std::vector<double>& value_before_drop,
+                                                   const std::vector<double>& sigma_before_drop);
+
+}  // namespace uuvplan::ident
