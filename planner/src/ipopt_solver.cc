@@ -191,12 +191,7 @@ std::string ReturnName(Ipopt::SolverReturn s) {
 
 SolverSummary SolveWithIpopt(const DesignProblem& p, const SolverOptions& o) {
   SolverSummary s;
-  s.backend = "ipopt";
-  std::string error;
-  if (!o.IsValid(&error)) {
-    s.message = error;
-    return s;
-  }
+  if (!internal::StartSummary("ipopt", o, &s)) return s;
   DesignEvaluator ev(p, o);
   Ipopt::SmartPtr<DesignNlp> nlp = new DesignNlp(p, o, &ev);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();

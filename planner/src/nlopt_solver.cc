@@ -175,12 +175,7 @@ std::string RunLocal(const DesignProblem& p, const SolverOptions& o, DesignEvalu
 
 SolverSummary SolveWithNlopt(const DesignProblem& p, const SolverOptions& o) {
   SolverSummary s;
-  s.backend = "nlopt";
-  std::string error;
-  if (!o.IsValid(&error)) {
-    s.message = error;
-    return s;
-  }
+  if (!internal::StartSummary("nlopt", o, &s)) return s;
   DesignEvaluator ev(p, o);
   Context ctx{&ev, &o, &p};
   std::vector<double> start = p.x0;
