@@ -21,16 +21,14 @@ namespace {
 using internal::Fmt;
 using model::Dof;
 
-constexpr model::EnumNames<NextStatus, 3> kNextStatusNames{{{
-    {NextStatus::kTrial, "trial"},
-    {NextStatus::kConverged, "converged"},
-    {NextStatus::kInfeasible, "infeasible"},
-}}};
-constexpr model::EnumNames<LoopStatus, 3> kLoopStatusNames{{{
-    {LoopStatus::kConverged, "converged"},
-    {LoopStatus::kBudgetSpent, "budget_spent"},
-    {LoopStatus::kInfeasible, "infeasible"},
-}}};
+constexpr model::EnumNames<NextStatus, 3> kNextStatusNames{
+    {{{NextStatus::kTrial, "trial"},
+      {NextStatus::kConverged, "converged"},
+      {NextStatus::kInfeasible, "infeasible"}}}};
+constexpr model::EnumNames<LoopStatus, 3> kLoopStatusNames{
+    {{{LoopStatus::kConverged, "converged"},
+      {LoopStatus::kBudgetSpent, "budget_spent"},
+      {LoopStatus::kInfeasible, "infeasible"}}}};
 
 std::vector<Dof> CampaignDofs(const model::Campaign& c) {
   std::vector<Dof> out;
@@ -129,8 +127,7 @@ std::string BudgetSpentMessage(const LoopOptions& options,
   for (const auto& p : progress) {
     if (!p.converged) {
       m << " " << model::DofName(p.dof) << " " << p.worst << " at "
-        << (std::isfinite(p.worst_percent) ? Fmt(p.worst_percent) + "%" : "not estimated")
-        << ";";
+        << (std::isfinite(p.worst_percent) ? Fmt(p.worst_percent) + "%" : "not estimated") << ";";
     }
   }
   m << " raise --budget or the target";
@@ -267,8 +264,7 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
   std::map<Dof, std::vector<model::TrialDesign>> per_dof;
   for (;;) {
     const auto t0 = std::chrono::steady_clock::now();
-    internal::Decision d =
-        internal::Decide(planner, builder.campaign(), dofs, result.estimates);
+    internal::Decision d = internal::Decide(planner, builder.campaign(), dofs, result.estimates);
     result.progress = d.progress;
     if (LoopEnds(d, options, &result)) break;
     LoopIteration it = RunIteration(std::move(d), options, dofs, &builder, &result.estimates);

@@ -136,8 +136,12 @@ class DofTrialPolicy {
  public:
   DofTrialPolicy(Planner& planner, const model::Campaign& campaign, const DofProgress& progress,
                  Decision* decision)
-      : planner_(planner), campaign_(campaign), progress_(progress), dof_(progress.dof),
-        name_(model::DofName(progress.dof)), d_(decision) {}
+      : planner_(planner),
+        campaign_(campaign),
+        progress_(progress),
+        dof_(progress.dof),
+        name_(model::DofName(progress.dof)),
+        d_(decision) {}
 
   bool Plan(const ident::DofIdentification* id, std::string* why) {
     ReadHistory();
@@ -219,8 +223,8 @@ class DofTrialPolicy {
   }
 
   std::string NotUsableYet() const {
-    return "estimates not usable yet: " + progress_.worst + " at " +
-           Fmt(progress_.worst_percent) + "%";
+    return "estimates not usable yet: " + progress_.worst + " at " + Fmt(progress_.worst_percent) +
+           "%";
   }
 
   bool TakeAPriori(const PlannedTrial& t, const std::string& why_this) {
@@ -262,8 +266,8 @@ class DofTrialPolicy {
   // Without any usable estimate the covariance is empty: no prior information, the a priori
   // box (PriorInformation::FromCovariance).
   NextTrialResult Design(const NextTrialOptions& o, const std::string& what, std::string* why) {
-    const NextTrialResult nt = DesignNextTrial(planner_.vehicle, planner_.pool, dof_, estimates_,
-                                               names_, covariance_, o);
+    const NextTrialResult nt =
+        DesignNextTrial(planner_.vehicle, planner_.pool, dof_, estimates_, names_, covariance_, o);
     for (const auto& n : nt.notes) d_->notes.push_back(name_ + ": " + n);
     if (nt.status != DesignStatus::kOk) {
       d_->notes.push_back(name_ + ": " + what + ": " + std::string(DesignStatusName(nt.status)) +

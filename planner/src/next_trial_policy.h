@@ -55,7 +55,8 @@ Decision Decide(Planner& planner, const model::Campaign& campaign,
 
 /// `asked`, or when it is empty every DOF the truth has parameters for (what the loop and the
 /// paper procedure run on a virtual vehicle).
-std::vector<model::Dof> DofsOrTruths(const model::Truth& truth, const std::vector<model::Dof>& asked);
+std::vector<model::Dof> DofsOrTruths(const model::Truth& truth,
+                                     const std::vector<model::Dof>& asked);
 
 /// Fit trials of `dof` in the campaign.
 int FitTrials(const model::Campaign& campaign, model::Dof dof);

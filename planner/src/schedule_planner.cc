@@ -12,13 +12,9 @@
 
 namespace uuvplan::planner {
 
-namespace {
 constexpr model::EnumNames<PlanStatus, 3> kPlanStatusNames{{{
-    {PlanStatus::kOk, "ok"},
-    {PlanStatus::kPartial, "partial"},
-    {PlanStatus::kInfeasible, "infeasible"},
-}}};
-}  // namespace
+    {PlanStatus::kOk, "ok"}, {PlanStatus::kPartial, "partial"},
+    {PlanStatus::kInfeasible, "infeasible"}}}};
 
 std::string_view PlanStatusName(PlanStatus s) { return kPlanStatusNames.Name(s); }
 
@@ -201,6 +197,60 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
   return plan;
 }
 
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The ranking of DesignNextTrial's candidates; the best so far is in the result's trial.
+struct NextCandidates {
+  const DofContext& ctx;
+  const NextTrialOptions& o;
+  const std::vector<Eigen::MatrixXd>& M0;  // prior information at each design point
+  double criterion_before;
+  double best;        // criterion of the best candidate so far
+  double best_score;  // its score
+  std::vector<Eigen::MatrixXd> best_info;
+
+  double Score(double criterion, double duration) const {
+    if (!o.per_pool_time) return criterion;
+    return (criterion - criterion_before) / (duration + ctx.options().pause_s);
+  }
+
+  void TakeSine(const SineDesignResult& sn, NextTrialResult* result) {
+    best = sn.criterion;
+    best_score = Score(sn.criterion, sn.trial.design.duration);
+    result->trial = sn.trial;
+    result->check = sn.check;
+    best_info = sn.information;
+  }
+
+  // A steady run from rest of `leg`, taken if it scores more than 1e-9 above the best (the
+  // criteria are O(1..100) logs; a tie keeps the earlier candidate, the sine) and is feasible.
+  void ConsiderSteady(const SteadyLeg& leg, NextTrialResult* result) {
+    model::TrialDesign d;
+    d.id = o.id;
+    d.dof = ctx.dof();
+    d.kind = model::TrialKind::kSteady;
+    d.mapping = leg.mapping;
+    d.force = leg.force;
+    d.duration = leg.duration();
+    std::vector<Eigen::MatrixXd> info = ctx.Information(d);
+    std::vector<Eigen::MatrixXd> total = info;
+    for (std::size_t j = 0; j < total.size(); ++j) total[j] += M0[j];
+    const double c =
+        Aggregate(ctx.options().robustness, ctx.CriterionValues(total, o.criterion, {}));
+    const double sc = Score(c, d.duration);
+    if (!(sc > best_score + 1e-9)) return;
+    const TrialCheck check = ctx.Check(d);
+    if (!check.feasible) return;
+    best = c;
+    best_score = sc;
+    result->trial.design = d;
+    result->trial.travel = check.travel;
+    result->trial.thrust_min = check.thrust_min;
+    result->check = check;
+    best_info = std::move(info);
+  }
+};
+
 }  // namespace
 
 ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& pool,
@@ -276,54 +326,17 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
   // Candidates: the sine designed for this criterion, and each steady leg from rest. They are
   // ranked by the criterion they reach or, with per_pool_time, by its gain per second of pool
   // time (the trial plus the pause before the next one; a cost-normalised criterion).
-  const double pause = ctx.options().pause_s;
-  auto score = [&](double criterion, double duration) {
-    if (!o.per_pool_time) return criterion;
-    return (criterion - result.criterion_before) / (duration + pause);
-  };
-  double best = -std::numeric_limits<double>::infinity();
-  double best_score = best;
-  std::vector<Eigen::MatrixXd> best_info;
+  NextCandidates ranking{ctx, o, M0, result.criterion_before, -kInf, -kInf, {}};
   SineDesignOptions so = o.schedule.sine;
   so.criterion = o.criterion;
   so.interest.clear();
   const SineDesignResult sn = DesignSine(ctx, so, M0, o.id);
   for (const auto& n : sn.notes) result.notes.push_back(n);
-  if (sn.status == DesignStatus::kOk) {
-    best = sn.criterion;
-    best_score = score(sn.criterion, sn.trial.design.duration);
-    result.trial = sn.trial;
-    result.check = sn.check;
-    best_info = sn.information;
-  }
+  if (sn.status == DesignStatus::kOk) ranking.TakeSine(sn, &result);
   const SteadyCandidates cands = MakeSteadyCandidates(ctx, o.schedule.steady);
-  for (const auto& leg : cands.legs) {
-    model::TrialDesign d;
-    d.id = o.id;
-    d.dof = dof;
-    d.kind = model::TrialKind::kSteady;
-    d.mapping = leg.mapping;
-    d.force = leg.force;
-    d.duration = leg.duration();
-    std::vector<Eigen::MatrixXd> info = ctx.Information(d);
-    std::vector<Eigen::MatrixXd> total = info;
-    for (std::size_t j = 0; j < total.size(); ++j) total[j] += M0[j];
-    const double c =
-        Aggregate(ctx.options().robustness, ctx.CriterionValues(total, o.criterion, {}));
-    const double sc = score(c, d.duration);
-    // 1e-9: the criteria are O(1..100) logs; a tie keeps the earlier candidate (the sine).
-    if (sc > best_score + 1e-9) {
-      const TrialCheck check = ctx.Check(d);
-      if (!check.feasible) continue;
-      best = c;
-      best_score = sc;
-      result.trial.design = d;
-      result.trial.travel = check.travel;
-      result.trial.thrust_min = check.thrust_min;
-      result.check = check;
-      best_info = info;
-    }
-  }
+  for (const auto& leg : cands.legs) ranking.ConsiderSteady(leg, &result);
+  const double best = ranking.best;
+  const std::vector<Eigen::MatrixXd>& best_info = ranking.best_info;
   if (!std::isfinite(best)) {
     result.status = DesignStatus::kInfeasible;
     result.message = "no trial of " + std::string(model::DofName(dof)) + " fits pool '" +

@@ -17,13 +17,9 @@
 
 namespace uuvplan::planner {
 
-namespace {
 constexpr model::EnumNames<DesignStatus, 3> kDesignStatusNames{{{
-    {DesignStatus::kOk, "ok"},
-    {DesignStatus::kInfeasible, "infeasible"},
-    {DesignStatus::kFailed, "failed"},
-}}};
-}  // namespace
+    {DesignStatus::kOk, "ok"}, {DesignStatus::kInfeasible, "infeasible"},
+    {DesignStatus::kFailed, "failed"}}}};
 
 std::string_view DesignStatusName(DesignStatus s) { return kDesignStatusNames.Name(s); }
 

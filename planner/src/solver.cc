@@ -12,13 +12,9 @@
 
 namespace uuvplan::planner {
 
-namespace {
 constexpr model::EnumNames<Robustness, 3> kRobustnessNames{{{
-    {Robustness::kNominal, "nominal"},
-    {Robustness::kMaximin, "maximin"},
-    {Robustness::kAverage, "average"},
-}}};
-}  // namespace
+    {Robustness::kNominal, "nominal"}, {Robustness::kMaximin, "maximin"},
+    {Robustness::kAverage, "average"}}}};
 
 std::string_view RobustnessName(Robustness r) { return kRobustnessNames.Name(r); }
 
@@ -26,14 +22,9 @@ std::string_view SolverBackendName(SolverBackend b) {
   return b == SolverBackend::kNlopt ? "nlopt" : "ipopt";
 }
 
-namespace {
 constexpr model::EnumNames<SolverStatus, 4> kSolverStatusNames{{{
-    {SolverStatus::kConverged, "converged"},
-    {SolverStatus::kMaxEvaluations, "max_evaluations"},
-    {SolverStatus::kInfeasible, "infeasible"},
-    {SolverStatus::kFailed, "failed"},
-}}};
-}  // namespace
+    {SolverStatus::kConverged, "converged"}, {SolverStatus::kMaxEvaluations, "max_evaluations"},
+    {SolverStatus::kInfeasible, "infeasible"}, {SolverStatus::kFailed, "failed"}}}};
 
 std::string_view SolverStatusName(SolverStatus s) { return kSolverStatusNames.Name(s); }
 

@@ -20,7 +20,7 @@ namespace uuvplan::model {
 struct VirtualCampaignOptions {
   std::uint64_t seed = 1;         ///< trial i draws from StreamSeed(seed, i) (util/seed.h)
   double command_rate_hz = 20.0;  ///< the virtual pool's command rate (VirtualPoolOptions)
-  double pause_s = 60.0;  ///< the campaign clock advances by each trial's duration + pause_s
+  double pause_s = 60.0;       ///< the campaign clock advances by each trial's duration + pause_s
   std::vector<TrialUse> uses;  ///< use of trial i (may be shorter: the rest are fit trials)
   /// Unwrap headings as reading the trial CSV does; off, the logs hold the compass's wrapped
   /// angles, as written to disk.
