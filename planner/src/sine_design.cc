@@ -9,11 +9,11 @@
 #include "options_check.h"
 
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/fisher_information.h"
 #include "uuvplan/planner/seed_rules.h"
 #include "uuvplan/planner/thrust_limits.h"
-#include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::planner {
 
