@@ -7,17 +7,11 @@
 
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/virtual_pool.h"
+#include "uuvplan/model/campaign_builder.h"
+#include "uuvplan/model/util/seed.h"
 
 namespace uuvplan::ident {
 namespace {
-
-std::uint64_t Mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 struct Acc {
   int n = 0, covered = 0, within3 = 0;
@@ -31,29 +25,12 @@ model::Campaign VirtualCampaign(const model::Truth& truth,
                                 const std::vector<model::TrialDesign>& designs, std::uint64_t seed,
                                 const std::vector<model::TrialUse>& uses, double pause_s,
                                 double command_rate_hz) {
-  model::Campaign c;
-  c.path = "<virtual>";
-  c.vehicle = truth.vehicle;
-  c.vehicle_file = "<virtual>";
-  double clock = 0.0;
-  for (std::size_t i = 0; i < designs.size(); ++i) {
-    model::VirtualPoolOptions o;
-    o.seed = Mix(seed ^ Mix(i + 1));
-    o.command_rate_hz = command_rate_hz;
-    model::TrialEntry e;
-    e.file = designs[i].id.empty() ? "trial_" + std::to_string(i) : designs[i].id;
-    e.path = e.file;
-    e.dof = designs[i].dof;
-    e.mapping = designs[i].mapping;
-    e.ballast_steps = designs[i].ballast_steps;
-    e.use = i < uses.size() ? uses[i] : model::TrialUse::kFit;
-    e.start = clock;
-    e.has_start = true;
-    e.log = model::RunVirtualTrial(truth, designs[i], clock, o);
-    c.trials.push_back(std::move(e));
-    clock += designs[i].duration + pause_s;
-  }
-  return c;
+  model::VirtualCampaignOptions o;
+  o.seed = seed;
+  o.uses = uses;
+  o.pause_s = pause_s;
+  o.command_rate_hz = command_rate_hz;
+  return model::BuildVirtualCampaign(truth, designs, o);
 }
 
 double TrueParameter(const model::Truth& truth, model::Dof dof, const std::string& name) {
@@ -101,6 +78,118 @@ std::string MonteCarloReport::Table() const {
   return os.str();
 }
 
+namespace {
+
+using CellKey = std::tuple<std::string, int, std::string>;  // estimator, DOF index, parameter
+
+// Coverage counts of every (estimator, DOF, parameter), in the order first seen.
+class CoverageTally {
+ public:
+  CoverageTally(const model::Truth& truth, double z) : truth_(truth), z_(z) {}
+
+  void Add(const std::string& estimator, model::Dof dof, const ParameterEstimate& e) {
+    if (e.state != ParameterState::kEstimated || !(e.sigma > 0) || !std::isfinite(e.value)) return;
+    const CellKey key = std::make_tuple(estimator, model::Index(dof), e.name);
+    auto [it, inserted] = acc_.try_emplace(key);
+    if (inserted) order_.push_back(key);
+    Acc& a = it->second;
+    a.truth = TrueParameter(truth_, dof, e.name);
+    const double err = std::abs(e.value - a.truth);
+    ++a.n;
+    if (err <= z_ * e.sigma) ++a.covered;
+    if (err <= 3.0 * e.sigma) ++a.within3;
+    a.sum += e.value;
+    a.sum2 += e.value * e.value;
+    a.sum_sigma += e.sigma;
+  }
+
+  // Every estimator's estimates of one DOF; false if the DOF failed.
+  bool AddDof(const DofIdentification& d) {
+    if (d.status == IdentifyStatus::kFailed) return false;
+    if (d.steady && d.steady->ok()) {
+      for (const auto& e : d.steady->estimates) Add("steady_state", d.dof, e);
+    }
+    if (d.inertia && d.inertia->ok()) Add("integral_inertia", d.dof, d.inertia->estimate);
+    if (d.one_step && d.one_step->ok()) {
+      for (const auto& e : d.one_step->estimates) Add("one_step_ls", d.dof, e);
+    }
+    if (d.output_error && d.output_error->ok()) {
+      for (const auto& e : d.output_error->estimates) Add("output_error", d.dof, e);
+    }
+    for (const auto& e : d.params) Add("final", d.dof, e);
+    return true;
+  }
+
+  std::vector<CoverageCell> Cells(const std::map<std::pair<int, std::string>, double>& crb) const {
+    std::vector<CoverageCell> cells;
+    for (const auto& key : order_) {
+      const Acc& a = acc_.at(key);
+      CoverageCell c;
+      c.estimator = std::get<0>(key);
+      c.dof = static_cast<model::Dof>(std::get<1>(key));
+      c.name = std::get<2>(key);
+      c.truth = a.truth;
+      c.n = a.n;
+      c.covered = a.covered;
+      c.within3 = a.within3;
+      c.mean = a.sum / a.n;
+      c.sd = a.n > 1 ? std::sqrt(std::max(0.0, (a.sum2 - a.sum * a.sum / a.n) / (a.n - 1))) : 0.0;
+      c.mean_sigma = a.sum_sigma / a.n;
+      if (c.estimator == "output_error" || c.estimator == "final") {
+        if (auto it = crb.find({std::get<1>(key), c.name}); it != crb.end()) c.crb_sigma = it->second;
+      }
+      cells.push_back(c);
+    }
+    return cells;
+  }
+
+ private:
+  const model::Truth& truth_;
+  double z_;
+  std::map<CellKey, Acc> acc_;
+  std::vector<CellKey> order_;
+};
+
+// Cramér–Rao bound at the truth for the output-error parameters (same sample times and
+// nuisance parameters as the fit): √CRB by (DOF index, parameter).
+std::map<std::pair<int, std::string>, double> CramerRaoSigmas(const model::Truth& truth,
+                                                              const model::Campaign& campaign,
+                                                              const IdentifyResult& res,
+                                                              const MonteCarloOptions& o) {
+  std::map<std::pair<int, std::string>, double> crb;
+  std::vector<TrialData> trials;
+  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
+    trials.push_back(PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.identify.data));
+  }
+  for (const DofIdentification& d : res.dofs) {
+    if (!d.output_error || !d.output_error->ok()) continue;
+    const model::DofModel model(campaign.vehicle, d.structure);
+    std::vector<const TrialData*> fit;
+    for (const auto& t : trials) {
+      if (t.dof == d.dof && t.use == model::TrialUse::kFit) fit.push_back(&t);
+    }
+    Eigen::VectorXd theta(model.num_parameters());
+    for (int j = 0; j < model.num_parameters(); ++j) {
+      theta[j] = TrueParameter(truth, d.dof, model.parameter_names()[j]);
+    }
+    // Truth: every trial starts at rest; the position offset is a nuisance.
+    std::vector<TrialInitialState> init;
+    for (const auto& s : d.output_error->initial) {
+      TrialInitialState t = s;
+      t.xi0 = 0.0;
+      init.push_back(t);
+    }
+    const Eigen::MatrixXd C =
+        CramerRaoBound(model, fit, theta, d.output_error->state, init, o.identify.output_error);
+    for (int j = 0; j < model.num_parameters(); ++j) {
+      if (C(j, j) > 0) crb[{model::Index(d.dof), model.parameter_names()[j]}] = std::sqrt(C(j, j));
+    }
+  }
+  return crb;
+}
+
+}  // namespace
+
 MonteCarloReport RunMonteCarlo(const model::Truth& truth,
                                const std::vector<model::TrialDesign>& designs,
                                const MonteCarloOptions& o) {
@@ -108,31 +197,18 @@ MonteCarloReport RunMonteCarlo(const model::Truth& truth,
   if (!o.IsValid(&error)) throw model::InputError("Monte Carlo options", error);
   MonteCarloReport report;
   report.repetitions = o.repetitions;
-  std::map<std::tuple<std::string, int, std::string>, Acc> acc;
-  std::vector<std::tuple<std::string, int, std::string>> order;
+  CoverageTally tally(truth, o.z);
   std::map<std::pair<int, std::string>, double> crb;
   bool crb_done = false;
-  auto add = [&](const std::string& est, model::Dof dof, const ParameterEstimate& e) {
-    if (e.state != ParameterState::kEstimated || !(e.sigma > 0) || !std::isfinite(e.value)) return;
-    const auto key = std::make_tuple(est, model::Index(dof), e.name);
-    auto [it, inserted] = acc.try_emplace(key);
-    if (inserted) order.push_back(key);
-    Acc& a = it->second;
-    a.truth = TrueParameter(truth, dof, e.name);
-    const double err = std::abs(e.value - a.truth);
-    ++a.n;
-    if (err <= o.z * e.sigma) ++a.covered;
-    if (err <= 3.0 * e.sigma) ++a.within3;
-    a.sum += e.value;
-    a.sum2 += e.value * e.value;
-    a.sum_sigma += e.sigma;
-  };
+  model::VirtualCampaignOptions virtual_pool;
+  virtual_pool.uses = o.uses;
+  virtual_pool.pause_s = o.pause_s;
   for (int rep = 0; rep < o.repetitions; ++rep) {
-    const std::uint64_t seed = Mix(o.seed + 0x1000 * static_cast<std::uint64_t>(rep));
+    virtual_pool.seed = model::SplitMix64(o.seed + 0x1000 * static_cast<std::uint64_t>(rep));
     IdentifyResult res;
     model::Campaign campaign;
     try {
-      campaign = VirtualCampaign(truth, designs, seed, o.uses, o.pause_s);
+      campaign = model::BuildVirtualCampaign(truth, designs, virtual_pool);
       res = Identify(campaign, o.identify);
     } catch (const std::exception& ex) {
       ++report.failures;
@@ -140,74 +216,14 @@ MonteCarloReport RunMonteCarlo(const model::Truth& truth,
       continue;
     }
     for (const DofIdentification& d : res.dofs) {
-      if (d.status == IdentifyStatus::kFailed) {
-        ++report.failures;
-        continue;
-      }
-      if (d.steady && d.steady->ok()) {
-        for (const auto& e : d.steady->estimates) add("steady_state", d.dof, e);
-      }
-      if (d.inertia && d.inertia->ok()) add("integral_inertia", d.dof, d.inertia->estimate);
-      if (d.one_step && d.one_step->ok()) {
-        for (const auto& e : d.one_step->estimates) add("one_step_ls", d.dof, e);
-      }
-      if (d.output_error && d.output_error->ok()) {
-        for (const auto& e : d.output_error->estimates) add("output_error", d.dof, e);
-      }
-      for (const auto& e : d.params) add("final", d.dof, e);
+      if (!tally.AddDof(d)) ++report.failures;
     }
-    // Cramér–Rao bound at the truth for the output-error parameters (same sample times and
-    // nuisance parameters as the fit).
     if (o.cramer_rao && !crb_done) {
       crb_done = true;
-      std::vector<TrialData> trials;
-      for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
-        trials.push_back(PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.identify.data));
-      }
-      for (const DofIdentification& d : res.dofs) {
-        if (!d.output_error || !d.output_error->ok()) continue;
-        const model::DofModel model(campaign.vehicle, d.structure);
-        std::vector<const TrialData*> fit;
-        for (const auto& t : trials) {
-          if (t.dof == d.dof && t.use == model::TrialUse::kFit) fit.push_back(&t);
-        }
-        Eigen::VectorXd theta(model.num_parameters());
-        for (int j = 0; j < model.num_parameters(); ++j) {
-          theta[j] = TrueParameter(truth, d.dof, model.parameter_names()[j]);
-        }
-        // Truth: every trial starts at rest; the position offset is a nuisance.
-        std::vector<TrialInitialState> init;
-        for (const auto& s : d.output_error->initial) {
-          TrialInitialState t = s;
-          t.xi0 = 0.0;
-          init.push_back(t);
-        }
-        const Eigen::MatrixXd C =
-            CramerRaoBound(model, fit, theta, d.output_error->state, init, o.identify.output_error);
-        for (int j = 0; j < model.num_parameters(); ++j) {
-          if (C(j, j) > 0) crb[{model::Index(d.dof), model.parameter_names()[j]}] = std::sqrt(C(j, j));
-        }
-      }
+      crb = CramerRaoSigmas(truth, campaign, res, o);
     }
   }
-  for (const auto& key : order) {
-    const Acc& a = acc[key];
-    CoverageCell c;
-    c.estimator = std::get<0>(key);
-    c.dof = static_cast<model::Dof>(std::get<1>(key));
-    c.name = std::get<2>(key);
-    c.truth = a.truth;
-    c.n = a.n;
-    c.covered = a.covered;
-    c.within3 = a.within3;
-    c.mean = a.sum / a.n;
-    c.sd = a.n > 1 ? std::sqrt(std::max(0.0, (a.sum2 - a.sum * a.sum / a.n) / (a.n - 1))) : 0.0;
-    c.mean_sigma = a.sum_sigma / a.n;
-    if (c.estimator == "output_error" || c.estimator == "final") {
-      if (auto it = crb.find({std::get<1>(key), c.name}); it != crb.end()) c.crb_sigma = it->second;
-    }
-    report.cells.push_back(c);
-  }
+  report.cells = tally.Cells(crb);
   return report;
 }
 

@@ -19,81 +19,87 @@ inline double Inside(double t, double a, double b) {
   return std::max(a, std::min(t, b - 1e-12 * std::max(1.0, b)));
 }
 
-// Integrates from x0 at t = 0 and records the state at output_times[i] - shift (the state x0
-// for shifted times before 0). Every RK4 step ends at the input's breakpoints and at the
-// (shifted) output times, which are merged on the fly.
-// NX = number of states (2, or 3 with thruster lag), a template parameter so that the state
-// loops unroll.
-template <int NX>
-Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
-                      const TrialConditions& c, const std::vector<double>& output_times,
-                      double shift, const SimulationOptions& options, const Eigen::VectorXd* x0) {
+// The output trajectory, sized: x for every output time, S (with sensitivities) in place.
+// Throws std::invalid_argument on a step <= 0 or unsorted or negative output times.
+Trajectory SizedOutput(int nx, int np, const std::vector<double>& output_times,
+                       const SimulationOptions& options) {
   if (!(options.step_s > 0)) throw std::invalid_argument("SimulationOptions::step_s must be > 0");
   if (!std::is_sorted(output_times.begin(), output_times.end()) ||
       (!output_times.empty() && output_times.front() < 0)) {
     throw std::invalid_argument("Simulate: output times must be sorted and >= 0");
   }
+  Trajectory out;
+  out.t = output_times;
+  out.x.resize(output_times.size(), nx);
+  if (options.sensitivities) {
+    out.S.resize(nx);  // sized in place: copying a prototype would touch 3 × n_out × np doubles
+    for (auto& s : out.S) s.resize(output_times.size(), np);
+  }
+  return out;
+}
+
+// K = A·St + B with St = S + c·K_prev (c = 0 for the first stage). S, St, K are row-major
+// NX × np (row s: the sensitivities of state s); A (NX × NX) and B (NX × np) as the kernel
+// writes them.
+template <int NX>
+__attribute__((always_inline)) inline void SensitivitySlope(const double* A, const double* B, const double* S,
+                             const double* k_prev, double c_prev, int np, double* St,
+                             double* K) {
+  const int ns = NX * np;
+  for (int j = 0; j < ns; ++j) St[j] = k_prev ? S[j] + c_prev * k_prev[j] : S[j];
+  for (int r = 0; r < NX; ++r) {
+    double* Kr = K + r * np;
+    const double* Br = B + r * np;
+    for (int j = 0; j < np; ++j) {
+      double v = Br[j];
+      for (int q = 0; q < NX; ++q) v += A[r * NX + q] * St[q * np + j];
+      Kr[j] = v;
+    }
+  }
+}
+
+// Integrates from x0 at t = 0 and records the state at output_times[i] - shift (the state x0
+// for shifted times before 0). Every RK4 step ends at the input's breakpoints and at the
+// (shifted) output times, which are merged on the fly.
+// NX = number of states (2, or 3 with thruster lag), a template parameter so that the state
+// loops unroll. The hot loop keeps its buffers local (a class holding them was 8% slower in
+// the planner: stores through its pointers forced reloads of every member).
+template <int NX>
+Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
+                      const TrialConditions& c, const std::vector<double>& output_times,
+                      double shift, const SimulationOptions& options, const Eigen::VectorXd* x0) {
   constexpr int nx = NX;
   const int np = model.num_parameters();
+  Trajectory out = SizedOutput(nx, np, output_times, options);
   const double* th = theta.data();
   const Kernel::Inverses inv = Kernel::Invert(model, th);
   const bool sens = options.sensitivities;
   const std::size_t n_out = output_times.size();
-
-  Trajectory out;
-  out.t = output_times;
-  out.x.resize(n_out, nx);
-  if (sens) {
-    out.S.resize(nx);  // sized in place: copying a prototype would touch 3 × n_out × np doubles
-    for (auto& s : out.S) s.resize(n_out, np);
-  }
-
   double x[3] = {0, 0, 0};
   if (x0) {
     for (int s = 0; s < nx && s < x0->size(); ++s) x[s] = (*x0)[s];
   }
-  // S = ∂x/∂theta, row-major NX × np (row s: the sensitivities of state s), with the RK4
-  // stage slopes K and the stage argument St alike; A (NX × NX) and B (NX × np) as the kernel
-  // writes them.
+  // S = ∂x/∂theta with the RK4 stage slopes K and the stage argument St (SensitivitySlope).
   const int ns = sens ? nx * np : 0;
   std::vector<double> S(ns, 0.0), St(ns), K1(ns), K2(ns), K3(ns), K4(ns), B(ns);
   double A[NX * NX];
-  // K = A·St + B with St = S + c·K_prev (c = 0 for the first stage).
-  auto slope = [&](const double* k_prev, double c_prev, double* K) {
-    for (int j = 0; j < ns; ++j) St[j] = k_prev ? S[j] + c_prev * k_prev[j] : S[j];
-    for (int r = 0; r < nx; ++r) {
-      double* Kr = K + r * np;
-      const double* Br = B.data() + r * np;
-      for (int j = 0; j < np; ++j) {
-        double v = Br[j];
-        for (int q = 0; q < nx; ++q) v += A[r * NX + q] * St[q * np + j];
-        Kr[j] = v;
-      }
-    }
-  };
-
   std::size_t next_out = 0;
   auto record = [&](double t) {
-    while (next_out < n_out && output_times[next_out] - shift <= t) {
+    for (; next_out < n_out && output_times[next_out] - shift <= t; ++next_out) {
       for (int s = 0; s < nx; ++s) out.x(next_out, s) = x[s];
-      if (sens) {
-        for (int s = 0; s < nx; ++s) {
-          for (int j = 0; j < np; ++j) out.S[s](next_out, j) = S[s * np + j];
-        }
+      for (int s = 0; s < (sens ? nx : 0); ++s) {
+        for (int j = 0; j < np; ++j) out.S[s](next_out, j) = S[s * np + j];
       }
-      ++next_out;
     }
   };
   record(0.0);
-
   std::vector<double> breaks = c.input ? c.input->Breakpoints() : std::vector<double>{};
   std::sort(breaks.begin(), breaks.end());
   std::size_t next_break = 0;
-
   // The input is sampled once per stage time; a step's end sample starts the next step
-  // unless the step ended at a breakpoint (where the input jumps).
-  // A piecewise-constant input does not change inside a step (steps end at its breakpoints):
-  // only the other DOFs' velocities are sampled at the inner stage times.
+  // unless the step ended at a breakpoint (where the input jumps). A piecewise-constant input
+  // does not change inside a step (steps end at its breakpoints): only the other DOFs'
+  // velocities are sampled at the inner stage times.
   const bool held = c.input && c.input->piecewise_constant();
   double t = 0.0;
   InputSample in_a = model.SampleInput(0.0, c, th);
@@ -116,6 +122,7 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
       }
       double k1[3], k2[3], k3[3], k4[3], xt[3];
       // Classical RK4 on x (and on S with the same stages): x += h/6·(k1 + 2k2 + 2k3 + k4).
+      // With S: dS/dt = A·S + B (forward sensitivity equations), A = ∂f/∂x, B = ∂f/∂theta.
       if (!sens) {
         Kernel::Derivative(model, ta, x, in_a, c, th, inv, k1);
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k1[s];
@@ -125,21 +132,20 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + h * k3[s];
         Kernel::Derivative(model, te, xt, in_e, c, th, inv, k4);
       } else {
-        // dS/dt = A·S + B (forward sensitivity equations), A = ∂f/∂x, B = ∂f/∂theta.
         double* Bp = B.data();
         Kernel::Linearize<NX>(model, ta, x, in_a, c, th, inv, k1, A, Bp);
-        slope(nullptr, 0.0, K1.data());
+        SensitivitySlope<NX>(A, Bp, S.data(), nullptr, 0.0, np, St.data(), K1.data());
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k1[s];
         Kernel::Linearize<NX>(model, tm, xt, in_m, c, th, inv, k2, A, Bp);
-        slope(K1.data(), 0.5 * h, K2.data());
+        SensitivitySlope<NX>(A, Bp, S.data(), K1.data(), 0.5 * h, np, St.data(), K2.data());
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k2[s];
         Kernel::Linearize<NX>(model, tm, xt, in_m, c, th, inv, k3, A, Bp);
-        slope(K2.data(), 0.5 * h, K3.data());
+        SensitivitySlope<NX>(A, Bp, S.data(), K2.data(), 0.5 * h, np, St.data(), K3.data());
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + h * k3[s];
         Kernel::Linearize<NX>(model, te, xt, in_e, c, th, inv, k4, A, Bp);
-        slope(K3.data(), h, K4.data());
-        for (int j = 0; j < ns; ++j) S[j] += (h / 6.0) * (K1[j] + 2.0 * K2[j] + 2.0 * K3[j] + K4[j]);
+        SensitivitySlope<NX>(A, Bp, S.data(), K3.data(), h, np, St.data(), K4.data());
       }
+      for (int j = 0; j < ns; ++j) S[j] += (h / 6.0) * (K1[j] + 2.0 * K2[j] + 2.0 * K3[j] + K4[j]);
       for (int s = 0; s < nx; ++s) x[s] += (h / 6.0) * (k1[s] + 2 * k2[s] + 2 * k3[s] + k4[s]);
       in_a = in_e;
     }

@@ -1,19 +1,25 @@
 #include "uuvplan/model/trial_design.h"
 
+#include <cmath>
+
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::model {
+namespace {
 
-std::string_view TrialKindName(TrialKind kind) {
-  switch (kind) {
-    case TrialKind::kSteady: return "steady";
-    case TrialKind::kSine: return "sine";
-    case TrialKind::kSegments: return "segments";
+int Sign(double x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
+
+const SegmentDesign* SegmentAt(const TrialDesign& d, double t) {
+  const SegmentDesign* in_force = nullptr;
+  double start = 0.0;
+  for (const auto& s : d.segments) {
+    if (in_force != nullptr && start > t) break;
+    in_force = &s;
+    start += s.duration;
   }
-  return "steady";
+  return in_force;
 }
 
-namespace {
 int MappingOf(const Vehicle& v, const std::string& name, const TrialDesign& d) {
   if (name.empty()) return -1;
   const int i = v.MappingIndex(name);
@@ -23,7 +29,51 @@ int MappingOf(const Vehicle& v, const std::string& name, const TrialDesign& d) {
   }
   return i;
 }
+
 }  // namespace
+
+std::string_view TrialKindName(TrialKind kind) { return kTrialKindNames.Name(kind); }
+
+double TrialDesign::NominalForce(double t) const {
+  switch (kind) {
+    case TrialKind::kSteady: return force;
+    case TrialKind::kSine: return offset + amplitude * std::sin(omega * t);
+    case TrialKind::kSegments: {
+      const SegmentDesign* s = SegmentAt(*this, t);
+      return s != nullptr ? s->force : 0.0;
+    }
+  }
+  return 0.0;
+}
+
+const std::string& TrialDesign::MappingAt(double t) const {
+  if (kind != TrialKind::kSegments) return mapping;
+  const SegmentDesign* s = SegmentAt(*this, t);
+  return s != nullptr && !s->mapping.empty() ? s->mapping : mapping;
+}
+
+std::vector<ForceDemand> TrialDesign::Demands() const {
+  switch (kind) {
+    case TrialKind::kSteady: return {{mapping, force, force}};
+    case TrialKind::kSine:
+      return {{mapping, offset - std::abs(amplitude), offset + std::abs(amplitude)}};
+    case TrialKind::kSegments: {
+      std::vector<ForceDemand> out;
+      for (const auto& s : segments) {
+        out.push_back({s.mapping.empty() ? mapping : s.mapping, s.force, s.force});
+      }
+      return out;
+    }
+  }
+  return {};
+}
+
+bool TrialDesign::Pushes(const std::string& name, int sign) const {
+  for (const ForceDemand& d : Demands()) {
+    if (d.mapping == name && (Sign(d.max) == sign || Sign(d.min) == sign)) return true;
+  }
+  return false;
+}
 
 std::unique_ptr<Excitation> MakeExcitation(const Vehicle& vehicle, const TrialDesign& d) {
   const int mapping = MappingOf(vehicle, d.mapping, d);

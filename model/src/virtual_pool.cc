@@ -10,11 +10,12 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/io.h"
 #include "uuvplan/model/simulator.h"
+#include "uuvplan/model/util/seed.h"
+#include "uuvplan/model/util/text.h"
+#include "uuvplan/model/campaign_builder.h"
 
 namespace uuvplan::model {
 namespace {
-
-bool StartsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
 // Exogenous velocities of the other DOFs (truth aux_motion): offset + amplitude·sin(omega·t).
 class SineAux final : public AuxVelocities {
@@ -33,14 +34,6 @@ class SineAux final : public AuxVelocities {
  private:
   std::vector<std::pair<int, AuxMotion>> motions_;
 };
-
-// splitmix64: independent, reproducible seeds per trial and per sensor from one user seed.
-std::uint64_t Mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 std::vector<double> SampleTimes(double rate_hz, double duration) {
   std::vector<double> t;
@@ -93,6 +86,106 @@ std::vector<double> OnRows(const std::vector<double>& rows, const std::vector<do
   return col;
 }
 
+// The commands as logged: at the controller rate, held between rows; every change of a
+// segment is a row.
+struct Commands {
+  std::vector<double> t, force;
+  std::vector<int> mapping;
+};
+Commands HeldCommands(const Vehicle& v, const TrialDesign& design, double rate_hz) {
+  const auto designed = MakeExcitation(v, design);
+  Commands cmd;
+  cmd.t = SampleTimes(rate_hz, design.duration);
+  for (double b : designed->Breakpoints()) cmd.t.push_back(b);
+  std::sort(cmd.t.begin(), cmd.t.end());
+  cmd.t.erase(std::unique(cmd.t.begin(), cmd.t.end(),
+                          [](double a, double b) { return std::abs(a - b) < 1e-9; }),
+              cmd.t.end());
+  cmd.force.resize(cmd.t.size());
+  cmd.mapping.resize(cmd.t.size());
+  for (std::size_t i = 0; i < cmd.t.size(); ++i) {
+    cmd.force[i] = designed->Force(cmd.t[i]);
+    cmd.mapping[i] = designed->Mapping(cmd.t[i]);
+  }
+  return cmd;
+}
+
+// The mapping column, only when the commanded mapping changes during the trial.
+void LogMappingColumn(const Vehicle& v, const Commands& cmd, TrialLog* log) {
+  const bool mapping_varies = std::any_of(cmd.mapping.begin(), cmd.mapping.end(),
+                                          [&](int m) { return m != cmd.mapping.front(); });
+  if (!mapping_varies) return;
+  for (const auto& m : v.mappings) log->mapping_names.push_back(m.name);
+  std::vector<double> as_double(cmd.mapping.begin(), cmd.mapping.end());
+  const std::vector<double> col = OnRows(log->t, cmd.t, as_double);
+  log->mapping.resize(col.size());
+  for (std::size_t i = 0; i < col.size(); ++i) {
+    log->mapping[i] = std::isnan(col[i]) ? -1 : static_cast<int>(col[i]);
+  }
+}
+
+// Other DOFs' velocities that drive coupling terms, measured by their own sensors.
+struct MeasuredVelocity {
+  Dof dof;
+  std::vector<double> t, y;
+};
+std::vector<MeasuredVelocity> MeasureAuxMotion(const Vehicle& v, Dof dof,
+                                               const std::map<char, AuxMotion>& aux_motion,
+                                               double duration, std::mt19937_64& rng) {
+  std::vector<MeasuredVelocity> out;
+  for (const auto& [letter, motion] : aux_motion) {
+    for (Dof d : kAllDofs) {
+      if (VelocityLetter(d) != letter || d == dof) continue;
+      SensorSpec spec{10.0, 1e-3};
+      if (auto s = v.sensors.find(d); s != v.sensors.end() && s->second.velocity) {
+        spec = *s->second.velocity;
+      }
+      std::vector<double> t = SampleTimes(spec.rate_hz, duration);
+      Eigen::VectorXd clean(t.size());
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        clean[i] = motion.offset + motion.amplitude * std::sin(motion.omega * t[i]);
+      }
+      std::vector<double> y = Corrupt(clean, spec, SensorDefects{}, rng);
+      out.push_back({d, std::move(t), std::move(y)});
+    }
+  }
+  return out;
+}
+
+// Writes a built campaign under `out`: trial CSVs, vehicle.yaml (the truth's vehicle) and
+// campaign.yaml, everything in a sibling temporary directory first, then renamed into place,
+// so that a campaign is written whole or not at all.
+void WriteCampaignDirectory(const Campaign& campaign, const Truth& truth,
+                            const std::vector<TrialDesign>& designs,
+                            const std::filesystem::path& out, const std::string& out_dir,
+                            std::uint64_t seed) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path tmp = out.string() + ".tmp-uuvplan";
+  fs::remove_all(tmp, ec);
+  fs::create_directories(tmp / "trials", ec);
+  if (ec) throw InputError(out_dir, "cannot create directory: " + ec.message());
+  try {
+    for (std::size_t i = 0; i < designs.size(); ++i) {
+      const TrialEntry& e = campaign.trials[i];
+      WriteTrialLog((tmp / e.file).string(), e.log,
+                    "uuvplan virtual pool: truth vehicle '" + truth.vehicle.name + "', trial '" +
+                        designs[i].id + "', seed " + std::to_string(seed));
+    }
+    WriteVehicleYaml((tmp / "vehicle.yaml").string(), truth.vehicle);
+    WriteCampaignYaml((tmp / "campaign.yaml").string(), campaign);
+  } catch (...) {
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+  if (fs::exists(out)) fs::remove(out, ec);
+  fs::rename(tmp, out, ec);
+  if (ec) {
+    fs::remove_all(tmp, ec);
+    throw InputError(out_dir, "cannot move the campaign into place: " + ec.message());
+  }
+}
+
 }  // namespace
 
 ModelStructure TruthStructure(const Truth& truth, Dof dof) {
@@ -141,27 +234,15 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
                                                  {param::kLinearDrag, 0.0}, {param::kBiasStep, 0.0}};
   const Eigen::VectorXd theta = model.Theta(truth_it->second.params, &neutral);
 
-  // Commands at the controller rate, held between rows; every change of a segment is a row.
-  const auto designed = MakeExcitation(v, design);
-  std::vector<double> cmd_t = SampleTimes(options.command_rate_hz, design.duration);
-  for (double b : designed->Breakpoints()) cmd_t.push_back(b);
-  std::sort(cmd_t.begin(), cmd_t.end());
-  cmd_t.erase(std::unique(cmd_t.begin(), cmd_t.end(),
-                          [](double a, double b) { return std::abs(a - b) < 1e-9; }),
-              cmd_t.end());
-  std::vector<double> cmd_f(cmd_t.size());
-  std::vector<int> cmd_m(cmd_t.size());
-  for (std::size_t i = 0; i < cmd_t.size(); ++i) {
-    cmd_f[i] = designed->Force(cmd_t[i]);
-    cmd_m[i] = designed->Mapping(cmd_t[i]);
-  }
-  const auto held = MakeHeldExcitation(cmd_t, cmd_f, cmd_m, design.duration);
+  const Commands cmd = HeldCommands(v, design, options.command_rate_hz);
+  const std::vector<double>& cmd_t = cmd.t;
+  const auto held = MakeHeldExcitation(cmd.t, cmd.force, cmd.mapping, design.duration);
   const SineAux aux(truth_it->second.aux_motion);
   TrialConditions conditions{held.get(), design.ballast_steps, start_time, &aux};
   SimulationOptions sim;
   sim.step_s = truth.integration_step_s;
 
-  std::mt19937_64 rng(Mix(options.seed));
+  std::mt19937_64 rng(SplitMix64(options.seed));
   std::vector<std::vector<double>> grids = {cmd_t};
   std::vector<double> pos_t, vel_t, pos_y, vel_y;
   if (sensors.position) {
@@ -179,45 +260,17 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
     vel_y = Corrupt(y.x.col(1), *sensors.velocity, truth.defects, rng);
     grids.push_back(vel_t);
   }
-  // Other DOFs' velocities that drive coupling terms, measured by their own sensors.
-  std::vector<std::pair<Dof, std::vector<double>>> aux_t, aux_y;
-  for (const auto& [letter, motion] : truth_it->second.aux_motion) {
-    for (Dof d : kAllDofs) {
-      if (VelocityLetter(d) != letter || d == dof) continue;
-      SensorSpec spec{10.0, 1e-3};
-      if (auto s = v.sensors.find(d); s != v.sensors.end() && s->second.velocity) {
-        spec = *s->second.velocity;
-      }
-      std::vector<double> t = SampleTimes(spec.rate_hz, design.duration);
-      Eigen::VectorXd clean(t.size());
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        clean[i] = motion.offset + motion.amplitude * std::sin(motion.omega * t[i]);
-      }
-      aux_y.push_back({d, Corrupt(clean, spec, SensorDefects{}, rng)});
-      aux_t.push_back({d, t});
-      grids.push_back(t);
-    }
-  }
+  const std::vector<MeasuredVelocity> aux_measured =
+      MeasureAuxMotion(v, dof, truth_it->second.aux_motion, design.duration, rng);
+  for (const auto& a : aux_measured) grids.push_back(a.t);
 
   TrialLog log;
   log.t = MergeTimes(grids);
-  log.force[Index(dof)] = OnRows(log.t, cmd_t, cmd_f);
+  log.force[Index(dof)] = OnRows(log.t, cmd_t, cmd.force);
   if (sensors.position) log.position[Index(dof)] = OnRows(log.t, pos_t, pos_y);
   if (sensors.velocity) log.velocity[Index(dof)] = OnRows(log.t, vel_t, vel_y);
-  for (std::size_t k = 0; k < aux_t.size(); ++k) {
-    log.velocity[Index(aux_t[k].first)] = OnRows(log.t, aux_t[k].second, aux_y[k].second);
-  }
-  const bool mapping_varies =
-      std::any_of(cmd_m.begin(), cmd_m.end(), [&](int m) { return m != cmd_m.front(); });
-  if (mapping_varies) {
-    for (const auto& m : v.mappings) log.mapping_names.push_back(m.name);
-    std::vector<double> as_double(cmd_m.begin(), cmd_m.end());
-    const std::vector<double> col = OnRows(log.t, cmd_t, as_double);
-    log.mapping.resize(col.size());
-    for (std::size_t i = 0; i < col.size(); ++i) {
-      log.mapping[i] = std::isnan(col[i]) ? -1 : static_cast<int>(col[i]);
-    }
-  }
+  for (const auto& a : aux_measured) log.velocity[Index(a.dof)] = OnRows(log.t, a.t, a.y);
+  LogMappingColumn(v, cmd, &log);
   return log;
 }
 
@@ -233,49 +286,19 @@ Campaign SimulateCampaign(const Truth& truth, const std::vector<TrialDesign>& de
     throw InputError(out_dir, "output directory exists and is not empty; choose a new --out "
                               "(nothing is overwritten)");
   }
-  // Everything is written to a sibling temporary directory first, then renamed into place,
-  // so a campaign is written whole or not at all.
-  const fs::path tmp = out.string() + ".tmp-uuvplan";
-  fs::remove_all(tmp, ec);
-  fs::create_directories(tmp / "trials", ec);
-  if (ec) throw InputError(out_dir, "cannot create directory: " + ec.message());
-
-  Campaign campaign;
+  VirtualCampaignOptions build;
+  build.seed = options.seed;
+  build.command_rate_hz = options.command_rate_hz;
+  build.pause_s = pause_s;
+  Campaign campaign = BuildVirtualCampaign(truth, designs, build);
   campaign.path = (out / "campaign.yaml").string();
   campaign.vehicle_file = "vehicle.yaml";
-  campaign.vehicle = truth.vehicle;
-  double clock = 0.0;
-  try {
-    for (std::size_t i = 0; i < designs.size(); ++i) {
-      VirtualPoolOptions o = options;
-      o.seed = Mix(options.seed ^ Mix(i + 1));
-      TrialEntry e;
-      e.file = "trials/" + designs[i].id + ".csv";
-      e.path = (out / e.file).string();
-      e.dof = designs[i].dof;
-      e.mapping = designs[i].mapping;
-      e.ballast_steps = designs[i].ballast_steps;
-      e.start = clock;
-      e.has_start = true;
-      e.log = RunVirtualTrial(truth, designs[i], clock, o);
-      WriteTrialLog((tmp / e.file).string(), e.log,
-                    "uuvplan virtual pool: truth vehicle '" + truth.vehicle.name + "', trial '" +
-                        designs[i].id + "', seed " + std::to_string(options.seed));
-      campaign.trials.push_back(std::move(e));
-      clock += designs[i].duration + pause_s;
-    }
-    WriteVehicleYaml((tmp / "vehicle.yaml").string(), truth.vehicle);
-    WriteCampaignYaml((tmp / "campaign.yaml").string(), campaign);
-  } catch (...) {
-    fs::remove_all(tmp, ec);
-    throw;
+  for (std::size_t i = 0; i < designs.size(); ++i) {
+    TrialEntry& e = campaign.trials[i];
+    e.file = "trials/" + designs[i].id + ".csv";
+    e.path = (out / e.file).string();
   }
-  if (fs::exists(out)) fs::remove(out, ec);
-  fs::rename(tmp, out, ec);
-  if (ec) {
-    fs::remove_all(tmp, ec);
-    throw InputError(out_dir, "cannot move the campaign into place: " + ec.message());
-  }
+  WriteCampaignDirectory(campaign, truth, designs, out, out_dir, options.seed);
   return campaign;
 }
 

@@ -5,21 +5,14 @@
 #include <cmath>
 #include <limits>
 
+#include "uuvplan/model/util/enum_names.h"
+
 namespace uuvplan::planner {
 
-std::string_view CriterionName(Criterion c) {
-  switch (c) {
-    case Criterion::kD:
-      return "D";
-    case Criterion::kDs:
-      return "Ds";
-    case Criterion::kA:
-      return "A";
-    case Criterion::kE:
-      return "E";
-  }
-  return "D";
-}
+constexpr model::EnumNames<Criterion, 4> kCriterionNames{{{
+    {Criterion::kD, "D"}, {Criterion::kDs, "Ds"}, {Criterion::kA, "A"}, {Criterion::kE, "E"}}}};
+
+std::string_view CriterionName(Criterion c) { return kCriterionNames.Name(c); }
 
 Eigen::MatrixXd RelativeInformation(const Eigen::MatrixXd& M, const Eigen::VectorXd& theta) {
   Eigen::VectorXd d(theta.size());

@@ -137,6 +137,16 @@ class DesignEvaluator {
   double best_violation_ = std::numeric_limits<double>::infinity();
 };
 
+/// A backend's summary before solving: its name, and the options' error if they are invalid
+/// (then false: the backend returns the summary as it is).
+inline bool StartSummary(const char* backend, const SolverOptions& o, SolverSummary* s) {
+  s->backend = backend;
+  std::string error;
+  if (o.IsValid(&error)) return true;
+  s->message = error;
+  return false;
+}
+
 /// Fills a summary from the evaluator's best point.
 inline void FillFromBest(const DesignEvaluator& ev, SolverSummary* s) {
   s->evaluations = ev.evaluations();

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "options_check.h"
+
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/mapping.h"
@@ -41,31 +43,13 @@ PriorInformation PriorInformation::FromCovariance(const std::vector<std::string>
 }
 
 bool PlannerOptions::IsValid(std::string* error) const {
-  auto fail = [&](const std::string& m) {
-    if (error) *error = m;
-    return false;
-  };
-  if (!(max_trial_duration_s > 0)) {
-    return fail("PlannerOptions::max_trial_duration_s = " + std::to_string(max_trial_duration_s) +
-                ". Violated constraint: > 0");
-  }
-  if (!(pause_s >= 0)) {
-    return fail("PlannerOptions::pause_s = " + std::to_string(pause_s) +
-                ". Violated constraint: >= 0");
-  }
-  if (!(max_step_s > 0)) {
-    return fail("PlannerOptions::max_step_s = " + std::to_string(max_step_s) +
-                ". Violated constraint: > 0");
-  }
-  if (check_grid < 2) {
-    return fail("PlannerOptions::check_grid = " + std::to_string(check_grid) +
-                ". Violated constraint: >= 2");
-  }
-  if (!(box.drag_sigmas >= 0)) {
-    return fail("PlannerOptions::box.drag_sigmas = " + std::to_string(box.drag_sigmas) +
-                ". Violated constraint: >= 0");
-  }
-  return solver.IsValid(error);
+  internal::OptionsCheck check("PlannerOptions", error);
+  check.Require(max_trial_duration_s > 0, "max_trial_duration_s", max_trial_duration_s, "> 0")
+      .Require(pause_s >= 0, "pause_s", pause_s, ">= 0")
+      .Require(max_step_s > 0, "max_step_s", max_step_s, "> 0")
+      .Require(check_grid >= 2, "check_grid", check_grid, ">= 2")
+      .Require(box.drag_sigmas >= 0, "box.drag_sigmas", box.drag_sigmas, ">= 0");
+  return check.ok() && solver.IsValid(error);
 }
 
 namespace {
@@ -231,23 +215,8 @@ namespace {
 // The eta parameters a trial can reach: non-open-water (mapping, direction) pairs it uses.
 std::vector<std::string> UsedEtas(const model::Vehicle& v, const model::TrialDesign& d) {
   std::vector<std::pair<std::string, int>> uses;  // mapping, sign bits (1 pos, 2 neg)
-  auto add = [&](const std::string& mapping, double lo, double hi) {
-    int bits = 0;
-    if (hi >= 0) bits |= 1;
-    if (lo < 0) bits |= 2;
-    uses.push_back({mapping, bits});
-  };
-  switch (d.kind) {
-    case model::TrialKind::kSteady:
-      add(d.mapping, d.force, d.force);
-      break;
-    case model::TrialKind::kSine:
-      add(d.mapping, d.offset - std::abs(d.amplitude), d.offset + std::abs(d.amplitude));
-      break;
-    case model::TrialKind::kSegments:
-      for (const auto& s : d.segments)
-        add(s.mapping.empty() ? d.mapping : s.mapping, s.force, s.force);
-      break;
+  for (const model::ForceDemand& demand : d.Demands()) {
+    uses.push_back({demand.mapping, (demand.max >= 0 ? 1 : 0) | (demand.min < 0 ? 2 : 0)});
   }
   std::vector<std::string> etas;
   for (const auto& [name, bits] : uses) {
@@ -349,16 +318,12 @@ TrialCheck DofContext::Check(const model::TrialDesign& design) const {
   c.span = hi - lo;
   if (std::isfinite(c.available) && c.span > c.available + 1e-9) {
     std::ostringstream s;
-    const char* side = dof_ == model::Dof::kSurge  ? "length"
-                       : dof_ == model::Dof::kSway ? "width"
-                                                   : "depth";
+    const std::string_view side = model::Pool::SideName(dof_);
     s << "travel " << c.span << " m over the a priori box (from " << lo << " to " << hi
       << " m) exceeds the " << c.available << " m free along the pool " << side << " ("
-      << (dof_ == model::Dof::kSurge  ? pool_.length
-          : dof_ == model::Dof::kSway ? pool_.width
-                                      : pool_.depth)
-      << " m - 2·" << pool_.margin << " m margin) by " << c.span - c.available
-      << " m: needs a pool " << side << " of " << c.span + 2 * pool_.margin << " m";
+      << pool_.WallToWall(dof_) << " m - 2·" << pool_.margin << " m margin) by "
+      << c.span - c.available << " m: needs a pool " << side << " of "
+      << pool_.WallToWallFor(c.span) << " m";
     c.reasons.push_back(s.str());
   }
   c.feasible = c.reasons.empty();

@@ -12,6 +12,7 @@
 
 #include "design_evaluator.h"
 #include "uuvplan/planner/solver.h"
+#include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -164,39 +165,26 @@ class DesignNlp final : public Ipopt::TNLP {
   Ipopt::SolverReturn status_ = Ipopt::UNASSIGNED;
 };
 
+constexpr model::EnumNames<Ipopt::SolverReturn, 8> kReturnNames{{{
+    {Ipopt::SUCCESS, "SUCCESS"}, {Ipopt::MAXITER_EXCEEDED, "MAXITER_EXCEEDED"},
+    {Ipopt::STOP_AT_TINY_STEP, "STOP_AT_TINY_STEP"},
+    {Ipopt::STOP_AT_ACCEPTABLE_POINT, "STOP_AT_ACCEPTABLE_POINT"},
+    {Ipopt::LOCAL_INFEASIBILITY, "LOCAL_INFEASIBILITY"},
+    {Ipopt::RESTORATION_FAILURE, "RESTORATION_FAILURE"},
+    {Ipopt::ERROR_IN_STEP_COMPUTATION, "ERROR_IN_STEP_COMPUTATION"},
+    {Ipopt::INVALID_NUMBER_DETECTED, "INVALID_NUMBER_DETECTED"}}}};
+
+// Ipopt's name of a solver return; the others by number.
 std::string ReturnName(Ipopt::SolverReturn s) {
-  switch (s) {
-    case Ipopt::SUCCESS:
-      return "SUCCESS";
-    case Ipopt::MAXITER_EXCEEDED:
-      return "MAXITER_EXCEEDED";
-    case Ipopt::STOP_AT_TINY_STEP:
-      return "STOP_AT_TINY_STEP";
-    case Ipopt::STOP_AT_ACCEPTABLE_POINT:
-      return "STOP_AT_ACCEPTABLE_POINT";
-    case Ipopt::LOCAL_INFEASIBILITY:
-      return "LOCAL_INFEASIBILITY";
-    case Ipopt::RESTORATION_FAILURE:
-      return "RESTORATION_FAILURE";
-    case Ipopt::ERROR_IN_STEP_COMPUTATION:
-      return "ERROR_IN_STEP_COMPUTATION";
-    case Ipopt::INVALID_NUMBER_DETECTED:
-      return "INVALID_NUMBER_DETECTED";
-    default:
-      return "RETURN(" + std::to_string(static_cast<int>(s)) + ")";
-  }
+  const std::string_view name = kReturnNames.Name(s);
+  return name != "?" ? std::string(name) : "RETURN(" + std::to_string(static_cast<int>(s)) + ")";
 }
 
 }  // namespace
 
 SolverSummary SolveWithIpopt(const DesignProblem& p, const SolverOptions& o) {
   SolverSummary s;
-  s.backend = "ipopt";
-  std::string error;
-  if (!o.IsValid(&error)) {
-    s.message = error;
-    return s;
-  }
+  if (!internal::StartSummary("ipopt", o, &s)) return s;
   DesignEvaluator ev(p, o);
   Ipopt::SmartPtr<DesignNlp> nlp = new DesignNlp(p, o, &ev);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();

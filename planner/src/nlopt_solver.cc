@@ -9,6 +9,7 @@
 
 #include "design_evaluator.h"
 #include "uuvplan/planner/solver.h"
+#include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -106,23 +107,15 @@ void LocalConstraints(unsigned m, double* result, unsigned n, const double* z, d
   }
 }
 
+constexpr model::EnumNames<nlopt::result, 6> kResultNames{{{
+    {nlopt::SUCCESS, "SUCCESS"}, {nlopt::STOPVAL_REACHED, "STOPVAL_REACHED"},
+    {nlopt::FTOL_REACHED, "FTOL_REACHED"}, {nlopt::XTOL_REACHED, "XTOL_REACHED"},
+    {nlopt::MAXEVAL_REACHED, "MAXEVAL_REACHED"}, {nlopt::MAXTIME_REACHED, "MAXTIME_REACHED"}}}};
+
+// NLopt's name of a result; the failures by number.
 std::string ResultName(nlopt::result r) {
-  switch (r) {
-    case nlopt::SUCCESS:
-      return "SUCCESS";
-    case nlopt::STOPVAL_REACHED:
-      return "STOPVAL_REACHED";
-    case nlopt::FTOL_REACHED:
-      return "FTOL_REACHED";
-    case nlopt::XTOL_REACHED:
-      return "XTOL_REACHED";
-    case nlopt::MAXEVAL_REACHED:
-      return "MAXEVAL_REACHED";
-    case nlopt::MAXTIME_REACHED:
-      return "MAXTIME_REACHED";
-    default:
-      return "FAILURE(" + std::to_string(static_cast<int>(r)) + ")";
-  }
+  const std::string_view name = kResultNames.Name(r);
+  return name != "?" ? std::string(name) : "FAILURE(" + std::to_string(static_cast<int>(r)) + ")";
 }
 
 // One local run from x_start; returns the backend's result name.
@@ -175,12 +168,7 @@ std::string RunLocal(const DesignProblem& p, const SolverOptions& o, DesignEvalu
 
 SolverSummary SolveWithNlopt(const DesignProblem& p, const SolverOptions& o) {
   SolverSummary s;
-  s.backend = "nlopt";
-  std::string error;
-  if (!o.IsValid(&error)) {
-    s.message = error;
-    return s;
-  }
+  if (!internal::StartSummary("nlopt", o, &s)) return s;
   DesignEvaluator ev(p, o);
   Context ctx{&ev, &o, &p};
   std::vector<double> start = p.x0;

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "format.h"
+#include "next_trial_policy.h"
+#include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/model_structure.h"
@@ -18,12 +21,7 @@ namespace {
 
 using model::Dof;
 
-std::string Fmt(double v, int precision = 3) {
-  std::ostringstream os;
-  os.precision(precision);
-  os << v;
-  return os.str();
-}
+using internal::Fmt;
 
 struct Leg {
   std::string mapping;
@@ -45,7 +43,7 @@ std::vector<Leg> MappingLegs(const model::Vehicle& v, const model::Pool& pool, D
   const std::string& name = v.mappings[mi].name;
   const double vmax = model::IsRotational(dof) ? o.max_rotation_rate : o.max_translation_speed;
   const double m_max = v.InertiaBounds(dof)[1];
-  const double available = pool.Available(dof);
+  const double available = pool.FreeTravel(dof);
   std::array<ForceRange, 2> range = {DirectionForceRange(v, mi, +1),
                                      DirectionForceRange(v, mi, -1)};
   std::vector<Leg> legs;
@@ -242,18 +240,8 @@ PaperProcedureResult RunPaperProcedure(const model::Truth& truth, const model::P
                                        const PaperProcedureOptions& o) {
   std::string error;
   if (!o.IsValid(&error)) throw model::InputError("paper procedure options", error);
-  std::vector<Dof> dofs = o.dofs;
-  if (dofs.empty()) {
-    for (Dof d : model::kAllDofs) {
-      if (truth.dofs.count(d)) dofs.push_back(d);
-    }
-  }
+  const std::vector<Dof> dofs = internal::DofsOrTruths(truth, o.dofs);
   PaperProcedureResult r;
-  model::Campaign& c = r.campaign;
-  c.path = "<virtual>";
-  c.vehicle_file = "<virtual>";
-  c.vehicle = truth.vehicle;
-  c.pool = pool;
   std::map<Dof, std::vector<model::TrialDesign>> per_dof;
   std::vector<model::TrialDesign> all;
   for (Dof d : dofs) {
@@ -273,18 +261,19 @@ PaperProcedureResult RunPaperProcedure(const model::Truth& truth, const model::P
     }
     per_dof[d] = std::move(designs);
   }
-  double clock = 0.0;
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    c.trials.push_back(
-        RunVirtualEntry(truth, all[i], static_cast<int>(i), clock, o.seed, o.command_rate_hz));
-    clock += all[i].duration + o.planner.pause_s;
-  }
+  model::VirtualCampaignOptions virtual_pool;
+  virtual_pool.seed = o.seed;
+  virtual_pool.command_rate_hz = o.command_rate_hz;
+  virtual_pool.pause_s = o.planner.pause_s;
+  virtual_pool.unwrap_headings = true;  // as reading the logs would
+  virtual_pool.pool = pool;
+  r.campaign = model::BuildVirtualCampaign(truth, all, virtual_pool);
   r.pool_time = PoolTime(all, o.planner.pause_s);
   for (const auto& [d, designs] : per_dof)
     r.dof_pool_time[d] = PoolTime(designs, o.planner.pause_s);
   ident::IdentifyOptions io = o.identify;
   io.dofs = dofs;
-  r.estimates = ident::Identify(c, io);
+  r.estimates = ident::Identify(r.campaign, io);
   for (Dof d : dofs) {
     r.progress.push_back(EvaluateProgress(truth.vehicle, d, r.estimates.Find(d),
                                           static_cast<int>(per_dof[d].size()), o.progress));

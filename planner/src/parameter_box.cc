@@ -6,11 +6,35 @@
 #include <sstream>
 
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::planner {
 namespace {
 
-bool StartsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+bool IsEta(const std::string& name) { return model::StartsWith(name, model::param::kEtaPrefix); }
+
+// The planner's nominal-θ policy for a parameter with neither an a priori value nor an
+// estimate: eta_nominal for installation coefficients, 0 for the rest (bias, bias_step: no a
+// priori value). ident/src/identify.cc has its own; issue #12 moves one policy into the model,
+// which will replace this function.
+double NominalWithoutValue(const std::string& name, const BoxOptions& options) {
+  return IsEta(name) ? options.eta_nominal : 0.0;
+}
+
+// The drag axis (k and kq scaled together by [drag_lo, drag_hi]) and, when the box has free
+// installation coefficients, their axis over the options' eta range.
+void AddDragAndEtaAxes(double drag_lo, double drag_hi, const std::vector<std::string>& etas,
+                       const BoxOptions& options, ParameterBox* box) {
+  box->axes.push_back({"drag",
+                       {model::param::kLinearDrag, model::param::kQuadraticDrag},
+                       drag_lo,
+                       drag_hi,
+                       true});
+  if (!etas.empty()) {
+    box->axes.push_back({"eta", etas, options.eta_range[0] / options.eta_nominal,
+                         options.eta_range[1] / options.eta_nominal, false});
+  }
+}
 
 void AddPoints(const ParameterBox& box, const std::vector<int>& axes,
                const std::vector<std::vector<double>>& values, std::vector<double>* factors,
@@ -131,24 +155,14 @@ ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
       box.nominal[n] = k;
     } else if (n == model::param::kQuadraticDrag) {
       box.nominal[n] = kq;
-    } else if (StartsWith(n, model::param::kEtaPrefix)) {
-      box.nominal[n] = options.eta_nominal;
-      etas.push_back(n);
     } else {
-      box.nominal[n] = 0.0;  // bias, bias_step: no a priori value
+      box.nominal[n] = NominalWithoutValue(n, options);
+      if (IsEta(n)) etas.push_back(n);
     }
   }
   box.axes.push_back({"m", {model::param::kMass}, mb[0] / m_mid, mb[1] / m_mid, true});
   const double half = options.drag_sigmas * rel;
-  box.axes.push_back({"drag",
-                      {model::param::kLinearDrag, model::param::kQuadraticDrag},
-                      std::max(0.05, 1.0 - half),
-                      1.0 + half,
-                      true});
-  if (!etas.empty()) {
-    box.axes.push_back({"eta", etas, options.eta_range[0] / options.eta_nominal,
-                        options.eta_range[1] / options.eta_nominal, false});
-  }
+  AddDragAndEtaAxes(std::max(0.05, 1.0 - half), 1.0 + half, etas, options, &box);
   return box;
 }
 
@@ -159,14 +173,8 @@ ParameterBox EstimateBox(const ParameterValues& estimates, const ParameterValues
   std::vector<std::string> etas;
   for (const auto& n : names) {
     auto it = estimates.find(n);
-    if (it != estimates.end()) {
-      box.nominal[n] = it->second;
-    } else if (StartsWith(n, model::param::kEtaPrefix)) {
-      box.nominal[n] = options.eta_nominal;
-    } else {
-      box.nominal[n] = 0.0;
-    }
-    if (StartsWith(n, model::param::kEtaPrefix) && !estimates.count(n)) etas.push_back(n);
+    box.nominal[n] = it != estimates.end() ? it->second : NominalWithoutValue(n, options);
+    if (IsEta(n) && it == estimates.end()) etas.push_back(n);
   }
   auto rel = [&](const std::string& n) {
     auto v = estimates.find(n);
@@ -177,15 +185,7 @@ ParameterBox EstimateBox(const ParameterValues& estimates, const ParameterValues
   const double rm = rel(model::param::kMass);
   box.axes.push_back({"m", {model::param::kMass}, 1.0 - rm, 1.0 + rm, true});
   const double rd = std::max(rel(model::param::kLinearDrag), rel(model::param::kQuadraticDrag));
-  box.axes.push_back({"drag",
-                      {model::param::kLinearDrag, model::param::kQuadraticDrag},
-                      1.0 - rd,
-                      1.0 + rd,
-                      true});
-  if (!etas.empty()) {
-    box.axes.push_back({"eta", etas, options.eta_range[0] / options.eta_nominal,
-                        options.eta_range[1] / options.eta_nominal, false});
-  }
+  AddDragAndEtaAxes(1.0 - rd, 1.0 + rd, etas, options, &box);
   return box;
 }
 

@@ -48,9 +48,9 @@ PoolCheckResult CheckPool(const model::Vehicle& vehicle, const model::Pool& pool
     result.feasible = result.feasible && c.check.feasible;
     result.trials.push_back(std::move(c));
   }
-  result.required_length = span[model::Index(model::Dof::kSurge)] + 2 * pool.margin;
-  result.required_width = span[model::Index(model::Dof::kSway)] + 2 * pool.margin;
-  result.required_depth = span[model::Index(model::Dof::kHeave)] + 2 * pool.margin;
+  result.required_length = pool.WallToWallFor(span[model::Index(model::Dof::kSurge)]);
+  result.required_width = pool.WallToWallFor(span[model::Index(model::Dof::kSway)]);
+  result.required_depth = pool.WallToWallFor(span[model::Index(model::Dof::kHeave)]);
   if (plan.trials.empty()) {
     result.notes.push_back("the plan has no trials");
   }

@@ -8,20 +8,15 @@
 
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::planner {
 
-std::string_view PlanStatusName(PlanStatus s) {
-  switch (s) {
-    case PlanStatus::kOk:
-      return "ok";
-    case PlanStatus::kPartial:
-      return "partial";
-    case PlanStatus::kInfeasible:
-      return "infeasible";
-  }
-  return "infeasible";
-}
+constexpr model::EnumNames<PlanStatus, 3> kPlanStatusNames{{{
+    {PlanStatus::kOk, "ok"}, {PlanStatus::kPartial, "partial"},
+    {PlanStatus::kInfeasible, "infeasible"}}}};
+
+std::string_view PlanStatusName(PlanStatus s) { return kPlanStatusNames.Name(s); }
 
 bool ScheduleOptions::IsValid(std::string* error) const {
   for (const auto& [dof, p] : prior) {
@@ -114,6 +109,148 @@ std::vector<Eigen::MatrixXd> PriorPerPoint(const DofContext& ctx, const PriorInf
   return std::vector<Eigen::MatrixXd>(ctx.design_thetas().size(), ctx.PriorMatrix(prior));
 }
 
+// The box about the estimates (± box_sigmas σ); an axis whose parameters have no estimate with
+// a σ keeps its a priori range.
+ParameterBox BoxAboutEstimates(const model::Vehicle& vehicle, const model::Pool& pool,
+                               model::Dof dof, const ParameterValues& estimates,
+                               const ParameterValues& sigmas, const NextTrialOptions& o,
+                               std::vector<std::string>* notes) {
+  // The DOF's parameter names (the standard structure of the a priori context).
+  std::unique_ptr<DofContext> probe =
+      DofContext::APriori(vehicle, pool, dof, o.schedule.planner, notes);
+  ParameterValues centre = probe->box().nominal;
+  for (const auto& [k, val] : estimates) {
+    if (centre.count(k)) centre[k] = val;
+  }
+  ParameterBox box = EstimateBox(centre, sigmas, probe->model().parameter_names(), o.box_sigmas,
+                                 o.schedule.planner.box);
+  // An axis whose parameters have no estimate with a σ keeps its a priori range.
+  for (auto& axis : box.axes) {
+    bool estimated = false;
+    for (const auto& p : axis.params)
+      estimated = estimated || (estimates.count(p) && sigmas.count(p));
+    if (estimated) continue;
+    for (const auto& a : probe->box().axes) {
+      if (a.name != axis.name) continue;
+      // Factors of the a priori range about the (a priori) centre.
+      const std::string& ref = axis.params.front();
+      const double scale =
+          box.Nominal(ref) != 0.0 ? probe->box().Nominal(ref) / box.Nominal(ref) : 1.0;
+      axis.lo = a.lo * scale;
+      axis.hi = a.hi * scale;
+    }
+  }
+  return box;
+}
+
+// The steady runs and the sine of one DOF, each designed on the information of the prior and
+// of the trials before it, with the DOF's status, message and predicted precision.
+DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::Dof dof,
+                const ScheduleOptions& o) {
+  DofPlan plan;
+  plan.dof = dof;
+  const std::string name(model::DofName(dof));
+  std::unique_ptr<DofContext> ctx = DofContext::APriori(vehicle, pool, dof, o.planner, &plan.notes);
+  auto pit = o.prior.find(dof);
+  const PriorInformation* user_prior = pit == o.prior.end() ? nullptr : &pit->second;
+  std::vector<Eigen::MatrixXd> info = PriorPerPoint(*ctx, user_prior);
+  std::vector<std::string> failures;
+  if (o.steady_runs) {
+    SteadyDesignResult st = DesignSteady(*ctx, o.steady, info, name + "-steady");
+    for (auto& n : st.notes) plan.notes.push_back(std::move(n));
+    if (st.status == DesignStatus::kOk) {
+      for (std::size_t j = 0; j < info.size(); ++j) info[j] += st.information[j];
+      for (std::size_t i = 0; i < st.trials.size(); ++i) {
+        plan.trials.push_back(st.trials[i]);
+        plan.checks.push_back(st.checks[i]);
+      }
+    } else {
+      failures.push_back("steady runs: " + st.message);
+      plan.required_travel = std::max(plan.required_travel, st.required_travel);
+    }
+  }
+  if (o.sine_trial) {
+    SineDesignResult sn = DesignSine(*ctx, o.sine, info, name + "-sine");
+    for (auto& n : sn.notes) plan.notes.push_back(std::move(n));
+    if (sn.status == DesignStatus::kOk) {
+      for (std::size_t j = 0; j < info.size(); ++j) info[j] += sn.information[j];
+      plan.trials.push_back(sn.trial);
+      plan.checks.push_back(sn.check);
+    } else {
+      failures.push_back("sine trial: " + sn.message);
+      if (sn.check.span > 0) plan.required_travel = std::max(plan.required_travel, sn.check.span);
+    }
+  }
+  std::ostringstream m;
+  for (const auto& f : failures) m << " " << f;
+  if (plan.trials.empty()) {
+    plan.status = DesignStatus::kInfeasible;
+    plan.message = name + " cannot be planned in pool '" + pool.name + "':" + m.str();
+    return plan;
+  }
+  plan.status = DesignStatus::kOk;
+  plan.complete = failures.empty();
+  if (plan.complete) plan.required_travel = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& f : failures) plan.notes.push_back(name + ": " + f);
+  if (!plan.complete) plan.message = name + " only partly planned in pool '" + pool.name + "':" + m.str();
+  plan.predicted = PredictPrecision(*ctx, info, &plan.notes);
+  return plan;
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The ranking of DesignNextTrial's candidates; the best so far is in the result's trial.
+struct NextCandidates {
+  const DofContext& ctx;
+  const NextTrialOptions& o;
+  const std::vector<Eigen::MatrixXd>& M0;  // prior information at each design point
+  double criterion_before;
+  double best;        // criterion of the best candidate so far
+  double best_score;  // its score
+  std::vector<Eigen::MatrixXd> best_info;
+
+  double Score(double criterion, double duration) const {
+    if (!o.per_pool_time) return criterion;
+    return (criterion - criterion_before) / (duration + ctx.options().pause_s);
+  }
+
+  void TakeSine(const SineDesignResult& sn, NextTrialResult* result) {
+    best = sn.criterion;
+    best_score = Score(sn.criterion, sn.trial.design.duration);
+    result->trial = sn.trial;
+    result->check = sn.check;
+    best_info = sn.information;
+  }
+
+  // A steady run from rest of `leg`, taken if it scores more than 1e-9 above the best (the
+  // criteria are O(1..100) logs; a tie keeps the earlier candidate, the sine) and is feasible.
+  void ConsiderSteady(const SteadyLeg& leg, NextTrialResult* result) {
+    model::TrialDesign d;
+    d.id = o.id;
+    d.dof = ctx.dof();
+    d.kind = model::TrialKind::kSteady;
+    d.mapping = leg.mapping;
+    d.force = leg.force;
+    d.duration = leg.duration();
+    std::vector<Eigen::MatrixXd> info = ctx.Information(d);
+    std::vector<Eigen::MatrixXd> total = info;
+    for (std::size_t j = 0; j < total.size(); ++j) total[j] += M0[j];
+    const double c =
+        Aggregate(ctx.options().robustness, ctx.CriterionValues(total, o.criterion, {}));
+    const double sc = Score(c, d.duration);
+    if (!(sc > best_score + 1e-9)) return;
+    const TrialCheck check = ctx.Check(d);
+    if (!check.feasible) return;
+    best = c;
+    best_score = sc;
+    result->trial.design = d;
+    result->trial.travel = check.travel;
+    result->trial.thrust_min = check.thrust_min;
+    result->check = check;
+    best_info = std::move(info);
+  }
+};
+
 }  // namespace
 
 ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& pool,
@@ -132,59 +269,8 @@ ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& po
   }
   int planned = 0, complete = 0;
   for (model::Dof dof : dofs) {
-    DofPlan plan;
-    plan.dof = dof;
-    const std::string name(model::DofName(dof));
-    std::unique_ptr<DofContext> ctx =
-        DofContext::APriori(vehicle, pool, dof, o.planner, &plan.notes);
-    auto pit = o.prior.find(dof);
-    const PriorInformation* user_prior = pit == o.prior.end() ? nullptr : &pit->second;
-    std::vector<Eigen::MatrixXd> info = PriorPerPoint(*ctx, user_prior);
-    std::vector<std::string> failures;
-    if (o.steady_runs) {
-      SteadyDesignResult st = DesignSteady(*ctx, o.steady, info, name + "-steady");
-      for (auto& n : st.notes) plan.notes.push_back(std::move(n));
-      if (st.status == DesignStatus::kOk) {
-        for (std::size_t j = 0; j < info.size(); ++j) info[j] += st.information[j];
-        for (std::size_t i = 0; i < st.trials.size(); ++i) {
-          plan.trials.push_back(st.trials[i]);
-          plan.checks.push_back(st.checks[i]);
-        }
-      } else {
-        failures.push_back("steady runs: " + st.message);
-        plan.required_travel = std::max(plan.required_travel, st.required_travel);
-      }
-    }
-    if (o.sine_trial) {
-      SineDesignResult sn = DesignSine(*ctx, o.sine, info, name + "-sine");
-      for (auto& n : sn.notes) plan.notes.push_back(std::move(n));
-      if (sn.status == DesignStatus::kOk) {
-        for (std::size_t j = 0; j < info.size(); ++j) info[j] += sn.information[j];
-        plan.trials.push_back(sn.trial);
-        plan.checks.push_back(sn.check);
-      } else {
-        failures.push_back("sine trial: " + sn.message);
-        if (sn.check.span > 0) plan.required_travel = std::max(plan.required_travel, sn.check.span);
-      }
-    }
-    if (plan.trials.empty()) {
-      plan.status = DesignStatus::kInfeasible;
-      std::ostringstream m;
-      m << name << " cannot be planned in pool '" << pool.name << "':";
-      for (const auto& f : failures) m << " " << f;
-      plan.message = m.str();
-    } else {
-      plan.status = DesignStatus::kOk;
-      plan.complete = failures.empty();
-      if (plan.complete) plan.required_travel = std::numeric_limits<double>::quiet_NaN();
-      for (const auto& f : failures) plan.notes.push_back(name + ": " + f);
-      if (!plan.complete) {
-        std::ostringstream m;
-        m << name << " only partly planned in pool '" << pool.name << "':";
-        for (const auto& f : failures) m << " " << f;
-        plan.message = m.str();
-      }
-      plan.predicted = PredictPrecision(*ctx, info, &plan.notes);
+    DofPlan plan = PlanDof(vehicle, pool, dof, o);
+    if (plan.status == DesignStatus::kOk) {
       result.schedule.predicted[dof] = plan.predicted;
       for (const auto& t : plan.trials) result.schedule.trials.push_back(t);
       ++planned;
@@ -230,31 +316,7 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
   for (std::size_t i = 0; i < names.size(); ++i) {
     sigmas[names[i]] = std::sqrt(std::max(0.0, covariance(i, i)));
   }
-  // The DOF's parameter names (the standard structure of the a priori context).
-  std::unique_ptr<DofContext> probe =
-      DofContext::APriori(vehicle, pool, dof, o.schedule.planner, &result.notes);
-  ParameterValues centre = probe->box().nominal;
-  for (const auto& [k, val] : estimates) {
-    if (centre.count(k)) centre[k] = val;
-  }
-  ParameterBox box = EstimateBox(centre, sigmas, probe->model().parameter_names(), o.box_sigmas,
-                                 o.schedule.planner.box);
-  // An axis whose parameters have no estimate with a σ keeps its a priori range.
-  for (auto& axis : box.axes) {
-    bool estimated = false;
-    for (const auto& p : axis.params)
-      estimated = estimated || (estimates.count(p) && sigmas.count(p));
-    if (estimated) continue;
-    for (const auto& a : probe->box().axes) {
-      if (a.name != axis.name) continue;
-      // Factors of the a priori range about the (a priori) centre.
-      const std::string& ref = axis.params.front();
-      const double scale =
-          box.Nominal(ref) != 0.0 ? probe->box().Nominal(ref) / box.Nominal(ref) : 1.0;
-      axis.lo = a.lo * scale;
-      axis.hi = a.hi * scale;
-    }
-  }
+  ParameterBox box = BoxAboutEstimates(vehicle, pool, dof, estimates, sigmas, o, &result.notes);
   DofContext ctx(vehicle, pool, dof, std::move(box), o.schedule.planner);
   const PriorInformation prior = PriorInformation::FromCovariance(names, covariance);
   const std::vector<Eigen::MatrixXd> M0 = PriorPerPoint(ctx, &prior);
@@ -264,54 +326,17 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
   // Candidates: the sine designed for this criterion, and each steady leg from rest. They are
   // ranked by the criterion they reach or, with per_pool_time, by its gain per second of pool
   // time (the trial plus the pause before the next one; a cost-normalised criterion).
-  const double pause = ctx.options().pause_s;
-  auto score = [&](double criterion, double duration) {
-    if (!o.per_pool_time) return criterion;
-    return (criterion - result.criterion_before) / (duration + pause);
-  };
-  double best = -std::numeric_limits<double>::infinity();
-  double best_score = best;
-  std::vector<Eigen::MatrixXd> best_info;
+  NextCandidates ranking{ctx, o, M0, result.criterion_before, -kInf, -kInf, {}};
   SineDesignOptions so = o.schedule.sine;
   so.criterion = o.criterion;
   so.interest.clear();
   const SineDesignResult sn = DesignSine(ctx, so, M0, o.id);
   for (const auto& n : sn.notes) result.notes.push_back(n);
-  if (sn.status == DesignStatus::kOk) {
-    best = sn.criterion;
-    best_score = score(sn.criterion, sn.trial.design.duration);
-    result.trial = sn.trial;
-    result.check = sn.check;
-    best_info = sn.information;
-  }
+  if (sn.status == DesignStatus::kOk) ranking.TakeSine(sn, &result);
   const SteadyCandidates cands = MakeSteadyCandidates(ctx, o.schedule.steady);
-  for (const auto& leg : cands.legs) {
-    model::TrialDesign d;
-    d.id = o.id;
-    d.dof = dof;
-    d.kind = model::TrialKind::kSteady;
-    d.mapping = leg.mapping;
-    d.force = leg.force;
-    d.duration = leg.duration();
-    std::vector<Eigen::MatrixXd> info = ctx.Information(d);
-    std::vector<Eigen::MatrixXd> total = info;
-    for (std::size_t j = 0; j < total.size(); ++j) total[j] += M0[j];
-    const double c =
-        Aggregate(ctx.options().robustness, ctx.CriterionValues(total, o.criterion, {}));
-    const double sc = score(c, d.duration);
-    // 1e-9: the criteria are O(1..100) logs; a tie keeps the earlier candidate (the sine).
-    if (sc > best_score + 1e-9) {
-      const TrialCheck check = ctx.Check(d);
-      if (!check.feasible) continue;
-      best = c;
-      best_score = sc;
-      result.trial.design = d;
-      result.trial.travel = check.travel;
-      result.trial.thrust_min = check.thrust_min;
-      result.check = check;
-      best_info = info;
-    }
-  }
+  for (const auto& leg : cands.legs) ranking.ConsiderSteady(leg, &result);
+  const double best = ranking.best;
+  const std::vector<Eigen::MatrixXd>& best_info = ranking.best_info;
   if (!std::isfinite(best)) {
     result.status = DesignStatus::kInfeasible;
     result.message = "no trial of " + std::string(model::DofName(dof)) + " fits pool '" +

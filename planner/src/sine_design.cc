@@ -6,51 +6,32 @@
 #include <limits>
 #include <sstream>
 
+#include "options_check.h"
+
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/fisher_information.h"
 #include "uuvplan/planner/seed_rules.h"
 #include "uuvplan/planner/thrust_limits.h"
 
 namespace uuvplan::planner {
 
-std::string_view DesignStatusName(DesignStatus s) {
-  switch (s) {
-    case DesignStatus::kOk:
-      return "ok";
-    case DesignStatus::kInfeasible:
-      return "infeasible";
-    case DesignStatus::kFailed:
-      return "failed";
-  }
-  return "failed";
-}
+constexpr model::EnumNames<DesignStatus, 3> kDesignStatusNames{{{
+    {DesignStatus::kOk, "ok"}, {DesignStatus::kInfeasible, "infeasible"},
+    {DesignStatus::kFailed, "failed"}}}};
+
+std::string_view DesignStatusName(DesignStatus s) { return kDesignStatusNames.Name(s); }
 
 bool SineDesignOptions::IsValid(std::string* error) const {
-  auto fail = [&](const std::string& m) {
-    if (error) *error = m;
-    return false;
-  };
-  if (fixed_duration_s < 0) {
-    return fail("SineDesignOptions::fixed_duration_s = " + std::to_string(fixed_duration_s) +
-                ". Violated constraint: >= 0");
-  }
-  if (max_duration_s < 0) {
-    return fail("SineDesignOptions::max_duration_s = " + std::to_string(max_duration_s) +
-                ". Violated constraint: >= 0");
-  }
-  if (!(min_periods >= 0)) {
-    return fail("SineDesignOptions::min_periods = " + std::to_string(min_periods) +
-                ". Violated constraint: >= 0");
-  }
-  if (!(min_amplitude_fraction >= 0 && min_amplitude_fraction <= 1)) {
-    return fail("SineDesignOptions::min_amplitude_fraction = " +
-                std::to_string(min_amplitude_fraction) + ". Violated constraint: in [0, 1]");
-  }
-  if (sign < -1 || sign > 1) {
-    return fail("SineDesignOptions::sign = " + std::to_string(sign) +
-                ". Violated constraint: -1, 0 or 1");
-  }
-  return true;
+  internal::OptionsCheck check("SineDesignOptions", error);
+  check.Require(fixed_duration_s >= 0, "fixed_duration_s", fixed_duration_s, ">= 0")
+      .Require(max_duration_s >= 0, "max_duration_s", max_duration_s, ">= 0")
+      .Require(min_periods >= 0, "min_periods", min_periods, ">= 0")
+      .Require(min_amplitude_fraction >= 0 && min_amplitude_fraction <= 1,
+               "min_amplitude_fraction", min_amplitude_fraction, "in [0, 1]")
+      .Require(sign >= -1 && sign <= 1, "sign", sign, "-1, 0 or 1");
+  return check.ok();
 }
 
 namespace {
@@ -243,22 +224,32 @@ double LongestFittingDuration(const DofContext& ctx, const model::TrialDesign& d
   return FirstOverflow(ctx, *tm.model, tm.check_thetas, *input, t_max);
 }
 
-SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
-                            const std::vector<Eigen::MatrixXd>& prior, const std::string& id) {
-  SineDesignResult result;
-  std::string error;
-  if (!o.IsValid(&error) || !ctx.options().IsValid(&error)) {
-    result.message = error;
-    return result;
+namespace {
+
+model::Direction DirectionOf(int sign) {
+  return sign > 0 ? model::Direction::kPos : model::Direction::kNeg;
+}
+
+// Mirror images: the standard model is odd in xi and phi (k·xi + kq·xi|xi|), so with no bias
+// and eta = 1 an open-water direction whose force range equals an earlier open-water
+// candidate's opposite direction has the same information; it is not designed twice.
+bool IsMirror(const DofContext& ctx, const std::vector<Candidate>& earlier, const Candidate& c) {
+  const auto& v = ctx.vehicle();
+  bool mirror = false;
+  for (const Candidate& e : earlier) {
+    mirror = mirror || (e.sign == -c.sign && std::abs(e.range.min_abs - c.range.min_abs) < 1e-9 &&
+                        std::abs(e.range.max_abs - c.range.max_abs) < 1e-9 &&
+                        v.mappings[e.mapping].IsOpenWater(DirectionOf(e.sign)));
   }
-  const double t_max = o.max_duration_s > 0
-                           ? std::min(o.max_duration_s, ctx.options().max_trial_duration_s)
-                           : ctx.options().max_trial_duration_s;
-  if (o.fixed_duration_s > ctx.options().max_trial_duration_s) {
-    result.status = DesignStatus::kInfeasible;
-    result.message = "fixed duration beyond the trial duration limit";
-    return result;
-  }
+  const int ib = ctx.Index(model::param::kBias);
+  for (const auto& th : ctx.design_thetas()) mirror = mirror && (ib < 0 || th[ib] == 0.0);
+  return mirror && v.mappings[c.mapping].IsOpenWater(DirectionOf(c.sign));
+}
+
+// The (mapping, direction) pairs that can hold a sine without reversal, as the options allow;
+// why others cannot goes to `notes`.
+std::vector<Candidate> SineCandidates(const DofContext& ctx, const SineDesignOptions& o,
+                                      std::vector<std::string>* notes) {
   const auto& v = ctx.vehicle();
   std::vector<Candidate> candidates;
   for (int mi : v.MappingsOf(ctx.dof())) {
@@ -269,45 +260,29 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
     }
     for (int s : {+1, -1}) {
       if (o.sign != 0 && s != o.sign) continue;
-      if (o.open_water_only &&
-          !m.IsOpenWater(s > 0 ? model::Direction::kPos : model::Direction::kNeg)) {
-        continue;
-      }
+      if (o.open_water_only && !m.IsOpenWater(DirectionOf(s))) continue;
       Candidate c{mi, s, ctx.ForceRangeFor(mi, s)};
       if (!c.range.feasible) {
-        result.notes.push_back(c.range.reason);
+        notes->push_back(c.range.reason);
         continue;
       }
-      // Mirror images: the standard model is odd in xi and phi (k·xi + kq·xi|xi|), so with no
-      // bias and eta = 1 a direction whose force range equals an earlier candidate's opposite
-      // direction has the same information; it is not designed twice.
-      bool mirror = false;
-      for (const Candidate& e : candidates) {
-        mirror = mirror || (e.sign == -s && std::abs(e.range.min_abs - c.range.min_abs) < 1e-9 &&
-                            std::abs(e.range.max_abs - c.range.max_abs) < 1e-9 &&
-                            v.mappings[e.mapping].IsOpenWater(e.sign > 0 ? model::Direction::kPos
-                                                                         : model::Direction::kNeg));
-      }
-      const int ib = ctx.Index(model::param::kBias);
-      for (const auto& th : ctx.design_thetas()) mirror = mirror && (ib < 0 || th[ib] == 0.0);
-      if (mirror && m.IsOpenWater(s > 0 ? model::Direction::kPos : model::Direction::kNeg)) {
-        result.notes.push_back(m.name + (s > 0 ? " +" : " -") +
-                               ": mirror image of a candidate already designed (same force "
-                               "range, no bias, open water): same information, not repeated");
+      if (IsMirror(ctx, candidates, c)) {
+        notes->push_back(m.name + (s > 0 ? " +" : " -") +
+                         ": mirror image of a candidate already designed (same force "
+                         "range, no bias, open water): same information, not repeated");
         continue;
       }
       candidates.push_back(c);
     }
   }
-  if (candidates.empty()) {
-    result.status = DesignStatus::kInfeasible;
-    result.message =
-        std::string("no mapping and direction of ") + std::string(model::DofName(ctx.dof())) +
-        " can hold a sine without propeller reversal" + (o.open_water_only ? " in open water" : "") +
-        (result.notes.empty() ? "" : " within the speed limit (see the notes)");
-    return result;
-  }
+  return candidates;
+}
 
+// The best sine over every candidate (robust criterion); false if no candidate gave one.
+bool OptimiseSine(const DofContext& ctx, const SineDesignOptions& o,
+                  const std::vector<Eigen::MatrixXd>& prior,
+                  const std::vector<Candidate>& candidates, double t_max, const std::string& id,
+                  SineDesignResult* result) {
   const int J = static_cast<int>(ctx.design_thetas().size());
   double best = -std::numeric_limits<double>::infinity();
   for (const Candidate& c : candidates) {
@@ -324,107 +299,147 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
     so.robustness = ctx.options().robustness;
     so.extra_starts.push_back(p.x0);
     const SolverSummary summary = Solve(ctx.options().sine_backend, p, so);
-    if (!summary.is_success() || summary.objective <= best) {
-      if (!summary.is_success()) {
-        result.notes.push_back(v.mappings[c.mapping].name + (c.sign > 0 ? " +" : " -") + ": " +
-                               summary.BriefReport());
-      }
-      continue;
+    if (!summary.is_success()) {
+      result->notes.push_back(ctx.vehicle().mappings[c.mapping].name +
+                              (c.sign > 0 ? " +" : " -") + ": " + summary.BriefReport());
     }
+    if (!summary.is_success() || summary.objective <= best) continue;
     best = summary.objective;
-    result.summary = summary;
-    result.criterion = summary.objective;
-    result.criterion_per_point = summary.phi;
+    result->summary = summary;
+    result->criterion = summary.objective;
+    result->criterion_per_point = summary.phi;
     model::TrialDesign d = sp.Decode(summary.x.data());
     d.id = id;
     d.duration = sp.Duration(d);
-    result.trial.design = d;
+    result->trial.design = d;
   }
-  // A "sine" whose amplitude vanishes is a steady run from rest: the force range left between
-  // min_thrust and the speed limit is too narrow for a swing that adds more than the start from
-  // rest does (VSOR yaw: [3.11, 4.25] N·m). Report it as what it is, and say why.
-  if (std::isfinite(best) &&
-      result.trial.design.amplitude <= 1e-3 * std::abs(result.trial.design.offset)) {
-    model::TrialDesign& d = result.trial.design;
-    const ForceRange range = ctx.ForceRangeFor(v.MappingIndex(d.mapping), d.offset > 0 ? 1 : -1);
-    std::ostringstream s;
-    s << d.mapping << ": the best sine has no amplitude — a steady run from rest at "
-      << d.offset << " for " << d.duration << " s carries more information than any swing within "
-      << "the force range [" << range.min_abs << ", " << range.max_abs
-      << "] that min_thrust and the speed limit leave; planned as that steady run (a wider "
-         "range — lower min_thrust, a larger max_rotation_rate / max_translation_speed — would "
-         "allow a true sine)";
-    result.notes.push_back(s.str());
-    d.kind = model::TrialKind::kSteady;
-    d.force = d.offset;
-    d.offset = d.amplitude = d.omega = 0.0;
-    const std::string suffix = "-sine";
-    if (d.id.size() > suffix.size() && d.id.compare(d.id.size() - suffix.size(), suffix.size(), suffix) == 0) {
-      d.id = d.id.substr(0, d.id.size() - suffix.size()) + "-long-steady";
-    }
+  return std::isfinite(best);
+}
+
+// A "sine" whose amplitude vanishes is a steady run from rest: the force range left between
+// min_thrust and the speed limit is too narrow for a swing that adds more than the start from
+// rest does (VSOR yaw: [3.11, 4.25] N·m). Report it as what it is, and say why.
+void PlanFlatSineAsSteady(const DofContext& ctx, SineDesignResult* result) {
+  model::TrialDesign& d = result->trial.design;
+  if (d.amplitude > 1e-3 * std::abs(d.offset)) return;
+  const ForceRange range =
+      ctx.ForceRangeFor(ctx.vehicle().MappingIndex(d.mapping), d.offset > 0 ? 1 : -1);
+  std::ostringstream s;
+  s << d.mapping << ": the best sine has no amplitude — a steady run from rest at "
+    << d.offset << " for " << d.duration << " s carries more information than any swing within "
+    << "the force range [" << range.min_abs << ", " << range.max_abs
+    << "] that min_thrust and the speed limit leave; planned as that steady run (a wider "
+       "range — lower min_thrust, a larger max_rotation_rate / max_translation_speed — would "
+       "allow a true sine)";
+  result->notes.push_back(s.str());
+  d.kind = model::TrialKind::kSteady;
+  d.force = d.offset;
+  d.offset = d.amplitude = d.omega = 0.0;
+  const std::string suffix = "-sine";
+  if (d.id.size() > suffix.size() && model::EndsWith(d.id, suffix)) {
+    d.id = d.id.substr(0, d.id.size() - suffix.size()) + "-long-steady";
   }
-  if (std::isfinite(best)) {
-    // The reported information and criterion: the real sensors (design_sensors() approximates).
-    result.information = ctx.Information(result.trial.design);
-    std::vector<Eigen::MatrixXd> total = result.information;
-    for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
-      if (prior[j].size() == total[j].size()) total[j] += prior[j];
-    }
-    result.criterion_per_point = ctx.CriterionValues(total, o.criterion, ctx.Indices(o.interest));
-    result.criterion = Aggregate(ctx.options().robustness, result.criterion_per_point);
+}
+
+// The trial's information plus the prior, at each design point.
+std::vector<Eigen::MatrixXd> WithPrior(std::vector<Eigen::MatrixXd> information,
+                                       const std::vector<Eigen::MatrixXd>& prior) {
+  for (std::size_t j = 0; j < information.size() && j < prior.size(); ++j) {
+    if (prior[j].size() == information[j].size()) information[j] += prior[j];
   }
-  if (!std::isfinite(best)) {
-    result.status = DesignStatus::kFailed;
-    result.message = "no candidate mapping gave a feasible sine design";
-    return result;
-  }
-  // Hard constraints over the check grid; the design points bound the travel when it is
-  // monotone in m and drag, else shorten the trial until the check grid fits too.
-  model::TrialDesign& d = result.trial.design;
-  result.check = ctx.Check(d);
-  if (!result.check.feasible && o.fixed_duration_s == 0 && std::isfinite(ctx.available()) &&
-      result.check.span > ctx.available()) {
+  return information;
+}
+
+// The reported information and criterion: the real sensors (design_sensors() approximates).
+void Score(const DofContext& ctx, const SineDesignOptions& o,
+           const std::vector<Eigen::MatrixXd>& prior, SineDesignResult* result) {
+  result->information = ctx.Information(result->trial.design);
+  result->criterion_per_point = ctx.CriterionValues(WithPrior(result->information, prior),
+                                                    o.criterion, ctx.Indices(o.interest));
+  result->criterion = Aggregate(ctx.options().robustness, result->criterion_per_point);
+}
+
+// Hard constraints over the check grid; the design points bound the travel when it is
+// monotone in m and drag, else shorten the trial until the check grid fits too.
+void CheckAndFit(const DofContext& ctx, const SineDesignOptions& o,
+                 const std::vector<Eigen::MatrixXd>& prior, SineDesignResult* result) {
+  model::TrialDesign& d = result->trial.design;
+  result->check = ctx.Check(d);
+  if (!result->check.feasible && o.fixed_duration_s == 0 && std::isfinite(ctx.available()) &&
+      result->check.span > ctx.available()) {
     d.duration = LongestFittingDuration(ctx, d, d.duration) * (1.0 - 1e-6);
-    result.check = ctx.Check(d);
-    result.information = ctx.Information(d);
-    std::vector<Eigen::MatrixXd> total = result.information;
-    for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
-      if (prior[j].size() == total[j].size()) total[j] += prior[j];
-    }
-    result.criterion_per_point = ctx.CriterionValues(total, o.criterion, ctx.Indices(o.interest));
-    result.criterion = Aggregate(ctx.options().robustness, result.criterion_per_point);
+    result->check = ctx.Check(d);
+    Score(ctx, o, prior, result);
   }
-  result.trial.travel = result.check.travel;
-  result.trial.thrust_min = result.check.thrust_min;
+  result->trial.travel = result->check.travel;
+  result->trial.thrust_min = result->check.thrust_min;
+}
+
+void SetStatus(const DofContext& ctx, const SineDesignOptions& o,
+               const std::vector<Eigen::MatrixXd>& prior, SineDesignResult* result) {
+  const model::TrialDesign& d = result->trial.design;
   bool singular = false;
-  {
-    std::vector<Eigen::MatrixXd> total = result.information;
-    for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
-      if (prior[j].size() == total[j].size()) total[j] += prior[j];
-    }
-    ctx.CriterionValues(total, o.criterion, ctx.Indices(o.interest), &singular);
-  }
-  if (!result.check.feasible) {
-    result.status = DesignStatus::kInfeasible;
+  ctx.CriterionValues(WithPrior(result->information, prior), o.criterion,
+                      ctx.Indices(o.interest), &singular);
+  if (!result->check.feasible) {
+    result->status = DesignStatus::kInfeasible;
     std::ostringstream s;
     s << "the best sine design violates a hard constraint:";
-    for (const auto& r : result.check.reasons) s << " " << r << ";";
-    result.message = s.str();
+    for (const auto& r : result->check.reasons) s << " " << r << ";";
+    result->message = s.str();
   } else if (singular) {
-    result.status = DesignStatus::kInfeasible;
-    result.message =
+    result->status = DesignStatus::kInfeasible;
+    result->message =
         "the information of this trial (with the prior) is singular: its parameters cannot all "
         "be told apart (add steady runs in other mappings, or prior information on eta)";
   } else if (d.kind == model::TrialKind::kSine &&
              d.duration < o.min_periods * 2 * M_PI / d.omega - 1e-6) {
-    result.status = DesignStatus::kInfeasible;
+    result->status = DesignStatus::kInfeasible;
     std::ostringstream s;
     s << "only " << d.duration * d.omega / (2 * M_PI) << " periods fit the pool (at least "
       << o.min_periods << " wanted)";
-    result.message = s.str();
+    result->message = s.str();
   } else {
-    result.status = DesignStatus::kOk;
+    result->status = DesignStatus::kOk;
   }
+}
+
+}  // namespace
+
+SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
+                            const std::vector<Eigen::MatrixXd>& prior, const std::string& id) {
+  SineDesignResult result;
+  std::string error;
+  if (!o.IsValid(&error) || !ctx.options().IsValid(&error)) {
+    result.message = error;
+    return result;
+  }
+  const double t_max = o.max_duration_s > 0
+                           ? std::min(o.max_duration_s, ctx.options().max_trial_duration_s)
+                           : ctx.options().max_trial_duration_s;
+  if (o.fixed_duration_s > ctx.options().max_trial_duration_s) {
+    result.status = DesignStatus::kInfeasible;
+    result.message = "fixed duration beyond the trial duration limit";
+    return result;
+  }
+  const std::vector<Candidate> candidates = SineCandidates(ctx, o, &result.notes);
+  if (candidates.empty()) {
+    result.status = DesignStatus::kInfeasible;
+    result.message =
+        std::string("no mapping and direction of ") + std::string(model::DofName(ctx.dof())) +
+        " can hold a sine without propeller reversal" + (o.open_water_only ? " in open water" : "") +
+        (result.notes.empty() ? "" : " within the speed limit (see the notes)");
+    return result;
+  }
+  if (!OptimiseSine(ctx, o, prior, candidates, t_max, id, &result)) {
+    result.status = DesignStatus::kFailed;
+    result.message = "no candidate mapping gave a feasible sine design";
+    return result;
+  }
+  PlanFlatSineAsSteady(ctx, &result);
+  Score(ctx, o, prior, &result);
+  CheckAndFit(ctx, o, prior, &result);
+  SetStatus(ctx, o, prior, &result);
   return result;
 }
 

@@ -6,64 +6,36 @@
 #include <numeric>
 #include <sstream>
 
+#include "options_check.h"
+
+#include "uuvplan/model/util/enum_names.h"
+
 namespace uuvplan::planner {
 
-std::string_view RobustnessName(Robustness r) {
-  switch (r) {
-    case Robustness::kNominal:
-      return "nominal";
-    case Robustness::kMaximin:
-      return "maximin";
-    case Robustness::kAverage:
-      return "average";
-  }
-  return "maximin";
-}
+constexpr model::EnumNames<Robustness, 3> kRobustnessNames{{{
+    {Robustness::kNominal, "nominal"}, {Robustness::kMaximin, "maximin"},
+    {Robustness::kAverage, "average"}}}};
+
+std::string_view RobustnessName(Robustness r) { return kRobustnessNames.Name(r); }
 
 std::string_view SolverBackendName(SolverBackend b) {
   return b == SolverBackend::kNlopt ? "nlopt" : "ipopt";
 }
 
-std::string_view SolverStatusName(SolverStatus s) {
-  switch (s) {
-    case SolverStatus::kConverged:
-      return "converged";
-    case SolverStatus::kMaxEvaluations:
-      return "max_evaluations";
-    case SolverStatus::kInfeasible:
-      return "infeasible";
-    case SolverStatus::kFailed:
-      return "failed";
-  }
-  return "failed";
-}
+constexpr model::EnumNames<SolverStatus, 4> kSolverStatusNames{{{
+    {SolverStatus::kConverged, "converged"}, {SolverStatus::kMaxEvaluations, "max_evaluations"},
+    {SolverStatus::kInfeasible, "infeasible"}, {SolverStatus::kFailed, "failed"}}}};
+
+std::string_view SolverStatusName(SolverStatus s) { return kSolverStatusNames.Name(s); }
 
 bool SolverOptions::IsValid(std::string* error) const {
-  auto fail = [&](const std::string& m) {
-    if (error) *error = m;
-    return false;
-  };
-  if (max_global_evaluations < 0) {
-    return fail("SolverOptions::max_global_evaluations = " +
-                std::to_string(max_global_evaluations) + ". Violated constraint: >= 0");
-  }
-  if (max_local_evaluations < 1) {
-    return fail("SolverOptions::max_local_evaluations = " + std::to_string(max_local_evaluations) +
-                ". Violated constraint: >= 1");
-  }
-  if (!(relative_tolerance > 0)) {
-    return fail("SolverOptions::relative_tolerance = " + std::to_string(relative_tolerance) +
-                ". Violated constraint: > 0");
-  }
-  if (!(fd_step > 0 && fd_step < 0.1)) {
-    return fail("SolverOptions::fd_step = " + std::to_string(fd_step) +
-                ". Violated constraint: 0 < fd_step < 0.1");
-  }
-  if (!(penalty >= 0)) {
-    return fail("SolverOptions::penalty = " + std::to_string(penalty) +
-                ". Violated constraint: >= 0");
-  }
-  return true;
+  internal::OptionsCheck check("SolverOptions", error);
+  check.Require(max_global_evaluations >= 0, "max_global_evaluations", max_global_evaluations, ">= 0")
+      .Require(max_local_evaluations >= 1, "max_local_evaluations", max_local_evaluations, ">= 1")
+      .Require(relative_tolerance > 0, "relative_tolerance", relative_tolerance, "> 0")
+      .Require(fd_step > 0 && fd_step < 0.1, "fd_step", fd_step, "0 < fd_step < 0.1")
+      .Require(penalty >= 0, "penalty", penalty, ">= 0");
+  return check.ok();
 }
 
 double Aggregate(Robustness r, const std::vector<double>& phi) {

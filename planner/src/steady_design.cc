@@ -8,6 +8,8 @@
 #include <numeric>
 #include <sstream>
 
+#include "options_check.h"
+
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/mapping.h"
 #include "uuvplan/planner/fisher_information.h"
@@ -17,32 +19,15 @@
 namespace uuvplan::planner {
 
 bool SteadyDesignOptions::IsValid(std::string* error) const {
-  auto fail = [&](const std::string& m) {
-    if (error) *error = m;
-    return false;
-  };
-  if (legs < 0)
-    return fail("SteadyDesignOptions::legs = " + std::to_string(legs) +
-                ". Violated constraint: >= 0");
-  if (levels < 1)
-    return fail("SteadyDesignOptions::levels = " + std::to_string(levels) +
-                ". Violated constraint: >= 1");
-  if (!(settle_tolerance > 0 && settle_tolerance < 1)) {
-    return fail("SteadyDesignOptions::settle_tolerance = " + std::to_string(settle_tolerance) +
-                ". Violated constraint: 0 < tol < 1");
-  }
-  if (!(min_hold_s > 0))
-    return fail("SteadyDesignOptions::min_hold_s = " + std::to_string(min_hold_s) +
-                ". Violated constraint: > 0");
-  if (!(speed_rel_sigma > 0)) {
-    return fail("SteadyDesignOptions::speed_rel_sigma = " + std::to_string(speed_rel_sigma) +
-                ". Violated constraint: > 0");
-  }
-  if (max_legs_per_trial < 1) {
-    return fail("SteadyDesignOptions::max_legs_per_trial = " + std::to_string(max_legs_per_trial) +
-                ". Violated constraint: >= 1");
-  }
-  return true;
+  internal::OptionsCheck check("SteadyDesignOptions", error);
+  check.Require(legs >= 0, "legs", legs, ">= 0")
+      .Require(levels >= 1, "levels", levels, ">= 1")
+      .Require(settle_tolerance > 0 && settle_tolerance < 1, "settle_tolerance", settle_tolerance,
+               "0 < tol < 1")
+      .Require(min_hold_s > 0, "min_hold_s", min_hold_s, "> 0")
+      .Require(speed_rel_sigma > 0, "speed_rel_sigma", speed_rel_sigma, "> 0")
+      .Require(max_legs_per_trial >= 1, "max_legs_per_trial", max_legs_per_trial, ">= 1");
+  return check.ok();
 }
 
 std::vector<int> EfficientRounding(const std::vector<double>& w, int N) {
@@ -390,7 +375,7 @@ SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignO
         m << DirName(name, s) << ": the smallest run (|phi| = " << lo << ", settles in "
           << smallest.settle_s << " s, holds " << smallest.hold_s << " s) travels "
           << smallest.travel << " over the box; the pool has " << avail << " free: needs "
-          << smallest.travel + 2 * ctx.pool().margin << " with its margins";
+          << ctx.pool().WallToWallFor(smallest.travel) << " with its margins";
         infeasible << " " << m.str() << ";";
         continue;
       }
@@ -429,6 +414,242 @@ SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignO
   return out;
 }
 
+namespace {
+
+// Step 2: the information of each candidate from rest (M[c][j] at design point j).
+std::vector<std::vector<Eigen::MatrixXd>> CandidateInformation(const DofContext& ctx,
+                                                               const std::vector<SteadyLeg>& legs) {
+  std::vector<std::vector<Eigen::MatrixXd>> M;
+  for (const SteadyLeg& leg : legs) {
+    model::TrialDesign d;
+    d.dof = ctx.dof();
+    d.kind = model::TrialKind::kSteady;
+    d.mapping = leg.mapping;
+    d.force = leg.force;
+    d.duration = leg.duration();
+    M.push_back(ctx.Information(d));
+  }
+  return M;
+}
+
+// Number of legs: the options', or every informed parameter but m plus 2.
+int LegCount(const DofContext& ctx, const SteadyDesignOptions& o,
+             const std::vector<std::vector<Eigen::MatrixXd>>& M) {
+  if (o.legs != 0) return o.legs;
+  const int np = ctx.model().num_parameters();
+  Eigen::MatrixXd total = Eigen::MatrixXd::Zero(np, np);
+  for (const auto& m : M) total += RelativeInformation(m[0], ctx.design_thetas()[0]);
+  return static_cast<int>(InformedParameters(total).size()) - 1 + 2;
+}
+
+// Step 2: the approximate design's weights; false (status and message set) if it failed.
+bool SolveWeights(const DofContext& ctx, const SteadyDesignOptions& o,
+                  const std::vector<std::vector<Eigen::MatrixXd>>& M, int N,
+                  const std::vector<Eigen::MatrixXd>& prior, SteadyDesignResult* result) {
+  const DesignProblem problem = SteadyWeightsProblem(ctx, M, N, prior, o.criterion);
+  SolverOptions so = ctx.options().solver;
+  so.robustness = ctx.options().robustness;
+  so.global = GlobalMethod::kNone;  // concave: a local method finds the global optimum
+  so.max_local_evaluations = std::max(so.max_local_evaluations, 200);
+  result->summary = Solve(ctx.options().steady_backend, problem, so);
+  if (!result->summary.is_success()) {
+    result->status = DesignStatus::kFailed;
+    result->message = "approximate design: " + result->summary.BriefReport();
+    return false;
+  }
+  result->weights = result->summary.x;
+  return true;
+}
+
+// Step 3: efficient rounding of N·w; every direction with weight keeps a leg.
+std::vector<SteadyLeg> ExactDesign(const std::vector<SteadyLeg>& candidates,
+                                   const std::vector<double>& weights, int N) {
+  std::vector<int> n = EfficientRounding(weights, N);
+  const double wmax = *std::max_element(weights.begin(), weights.end());
+  std::map<std::string, int> best_in_dir;  // direction -> candidate with the largest weight
+  std::map<std::string, int> legs_in_dir;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    const std::string key = DirName(candidates[c].mapping, candidates[c].force > 0 ? 1 : -1);
+    if (weights[c] > 1e-3 * wmax &&
+        (!best_in_dir.count(key) || weights[c] > weights[best_in_dir[key]])) {
+      best_in_dir[key] = static_cast<int>(c);
+    }
+    legs_in_dir[key] += n[c];
+  }
+  for (const auto& [key, c] : best_in_dir) {
+    if (legs_in_dir[key] == 0) ++n[c];
+  }
+  std::vector<SteadyLeg> legs;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    for (int k = 0; k < n[c]; ++k) legs.push_back(candidates[c]);
+  }
+  return legs;
+}
+
+// Step 4: packs legs into trials, each a chain of legs alternating in direction, in
+// compatible thrusters, within the pool and the trial duration limit.
+class LegPacker {
+ public:
+  LegPacker(const DofContext& ctx, const SteadyDesignOptions& o, std::vector<SteadyLeg> legs)
+      : ctx_(ctx), o_(o), planner_(ctx, o), remaining_(std::move(legs)) {
+    std::sort(remaining_.begin(), remaining_.end(),
+              [](const SteadyLeg& a, const SteadyLeg& b) { return a.travel > b.travel; });
+  }
+
+  bool done() const { return remaining_.empty(); }
+
+  /// The next trial: the longest-travelling leg left, then legs chained after it.
+  model::TrialDesign NextTrial(const std::string& id) {
+    chain_ = {remaining_.front()};
+    remaining_.erase(remaining_.begin());
+    signs_ = ThrusterSigns(ctx_.vehicle(), chain_[0].mapping, chain_[0].force);
+    segs_ = {{chain_[0].force, chain_[0].duration(), chain_[0].mapping}};
+    total_ = chain_[0].duration();
+    tried_.assign(remaining_.size(), false);
+    while (static_cast<int>(chain_.size()) < o_.max_legs_per_trial) {
+      const int pick = PickNext();
+      if (pick < 0) break;
+      tried_[pick] = true;
+      TryChain(pick);
+    }
+    return ChainDesign(id);
+  }
+
+ private:
+  // A leg left, not tried for this chain, moving against the chain's last leg in compatible
+  // thrusters, with the closest travel; -1 if none.
+  int PickNext() const {
+    const double dir = chain_.back().speed;
+    int pick = -1;
+    for (std::size_t r = 0; r < remaining_.size(); ++r) {
+      if (tried_[r] || remaining_[r].speed * dir >= 0) continue;
+      if (!Compatible(signs_,
+                      ThrusterSigns(ctx_.vehicle(), remaining_[r].mapping, remaining_[r].force))) {
+        continue;
+      }
+      if (pick < 0 || std::abs(remaining_[r].travel - chain_.back().travel) <
+                          std::abs(remaining_[pick].travel - chain_.back().travel)) {
+        pick = static_cast<int>(r);
+      }
+    }
+    return pick;
+  }
+
+  // Appends leg `pick` (timed after the chain so far) if the trial stays feasible.
+  void TryChain(int pick) {
+    const double t_max = ctx_.options().max_trial_duration_s;
+    SteadyLeg leg = remaining_[pick];
+    const SteadyPlanner::Timing t = planner_.TimeLeg(segs_, leg, t_max);
+    if (!t.settled) return;
+    leg.settle_s = t.settle_s;
+    leg.hold_s = t.hold_s;
+    if (total_ + leg.duration() > t_max) return;
+    if (t.travel_hi - t.travel_lo > ctx_.available() - kTravelSafety) return;
+    std::vector<model::SegmentDesign> trial_segs = segs_;
+    trial_segs.push_back({leg.force, leg.duration(), leg.mapping});
+    model::TrialDesign d;
+    d.dof = ctx_.dof();
+    d.kind = model::TrialKind::kSegments;
+    d.mapping = chain_[0].mapping;
+    d.segments = trial_segs;
+    d.duration = total_ + leg.duration();
+    if (!ctx_.Check(d).feasible) return;
+    chain_.push_back(leg);
+    segs_ = trial_segs;
+    total_ += leg.duration();
+    for (const auto& [th, s] : ThrusterSigns(ctx_.vehicle(), leg.mapping, leg.force)) {
+      signs_[th] = s;
+    }
+    remaining_.erase(remaining_.begin() + pick);
+    tried_.erase(tried_.begin() + pick);
+  }
+
+  // The chain as a steady trial (one leg) or a segments trial.
+  model::TrialDesign ChainDesign(const std::string& id) const {
+    model::TrialDesign d;
+    d.id = id;
+    d.dof = ctx_.dof();
+    d.mapping = chain_[0].mapping;
+    d.duration = total_;
+    if (chain_.size() == 1) {
+      d.kind = model::TrialKind::kSteady;
+      d.force = chain_[0].force;
+      return d;
+    }
+    d.kind = model::TrialKind::kSegments;
+    for (auto s : segs_) {
+      if (s.mapping == d.mapping) s.mapping.clear();  // the trial's mapping
+      d.segments.push_back(s);
+    }
+    return d;
+  }
+
+  const DofContext& ctx_;
+  const SteadyDesignOptions& o_;
+  SteadyPlanner planner_;
+  std::vector<SteadyLeg> remaining_;
+  std::vector<SteadyLeg> chain_;
+  std::map<int, int> signs_;
+  std::vector<model::SegmentDesign> segs_;
+  double total_ = 0.0;
+  std::vector<bool> tried_;
+};
+
+void PackTrials(const DofContext& ctx, const SteadyDesignOptions& o, const std::string& id_prefix,
+                SteadyDesignResult* result) {
+  LegPacker packer(ctx, o, result->legs);
+  const int np = ctx.model().num_parameters();
+  result->information.assign(ctx.design_thetas().size(), Eigen::MatrixXd::Zero(np, np));
+  int trial_no = 0;
+  while (!packer.done()) {
+    PlannedTrial trial;
+    trial.design = packer.NextTrial(id_prefix + "-" + std::to_string(++trial_no));
+    const TrialCheck check = ctx.Check(trial.design);
+    trial.travel = check.travel;
+    trial.thrust_min = check.thrust_min;
+    const auto info = ctx.Information(trial.design);
+    for (std::size_t j = 0; j < info.size(); ++j) result->information[j] += info[j];
+    result->trials.push_back(trial);
+    result->checks.push_back(check);
+  }
+}
+
+// The criterion of the packed trials with the prior, and the status and notes.
+void Summarise(const DofContext& ctx, const SteadyDesignOptions& o,
+               const std::vector<Eigen::MatrixXd>& prior, const std::string& infeasible,
+               SteadyDesignResult* result) {
+  const std::string dof(model::DofName(ctx.dof()));
+  std::vector<Eigen::MatrixXd> total = result->information;
+  for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
+    if (prior[j].size() == total[j].size()) total[j] += prior[j];
+  }
+  std::vector<int> interest;
+  for (int i : InformedParameters(RelativeInformation(total[0], ctx.design_thetas()[0]))) {
+    if (i != 0) interest.push_back(i);
+  }
+  bool singular = false;
+  result->criterion_per_point = ctx.CriterionValues(total, o.criterion, interest, &singular);
+  result->criterion = Aggregate(ctx.options().robustness, result->criterion_per_point);
+  bool all_ok = true;
+  for (const auto& c : result->checks) all_ok = all_ok && c.feasible;
+  if (!all_ok) {
+    result->status = DesignStatus::kInfeasible;
+    result->message = "a packed steady trial violates a hard constraint";
+    return;
+  }
+  result->status = DesignStatus::kOk;
+  if (singular) {
+    result->notes.push_back(dof +
+                            ": the steady runs alone leave a combination of drag, bias "
+                            "and eta undetermined; the other trials must resolve it");
+  }
+  if (!infeasible.empty()) {
+    result->notes.push_back(dof + ": some directions cannot be run in this pool:" + infeasible);
+  }
+}
+
+}  // namespace
+
 SteadyDesignResult DesignSteady(const DofContext& ctx, const SteadyDesignOptions& o,
                                 const std::vector<Eigen::MatrixXd>& prior,
                                 const std::string& id_prefix) {
@@ -438,190 +659,32 @@ SteadyDesignResult DesignSteady(const DofContext& ctx, const SteadyDesignOptions
     result.message = error;
     return result;
   }
-  const auto& v = ctx.vehicle();
-  SteadyPlanner sp(ctx, o);
-  const double avail = ctx.available();
-  const double t_max = ctx.options().max_trial_duration_s;
-  const std::string dof(model::DofName(ctx.dof()));
-
   // 1. Candidates per mapping and direction.
   SteadyCandidates cands = MakeSteadyCandidates(ctx, o);
   result.candidates = cands.legs;
   result.required_travel = cands.required_travel;
   for (const auto& n : cands.notes) result.notes.push_back(n);
-  std::ostringstream infeasible;
-  infeasible << cands.infeasible;
   if (result.candidates.empty()) {
     result.status = DesignStatus::kInfeasible;
-    result.message = "no steady run of " + dof + " fits:" + infeasible.str();
+    result.message =
+        "no steady run of " + std::string(model::DofName(ctx.dof())) + " fits:" + cands.infeasible;
     return result;
   }
-
   // 2. Information of each candidate from rest, and the approximate design.
-  const int C = static_cast<int>(result.candidates.size());
-  std::vector<std::vector<Eigen::MatrixXd>> M(C);
-  for (int c = 0; c < C; ++c) {
-    const SteadyLeg& leg = result.candidates[c];
-    model::TrialDesign d;
-    d.dof = ctx.dof();
-    d.kind = model::TrialKind::kSteady;
-    d.mapping = leg.mapping;
-    d.force = leg.force;
-    d.duration = leg.duration();
-    M[c] = ctx.Information(d);
-  }
-  int N = o.legs;
-  if (N == 0) {
-    Eigen::MatrixXd total =
-        Eigen::MatrixXd::Zero(ctx.model().num_parameters(), ctx.model().num_parameters());
-    for (const auto& m : M) total += RelativeInformation(m[0], ctx.design_thetas()[0]);
-    N = static_cast<int>(InformedParameters(total).size()) - 1 + 2;  // all but m, plus 2
-  }
-  const DesignProblem problem = SteadyWeightsProblem(ctx, M, N, prior, o.criterion);
-  SolverOptions so = ctx.options().solver;
-  so.robustness = ctx.options().robustness;
-  so.global = GlobalMethod::kNone;  // concave: a local method finds the global optimum
-  so.max_local_evaluations = std::max(so.max_local_evaluations, 200);
-  result.summary = Solve(ctx.options().steady_backend, problem, so);
-  if (!result.summary.is_success()) {
-    result.status = DesignStatus::kFailed;
-    result.message = "approximate design: " + result.summary.BriefReport();
-    return result;
-  }
-  result.weights = result.summary.x;
-
-  // 3. Exact design: efficient rounding; every direction with weight keeps a leg.
-  std::vector<int> n = EfficientRounding(result.weights, N);
-  const double wmax = *std::max_element(result.weights.begin(), result.weights.end());
-  std::map<std::string, int> best_in_dir;  // direction -> candidate with the largest weight
-  std::map<std::string, int> legs_in_dir;
-  for (int c = 0; c < C; ++c) {
-    const std::string key =
-        DirName(result.candidates[c].mapping, result.candidates[c].force > 0 ? 1 : -1);
-    if (result.weights[c] > 1e-3 * wmax &&
-        (!best_in_dir.count(key) || result.weights[c] > result.weights[best_in_dir[key]])) {
-      best_in_dir[key] = c;
-    }
-    legs_in_dir[key] += n[c];
-  }
-  for (const auto& [key, c] : best_in_dir) {
-    if (legs_in_dir[key] == 0) ++n[c];
-  }
-  for (int c = 0; c < C; ++c) {
-    for (int k = 0; k < n[c]; ++k) result.legs.push_back(result.candidates[c]);
-  }
+  const auto M = CandidateInformation(ctx, result.candidates);
+  const int N = LegCount(ctx, o, M);
+  if (!SolveWeights(ctx, o, M, N, prior, &result)) return result;
+  // 3. Exact design.
+  result.legs = ExactDesign(result.candidates, result.weights, N);
   if (result.legs.empty()) {
     result.status = DesignStatus::kFailed;
     result.message =
         "approximate design without support (no positive weight): " + result.summary.BriefReport();
     return result;
   }
-
   // 4. Pack legs into trials: alternate directions, compatible thrusters, within the pool.
-  std::vector<SteadyLeg> remaining = result.legs;
-  std::sort(remaining.begin(), remaining.end(),
-            [](const SteadyLeg& a, const SteadyLeg& b) { return a.travel > b.travel; });
-  int trial_no = 0;
-  const int np = ctx.model().num_parameters();
-  result.information.assign(ctx.design_thetas().size(), Eigen::MatrixXd::Zero(np, np));
-  while (!remaining.empty()) {
-    std::vector<SteadyLeg> chain = {remaining.front()};
-    remaining.erase(remaining.begin());
-    std::map<int, int> signs = ThrusterSigns(v, chain[0].mapping, chain[0].force);
-    std::vector<model::SegmentDesign> segs = {
-        {chain[0].force, chain[0].duration(), chain[0].mapping}};
-    double total = chain[0].duration();
-    std::vector<bool> tried(remaining.size(), false);
-    while (static_cast<int>(chain.size()) < o.max_legs_per_trial) {
-      const double dir = chain.back().speed;
-      int pick = -1;
-      for (std::size_t r = 0; r < remaining.size(); ++r) {
-        if (tried[r] || remaining[r].speed * dir >= 0) continue;
-        if (!Compatible(signs, ThrusterSigns(v, remaining[r].mapping, remaining[r].force)))
-          continue;
-        if (pick < 0 || std::abs(remaining[r].travel - chain.back().travel) <
-                            std::abs(remaining[pick].travel - chain.back().travel)) {
-          pick = static_cast<int>(r);
-        }
-      }
-      if (pick < 0) break;
-      tried[pick] = true;
-      SteadyLeg leg = remaining[pick];
-      const SteadyPlanner::Timing t = sp.TimeLeg(segs, leg, t_max);
-      if (!t.settled) continue;
-      leg.settle_s = t.settle_s;
-      leg.hold_s = t.hold_s;
-      if (total + leg.duration() > t_max) continue;
-      if (t.travel_hi - t.travel_lo > avail - kTravelSafety) continue;
-      std::vector<model::SegmentDesign> trial_segs = segs;
-      trial_segs.push_back({leg.force, leg.duration(), leg.mapping});
-      model::TrialDesign d;
-      d.dof = ctx.dof();
-      d.kind = model::TrialKind::kSegments;
-      d.mapping = chain[0].mapping;
-      d.segments = trial_segs;
-      d.duration = total + leg.duration();
-      if (!ctx.Check(d).feasible) continue;
-      chain.push_back(leg);
-      segs = trial_segs;
-      total += leg.duration();
-      for (const auto& [th, s] : ThrusterSigns(v, leg.mapping, leg.force)) signs[th] = s;
-      remaining.erase(remaining.begin() + pick);
-      tried.erase(tried.begin() + pick);
-    }
-    PlannedTrial trial;
-    model::TrialDesign& d = trial.design;
-    d.id = id_prefix + "-" + std::to_string(++trial_no);
-    d.dof = ctx.dof();
-    d.mapping = chain[0].mapping;
-    d.duration = total;
-    if (chain.size() == 1) {
-      d.kind = model::TrialKind::kSteady;
-      d.force = chain[0].force;
-    } else {
-      d.kind = model::TrialKind::kSegments;
-      for (auto s : segs) {
-        if (s.mapping == d.mapping) s.mapping.clear();  // the trial's mapping
-        d.segments.push_back(s);
-      }
-    }
-    const TrialCheck check = ctx.Check(d);
-    trial.travel = check.travel;
-    trial.thrust_min = check.thrust_min;
-    const auto info = ctx.Information(d);
-    for (std::size_t j = 0; j < info.size(); ++j) result.information[j] += info[j];
-    result.trials.push_back(trial);
-    result.checks.push_back(check);
-  }
-
-  std::vector<Eigen::MatrixXd> total = result.information;
-  for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
-    if (prior[j].size() == total[j].size()) total[j] += prior[j];
-  }
-  std::vector<int> interest;
-  for (int i : InformedParameters(RelativeInformation(total[0], ctx.design_thetas()[0]))) {
-    if (i != 0) interest.push_back(i);
-  }
-  bool singular = false;
-  result.criterion_per_point = ctx.CriterionValues(total, o.criterion, interest, &singular);
-  result.criterion = Aggregate(ctx.options().robustness, result.criterion_per_point);
-  bool all_ok = true;
-  for (const auto& c : result.checks) all_ok = all_ok && c.feasible;
-  if (!all_ok) {
-    result.status = DesignStatus::kInfeasible;
-    result.message = "a packed steady trial violates a hard constraint";
-  } else {
-    result.status = DesignStatus::kOk;
-    if (singular) {
-      result.notes.push_back(dof +
-                             ": the steady runs alone leave a combination of drag, bias "
-                             "and eta undetermined; the other trials must resolve it");
-    }
-    if (!infeasible.str().empty()) {
-      result.notes.push_back(dof +
-                             ": some directions cannot be run in this pool:" + infeasible.str());
-    }
-  }
+  PackTrials(ctx, o, id_prefix, &result);
+  Summarise(ctx, o, prior, cands.infeasible, &result);
   return result;
 }
 

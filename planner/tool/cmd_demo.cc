@@ -165,7 +165,7 @@ void ShowAprioriSchedule(const model::Truth& truth, const model::Pool& pool) {
   so.dofs = {model::Dof::kSurge};
   const planner::ScheduleResult schedule = planner::PlanSchedule(truth.vehicle, pool, so);
   std::cout << "1. A priori surge schedule in pool '" << pool.name << "' ("
-            << pool.Available(model::Dof::kSurge) << " m free), robust over m in ["
+            << pool.FreeTravel(model::Dof::kSurge) << " m free), robust over m in ["
             << truth.vehicle.InertiaBounds(model::Dof::kSurge)[0] << ", "
             << truth.vehicle.InertiaBounds(model::Dof::kSurge)[1] << "] kg:\n";
   for (const auto& t : schedule.schedule.trials) {

@@ -7,10 +7,12 @@
 #include <cmath>
 #include <filesystem>
 
+#include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/io.h"
 #include "uuvplan/model/simulator.h"
+#include "uuvplan/model/util/seed.h"
 #include "uuvplan/model/virtual_pool.h"
 
 namespace uuvplan::model {
@@ -212,6 +214,71 @@ TEST(VehicleWriterTest, RoundTripsTheRomeoCase) {
   EXPECT_EQ(w.sensors.size(), v.sensors.size());
   EXPECT_EQ(w.priors.size(), v.priors.size());
   fs::remove(out);
+}
+
+// The builder's trial i is RunVirtualTrial with StreamSeed(seed, i), at the campaign clock.
+TEST(CampaignBuilderTest, TrialIDrawsFromStreamSeedAtTheCampaignClock) {
+  const Truth truth = RomeoSurgeTruth();
+  TrialDesign second = PaperSurgeSine();
+  second.id = "surge_sine_2";
+  VirtualCampaignOptions o;
+  o.seed = 7;
+  o.pause_s = 30.0;
+  o.uses = {TrialUse::kFit, TrialUse::kValidate};
+  const Campaign c = BuildVirtualCampaign(truth, {PaperSurgeSine(), second}, o);
+  ASSERT_EQ(c.trials.size(), 2u);
+  EXPECT_EQ(c.trials[1].file, "surge_sine_2");
+  EXPECT_EQ(c.trials[1].use, TrialUse::kValidate);
+  EXPECT_DOUBLE_EQ(c.trials[1].start, 78.0 + 30.0);
+  VirtualPoolOptions one;
+  one.seed = StreamSeed(7, 1);
+  const TrialLog expected = RunVirtualTrial(truth, second, 78.0 + 30.0, one);
+  const auto& got = c.trials[1].log.position[Index(Dof::kSurge)];
+  const auto& want = expected.position[Index(Dof::kSurge)];
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    if (std::isnan(want[i])) {
+      EXPECT_TRUE(std::isnan(got[i]));
+    } else {
+      EXPECT_EQ(got[i], want[i]);
+    }
+  }
+}
+
+TEST(TrialDesignTest, AnswersForceMappingAndPushes) {
+  TrialDesign sine = PaperSurgeSine();
+  EXPECT_DOUBLE_EQ(sine.NominalForce(0.0), 35.0);
+  EXPECT_NEAR(sine.NominalForce(26.0 / 4), 60.0, 1e-9);
+  EXPECT_EQ(sine.MappingAt(10.0), "surge-front");
+  EXPECT_TRUE(sine.Pushes("surge-front", +1));
+  EXPECT_FALSE(sine.Pushes("surge-front", -1));  // 35 - 25 > 0: no reversal
+  TrialDesign legs;
+  legs.kind = TrialKind::kSegments;
+  legs.mapping = "surge-front";
+  legs.segments = {{20.0, 10.0, ""}, {-15.0, 5.0, "surge-rear"}};
+  legs.duration = 15.0;
+  EXPECT_DOUBLE_EQ(legs.NominalForce(9.99), 20.0);
+  EXPECT_DOUBLE_EQ(legs.NominalForce(10.0), -15.0);  // a segment starts at its start time
+  EXPECT_EQ(legs.MappingAt(12.0), "surge-rear");
+  EXPECT_EQ(legs.MappingAt(1.0), "surge-front");
+  ASSERT_EQ(legs.Demands().size(), 2u);
+  EXPECT_EQ(legs.Demands()[1].mapping, "surge-rear");
+  EXPECT_TRUE(legs.Pushes("surge-rear", -1));
+  EXPECT_FALSE(legs.Pushes("surge-front", -1));
+  EXPECT_EQ(TrialKindName(TrialKind::kSegments), "segments");
+}
+
+TEST(PoolTest, WallToWallAndFreeTravel) {
+  Pool pool;
+  pool.length = 20;
+  pool.width = 8;
+  pool.depth = 4;
+  pool.margin = 1;
+  EXPECT_DOUBLE_EQ(pool.WallToWall(Dof::kSway), 8.0);
+  EXPECT_DOUBLE_EQ(pool.FreeTravel(Dof::kSurge), 18.0);
+  EXPECT_DOUBLE_EQ(pool.WallToWallFor(pool.FreeTravel(Dof::kHeave)), 4.0);
+  EXPECT_TRUE(std::isinf(pool.FreeTravel(Dof::kYaw)));
+  EXPECT_EQ(Pool::SideName(Dof::kHeave), "depth");
 }
 
 }  // namespace

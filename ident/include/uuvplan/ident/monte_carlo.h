@@ -19,10 +19,10 @@
 
 namespace uuvplan::ident {
 
-/// A campaign of virtual trials held in memory (no files): trial i is design i run on the
-/// truth with its own seed (splitmix64 of `seed` and i), from rest, the campaign clock
-/// advancing by the trial's duration + pause_s. `uses` (may be shorter) marks trials
-/// validate; default fit.
+/// model::BuildVirtualCampaign with these options (a shorthand for tests and Monte Carlo):
+/// trial i is design i run on the truth with seed model::StreamSeed(seed, i), from rest, the
+/// campaign clock advancing by the trial's duration + pause_s; `uses` (may be shorter) marks
+/// trials validate, default fit.
 model::Campaign VirtualCampaign(const model::Truth& truth,
                                 const std::vector<model::TrialDesign>& designs,
                                 std::uint64_t seed,

@@ -5,7 +5,9 @@
 // percentile error 100·σ/|θ| (seed 000 §III-A) below the target.
 //
 // Thin orchestration: identification is ident::Identify, the a priori schedule PlanSchedule,
-// the sequential design DesignNextTrial (schedule_planner.h), the trials model::RunVirtualTrial.
+// the sequential design DesignNextTrial (schedule_planner.h), the trials
+// model::VirtualCampaignBuilder. Files: design_loop.cc (next, loop), next_trial_policy.cc (which
+// DOF, which trial), loop_progress.cc (parameters of interest and their errors).
 // What this file decides:
 //   - parameters of interest per DOF (contract issue #5: "m, k (or kq where significant) and
 //     every η"): m; kq when the identification finds it significant (percentile error below
@@ -117,7 +119,7 @@ NextStepResult NextStep(const model::Campaign& campaign, const model::Pool& pool
 struct LoopOptions {
   DesignLoopOptions step;
   int budget = 40;                ///< most trials to run before giving up
-  std::uint64_t seed = 1;         ///< trial i draws from splitmix64(seed ^ splitmix64(i + 1))
+  std::uint64_t seed = 1;         ///< trial i draws from model::StreamSeed(seed, i)
   double command_rate_hz = 20.0;  ///< virtual pool's command rate (VirtualPoolOptions)
 
   bool IsValid(std::string* error) const;
@@ -167,11 +169,5 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
 
 /// Pool time of trials run in this order: Σ durations + pause_s between consecutive trials.
 double PoolTime(const std::vector<model::TrialDesign>& designs, double pause_s);
-
-/// Runs `design` on the virtual vehicle as trial `index` of a campaign (seed mixed as in
-/// model::SimulateCampaign, headings unwrapped as when the CSV is read) and returns the entry.
-model::TrialEntry RunVirtualEntry(const model::Truth& truth, const model::TrialDesign& design,
-                                  int index, double start, std::uint64_t seed,
-                                  double command_rate_hz);
 
 }  // namespace uuvplan::planner

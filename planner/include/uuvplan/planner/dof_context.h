@@ -111,7 +111,7 @@ class DofContext {
   const std::vector<Eigen::VectorXd>& design_thetas() const { return design_thetas_; }
   const std::vector<Eigen::VectorXd>& check_thetas() const { return check_thetas_; }
   /// Free travel along the DOF (m), infinite for rotations.
-  double available() const { return pool_.Available(dof_); }
+  double available() const { return pool_.FreeTravel(dof_); }
   double step_s() const { return step_s_; }
   /// Shortest and longest linearised time constants m/k_L over the box (s).
   double shortest_time_constant() const { return tc_min_; }

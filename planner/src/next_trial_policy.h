@@ -1,0 +1,64 @@
+// The policy of the design–identify loop (design_loop.h): which DOF gets the next trial and
+// which trial it is — the a priori schedule's next one, or DesignNextTrial's. Shared by
+// NextStep (`uuvplan next`) and RunLoop; internal to the planner library.
+#pragma once
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "uuvplan/ident/identify.h"
+#include "uuvplan/model/campaign.h"
+#include "uuvplan/model/dof.h"
+#include "uuvplan/model/pool.h"
+#include "uuvplan/model/truth.h"
+#include "uuvplan/planner/design_loop.h"
+
+namespace uuvplan::planner::internal {
+
+/// Whether the vehicle has a sensor and a mapping on `dof`.
+bool Plannable(const model::Vehicle& v, model::Dof dof);
+/// Throws model::InputError (at `where`) unless Plannable, saying what is missing.
+void RequirePlannable(const model::Vehicle& v, model::Dof dof, const std::string& where);
+
+/// (mapping, direction ±1) of an installation coefficient "eta.<mapping>.<pos|neg>".
+std::pair<std::string, int> EtaDirection(const std::string& name);
+
+/// State shared by the steps of one loop (or the single step of `next`): the a priori schedule
+/// of each DOF, planned once.
+struct Planner {
+  const model::Vehicle& vehicle;
+  const model::Pool& pool;
+  const DesignLoopOptions& options;
+  std::map<model::Dof, ScheduleResult> schedules;
+
+  const ScheduleResult& APriori(model::Dof dof);
+};
+
+/// What the policy decided for the next trial (the fields of NextStepResult it fills).
+struct Decision {
+  NextStatus status = NextStatus::kInfeasible;
+  std::string message;
+  std::vector<DofProgress> progress;
+  model::Dof dof = model::Dof::kSurge;
+  std::string source;
+  PlannedTrial trial;
+  PredictedPrecision predicted;
+  std::vector<std::string> notes;
+};
+
+/// The next trial of `campaign` among `dofs` given its identification `estimates`: the DOF
+/// furthest above the target (ties in the order of `dofs`) that can be given a trial.
+Decision Decide(Planner& planner, const model::Campaign& campaign,
+                const std::vector<model::Dof>& dofs, const ident::IdentifyResult& estimates);
+
+/// `asked`, or when it is empty every DOF the truth has parameters for (what the loop and the
+/// paper procedure run on a virtual vehicle).
+std::vector<model::Dof> DofsOrTruths(const model::Truth& truth,
+                                     const std::vector<model::Dof>& asked);
+
+/// Fit trials of `dof` in the campaign.
+int FitTrials(const model::Campaign& campaign, model::Dof dof);
+
+}  // namespace uuvplan::planner::internal
