@@ -27,7 +27,7 @@
 
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/monte_carlo.h"  // TrueParameter
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/virtual_pool.h"
 
@@ -41,7 +41,7 @@ double Seconds(Clock::time_point a, Clock::time_point b) {
 }
 
 model::Truth CaseTruth(const std::string& name) {
-  return model::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + name + "/truth.yaml");
+  return io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + name + "/truth.yaml");
 }
 
 model::TrialDesign Segments(const std::string& id, model::Dof dof, const std::string& mapping,
@@ -125,7 +125,7 @@ int TimeIdentify(long rows, double rate) {
   for (int run = 0; run < 5; ++run) {
     const std::clock_t cpu0 = std::clock();
     const auto a = Clock::now();
-    const model::Campaign c = model::ReadCampaign(campaign_path);
+    const model::Campaign c = io::ReadCampaign(campaign_path);
     const auto b = Clock::now();
     result = ident::Identify(c, ident::IdentifyOptions{});
     const auto e = Clock::now();
@@ -137,7 +137,7 @@ int TimeIdentify(long rows, double rate) {
     }
   }
   {
-    const model::Campaign c = model::ReadCampaign(campaign_path);
+    const model::Campaign c = io::ReadCampaign(campaign_path);
     const auto a = Clock::now();
     const ident::TrialData d =
         ident::PrepareTrial(c.trials[0], 0, c.vehicle, ident::TrialDataOptions{});

@@ -12,7 +12,8 @@
 
 #include "command.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/planner/pool_check.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/schedule_planner.h"
@@ -29,8 +30,8 @@ struct CheckPoolCliOptions {
 };
 
 int RunCheckPool(const CheckPoolCliOptions& o) {
-  const model::Vehicle vehicle = model::ReadVehicle(o.vehicle);
-  const model::Pool pool = model::ReadPool(o.pool);
+  const model::Vehicle vehicle = io::ReadVehicle(o.vehicle);
+  const model::Pool pool = io::ReadPool(o.pool);
   planner::PoolCheckOptions po;
   po.schedule.planner.max_trial_duration_s = o.max_duration_s;
   planner::Schedule plan;
@@ -38,7 +39,7 @@ int RunCheckPool(const CheckPoolCliOptions& o) {
   bool own_partial = false;
   planner::ScheduleResult own;
   if (!o.plan.empty()) {
-    plan = planner::ReadScheduleJson(o.plan);
+    plan = io::ReadScheduleJson(o.plan);
     for (std::size_t i = 0; i < plan.trials.size(); ++i) {
       const auto& d = plan.trials[i].design;
       const std::string where = o.plan + ": trials[" + std::to_string(i) + "]";
@@ -136,7 +137,7 @@ int RunCheckPool(const CheckPoolCliOptions& o) {
       j["not_planned"] = missing;
     }
     if (r.has_alternative) {
-      nlohmann::json alt = planner::ScheduleToJson(r.alternative.schedule);
+      nlohmann::json alt = io::ScheduleToJson(r.alternative.schedule);
       alt["status"] = std::string(planner::PlanStatusName(r.alternative.status));
       nlohmann::json loss = nlohmann::json::object();
       for (const auto& [dof, l] : r.information_loss) loss[std::string(model::DofName(dof))] = l;
@@ -146,7 +147,7 @@ int RunCheckPool(const CheckPoolCliOptions& o) {
     if (o.json == "-") {
       std::cout << text;
     } else {
-      model::WriteFileAtomically(o.json, text);
+      io::WriteFileAtomically(o.json, text);
     }
   }
   return feasible ? kExitOk : kExitActionNeeded;

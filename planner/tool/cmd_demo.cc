@@ -21,9 +21,11 @@
 
 #include "command.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/virtual_pool.h"
-#include "diagnosis_json.h"
+#include "diagnosis_report.h"
+#include "uuvplan/io/diagnosis_json.h"
 #include "uuvplan/ident/diagnosis.h"
 #include "uuvplan/planner/design_loop.h"
 #include "uuvplan/planner/pool_check.h"
@@ -100,7 +102,7 @@ std::size_t CountSamples(const std::vector<double>& column) {
 
 int RunDemo(const DemoOptions& o) {
   const std::string truth_path = (fs::path(o.cases) / "truth.yaml").string();
-  const model::Truth truth = model::ReadTruth(truth_path);
+  const model::Truth truth = io::ReadTruth(truth_path);
   if (truth.vehicle.MappingIndex(kMapping) < 0 || truth.dofs.count(model::Dof::kHeave) == 0) {
     throw InputError(truth_path,
                      "the demo needs ROMEO's heave truth (dofs.heave.params) and its "
@@ -115,7 +117,7 @@ int RunDemo(const DemoOptions& o) {
 
   std::cout << "uuvplan demo: ROMEO (seed 000), 450 kg open-frame ROV\n\n";
   const std::string pool_path = (fs::path(o.cases) / "pool.yaml").string();
-  const model::Pool pool = model::ReadPool(pool_path);
+  const model::Pool pool = io::ReadPool(pool_path);
   std::cout << std::fixed << std::setprecision(3);
 
   // 1. The a priori schedule for surge and whether the pool hosts it.
@@ -206,13 +208,13 @@ int RunDemo(const DemoOptions& o) {
   // here is written: travel, thrust_min and predicted precision are the planner's to compute.
   nlohmann::json trials = nlohmann::json::array();
   for (const auto& t : plan) {
-    nlohmann::json j = planner::TrialToJson(t);
+    nlohmann::json j = io::TrialToJson(t);
     j.erase("travel");
     j.erase("thrust_min");
     trials.push_back(j);
   }
   const std::string plan_path = (fs::path(out) / "plan.json").string();
-  model::WriteFileAtomically(
+  io::WriteFileAtomically(
       plan_path, nlohmann::json{{"trials", trials},
                                 {"note",
                                  "built by `uuvplan demo` (seed 000 §IV-D, Fig. 4); no "

@@ -8,10 +8,11 @@
 #include <memory>
 
 #include "command.h"
-#include "diagnosis_json.h"
+#include "diagnosis_report.h"
+#include "uuvplan/io/diagnosis_json.h"
 #include "uuvplan/ident/diagnosis.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::tool {
 namespace {
@@ -23,7 +24,7 @@ struct DiagnoseCommandOptions {
 };
 
 int Run(const DiagnoseCommandOptions& co) {
-  const model::Campaign campaign = model::ReadCampaign(co.campaign);
+  const model::Campaign campaign = io::ReadCampaign(co.campaign);
   ident::DiagnoseOptions o;
   for (const auto& d : co.dofs) {
     const auto dof = model::ParseDof(d);
@@ -34,11 +35,11 @@ int Run(const DiagnoseCommandOptions& co) {
   std::ostream& out = co.json == "-" ? std::cerr : std::cout;
   PrintDiagnosis(result, out);
   if (!co.json.empty()) {
-    const std::string text = DiagnosisJson(result).dump(2) + "\n";
+    const std::string text = io::DiagnosisJson(result).dump(2) + "\n";
     if (co.json == "-") {
       std::cout << text;
     } else {
-      model::WriteFileAtomically(co.json, text);
+      io::WriteFileAtomically(co.json, text);
     }
   }
   // A breakdown exists for each DOF whose standard model was fitted, i.e. diagnosed.

@@ -10,10 +10,11 @@
 #include <vector>
 
 #include "command.h"
-#include "ident_json.h"
+#include "identify_table.h"
+#include "uuvplan/io/identify_json.h"
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::tool {
 namespace {
@@ -66,7 +67,7 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
 }
 
 int RunIdentify(const IdentifyCommandOptions& co) {
-  const model::Campaign campaign = model::ReadCampaign(co.campaign);
+  const model::Campaign campaign = io::ReadCampaign(co.campaign);
   ident::IdentifyOptions o;
   for (const std::string& name : co.dofs) {
     const auto dof = model::ParseDof(name);
@@ -92,11 +93,11 @@ int RunIdentify(const IdentifyCommandOptions& co) {
       << campaign.trials.size() << " trials)\n\n";
   PrintIdentifyTable(result, out);
   if (!co.json.empty()) {
-    const std::string text = IdentifyJson(result).dump(2) + "\n";
+    const std::string text = io::IdentifyJson(result).dump(2) + "\n";
     if (co.json == "-") {
       std::cout << text;
     } else {
-      model::WriteFileAtomically(co.json, text);
+      io::WriteFileAtomically(co.json, text);
     }
   }
   return result.status == ident::IdentifyStatus::kFailed ? kExitActionNeeded : kExitOk;

@@ -18,10 +18,12 @@
 #include <vector>
 
 #include "command.h"
-#include "ident_json.h"
+#include "identify_table.h"
+#include "uuvplan/io/identify_json.h"
 #include "loop_report.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/planner/design_loop.h"
 
 namespace uuvplan::tool {
@@ -89,7 +91,7 @@ json IterationJson(const planner::LoopIteration& it) {
     for (const auto& e : estimates) p[e.name] = {{"value", Num(e.value)}, {"sigma", Num(e.sigma)}};
     params[std::string(model::DofName(dof))] = p;
   }
-  return {{"trial", planner::TrialToJson(it.trial)},
+  return {{"trial", io::TrialToJson(it.trial)},
           {"params", params},
           {"dof", std::string(model::DofName(it.dof))},
           {"source", it.source},
@@ -108,8 +110,8 @@ int RunLoopCommand(const LoopCliOptions& o) {
     throw InputError("--budget",
                      "expected a number of trials >= 1, got " + std::to_string(o.budget));
   }
-  const model::Truth truth = model::ReadTruth(o.truth);
-  const model::Pool pool = model::ReadPool(o.pool);
+  const model::Truth truth = io::ReadTruth(o.truth);
+  const model::Pool pool = io::ReadPool(o.pool);
   planner::LoopOptions lo;
   lo.step.target_percent = o.target;
   lo.budget = o.budget;
@@ -161,7 +163,7 @@ int RunLoopCommand(const LoopCliOptions& o) {
                     {"seed", o.seed},
                     {"dof_pool_time", dof_time},
                     {"progress", ProgressJson(r.progress)},
-                    {"estimates", IdentifyJson(r.estimates)}};
+                    {"estimates", io::IdentifyJson(r.estimates)}};
     WriteJson(o.json, j);
   }
   return r.converged ? kExitOk : kExitActionNeeded;

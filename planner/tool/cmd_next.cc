@@ -14,10 +14,12 @@
 #include <vector>
 
 #include "command.h"
-#include "ident_json.h"
+#include "identify_table.h"
+#include "uuvplan/io/identify_json.h"
 #include "loop_report.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/planner/design_loop.h"
 
 namespace uuvplan::tool {
@@ -53,8 +55,8 @@ int RunNext(const NextCliOptions& o) {
   if (!(o.target > 0)) {
     throw InputError("--target", "expected a percentile error > 0 (%), got " + Str(o.target));
   }
-  const model::Campaign campaign = model::ReadCampaign(o.campaign);
-  const model::Pool pool = model::ReadPool(o.pool);
+  const model::Campaign campaign = io::ReadCampaign(o.campaign);
+  const model::Pool pool = io::ReadPool(o.pool);
   planner::DesignLoopOptions options;
   options.dofs = ParseDofs(o.dofs);
   options.target_percent = o.target;
@@ -101,8 +103,8 @@ int RunNext(const NextCliOptions& o) {
   }
   if (!o.json.empty()) {
     nlohmann::json j;
-    j["estimates"] = IdentifyJson(r.estimates);
-    j["trial"] = r.status == planner::NextStatus::kTrial ? planner::TrialToJson(r.trial)
+    j["estimates"] = io::IdentifyJson(r.estimates);
+    j["trial"] = r.status == planner::NextStatus::kTrial ? io::TrialToJson(r.trial)
                                                          : nlohmann::json(nullptr);
     j["predicted"] = r.status == planner::NextStatus::kTrial ? PredictedJson(r.dof, r.predicted)
                                                              : nlohmann::json::object();

@@ -16,7 +16,8 @@
 
 #include "command.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/schedule_planner.h"
 
@@ -109,8 +110,8 @@ void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
 }
 
 int RunSchedule(const ScheduleCliOptions& o) {
-  const model::Vehicle vehicle = model::ReadVehicle(o.vehicle);
-  const model::Pool pool = model::ReadPool(o.pool);
+  const model::Vehicle vehicle = io::ReadVehicle(o.vehicle);
+  const model::Pool pool = io::ReadPool(o.pool);
   planner::ScheduleOptions so;
   so.planner.robustness = ParseRobustness(o.robust);
   so.planner.max_trial_duration_s = o.max_duration_s;
@@ -140,7 +141,7 @@ int RunSchedule(const ScheduleCliOptions& o) {
   const bool to_stdout = o.json == "-";
   PrintSchedule(r, vehicle, pool, to_stdout ? std::cerr : std::cout);
   if (!o.json.empty()) {
-    nlohmann::json j = planner::ScheduleToJson(r.schedule);
+    nlohmann::json j = io::ScheduleToJson(r.schedule);
     j["status"] = std::string(planner::PlanStatusName(r.status));
     nlohmann::json notes = nlohmann::json::array();
     nlohmann::json missing = nlohmann::json::object();
@@ -161,7 +162,7 @@ int RunSchedule(const ScheduleCliOptions& o) {
     if (to_stdout) {
       std::cout << text;
     } else {
-      model::WriteFileAtomically(o.json, text);
+      io::WriteFileAtomically(o.json, text);
     }
   }
   return r.status == planner::PlanStatus::kOk ? kExitOk : kExitActionNeeded;

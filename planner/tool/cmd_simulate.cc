@@ -15,7 +15,8 @@
 
 #include "command.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/virtual_pool.h"
 #include "uuvplan/planner/schedule.h"
 
@@ -151,8 +152,8 @@ int RunSimulate(const SimulateOptions& options) {
                        "is overwritten)");
     }
   }
-  model::Truth truth = model::ReadTruth(o.truth);
-  const planner::Schedule plan = planner::ReadScheduleJson(o.plan);
+  model::Truth truth = io::ReadTruth(o.truth);
+  const planner::Schedule plan = io::ReadScheduleJson(o.plan);
   CheckPlanAgainstTruth(plan, truth, o.plan, o.truth);
   if (!std::isnan(o.step_s)) truth.integration_step_s = o.step_s;
 
@@ -214,7 +215,7 @@ int RunSimulate(const SimulateOptions& options) {
     if (o.json == "-") {
       std::cout << j.dump(2) << "\n";
     } else {
-      model::WriteFileAtomically(o.json, j.dump(2) + "\n");
+      io::WriteFileAtomically(o.json, j.dump(2) + "\n");
     }
   }
   return kExitOk;

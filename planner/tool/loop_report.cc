@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "uuvplan/ident/monte_carlo.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::tool {
 namespace {
@@ -114,7 +114,7 @@ void WriteJson(const std::string& path, const json& j) {
   if (path == "-") {
     std::cout << text;
   } else {
-    model::WriteFileAtomically(path, text);
+    io::WriteFileAtomically(path, text);
   }
 }
 

@@ -6,10 +6,13 @@
 #include <filesystem>
 
 #include "io_test_util.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::model {
 namespace {
+
+using io::ReadCampaign;
+using io::WriteCampaignYaml;
 
 using ::testing::AllOf;
 using testing::At;
