@@ -55,7 +55,8 @@ bool WriteAll(int fd, const std::string& text) {
 void WriteFileAtomically(const std::string& path, const std::string& text) {
   std::string temp;
   const int fd = CreateTemporary(path, &temp);
-  if (fd < 0) throw model::InputError(path, "cannot create a temporary file beside it: " + ErrnoText());
+  if (fd < 0)
+    throw model::InputError(path, "cannot create a temporary file beside it: " + ErrnoText());
   const bool written = WriteAll(fd, text);
   const int write_errno = errno;
   const bool closed = ::close(fd) == 0;

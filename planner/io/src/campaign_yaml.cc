@@ -1,5 +1,7 @@
 // The campaign file (contract §Campaign, docs/formats.md): the vehicle, the pool and the
 // trials in the order they were run, each with its log; and its writer.
+#include "uuvplan/io/campaign_yaml.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -7,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/io/files.h"
 #include "uuvplan/io/pool_yaml.h"
 #include "uuvplan/io/trial_log_csv.h"
@@ -77,10 +78,10 @@ TrialEntry ParseTrial(const Value& v, const Vehicle& vehicle, const TrialEntry* 
     trial.ballast_steps = WholeNonNegative(x);
   }
   if (const Value x = m.Optional("use"); !x.absent()) {
-    trial.use = Choice(x, {TrialUseName(TrialUse::kFit), TrialUseName(TrialUse::kValidate)},
-                       "a use") == 0
-                    ? TrialUse::kFit
-                    : TrialUse::kValidate;
+    trial.use =
+        Choice(x, {TrialUseName(TrialUse::kFit), TrialUseName(TrialUse::kValidate)}, "a use") == 0
+            ? TrialUse::kFit
+            : TrialUse::kValidate;
   }
   if (const Value x = m.Optional("start"); !x.absent()) {
     trial.start = AnyNumber(x);
@@ -165,8 +166,9 @@ fs::path NewCampaignDirectory(const std::string& dir) {
   if (out.filename().empty()) out = out.parent_path();
   std::error_code ec;
   if (fs::exists(out) && !fs::is_empty(out, ec)) {
-    throw InputError(dir, "output directory exists and is not empty; choose a new --out "
-                          "(nothing is overwritten)");
+    throw InputError(dir,
+                     "output directory exists and is not empty; choose a new --out "
+                     "(nothing is overwritten)");
   }
   return out;
 }

@@ -13,7 +13,9 @@ using nlohmann::json;
 json GroupsJson(const std::vector<ident::ErrorGroup>& groups) {
   json out = json::array();
   for (const auto& g : groups) {
-    out.push_back({{"label", g.label}, {"relative", g.relative}, {"velocity_mae", g.mae},
+    out.push_back({{"label", g.label},
+                   {"relative", g.relative},
+                   {"velocity_mae", g.mae},
                    {"samples", g.samples}});
   }
   return out;
@@ -60,11 +62,13 @@ json DiagnosisJson(const ident::DiagnosisResult& r) {
   out["tests"] = tests;
   json breakdown = json::object();
   for (const auto& b : r.breakdowns) {
-    breakdown[std::string(model::DofName(b.dof))] = {
-        {"by_thrust", GroupsJson(b.by_thrust)},   {"by_motion", GroupsJson(b.by_motion)},
-        {"by_speed", GroupsJson(b.by_speed)},     {"by_command", GroupsJson(b.by_command)},
-        {"lag_s", b.lag_s},                       {"drift_per_hour", b.drift_per_hour},
-        {"velocity_mae", b.velocity_mae}};
+    breakdown[std::string(model::DofName(b.dof))] = {{"by_thrust", GroupsJson(b.by_thrust)},
+                                                     {"by_motion", GroupsJson(b.by_motion)},
+                                                     {"by_speed", GroupsJson(b.by_speed)},
+                                                     {"by_command", GroupsJson(b.by_command)},
+                                                     {"lag_s", b.lag_s},
+                                                     {"drift_per_hour", b.drift_per_hour},
+                                                     {"velocity_mae", b.velocity_mae}};
   }
   out["breakdown"] = breakdown;
   out["warnings"] = r.warnings;

@@ -12,6 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/io/json_value.h"
@@ -22,10 +25,11 @@ namespace {
 using nlohmann::json;
 
 json ParamJson(const ident::ParameterEstimate& e, bool reliable) {
-  json j = {{"value", JsonNumber(e.value)},
-            {"sigma", JsonNumber(e.state == ident::ParameterState::kEstimated ? e.sigma : std::nan(""))},
-            {"significant", e.significant},
-            {"state", std::string(ident::ParameterStateName(e.state))}};
+  json j = {
+      {"value", JsonNumber(e.value)},
+      {"sigma", JsonNumber(e.state == ident::ParameterState::kEstimated ? e.sigma : std::nan(""))},
+      {"significant", e.significant},
+      {"state", std::string(ident::ParameterStateName(e.state))}};
   if (e.state == ident::ParameterState::kEstimated) {
     j["percentile_error"] = JsonNumber(e.percentile_error());
   }
@@ -59,10 +63,11 @@ json ResidualJson(const ident::ResidualAnalysis& a) {
           {"bound95", JsonNumber(a.bound95)},
           {"lag_step", JsonNumber(a.lag_step_s)},
           {"autocorrelation", acf},
-          {"histogram", {{"edges", edges},
-                         {"counts", counts},
-                         {"skewness", JsonNumber(a.histogram.skewness)},
-                         {"excess_kurtosis", JsonNumber(a.histogram.excess_kurtosis)}}}};
+          {"histogram",
+           {{"edges", edges},
+            {"counts", counts},
+            {"skewness", JsonNumber(a.histogram.skewness)},
+            {"excess_kurtosis", JsonNumber(a.histogram.excess_kurtosis)}}}};
 }
 
 // {"trials": {<file>: v}, "fit", "validate", "overall"} of one fit figure.
@@ -93,10 +98,10 @@ json FitJson(const ident::FitSummary& f) {
     rms_trials[t.name] = JsonNumber(t.position_rms);
     trials.push_back(FitTrialJson(t));
   }
-  return {{"velocity_mae", FigureJson(mae_trials, f.velocity_mae_fit, f.velocity_mae_validate,
-                                      f.velocity_mae_all)},
-          {"position_rms", FigureJson(rms_trials, f.position_rms_fit, f.position_rms_validate,
-                                      f.position_rms_all)},
+  return {{"velocity_mae",
+           FigureJson(mae_trials, f.velocity_mae_fit, f.velocity_mae_validate, f.velocity_mae_all)},
+          {"position_rms",
+           FigureJson(rms_trials, f.position_rms_fit, f.position_rms_validate, f.position_rms_all)},
           {"trials", trials}};
 }
 
@@ -110,15 +115,26 @@ json MatrixJson(const Eigen::MatrixXd& m) {
   return rows;
 }
 
+// What the linear least-squares stages (steady state, one-step) both report. JSON objects keep
+// their keys sorted, so the order in which a stage adds its own keys does not show.
+json LinearStageJson(std::string status, const std::string& message, double condition_number,
+                     const std::vector<std::string>& not_identifiable,
+                     const std::vector<std::string>& not_excited,
+                     const std::vector<ident::ParameterEstimate>& estimates) {
+  return {{"status", std::move(status)},
+          {"message", message},
+          {"condition_number", JsonNumber(condition_number)},
+          {"not_identifiable", not_identifiable},
+          {"not_excited", not_excited},
+          {"params", EstimatesJson(estimates)}};
+}
+
 json SteadyStageJson(const ident::SteadyStateResult& r) {
-  return {{"status", std::string(ident::SteadyStatusName(r.status))},
-          {"message", r.message},
-          {"segments", r.num_points},
-          {"condition_number", JsonNumber(r.condition_number)},
-          {"sigma2", JsonNumber(r.sigma2)},
-          {"not_identifiable", r.not_identifiable},
-          {"not_excited", r.not_excited},
-          {"params", EstimatesJson(r.estimates)}};
+  json j = LinearStageJson(std::string(ident::SteadyStatusName(r.status)), r.message,
+                           r.condition_number, r.not_identifiable, r.not_excited, r.estimates);
+  j["segments"] = r.num_points;
+  j["sigma2"] = JsonNumber(r.sigma2);
+  return j;
 }
 
 json InertiaStageJson(const ident::IntegralInertiaResult& r) {
@@ -132,15 +148,11 @@ json InertiaStageJson(const ident::IntegralInertiaResult& r) {
 }
 
 json OneStepStageJson(const ident::OneStepDofResult& r) {
-  json o = {{"status", std::string(ident::FitStatusName(r.status))},
-            {"message", r.message},
-            {"rows", r.num_rows},
-            {"instrumental_variables", r.instrumental},
-            {"condition_number", JsonNumber(r.condition_number)},
-            {"cost", JsonNumber(r.cost)},
-            {"not_identifiable", r.not_identifiable},
-            {"not_excited", r.not_excited},
-            {"params", EstimatesJson(r.estimates)}};
+  json o = LinearStageJson(std::string(ident::FitStatusName(r.status)), r.message,
+                           r.condition_number, r.not_identifiable, r.not_excited, r.estimates);
+  o["rows"] = r.num_rows;
+  o["instrumental_variables"] = r.instrumental;
+  o["cost"] = JsonNumber(r.cost);
   if (r.standard && r.ok()) {
     const auto& c = r.seed;
     const auto& C = r.seed_covariance;
@@ -223,7 +235,8 @@ json ParamsJson(const ident::DofIdentification& d) {
 json DofIdentificationJson(const ident::DofIdentification& d) {
   json params = json::object();
   for (const auto& e : d.params) {
-    const bool reliable = std::find(d.unreliable.begin(), d.unreliable.end(), e.name) == d.unreliable.end();
+    const bool reliable =
+        std::find(d.unreliable.begin(), d.unreliable.end(), e.name) == d.unreliable.end();
     params[e.name] = ParamJson(e, reliable);
   }
   json segments = json::array();

@@ -4,9 +4,7 @@
 
 namespace uuvplan::io {
 
-std::string Place::Where() const {
-  return line_ > 0 ? file_ + ":" + std::to_string(line_) : file_;
-}
+std::string Place::Where() const { return line_ > 0 ? file_ + ":" + std::to_string(line_) : file_; }
 
 void Place::Fail(const std::string& what) const {
   throw model::InputError(Where(), key_path_.empty() ? what : key_path_ + ": " + what);

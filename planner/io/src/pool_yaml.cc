@@ -1,8 +1,9 @@
 // The pool file (contract §Pool, docs/formats.md).
+#include "uuvplan/io/pool_yaml.h"
+
 #include <algorithm>
 #include <filesystem>
 
-#include "uuvplan/io/pool_yaml.h"
 #include "uuvplan/io/yaml_value.h"
 
 namespace uuvplan::io {

@@ -87,8 +87,7 @@ model::TrialKind KindOf(const JsonValue& v) {
   v.Expected("a trial kind (steady, sine, segments)");
 }
 
-std::vector<model::SegmentDesign> SegmentsOf(const JsonValue& v,
-                                             const std::string& trial_mapping) {
+std::vector<model::SegmentDesign> SegmentsOf(const JsonValue& v, const std::string& trial_mapping) {
   if (!v.json().is_array() || v.json().empty()) {
     v.Expected("a non-empty array of {force, duration, mapping}");
   }
@@ -125,13 +124,13 @@ void CheckSegmentsDuration(const JsonValue& trial, const model::TrialDesign& d) 
 void KindFieldsOf(const JsonValue& j, model::TrialDesign* d) {
   switch (d->kind) {
     case model::TrialKind::kSteady:
-      d->force = Number(j.Required("force", "a steady trial's constant force"),
-                        "a number (N or N·m)");
+      d->force =
+          Number(j.Required("force", "a steady trial's constant force"), "a number (N or N·m)");
       break;
     case model::TrialKind::kSine:
       d->offset = Number(j.Required("offset", "a sine trial's mean force"), "a number (N or N·m)");
-      d->amplitude = Number(j.Required("amplitude", "a sine trial's force amplitude"),
-                            "a number (N or N·m)");
+      d->amplitude =
+          Number(j.Required("amplitude", "a sine trial's force amplitude"), "a number (N or N·m)");
       d->omega = NonNegativeNumber(j.Required("omega", "a sine trial's frequency"),
                                    "a number >= 0 (rad/s)");
       break;

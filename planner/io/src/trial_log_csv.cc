@@ -6,6 +6,8 @@
 //
 // The reader streams the file through a fixed buffer and stores only the known columns, so a
 // log of a million rows costs little more than its numbers (bench/csv_read_bench.cc).
+#include "uuvplan/io/trial_log_csv.h"
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -19,7 +21,6 @@
 
 #include "uuvplan/io/number_text.h"
 #include "uuvplan/io/place.h"
-#include "uuvplan/io/trial_log_csv.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/text.h"
 
@@ -133,9 +134,10 @@ class TrialLogParser {
     bool has_header = false;
     while (!has_header && reader.Next(&line)) has_header = !IsSkipped(line);
     if (!has_header) {
-      Place(path_, 0, "").Fail(
-          "empty file: expected a header line such as 't,force_surge,vel_surge' followed by "
-          "data rows");
+      Place(path_, 0, "")
+          .Fail(
+              "empty file: expected a header line such as 't,force_surge,vel_surge' followed by "
+              "data rows");
     }
     const int header_line = reader.line_number();
     ReadHeader(line, header_line);
@@ -186,7 +188,8 @@ class TrialLogParser {
     if (!has_time) {
       std::vector<std::string> names;
       for (const Column& c : columns_) names.push_back("'" + c.name + "'");
-      Place(path_, line_number, "header").Expected("a 't' column (time, s)", "columns " + Join(names));
+      Place(path_, line_number, "header")
+          .Expected("a 't' column (time, s)", "columns " + Join(names));
     }
   }
 
@@ -307,12 +310,12 @@ class TrialLogParser {
         std::find(allowed_mappings_->begin(), allowed_mappings_->end(), name) ==
             allowed_mappings_->end()) {
       Cell("mapping", line_number)
-          .Expected("a mapping of the vehicle on the trial's DOF (" + Join(*allowed_mappings_) + ")",
-                    Quoted(name));
+          .Expected(
+              "a mapping of the vehicle on the trial's DOF (" + Join(*allowed_mappings_) + ")",
+              Quoted(name));
     }
     log_.mapping_names.emplace_back(name);
   }
-
 
   const std::string path_;
   const std::vector<std::string>* allowed_mappings_;

@@ -85,7 +85,8 @@ void CheckWritable(const std::string& path, const TrialLog& log,
     if (m < -1 || m >= static_cast<int>(log.mapping_names.size())) fail("bad mapping index");
   }
   for (const std::string& name : log.mapping_names) {
-    if (name.empty() || name.find_first_of(",\n\r") != std::string::npos || TrimBlanks(name) != name) {
+    if (name.empty() || name.find_first_of(",\n\r") != std::string::npos ||
+        TrimBlanks(name) != name) {
       fail("mapping name '" + name + "' cannot be written in a CSV cell");
     }
   }

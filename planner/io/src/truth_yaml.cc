@@ -1,12 +1,13 @@
 // The truth file (contract §Truth, docs/formats.md): a vehicle file plus, per DOF, the true
 // standard-model parameters and the effects the virtual vehicle has, and the virtual pool's
 // defects. Effect settings are read by truth_effects.cc.
+#include "uuvplan/io/truth_yaml.h"
+
 #include <optional>
 #include <string>
 #include <utility>
 
 #include "truth_effects.h"
-#include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/effects.h"
 #include "vehicle_keys.h"
 

@@ -1,11 +1,12 @@
 // The vehicle file (contract §Vehicle, docs/formats.md): thrusters, mappings, a priori
 // knowledge and sensors. A truth file is a vehicle file with more keys (truth_yaml.cc).
+#include "uuvplan/io/vehicle_yaml.h"
+
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/util/text.h"
 #include "vehicle_keys.h"
 

@@ -54,8 +54,8 @@ void EmitThruster(YAML::Emitter& out, const Thruster& t) {
   out << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << t.name;
   out << YAML::Key << "thrust" << YAML::Value << YAML::BeginMap;
   if (t.model.kind == ThrustModel::Kind::kSquare) {
-    out << YAML::Key << "model" << YAML::Value << "square" << YAML::Key << "c_pos"
-        << YAML::Value << t.model.c_pos << YAML::Key << "c_neg" << YAML::Value << t.model.c_neg;
+    out << YAML::Key << "model" << YAML::Value << "square" << YAML::Key << "c_pos" << YAML::Value
+        << t.model.c_pos << YAML::Key << "c_neg" << YAML::Value << t.model.c_neg;
   } else {
     out << YAML::Key << "model" << YAML::Value << "poly2" << YAML::Key << "a" << YAML::Value
         << t.model.a << YAML::Key << "b" << YAML::Value << t.model.b;
@@ -115,9 +115,9 @@ void WriteVehicleYaml(const std::string& path, const Vehicle& v) {
   EmitPerDof(out, "dofs", v.priors, [&out](const DofPrior& prior) {
     if (prior.drag) {
       out << YAML::Key << "drag" << YAML::Value;
-      EmitFlowMap(out, {{"k", prior.drag->k},
-                        {"kq", prior.drag->kq},
-                        {"rel_sigma", prior.drag->rel_sigma}});
+      EmitFlowMap(
+          out,
+          {{"k", prior.drag->k}, {"kq", prior.drag->kq}, {"rel_sigma", prior.drag->rel_sigma}});
     }
     if (prior.added_mass) {
       out << YAML::Key << "added_mass" << YAML::Value;

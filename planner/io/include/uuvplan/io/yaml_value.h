@@ -105,8 +105,7 @@ std::string ReadableFile(const Value& v);
 /// The top-level node of a YAML file; `what` describes the expected content of an empty file.
 YAML::Node LoadYaml(const std::string& file, const std::string& what);
 /// The top-level map of a YAML file (LoadYaml, then MapValue with `map_what`).
-MapValue LoadYamlMap(const std::string& file, const std::string& what,
-                     const std::string& map_what);
+MapValue LoadYamlMap(const std::string& file, const std::string& what, const std::string& map_what);
 
 /// Runs a reader of `file`, turning any exception other than model::InputError into one that
 /// names the file: a reader never lets a yaml-cpp or library exception escape.
