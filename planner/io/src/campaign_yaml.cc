@@ -177,6 +177,7 @@ void WriteCampaignFiles(const fs::path& tmp, const Campaign& campaign, const Veh
                         const std::vector<std::string>& trial_comments) {
   for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
     const TrialEntry& e = campaign.trials[i];
+    fs::create_directories((tmp / e.file).parent_path());
     WriteTrialLog((tmp / e.file).string(), e.log,
                   i < trial_comments.size() ? trial_comments[i] : "");
   }

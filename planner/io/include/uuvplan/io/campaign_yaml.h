@@ -21,9 +21,10 @@ void WriteCampaignYaml(const std::string& path, const model::Campaign& campaign)
 
 /// Writes a whole campaign into the new directory `dir`: `vehicle` as vehicle.yaml, each trial's
 /// log at its `file` (relative to `dir`, headed by the comment `trial_comments[i]` when given)
-/// and campaign.yaml naming them. Everything goes to a temporary sibling directory renamed into
-/// place, so the campaign is written whole or not at all; `dir` must not exist or be empty.
-/// Returns `campaign` with its path and the trials' paths set to where they were written.
+/// and campaign.yaml naming them (and `campaign.pool_file` as given, if any). Everything goes to a
+/// temporary sibling directory renamed into place, so the campaign is written whole or not at all;
+/// `dir` must not exist or be empty. Returns `campaign` with its path and the trials' paths set to
+/// where they were written.
 model::Campaign WriteCampaign(const std::string& dir, model::Campaign campaign,
                               const model::Vehicle& vehicle,
                               const std::vector<std::string>& trial_comments = {});
