@@ -14,7 +14,7 @@
 #include <fstream>
 #include <string>
 
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace {
 
@@ -78,7 +78,7 @@ int main() {
     if (!ResetPeak() && run > 0) continue;
     const long rss_before = StatusKb("VmRSS");
     const auto start = std::chrono::steady_clock::now();
-    const uuvplan::model::TrialLog log = uuvplan::model::ReadTrialLog(path);
+    const uuvplan::model::TrialLog log = uuvplan::io::ReadTrialLog(path);
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     best_s = std::min(best_s, elapsed.count());
     peak_mb = std::max(peak_mb, (StatusKb("VmHWM") - rss_before) / 1024.0);

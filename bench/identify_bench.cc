@@ -28,7 +28,7 @@
 #include "ident/ident_cases.h"  // CaseTruth, Segments, Sine: the test cases' builders
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/monte_carlo.h"  // TrueParameter
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/virtual_pool.h"
 
@@ -96,7 +96,7 @@ int TimeIdentify(long rows, double rate) {
   for (int run = 0; run < 5; ++run) {
     const std::clock_t cpu0 = std::clock();
     const auto a = Clock::now();
-    const model::Campaign c = model::ReadCampaign(campaign_path);
+    const model::Campaign c = io::ReadCampaign(campaign_path);
     const auto b = Clock::now();
     result = ident::Identify(c, ident::IdentifyOptions{});
     const auto e = Clock::now();
@@ -108,7 +108,7 @@ int TimeIdentify(long rows, double rate) {
     }
   }
   {
-    const model::Campaign c = model::ReadCampaign(campaign_path);
+    const model::Campaign c = io::ReadCampaign(campaign_path);
     const auto a = Clock::now();
     const ident::TrialData d =
         ident::PrepareTrial(c.trials[0], 0, c.vehicle, ident::TrialDataOptions{});

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "uuvplan/ident/monte_carlo.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/planner/design_loop.h"
 #include "uuvplan/planner/paper_procedure.h"
 
@@ -94,8 +94,8 @@ int main(int argc, char** argv) {
   }
   if (dofs.empty()) dofs = {model::Dof::kSurge, model::Dof::kHeave, model::Dof::kYaw};
   lo.step.dofs = po.dofs = dofs;
-  const model::Truth truth = model::ReadTruth(truth_path);
-  const model::Pool pool = model::ReadPool(pool_path);
+  const model::Truth truth = io::ReadTruth(truth_path);
+  const model::Pool pool = io::ReadPool(pool_path);
 
   double paper_time = 0.0, loop_time = 0.0;
   if (run_paper) {

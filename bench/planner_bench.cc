@@ -16,7 +16,7 @@
 #include <ctime>
 #include <string>
 
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/planner/schedule_planner.h"
 #include "uuvplan/planner/sine_design.h"
 
@@ -63,8 +63,8 @@ int main(int argc, char** argv) {
     }
   }
   const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
-  const model::Vehicle v = model::ReadVehicle(dir + "vehicle.yaml");
-  const model::Pool pool = model::ReadPool(dir + "pool.yaml");
+  const model::Vehicle v = io::ReadVehicle(dir + "vehicle.yaml");
+  const model::Pool pool = io::ReadPool(dir + "pool.yaml");
   std::printf("planner_bench: ROMEO (cases/romeo), pool %s, best of %d\n", pool.name.c_str(), reps);
 
   SineDesignResult sine;

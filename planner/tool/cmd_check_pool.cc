@@ -9,7 +9,7 @@
 
 #include "command.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/planner/pool_check.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/schedule_planner.h"
@@ -53,7 +53,7 @@ TrialsToCheck ChooseTrials(const CheckPoolCliOptions& o, const model::Vehicle& v
                            const model::Pool& pool) {
   TrialsToCheck t;
   if (!o.plan.empty()) {
-    t.plan = planner::ReadScheduleJson(o.plan);
+    t.plan = io::ReadScheduleJson(o.plan);
     CheckPlanMappings(t.plan, vehicle, o.plan);
   } else {
     t.own = planner::PlanSchedule(vehicle, pool, o.check.schedule);
@@ -149,7 +149,7 @@ nlohmann::json CheckPoolJson(const planner::PoolCheckResult& r, const TrialsToCh
     j["not_planned"] = missing;
   }
   if (r.has_alternative) {
-    nlohmann::json alt = planner::ScheduleToJson(r.alternative.schedule);
+    nlohmann::json alt = io::ScheduleToJson(r.alternative.schedule);
     alt["status"] = std::string(planner::PlanStatusName(r.alternative.status));
     nlohmann::json loss = nlohmann::json::object();
     for (const auto& [dof, l] : r.information_loss) loss[std::string(model::DofName(dof))] = l;
@@ -159,8 +159,8 @@ nlohmann::json CheckPoolJson(const planner::PoolCheckResult& r, const TrialsToCh
 }
 
 int RunCheckPool(const CheckPoolCliOptions& o) {
-  const model::Vehicle vehicle = model::ReadVehicle(o.vehicle);
-  const model::Pool pool = model::ReadPool(o.pool);
+  const model::Vehicle vehicle = io::ReadVehicle(o.vehicle);
+  const model::Pool pool = io::ReadPool(o.pool);
   const TrialsToCheck checked = ChooseTrials(o, vehicle, pool);
   const planner::PoolCheckResult r = planner::CheckPool(vehicle, pool, checked.plan, o.check);
   const bool feasible = r.feasible && !checked.own_partial;

@@ -8,9 +8,10 @@
 #include <vector>
 
 #include "command.h"
-#include "diagnosis_json.h"
+#include "diagnosis_report.h"
+#include "uuvplan/io/diagnosis_json.h"
 #include "uuvplan/ident/diagnosis.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::tool {
 namespace {
@@ -22,14 +23,14 @@ struct DiagnoseCommandOptions {
 };
 
 int RunDiagnose(const DiagnoseCommandOptions& co) {
-  const model::Campaign campaign = model::ReadCampaign(co.campaign);
+  const model::Campaign campaign = io::ReadCampaign(co.campaign);
   ident::DiagnoseOptions o;
   o.dofs = ParseDofFlags(co.dofs);
   // TODO(issue #12, diagnosis engineer): DiagnoseOptions gains `verbose`; then set it here:
   // o.verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
   const ident::DiagnosisResult result = ident::Diagnose(campaign, o);
   PrintDiagnosis(result, ReportStream(co.json));
-  if (!co.json.empty()) WriteJson(co.json, DiagnosisJson(result));
+  if (!co.json.empty()) WriteJson(co.json, io::DiagnosisJson(result));
   // A breakdown exists for each DOF whose standard model was fitted, i.e. diagnosed.
   return result.breakdowns.empty() ? kExitActionNeeded : kExitOk;
 }

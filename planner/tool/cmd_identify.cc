@@ -7,10 +7,11 @@
 #include <vector>
 
 #include "command.h"
-#include "ident_json.h"
+#include "identify_table.h"
+#include "uuvplan/io/identify_json.h"
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::tool {
@@ -71,7 +72,7 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
 }
 
 int RunIdentify(const IdentifyCommandOptions& co) {
-  const model::Campaign campaign = model::ReadCampaign(co.campaign);
+  const model::Campaign campaign = io::ReadCampaign(co.campaign);
   ident::IdentifyOptions o = co.identify;
   o.dofs = ParseDofFlags(co.dofs);
   for (const std::string& s : co.steady) AddSteadyWindow(s, campaign, &o);
@@ -86,7 +87,7 @@ int RunIdentify(const IdentifyCommandOptions& co) {
   out << "Identification of " << co.campaign << " (vehicle '" << campaign.vehicle.name << "', "
       << campaign.trials.size() << " trials)\n\n";
   PrintIdentifyTable(result, out);
-  if (!co.json.empty()) WriteJson(co.json, IdentifyJson(result));
+  if (!co.json.empty()) WriteJson(co.json, io::IdentifyJson(result));
   return result.status == ident::IdentifyStatus::kFailed ? kExitActionNeeded : kExitOk;
 }
 

@@ -14,10 +14,11 @@
 #include <vector>
 
 #include "command.h"
-#include "ident_json.h"
+#include "identify_table.h"
+#include "uuvplan/io/identify_json.h"
 #include "loop_report.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design_loop.h"
 
@@ -78,7 +79,7 @@ json IterationJson(const planner::LoopIteration& it) {
     for (const auto& e : estimates) p[e.name] = {{"value", Num(e.value)}, {"sigma", Num(e.sigma)}};
     params[std::string(model::DofName(dof))] = p;
   }
-  return {{"trial", planner::TrialToJson(it.trial)},
+  return {{"trial", io::TrialToJson(it.trial)},
           {"params", params},
           {"dof", std::string(model::DofName(it.dof))},
           {"source", it.source},
@@ -145,13 +146,13 @@ json LoopJson(const planner::LoopResult& r, const planner::LoopOptions& lo) {
           {"seed", lo.seed},
           {"dof_pool_time", dof_time},
           {"progress", ProgressJson(r.progress)},
-          {"estimates", IdentifyJson(r.estimates)}};
+          {"estimates", io::IdentifyJson(r.estimates)}};
 }
 
 int RunLoopCommand(const LoopCliOptions& o) {
   CheckLoopFlags(o.loop);
-  const model::Truth truth = model::ReadTruth(o.truth);
-  const model::Pool pool = model::ReadPool(o.pool);
+  const model::Truth truth = io::ReadTruth(o.truth);
+  const model::Pool pool = io::ReadPool(o.pool);
   planner::LoopOptions lo = o.loop;
   lo.step.dofs = SimulableDofs(o, truth);
   const double target = lo.step.target_percent;

@@ -11,10 +11,11 @@
 #include <vector>
 
 #include "command.h"
-#include "ident_json.h"
+#include "identify_table.h"
+#include "uuvplan/io/identify_json.h"
 #include "loop_report.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design_loop.h"
 
@@ -81,8 +82,8 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
 nlohmann::json NextStepJson(const planner::NextStepResult& r, double target) {
   const bool planned = r.status == planner::NextStatus::kTrial;
   nlohmann::json j;
-  j["estimates"] = IdentifyJson(r.estimates);
-  j["trial"] = planned ? planner::TrialToJson(r.trial) : nlohmann::json(nullptr);
+  j["estimates"] = io::IdentifyJson(r.estimates);
+  j["trial"] = planned ? io::TrialToJson(r.trial) : nlohmann::json(nullptr);
   j["predicted"] = planned ? PredictedJson(r.dof, r.predicted) : nlohmann::json::object();
   j["status"] = std::string(planner::NextStatusName(r.status));
   j["message"] = r.message;
@@ -98,8 +99,8 @@ int RunNext(const NextCliOptions& o) {
     throw model::InputError("--target", "expected a percentile error > 0 (%), got " +
                                             model::ShortestNumber(o.design.target_percent));
   }
-  const model::Campaign campaign = model::ReadCampaign(o.campaign);
-  const model::Pool pool = model::ReadPool(o.pool);
+  const model::Campaign campaign = io::ReadCampaign(o.campaign);
+  const model::Pool pool = io::ReadPool(o.pool);
   planner::DesignLoopOptions options = o.design;
   options.dofs = ParseDofFlags(o.dofs);
   const planner::NextStepResult r = planner::NextStep(campaign, pool, options);

@@ -13,7 +13,7 @@
 
 #include "command.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/schedule_planner.h"
 
@@ -124,7 +124,7 @@ void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
 // {schedule..., "status", "notes": [...], "not_planned": {<dof>: {"message", "required_travel",
 // "required_pool"}}} (docs/cli.md, the schedule JSON).
 nlohmann::json ScheduleResultJson(const planner::ScheduleResult& r, const model::Pool& pool) {
-  nlohmann::json j = planner::ScheduleToJson(r.schedule);
+  nlohmann::json j = io::ScheduleToJson(r.schedule);
   j["status"] = std::string(planner::PlanStatusName(r.status));
   nlohmann::json notes = nlohmann::json::array();
   nlohmann::json missing = nlohmann::json::object();
@@ -145,8 +145,8 @@ nlohmann::json ScheduleResultJson(const planner::ScheduleResult& r, const model:
 }
 
 int RunSchedule(const ScheduleCliOptions& o) {
-  const model::Vehicle vehicle = model::ReadVehicle(o.vehicle);
-  const model::Pool pool = model::ReadPool(o.pool);
+  const model::Vehicle vehicle = io::ReadVehicle(o.vehicle);
+  const model::Pool pool = io::ReadPool(o.pool);
   planner::ScheduleOptions so = o.schedule;
   so.planner.robustness = ParseRobustness(o.robust);
   so.dofs = ParseDofFlags(o.dofs);

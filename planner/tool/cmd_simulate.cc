@@ -12,7 +12,7 @@
 
 #include "command.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/model/virtual_pool.h"
 #include "uuvplan/planner/schedule.h"
 
@@ -207,8 +207,8 @@ int RunSimulate(const SimulateOptions& options) {
                      "expected a positive integration step in s, got " + std::to_string(o.step_s));
   }
   CheckNewOrEmpty(o.out);
-  model::Truth truth = model::ReadTruth(o.truth);
-  const planner::Schedule plan = planner::ReadScheduleJson(o.plan);
+  model::Truth truth = io::ReadTruth(o.truth);
+  const planner::Schedule plan = io::ReadScheduleJson(o.plan);
   CheckPlanAgainstTruth(plan, truth, o.plan, o.truth);
   if (!std::isnan(o.step_s)) truth.integration_step_s = o.step_s;
 

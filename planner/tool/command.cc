@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::tool {
 
@@ -27,7 +27,7 @@ void WriteJson(const std::string& path, const nlohmann::json& j) {
   if (path == "-") {
     std::cout << text;
   } else {
-    model::WriteFileAtomically(path, text);
+    io::WriteFileAtomically(path, text);
   }
 }
 

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "uuvplan/ident/monte_carlo.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::tool {
 namespace {

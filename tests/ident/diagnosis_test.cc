@@ -12,7 +12,7 @@
 #include "support/hidden_effect.h"
 #include "uuvplan/ident/chi_square.h"
 #include "uuvplan/ident/diagnosis.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -117,7 +117,7 @@ TEST(DiagnosisTest, CouplingSigmaIncludesTheNoiseOfTheLoggedVelocities) {
 // I/k ≈ 0.25 s; 19% on these logs).
 TEST(DiagnosisTest, RealBluerovYawRunsShowTheThrusterLag) {
   const model::Campaign campaign =
-      model::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) + "/data/bluerov-yaw-2016/campaign.yaml");
+      io::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) + "/data/bluerov-yaw-2016/campaign.yaml");
   const DiagnosisResult r = Diagnose(campaign, DiagnoseOptions{});
   ASSERT_FALSE(r.findings.empty());
   const Finding& first = r.findings.front();
@@ -138,7 +138,7 @@ TEST(DiagnosisTest, RealBluerovYawRunsShowTheThrusterLag) {
 // thrust map first, with p in [−0.7, −0.3] (the README's gains come from equation-error fits
 // without the lag) — not a drift over the sessions, which the amplitudes of one session rule out.
 TEST(DiagnosisTest, RealBluerovRunsOfAllAmplitudesShowTheThrustMapShape) {
-  const model::Campaign campaign = model::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) +
+  const model::Campaign campaign = io::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) +
                                                        "/data/bluerov-yaw-2016/campaign_all.yaml");
   const DiagnosisResult r = Diagnose(campaign, DiagnoseOptions{});
   ASSERT_FALSE(r.findings.empty());
@@ -156,7 +156,7 @@ TEST(DiagnosisTest, RealBluerovRunsOfAllAmplitudesShowTheThrustMapShape) {
 // the file does not give.
 TEST(DiagnosisTest, RealClosedLoopLogsWithoutClockAreQualified) {
   const model::Campaign campaign =
-      model::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) + "/data/tartan-pool-2022/campaign.yaml");
+      io::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) + "/data/tartan-pool-2022/campaign.yaml");
   DiagnoseOptions o;
   o.dofs = {model::Dof::kHeave};
   const DiagnosisResult r = Diagnose(campaign, o);

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "uuvplan/model/effects.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/truth.h"
 
@@ -18,7 +18,7 @@ namespace uuvplan::ident::testing {
 
 /// The truth file of a case under cases/ (cases/romeo, cases/vsor, cases/uris).
 inline model::Truth CaseTruth(const std::string& name) {
-  return model::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + name + "/truth.yaml");
+  return io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + name + "/truth.yaml");
 }
 
 inline model::TrialDesign Segments(const std::string& id, model::Dof dof, const std::string& mapping,

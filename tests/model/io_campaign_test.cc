@@ -6,10 +6,14 @@
 #include <filesystem>
 
 #include "io_test_util.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::model {
 namespace {
+
+using io::ReadCampaign;
+using io::WriteCampaign;
+using io::WriteCampaignYaml;
 
 using ::testing::AllOf;
 using testing::At;
@@ -303,6 +307,30 @@ TEST(WriteCampaignYamlTest, WritesTheContractKeys) {
             "    ballast_steps: 1\n"
             "    use: validate\n"
             "    start: 0.30000000000000004\n");
+}
+
+// A whole campaign directory (what `simulate` writes): vehicle, campaign and trial logs, read
+// back to the same campaign; a directory with content is refused and left untouched.
+TEST(WriteCampaignTest, WritesADirectoryThatReadsBack) {
+  ScratchDir dir;
+  Campaign original = ReadCampaign(dir.Path("campaign.yaml"));
+  original.pool_file.reset();  // written as given: a pool file would have to be beside it
+  const std::vector<std::string> comments(original.trials.size(), "written by a test");
+  const Campaign written = WriteCampaign(dir.Path("out/"), original, original.vehicle, comments);
+  EXPECT_EQ(written.path, dir.Path("out/campaign.yaml"));
+  EXPECT_EQ(written.vehicle_file, "vehicle.yaml");
+  const Campaign back = ReadCampaign(dir.Path("out/campaign.yaml"));
+  EXPECT_EQ(back.vehicle.name, original.vehicle.name);
+  ASSERT_EQ(back.trials.size(), original.trials.size());
+  for (std::size_t i = 0; i < back.trials.size(); ++i) {
+    EXPECT_EQ(back.trials[i].file, original.trials[i].file);
+    EXPECT_EQ(back.trials[i].path, written.trials[i].path);
+    EXPECT_EQ(back.trials[i].log.t, original.trials[i].log.t);
+    EXPECT_EQ(testing::ReadText(written.trials[i].path).rfind("# written by a test\n", 0), 0u);
+  }
+  EXPECT_THAT(ErrorOf([&] { WriteCampaign(dir.Path("out"), original, original.vehicle); }),
+              HasSubstr("out: output directory exists and is not empty"));
+  EXPECT_EQ(ReadCampaign(dir.Path("out/campaign.yaml")).trials.size(), back.trials.size());
 }
 
 }  // namespace

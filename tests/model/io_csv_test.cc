@@ -8,10 +8,14 @@
 #include <stdexcept>
 
 #include "io_test_util.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::model {
 namespace {
+
+using io::ReadTrialLog;
+using io::WriteTrialLog;
+using io::WriteFileAtomically;
 
 using ::testing::AllOf;
 using testing::At;

@@ -1,7 +1,7 @@
 // Readers of vehicle, pool and truth files (docs/formats.md): the fixtures of tests/data/io
 // read whole, and one test per malformed input asserting the file, the line or key path, and
 // the expectation named in the message.
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -14,6 +14,10 @@
 
 namespace uuvplan::model {
 namespace {
+
+using io::ReadVehicle;
+using io::ReadPool;
+using io::ReadTruth;
 
 using ::testing::AllOf;
 using testing::At;

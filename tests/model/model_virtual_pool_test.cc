@@ -10,13 +10,17 @@
 #include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/util/seed.h"
 #include "uuvplan/model/virtual_pool.h"
 
 namespace uuvplan::model {
 namespace {
+
+using io::ReadVehicle;
+using io::ReadCampaign;
+using io::WriteVehicleYaml;
 
 Truth RomeoSurgeTruth() {
   Truth truth;

@@ -21,7 +21,7 @@
 #include "../tool/tool_test_util.h"
 #include "planner_test_util.h"
 #include "uuvplan/ident/monte_carlo.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/planner/design_loop.h"
 #include "uuvplan/planner/paper_procedure.h"
 #include "uuvplan/planner/thrust_limits.h"
@@ -36,7 +36,7 @@ using testing::RomeoPool;
 // Issue #5's target: 5% percentile error on every parameter of interest.
 constexpr double kTarget = 5.0;
 
-model::Truth RomeoTruth() { return model::ReadTruth(RomeoPath("truth.yaml")); }
+model::Truth RomeoTruth() { return io::ReadTruth(RomeoPath("truth.yaml")); }
 
 const std::vector<Dof>& RomeoDofs() {
   static const std::vector<Dof> dofs = {Dof::kSurge, Dof::kHeave, Dof::kYaw};

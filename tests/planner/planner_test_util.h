@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
 
@@ -14,8 +14,8 @@ inline std::string RomeoPath(const std::string& file) {
   return std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/" + file;
 }
 
-inline model::Vehicle Romeo() { return model::ReadVehicle(RomeoPath("vehicle.yaml")); }
-inline model::Pool RomeoPool() { return model::ReadPool(RomeoPath("pool.yaml")); }
+inline model::Vehicle Romeo() { return io::ReadVehicle(RomeoPath("vehicle.yaml")); }
+inline model::Pool RomeoPool() { return io::ReadPool(RomeoPath("pool.yaml")); }
 
 /// One surge mapping "both" (eta = 1 both ways) on one thruster of large range; surge drag
 /// k, kq; a velocity sensor (rate, sigma) and/or a position sensor.

@@ -192,8 +192,8 @@ TEST(UrisSchedule, RotationWithoutADragPriorSaysWhatIsMissing) {
   const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/uris/";
   ScheduleOptions o;
   o.dofs = {model::Dof::kYaw};
-  const ScheduleResult r = PlanSchedule(model::ReadVehicle(dir + "vehicle.yaml"),
-                                        model::ReadPool(dir + "pool.yaml"), o);
+  const ScheduleResult r = PlanSchedule(io::ReadVehicle(dir + "vehicle.yaml"),
+                                        io::ReadPool(dir + "pool.yaml"), o);
   ASSERT_EQ(r.dofs.size(), 1u);
   EXPECT_EQ(r.dofs[0].status, DesignStatus::kInfeasible);
   EXPECT_NE(r.dofs[0].message.find("min_thrust needs |phi| >= 0.1, which drives yaw beyond the "

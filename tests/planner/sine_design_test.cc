@@ -220,8 +220,8 @@ TEST(VsorYawSine, NoRoomForASwingGivesALongSteadyRunAndSaysWhy) {
   // (σ(m) 0.087 against 0.110 for 4.0 ± 0.8 N·m): the sine's optimum has no amplitude. It must
   // be reported as the steady run it is, with the reason, not as a sine of amplitude 0.
   const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/vsor/";
-  const model::Vehicle v = model::ReadVehicle(dir + "vehicle.yaml");
-  const model::Pool pool = model::ReadPool(dir + "pool.yaml");
+  const model::Vehicle v = io::ReadVehicle(dir + "vehicle.yaml");
+  const model::Pool pool = io::ReadPool(dir + "pool.yaml");
   const auto ctx = DofContext::APriori(v, pool, model::Dof::kYaw, {}, nullptr);
   const ForceRange range = ctx->ForceRangeFor(v.MappingIndex("yaw-ht1-ht7"), +1);
   EXPECT_NEAR(range.min_abs, 2.0 / 0.64282, 1e-3);

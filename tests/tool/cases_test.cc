@@ -12,10 +12,14 @@
 #include <utility>
 #include <vector>
 
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
 
 namespace uuvplan::model {
 namespace {
+
+using io::ReadVehicle;
+using io::ReadPool;
+using io::ReadTruth;
 
 const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/cases/";
 constexpr double kPi = 3.14159265358979323846;

@@ -14,7 +14,8 @@
 #include <vector>
 
 #include "tool_test_util.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::tool_test {
@@ -99,7 +100,7 @@ TEST(Cli, SimulateWritesACampaignThatReadsBack) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("3 trials"));
 
-  const model::Campaign c = model::ReadCampaign(out + "/campaign.yaml");
+  const model::Campaign c = io::ReadCampaign(out + "/campaign.yaml");
   ASSERT_EQ(c.trials.size(), 3u);
   EXPECT_EQ(c.vehicle.name, "romeo");
   const double durations[] = {20, 24, 20};
@@ -148,8 +149,8 @@ TEST(Cli, SimulateIsDeterministicPerSeedAndHonoursStep) {
   EXPECT_NE(a, c);  // another seed, other noise
   // Another RK4 step changes the trajectory in its last digits only; same noise (same seed).
   EXPECT_NE(a, d);
-  const model::TrialLog la = model::ReadTrialLog(dir / "a/trials/surge_steady.csv");
-  const model::TrialLog ld = model::ReadTrialLog(dir / "d/trials/surge_steady.csv");
+  const model::TrialLog la = io::ReadTrialLog(dir / "a/trials/surge_steady.csv");
+  const model::TrialLog ld = io::ReadTrialLog(dir / "d/trials/surge_steady.csv");
   ASSERT_EQ(la.size(), ld.size());
   const auto& pa = la.position[model::Index(model::Dof::kSurge)];
   const auto& pd = ld.position[model::Index(model::Dof::kSurge)];
@@ -176,7 +177,7 @@ TEST(Cli, SimulateOutWithTrailingSlashAndJsonOnStdout) {
                                 (dir / "camp/") + "' --json -",
                             dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(model::ReadCampaign(dir / "camp/campaign.yaml").trials.size(), 3u);
+  EXPECT_EQ(io::ReadCampaign(dir / "camp/campaign.yaml").trials.size(), 3u);
   // stdout is pure JSON (the table went to stderr).
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["trials"].size(), 3u);
@@ -313,7 +314,7 @@ TEST(Cli, DemoTellsTheRomeoStory) {
   EXPECT_THAT(r.out, HasSubstr("eta.vertical-all.neg = 0.56"));
 
   // Seed 000 §IV-D: five experiments, 0-4 ballast steps, up and down legs in vertical-all.
-  const model::Campaign c = model::ReadCampaign(dir / "demo/campaign.yaml");
+  const model::Campaign c = io::ReadCampaign(dir / "demo/campaign.yaml");
   ASSERT_EQ(c.trials.size(), 5u);
   for (int i = 0; i < 5; ++i) {
     EXPECT_EQ(c.trials[i].dof, model::Dof::kHeave);
@@ -329,7 +330,7 @@ TEST(Cli, DemoTellsTheRomeoStory) {
   }
 
   // The plan it wrote re-runs to the same campaign, byte for byte, as it says.
-  const planner::Schedule plan = planner::ReadScheduleJson(dir / "demo/plan.json");
+  const planner::Schedule plan = io::ReadScheduleJson(dir / "demo/plan.json");
   EXPECT_EQ(plan.trials.size(), 5u);
   const ToolRun again =
       RunTool("simulate --truth '" + kRomeoTruth + "' --plan '" + (dir / "demo/plan.json") +

@@ -8,11 +8,17 @@
 #include <string>
 
 #include "tool_test_util.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::planner {
 namespace {
+
+using io::ReadScheduleJson;
+using io::TrialToJson;
+using io::ScheduleToJson;
+using io::TrialFromJson;
 
 using nlohmann::json;
 using ::testing::HasSubstr;
@@ -213,7 +219,7 @@ TEST(ScheduleJson, EachMalformedFieldIsRefused) {
   for (const Case& c : cases) {
     json t = TrialToJson(SteadyTrial());
     t[c.key] = c.value;
-    const std::string e = ErrorOf([&] { TrialFromJson(t, "p.json: trials[0]"); });
+    const std::string e = ErrorOf([&] { TrialFromJson(io::JsonValue(t, "p.json", "trials[0]")); });
     EXPECT_THAT(e, HasSubstr(std::string("p.json: ") + c.expected)) << c.key << " = " << c.value;
   }
 }
@@ -221,13 +227,13 @@ TEST(ScheduleJson, EachMalformedFieldIsRefused) {
 TEST(ScheduleJson, SegmentsMustAddUpToTheDuration) {
   json t = TrialToJson(SegmentsTrial());
   t["duration"] = 60.0;  // legs add up to 55.5 s
-  const std::string e = ErrorOf([&] { TrialFromJson(t, "p.json: trials[4]"); });
+  const std::string e = ErrorOf([&] { TrialFromJson(io::JsonValue(t, "p.json", "trials[4]")); });
   EXPECT_THAT(e, HasSubstr("p.json: trials[4].duration"));
   EXPECT_THAT(e, HasSubstr("55.5 s for duration 60 s"));
 
   t = TrialToJson(SegmentsTrial());
   t["segments"][1].erase("force");
-  EXPECT_THAT(ErrorOf([&] { TrialFromJson(t, "p.json: trials[4]"); }),
+  EXPECT_THAT(ErrorOf([&] { TrialFromJson(io::JsonValue(t, "p.json", "trials[4]")); }),
               HasSubstr("p.json: trials[4].segments[1]: missing required key 'force'"));
 }
 

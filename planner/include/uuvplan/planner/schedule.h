@@ -7,8 +7,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "uuvplan/model/dof.h"
 #include "uuvplan/model/trial_design.h"
 
@@ -35,16 +33,6 @@ struct Schedule {
   double pool_time = 0.0;
 };
 
-/// One trial as the contract's JSON object: id, dof, kind, duration, mapping, the fields of
-/// its kind, travel, thrust_min (and ballast_steps when non-zero).
-nlohmann::json TrialToJson(const PlannedTrial& trial);
-nlohmann::json ScheduleToJson(const Schedule& schedule);
-
-/// Reads a trial object; throws model::InputError naming `where` (e.g. "plan.json: trials[2]")
-/// and the key on any missing or ill-typed field.
-PlannedTrial TrialFromJson(const nlohmann::json& j, const std::string& where);
-/// Reads a schedule JSON file (as written by `uuvplan schedule --json`), or a `next` result
-/// (its single "trial"). Throws model::InputError on malformed input.
-Schedule ReadScheduleJson(const std::string& path);
+// Read and written as JSON by the io layer (uuvplan/io/schedule_json.h).
 
 }  // namespace uuvplan::planner

@@ -6,65 +6,50 @@
 //
 // The reader streams the file through a fixed buffer and stores only the known columns, so a
 // log of a million rows costs little more than its numbers (bench/csv_read_bench.cc).
+#include "uuvplan/io/trial_log_csv.h"
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "uuvplan/io/number_text.h"
+#include "uuvplan/io/place.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
+#include "uuvplan/model/util/text.h"
 
-namespace uuvplan::model {
+namespace uuvplan::io {
+
+using namespace model;  // NOLINT: the vocabulary of the trial log
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
 
-std::string_view Trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
-    s.remove_suffix(1);
-  }
-  return s;
-}
-
 // Comment ('#' first) and blank lines carry no data and may appear anywhere.
 bool IsSkipped(std::string_view line) {
-  const std::string_view s = Trim(line);
+  const std::string_view s = TrimBlanks(line);
   return s.empty() || s.front() == '#';
 }
 
-// Parses a whole cell as a finite number (an optional leading '+' is allowed; NaN and
-// infinities are not numbers here). False if the cell is anything else.
-bool ParseNumber(std::string_view cell, double* value) {
-  const char* first = cell.data();
-  const char* last = first + cell.size();
-  if (first != last && *first == '+') {
-    ++first;
-    if (first != last && *first == '-') return false;
-  }
-  const auto [end, ec] = std::from_chars(first, last, *value);
-  return ec == std::errc() && end == last && first != last && std::isfinite(*value);
+// A fault of the row at `line` of `path` as a whole.
+[[noreturn]] void Fail(const std::string& path, int line, const std::string& what) {
+  Place(path, line, "").Fail(what);
 }
 
-[[noreturn]] void Fail(const std::string& path, int line, const std::string& what) {
-  throw InputError(path + ":" + std::to_string(line), what);
-}
+std::string Quoted(std::string_view cell) { return "'" + std::string(cell) + "'"; }
 
 std::FILE* OpenForReading(const std::string& path) {
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (file == nullptr) {
-    throw InputError(path, "cannot open file: " + std::string(std::strerror(errno)));
+    Place(path, 0, "").Fail("cannot open file: " + std::string(std::strerror(errno)));
   }
   return file;
 }
@@ -108,7 +93,7 @@ class LineReader {
     if (end_ == buffer_.size()) buffer_.resize(2 * buffer_.size());
     const std::size_t n = std::fread(buffer_.data() + end_, 1, buffer_.size() - end_, file_);
     if (n == 0 && std::ferror(file_)) {
-      throw InputError(path_, "read error: " + std::string(std::strerror(errno)));
+      Place(path_, 0, "").Fail("read error: " + std::string(std::strerror(errno)));
     }
     end_ += n;
     at_eof_ = n == 0;
@@ -137,41 +122,6 @@ std::size_t CountNewlines(const std::string& path) {
   return count;
 }
 
-// Undoes the wrapping of an angle to (-pi, pi]: wherever two consecutive samples (empty cells
-// skipped) differ by more than pi, this and all later samples are shifted by the multiple of
-// 2·pi that brings the step back within pi. Returns the number of such jumps.
-int Unwrap(std::vector<double>* angle) {
-  double previous = kNaN;
-  double offset = 0.0;
-  int jumps = 0;
-  for (double& x : *angle) {
-    if (std::isnan(x)) continue;
-    const double raw = x;
-    const double step = raw - previous;
-    if (std::abs(step) > kPi) {  // false while `previous` is NaN
-      offset -= 2.0 * kPi * std::round(step / (2.0 * kPi));
-      ++jumps;
-    }
-    previous = raw;
-    x = raw + offset;
-  }
-  return jumps;
-}
-
-}  // namespace
-
-void UnwrapAngles(TrialLog* log) {
-  for (Dof dof : {Dof::kRoll, Dof::kPitch, Dof::kYaw}) {
-    const int jumps = Unwrap(&log->position[Index(dof)]);
-    if (jumps > 0) {
-      log->notes.push_back("unwrapped pos_" + std::string(DofName(dof)) + ": " +
-                           std::to_string(jumps) + " jump(s) of more than pi rad");
-    }
-  }
-}
-
-namespace {
-
 class TrialLogParser {
  public:
   TrialLogParser(const std::string& path, const std::vector<std::string>* allowed_mappings)
@@ -184,9 +134,10 @@ class TrialLogParser {
     bool has_header = false;
     while (!has_header && reader.Next(&line)) has_header = !IsSkipped(line);
     if (!has_header) {
-      throw InputError(path_,
-                       "empty file: expected a header line such as "
-                       "'t,force_surge,vel_surge' followed by data rows");
+      Place(path_, 0, "")
+          .Fail(
+              "empty file: expected a header line such as 't,force_surge,vel_surge' followed by "
+              "data rows");
     }
     const int header_line = reader.line_number();
     ReadHeader(line, header_line);
@@ -228,16 +179,17 @@ class TrialLogParser {
     std::size_t start = 0;
     while (true) {
       const std::size_t comma = line.find(',', start);
-      AddColumn(std::string(Trim(line.substr(start, comma - start))), line_number);
+      AddColumn(std::string(TrimBlanks(line.substr(start, comma - start))), line_number);
       if (comma == std::string_view::npos) break;
       start = comma + 1;
     }
     const bool has_time = std::any_of(columns_.begin(), columns_.end(),
                                       [](const Column& c) { return c.kind == Kind::kTime; });
     if (!has_time) {
-      std::string names;
-      for (const Column& c : columns_) names += (names.empty() ? "'" : ", '") + c.name + "'";
-      Fail(path_, line_number, "header: expected a 't' column (time, s), got columns " + names);
+      std::vector<std::string> names;
+      for (const Column& c : columns_) names.push_back("'" + c.name + "'");
+      Place(path_, line_number, "header")
+          .Expected("a 't' column (time, s)", "columns " + Join(names));
     }
   }
 
@@ -253,7 +205,7 @@ class TrialLogParser {
     } else {
       for (const Column& other : columns_) {
         if (other.name == name) {
-          Fail(path_, line_number, "header: column '" + name + "' appears twice");
+          Place(path_, line_number, "header").Fail("column '" + name + "' appears twice");
         }
       }
     }
@@ -288,6 +240,11 @@ class TrialLogParser {
     if (index != columns_.size()) WrongCellCount(index, line_number);
   }
 
+  // The place of a cell of column `name`.
+  Place Cell(const std::string& name, int line_number) const {
+    return Place(path_, line_number, "column '" + name + "'");
+  }
+
   [[noreturn]] void WrongCellCount(std::size_t cells, int line_number) const {
     Fail(path_, line_number,
          "expected " + std::to_string(columns_.size()) + " cells as in the header, got " +
@@ -297,13 +254,13 @@ class TrialLogParser {
   void Store(const Column& column, std::string_view raw, int line_number) {
     switch (column.kind) {
       case Kind::kNumber:
-        StoreNumber(column, Trim(raw), line_number);
+        StoreNumber(column, TrimBlanks(raw), line_number);
         break;
       case Kind::kTime:
-        StoreTime(Trim(raw), line_number);
+        StoreTime(TrimBlanks(raw), line_number);
         break;
       case Kind::kMapping:
-        StoreMapping(Trim(raw), line_number);
+        StoreMapping(TrimBlanks(raw), line_number);
         break;
       case Kind::kIgnored:
         break;
@@ -313,9 +270,7 @@ class TrialLogParser {
   void StoreNumber(const Column& column, std::string_view cell, int line_number) {
     double value = kNaN;
     if (!cell.empty() && !ParseNumber(cell, &value)) {
-      Fail(path_, line_number,
-           "column '" + column.name + "': expected a number or an empty cell, got '" +
-               std::string(cell) + "'");
+      Cell(column.name, line_number).Expected("a number or an empty cell", Quoted(cell));
     }
     column.values->push_back(value);
   }
@@ -324,16 +279,13 @@ class TrialLogParser {
   void StoreTime(std::string_view cell, int line_number) {
     double t;
     if (!ParseNumber(cell, &t)) {
-      Fail(path_, line_number,
-           "column 't': expected a time (s), got " +
-               (cell.empty() ? std::string("an empty cell") : "'" + std::string(cell) + "'"));
+      Cell("t", line_number).Expected("a time (s)", cell.empty() ? "an empty cell" : Quoted(cell));
     }
     if (!log_.t.empty() && !(t > log_.t.back())) {
-      char previous[32];
-      const auto [end, ec] = std::to_chars(previous, previous + sizeof previous, log_.t.back());
-      Fail(path_, line_number,
-           "column 't': expected a time after the previous row's " + std::string(previous, end) +
-               " (times must strictly increase), got '" + std::string(cell) + "'");
+      Cell("t", line_number)
+          .Expected("a time after the previous row's " + ShortestNumber(log_.t.back()) +
+                        " (times must strictly increase)",
+                    Quoted(cell));
     }
     log_.t.push_back(t);
   }
@@ -357,16 +309,13 @@ class TrialLogParser {
     if (allowed_mappings_ != nullptr &&
         std::find(allowed_mappings_->begin(), allowed_mappings_->end(), name) ==
             allowed_mappings_->end()) {
-      std::string allowed;
-      for (const std::string& m : *allowed_mappings_) allowed += (allowed.empty() ? "" : ", ") + m;
-      Fail(path_, line_number,
-           "column 'mapping': expected a mapping of the vehicle on the "
-           "trial's DOF (" +
-               allowed + "), got '" + std::string(name) + "'");
+      Cell("mapping", line_number)
+          .Expected(
+              "a mapping of the vehicle on the trial's DOF (" + Join(*allowed_mappings_) + ")",
+              Quoted(name));
     }
     log_.mapping_names.emplace_back(name);
   }
-
 
   const std::string path_;
   const std::vector<std::string>* allowed_mappings_;
@@ -374,107 +323,6 @@ class TrialLogParser {
   TrialLog log_;
   int last_mapping_ = -1;
 };
-
-// ---------------------------------------------------------------------------------------------
-// Writing.
-
-// Appends `value` as %.<digits>g would, without the locale.
-void AppendNumber(double value, int digits, std::string* out) {
-  char buffer[32];
-  const auto [end, ec] =
-      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, digits);
-  out->append(buffer, end);
-}
-
-// Appends the shortest text that reads back as exactly `value`.
-void AppendExact(double value, std::string* out) {
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  out->append(buffer, end);
-}
-
-constexpr int kDigits = 10;
-
-// Times are written with kDigits significant digits when that keeps them strictly increasing
-// (the written value must lie between the previous written time and the next exact time),
-// and exactly otherwise. Returns the value that will be read back.
-double AppendTime(double t, double previous_written, double next, std::string* out) {
-  char buffer[32];
-  const auto [end, ec] =
-      std::to_chars(buffer, buffer + sizeof buffer, t, std::chars_format::general, kDigits);
-  double rounded;
-  std::from_chars(buffer, end, rounded);
-  if (rounded > previous_written && rounded < next) {
-    out->append(buffer, end);
-    return rounded;
-  }
-  AppendExact(t, out);
-  return t;
-}
-
-struct OutputColumn {
-  std::string name;
-  const std::vector<double>* values;
-};
-
-std::vector<OutputColumn> OutputColumns(const std::string& path, const TrialLog& log) {
-  std::vector<OutputColumn> columns;
-  for (Dof dof : kAllDofs) {
-    const std::string name(DofName(dof));
-    const int i = Index(dof);
-    for (const OutputColumn& c : {OutputColumn{"force_" + name, &log.force[i]},
-                                  OutputColumn{"pos_" + name, &log.position[i]},
-                                  OutputColumn{"vel_" + name, &log.velocity[i]}}) {
-      if (c.values->empty()) continue;
-      if (c.values->size() != log.size()) {
-        throw std::invalid_argument("WriteTrialLog " + path + ": column " + c.name + " has " +
-                                    std::to_string(c.values->size()) + " values for " +
-                                    std::to_string(log.size()) + " times");
-      }
-      columns.push_back(c);
-    }
-  }
-  return columns;
-}
-
-// The writer refuses what the reader would reject, so that every log it writes reads back.
-void CheckWritable(const std::string& path, const TrialLog& log,
-                   const std::vector<OutputColumn>& columns) {
-  const auto fail = [&path](const std::string& what) {
-    throw std::invalid_argument("WriteTrialLog " + path + ": " + what);
-  };
-  if (log.t.empty()) fail("no rows");
-  for (std::size_t i = 0; i < log.t.size(); ++i) {
-    if (!std::isfinite(log.t[i]) || (i > 0 && !(log.t[i] > log.t[i - 1]))) {
-      fail("t must be finite and strictly increasing (row " + std::to_string(i) + ")");
-    }
-  }
-  for (const OutputColumn& c : columns) {
-    if (std::any_of(c.values->begin(), c.values->end(), [](double v) { return std::isinf(v); })) {
-      fail("column " + c.name + " holds an infinite value");
-    }
-  }
-  if (log.mapping.empty()) return;
-  if (log.mapping.size() != log.size()) fail("mapping column has the wrong length");
-  for (int m : log.mapping) {
-    if (m < -1 || m >= static_cast<int>(log.mapping_names.size())) fail("bad mapping index");
-  }
-  for (const std::string& name : log.mapping_names) {
-    if (name.empty() || name.find_first_of(",\n\r") != std::string::npos || Trim(name) != name) {
-      fail("mapping name '" + name + "' cannot be written in a CSV cell");
-    }
-  }
-}
-
-void AppendComment(const std::string& comment, std::string* out) {
-  if (comment.empty()) return;
-  std::size_t start = 0;
-  while (start < comment.size()) {
-    const std::size_t newline = std::min(comment.find('\n', start), comment.size());
-    out->append("# ").append(comment, start, newline - start).push_back('\n');
-    start = newline + 1;
-  }
-}
 
 }  // namespace
 
@@ -484,34 +332,4 @@ TrialLog ReadTrialLog(const std::string& path, const std::vector<std::string>& m
   return TrialLogParser(path, &mappings).Parse();
 }
 
-void WriteTrialLog(const std::string& path, const TrialLog& log, const std::string& comment) {
-  const std::vector<OutputColumn> columns = OutputColumns(path, log);
-  CheckWritable(path, log, columns);
-  const bool has_mapping = !log.mapping.empty();
-
-  std::string text;
-  text.reserve(log.size() * (columns.size() + 2) * (kDigits + 4) + comment.size() + 256);
-  AppendComment(comment, &text);
-  text += "t";
-  for (const OutputColumn& c : columns) text += "," + c.name;
-  text += has_mapping ? ",mapping\n" : "\n";
-
-  double previous = -std::numeric_limits<double>::infinity();
-  const double kEnd = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < log.size(); ++i) {
-    previous = AppendTime(log.t[i], previous, i + 1 < log.size() ? log.t[i + 1] : kEnd, &text);
-    for (const OutputColumn& c : columns) {
-      text += ',';
-      const double v = (*c.values)[i];
-      if (!std::isnan(v)) AppendNumber(v, kDigits, &text);
-    }
-    if (has_mapping) {
-      text += ',';
-      if (log.mapping[i] >= 0) text += log.mapping_names[log.mapping[i]];
-    }
-    text += '\n';
-  }
-  WriteFileAtomically(path, text);
-}
-
-}  // namespace uuvplan::model
+}  // namespace uuvplan::io

@@ -1,15 +1,11 @@
-// JSON and readable report of a diagnosis (contract §diagnose).
+// A diagnosis as a readable report (its JSON is io::DiagnosisJson).
 #pragma once
 
-#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "uuvplan/ident/diagnosis.h"
 
 namespace uuvplan::tool {
-
-/// {"nominal": <identify result>, "findings": [...], "tests": [...], "breakdown": {...}}.
-nlohmann::json DiagnosisJson(const ident::DiagnosisResult& result);
 
 /// The standard model's errors, the findings with their extension and gain, and the tests.
 void PrintDiagnosis(const ident::DiagnosisResult& result, std::ostream& out);

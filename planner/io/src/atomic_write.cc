@@ -11,10 +11,10 @@
 #include <filesystem>
 #include <string>
 
+#include "uuvplan/io/files.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
 
-namespace uuvplan::model {
+namespace uuvplan::io {
 
 namespace {
 
@@ -55,20 +55,21 @@ bool WriteAll(int fd, const std::string& text) {
 void WriteFileAtomically(const std::string& path, const std::string& text) {
   std::string temp;
   const int fd = CreateTemporary(path, &temp);
-  if (fd < 0) throw InputError(path, "cannot create a temporary file beside it: " + ErrnoText());
+  if (fd < 0)
+    throw model::InputError(path, "cannot create a temporary file beside it: " + ErrnoText());
   const bool written = WriteAll(fd, text);
   const int write_errno = errno;
   const bool closed = ::close(fd) == 0;
   if (!written || !closed) {
     const std::string reason = std::strerror(written ? errno : write_errno);
     ::unlink(temp.c_str());
-    throw InputError(path, "cannot write: " + reason);
+    throw model::InputError(path, "cannot write: " + reason);
   }
   if (std::rename(temp.c_str(), path.c_str()) != 0) {
     const std::string reason = ErrnoText();
     ::unlink(temp.c_str());
-    throw InputError(path, "cannot replace it with the new file: " + reason);
+    throw model::InputError(path, "cannot replace it with the new file: " + reason);
   }
 }
 
-}  // namespace uuvplan::model
+}  // namespace uuvplan::io

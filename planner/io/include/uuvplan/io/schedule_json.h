@@ -1,0 +1,25 @@
+// The schedule as JSON (contract §schedule, §next): writing a schedule, and reading one back or
+// the single trial of a `next` result, for `uuvplan simulate` and the pool team.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "uuvplan/io/json_value.h"
+#include "uuvplan/planner/schedule.h"
+
+namespace uuvplan::io {
+
+/// One trial as the contract's JSON object: id, dof, kind, duration, mapping, the fields of
+/// its kind, travel, thrust_min (and ballast_steps when non-zero).
+nlohmann::json TrialToJson(const planner::PlannedTrial& trial);
+nlohmann::json ScheduleToJson(const planner::Schedule& schedule);
+
+/// Reads a trial object; throws model::InputError naming the file, the trial's key path (e.g.
+/// "plan.json: trials[2]") and the key on any missing or ill-typed field.
+planner::PlannedTrial TrialFromJson(const JsonValue& trial);
+/// Reads a schedule JSON file (as written by `uuvplan schedule --json`), or a `next` result
+/// (its single "trial"). Throws model::InputError on malformed input.
+planner::Schedule ReadScheduleJson(const std::string& path);
+
+}  // namespace uuvplan::io

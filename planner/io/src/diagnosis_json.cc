@@ -1,0 +1,82 @@
+// The `diagnose` result as JSON (contract §diagnose): the nominal identification, the findings
+// ordered by gain, every candidate test and the standard model's error breakdown.
+#include "uuvplan/io/diagnosis_json.h"
+
+#include "uuvplan/io/identify_json.h"
+#include "uuvplan/io/json_value.h"
+
+namespace uuvplan::io {
+namespace {
+
+using nlohmann::json;
+
+json GroupsJson(const std::vector<ident::ErrorGroup>& groups) {
+  json out = json::array();
+  for (const auto& g : groups) {
+    out.push_back({{"label", g.label},
+                   {"relative", g.relative},
+                   {"velocity_mae", g.mae},
+                   {"samples", g.samples}});
+  }
+  return out;
+}
+
+json FindingJson(const ident::Finding& f) {
+  json params = json::object();
+  for (const auto& p : f.params) params[p.name] = {{"value", p.value}, {"sigma", p.sigma}};
+  return {{"effect", std::string(model::EffectName(f.effect))},
+          {"dof", std::string(model::DofName(f.dof))},
+          {"what", f.what},
+          {"extension", {{"params", params}}},
+          {"gain",
+           {{"metric", f.gain.metric},
+            {"before", f.gain.before},
+            {"after", f.gain.after},
+            {"relative", f.gain.relative},
+            {"on", f.gain.on}}},
+          {"statistic", f.statistic},
+          {"p_value", f.p_value},
+          {"added_parameters", f.added_parameters}};
+}
+
+json CandidateTestJson(const ident::CandidateTest& t) {
+  return {{"effect", std::string(model::EffectName(t.effect))},
+          {"dof", std::string(model::DofName(t.dof))},
+          {"detail", t.detail},
+          {"round", t.round},
+          {"statistic", t.statistic},
+          {"added_parameters", t.added_parameters},
+          {"p_value", t.p_value},
+          {"max_z", t.max_z},
+          {"significant", t.significant},
+          {"gain", JsonNumber(t.gain)},
+          {"accepted", t.accepted}};
+}
+
+json BreakdownJson(const ident::ErrorBreakdown& b) {
+  return {{"by_thrust", GroupsJson(b.by_thrust)},
+          {"by_motion", GroupsJson(b.by_motion)},
+          {"by_speed", GroupsJson(b.by_speed)},
+          {"by_command", GroupsJson(b.by_command)},
+          {"lag_s", b.lag_s},
+          {"drift_per_hour", b.drift_per_hour},
+          {"velocity_mae", b.velocity_mae}};
+}
+
+}  // namespace
+
+json DiagnosisJson(const ident::DiagnosisResult& r) {
+  json findings = json::array(), tests = json::array(), breakdown = json::object();
+  for (const auto& f : r.findings) findings.push_back(FindingJson(f));
+  for (const auto& t : r.tests) tests.push_back(CandidateTestJson(t));
+  for (const auto& b : r.breakdowns)
+    breakdown[std::string(model::DofName(b.dof))] = BreakdownJson(b);
+  return {{"nominal", IdentifyJson(r.nominal)},
+          {"findings", findings},
+          {"tests", tests},
+          {"breakdown", breakdown},
+          {"warnings", r.warnings},
+          {"notes", r.notes}};
+}
+
+}  // namespace uuvplan::io

@@ -1,0 +1,35 @@
+// The pool file (contract §Pool, docs/formats.md).
+#include "uuvplan/io/pool_yaml.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "uuvplan/io/yaml_value.h"
+
+namespace uuvplan::io {
+
+using namespace model;  // NOLINT: the vocabulary of the pool file
+namespace fs = std::filesystem;
+
+Pool ReadPool(const std::string& path) {
+  return Guarded(path, [&] {
+    const MapValue m =
+        LoadYamlMap(path, "a pool (name, length, width, depth, margin)", "a map of pool keys");
+    m.AllowOnly({"name", "length", "width", "depth", "margin"});
+    Pool pool;
+    const Value name = m.Optional("name");
+    pool.name = name.absent() ? fs::path(path).stem().string() : Name(name, "a pool name");
+    pool.length = Positive(m.Required("length"));
+    pool.width = Positive(m.Required("width"));
+    pool.depth = Positive(m.Required("depth"));
+    if (const Value margin = m.Optional("margin"); !margin.absent()) {
+      pool.margin = NonNegative(margin);
+      if (!(2 * pool.margin < std::min({pool.length, pool.width, pool.depth}))) {
+        margin.Expected("a margin that leaves room to move (2·margin < length, width and depth)");
+      }
+    }
+    return pool;
+  });
+}
+
+}  // namespace uuvplan::io

@@ -1,0 +1,276 @@
+// The schedule as JSON (contract §schedule, §next).
+//
+// Reading is strict about the keys the contract names (a missing or ill-typed key is an
+// InputError naming the file, the trial index and the key) and ignores keys it does not know
+// (the contract welcomes more keys). A trial id names its log file (trials/<id>.csv), so it is
+// limited to letters, digits and `_ . - +`, not starting with a dot.
+#include "uuvplan/io/schedule_json.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+namespace uuvplan::io {
+
+using nlohmann::json;
+using planner::PlannedTrial;
+using planner::PredictedPrecision;
+using planner::Schedule;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Writing.
+
+json SegmentsToJson(const model::TrialDesign& d) {
+  json segments = json::array();
+  for (const auto& s : d.segments) {
+    segments.push_back({{"force", s.force},
+                        {"duration", s.duration},
+                        {"mapping", s.mapping.empty() ? d.mapping : s.mapping}});
+  }
+  return segments;
+}
+
+// The fields of the trial's kind (contract §schedule).
+void KindFieldsToJson(const model::TrialDesign& d, json* j) {
+  switch (d.kind) {
+    case model::TrialKind::kSteady:
+      (*j)["force"] = d.force;
+      break;
+    case model::TrialKind::kSine:
+      (*j)["offset"] = d.offset;
+      (*j)["amplitude"] = d.amplitude;
+      (*j)["omega"] = d.omega;
+      break;
+    case model::TrialKind::kSegments:
+      (*j)["segments"] = SegmentsToJson(d);
+      break;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading.
+
+bool IsIdChar(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-' ||
+         c == '+';
+}
+
+std::string TrialId(const JsonValue& v) {
+  const std::string expectation =
+      "a trial id of letters, digits and _ . - + not starting with '.' (it names the trial's "
+      "log file)";
+  const std::string id = String(v, expectation);
+  bool ok = id.front() != '.';
+  for (char c : id) ok = ok && IsIdChar(c);
+  if (!ok) v.Expected(expectation);
+  return id;
+}
+
+model::Dof DofOf(const JsonValue& v) {
+  if (v.json().is_string()) {
+    if (auto dof = model::ParseDof(v.json().get<std::string>())) return *dof;
+  }
+  v.Expected("a DOF (surge, sway, heave, roll, pitch, yaw)");
+}
+
+model::TrialKind KindOf(const JsonValue& v) {
+  if (v.json().is_string()) {
+    const std::string k = v.json().get<std::string>();
+    if (k == "steady") return model::TrialKind::kSteady;
+    if (k == "sine") return model::TrialKind::kSine;
+    if (k == "segments") return model::TrialKind::kSegments;
+  }
+  v.Expected("a trial kind (steady, sine, segments)");
+}
+
+std::vector<model::SegmentDesign> SegmentsOf(const JsonValue& v, const std::string& trial_mapping) {
+  if (!v.json().is_array() || v.json().empty()) {
+    v.Expected("a non-empty array of {force, duration, mapping}");
+  }
+  std::vector<model::SegmentDesign> segments;
+  for (std::size_t i = 0; i < v.json().size(); ++i) {
+    const JsonValue s = v.Item(i);
+    if (!s.json().is_object()) s.Expected("an object {force, duration, mapping}");
+    model::SegmentDesign seg;
+    seg.force = Number(s.Required("force", "N or N·m"));
+    seg.duration = PositiveNumber(s.Required("duration", "s"), "s");
+    // The contract writes a mapping per segment; a hand-written plan may leave it to the trial.
+    if (const auto m = s.Optional("mapping")) seg.mapping = String(*m, "a mapping name");
+    if (seg.mapping == trial_mapping) seg.mapping.clear();
+    segments.push_back(seg);
+  }
+  return segments;
+}
+
+// The legs make the trial: their durations must add up to it (to 1 µs per second, far below
+// any log's resolution, and above the rounding of durations written as decimals).
+void CheckSegmentsDuration(const JsonValue& trial, const model::TrialDesign& d) {
+  double total = 0.0;
+  for (const auto& s : d.segments) total += s.duration;
+  if (std::abs(total - d.duration) > 1e-6 * std::max(1.0, d.duration)) {
+    std::ostringstream what;
+    what.precision(12);
+    what << "expected the segments' durations to add up to the trial's, got " << total
+         << " s for duration " << d.duration << " s";
+    trial.Required("duration").Fail(what.str());
+  }
+}
+
+// The fields of the trial's kind.
+void KindFieldsOf(const JsonValue& j, model::TrialDesign* d) {
+  switch (d->kind) {
+    case model::TrialKind::kSteady:
+      d->force =
+          Number(j.Required("force", "a steady trial's constant force"), "a number (N or N·m)");
+      break;
+    case model::TrialKind::kSine:
+      d->offset = Number(j.Required("offset", "a sine trial's mean force"), "a number (N or N·m)");
+      d->amplitude =
+          Number(j.Required("amplitude", "a sine trial's force amplitude"), "a number (N or N·m)");
+      d->omega = NonNegativeNumber(j.Required("omega", "a sine trial's frequency"),
+                                   "a number >= 0 (rad/s)");
+      break;
+    case model::TrialKind::kSegments:
+      d->segments = SegmentsOf(j.Required("segments", "a segments trial's legs"), d->mapping);
+      CheckSegmentsDuration(j, *d);
+      break;
+  }
+}
+
+// travel: [min, max] with min <= max (m or rad).
+std::array<double, 2> TravelOf(const JsonValue& v) {
+  const std::string expectation = "[min, max] with min <= max (m or rad)";
+  const json& j = v.json();
+  if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number()) {
+    v.Expected(expectation);
+  }
+  const std::array<double, 2> t = {j[0].get<double>(), j[1].get<double>()};
+  if (!std::isfinite(t[0]) || !std::isfinite(t[1]) || t[0] > t[1]) v.Expected(expectation);
+  return t;
+}
+
+PredictedPrecision PredictedOf(const JsonValue& v) {
+  if (!v.json().is_object()) v.Expected("an object {sigma, criterion, value}");
+  PredictedPrecision p;
+  const JsonValue sigma = v.Required("sigma", "predicted 1σ per parameter");
+  if (!sigma.json().is_object()) sigma.Expected("an object {<parameter>: sigma}");
+  for (const auto& [name, s] : sigma.json().items()) {
+    p.sigma[name] = NonNegativeNumber(*sigma.Optional(name), "a number >= 0");
+  }
+  p.criterion = String(v.Required("criterion", "D, Ds, A or E"), "a criterion name (D, Ds, A, E)");
+  p.criterion_value = Number(v.Required("value", "the criterion value"));
+  return p;
+}
+
+std::map<model::Dof, PredictedPrecision> PredictedMapOf(const JsonValue& v) {
+  if (!v.json().is_object()) v.Expected("an object {<dof>: {sigma, criterion, value}}");
+  std::map<model::Dof, PredictedPrecision> out;
+  for (const auto& [name, p] : v.json().items()) {
+    const auto dof = model::ParseDof(name);
+    if (!dof) v.Fail("key '" + name + "': expected a DOF (surge, sway, heave, roll, pitch, yaw)");
+    out[*dof] = PredictedOf(*v.Optional(name));
+  }
+  return out;
+}
+
+// The trials of a schedule ("trials") or of a `next` result ("trial").
+std::vector<PlannedTrial> TrialsOf(const JsonValue& root) {
+  std::vector<PlannedTrial> trials;
+  if (const auto list = root.Optional("trials")) {
+    if (!list->json().is_array()) list->Expected("an array of trials");
+    for (std::size_t i = 0; i < list->json().size(); ++i) {
+      trials.push_back(TrialFromJson(list->Item(i)));
+    }
+    if (trials.empty()) list->Fail("expected at least one trial, got an empty array");
+  } else if (const auto trial = root.Optional("trial")) {
+    trials.push_back(TrialFromJson(*trial));
+  } else {
+    root.Fail("missing required key 'trials' (a schedule) or 'trial' (a `next` result)");
+  }
+  return trials;
+}
+
+// Each trial's log is trials/<id>.csv: ids must differ.
+void CheckDistinctIds(const JsonValue& root, const std::vector<PlannedTrial>& trials) {
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < trials.size(); ++i) {
+    if (!ids.insert(trials[i].design.id).second) {
+      Place(root.file(), 0, "trials[" + std::to_string(i) + "].id")
+          .Fail("trial id '" + trials[i].design.id +
+                "' appears twice (each trial's log is trials/<id>.csv)");
+    }
+  }
+}
+
+}  // namespace
+
+json TrialToJson(const PlannedTrial& trial) {
+  const model::TrialDesign& d = trial.design;
+  json j;
+  j["id"] = d.id;
+  j["dof"] = std::string(model::DofName(d.dof));
+  j["kind"] = std::string(model::TrialKindName(d.kind));
+  j["duration"] = d.duration;
+  j["mapping"] = d.mapping;
+  KindFieldsToJson(d, &j);
+  j["travel"] = {trial.travel[0], trial.travel[1]};
+  j["thrust_min"] = trial.thrust_min;
+  if (d.ballast_steps != 0) j["ballast_steps"] = d.ballast_steps;
+  return j;
+}
+
+json ScheduleToJson(const Schedule& schedule) {
+  json trials = json::array();
+  for (const auto& t : schedule.trials) trials.push_back(TrialToJson(t));
+  json predicted = json::object();
+  for (const auto& [dof, p] : schedule.predicted) {
+    json sigma = json::object();
+    for (const auto& [name, s] : p.sigma) sigma[name] = s;
+    predicted[std::string(model::DofName(dof))] = {
+        {"sigma", sigma}, {"criterion", p.criterion}, {"value", p.criterion_value}};
+  }
+  return {{"trials", trials}, {"predicted", predicted}, {"pool_time", schedule.pool_time}};
+}
+
+PlannedTrial TrialFromJson(const JsonValue& j) {
+  if (!j.json().is_object()) j.Expected("a trial object");
+  PlannedTrial trial;
+  model::TrialDesign& d = trial.design;
+  d.id = TrialId(j.Required("id", "the trial's name"));
+  d.dof = DofOf(j.Required("dof", "surge, sway, heave, roll, pitch or yaw"));
+  d.kind = KindOf(j.Required("kind", "steady, sine or segments"));
+  d.duration = PositiveNumber(j.Required("duration", "s"), "s");
+  d.mapping = String(j.Required("mapping", "the thrust mapping of the trial"), "a mapping name");
+  KindFieldsOf(j, &d);
+  if (const auto t = j.Optional("travel")) trial.travel = TravelOf(*t);
+  if (const auto t = j.Optional("thrust_min")) {
+    trial.thrust_min = NonNegativeNumber(*t, "a number >= 0 (N)");
+  }
+  if (const auto b = j.Optional("ballast_steps")) d.ballast_steps = WholeNonNegative(*b);
+  return trial;
+}
+
+Schedule ReadScheduleJson(const std::string& path) {
+  const json root_json = LoadJson(path);
+  const JsonValue root(root_json, path, "");
+  if (!root_json.is_object()) {
+    root.Expected("a schedule {\"trials\": [...]} or a `next` result {\"trial\": {...}}");
+  }
+  Schedule schedule;
+  schedule.trials = TrialsOf(root);
+  CheckDistinctIds(root, schedule.trials);
+  // A schedule's predicted precision (a `next` result's "predicted" is its own business).
+  if (const auto p = root.Optional("predicted"); p && root_json.contains("trials")) {
+    schedule.predicted = PredictedMapOf(*p);
+  }
+  if (const auto t = root.Optional("pool_time")) {
+    schedule.pool_time = NonNegativeNumber(*t, "a number >= 0 (s)");
+  }
+  return schedule;
+}
+
+}  // namespace uuvplan::io

@@ -1,0 +1,94 @@
+// The truth file (contract §Truth, docs/formats.md): a vehicle file plus, per DOF, the true
+// standard-model parameters and the effects the virtual vehicle has, and the virtual pool's
+// defects. Effect settings are read by truth_effects.cc.
+#include "uuvplan/io/truth_yaml.h"
+
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "truth_effects.h"
+#include "uuvplan/model/effects.h"
+#include "vehicle_keys.h"
+
+namespace uuvplan::io {
+
+using namespace model;  // NOLINT: the vocabulary of the truth file
+
+namespace {
+
+// params: the true standard-model parameters of the DOF. m is required; k, kq, bias and
+// bias_step default to 0 (eta to 1, i.e. not listed).
+void ParseParams(const Value& v, Dof dof, const Vehicle& vehicle, DofTruth* truth) {
+  const MapValue m(v, "a map {m, k, kq, bias, bias_step, eta}");
+  m.AllowOnly({"m", "k", "kq", "bias", "bias_step", "eta"});
+  truth->params[param::kMass] = Positive(m.Required("m"));
+  const auto optional = [&m](const char* key, double (*read)(const Value&)) {
+    const Value x = m.Optional(key);
+    return x.absent() ? 0.0 : read(x);
+  };
+  truth->params[param::kLinearDrag] = optional("k", NonNegative);
+  truth->params[param::kQuadraticDrag] = optional("kq", NonNegative);
+  truth->params[param::kBias] = optional("bias", AnyNumber);
+  truth->params[param::kBiasStep] = optional("bias_step", AnyNumber);
+  if (const Value eta = m.Optional("eta"); !eta.absent()) ParseEta(eta, dof, vehicle, truth);
+}
+
+// dofs.<dof>.params and .effects of a truth file; nullopt when the DOF has neither.
+std::optional<DofTruth> ParseTruthDof(const Value& v, Dof dof, const Vehicle& vehicle) {
+  const MapValue m(v, "a map {drag, added_mass, params, effects}");
+  const Value effects = m.Optional("effects");
+  if (!m.Has("params")) {
+    if (!effects.absent()) m.Required("params");  // effects act on the true parameters
+    return std::nullopt;
+  }
+  DofTruth truth;
+  ParseParams(m.Required("params"), dof, vehicle, &truth);
+  if (effects.absent()) return truth;
+  const MapValue settings(effects, "a map {<effect>: {settings}}");
+  for (const MapValue::Entry& e : settings.entries()) {
+    const std::optional<Effect> effect = ParseEffect(e.key);
+    if (!effect) e.key_value.Expected("an effect (" + EffectList() + ")");
+    ParseEffectSettings(*effect, e.value, dof, vehicle, &truth);
+  }
+  return truth;
+}
+
+// virtual_pool: {step, dropout_probability, outlier_probability, outlier_size}.
+void ParseVirtualPool(const Value& v, Truth* truth) {
+  const MapValue m(v, "a map {step, dropout_probability, outlier_probability, outlier_size}");
+  m.AllowOnly({"step", "dropout_probability", "outlier_probability", "outlier_size"});
+  if (const Value x = m.Optional("step"); !x.absent()) truth->integration_step_s = Positive(x);
+  if (const Value x = m.Optional("dropout_probability"); !x.absent()) {
+    truth->defects.dropout_probability = Probability(x);
+  }
+  if (const Value x = m.Optional("outlier_probability"); !x.absent()) {
+    truth->defects.outlier_probability = Probability(x);
+  }
+  if (const Value x = m.Optional("outlier_size"); !x.absent()) {
+    truth->defects.outlier_size = NonNegative(x);
+  }
+}
+
+}  // namespace
+
+Truth ReadTruth(const std::string& path) {
+  return Guarded(path, [&] {
+    const MapValue m = LoadYamlMap(path, "a truth file (a vehicle plus dofs.<dof>.params)",
+                                   "a map of vehicle keys");
+    Truth truth;
+    truth.vehicle = ParseVehicle(m, true);
+    if (const Value dofs = m.Optional("dofs"); !dofs.absent()) {
+      const MapValue dof_map(dofs, "a map of DOFs");
+      for (const MapValue::Entry& e : dof_map.entries()) {
+        const Dof dof = DofKey(e);
+        if (auto t = ParseTruthDof(e.value, dof, truth.vehicle)) truth.dofs[dof] = std::move(*t);
+      }
+    }
+    if (truth.dofs.empty()) m.self().Fail("expected dofs.<dof>.params for at least one DOF");
+    if (const Value v = m.Optional("virtual_pool"); !v.absent()) ParseVirtualPool(v, &truth);
+    return truth;
+  });
+}
+
+}  // namespace uuvplan::io

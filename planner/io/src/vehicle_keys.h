@@ -1,0 +1,13 @@
+// Internal to the YAML readers: the vehicle keys, shared by the vehicle and the truth file.
+#pragma once
+
+#include "uuvplan/io/yaml_value.h"
+#include "uuvplan/model/vehicle.h"
+
+namespace uuvplan::io {
+
+/// The vehicle keys of `root`; a truth file (`truth`) may also have virtual_pool and per-DOF
+/// params and effects (read by the truth reader).
+model::Vehicle ParseVehicle(const MapValue& root, bool truth);
+
+}  // namespace uuvplan::io

@@ -1,0 +1,135 @@
+// Writes a vehicle file (contract §Vehicle) that ReadVehicle reads back to the same vehicle:
+// the virtual pool stores the truth's vehicle beside the campaign it simulates. Numbers are
+// written with 17 significant digits, enough to read back exactly.
+#include <yaml-cpp/yaml.h>
+
+#include <array>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "uuvplan/io/files.h"
+#include "uuvplan/io/vehicle_yaml.h"
+
+namespace uuvplan::io {
+
+using namespace model;  // NOLINT: the vocabulary of the vehicle file
+
+namespace {
+
+using Key = std::pair<const char*, double>;
+
+// {k1: v1, k2: v2, ...} on one line.
+void EmitFlowMap(YAML::Emitter& out, std::initializer_list<Key> items) {
+  out << YAML::Flow << YAML::BeginMap;
+  for (const auto& [key, value] : items) out << YAML::Key << key << YAML::Value << value;
+  out << YAML::EndMap;
+}
+
+void EmitPair(YAML::Emitter& out, const std::array<double, 2>& p) {
+  out << YAML::Flow << YAML::BeginSeq << p[0] << p[1] << YAML::EndSeq;
+}
+
+void EmitSensor(YAML::Emitter& out, const char* key, const std::optional<SensorSpec>& s) {
+  if (!s) return;
+  out << YAML::Key << key << YAML::Value;
+  EmitFlowMap(out, {{"rate", s->rate_hz}, {"sigma", s->sigma}});
+}
+
+// `key: {<dof>: {...}}` with the block of each DOF written by `emit`; nothing when empty.
+template <typename PerDof, typename Emit>
+void EmitPerDof(YAML::Emitter& out, const char* key, const PerDof& per_dof, Emit emit) {
+  if (per_dof.empty()) return;
+  out << YAML::Key << key << YAML::Value << YAML::BeginMap;
+  for (const auto& [dof, item] : per_dof) {
+    out << YAML::Key << std::string(DofName(dof)) << YAML::Value << YAML::BeginMap;
+    emit(item);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
+void EmitThruster(YAML::Emitter& out, const Thruster& t) {
+  out << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << t.name;
+  out << YAML::Key << "thrust" << YAML::Value << YAML::BeginMap;
+  if (t.model.kind == ThrustModel::Kind::kSquare) {
+    out << YAML::Key << "model" << YAML::Value << "square" << YAML::Key << "c_pos" << YAML::Value
+        << t.model.c_pos << YAML::Key << "c_neg" << YAML::Value << t.model.c_neg;
+  } else {
+    out << YAML::Key << "model" << YAML::Value << "poly2" << YAML::Key << "a" << YAML::Value
+        << t.model.a << YAML::Key << "b" << YAML::Value << t.model.b;
+  }
+  if (t.model.deduction != 0.0) {
+    out << YAML::Key << "deduction" << YAML::Value << t.model.deduction;
+  }
+  out << YAML::EndMap << YAML::Key << "command" << YAML::Value;
+  EmitPair(out, {t.command_min, t.command_max});
+  out << YAML::EndMap;
+}
+
+void EmitMappings(YAML::Emitter& out, const Vehicle& v) {
+  out << YAML::Key << "mappings" << YAML::Value << YAML::BeginMap;
+  for (const auto& m : v.mappings) {
+    out << YAML::Key << m.name << YAML::Value << YAML::BeginMap;
+    out << YAML::Key << "dof" << YAML::Value << std::string(DofName(m.dof));
+    out << YAML::Key << "shares" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    for (const auto& [index, share] : m.shares) {
+      out << YAML::Key << v.thrusters.at(index).name << YAML::Value << share;
+    }
+    out << YAML::EndMap;
+    out << YAML::Key << "open_water" << YAML::Value << std::string(OpenWaterName(m.open_water));
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
+void EmitBody(YAML::Emitter& out, const Vehicle& v) {
+  out << YAML::Key << "name" << YAML::Value << v.name;
+  out << YAML::Key << "mass" << YAML::Value << v.mass;
+  out << YAML::Key << "size" << YAML::Value << YAML::Flow << YAML::BeginSeq << v.size[0]
+      << v.size[1] << v.size[2] << YAML::EndSeq;
+  if (!v.inertia.empty()) {
+    out << YAML::Key << "inertia" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    for (const auto& [dof, value] : v.inertia) {
+      out << YAML::Key << std::string(DofName(dof)) << YAML::Value << value;
+    }
+    out << YAML::EndMap;
+  }
+  out << YAML::Key << "added_mass" << YAML::Value;
+  EmitPair(out, v.added_mass);
+}
+
+}  // namespace
+
+void WriteVehicleYaml(const std::string& path, const Vehicle& v) {
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  out << YAML::BeginMap;
+  EmitBody(out, v);
+  out << YAML::Key << "thrusters" << YAML::Value << YAML::BeginSeq;
+  for (const auto& t : v.thrusters) EmitThruster(out, t);
+  out << YAML::EndSeq;
+  out << YAML::Key << "min_thrust" << YAML::Value << v.min_thrust;
+  EmitMappings(out, v);
+  EmitPerDof(out, "dofs", v.priors, [&out](const DofPrior& prior) {
+    if (prior.drag) {
+      out << YAML::Key << "drag" << YAML::Value;
+      EmitFlowMap(
+          out,
+          {{"k", prior.drag->k}, {"kq", prior.drag->kq}, {"rel_sigma", prior.drag->rel_sigma}});
+    }
+    if (prior.added_mass) {
+      out << YAML::Key << "added_mass" << YAML::Value;
+      EmitPair(out, *prior.added_mass);
+    }
+  });
+  EmitPerDof(out, "sensors", v.sensors, [&out](const DofSensors& s) {
+    EmitSensor(out, "position", s.position);
+    EmitSensor(out, "velocity", s.velocity);
+  });
+  out << YAML::EndMap;
+  WriteFileAtomically(path, std::string("# written by uuvplan\n") + out.c_str() + "\n");
+}
+
+}  // namespace uuvplan::io

@@ -1,0 +1,92 @@
+// A diagnosis as a readable report (docs/cli.md): the standard model's errors, the findings
+// with their extension and gain, and the candidate effects tested.
+#include "diagnosis_report.h"
+
+#include <cmath>
+#include <iomanip>
+
+#include "identify_table.h"
+
+namespace uuvplan::tool {
+
+namespace {
+
+// Where the standard model's free-run simulation goes wrong on one DOF.
+void PrintBreakdown(const ident::ErrorBreakdown& b, std::ostream& out) {
+  const std::string unit(model::VelocityUnit(b.dof));
+  out << "\nWhere the standard model's free-run simulation goes wrong (" << model::DofName(b.dof)
+      << ", velocity MAE " << std::setprecision(4) << b.velocity_mae << " " << unit << "):\n";
+  auto print = [&](const std::vector<ident::ErrorGroup>& groups) {
+    for (const auto& g : groups) {
+      out << "  " << std::left << std::setw(48) << g.label << std::right << std::setprecision(1)
+          << std::showpos << 100.0 * g.relative << std::noshowpos << "% speed  (MAE "
+          << std::setprecision(4) << g.mae << " " << unit << ", " << g.samples << " samples)\n";
+    }
+  };
+  print(b.by_thrust);
+  print(b.by_motion);
+  print(b.by_speed);
+  print(b.by_command);
+  out << "  measured velocity lags the simulation by " << std::setprecision(2) << b.lag_s << " s; ";
+  if (std::isfinite(b.drift_per_hour)) {
+    out << "speed error drifts " << std::showpos << std::setprecision(1) << 100.0 * b.drift_per_hour
+        << std::noshowpos << "% per hour of campaign\n";
+  } else {
+    out << "drift over the campaign not assessed (no `start` times: campaign clock unknown)\n";
+  }
+}
+
+// Each finding with its extension, evidence and gain.
+void PrintFindings(const ident::DiagnosisResult& r, std::ostream& out) {
+  int i = 0;
+  for (const auto& f : r.findings) {
+    out << "  " << ++i << ". " << model::EffectName(f.effect) << " (" << model::DofName(f.dof)
+        << "): " << f.what << "\n     extension:";
+    for (const auto& p : f.params) {
+      out << " " << p.name << " = " << Cell(p.value) << " ± " << Cell(p.sigma);
+    }
+    out << "\n     evidence: likelihood ratio D = " << std::setprecision(1) << f.statistic << " on "
+        << f.added_parameters << " parameter(s), p = " << std::scientific << std::setprecision(1)
+        << f.p_value << std::fixed << "\n     gain: velocity MAE " << std::setprecision(4)
+        << f.gain.before << " -> " << f.gain.after << " (" << std::setprecision(0)
+        << 100.0 * f.gain.relative << "% better) on " << f.gain.on << "\n";
+  }
+}
+
+}  // namespace
+
+void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
+  out << "Standard model (contract: all eta = 1, symmetric drag, no extra terms):\n";
+  PrintIdentifyTable(r.nominal, out);
+  out << std::fixed;
+  for (const auto& b : r.breakdowns) PrintBreakdown(b, out);
+  out << "\nFindings (ordered by gain):\n";
+  for (const auto& w : r.warnings) out << "  WARNING: " << w << "\n";
+  if (r.findings.empty()) {
+    // breakdowns: one per DOF whose standard model could be fitted and diagnosed.
+    if (r.breakdowns.empty()) {
+      out << "  none: no DOF could be diagnosed (see the notes)\n";
+    } else {
+      out << "  none: the standard model explains the data of";
+      for (const auto& b : r.breakdowns) out << " " << model::DofName(b.dof);
+      out << "\n";
+    }
+  }
+  PrintFindings(r, out);
+  out << "\nCandidate effects tested (significant: p < 1e-3 and a new parameter >= 3 sigma from "
+         "'no effect'; accepted: also >= 0.5% better on held-out data):\n";
+  for (const auto& t : r.tests) {
+    out << "  round " << t.round << "  " << std::left << std::setw(20)
+        << model::EffectName(t.effect) << std::setw(4) << t.detail << std::right
+        << "  D = " << std::setw(10) << std::setprecision(1) << t.statistic
+        << "  z = " << std::setw(6) << t.max_z << (t.significant ? "  significant" : "");
+    if (std::isfinite(t.gain)) {
+      out << ", held-out gain " << std::setprecision(1) << 100.0 * t.gain << "%"
+          << (t.accepted ? "  ACCEPTED" : "  (not enough)");
+    }
+    out << "\n";
+  }
+  for (const auto& n : r.notes) out << "note: " << n << "\n";
+}
+
+}  // namespace uuvplan::tool

@@ -1,0 +1,126 @@
+// The `identify` result as a readable table (docs/cli.md), shared by the commands that print
+// identification results (identify, next, loop, diagnose).
+#include "identify_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "uuvplan/io/campaign_yaml.h"
+
+namespace uuvplan::tool {
+
+std::string Cell(double v, int precision) {
+  if (!std::isfinite(v)) return "-";
+  std::ostringstream os;
+  os << std::setprecision(precision) << v;
+  return os.str();
+}
+
+namespace {
+
+// The parameters of a DOF: value, σ, percentile error and significance.
+void PrintParameters(const ident::DofIdentification& d, std::ostream& out) {
+  for (const auto& e : d.params) {
+    std::string sig;
+    double value = e.value, sigma = e.sigma;
+    switch (e.state) {
+      case ident::ParameterState::kEstimated:
+        sig = e.significant ? "significant" : "NOT significant (> 51.02%)";
+        break;
+
+      case ident::ParameterState::kDropped:
+        sig = "dropped (insignificant, set to 0)";
+        value = e.value_before_drop;
+        sigma = e.sigma_before_drop;
+        break;
+      case ident::ParameterState::kFixed:
+        sig = "fixed (not estimated)";
+        break;
+    }
+    if (std::find(d.unreliable.begin(), d.unreliable.end(), e.name) != d.unreliable.end()) {
+      sig += "; NOT RELIABLE (see warnings)";
+    }
+    const double pe =
+        e.state == ident::ParameterState::kFixed ? std::nan("") : e.percentile_error();
+    out << "  " << std::left << std::setw(26) << e.name << std::right << std::setw(13)
+        << Cell(value, 6) << std::setw(12) << Cell(sigma, 3) << std::setw(10) << Cell(pe, 3) << "  "
+        << sig << "\n";
+  }
+}
+
+// The fit figures of a DOF, overall and per trial with its residual analysis.
+void PrintFit(const ident::DofIdentification& d, std::ostream& out) {
+  const auto& f = d.fit;
+  out << "  fit: velocity MAE (seed 002 eq. 37) fit " << Cell(f.velocity_mae_fit) << ", validate "
+      << Cell(f.velocity_mae_validate) << " " << model::VelocityUnit(d.dof) << "; position RMS fit "
+      << Cell(f.position_rms_fit) << ", validate " << Cell(f.position_rms_validate) << " "
+      << model::PositionUnit(d.dof) << "\n";
+  out << "  " << std::left << std::setw(34) << "trial" << std::setw(10) << "use" << std::right
+      << std::setw(12) << "vel. MAE" << std::setw(12) << "pos. RMS"
+      << "  residuals\n";
+  for (const auto& t : f.trials) {
+    std::ostringstream res;
+    res << t.residual_signal << " mean " << Cell(t.residuals.mean, 3) << ", "
+        << (t.residuals.white ? "white" : "NOT white") << " (" << t.residuals.lags_outside << "/"
+        << (t.residuals.autocorrelation.empty() ? 0 : t.residuals.autocorrelation.size() - 1)
+        << " lags outside ±" << Cell(t.residuals.bound95, 2) << ")";
+    out << "  " << std::left << std::setw(34) << t.name << std::setw(10) << io::TrialUseName(t.use)
+        << std::right << std::setw(12) << Cell(t.velocity_mae) << std::setw(12)
+        << Cell(t.position_rms) << "  " << res.str()
+        << (t.velocity_reference == "estimated" ? " [velocity estimated from positions]" : "")
+        << "\n";
+  }
+}
+
+void PrintDof(const ident::DofIdentification& d, std::ostream& out) {
+  const std::string dof(model::DofName(d.dof));
+  out << dof << " (" << ident::IdentifyStatusName(d.status) << ", estimator "
+      << ident::FinalEstimatorName(d.estimator) << "; " << d.fit_trials.size() << " fit, "
+      << d.validate_trials.size() << " validate trial(s))\n";
+  out << "  " << std::left << std::setw(26) << "parameter" << std::right << std::setw(13) << "value"
+      << std::setw(12) << "sigma" << std::setw(10) << "error %"
+      << "  significance\n";
+  PrintParameters(d, out);
+  PrintFit(d, out);
+  if (d.one_step && d.one_step->ok() && d.one_step->standard) {
+    const auto& c = d.one_step->seed;
+    out << "  one-step LS coefficients (seed 002 eq. 4): alpha " << Cell(c.alpha) << ", beta "
+        << Cell(c.beta) << ", gamma " << Cell(c.gamma) << ", delta " << Cell(c.delta) << "\n";
+  }
+  for (const auto& w : d.warnings) out << "  WARNING: " << w << "\n";
+  for (const auto& n : d.notes) out << "  note: " << n << "\n";
+  out << "\n";
+}
+
+// What the data preparation excluded: outliers and gaps per trial.
+void PrintExclusions(const ident::IdentifyResult& r, std::ostream& out) {
+  for (const auto& t : r.trials) {
+    const std::size_t excluded = t.position_outliers.size() + t.velocity_outliers.size();
+    if (excluded == 0 && t.gaps.empty()) continue;
+    out << "data: " << t.file << ": " << excluded << " outlier(s) excluded";
+    if (excluded > 0) {
+      out << " at t =";
+      int shown = 0;
+      for (const auto* list : {&t.position_outliers, &t.velocity_outliers}) {
+        for (const auto& o : *list) {
+          if (shown++ < 6) out << " " << Cell(o.t + t.time_offset);
+        }
+      }
+      if (shown > 6) out << " …";
+      out << " s";
+    }
+    out << "; " << t.gaps.size() << " gap(s)\n";
+  }
+}
+
+}  // namespace
+
+void PrintIdentifyTable(const ident::IdentifyResult& r, std::ostream& out) {
+  for (const auto& d : r.dofs) PrintDof(d, out);
+  PrintExclusions(r, out);
+  out << r.message << " — status " << ident::IdentifyStatusName(r.status) << "\n";
+}
+
+}  // namespace uuvplan::tool
