@@ -28,7 +28,7 @@ json DiagnosisJson(const ident::DiagnosisResult& r) {
   for (const auto& f : r.findings) {
     json params = json::object();
     for (const auto& p : f.params) params[p.name] = {{"value", p.value}, {"sigma", p.sigma}};
-    findings.push_back({{"effect", std::string(model::EffectName(f.effect))},
+    findings.push_back({{"effect", f.effect},
                         {"dof", std::string(model::DofName(f.dof))},
                         {"what", f.what},
                         {"extension", {{"params", params}}},
@@ -45,7 +45,7 @@ json DiagnosisJson(const ident::DiagnosisResult& r) {
   out["findings"] = findings;
   json tests = json::array();
   for (const auto& t : r.tests) {
-    tests.push_back({{"effect", std::string(model::EffectName(t.effect))},
+    tests.push_back({{"effect", t.effect},
                      {"dof", std::string(model::DofName(t.dof))},
                      {"detail", t.detail},
                      {"round", t.round},
@@ -114,7 +114,7 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
   }
   int i = 0;
   for (const auto& f : r.findings) {
-    out << "  " << ++i << ". " << model::EffectName(f.effect) << " (" << model::DofName(f.dof)
+    out << "  " << ++i << ". " << f.effect << " (" << model::DofName(f.dof)
         << "): " << f.what << "\n     extension:";
     for (const auto& p : f.params) {
       out << " " << p.name << " = " << Cell(p.value) << " ± " << Cell(p.sigma);
@@ -129,7 +129,7 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
          "'no effect'; accepted: also >= 0.5% better on held-out data):\n";
   for (const auto& t : r.tests) {
     out << "  round " << t.round << "  " << std::left << std::setw(20)
-        << model::EffectName(t.effect) << std::setw(4) << t.detail << std::right
+        << t.effect << std::setw(4) << t.detail << std::right
         << "  D = " << std::setw(10) << std::setprecision(1) << t.statistic << "  z = "
         << std::setw(6) << t.max_z << (t.significant ? "  significant" : "");
     if (std::isfinite(t.gain)) {
