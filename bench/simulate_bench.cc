@@ -63,12 +63,12 @@ int main(int argc, char** argv) {
                 {"rear", Dof::kSurge, {}, OpenWater::kNegative}};
   ModelStructure s;
   s.dof = Dof::kSurge;
-  s.ballast = true;
-  s.free_eta = {"eta.front.neg", "eta.rear.pos"};
-  s.asymmetric_drag = s.thruster_lag = s.deadzone = s.advance_speed_loss = true;
-  s.sensor_delay = s.parameter_drift = s.thrust_map = true;
-  s.thrust_reference = 60.0;
-  s.coupling = {"vr", "rr"};
+  // Every effect of the table on (docs/performance.md).
+  s.parameters = {"k",          "k_neg",        "kq",          "kq_neg",      "bias",
+                  "bias_step",  "eta.front.neg", "eta.rear.pos", "lag",        "deadzone",
+                  "advance_loss", "coupling.vr", "coupling.rr", "sensor_delay", "drift",
+                  "thrust_exponent"};
+  s.settings["thrust_reference"] = 60.0;
   const DofModel model(v, s);
   const std::map<std::string, double> named = {{"m", 890},        {"k", 46.9},
                                               {"k_neg", 57.9},  {"kq", 306.2},
@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
   // The thrust map's shape costs an exp and a log per input sample: once per breakpoint of a
   // held input, twice per step of a continuous one. Issue #2's terms are all but that one.
   ModelStructure s2 = s;
-  s2.thrust_map = false;
+  s2.Remove("thrust_exponent");
   const DofModel model2(v, s2);
   const Eigen::VectorXd theta2 = model2.Theta({}, &named);
   const double ms_sine2 =

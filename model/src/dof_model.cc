@@ -18,45 +18,71 @@ void DofModel::Adopt(std::unique_ptr<T> term, Typed<T>* typed) {
   terms_.push_back(std::move(term));
 }
 
-DofModel::DofModel(const Vehicle& vehicle, const ModelStructure& s) : structure_(s) {
-  names_.push_back(param::kMass);
-  if (s.linear_drag || s.quadratic_drag) {
-    Adopt(std::make_unique<internal::DragTerm>(s.linear_drag, s.quadratic_drag, s.asymmetric_drag),
-          &drag_);
+// The standard terms (seed 000 eq. 3): drag, constant force, thrust. Asymmetric drag's k_neg,
+// kq_neg and the free η of installation loss enter these terms (EffectSite::kStandardTerm).
+void DofModel::AdoptStandardTerms(const Vehicle& vehicle) {
+  const ModelStructure& s = structure_;
+  const bool linear = s.Has(param::kLinearDrag), quadratic = s.Has(param::kQuadraticDrag);
+  const bool asymmetric = s.Has(param::kLinearDragNeg) || s.Has(param::kQuadraticDragNeg);
+  if (linear || quadratic) {
+    Adopt(std::make_unique<internal::DragTerm>(linear, quadratic, asymmetric), &drag_);
   }
-  if (s.bias || s.ballast) {
-    Adopt(std::make_unique<internal::ConstantTerm>(s.bias, s.ballast), &constant_);
-  }
+  const bool bias = s.Has(param::kBias), ballast = s.Has(param::kBiasStep);
+  if (bias || ballast) Adopt(std::make_unique<internal::ConstantTerm>(bias, ballast), &constant_);
   std::vector<std::string> mapping_names;
   for (const auto& m : vehicle.mappings) mapping_names.push_back(m.name);
-  Adopt(internal::MakeThrust(mapping_names, s.free_eta), &thrust_);
-  if (s.advance_speed_loss) Adopt(std::make_unique<internal::AdvanceLossTerm>(), &advance_);
-  if (!s.coupling.empty()) {
-    Adopt(std::make_unique<internal::CouplingTerm>(s.dof, s.coupling), &coupling_);
-  }
-  if (s.parameter_drift) Adopt(std::make_unique<internal::DriftTerm>(), &drift_);
-  needs_aux_ = !s.coupling.empty();
+  Adopt(internal::MakeThrust(mapping_names, s.WithPrefix(param::kEtaPrefix)), &thrust_);
+}
 
-  if (s.thruster_lag) {
-    lag_index_ = static_cast<int>(names_.size());
-    names_.push_back(param::kLag);
+// An effect's own force term, held by its final type where the simulation loop knows it.
+void DofModel::AdoptEffectTerm(std::unique_ptr<ForceTerm> term) {
+  const int offset = static_cast<int>(names_.size());
+  ForceTerm* raw = term.get();
+  if (auto* a = dynamic_cast<internal::AdvanceLossTerm*>(raw)) {
+    advance_ = {a, offset};
+  } else if (auto* c = dynamic_cast<internal::CouplingTerm*>(raw)) {
+    coupling_ = {c, offset};
+  } else if (auto* d = dynamic_cast<internal::DriftTerm*>(raw)) {
+    drift_ = {d, offset};
+  } else {
+    others_.push_back({raw, offset});
   }
-  if (s.deadzone) {
-    deadzone_index_ = static_cast<int>(names_.size());
-    names_.push_back(param::kDeadzone);
+  needs_aux_ = needs_aux_ || raw->NeedsOtherVelocities();
+  term_offsets_.push_back(offset);
+  for (const auto& n : raw->parameter_names()) names_.push_back(n);
+  terms_.push_back(std::move(term));
+}
+
+// theta = [m, standard terms, effects' force terms, actuator and sensor parameters], each
+// group in the effect table's order (effects.h).
+DofModel::DofModel(const Vehicle& vehicle, const ModelStructure& s) : structure_(s) {
+  names_.push_back(param::kMass);
+  AdoptStandardTerms(vehicle);
+  const auto& effects = Effects().entries();
+  for (const EffectEntry& e : effects) {
+    const std::vector<std::string> own = s.OfEffect(e.name);
+    if (!own.empty() && e.site == EffectSite::kForceTerm) AdoptEffectTerm(e.make_term(s.dof, own));
   }
-  if (s.sensor_delay) {
-    delay_index_ = static_cast<int>(names_.size());
-    names_.push_back(param::kSensorDelay);
+  for (const EffectEntry& e : effects) {
+    if (e.site != EffectSite::kActuator && e.site != EffectSite::kSensor) continue;
+    for (const std::string& p : s.OfEffect(e.name)) names_.push_back(p);
   }
-  if (s.thrust_map) {
-    if (!(s.thrust_reference > 0) || !std::isfinite(s.thrust_reference)) {
-      throw InputError(std::string(DofName(s.dof)),
-                       "thrust_map reference force " + std::to_string(s.thrust_reference) +
-                           ": expected a positive number");
+  for (const std::string& p : s.parameters) {
+    if (ParameterIndex(p) < 0) {
+      throw InputError(std::string(DofName(s.dof)), "parameter '" + p +
+                                                        "' is not in the vocabulary of the model "
+                                                        "(docs/formats.md)");
     }
-    thrust_exponent_index_ = static_cast<int>(names_.size());
-    names_.push_back(param::kThrustExponent);
+  }
+  lag_index_ = ParameterIndex(param::kLag);
+  deadzone_index_ = ParameterIndex(param::kDeadzone);
+  delay_index_ = ParameterIndex(param::kSensorDelay);
+  thrust_exponent_index_ = ParameterIndex(param::kThrustExponent);
+  thrust_reference_ = s.Setting(param::kThrustReference, 1.0);
+  if (thrust_exponent_index_ >= 0 && !(thrust_reference_ > 0 && std::isfinite(thrust_reference_))) {
+    throw InputError(std::string(DofName(s.dof)),
+                     "thrust reference force " + std::to_string(thrust_reference_) +
+                         ": expected a positive number");
   }
 }
 

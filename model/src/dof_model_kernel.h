@@ -28,7 +28,7 @@ struct DofModelKernel {
     in->du_dd = du0_dd;
     in->du_dp = 0.0;
     if (tm >= 0 && u0 != 0.0) {
-      const double ln_r = std::log(std::abs(u0) / m.structure_.thrust_reference);
+      const double ln_r = std::log(std::abs(u0) / m.thrust_reference_);
       const double g = std::exp(theta[tm] * ln_r);
       in->u = u0 * g;
       in->du_dd = (1.0 + theta[tm]) * g * du0_dd;
@@ -70,8 +70,10 @@ struct DofModelKernel {
     auto value = [&](const auto& typed) {
       return typed.term ? typed.term->Value(tc, theta + typed.offset) : 0.0;
     };
+    double others = 0.0;
+    for (const auto& typed : m.others_) others += value(typed);
     return (value(m.drag_) + value(m.advance_)) + (value(m.coupling_) + value(m.thrust_)) +
-           (value(m.constant_) + value(m.drift_));
+           (value(m.constant_) + value(m.drift_)) + others;
   }
 
   /// 1/m and 1/T: they do not depend on the state, so the caller computes them once and the
@@ -120,6 +122,7 @@ struct DofModelKernel {
     visit(m.advance_);
     visit(m.coupling_);
     visit(m.drift_);
+    for (const auto& typed : m.others_) visit(typed);
     for (int j = 1; j < np; ++j) b1[j] *= inv.mass;
     b1[0] = -force * inv.mass * inv.mass;
     dx[0] = x[1];

@@ -185,6 +185,7 @@ class CouplingTerm final : public ForceTerm {
       pairs_.push_back({LetterIndex(p[0]), LetterIndex(p[1])});
     }
   }
+  bool NeedsOtherVelocities() const override { return true; }
   double Value(const TermContext& c, const double* theta) const override {
     double f = 0.0;
     for (std::size_t j = 0; j < pairs_.size(); ++j) f += theta[j] * Product(c, j);

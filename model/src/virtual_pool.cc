@@ -193,21 +193,11 @@ ModelStructure TruthStructure(const Truth& truth, Dof dof) {
   s.dof = dof;
   const auto it = truth.dofs.find(dof);
   if (it == truth.dofs.end()) return s;
+  s.parameters.clear();
   for (const auto& [name, value] : it->second.params) {
-    if (StartsWith(name, param::kEtaPrefix)) s.free_eta.push_back(name);
-    if (StartsWith(name, param::kCouplingPrefix)) {
-      s.coupling.push_back(name.substr(std::string(param::kCouplingPrefix).size()));
-    }
-    if (name == param::kBiasStep) s.ballast = true;
-    if (name == param::kLinearDragNeg || name == param::kQuadraticDragNeg) s.asymmetric_drag = true;
-    if (name == param::kLag) s.thruster_lag = true;
-    if (name == param::kDeadzone) s.deadzone = true;
-    if (name == param::kAdvanceLoss) s.advance_speed_loss = true;
-    if (name == param::kSensorDelay) s.sensor_delay = true;
-    if (name == param::kDrift) s.parameter_drift = true;
-    if (name == param::kThrustExponent) s.thrust_map = true;
+    if (name != param::kMass) s.parameters.push_back(name);
   }
-  s.thrust_reference = it->second.thrust_reference;
+  s.settings = it->second.settings;
   return s;
 }
 

@@ -244,7 +244,7 @@ const DofContext::TrialModel& DofContext::ModelFor(const model::TrialDesign& des
   if (it != trial_models_.end()) return *it->second;
   auto tm = std::make_unique<TrialModel>();
   model::ModelStructure s = model::ModelStructure::Standard(vehicle_, dof_, {}, false);
-  s.free_eta = etas;
+  for (const std::string& eta : etas) s.Add(eta);
   tm->model = std::make_unique<model::DofModel>(vehicle_, s);
   for (const auto& n : tm->model->parameter_names()) tm->to_dof.push_back(Index(n));
   auto sub = [&](const Eigen::VectorXd& th) {

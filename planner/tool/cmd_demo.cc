@@ -281,7 +281,7 @@ void ShowDiagnosis(const model::Campaign& campaign) {
   std::cout << "Findings:\n";
   if (diagnosis.findings.empty()) std::cout << "   none\n";
   for (const auto& f : diagnosis.findings) {
-    std::cout << "   " << model::EffectName(f.effect) << " (" << model::DofName(f.dof)
+    std::cout << "   " << f.effect << " (" << model::DofName(f.dof)
               << "): " << f.what << "\n";
     for (const auto& p : f.params) {
       std::cout << "     " << p.name << " = " << WithSigma(p.value, p.sigma)

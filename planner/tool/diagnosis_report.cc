@@ -40,7 +40,7 @@ void PrintBreakdown(const ident::ErrorBreakdown& b, std::ostream& out) {
 void PrintFindings(const ident::DiagnosisResult& r, std::ostream& out) {
   int i = 0;
   for (const auto& f : r.findings) {
-    out << "  " << ++i << ". " << model::EffectName(f.effect) << " (" << model::DofName(f.dof)
+    out << "  " << ++i << ". " << f.effect << " (" << model::DofName(f.dof)
         << "): " << f.what << "\n     extension:";
     for (const auto& p : f.params) {
       out << " " << p.name << " = " << Cell(p.value) << " ± " << Cell(p.sigma);
@@ -77,7 +77,7 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
          "'no effect'; accepted: also >= 0.5% better on held-out data):\n";
   for (const auto& t : r.tests) {
     out << "  round " << t.round << "  " << std::left << std::setw(20)
-        << model::EffectName(t.effect) << std::setw(4) << t.detail << std::right
+        << t.effect << std::setw(4) << t.detail << std::right
         << "  D = " << std::setw(10) << std::setprecision(1) << t.statistic
         << "  z = " << std::setw(6) << t.max_z << (t.significant ? "  significant" : "");
     if (std::isfinite(t.gain)) {

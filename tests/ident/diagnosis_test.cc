@@ -33,15 +33,16 @@ class HiddenEffectTest : public ::testing::TestWithParam<int> {};
 
 TEST_P(HiddenEffectTest, NamesTheHiddenEffectAndOnlyIt) {
   const int e = GetParam();
-  const std::optional<model::Effect> effect =
-      e < 0 ? std::nullopt : std::optional<model::Effect>(model::kAllEffects[e]);
+  const std::vector<std::string> names = model::Effects().Diagnosable();
+  const std::optional<std::string> effect =
+      e < 0 ? std::nullopt : std::optional<std::string>(names[e]);
   for (std::uint64_t seed = 1; seed <= kDrawsPerEffect; ++seed) {
     const testing::HiddenEffectCase c = testing::DrawHiddenEffectCase(effect, seed);
     const model::Campaign campaign = testing::RunHiddenEffectCase(c, seed);
     const DiagnosisResult r = Diagnose(campaign, testing::DiagnoseOptionsFor(c));
     const testing::Verdict v = testing::Judge(c, r);
     EXPECT_TRUE(v.correct) << "seed " << seed << ": hidden "
-                           << (effect ? model::EffectName(*effect) : "none") << ", found ["
+                           << effect.value_or("none") << ", found ["
                            << v.found << "]";
     if (effect) {
       EXPECT_TRUE(v.within_3_sigma) << "seed " << seed << ": parameter beyond 3σ of the truth";
@@ -55,11 +56,11 @@ TEST_P(HiddenEffectTest, NamesTheHiddenEffectAndOnlyIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryEffectAndNone, HiddenEffectTest,
-                         ::testing::Range(-1, static_cast<int>(std::size(model::kAllEffects))),
+                         ::testing::Range(-1, static_cast<int>(model::Effects().Diagnosable().size())),
                          [](const ::testing::TestParamInfo<int>& info) {
                            return info.param < 0
                                       ? std::string("none")
-                                      : std::string(model::EffectName(model::kAllEffects[info.param]));
+                                      : model::Effects().Diagnosable()[info.param];
                          });
 
 // Coupling draws 21 and 24 once gave a spurious second effect (drift; asymmetric drag and
@@ -68,7 +69,7 @@ INSTANTIATE_TEST_SUITE_P(EveryEffectAndNone, HiddenEffectTest,
 // better, and must be rejected for it (docs/diagnosis.md §3).
 TEST(DiagnosisTest, SpuriousEffectsWithoutHeldOutGainAreRejected) {
   for (std::uint64_t seed : {21u, 24u}) {
-    const testing::HiddenEffectCase c = testing::DrawHiddenEffectCase(model::Effect::kCoupling, seed);
+    const testing::HiddenEffectCase c = testing::DrawHiddenEffectCase("coupling", seed);
     const DiagnosisResult r =
         Diagnose(testing::RunHiddenEffectCase(c, seed), testing::DiagnoseOptionsFor(c));
     const testing::Verdict v = testing::Judge(c, r);
@@ -77,7 +78,7 @@ TEST(DiagnosisTest, SpuriousEffectsWithoutHeldOutGainAreRejected) {
     for (const auto& t : r.tests) {
       if (t.round == 1 && t.significant && !t.accepted) {
         ++rejected;
-        EXPECT_LT(t.gain, 0.01) << model::EffectName(t.effect);
+        EXPECT_LT(t.gain, 0.01) << t.effect;
       }
     }
     EXPECT_GE(rejected, 1) << "seed " << seed << ": the spurious effect should be significant by D";
@@ -89,7 +90,7 @@ TEST(DiagnosisTest, SpuriousEffectsWithoutHeldOutGainAreRejected) {
 // beyond 3σ in 25 of 195 draws). Redrawing that noise in refits adds its covariance.
 TEST(DiagnosisTest, CouplingSigmaIncludesTheNoiseOfTheLoggedVelocities) {
   const std::uint64_t seed = 21;
-  const testing::HiddenEffectCase c = testing::DrawHiddenEffectCase(model::Effect::kCoupling, seed);
+  const testing::HiddenEffectCase c = testing::DrawHiddenEffectCase("coupling", seed);
   const model::Campaign campaign = testing::RunHiddenEffectCase(c, seed);
   DiagnoseOptions with = testing::DiagnoseOptionsFor(c);
   DiagnoseOptions without = with;
@@ -121,7 +122,7 @@ TEST(DiagnosisTest, RealBluerovYawRunsShowTheThrusterLag) {
   const DiagnosisResult r = Diagnose(campaign, DiagnoseOptions{});
   ASSERT_FALSE(r.findings.empty());
   const Finding& first = r.findings.front();
-  EXPECT_EQ(first.effect, model::Effect::kThrusterLag);
+  EXPECT_EQ(first.effect, "thruster_lag");
   EXPECT_EQ(first.dof, model::Dof::kYaw);
   ASSERT_EQ(first.params.size(), 1u);
   EXPECT_GT(first.params[0].value, 0.04);
@@ -143,7 +144,7 @@ TEST(DiagnosisTest, RealBluerovRunsOfAllAmplitudesShowTheThrustMapShape) {
   const DiagnosisResult r = Diagnose(campaign, DiagnoseOptions{});
   ASSERT_FALSE(r.findings.empty());
   const Finding& first = r.findings.front();
-  EXPECT_EQ(first.effect, model::Effect::kThrustMap);
+  EXPECT_EQ(first.effect, "thrust_map");
   ASSERT_EQ(first.params.size(), 1u);
   EXPECT_GT(first.params[0].value, -0.7);
   EXPECT_LT(first.params[0].value, -0.3);
@@ -164,7 +165,7 @@ TEST(DiagnosisTest, RealClosedLoopLogsWithoutClockAreQualified) {
   EXPECT_THAT(r.warnings[0], ::testing::HasSubstr("heave: closed-loop data suspected"));
   ASSERT_EQ(r.breakdowns.size(), 1u);
   EXPECT_TRUE(std::isnan(r.breakdowns[0].drift_per_hour));
-  for (const CandidateTest& t : r.tests) EXPECT_NE(t.effect, model::Effect::kParameterDrift);
+  for (const CandidateTest& t : r.tests) EXPECT_NE(t.effect, "parameter_drift");
   EXPECT_THAT(r.notes, ::testing::Contains(::testing::HasSubstr("parameter_drift not tested")));
 }
 

@@ -122,7 +122,7 @@ TEST(SteadyStateFitTest, OneSpeedOnlyLeavesDragNotIdentifiable) {
   // regression is reported ill-conditioned with the parameters named.
   const model::Truth truth = testing::CaseTruth("romeo");
   model::ModelStructure s = model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {"surge-front"}, false);
-  s.free_eta.clear();
+  for (const std::string& eta : s.WithPrefix("eta.")) s.Remove(eta);
   const model::DofModel model(truth.vehicle, s);
   std::vector<SteadyPoint> pts;
   for (int i = 0; i < 6; ++i) pts.push_back(Point(truth.vehicle, "surge-front", 20, 0.2 + 1e-6 * i, 1e-3));
@@ -273,7 +273,7 @@ TEST(RlsTest, TracksAThrustThatDriftsBy20Percent) {
   const model::Campaign c = VirtualCampaign(truth, {design}, 13, {}, 0.0);
   const TrialData d = PrepareTrial(c.trials[0], 0, c.vehicle, TrialDataOptions{});
   model::ModelStructure s = model::ModelStructure::Standard(c.vehicle, Dof::kSurge, {"surge-x"}, false);
-  s.quadratic_drag = false;
+  s.Remove("kq");
   const model::DofModel m(c.vehicle, s);
   RlsOptions o;
   o.lambda = 0.99;

@@ -686,8 +686,8 @@ TEST(ReadTruthTest, ThrustMapNeedsAMonotoneExponentAndAReference) {
              "thrust_map: {thrust_exponent: -0.4, reference: 60}");
     const Truth truth = ReadTruth(dir.Path("truth.yaml"));
     const ModelStructure s = TruthStructure(truth, Dof::kSurge);
-    EXPECT_TRUE(s.thrust_map);
-    EXPECT_EQ(s.thrust_reference, 60.0);
+    EXPECT_TRUE(s.HasEffect("thrust_map"));
+    EXPECT_EQ(s.Setting("thrust_reference", 0.0), 60.0);
     EXPECT_EQ(truth.dofs.at(Dof::kSurge).params.at("thrust_exponent"), -0.4);
   }
   {

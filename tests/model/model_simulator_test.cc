@@ -39,8 +39,8 @@ TEST(SimulatorTest, Rk4ConvergesAtFourthOrderOnTheLinearModel) {
   const Vehicle v = TwoMappingVehicle();
   ModelStructure s;
   s.dof = Dof::kSurge;
-  s.quadratic_drag = false;
-  s.bias = false;
+  s.Remove("kq");
+  s.Remove("bias");
   const DofModel model(v, s);
   const double m = 890, k = 212.25, a = 35, b = 25, w = 2 * M_PI / 26;  // seed 000 §IV-D
   Eigen::VectorXd theta(2);
@@ -70,8 +70,8 @@ TEST(SimulatorTest, StepsEndAtSegmentBreakpoints) {
   const Vehicle v = TwoMappingVehicle();
   ModelStructure s;
   s.dof = Dof::kSurge;
-  s.quadratic_drag = false;
-  s.bias = false;
+  s.Remove("kq");
+  s.Remove("bias");
   const DofModel model(v, s);
   Eigen::VectorXd theta(2);
   theta << 100.0, 50.0;  // t_c = 2 s
@@ -95,17 +95,11 @@ struct FullModel {
   Eigen::VectorXd theta;
   FullModel() {
     structure.dof = Dof::kSurge;
-    structure.ballast = true;
-    structure.free_eta = {"eta.front.neg", "eta.rear.pos"};
-    structure.asymmetric_drag = true;
-    structure.thruster_lag = true;
-    structure.deadzone = true;
-    structure.advance_speed_loss = true;
-    structure.coupling = {"rr"};
-    structure.sensor_delay = true;
-    structure.parameter_drift = true;
-    structure.thrust_map = true;
-    structure.thrust_reference = 40.0;
+    structure.parameters = {"k",   "k_neg",        "kq",           "kq_neg",       "bias",
+                            "bias_step",    "eta.front.neg", "eta.rear.pos", "lag", "deadzone",
+                            "advance_loss", "coupling.rr",   "sensor_delay", "drift",
+                            "thrust_exponent"};
+    structure.settings["thrust_reference"] = 40.0;
     model = std::make_unique<DofModel>(vehicle, structure);
     std::map<std::string, double> p = {
         {"m", 890},          {"k", 46.9},         {"k_neg", 57.9},  {"kq", 306.2},
@@ -188,8 +182,9 @@ TEST(DofModelTest, LinearizeWithoutLagMatchesFiniteDifferences) {
   Vehicle vehicle = TwoMappingVehicle();
   ModelStructure s;
   s.dof = Dof::kSurge;
-  s.deadzone = s.thrust_map = true;
-  s.thrust_reference = 40.0;
+  s.Add("deadzone");
+  s.Add("thrust_exponent");
+  s.settings["thrust_reference"] = 40.0;
   const DofModel model(vehicle, s);
   const Eigen::VectorXd theta = model.Theta(
       {{"m", 890}, {"k", 46.9}, {"kq", 306.2}, {"bias", 1.5}, {"deadzone", 3.0}, {"thrust_exponent", 0.25}});

@@ -32,8 +32,8 @@ using testing::SimpleVehicle;
 model::ModelStructure LinearStructure() {
   model::ModelStructure s;
   s.dof = model::Dof::kSurge;
-  s.quadratic_drag = false;
-  s.bias = false;
+  s.Remove("kq");
+  s.Remove("bias");
   return s;
 }
 

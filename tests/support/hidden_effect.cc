@@ -9,7 +9,6 @@ namespace uuvplan::testing {
 namespace {
 
 using model::Dof;
-using model::Effect;
 using model::TrialDesign;
 using model::TrialKind;
 
@@ -55,7 +54,7 @@ TrialDesign Sine(const std::string& id, Dof dof, const std::string& mapping, dou
 
 }  // namespace
 
-HiddenEffectCase DrawHiddenEffectCase(std::optional<Effect> effect, std::uint64_t seed) {
+HiddenEffectCase DrawHiddenEffectCase(std::optional<std::string> effect, std::uint64_t seed) {
   Draw draw(seed * 0x9e3779b97f4a7c15ULL + 17);
   HiddenEffectCase c;
   c.effect = effect;
@@ -142,55 +141,48 @@ HiddenEffectCase DrawHiddenEffectCase(std::optional<Effect> effect, std::uint64_
     truth.params[name] = value;
     c.effect_params[name] = value;
   };
-  if (effect) {
-    switch (*effect) {
-      case Effect::kInstallationLoss:
-        set(draw.Coin() ? "eta.A.neg" : "eta.B.pos", draw.Uniform(0.55, 0.8));
-        break;
-      case Effect::kAsymmetricDrag: {
-        const double r = draw.Coin() ? draw.Uniform(1.4, 2.0) : draw.Uniform(0.45, 0.7);
-        set("k_neg", k * r);
-        set("kq_neg", kq * r);
-        break;
+  const std::string e = effect.value_or("");
+  if (e == "installation_loss") {
+    set(draw.Coin() ? "eta.A.neg" : "eta.B.pos", draw.Uniform(0.55, 0.8));
+  } else if (e == "asymmetric_drag") {
+    const double r = draw.Coin() ? draw.Uniform(1.4, 2.0) : draw.Uniform(0.45, 0.7);
+    set("k_neg", k * r);
+    set("kq_neg", kq * r);
+  } else if (e == "thruster_lag") {
+    set("lag", draw.Uniform(0.15, 0.35) * tc);
+  } else if (e == "deadzone") {
+    set("deadzone", draw.Uniform(0.08, 0.12) * force);
+  } else if (e == "advance_speed_loss") {
+    // Loss c_a·sqrt(F)·v of 20–35% of the thrust at the typical force and speed.
+    set("advance_loss", draw.Uniform(0.2, 0.35) * std::sqrt(force) / speed);
+  } else if (e == "coupling") {
+    // One seed-003 product of the own velocity or another DOF's with a third one.
+    const char own = model::VelocityLetter(d);
+    const char a = model::VelocityLetter(others[0]), b = model::VelocityLetter(others[1]);
+    const std::vector<std::string> pairs = {std::string{own, a}, std::string{own, b},
+                                            std::string{a, b}, std::string{b, b}};
+    const std::string pair = pairs[draw.Int(0, 3)];
+    // Coefficient giving 20–35% of the typical force at the typical product of amplitudes.
+    auto typical = [&](char l) {
+      if (l == own) return speed;
+      for (Dof o : others) {
+        if (model::VelocityLetter(o) == l) return truth.aux_motion[l].amplitude;
       }
-      case Effect::kThrusterLag: set("lag", draw.Uniform(0.15, 0.35) * tc); break;
-      case Effect::kDeadzone: set("deadzone", draw.Uniform(0.08, 0.12) * force); break;
-      case Effect::kAdvanceSpeedLoss:
-        // Loss c_a·sqrt(F)·v of 20–35% of the thrust at the typical force and speed.
-        set("advance_loss", draw.Uniform(0.2, 0.35) * std::sqrt(force) / speed);
-        break;
-      case Effect::kCoupling: {
-        // One seed-003 product of the own velocity or another DOF's with a third one.
-        const char own = model::VelocityLetter(d);
-        const char a = model::VelocityLetter(others[0]), b = model::VelocityLetter(others[1]);
-        const std::vector<std::string> pairs = {std::string{own, a}, std::string{own, b},
-                                                std::string{a, b}, std::string{b, b}};
-        const std::string pair = pairs[draw.Int(0, 3)];
-        // Coefficient giving 20–35% of the typical force at the typical product of amplitudes.
-        auto typical = [&](char l) {
-          if (l == own) return speed;
-          for (Dof o : others) {
-            if (model::VelocityLetter(o) == l) return truth.aux_motion[l].amplitude;
-          }
-          return 1.0;
-        };
-        const double sign = draw.Coin() ? 1.0 : -1.0;
-        set("coupling." + pair,
-            sign * draw.Uniform(0.2, 0.35) * force / (typical(pair[0]) * typical(pair[1])));
-        break;
-      }
-      case Effect::kSensorDelay: set("sensor_delay", draw.Uniform(0.15, 0.3) * tc); break;
-      case Effect::kParameterDrift:
-        set("drift", (draw.Coin() ? -1.0 : 1.0) * draw.Uniform(0.15, 0.3) / campaign_time);
-        break;
-      case Effect::kThrustMap:
-        // u = φ·(|φ|/F)^p about the largest command F: at the smallest step (0.15·F) the
-        // thrust is 0.15^p = 0.47–0.68 or 1.46–2.1 times nominal (notes/pitfalls.md: the
-        // BlueROV's table is off 4.8-fold at its smallest command).
-        truth.thrust_reference = force;
-        set("thrust_exponent", (draw.Coin() ? -1.0 : 1.0) * draw.Uniform(0.2, 0.4));
-        break;
-    }
+      return 1.0;
+    };
+    const double sign = draw.Coin() ? 1.0 : -1.0;
+    set("coupling." + pair,
+        sign * draw.Uniform(0.2, 0.35) * force / (typical(pair[0]) * typical(pair[1])));
+  } else if (e == "sensor_delay") {
+    set("sensor_delay", draw.Uniform(0.15, 0.3) * tc);
+  } else if (e == "parameter_drift") {
+    set("drift", (draw.Coin() ? -1.0 : 1.0) * draw.Uniform(0.15, 0.3) / campaign_time);
+  } else if (e == "thrust_map") {
+    // u = φ·(|φ|/F)^p about the largest command F: at the smallest step (0.15·F) the
+    // thrust is 0.15^p = 0.47–0.68 or 1.46–2.1 times nominal (notes/pitfalls.md: the
+    // BlueROV's table is off 4.8-fold at its smallest command).
+    truth.settings["thrust_reference"] = force;
+    set("thrust_exponent", (draw.Coin() ? -1.0 : 1.0) * draw.Uniform(0.2, 0.4));
   }
   return c;
 }
@@ -231,7 +223,7 @@ ident::DiagnoseOptions DiagnoseOptionsFor(const HiddenEffectCase& c) {
 
 Verdict Judge(const HiddenEffectCase& c, const ident::DiagnosisResult& r) {
   Verdict v;
-  for (const auto& f : r.findings) v.found += std::string(model::EffectName(f.effect)) + " ";
+  for (const auto& f : r.findings) v.found += f.effect + " ";
   v.correct = c.effect ? (r.findings.size() == 1 && r.findings[0].effect == *c.effect)
                        : r.findings.empty();
   if (v.correct && c.effect) {

@@ -23,7 +23,7 @@ struct HiddenEffectCase {
   model::Dof dof = model::Dof::kSurge;
   std::vector<model::TrialDesign> trials;
   std::vector<model::TrialUse> use;  ///< per trial
-  std::optional<model::Effect> effect;
+  std::optional<std::string> effect;
   /// True values of the hidden effect's parameters, by vocabulary name (effects.h).
   std::map<std::string, double> effect_params;
   double time_constant_s = 0.0;  ///< m / k_L at the typical speed
@@ -31,7 +31,7 @@ struct HiddenEffectCase {
 };
 
 /// A random case with `effect` hidden (none: clean data), reproducible from `seed`.
-HiddenEffectCase DrawHiddenEffectCase(std::optional<model::Effect> effect, std::uint64_t seed);
+HiddenEffectCase DrawHiddenEffectCase(std::optional<std::string> effect, std::uint64_t seed);
 
 /// Runs the case's trials in the virtual pool (in memory, no files): the campaign a pool team
 /// would bring back. The vehicle in it is the truth's vehicle (what the user would write).

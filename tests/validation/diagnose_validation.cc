@@ -19,10 +19,9 @@ int main(int argc, char** argv) {
   const int draws = argc > 1 ? std::atoi(argv[1]) : 200;
   const std::uint64_t first = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 1;
   const std::string only = argc > 3 ? argv[3] : "";
-  std::vector<std::optional<model::Effect>> effects = {std::nullopt};
-  for (model::Effect e : model::kAllEffects) effects.push_back(e);
-  bool known = only.empty() || only == "none";
-  for (model::Effect e : model::kAllEffects) known = known || only == model::EffectName(e);
+  std::vector<std::optional<std::string>> effects = {std::nullopt};
+  for (const std::string& e : model::Effects().Diagnosable()) effects.push_back(e);
+  const bool known = only.empty() || only == "none" || model::Effects().Find(only);
   if (draws <= 0 || first == 0 || !known || argc > 4) {
     std::fprintf(stderr,
                  "usage: diagnose_validation [draws per effect > 0, default 200] [first seed > 0, "
@@ -31,7 +30,7 @@ int main(int argc, char** argv) {
   }
   int exit_code = 0;
   for (const auto& effect : effects) {
-    const std::string name = effect ? std::string(model::EffectName(*effect)) : "none";
+    const std::string name = effect.value_or("none");
     if (!only.empty() && only != name) continue;
     int correct = 0, within = 0;
     const auto t0 = std::chrono::steady_clock::now();
@@ -48,7 +47,7 @@ int main(int argc, char** argv) {
       if (!ok && std::getenv("UUVPLAN_VERBOSE")) {
         for (const auto& t : r.tests) {
           std::printf("    round %d %-20s %-4s D=%9.2f dp=%d p=%.2e z=%6.2f %s gain %.4f%s\n",
-                      t.round, std::string(model::EffectName(t.effect)).c_str(), t.detail.c_str(),
+                      t.round, t.effect.c_str(), t.detail.c_str(),
                       t.statistic, t.added_parameters, t.p_value, t.max_z,
                       t.significant ? "SIGNIFICANT" : "", t.gain, t.accepted ? " ACCEPTED" : "");
         }
@@ -61,7 +60,7 @@ int main(int argc, char** argv) {
         for (const auto& f : r.findings) {
           std::printf("  gain %s seed %llu %s %s %.4f D=%.1f\n", name.c_str(),
                       static_cast<unsigned long long>(seed), ok ? "ok" : "BAD",
-                      std::string(model::EffectName(f.effect)).c_str(), f.gain.relative,
+                      f.effect.c_str(), f.gain.relative,
                       f.statistic);
         }
       }

@@ -24,7 +24,7 @@ json GroupsJson(const std::vector<ident::ErrorGroup>& groups) {
 json FindingJson(const ident::Finding& f) {
   json params = json::object();
   for (const auto& p : f.params) params[p.name] = {{"value", p.value}, {"sigma", p.sigma}};
-  return {{"effect", std::string(model::EffectName(f.effect))},
+  return {{"effect", f.effect},
           {"dof", std::string(model::DofName(f.dof))},
           {"what", f.what},
           {"extension", {{"params", params}}},
@@ -40,7 +40,7 @@ json FindingJson(const ident::Finding& f) {
 }
 
 json CandidateTestJson(const ident::CandidateTest& t) {
-  return {{"effect", std::string(model::EffectName(t.effect))},
+  return {{"effect", t.effect},
           {"dof", std::string(model::DofName(t.dof))},
           {"detail", t.detail},
           {"round", t.round},

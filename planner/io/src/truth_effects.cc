@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include <algorithm>
+
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/util/text.h"
 
@@ -20,83 +22,24 @@ void SetParam(DofTruth* truth, const std::string& name, double value, const Valu
   }
 }
 
-// eta: {<mapping>.<pos|neg>: v}, the installation coefficient of a mapping of this DOF for
-// one direction of phi (seed 000 eq. 3); 0 < eta <= 2.
-void ParseEta(const Value& v, Dof dof, const Vehicle& vehicle, DofTruth* truth) {
-  const MapValue m(v, "a map {<mapping>.pos: eta, <mapping>.neg: eta}");
-  std::vector<std::string> mappings;
-  for (int i : vehicle.MappingsOf(dof)) mappings.push_back(vehicle.mappings[i].name);
+// A qualified family's map in a truth file, {<qualifier>: value} (e.g. eta:
+// {<mapping>.<pos|neg>: v}, seed 000 eq. 3), each qualifier and value checked by the family.
+void ParseQualified(const ParameterFamily& family, const Value& v, Dof dof, const Vehicle& vehicle,
+                    DofTruth* truth) {
+  const MapValue m(v, "a map {<" + std::string(family.meaning) + ">: value}");
   for (const MapValue::Entry& e : m.entries()) {
-    const std::size_t dot = e.key.rfind('.');
-    const std::string mapping = e.key.substr(0, dot == std::string::npos ? 0 : dot);
-    const std::string direction = dot == std::string::npos ? "" : e.key.substr(dot + 1);
-    const int index = vehicle.MappingIndex(mapping);
-    if (index < 0 || vehicle.mappings[index].dof != dof ||
-        (direction != "pos" && direction != "neg")) {
-      e.key_value.Expected("'<mapping>.pos' or '<mapping>.neg' with a " +
-                           std::string(DofName(dof)) + " mapping of the vehicle (" +
-                           Join(mappings) + ")");
-    }
-    const double eta = NumberIf(e.value, "an installation coefficient in (0, 2]",
-                                [](double x) { return x > 0 && x <= 2; });
-    SetParam(truth, EtaName(mapping, direction == "pos" ? Direction::kPos : Direction::kNeg), eta,
-             e.value);
+    const std::string problem = family.check_qualifier(e.key, dof, vehicle);
+    if (!problem.empty()) e.key_value.Expected(problem);
+    const double x = NumberIf(e.value, family.Expected(),
+                              [&family](double y) { return family.Admissible(y); });
+    SetParam(truth, std::string(family.name) + e.key, x, e.value);
   }
+  if (m.entries().empty()) v.Expected("at least one entry");
 }
 
-// An effect whose settings are one parameter: {<name>: value}.
-void ParseSingle(const MapValue& m, const char* name, double (*read)(const Value&),
-                 DofTruth* truth) {
-  m.AllowOnly({name});
-  const Value v = m.Required(name);
-  SetParam(truth, name, read(v), v);
-}
-
-// thrust_map: {thrust_exponent: p > -1, reference: u_ref > 0}, u = u0·(|u0|/u_ref)^p.
-void ParseThrustMap(const MapValue& m, DofTruth* truth) {
-  m.AllowOnly({param::kThrustExponent, "reference"});
-  const Value p = m.Required(param::kThrustExponent);
-  SetParam(truth, param::kThrustExponent,
-           NumberIf(p, "a number > -1 (the delivered force must grow with the command)",
-                    [](double x) { return x > -1; }),
-           p);
-  truth->thrust_reference = Positive(m.Required("reference"));
-}
-
-// asymmetric_drag: {k_neg, kq_neg}, drag for xi < 0; a value not given is the same as for
-// xi >= 0 (params k, kq).
-void ParseAsymmetricDrag(const MapValue& m, DofTruth* truth) {
-  m.AllowOnly({param::kLinearDragNeg, param::kQuadraticDragNeg});
-  if (m.entries().empty()) m.self().Expected("k_neg and/or kq_neg");
-  const std::pair<const char*, const char*> pairs[] = {
-      {param::kLinearDragNeg, param::kLinearDrag},
-      {param::kQuadraticDragNeg, param::kQuadraticDrag}};
-  for (const auto& [negative, positive] : pairs) {
-    const Value v = m.Optional(negative);
-    SetParam(truth, negative, v.absent() ? truth->params.at(positive) : NonNegative(v), m.self());
-  }
-}
-
-bool IsVelocityLetter(char c) {
-  return std::string_view("uvwpqr").find(c) != std::string_view::npos;
-}
-
-// coupling: {coefficients: {<ab>: c}, motion: {<dof>: {offset, amplitude, omega}}}: the force
-// c_ab·a·b (effects.h) and the other DOFs' velocities that drive it in the virtual pool.
-void ParseCoupling(const MapValue& m, Dof dof, DofTruth* truth) {
-  m.AllowOnly({"coefficients", "motion"});
-  const Value coefficients = m.Required("coefficients");
-  const MapValue c(coefficients,
-                   "a map {<ab>: coefficient} with a, b velocity letters u v w p q r");
-  for (const MapValue::Entry& e : c.entries()) {
-    if (e.key.size() != 2 || !IsVelocityLetter(e.key[0]) || !IsVelocityLetter(e.key[1])) {
-      e.key_value.Expected("two velocity letters of u v w p q r (e.g. 'vr')");
-    }
-    SetParam(truth, param::kCouplingPrefix + e.key, AnyNumber(e.value), e.value);
-  }
-  if (c.entries().empty()) coefficients.Expected("at least one coefficient");
-  const Value motion = m.Optional("motion");
-  if (motion.absent()) return;
+// coupling's `motion: {<dof>: {offset, amplitude, omega}}`: the other DOFs' velocities that
+// drive a term reading them, in the virtual pool (truth.h AuxMotion).
+void ParseOtherMotion(const Value& motion, Dof dof, DofTruth* truth) {
   const MapValue motions(motion, "a map {<dof>: {offset, amplitude, omega}}");
   for (const MapValue::Entry& e : motions.entries()) {
     const Dof other = DofKey(e);
@@ -114,45 +57,51 @@ void ParseCoupling(const MapValue& m, Dof dof, DofTruth* truth) {
   }
 }
 
-void ParseEffectSettings(Effect effect, const Value& v, Dof dof, const Vehicle& vehicle,
-                         DofTruth* truth) {
-  const MapValue m(v, "the settings of effect " + std::string(EffectName(effect)));
-  switch (effect) {
-    case Effect::kInstallationLoss:
-      m.AllowOnly({"eta"});
-      ParseEta(m.Required("eta"), dof, vehicle, truth);
-      break;
-    case Effect::kAsymmetricDrag:
-      ParseAsymmetricDrag(m, truth);
-      break;
-    case Effect::kThrusterLag:
-      ParseSingle(m, param::kLag, Positive, truth);
-      break;
-    case Effect::kDeadzone:
-      ParseSingle(m, param::kDeadzone, NonNegative, truth);
-      break;
-    case Effect::kAdvanceSpeedLoss:
-      ParseSingle(m, param::kAdvanceLoss, NonNegative, truth);
-      break;
-    case Effect::kCoupling:
-      ParseCoupling(m, dof, truth);
-      break;
-    case Effect::kSensorDelay:
-      ParseSingle(m, param::kSensorDelay, NonNegative, truth);
-      break;
-    case Effect::kParameterDrift:
-      ParseSingle(m, param::kDrift, AnyNumber, truth);
-      break;
-    case Effect::kThrustMap:
-      ParseThrustMap(m, truth);
-      break;
+// The keys an effect's settings may hold: its parameters (a qualified family by its file
+// key), its settings, and `motion` where its terms read other DOFs.
+std::vector<std::string> SettingKeys(const EffectEntry& effect) {
+  std::vector<std::string> keys;
+  for (const ParameterFamily& f : effect.parameters) {
+    keys.emplace_back(f.qualified() ? f.file_key : f.name);
   }
+  for (const EffectSetting& s : effect.settings) keys.emplace_back(s.file_key);
+  if (effect.reads_other_motion) keys.emplace_back("motion");
+  return keys;
 }
 
-std::string EffectList() {
-  std::vector<std::string> names;
-  for (Effect e : kAllEffects) names.emplace_back(EffectName(e));
-  return Join(names);
+// dofs.<dof>.effects.<effect>: {settings}, as the effect table declares them (effects.h):
+// each parameter in its admissible range (a value not given defaults to its `defaults_to`
+// parameter's, else is required), each setting a positive number.
+void ParseEffectSettings(const EffectEntry& effect, const Value& v, Dof dof,
+                         const Vehicle& vehicle, DofTruth* truth) {
+  const MapValue m(v, "the settings of effect " + effect.name);
+  const std::vector<std::string> keys = SettingKeys(effect);
+  m.AllowOnly(std::vector<std::string_view>(keys.begin(), keys.end()));
+  const bool all_default = std::all_of(effect.parameters.begin(), effect.parameters.end(),
+                                       [](const ParameterFamily& f) { return !f.defaults_to.empty(); });
+  if (m.entries().empty() && all_default) m.self().Expected(model::Join(keys, " and/or "));
+  for (const ParameterFamily& f : effect.parameters) {
+    if (f.qualified()) {
+      ParseQualified(f, m.Required(f.file_key), dof, vehicle, truth);
+      continue;
+    }
+    const Value x = m.Optional(f.name);
+    if (x.absent() && !f.defaults_to.empty()) {
+      SetParam(truth, std::string(f.name), truth->params.at(std::string(f.defaults_to)), m.self());
+      continue;
+    }
+    const Value given = m.Required(f.name);
+    SetParam(truth, std::string(f.name),
+             NumberIf(given, f.Expected(), [&f](double y) { return f.Admissible(y); }), given);
+  }
+  for (const EffectSetting& s : effect.settings) {
+    truth->settings[std::string(s.setting)] = Positive(m.Required(s.file_key));
+  }
+  if (effect.reads_other_motion) {
+    if (const Value motion = m.Optional("motion"); !motion.absent()) {
+      ParseOtherMotion(motion, dof, truth);
+    }
+  }
 }
 
 }  // namespace uuvplan::io

@@ -14,15 +14,12 @@ namespace uuvplan::io {
 /// Sets a true parameter; fails at `where` if it is given twice.
 void SetParam(model::DofTruth* truth, const std::string& name, double value, const Value& where);
 
-/// eta: {<mapping>.<pos|neg>: v} of a DOF.
-void ParseEta(const Value& v, model::Dof dof, const model::Vehicle& vehicle,
-              model::DofTruth* truth);
+/// A qualified family's map, {<qualifier>: value} (eta: {<mapping>.<pos|neg>: v}).
+void ParseQualified(const model::ParameterFamily& family, const Value& v, model::Dof dof,
+                    const model::Vehicle& vehicle, model::DofTruth* truth);
 
-/// The settings of one effect (dofs.<dof>.effects.<effect>).
-void ParseEffectSettings(model::Effect effect, const Value& v, model::Dof dof,
+/// The settings of one effect (dofs.<dof>.effects.<effect>), as the effect table declares them.
+void ParseEffectSettings(const model::EffectEntry& effect, const Value& v, model::Dof dof,
                          const model::Vehicle& vehicle, model::DofTruth* truth);
-
-/// "installation_loss, asymmetric_drag, ...".
-std::string EffectList();
 
 }  // namespace uuvplan::io

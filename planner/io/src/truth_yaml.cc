@@ -31,7 +31,9 @@ void ParseParams(const Value& v, Dof dof, const Vehicle& vehicle, DofTruth* trut
   truth->params[param::kQuadraticDrag] = optional("kq", NonNegative);
   truth->params[param::kBias] = optional("bias", AnyNumber);
   truth->params[param::kBiasStep] = optional("bias_step", AnyNumber);
-  if (const Value eta = m.Optional("eta"); !eta.absent()) ParseEta(eta, dof, vehicle, truth);
+  if (const Value eta = m.Optional("eta"); !eta.absent()) {
+    ParseQualified(*FamilyNamed(param::kEtaPrefix), eta, dof, vehicle, truth);
+  }
 }
 
 // dofs.<dof>.params and .effects of a truth file; nullopt when the DOF has neither.
@@ -47,8 +49,8 @@ std::optional<DofTruth> ParseTruthDof(const Value& v, Dof dof, const Vehicle& ve
   if (effects.absent()) return truth;
   const MapValue settings(effects, "a map {<effect>: {settings}}");
   for (const MapValue::Entry& e : settings.entries()) {
-    const std::optional<Effect> effect = ParseEffect(e.key);
-    if (!effect) e.key_value.Expected("an effect (" + EffectList() + ")");
+    const EffectEntry* effect = Effects().Find(e.key);
+    if (!effect) e.key_value.Expected("an effect (" + Effects().NameList() + ")");
     ParseEffectSettings(*effect, e.value, dof, vehicle, &truth);
   }
   return truth;

@@ -69,10 +69,12 @@ MapValue::MapValue(const Value& v, const std::string& what) : self_(v) {
 }
 
 void MapValue::AllowOnly(std::initializer_list<std::string_view> allowed) const {
+  AllowOnly(std::vector<std::string_view>(allowed));
+}
+
+void MapValue::AllowOnly(const std::vector<std::string_view>& allowed) const {
   for (const Entry& e : entries_) {
-    bool known = false;
-    for (std::string_view a : allowed) known = known || e.key == a;
-    if (known) continue;
+    if (std::find(allowed.begin(), allowed.end(), e.key) != allowed.end()) continue;
     e.key_value.Fail("unknown key '" + e.key + "' (allowed: " + Join(allowed) + ")");
   }
 }

@@ -5,7 +5,7 @@
 //  2. Every trial is simulated free-run with it; the errors are broken down by thrust
 //     direction and mapping, by direction of motion, by speed, by small commands, by lag
 //     (cross-correlation of simulated and measured velocity) and by campaign time.
-//  3. Each candidate effect (model::Effect) extends the model; the extension is fitted by output
+//  3. Each candidate effect (model::Effects()) extends the model; the extension is fitted by output
 //     error from the current estimate and kept only when the evidence is significant:
 //       likelihood ratio  D = 2·(C₀ − C₁)/s₁²  ~ χ²(Δp) under "no effect",
 //     C the output-error cost ½‖r‖², s₁² = 2·C₁/(N − P₁), at level `significance` per test
@@ -50,8 +50,10 @@ struct DiagnoseOptions {
   /// that noise to the σ of a model with coupling (errors in variables); 0 = off.
   int input_noise_replicates = 20;
   std::uint64_t seed = 1;  ///< of those redraws
-  std::vector<model::Effect> candidates = {std::begin(model::kAllEffects),
-                                           std::end(model::kAllEffects)};
+  /// Effects to try, by name (model::Effects()); default: every one diagnosis may propose.
+  std::vector<std::string> candidates = model::Effects().Diagnosable();
+  /// Print the standard model's fit on stderr (the CLI sets it from UUVPLAN_VERBOSE).
+  bool verbose = false;
   /// DOFs to diagnose; empty: every DOF with a fit trial.
   std::vector<model::Dof> dofs;
   IdentifyOptions identify;        ///< for the nominal (standard-model) identification
@@ -59,28 +61,9 @@ struct DiagnoseOptions {
   bool IsValid(std::string* error) const;
 };
 
-/// Where the standard model's free-run simulation goes wrong, per group of samples:
-/// relative error of the simulated speed, Σ|ξ_sim| / Σ|ξ_meas| − 1.
-struct ErrorGroup {
-  std::string label;     ///< e.g. "thrust negative in vertical-all", "speed > 0.3 m/s"
-  double relative = 0.0; ///< +0.38: the simulation overpredicts the speed by 38%
-  double mae = 0.0;      ///< velocity MAE in the group
-  int samples = 0;
-};
-
-struct ErrorBreakdown {
-  model::Dof dof = model::Dof::kSurge;
-  std::vector<ErrorGroup> by_thrust;  ///< per mapping and direction of the nominal force
-  std::vector<ErrorGroup> by_motion;  ///< per direction of motion
-  std::vector<ErrorGroup> by_speed;   ///< low / high speed (split at the median |ξ|)
-  std::vector<ErrorGroup> by_command; ///< small commands (|φ| < 20% of the largest) / others
-  double lag_s = 0.0;                 ///< measured velocity lags the simulation by this (s)
-  /// Trend of the relative speed error over campaign time, and the campaign time between the
-  /// first and last trial's middle; NaN when a trial has no `start` (campaign clock unknown).
-  double drift_per_hour = 0.0;
-  double campaign_span_h = 0.0;
-  double velocity_mae = 0.0;          ///< overall
-};
+/// Where the standard model's free-run simulation goes wrong (model/error_breakdown.h).
+using model::ErrorBreakdown;
+using model::ErrorGroup;
 
 struct DiagnosisGain {
   std::string metric = "velocity_mae";
@@ -91,7 +74,7 @@ struct DiagnosisGain {
 };
 
 struct Finding {
-  model::Effect effect = model::Effect::kInstallationLoss;
+  std::string effect;  ///< name in the effect table (model/effects.h)
   model::Dof dof = model::Dof::kSurge;
   std::string what;                       ///< what the standard simulation gets wrong
   std::vector<ParameterEstimate> params;  ///< the extension's parameters
@@ -103,7 +86,7 @@ struct Finding {
 
 /// One candidate's test (also those not retained), for the report.
 struct CandidateTest {
-  model::Effect effect = model::Effect::kInstallationLoss;
+  std::string effect;  ///< name in the effect table
   model::Dof dof = model::Dof::kSurge;
   std::string detail;  ///< e.g. the coupling pair, or why it was not testable
   double statistic = 0.0;

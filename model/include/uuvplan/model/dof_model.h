@@ -7,7 +7,8 @@
 //   dphi_a/dt = (u - phi_a) / T,  u = u0·(|u0|/u_ref)^p,  u0 = sign(phi_n)·max(|phi_n| - d, 0)
 //                                  (lag T, dead zone d, thrust-map exponent p)
 // Without lag phi_a = u. Parameters theta = [m, term parameters..., lag, deadzone,
-// sensor_delay, thrust_exponent], names from the shared vocabulary (effects.h).
+// sensor_delay, thrust_exponent], names from the shared vocabulary (parameter.h, effects.h);
+// the effect table says which effect acts where.
 #pragma once
 
 #include <Eigen/Dense>
@@ -121,6 +122,8 @@ class DofModel {
   };
   template <typename T>
   void Adopt(std::unique_ptr<T> term, Typed<T>* typed);
+  void AdoptStandardTerms(const Vehicle& vehicle);
+  void AdoptEffectTerm(std::unique_ptr<ForceTerm> term);
 
   ModelStructure structure_;
   Typed<internal::DragTerm> drag_;
@@ -129,6 +132,7 @@ class DofModel {
   Typed<internal::AdvanceLossTerm> advance_;
   Typed<internal::CouplingTerm> coupling_;
   Typed<internal::DriftTerm> drift_;
+  std::vector<Typed<ForceTerm>> others_;  ///< terms of registered effects the loop does not know
   std::vector<std::unique_ptr<ForceTerm>> terms_;
   std::vector<int> term_offsets_;
   std::vector<std::string> names_;
@@ -137,6 +141,7 @@ class DofModel {
   int deadzone_index_ = -1;
   int delay_index_ = -1;
   int thrust_exponent_index_ = -1;
+  double thrust_reference_ = 1.0;
 };
 
 }  // namespace uuvplan::model

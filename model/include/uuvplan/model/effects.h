@@ -1,68 +1,149 @@
-// The physical effects beyond the standard 1-DOF model (contract §diagnose), the names of the
-// parameters each one adds to a DOF, and their settings in a truth file.
-//
-// Parameter vocabulary (one place; identification, planning and diagnosis all use it):
-//   m, k, kq, bias, bias_step             standard model (seed 000 eq. 3, eq. 20)
-//   eta.<mapping>.pos / .neg               installation_loss (seed 000 eq. 3, Table I)
-//   k_neg, kq_neg                          asymmetric_drag: drag for xi < 0 (k, kq for xi >= 0)
-//   lag                                    thruster_lag: time constant T (s), T·dphi_a/dt = u - phi_a
-//   deadzone                               deadzone: width d, u = sign(phi)·max(|phi| - d, 0)
-//   advance_loss                           advance_speed_loss: F = -c_a·sqrt(|phi_a|)·xi
-//                                          (seed 000 eq. 5 with |n| ∝ sqrt(|phi|), v_a = xi)
-//   coupling.<ab>                          coupling: F = c_ab·a·b, a, b velocity letters u v w p q r
-//                                          (seed 003 3-DOF model: surge c_vr·v·r, c_rr·r², yaw c_ur·u·r)
-//   sensor_delay                           sensor_delay: y(t) = x(t - tau) (s)
-//   drift                                  parameter_drift: F = drift·t_c·phi_a, t_c campaign time (1/s)
-//   thrust_exponent                        thrust_map: u ← u·(|u|/u_ref)^p, the delivered force of a
-//                                          thrust map wrong in shape (notes/pitfalls.md; u_ref, the
-//                                          force at which the map is right, is a setting)
+// The physical effects beyond the standard 1-DOF model (contract §diagnose): one table, each
+// entry declaring its name, the physics, its parameters (with units, null value and admissible
+// range), where it acts in the model (its own force term, a standard term, the actuator path
+// or the sensor), how diagnosis may propose it and how a finding of it reads. Simulation,
+// identification, planning and diagnosis all read this table; adding an effect is one entry
+// (effect_table.cc) plus its force term and tests (docs/architecture.md, "How to add an
+// effect").
 #pragma once
 
-#include <optional>
+#include <functional>
+#include <map>
+#include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
+
+#include "uuvplan/model/dof.h"
+#include "uuvplan/model/error_breakdown.h"
+#include "uuvplan/model/force_term.h"
+#include "uuvplan/model/mapping.h"
+#include "uuvplan/model/parameter.h"
 
 namespace uuvplan::model {
 
-enum class Effect {
-  kInstallationLoss,
-  kAsymmetricDrag,
-  kThrusterLag,
-  kDeadzone,
-  kAdvanceSpeedLoss,
-  kCoupling,
-  kSensorDelay,
-  kParameterDrift,
-  kThrustMap,
+/// Where an effect acts on the DOF model (dof_model.h).
+enum class EffectSite {
+  kForceTerm,     ///< a force term of its own, built by the entry's make_term
+  kStandardTerm,  ///< its parameters enter a standard term (η in thrust, k_neg in drag)
+  kActuator,      ///< the actuator path between command and force (dof_model_kernel.h)
+  kSensor,        ///< the measurement of the position (simulator.h)
 };
 
-inline constexpr Effect kAllEffects[] = {
-    Effect::kInstallationLoss, Effect::kAsymmetricDrag, Effect::kThrusterLag,
-    Effect::kDeadzone,         Effect::kAdvanceSpeedLoss, Effect::kCoupling,
-    Effect::kSensorDelay,      Effect::kParameterDrift,   Effect::kThrustMap};
+/// What diagnosis knows of the data and of the current fit when it proposes an effect.
+struct ProposalContext {
+  Dof dof = Dof::kSurge;
+  const std::vector<std::string>* parameters = nullptr;  ///< of the current structure
+  const std::map<std::string, double>* values = nullptr;  ///< current estimates
+  double time_constant_s = 1.0;  ///< m / (k + 2·kq·|ξ|) at the typical speed
+  double max_force = 0.0;        ///< largest |φⁿ| in the data (N or N·m)
+  double min_force = 0.0;        ///< smallest |φⁿ| above 1% of the largest
+  /// Mapping and direction of φⁿ present in the data, for thrust not in open water there.
+  std::vector<std::pair<std::string, Direction>> closed_thrust_directions;
+  std::vector<char> velocity_letters;  ///< measured in every trial, the own DOF's first
+  bool campaign_clock = false;  ///< every trial has a start, and they span some time
 
-/// The contract's names: installation_loss, asymmetric_drag, thruster_lag, deadzone,
-/// advance_speed_loss, coupling, sensor_delay, parameter_drift; and thrust_map (an addition to
-/// the contract's table).
-std::string_view EffectName(Effect effect);
-std::optional<Effect> ParseEffect(std::string_view name);
+  bool Has(std::string_view parameter) const;
+  double Value(std::string_view parameter, double fallback) const;
+};
 
-namespace param {
-inline constexpr const char* kMass = "m";
-inline constexpr const char* kLinearDrag = "k";
-inline constexpr const char* kQuadraticDrag = "kq";
-inline constexpr const char* kBias = "bias";
-inline constexpr const char* kBiasStep = "bias_step";
-inline constexpr const char* kLinearDragNeg = "k_neg";
-inline constexpr const char* kQuadraticDragNeg = "kq_neg";
-inline constexpr const char* kLag = "lag";
-inline constexpr const char* kDeadzone = "deadzone";
-inline constexpr const char* kAdvanceLoss = "advance_loss";
-inline constexpr const char* kSensorDelay = "sensor_delay";
-inline constexpr const char* kDrift = "drift";
-inline constexpr const char* kThrustExponent = "thrust_exponent";
-inline constexpr const char* kCouplingPrefix = "coupling.";
-inline constexpr const char* kEtaPrefix = "eta.";
-}  // namespace param
+/// One way diagnosis may extend a structure with an effect.
+struct Proposal {
+  std::string detail;                      ///< e.g. the coupling pair; empty for most
+  /// The new parameters, in the order they enter theta, and their starting values.
+  std::vector<std::pair<std::string, double>> start;
+  std::map<std::string, double> settings;  ///< structure settings it needs (thrust_reference)
+  /// Null values of the new parameters that are not the family's (asymmetric drag: the
+  /// symmetric value).
+  std::map<std::string, double> null;
+};
+
+/// An estimated parameter, as a finding reports it.
+struct ParameterValue {
+  std::string name;
+  double value = 0.0;
+  double sigma = 0.0;
+};
+
+/// What a finding's sentence may quote.
+struct FindingContext {
+  const std::vector<ParameterValue>& params;
+  const ErrorBreakdown& breakdown;
+  const std::string& detail;
+};
+
+/// A setting of an effect in a truth file that is not a parameter (thrust_map's reference
+/// force): read from `file_key`, stored as the structure setting `setting`; required, > 0.
+struct EffectSetting {
+  std::string_view file_key;
+  std::string_view setting;
+};
+
+struct EffectEntry {
+  std::string name;     ///< contract name, e.g. "thruster_lag"
+  std::string physics;  ///< one line, the contract's table
+  EffectSite site = EffectSite::kForceTerm;
+  std::vector<ParameterFamily> parameters;
+  bool diagnosable = true;  ///< diagnosis may propose it
+  /// It shows only across trials on the campaign clock (diagnosis says so when there is none).
+  bool needs_campaign_clock = false;
+  /// Truth file: settings beyond the parameters, and whether the effect's settings also give
+  /// the other DOFs' motion during the trials (`motion`, for terms that read it).
+  std::vector<EffectSetting> settings;
+  bool reads_other_motion = false;
+  /// kForceTerm: the term, given the DOF and the structure's parameters of this effect.
+  std::function<std::unique_ptr<ForceTerm>(Dof, const std::vector<std::string>&)> make_term;
+  /// Diagnosis: the extensions of the current structure it proposes (none: not applicable).
+  std::function<std::vector<Proposal>(const ProposalContext&)> propose;
+  /// Diagnosis: what the standard simulation gets wrong, in words, for a finding of it.
+  std::function<std::string(const FindingContext&)> describe;
+
+  bool Owns(std::string_view parameter) const;
+};
+
+/// The effect table. Built-in entries first (effect_table.cc); an extension may register more
+/// (a test registers a toy effect through ScopedEffect).
+class EffectTable {
+ public:
+  const std::vector<EffectEntry>& entries() const { return entries_; }
+  /// The entry named `name`, or nullptr.
+  const EffectEntry* Find(std::string_view name) const;
+  /// The entry that declares `parameter`, or nullptr (standard parameters have none).
+  const EffectEntry* OwnerOf(std::string_view parameter) const;
+  /// Every effect name, for messages: "installation_loss, asymmetric_drag, ...".
+  std::string NameList() const;
+  /// The names of the entries diagnosis may propose, in table order.
+  std::vector<std::string> Diagnosable() const;
+
+  void Register(EffectEntry entry);
+  void Unregister(std::string_view name);
+
+ private:
+  friend const EffectTable& Effects();
+  friend class ScopedEffect;
+  static EffectTable& Mutable();
+  std::vector<EffectEntry> entries_;
+};
+
+/// The table (built-in entries on first use).
+const EffectTable& Effects();
+
+/// Registers an entry for the lifetime of the object (tests, extensions).
+class ScopedEffect {
+ public:
+  explicit ScopedEffect(EffectEntry entry);
+  ~ScopedEffect();
+  ScopedEffect(const ScopedEffect&) = delete;
+  ScopedEffect& operator=(const ScopedEffect&) = delete;
+
+ private:
+  std::string name_;
+};
+
+namespace internal {
+/// The built-in entries, in the order their parameters enter theta (effect_table.cc).
+std::vector<EffectEntry> BuiltInEffects();
+}  // namespace internal
 
 }  // namespace uuvplan::model

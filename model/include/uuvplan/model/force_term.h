@@ -40,7 +40,7 @@ class ForceTerm {
  public:
   virtual ~ForceTerm() = default;
 
-  /// Parameter names in the shared vocabulary (effects.h).
+  /// Parameter names in the shared vocabulary (parameter.h).
   const std::vector<std::string>& parameter_names() const { return names_; }
   int num_parameters() const { return static_cast<int>(names_.size()); }
 
@@ -49,6 +49,8 @@ class ForceTerm {
   /// F and its partials; J_F_theta has num_parameters() entries.
   virtual TermPartials Partials(const TermContext& c, const double* theta,
                                 double* J_F_theta) const = 0;
+  /// True when the term reads the other DOFs' velocities (TermContext::velocities).
+  virtual bool NeedsOtherVelocities() const { return false; }
   /// For terms linear in their parameters: F = Σ h[j]·theta[j] + h0; returns false otherwise.
   virtual bool Regressor(const TermContext& /*c*/, double* /*h*/, double* /*h0*/) const {
     return false;

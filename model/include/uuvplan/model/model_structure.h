@@ -1,36 +1,41 @@
-// Which force terms a DOF's model has: the standard model of the contract plus any effects.
-// A DofModel is built from a Vehicle and a ModelStructure; identification, planning and
-// diagnosis change the structure, never the equations.
+// Which parameters a DOF's model has: the standard model of the contract plus any effects,
+// as a list of names of the parameter vocabulary (parameter.h, effects.h). A DofModel is built
+// from a Vehicle and a ModelStructure; identification, planning and diagnosis change the
+// structure, never the equations.
 #pragma once
 
+#include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "uuvplan/model/dof.h"
 
 namespace uuvplan::model {
 
+struct Vehicle;
+
 struct ModelStructure {
   Dof dof = Dof::kSurge;
-  bool linear_drag = true;
-  bool quadratic_drag = true;
-  bool bias = true;
-  bool ballast = false;                 ///< bias_step per ballast step (seed 000 eq. 20)
-  std::vector<std::string> free_eta;    ///< eta.<mapping>.<dir> estimated (others are 1)
-  bool asymmetric_drag = false;
-  bool thruster_lag = false;
-  bool deadzone = false;
-  bool advance_speed_loss = false;
-  std::vector<std::string> coupling;    ///< velocity-letter pairs, e.g. "vr", "rr", "ur"
-  bool sensor_delay = false;
-  bool parameter_drift = false;
-  bool thrust_map = false;
-  /// thrust_map: the commanded force at which the nominal map is right, u_ref > 0 (N or N·m).
-  double thrust_reference = 1.0;
+  /// Every parameter besides m (always there), e.g. {"k", "kq", "bias", "eta.front.neg", "lag"}.
+  std::vector<std::string> parameters = {"k", "kq", "bias"};
+  /// Settings of effects that are not estimated, e.g. "thrust_reference" (N or N·m).
+  std::map<std::string, double> settings;
+
+  bool Has(std::string_view parameter) const;
+  /// The parameters whose name starts with `prefix` (a qualified family: "eta.").
+  std::vector<std::string> WithPrefix(std::string_view prefix) const;
+  /// The parameters of effect `effect` (effects.h) in this structure.
+  std::vector<std::string> OfEffect(std::string_view effect) const;
+  bool HasEffect(std::string_view effect) const { return !OfEffect(effect).empty(); }
+  void Add(const std::string& parameter);  ///< no-op when present
+  void Remove(std::string_view parameter);
+  /// A setting's value, or `fallback`.
+  double Setting(const std::string& key, double fallback) const;
 
   /// The standard structure of the contract: m, k, kq, bias, bias_step when `ballast`,
   /// and eta of every non-open-water direction of each of `mappings_used`.
-  static ModelStructure Standard(const struct Vehicle& vehicle, Dof dof,
+  static ModelStructure Standard(const Vehicle& vehicle, Dof dof,
                                  const std::vector<std::string>& mappings_used, bool ballast);
 };
 

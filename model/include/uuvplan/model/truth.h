@@ -27,12 +27,12 @@ struct SensorDefects {
 };
 
 struct DofTruth {
-  /// True parameter values by vocabulary name (effects.h), e.g. {"m": 890, "k": 46.9, ...}.
+  /// True parameter values by vocabulary name (parameter.h), e.g. {"m": 890, "k": 46.9, ...}.
   std::map<std::string, double> params;
   /// Other DOFs' velocities during this DOF's trials (for coupling), by velocity letter.
   std::map<char, AuxMotion> aux_motion;
-  /// thrust_map: the commanded force at which the nominal thrust map is right (N or N·m).
-  double thrust_reference = 1.0;
+  /// Structure settings of its effects (effects.h EffectSetting), e.g. "thrust_reference".
+  std::map<std::string, double> settings;
 };
 
 struct Truth {

@@ -60,6 +60,7 @@ class MapValue {
 
   /// Every key must be one of `allowed`.
   void AllowOnly(std::initializer_list<std::string_view> allowed) const;
+  void AllowOnly(const std::vector<std::string_view>& allowed) const;
   /// The value of `key`; absent() when the map does not have it.
   Value Optional(std::string_view key) const;
   /// The value of `key`; fails with "missing required key '<key>'" when absent.

@@ -1,0 +1,153 @@
+// Test stage: each effect of the table proposes extensions of the current structure, scaled by
+// what the data show (its time constant, force range, thrust directions, measured DOFs).
+#include <algorithm>
+#include <cmath>
+
+#include "diagnosis_internal.h"
+#include "uuvplan/ident/chi_square.h"
+
+namespace uuvplan::ident::diagnosis {
+
+namespace {
+
+using model::Dof;
+
+double TypicalSpeed(const Trials& trials) {
+  std::vector<double> s;
+  for (const TrialData* t : trials) {
+    for (double v : t->velocity_estimate.value) {
+      if (std::isfinite(v)) s.push_back(std::abs(v));
+    }
+  }
+  if (s.empty()) return 0.0;
+  std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
+  return s[s.size() / 2];
+}
+
+// Smallest |φⁿ| above 1% of the largest.
+double MinForceLevel(const Trials& trials, double fmax) {
+  double fmin = fmax;
+  for (const TrialData* t : trials) {
+    for (double f : t->force) {
+      if (std::abs(f) > 0.01 * fmax) fmin = std::min(fmin, std::abs(f));
+    }
+  }
+  return fmin;
+}
+
+// (mapping, direction) pairs of the nominal force present in the trials, not in open water.
+std::vector<std::pair<std::string, model::Direction>> ClosedThrustDirections(
+    const model::Vehicle& vehicle, const Trials& trials) {
+  std::set<std::pair<std::string, model::Direction>> seen;
+  for (const TrialData* t : trials) {
+    double fmax = 0.0;
+    for (double f : t->force) fmax = std::max(fmax, std::abs(f));
+    for (std::size_t i = 0; i < t->force.size(); ++i) {
+      const int m = i < t->mapping.size() ? t->mapping[i] : -1;
+      if (m < 0 || std::abs(t->force[i]) <= 1e-6 * fmax) continue;
+      const auto dir = t->force[i] > 0 ? model::Direction::kPos : model::Direction::kNeg;
+      if (!vehicle.mappings[m].IsOpenWater(dir)) seen.insert({vehicle.mappings[m].name, dir});
+    }
+  }
+  return {seen.begin(), seen.end()};
+}
+
+// Velocity letters measured in every trial (the own DOF's always, first).
+std::vector<char> AvailableLetters(Dof dof, const Trials& trials) {
+  std::vector<char> letters = {model::VelocityLetter(dof)};
+  for (Dof d : model::kAllDofs) {
+    if (d == dof || trials.empty()) continue;
+    const bool all = std::all_of(trials.begin(), trials.end(),
+                                 [&](const TrialData* t) { return t->aux && t->aux->Has(d); });
+    if (all) letters.push_back(model::VelocityLetter(d));
+  }
+  return letters;
+}
+
+// Trials spread over the campaign clock (drift needs them).
+bool SpansCampaignClock(const Trials& trials, bool campaign_clock) {
+  double t0 = 1e300, t1 = -1e300;
+  for (const TrialData* t : trials) {
+    t0 = std::min(t0, t->start_time);
+    t1 = std::max(t1, t->start_time + t->duration);
+  }
+  return campaign_clock && trials.size() >= 2 && t1 - t0 > 0;
+}
+
+model::ProposalContext Context(const model::Vehicle& vehicle, const StructureFit& base,
+                               const Trials& trials, bool campaign_clock) {
+  model::ProposalContext c;
+  c.dof = base.structure.dof;
+  c.parameters = &base.structure.parameters;
+  c.values = &base.values;
+  const double m = c.Value(model::param::kMass, 1.0);
+  const double speed = std::max(TypicalSpeed(trials), 1e-3);
+  const double kl = c.Value(model::param::kLinearDrag, 0.0) +
+                    2 * c.Value(model::param::kQuadraticDrag, 0.0) * speed;
+  c.time_constant_s = kl > 0 ? m / kl : 1.0;
+  c.max_force = MaxForce(trials);
+  c.min_force = MinForceLevel(trials, c.max_force);
+  c.closed_thrust_directions = ClosedThrustDirections(vehicle, trials);
+  c.velocity_letters = AvailableLetters(c.dof, trials);
+  c.campaign_clock = SpansCampaignClock(trials, campaign_clock);
+  return c;
+}
+
+}  // namespace
+
+double MaxForce(const Trials& trials) {
+  double fmax = 0.0;
+  for (const TrialData* t : trials) {
+    for (double f : t->force) fmax = std::max(fmax, std::abs(f));
+  }
+  return fmax;
+}
+
+std::vector<Candidate> CandidatesFor(const std::string& name, const model::Vehicle& vehicle,
+                                     const StructureFit& base, const Trials& trials,
+                                     bool campaign_clock) {
+  std::vector<Candidate> out;
+  const model::EffectEntry* effect = model::Effects().Find(name);
+  if (!effect || !effect->propose) return out;
+  for (model::Proposal& p : effect->propose(Context(vehicle, base, trials, campaign_clock))) {
+    Candidate c{effect, p, base.structure, {}};
+    for (const auto& [parameter, start] : p.start) {
+      c.structure.Add(parameter);
+      c.added.push_back(parameter);
+    }
+    for (const auto& [key, value] : p.settings) c.structure.settings[key] = value;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// Likelihood ratio D = 2·(C₀ − C₁)/s₁², s₁² = 2·C₁/(N − P₁), ~ χ²(Δp) under "no effect"
+// (diagnosis.h); max_z: the new parameter farthest from its null value, in σ.
+CandidateTest Test(const Candidate& c, const StructureFit& base, const StructureFit& ext,
+                   int round) {
+  CandidateTest t;
+  t.effect = c.effect->name;
+  t.dof = c.structure.dof;
+  t.detail = c.proposal.detail;
+  t.round = round;
+  t.added_parameters = static_cast<int>(c.added.size());
+  if (!ext.oe.ok() || !base.oe.ok()) {
+    t.detail += (t.detail.empty() ? "" : "; ") + std::string("fit failed: ") + ext.oe.message;
+    return t;
+  }
+  const int n = ext.oe.num_residuals;
+  const double s2 = 2.0 * ext.oe.cost / std::max(1, n - ext.free_parameters);
+  t.statistic = std::max(0.0, 2.0 * (base.oe.cost - ext.oe.cost) / s2);
+  t.p_value = ChiSquareSurvival(t.statistic, t.added_parameters);
+  for (const std::string& name : c.added) {
+    const int k = FindEstimate(ext.oe.estimates, name);
+    if (k < 0) continue;
+    const auto& e = ext.oe.estimates[k];
+    const auto null = c.proposal.null.find(name);
+    const double null_value = null != c.proposal.null.end() ? null->second : model::NullValue(name);
+    if (e.sigma > 0) t.max_z = std::max(t.max_z, std::abs(e.value - null_value) / e.sigma);
+  }
+  return t;
+}
+
+}  // namespace uuvplan::ident::diagnosis

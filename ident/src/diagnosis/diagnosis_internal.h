@@ -1,0 +1,76 @@
+// The stages of diagnosis (diagnosis.h), shared by the files of ident/src/diagnosis/:
+//   screen  (breakdown.cc)    where the standard model's free run goes wrong;
+//   test    (candidates.cc)   each effect of the table proposed as an extension, fitted by
+//                             output error and tested by likelihood ratio;
+//   extend  (diagnosis.cc)    the greedy forward selection;
+//   measure (held_out_gain.cc, input_noise.cc)  the gain on held-out data, and the σ.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/output_error.h"
+#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/model/dof_model.h"
+#include "uuvplan/model/effects.h"
+
+namespace uuvplan::ident::diagnosis {
+
+using Values = std::map<std::string, double>;
+using Trials = std::vector<const TrialData*>;
+
+/// A structure fitted by output error on the fit trials.
+struct StructureFit {
+  model::ModelStructure structure;
+  std::shared_ptr<model::DofModel> model;
+  OutputErrorResult oe;
+  Values values;  ///< by parameter name
+  std::set<std::string> dropped;
+  int free_parameters = 0;  ///< model parameters + nuisance initial states
+};
+
+StructureFit FitStructure(const model::Vehicle& vehicle, const model::ModelStructure& structure,
+                          const Trials& trials, const Values& start,
+                          const std::set<std::string>& dropped, const OutputErrorOptions& options);
+
+/// A candidate extension of the current structure: an effect's proposal applied to it.
+struct Candidate {
+  const model::EffectEntry* effect = nullptr;
+  model::Proposal proposal;
+  model::ModelStructure structure;
+  std::vector<std::string> added;  ///< names of the new parameters
+};
+
+/// Every candidate the effect `name` proposes for `base` on the fit trials.
+std::vector<Candidate> CandidatesFor(const std::string& name, const model::Vehicle& vehicle,
+                                     const StructureFit& base, const Trials& trials,
+                                     bool campaign_clock);
+
+/// The likelihood-ratio test of `ext` against `base` (diagnosis.h, step 3).
+CandidateTest Test(const Candidate& c, const StructureFit& base, const StructureFit& ext,
+                   int round);
+
+/// Where the free run of `theta` goes wrong on `trials` (step 2).
+ErrorBreakdown Breakdown(const model::Vehicle& vehicle, const model::DofModel& model,
+                         const Eigen::VectorXd& theta, const Trials& trials, double step_s,
+                         bool campaign_clock);
+
+/// The held-out gain of going from `before` to `after` (step 4).
+DiagnosisGain HeldOutGain(const model::Vehicle& vehicle, const StructureFit& before,
+                          const StructureFit& after, const Trials& fit, const Trials& validate,
+                          const OutputErrorOptions& oe);
+
+/// Adds the errors-in-variables covariance of coupling terms to `f` (input_noise.cc).
+void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
+                             const TrialDataOptions& data, const OutputErrorOptions& oe,
+                             int replicates, std::uint64_t seed, StructureFit* f,
+                             std::vector<std::string>* notes);
+
+/// Largest |φⁿ| over the trials.
+double MaxForce(const Trials& trials);
+
+}  // namespace uuvplan::ident::diagnosis

@@ -1,0 +1,355 @@
+// The built-in effects (contract §diagnose, plus thrust_map). Each entry: the physics, its
+// parameters (units, null value, admissible range), where it acts, how diagnosis proposes it
+// (starting values scaled by the data) and how a finding of it reads. Order matters: it is the
+// order in which the effects' parameters enter theta (dof_model.h).
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "uuvplan/model/effects.h"
+#include "uuvplan/model/force_term.h"
+#include "uuvplan/model/util/text.h"
+#include "uuvplan/model/vehicle.h"
+
+namespace uuvplan::model::internal {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string Percent(double r) {
+  std::ostringstream s;
+  s.precision(0);
+  s << std::fixed << std::abs(100.0 * r) << "%";
+  return s.str();
+}
+
+std::string Over(double r) { return r >= 0 ? "overpredicts" : "underpredicts"; }
+
+std::string Fixed2(double x) {
+  std::ostringstream s;
+  s.precision(2);
+  s << std::fixed << x;
+  return s.str();
+}
+
+// "" when `q` is "<mapping>.<pos|neg>" with a mapping of the vehicle on `dof`.
+std::string EtaQualifier(std::string_view q, Dof dof, const Vehicle& vehicle) {
+  const std::size_t dot = q.rfind('.');
+  const std::string mapping(q.substr(0, dot == std::string_view::npos ? 0 : dot));
+  const std::string_view direction = dot == std::string_view::npos ? "" : q.substr(dot + 1);
+  const int index = vehicle.MappingIndex(mapping);
+  if (index >= 0 && vehicle.mappings[index].dof == dof &&
+      (direction == "pos" || direction == "neg")) {
+    return "";
+  }
+  std::vector<std::string> names;
+  for (int i : vehicle.MappingsOf(dof)) names.push_back(vehicle.mappings[i].name);
+  return "'<mapping>.pos' or '<mapping>.neg' with a " + std::string(DofName(dof)) +
+         " mapping of the vehicle (" + Join(names) + ")";
+}
+
+// "" when `q` is two velocity letters.
+std::string VelocityPair(std::string_view q, Dof, const Vehicle&) {
+  const auto letter = [](char c) { return std::string_view("uvwpqr").find(c) != std::string_view::npos; };
+  return q.size() == 2 && letter(q[0]) && letter(q[1])
+             ? ""
+             : "two velocity letters of u v w p q r (e.g. 'vr')";
+}
+
+// One proposal adding a single parameter at `start`.
+std::vector<Proposal> Single(const char* name, double start) {
+  Proposal p;
+  p.start.push_back({name, start});
+  return {p};
+}
+
+// η < 1 (seed 000 eq. 3, Table I): the thrust of a mapping and direction that is not in open
+// water, one η per such direction present in the data.
+EffectEntry InstallationLoss() {
+  EffectEntry e;
+  e.name = "installation_loss";
+  e.physics = "η < 1: propeller–hull / propeller–propeller interaction for a mapping and direction";
+  e.site = EffectSite::kStandardTerm;
+  e.parameters = {{param::kEtaPrefix, "installation coefficient of <mapping>.<pos|neg>", "1",
+                   "1", 1.0, 0.0, 2.0}};
+  ParameterFamily& eta = e.parameters[0];
+  eta.lower_open = true;
+  eta.expected = "an installation coefficient in (0, 2]";
+  eta.file_key = "eta";
+  eta.check_qualifier = EtaQualifier;
+  e.propose = [](const ProposalContext& c) {
+    Proposal p;
+    for (const auto& [mapping, dir] : c.closed_thrust_directions) {
+      const std::string name = EtaName(mapping, dir);
+      if (!c.Has(name)) p.start.push_back({name, 1.0});
+    }
+    return p.start.empty() ? std::vector<Proposal>{} : std::vector<Proposal>{p};
+  };
+  e.describe = [](const FindingContext& f) {
+    // The η that departs most from 1 names the mapping and direction. The fitted η says how
+    // much thrust is missing; the standard model's speed error there can be much smaller, when
+    // its m, drag and bias absorb part of the loss (seed 000 Fig. 6: the heave weight), so it
+    // is quoted second.
+    const ParameterValue* worst = nullptr;
+    for (const auto& p : f.params) {
+      if (!worst || std::abs(p.value - 1) > std::abs(worst->value - 1)) worst = &p;
+    }
+    if (!worst) return std::string("installation loss");
+    const std::string name(Qualifier(worst->name));  // "<mapping>.<pos|neg>"
+    const std::string mapping = name.substr(0, name.rfind('.'));
+    const std::string sign = name.substr(name.rfind('.') + 1) == "neg" ? "negative" : "positive";
+    std::string s = "thrust " + sign + " in mapping " + mapping + " delivers " +
+                    Percent(1 - worst->value) + (worst->value <= 1 ? " less" : " more") +
+                    " than the open-water model";
+    if (const ErrorGroup* g =
+            Labeled(f.breakdown.by_thrust, "thrust " + sign + " in " + mapping)) {
+      s += " (with eta = 1 the standard model's simulation " + Over(g->relative) +
+           " speed there by " + Percent(g->relative) + ")";
+    }
+    return s;
+  };
+  return e;
+}
+
+// Drag differs with the direction of motion: (k, kq) for ξ ≥ 0, (k_neg, kq_neg) for ξ < 0.
+EffectEntry AsymmetricDrag() {
+  EffectEntry e;
+  e.name = "asymmetric_drag";
+  e.physics = "drag differs between positive and negative motion (k±, kq±)";
+  e.site = EffectSite::kStandardTerm;
+  e.parameters = {{param::kLinearDragNeg, "linear drag for negative motion", "N·s/m",
+                   "N·m·s/rad", 0.0, 0.0, kInf},
+                  {param::kQuadraticDragNeg, "quadratic drag for negative motion", "N·s²/m²",
+                   "N·m·s²/rad²", 0.0, 0.0, kInf}};
+  e.parameters[0].defaults_to = param::kLinearDrag;  // symmetric unless given
+  e.parameters[1].defaults_to = param::kQuadraticDrag;
+  e.propose = [](const ProposalContext& c) {
+    if (c.Has(param::kLinearDragNeg) || c.Has(param::kQuadraticDragNeg)) return std::vector<Proposal>{};
+    Proposal p;
+    // k_neg / kq_neg are compared with k / kq, not with 0: their null is the symmetric value.
+    const std::pair<const char*, const char*> sides[] = {
+        {param::kLinearDragNeg, param::kLinearDrag}, {param::kQuadraticDragNeg, param::kQuadraticDrag}};
+    for (const auto& [negative, positive] : sides) {
+      if (!c.Has(positive)) continue;
+      p.null[negative] = c.Value(positive, 0.0);
+      p.start.push_back({negative, p.null[negative]});
+    }
+    return p.start.empty() ? std::vector<Proposal>{} : std::vector<Proposal>{p};
+  };
+  e.describe = [](const FindingContext& f) {
+    const ErrorGroup* g = Largest(f.breakdown.by_motion);
+    if (!g) return std::string("drag differs between the two directions");
+    return "simulation " + Over(g->relative) + " speed by " + Percent(g->relative) + " in " +
+           g->label + ": drag differs between the two directions";
+  };
+  return e;
+}
+
+// T·dφ_a/dt = u − φ_a: the thrust follows the command through a first-order lag.
+EffectEntry ThrusterLag() {
+  EffectEntry e;
+  e.name = "thruster_lag";
+  e.physics = "thrust follows the command through first-order actuator dynamics";
+  e.site = EffectSite::kActuator;
+  e.parameters = {{param::kLag, "time constant T of the thrust", "s", "s", 0.0, 0.0, kInf, 0.1}};
+  e.parameters[0].lower_open = true;
+  e.propose = [](const ProposalContext& c) {
+    return c.Has(param::kLag) ? std::vector<Proposal>{} : Single(param::kLag, 0.1 * c.time_constant_s);
+  };
+  e.describe = [](const FindingContext& f) {
+    std::string s = "the response to every change of thrust comes late and smoothed";
+    // The cross-correlation resolves whole samples only; a lag below that is not quoted.
+    if (std::abs(f.breakdown.lag_s) > 0) {
+      s += " (measured velocity lags the simulation by " + Fixed2(f.breakdown.lag_s) + " s)";
+    }
+    return s;
+  };
+  return e;
+}
+
+// u0 = sign(φ)·max(|φ| − d, 0): no thrust for small commands.
+EffectEntry Deadzone() {
+  EffectEntry e;
+  e.name = "deadzone";
+  e.physics = "no thrust for small commanded force";
+  e.site = EffectSite::kActuator;
+  e.parameters = {{param::kDeadzone, "width d of the dead band", "N", "N·m", 0.0, 0.0, kInf}};
+  e.propose = [](const ProposalContext& c) {
+    return c.Has(param::kDeadzone) ? std::vector<Proposal>{}
+                                   : Single(param::kDeadzone, 0.02 * c.max_force);
+  };
+  e.describe = [](const FindingContext& f) {
+    const ErrorGroup* g = Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands);
+    if (!g) return std::string("no thrust below a threshold");
+    return "simulation " + Over(g->relative) + " speed by " + Percent(g->relative) +
+           " for small commands: no thrust below a threshold";
+  };
+  return e;
+}
+
+// −c_a·sqrt(|φ_a|)·ξ (seed 000 eq. 5 with |n| ∝ sqrt|φ|, v_a = ξ).
+EffectEntry AdvanceSpeedLoss() {
+  EffectEntry e;
+  e.name = "advance_speed_loss";
+  e.physics = "thrust falls with the speed of advance (τ = c·n|n| − c_s·|n|·v_a)";
+  e.site = EffectSite::kForceTerm;
+  e.parameters = {{param::kAdvanceLoss, "advance-speed loss c_a", "N^½·s/m", "(N·m)^½·s/rad",
+                   0.0, 0.0, kInf}};
+  e.make_term = [](Dof, const std::vector<std::string>&) { return MakeAdvanceLossTerm(); };
+  e.propose = [](const ProposalContext& c) {
+    return c.Has(param::kAdvanceLoss) ? std::vector<Proposal>{} : Single(param::kAdvanceLoss, 0.0);
+  };
+  e.describe = [](const FindingContext& f) {
+    const ErrorGroup* g = Largest(f.breakdown.by_speed);
+    if (!g) return std::string("thrust falls with the speed of advance");
+    return "simulation " + Over(g->relative) + " speed by " + Percent(g->relative) + " at " +
+           g->label + ": thrust falls with the speed of advance";
+  };
+  return e;
+}
+
+// Σ c_ab·a·b over velocity letters (seed 003 3-DOF model: surge v·r and r², yaw u·r).
+EffectEntry Coupling() {
+  EffectEntry e;
+  e.name = "coupling";
+  e.physics = "motion in another DOF drives this one (e.g. surge speed × yaw rate terms of the "
+              "3-DOF model)";
+  e.site = EffectSite::kForceTerm;
+  e.parameters = {{param::kCouplingPrefix, "coefficient c_ab of the force c_ab·a·b",
+                   "N/(a·b)", "N·m/(a·b)", 0.0, -kInf, kInf}};
+  e.parameters[0].file_key = "coefficients";
+  e.parameters[0].check_qualifier = VelocityPair;
+  e.reads_other_motion = true;
+  e.make_term = [](Dof dof, const std::vector<std::string>& parameters) {
+    std::vector<std::string> pairs;
+    for (const std::string& p : parameters) pairs.emplace_back(Qualifier(p));
+    return MakeCouplingTerm(dof, pairs);
+  };
+  e.propose = [](const ProposalContext& c) {
+    std::vector<Proposal> out;
+    const std::vector<char>& letters = c.velocity_letters;
+    const char own = VelocityLetter(c.dof);
+    for (std::size_t i = 0; i < letters.size(); ++i) {
+      for (std::size_t j = i; j < letters.size(); ++j) {
+        if (letters[i] == own && letters[j] == own) continue;  // ξ² is quadratic drag
+        const std::string pair{letters[i], letters[j]};
+        const std::string name = param::kCouplingPrefix + pair;
+        if (c.Has(name)) continue;
+        Proposal p;
+        p.detail = pair;
+        p.start.push_back({name, 0.0});
+        out.push_back(p);
+      }
+    }
+    return out;
+  };
+  e.describe = [](const FindingContext& f) {
+    return "errors follow the motion of other degrees of freedom (" + f.detail.substr(0, 1) +
+           "·" + f.detail.substr(1, 1) + ")";
+  };
+  return e;
+}
+
+// y(t) = x(t − τ): the measurement lags the motion.
+EffectEntry SensorDelay() {
+  EffectEntry e;
+  e.name = "sensor_delay";
+  e.physics = "the measurement lags the motion by a fixed time";
+  e.site = EffectSite::kSensor;
+  e.parameters = {{param::kSensorDelay, "delay τ of the measurement", "s", "s", 0.0, 0.0, kInf}};
+  e.propose = [](const ProposalContext& c) {
+    return c.Has(param::kSensorDelay) ? std::vector<Proposal>{}
+                                      : Single(param::kSensorDelay, 0.05 * c.time_constant_s);
+  };
+  e.describe = [](const FindingContext& f) {
+    return "every measurement lags the simulated motion by a fixed time (" +
+           Fixed2(f.breakdown.lag_s) + " s at the best cross-correlation)";
+  };
+  return e;
+}
+
+// drift·t_c·φ_a: the thrust changes slowly over the campaign clock t_c (battery).
+EffectEntry ParameterDrift() {
+  EffectEntry e;
+  e.name = "parameter_drift";
+  e.physics = "a parameter changes slowly during the campaign (e.g. thrust falling with battery)";
+  e.site = EffectSite::kForceTerm;
+  e.needs_campaign_clock = true;
+  e.parameters = {{param::kDrift, "relative change of thrust per second of campaign", "1/s",
+                   "1/s", 0.0, -kInf, kInf}};
+  e.make_term = [](Dof, const std::vector<std::string>&) { return MakeDriftTerm(); };
+  e.propose = [](const ProposalContext& c) {
+    // Drift needs trials spread over the campaign clock.
+    return c.Has(param::kDrift) || !c.campaign_clock ? std::vector<Proposal>{}
+                                                     : Single(param::kDrift, 0.0);
+  };
+  e.describe = [](const FindingContext& f) {
+    const double per_s = f.params.empty() ? 0.0 : f.params[0].value;
+    const double span_h = f.breakdown.campaign_span_h;
+    std::ostringstream rate;
+    rate.precision(2);
+    rate << std::abs(100.0 * per_s * 3600.0);
+    std::string s = "the thrust " + std::string(per_s >= 0 ? "grows" : "falls") + " by " +
+                    Percent(per_s * 3600.0 * span_h) + " from the first to the last trial (" +
+                    Fixed2(span_h) + " h apart, " + rate.str() + "% per hour)";
+    if (span_h > 24.0) {
+      s += ". The trials are days apart: ballast, battery or thrust map may differ between "
+           "sessions; if each session used its own command amplitude, a thrust map wrong in "
+           "shape looks the same (compare one amplitude across sessions)";
+    }
+    return s;
+  };
+  return e;
+}
+
+// u = u0·(|u0|/u_ref)^p: a thrust map wrong in shape (notes/pitfalls.md).
+EffectEntry ThrustMap() {
+  EffectEntry e;
+  e.name = "thrust_map";
+  e.physics = "the thrust map is wrong in shape: the delivered force is u0·(|u0|/u_ref)^p";
+  e.site = EffectSite::kActuator;
+  e.parameters = {{param::kThrustExponent, "exponent p of the delivered force's shape", "1", "1",
+                   0.0, -1.0, kInf}};
+  e.parameters[0].lower_open = true;
+  e.parameters[0].expected = "a number > -1 (the delivered force must grow with the command)";
+  e.settings = {{"reference", param::kThrustReference}};
+  e.propose = [](const ProposalContext& c) {
+    // The shape shows only across command levels: at a single |φ| it is a pure scale (absorbed
+    // by m, k, kq, bias). Levels spanning less than a factor 1.5 are not tested.
+    if (c.Has(param::kThrustExponent) || !(c.max_force > 0 && c.min_force < c.max_force / 1.5)) {
+      return std::vector<Proposal>{};
+    }
+    Proposal p;
+    p.start.push_back({param::kThrustExponent, 0.0});
+    p.settings[param::kThrustReference] = c.max_force;  // η, m, k, kq keep their meaning there
+    return std::vector<Proposal>{p};
+  };
+  e.describe = [](const FindingContext& f) {
+    // At a fifth of the largest command the force is 0.2^p of nominal.
+    const double p = f.params.empty() ? 0.0 : f.params[0].value;
+    const double fifth = std::pow(0.2, p) - 1.0;
+    std::ostringstream exponent;
+    exponent.precision(2);
+    exponent << std::fixed << 1.0 + p;
+    std::string s = "the delivered force grows as |command|^" + exponent.str() +
+                    ", not in proportion: at a fifth of the largest command it is " +
+                    Percent(fifth) + (fifth >= 0 ? " above" : " below") +
+                    " what the thrust map says";
+    if (const ErrorGroup* g = Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands)) {
+      s += " (the standard simulation " + Over(g->relative) + " speed by " +
+           Percent(g->relative) + " for small commands)";
+    }
+    return s + ": the thrust map is wrong in shape";
+  };
+  return e;
+}
+
+}  // namespace
+
+std::vector<EffectEntry> BuiltInEffects() {
+  return {InstallationLoss(), AsymmetricDrag(),  ThrusterLag(),    Deadzone(),  AdvanceSpeedLoss(),
+          Coupling(),         SensorDelay(),     ParameterDrift(), ThrustMap()};
+}
+
+}  // namespace uuvplan::model::internal

@@ -1,0 +1,51 @@
+#include "uuvplan/model/prior.h"
+
+#include <cmath>
+
+#include "uuvplan/model/parameter.h"
+
+namespace uuvplan::model {
+
+namespace {
+
+// Bluff-body quadratic drag (prior.h).
+double BluffBodyQuadraticDrag(const Vehicle& vehicle, Dof dof) {
+  const double l = vehicle.size[0], w = vehicle.size[1], h = vehicle.size[2];
+  constexpr double kRho = 1000.0, kCd = 1.0;
+  switch (dof) {
+    case Dof::kSurge: return 0.5 * kRho * kCd * w * h;
+    case Dof::kSway: return 0.5 * kRho * kCd * l * h;
+    case Dof::kHeave: return 0.5 * kRho * kCd * l * w;
+    case Dof::kRoll: return kRho * kCd * l * std::pow(std::max(w, h), 4) / 64.0;
+    case Dof::kPitch: return kRho * kCd * w * std::pow(std::max(l, h), 4) / 64.0;
+    case Dof::kYaw: return kRho * kCd * h * std::pow(std::max(l, w), 4) / 64.0;
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+APrioriDrag DragOf(const Vehicle& vehicle, Dof dof, double fallback_rel_sigma) {
+  const auto prior = vehicle.priors.find(dof);
+  if (prior != vehicle.priors.end() && prior->second.drag) return {*prior->second.drag, true};
+  const double kq = BluffBodyQuadraticDrag(vehicle, dof);
+  return {{0.1 * kq, kq, fallback_rel_sigma}, false};
+}
+
+std::map<std::string, double> NominalValues(const Vehicle& vehicle, Dof dof,
+                                            const std::vector<std::string>& names,
+                                            double fallback_rel_sigma) {
+  const auto bounds = vehicle.InertiaBounds(dof);
+  const APrioriDrag drag = DragOf(vehicle, dof, fallback_rel_sigma);
+  std::map<std::string, double> values;
+  for (const std::string& n : names) {
+    const ParameterFamily* f = FamilyOf(n);
+    values[n] = f ? f->APriori() : 0.0;
+  }
+  if (values.count(param::kMass)) values[param::kMass] = 0.5 * (bounds[0] + bounds[1]);
+  if (values.count(param::kLinearDrag)) values[param::kLinearDrag] = drag.drag.k;
+  if (values.count(param::kQuadraticDrag)) values[param::kQuadraticDrag] = drag.drag.kq;
+  return values;
+}
+
+}  // namespace uuvplan::model
