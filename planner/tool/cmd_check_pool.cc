@@ -10,6 +10,7 @@
 #include "command.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/planner/pool_check.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/schedule_planner.h"

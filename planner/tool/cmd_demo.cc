@@ -21,6 +21,7 @@
 #include "uuvplan/ident/diagnosis.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/virtual_pool.h"
 #include "uuvplan/planner/design_loop.h"
 #include "uuvplan/planner/pool_check.h"

@@ -19,6 +19,7 @@
 #include "loop_report.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design_loop.h"
 

@@ -13,6 +13,7 @@
 #include "command.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/virtual_pool.h"
 #include "uuvplan/planner/schedule.h"
 
