@@ -5,11 +5,11 @@
 #include <limits>
 #include <sstream>
 
-#include "number_text.h"
 #include "model_selection.h"
 #include "number_text.h"
 #include "options_check.h"
 #include "uuvplan/ident/least_squares.h"
+#include "uuvplan/model/parameter.h"
 #include "uuvplan/ident/significance.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/simulator.h"
@@ -86,16 +86,12 @@ Binned Bin(const Signal& s, double sigma, double step, const std::vector<double>
   return b;
 }
 
+// Every parameter within the range its family allows a fit (model/parameter.h).
 bool Admissible(const model::DofModel& model, const Eigen::VectorXd& theta) {
   const auto& names = model.parameter_names();
   for (int j = 0; j < model.num_parameters(); ++j) {
-    const std::string& n = names[j];
-    if ((n == model::param::kMass || n == model::param::kLag) && !(theta[j] > 0)) return false;
-    if ((n == model::param::kDeadzone || n == model::param::kSensorDelay) && !(theta[j] >= 0)) return false;
-    // thrust_map: the delivered force u0·(|u0|/u_ref)^p must grow with the command (p > −1);
-    // 1 + p ≥ 0.05 keeps the fit off the flat map, where m, drag and p cannot be told apart.
-    if (n == model::param::kThrustExponent && !(theta[j] > -0.95)) return false;
-    if (!std::isfinite(theta[j])) return false;
+    const model::ParameterFamily* family = model::FamilyOf(names[j]);
+    if (family ? !family->Fittable(theta[j]) : !std::isfinite(theta[j])) return false;
   }
   return true;
 }

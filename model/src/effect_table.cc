@@ -154,6 +154,8 @@ EffectEntry ThrusterLag() {
   e.site = EffectSite::kActuator;
   e.parameters = {{param::kLag, "time constant T of the thrust", "s", "s", 0.0, 0.0, kInf, 0.1}};
   e.parameters[0].lower_open = true;
+  e.parameters[0].fit_lower = 0.0;  // T > 0: the lag divides by it
+  e.parameters[0].fit_lower_open = true;
   e.propose = [](const ProposalContext& c) {
     return c.Has(param::kLag) ? std::vector<Proposal>{} : Single(param::kLag, 0.1 * c.time_constant_s);
   };
@@ -175,6 +177,7 @@ EffectEntry Deadzone() {
   e.physics = "no thrust for small commanded force";
   e.site = EffectSite::kActuator;
   e.parameters = {{param::kDeadzone, "width d of the dead band", "N", "N·m", 0.0, 0.0, kInf}};
+  e.parameters[0].fit_lower = 0.0;
   e.propose = [](const ProposalContext& c) {
     return c.Has(param::kDeadzone) ? std::vector<Proposal>{}
                                    : Single(param::kDeadzone, 0.02 * c.max_force);
@@ -258,6 +261,7 @@ EffectEntry SensorDelay() {
   e.physics = "the measurement lags the motion by a fixed time";
   e.site = EffectSite::kSensor;
   e.parameters = {{param::kSensorDelay, "delay τ of the measurement", "s", "s", 0.0, 0.0, kInf}};
+  e.parameters[0].fit_lower = 0.0;  // the measurement cannot precede the motion
   e.propose = [](const ProposalContext& c) {
     return c.Has(param::kSensorDelay) ? std::vector<Proposal>{}
                                       : Single(param::kSensorDelay, 0.05 * c.time_constant_s);
@@ -313,6 +317,9 @@ EffectEntry ThrustMap() {
                    0.0, -1.0, kInf}};
   e.parameters[0].lower_open = true;
   e.parameters[0].expected = "a number > -1 (the delivered force must grow with the command)";
+  // 1 + p ≥ 0.05 keeps a fit off the flat map, where m, drag and p cannot be told apart.
+  e.parameters[0].fit_lower = -0.95;
+  e.parameters[0].fit_lower_open = true;
   e.settings = {{"reference", param::kThrustReference}};
   e.propose = [](const ProposalContext& c) {
     // The shape shows only across command levels: at a single |φ| it is a pure scale (absorbed

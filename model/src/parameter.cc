@@ -21,14 +21,20 @@ std::string ParameterFamily::Expected() const {
 
 const std::vector<ParameterFamily>& StandardFamilies() {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  static const std::vector<ParameterFamily> families = {
-      {param::kMass, "inertia including added mass", "kg", "kg·m²", 0.0, 0.0, kInf},
-      {param::kLinearDrag, "linear drag", "N·s/m", "N·m·s/rad", 0.0, 0.0, kInf},
-      {param::kQuadraticDrag, "quadratic drag", "N·s²/m²", "N·m·s²/rad²", 0.0, 0.0, kInf},
-      {param::kBias, "constant force (weight − buoyancy, tether)", "N", "N·m", 0.0, -kInf, kInf},
-      {param::kBiasStep, "force of one ballast step (seed 000 eq. 20)", "N", "N·m", 0.0, -kInf,
-       kInf},
-  };
+  static const std::vector<ParameterFamily> families = [] {
+    std::vector<ParameterFamily> f = {
+        {param::kMass, "inertia including added mass", "kg", "kg·m²", 0.0, 0.0, kInf},
+        {param::kLinearDrag, "linear drag", "N·s/m", "N·m·s/rad", 0.0, 0.0, kInf},
+        {param::kQuadraticDrag, "quadratic drag", "N·s²/m²", "N·m·s²/rad²", 0.0, 0.0, kInf},
+        {param::kBias, "constant force (weight − buoyancy, tether)", "N", "N·m", 0.0, -kInf,
+         kInf},
+        {param::kBiasStep, "force of one ballast step (seed 000 eq. 20)", "N", "N·m", 0.0, -kInf,
+         kInf},
+    };
+    f[0].fit_lower = 0.0;  // m > 0: the DOF model divides by it
+    f[0].fit_lower_open = true;
+    return f;
+  }();
   return families;
 }
 

@@ -23,6 +23,15 @@ double BluffBodyQuadraticDrag(const Vehicle& vehicle, Dof dof) {
   return 0.0;
 }
 
+// The nominal value of `name` (a standard drag parameter even when not in `values`).
+double DragOrNominal(const std::map<std::string, double>& values, const APrioriDrag& drag,
+                     std::string_view name) {
+  if (name == param::kLinearDrag) return drag.drag.k;
+  if (name == param::kQuadraticDrag) return drag.drag.kq;
+  const auto it = values.find(std::string(name));
+  return it == values.end() ? 0.0 : it->second;
+}
+
 }  // namespace
 
 APrioriDrag DragOf(const Vehicle& vehicle, Dof dof, double fallback_rel_sigma) {
@@ -42,9 +51,18 @@ std::map<std::string, double> NominalValues(const Vehicle& vehicle, Dof dof,
     const ParameterFamily* f = FamilyOf(n);
     values[n] = f ? f->APriori() : 0.0;
   }
-  if (values.count(param::kMass)) values[param::kMass] = 0.5 * (bounds[0] + bounds[1]);
-  if (values.count(param::kLinearDrag)) values[param::kLinearDrag] = drag.drag.k;
-  if (values.count(param::kQuadraticDrag)) values[param::kQuadraticDrag] = drag.drag.kq;
+  const double m = 0.5 * (bounds[0] + bounds[1]);
+  const std::pair<const char*, double> known[] = {{param::kMass, m > 0 ? m : 1.0},
+                                                  {param::kLinearDrag, drag.drag.k},
+                                                  {param::kQuadraticDrag, drag.drag.kq}};
+  for (const auto& [name, value] : known) {
+    if (values.count(name)) values[name] = value;
+  }
+  // A parameter whose file value defaults to another's starts there too (k_neg at k).
+  for (auto& [name, value] : values) {
+    const ParameterFamily* f = FamilyOf(name);
+    if (f && !f->defaults_to.empty()) value = DragOrNominal(values, drag, f->defaults_to);
+  }
   return values;
 }
 

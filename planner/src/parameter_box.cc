@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/prior.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::planner {
@@ -13,12 +14,10 @@ namespace {
 
 bool IsEta(const std::string& name) { return model::StartsWith(name, model::param::kEtaPrefix); }
 
-// The planner's nominal-θ policy for a parameter with neither an a priori value nor an
-// estimate: eta_nominal for installation coefficients, 0 for the rest (bias, bias_step: no a
-// priori value). ident/src/identify.cc has its own; issue #12 moves one policy into the model,
-// which will replace this function.
+// A parameter the estimates do not cover: the box's η centre, else the model's nominal value
+// (model/prior.h: an effect's null value).
 double NominalWithoutValue(const std::string& name, const BoxOptions& options) {
-  return IsEta(name) ? options.eta_nominal : 0.0;
+  return IsEta(name) ? options.eta_nominal : model::NullValue(name);
 }
 
 // The drag axis (k and kq scaled together by [drag_lo, drag_hi]) and, when the box has free
@@ -100,66 +99,32 @@ std::vector<ParameterValues> ParameterBox::CheckPoints(int per_axis) const {
   return out;
 }
 
+// Centred on the model's nominal values (model/prior.h), except η: the box is centred on
+// options.eta_nominal, a planning assumption (installation losses are expected, seed 000
+// Table III), not a prior.
 ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
                         const std::vector<std::string>& names, const BoxOptions& options,
                         std::vector<std::string>* notes) {
   ParameterBox box;
   const auto mb = vehicle.InertiaBounds(dof);
-  const double m_mid = 0.5 * (mb[0] + mb[1]);
-  double k = 0.0, kq = 0.0, rel = options.fallback_drag_rel_sigma;
-  auto prior = vehicle.priors.find(dof);
-  if (prior != vehicle.priors.end() && prior->second.drag) {
-    k = prior->second.drag->k;
-    kq = prior->second.drag->kq;
-    rel = prior->second.drag->rel_sigma;
-  } else {
-    // Bluff body: kq = ½·ρ·C_D·A (translation), ρ = 1000 kg/m³, C_D = 1 (open frame). For a
-    // rotation, a plate of length l and height h about its centre: torque = ρ·C_D·h·l⁴/64·r².
-    const double l = vehicle.size[0], w = vehicle.size[1], h = vehicle.size[2];
-    constexpr double kRho = 1000.0, kCd = 1.0;
-    switch (dof) {
-      case model::Dof::kSurge:
-        kq = 0.5 * kRho * kCd * w * h;
-        break;
-      case model::Dof::kSway:
-        kq = 0.5 * kRho * kCd * l * h;
-        break;
-      case model::Dof::kHeave:
-        kq = 0.5 * kRho * kCd * l * w;
-        break;
-      case model::Dof::kRoll:
-        kq = kRho * kCd * l * std::pow(std::max(w, h), 4) / 64.0;
-        break;
-      case model::Dof::kPitch:
-        kq = kRho * kCd * w * std::pow(std::max(l, h), 4) / 64.0;
-        break;
-      case model::Dof::kYaw:
-        kq = kRho * kCd * h * std::pow(std::max(l, w), 4) / 64.0;
-        break;
-    }
-    k = 0.1 * kq;
-    if (notes) {
-      std::ostringstream s;
-      s << model::DofName(dof) << ": no a priori drag (dofs." << model::DofName(dof)
-        << ".drag in the vehicle file); planned with a bluff-body estimate k = " << k
-        << ", kq = " << kq << " (C_D = 1 on the frontal area of `size`), rel_sigma " << rel
-        << ". Give the drag of a previous fit to plan better.";
-      notes->push_back(s.str());
-    }
+  const model::APrioriDrag drag = model::DragOf(vehicle, dof, options.fallback_drag_rel_sigma);
+  const double rel = drag.drag.rel_sigma;
+  if (!drag.from_vehicle_file && notes) {
+    std::ostringstream s;
+    s << model::DofName(dof) << ": no a priori drag (dofs." << model::DofName(dof)
+      << ".drag in the vehicle file); planned with a bluff-body estimate k = " << drag.drag.k
+      << ", kq = " << drag.drag.kq << " (C_D = 1 on the frontal area of `size`), rel_sigma "
+      << rel << ". Give the drag of a previous fit to plan better.";
+    notes->push_back(s.str());
   }
+  box.nominal = model::NominalValues(vehicle, dof, names, options.fallback_drag_rel_sigma);
   std::vector<std::string> etas;
   for (const auto& n : names) {
-    if (n == model::param::kMass) {
-      box.nominal[n] = m_mid;
-    } else if (n == model::param::kLinearDrag) {
-      box.nominal[n] = k;
-    } else if (n == model::param::kQuadraticDrag) {
-      box.nominal[n] = kq;
-    } else {
-      box.nominal[n] = NominalWithoutValue(n, options);
-      if (IsEta(n)) etas.push_back(n);
-    }
+    if (!IsEta(n)) continue;
+    box.nominal[n] = options.eta_nominal;
+    etas.push_back(n);
   }
+  const double m_mid = 0.5 * (mb[0] + mb[1]);
   box.axes.push_back({"m", {model::param::kMass}, mb[0] / m_mid, mb[1] / m_mid, true});
   const double half = options.drag_sigmas * rel;
   AddDragAndEtaAxes(std::max(0.05, 1.0 - half), 1.0 + half, etas, options, &box);

@@ -6,6 +6,7 @@
 // planning and diagnosis ask this vocabulary, never a hand-written list of names.
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -40,6 +41,16 @@ struct ParameterFamily {
                                  const struct Vehicle& vehicle) = nullptr;
   /// A value not given in a truth file defaults to this parameter's (k_neg: k); empty: required.
   std::string_view defaults_to{};
+  /// Where a fit may go: the model is undefined (or unidentifiable) below this; NaN: anywhere.
+  double fit_lower = std::numeric_limits<double>::quiet_NaN();
+  bool fit_lower_open = false;
+
+  /// `value` is finite and within the fit's range.
+  bool Fittable(double value) const {
+    if (!std::isfinite(value)) return false;
+    if (fit_lower != fit_lower) return true;
+    return fit_lower_open ? value > fit_lower : value >= fit_lower;
+  }
 
   double APriori() const { return a_priori == a_priori ? a_priori : null_value; }
   bool qualified() const { return !name.empty() && name.back() == '.'; }
