@@ -64,16 +64,28 @@ struct DofModelKernel {
     return tc;
   }
 
+  [[gnu::noinline]] static double OtherForces(const DofModel& m, const TermContext& tc,
+                                              const double* theta) {
+    double f = 0.0;
+    for (const auto& typed : m.others_) f += typed.term->Value(tc, theta + typed.offset);
+    return f;
+  }
+
+  /// kOthers: the model has terms of registered effects (DofModel::has_registered_terms());
+  /// without them the simulation loop is instantiated with no call that could clobber memory.
+  template <bool kOthers = true>
   [[gnu::always_inline]] static double TotalForce(const DofModel& m, const TermContext& tc, const double* theta) {
     // Summed as a tree, not left to right: the state-dependent terms (drag, advance loss,
     // coupling) then meet the others after two additions instead of five.
     auto value = [&](const auto& typed) {
       return typed.term ? typed.term->Value(tc, theta + typed.offset) : 0.0;
     };
-    double others = 0.0;
-    for (const auto& typed : m.others_) others += value(typed);
-    return (value(m.drag_) + value(m.advance_)) + (value(m.coupling_) + value(m.thrust_)) +
-           (value(m.constant_) + value(m.drift_)) + others;
+    const double known = (value(m.drag_) + value(m.advance_)) +
+                         (value(m.coupling_) + value(m.thrust_)) +
+                         (value(m.constant_) + value(m.drift_));
+    // Terms of registered effects the loop does not know (virtual calls), out of line.
+    if constexpr (kOthers) return m.others_.empty() ? known : known + OtherForces(m, tc, theta);
+    return known;
   }
 
   /// 1/m and 1/T: they do not depend on the state, so the caller computes them once and the
@@ -86,13 +98,14 @@ struct DofModelKernel {
   }
 
   /// dx/dt (dof_model.h): [xi, ΣF/m, (u - phi_a)/T].
+  template <bool kOthers = true>
   [[gnu::always_inline]] static void Derivative(const DofModel& m, double t, const double* x,
                                                 const InputSample& in, const TrialConditions& c,
                                                 const double* theta, const Inverses& inv,
                                                 double* dx) {
     const TermContext tc = Context(m, t, x, in, c);
     dx[0] = x[1];
-    dx[1] = TotalForce(m, tc, theta) * inv.mass;
+    dx[1] = TotalForce<kOthers>(m, tc, theta) * inv.mass;
     if (m.has_lag()) dx[2] = (in.u - x[2]) * inv.lag;
   }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <stdexcept>
 
 #include "dof_model_kernel.h"
@@ -64,7 +65,7 @@ __attribute__((always_inline)) inline void SensitivitySlope(const double* A, con
 // NX = number of states (2, or 3 with thruster lag), a template parameter so that the state
 // loops unroll. The hot loop keeps its buffers local (a class holding them was 8% slower in
 // the planner: stores through its pointers forced reloads of every member).
-template <int NX>
+template <int NX, bool kOthers>
 Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
                       const TrialConditions& c, const std::vector<double>& output_times,
                       double shift, const SimulationOptions& options, const Eigen::VectorXd* x0) {
@@ -124,13 +125,13 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
       // Classical RK4 on x (and on S with the same stages): x += h/6·(k1 + 2k2 + 2k3 + k4).
       // With S: dS/dt = A·S + B (forward sensitivity equations), A = ∂f/∂x, B = ∂f/∂theta.
       if (!sens) {
-        Kernel::Derivative(model, ta, x, in_a, c, th, inv, k1);
+        Kernel::Derivative<kOthers>(model, ta, x, in_a, c, th, inv, k1);
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k1[s];
-        Kernel::Derivative(model, tm, xt, in_m, c, th, inv, k2);
+        Kernel::Derivative<kOthers>(model, tm, xt, in_m, c, th, inv, k2);
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k2[s];
-        Kernel::Derivative(model, tm, xt, in_m, c, th, inv, k3);
+        Kernel::Derivative<kOthers>(model, tm, xt, in_m, c, th, inv, k3);
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + h * k3[s];
-        Kernel::Derivative(model, te, xt, in_e, c, th, inv, k4);
+        Kernel::Derivative<kOthers>(model, te, xt, in_e, c, th, inv, k4);
       } else {
         double* Bp = B.data();
         Kernel::Linearize<NX>(model, ta, x, in_a, c, th, inv, k1, A, Bp);
@@ -161,8 +162,18 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
 Trajectory Integrate(const DofModel& model, const Eigen::VectorXd& theta,
                      const TrialConditions& c, const std::vector<double>& output_times,
                      double shift, const SimulationOptions& options, const Eigen::VectorXd* x0) {
-  return model.num_states() == 3 ? IntegrateN<3>(model, theta, c, output_times, shift, options, x0)
-                                 : IntegrateN<2>(model, theta, c, output_times, shift, options, x0);
+  const auto run = [&](auto nx, auto others) {
+    return IntegrateN<decltype(nx)::value, decltype(others)::value>(model, theta, c, output_times,
+                                                                    shift, options, x0);
+  };
+  using Lag = std::integral_constant<int, 3>;
+  using NoLag = std::integral_constant<int, 2>;
+  using Others = std::true_type;
+  using NoOthers = std::false_type;
+  if (model.has_registered_terms()) {
+    return model.num_states() == 3 ? run(Lag{}, Others{}) : run(NoLag{}, Others{});
+  }
+  return model.num_states() == 3 ? run(Lag{}, NoOthers{}) : run(NoLag{}, NoOthers{});
 }
 
 }  // namespace

@@ -75,6 +75,9 @@ class DofModel {
   bool needs_aux() const { return needs_aux_; }
   int sensor_delay_index() const { return delay_index_; }
   const std::vector<std::unique_ptr<ForceTerm>>& terms() const { return terms_; }
+  /// True when a term of an effect registered beyond the built-in ones is on (a virtual call
+  /// in the simulation loop).
+  bool has_registered_terms() const { return !others_.empty(); }
   /// Offset of term j's parameters in theta.
   int term_offset(int j) const { return term_offsets_[j]; }
 
@@ -132,7 +135,6 @@ class DofModel {
   Typed<internal::AdvanceLossTerm> advance_;
   Typed<internal::CouplingTerm> coupling_;
   Typed<internal::DriftTerm> drift_;
-  std::vector<Typed<ForceTerm>> others_;  ///< terms of registered effects the loop does not know
   std::vector<std::unique_ptr<ForceTerm>> terms_;
   std::vector<int> term_offsets_;
   std::vector<std::string> names_;
@@ -142,6 +144,7 @@ class DofModel {
   int delay_index_ = -1;
   int thrust_exponent_index_ = -1;
   double thrust_reference_ = 1.0;
+  std::vector<Typed<ForceTerm>> others_;  ///< terms of registered effects the loop does not know
 };
 
 }  // namespace uuvplan::model
