@@ -110,26 +110,29 @@ struct DofDiagnosis {
   std::vector<Finding> found;
 };
 
-// Stage 3, one greedy round: every untried effect's candidates fitted and tested; the most
-// significant that also predicts held-out data better is taken (strongest evidence first).
-bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, bool campaign_clock,
-                int round, std::set<std::string>* used, DofDiagnosis* d, DiagnosisResult* result) {
-  struct Significant {
-    Candidate candidate;
-    StructureFit fit;
-    std::size_t test;  // index in result->tests
-  };
+// A candidate that passed the likelihood-ratio test, with its fit.
+struct Significant {
+  Candidate candidate;
+  StructureFit fit;
+  std::size_t test;  // index in result->tests
+};
+
+// Stage "test", one greedy round: every untried effect's candidates fitted and tested against
+// the current structure; the significant ones, strongest evidence first.
+std::vector<Significant> TestCandidates(const model::Vehicle& vehicle,
+                                        const DiagnoseOptions& options, bool campaign_clock,
+                                        int round, const std::set<std::string>& used,
+                                        const DofDiagnosis& d, DiagnosisResult* result) {
   std::vector<Significant> significant;
-  const OutputErrorOptions& oe = options.output_error;
   for (const std::string& effect : options.candidates) {
-    if (used->count(effect)) continue;
+    if (used.count(effect)) continue;
     for (const Candidate& c :
-         diagnosis::CandidatesFor(effect, vehicle, d->current, d->fit, campaign_clock)) {
-      Values s = d->current.values;
+         diagnosis::CandidatesFor(effect, vehicle, d.current, d.fit, campaign_clock)) {
+      Values s = d.current.values;
       for (const auto& [n, v0] : c.proposal.start) s[n] = v0;
-      StructureFit ext =
-          diagnosis::FitStructure(vehicle, c.structure, d->fit, s, d->current.dropped, oe);
-      CandidateTest t = diagnosis::Test(c, d->current, ext, round);
+      StructureFit ext = diagnosis::FitStructure(vehicle, c.structure, d.fit, s,
+                                                 d.current.dropped, options.output_error);
+      CandidateTest t = diagnosis::Test(c, d.current, ext, round);
       t.significant = t.p_value < options.significance && t.max_z >= options.min_z;
       result->tests.push_back(t);
       if (t.significant) significant.push_back({c, std::move(ext), result->tests.size() - 1});
@@ -138,27 +141,47 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
   std::stable_sort(significant.begin(), significant.end(), [&](const auto& a, const auto& b) {
     return result->tests[a.test].statistic > result->tests[b.test].statistic;
   });
+  return significant;
+}
+
+// Stage "extend": the accepted candidate becomes the current structure, and a finding.
+void Accept(Significant* sig, const DiagnosisGain& g, std::set<std::string>* used,
+            DofDiagnosis* d, DiagnosisResult* result) {
+  CandidateTest& test = result->tests[sig->test];
+  test.accepted = true;
+  Finding f{test.effect, d->dof, "", {}, test.statistic, test.added_parameters, test.p_value, g};
+  std::vector<model::ParameterValue> values;
+  for (const std::string& name : sig->candidate.added) {
+    const int k = FindEstimate(sig->fit.oe.estimates, name);
+    if (k < 0) continue;
+    f.params.push_back(sig->fit.oe.estimates[k]);
+    values.push_back({name, f.params.back().value, f.params.back().sigma});
+  }
+  const model::EffectEntry& effect = *sig->candidate.effect;
+  f.what = effect.describe
+               ? effect.describe({values, d->breakdown, sig->candidate.proposal.detail})
+               : test.effect;
+  used->insert(test.effect);
+  d->current = std::move(sig->fit);
+  d->found.push_back(f);
+}
+
+// One greedy round (test, then measure and extend): the most significant candidate that also
+// predicts held-out data better is taken. False when none is.
+bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, bool campaign_clock,
+                int round, std::set<std::string>* used, DofDiagnosis* d, DiagnosisResult* result,
+                StageClock* clock) {
+  std::vector<Significant> significant =
+      TestCandidates(vehicle, options, campaign_clock, round, *used, *d, result);
+  clock->Lap("test");
   for (Significant& sig : significant) {
-    const DiagnosisGain g =
-        diagnosis::HeldOutGain(vehicle, d->current, sig.fit, d->fit, d->validate, oe);
-    CandidateTest& test = result->tests[sig.test];
-    test.gain = g.relative;
+    const DiagnosisGain g = diagnosis::HeldOutGain(vehicle, d->current, sig.fit, d->fit,
+                                                   d->validate, options.output_error);
+    result->tests[sig.test].gain = g.relative;
+    clock->Lap("measure");
     if (g.relative < options.min_gain) continue;
-    test.accepted = true;
-    Finding f{test.effect, d->dof, "", {}, test.statistic, test.added_parameters, test.p_value, g};
-    std::vector<model::ParameterValue> values;
-    for (const std::string& name : sig.candidate.added) {
-      const int k = FindEstimate(sig.fit.oe.estimates, name);
-      if (k < 0) continue;
-      f.params.push_back(sig.fit.oe.estimates[k]);
-      values.push_back({name, f.params.back().value, f.params.back().sigma});
-    }
-    f.what = sig.candidate.effect->describe
-                 ? sig.candidate.effect->describe({values, d->breakdown, sig.candidate.proposal.detail})
-                 : test.effect;
-    used->insert(test.effect);
-    d->current = std::move(sig.fit);
-    d->found.push_back(f);
+    Accept(&sig, g, used, d, result);
+    clock->Lap("extend");
     return true;
   }
   return false;
@@ -209,10 +232,23 @@ void AddCaveats(const DofIdentification& nominal, const DiagnoseOptions& options
   }
 }
 
+// The nominal identification with the extended structure's output-error estimate.
+DofIdentification Extended(const DofIdentification& nominal, const StructureFit& current) {
+  DofIdentification ext = nominal;
+  ext.structure = current.structure;
+  ext.parameter_names = current.model->parameter_names();
+  ext.theta = current.oe.theta;
+  ext.covariance = current.oe.covariance;
+  ext.params = current.oe.estimates;
+  ext.estimator = FinalEstimator::kOutputError;
+  return ext;
+}
+
 // Stages 2–4 for one DOF whose standard model was identified.
 void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options,
                  const std::vector<std::unique_ptr<TrialData>>& prepared,
-                 const DofIdentification& nominal, bool campaign_clock, DiagnosisResult* result) {
+                 const DofIdentification& nominal, bool campaign_clock, DiagnosisResult* result,
+                 StageClock* clock) {
   DofDiagnosis d{nominal.dof, {}, {}, {}, {}, {}};
   for (const auto& t : prepared) {
     if (t->dof == d.dof) (t->use == model::TrialUse::kFit ? d.fit : d.validate).push_back(t.get());
@@ -231,6 +267,7 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   if (!d.current.oe.ok()) {
     result->notes.push_back(name + ": output-error fit of the standard model failed (" +
                             d.current.oe.message + "); nothing to diagnose");
+    clock->Lap("screen");
     return;
   }
   Trials all = d.fit;
@@ -239,20 +276,18 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
                                      oe.step_s, campaign_clock);
   AddCaveats(nominal, options, campaign_clock, d.dof, result);
   result->breakdowns.push_back(d.breakdown);
+  clock->Lap("screen");
   std::set<std::string> used;
   for (int round = 0; round < options.max_effects; ++round) {
-    if (!ExtendOnce(campaign.vehicle, options, campaign_clock, round, &used, &d, result)) break;
+    if (!ExtendOnce(campaign.vehicle, options, campaign_clock, round, &used, &d, result, clock)) {
+      break;
+    }
   }
   AddInputNoise(campaign, options, &d, result);
+  clock->Lap("measure");
   result->findings.insert(result->findings.end(), d.found.begin(), d.found.end());
-  DofIdentification ext = nominal;
-  ext.structure = d.current.structure;
-  ext.parameter_names = d.current.model->parameter_names();
-  ext.theta = d.current.oe.theta;
-  ext.covariance = d.current.oe.covariance;
-  ext.params = d.current.oe.estimates;
-  ext.estimator = FinalEstimator::kOutputError;
-  result->extended.push_back(ext);
+  result->extended.push_back(Extended(nominal, d.current));
+  clock->Lap("extend");
 }
 
 }  // namespace
@@ -261,9 +296,12 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
   std::string error;
   if (!options.IsValid(&error)) throw model::InputError("diagnose", error);
   DiagnosisResult result;
+  StageClock clock({"screen", "test", "extend", "measure"});
   const auto prepared = PrepareAll(campaign, options.identify.data);
   const std::vector<Dof> dofs = DofsToDiagnose(prepared, options.dofs);
+  result.dofs = dofs;
   result.nominal = IdentifyNominal(campaign, prepared, dofs, options.identify);
+  clock.Lap("screen");
   const bool campaign_clock =
       std::all_of(campaign.trials.begin(), campaign.trials.end(),
                   [](const model::TrialEntry& e) { return e.has_start; });
@@ -274,10 +312,12 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
                              ": the standard model could not be identified; nothing to diagnose");
       continue;
     }
-    DiagnoseDof(campaign, options, prepared, *nominal, campaign_clock, &result);
+    DiagnoseDof(campaign, options, prepared, *nominal, campaign_clock, &result, &clock);
   }
   std::stable_sort(result.findings.begin(), result.findings.end(),
                    [](const Finding& a, const Finding& b) { return a.gain.relative > b.gain.relative; });
+  clock.Lap("extend");
+  result.timing = clock.times();
   return result;
 }
 

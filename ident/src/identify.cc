@@ -2,8 +2,6 @@
 // of identify_stages.h (prepare → estimate → refine → validate), timed.
 #include "uuvplan/ident/identify.h"
 
-#include <chrono>
-
 #include "identify_stages.h"
 #include "options_check.h"
 #include "uuvplan/model/effects.h"
@@ -27,21 +25,6 @@ constexpr model::EnumNames<FinalEstimator, 4> kFinalEstimatorNames{{{
     {FinalEstimator::kOneStep, "one_step_ls"},
     {FinalEstimator::kNone, "none"},
 }}};
-
-// Wall time between laps (s).
-class Stopwatch {
- public:
-  double Lap() {
-    const auto now = Clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  Clock::time_point last_ = Clock::now();
-};
 
 // One DOF through the four stages; `prepare_s` is the time its trials took to prepare.
 DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,

@@ -2,7 +2,8 @@
 // gets wrong, the physical effect that causes it, the extended model and its gain
 // (ident/diagnosis.h, docs/diagnosis.md). Exit 0 (findings are results, not errors), 1 when no
 // DOF could be diagnosed (its standard model could not be fitted: the notes say why), 2 on bad
-// input. UUVPLAN_VERBOSE (set, any value) also prints the standard model's fit on stderr.
+// input. UUVPLAN_VERBOSE (set, any value) also prints the standard model's fit on stderr. On a
+// terminal, the summary's Brief() line follows on stderr.
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -26,11 +27,11 @@ int RunDiagnose(const DiagnoseCommandOptions& co) {
   const model::Campaign campaign = io::ReadCampaign(co.campaign);
   ident::DiagnoseOptions o;
   o.dofs = ParseDofFlags(co.dofs);
-  // TODO(issue #12, diagnosis engineer): DiagnoseOptions gains `verbose`; then set it here:
-  // o.verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
+  o.verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
   const ident::DiagnosisResult result = ident::Diagnose(campaign, o);
   PrintDiagnosis(result, ReportStream(co.json));
   if (!co.json.empty()) WriteJson(co.json, io::DiagnosisJson(result));
+  PrintBriefOnTerminal(result.Summary().Brief());
   // A breakdown exists for each DOF whose standard model was fitted, i.e. diagnosed.
   return result.breakdowns.empty() ? kExitActionNeeded : kExitOk;
 }

@@ -2,7 +2,7 @@
 // [--no-prune] [--closed-loop yes|no|auto]`: parameter estimates with standard deviations and
 // the fit of the identified model (ident/identify.h, docs/identification.md). Exit status 0
 // when every DOF was identified, 1 when some DOF could not be (the message says what would fix
-// it), 2 on bad input.
+// it), 2 on bad input. On a terminal, the summary's Brief() line follows on stderr.
 #include <string>
 #include <vector>
 
@@ -88,6 +88,7 @@ int RunIdentify(const IdentifyCommandOptions& co) {
       << campaign.trials.size() << " trials)\n\n";
   PrintIdentifyTable(result, out);
   if (!co.json.empty()) WriteJson(co.json, io::IdentifyJson(result));
+  PrintBriefOnTerminal(result.Summary().Brief());
   return result.status == ident::IdentifyStatus::kFailed ? kExitActionNeeded : kExitOk;
 }
 

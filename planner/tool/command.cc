@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <unistd.h>
 
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
@@ -16,6 +17,10 @@ std::vector<Command>& Registry() {
 
 CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& what) {
   return sub->add_option("--json", *path, what + " as JSON to this file ('-' = stdout)");
+}
+
+void PrintBriefOnTerminal(const std::string& brief) {
+  if (isatty(STDERR_FILENO)) std::cerr << brief << "\n";
 }
 
 std::ostream& ReportStream(const std::string& json_path) {

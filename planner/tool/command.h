@@ -56,6 +56,10 @@ CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& 
 /// Where the readable report goes: stdout, or stderr when the JSON goes there (`--json -`).
 std::ostream& ReportStream(const std::string& json_path);
 
+/// A command's one-line Summary().Brief() on stderr, only when stderr is a terminal
+/// (isatty(2)): stdout, --json output and captured stderr stay as they were.
+void PrintBriefOnTerminal(const std::string& brief);
+
 /// Writes `j` to `path` atomically, or to stdout when `path` is "-".
 void WriteJson(const std::string& path, const nlohmann::json& j);
 

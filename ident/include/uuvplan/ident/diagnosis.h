@@ -15,6 +15,9 @@
 //  4. The gain of each finding is the velocity MAE (seed 002 eq. 37) of the free-run simulation
 //     before and after adding it, on the `validate` trials, or by 2-fold cross-validation across
 //     trials when none is marked.
+// The driver times its stages — screen (the standard model identified, fitted and broken down),
+// test (candidates fitted and tested), extend (the greedy choice), measure (held-out gains,
+// input noise) — and DiagnosisResult::Summary() gives them in the pipelines' shape (summary.h).
 #pragma once
 
 #include <optional>
@@ -26,6 +29,7 @@
 #include "uuvplan/ident/estimate.h"
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/output_error.h"
+#include "uuvplan/ident/summary.h"
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/model_structure.h"
@@ -111,6 +115,17 @@ struct DiagnosisResult {
   /// What limits the findings' meaning (e.g. closed-loop data), to show beside them.
   std::vector<std::string> warnings;
   std::vector<std::string> notes;
+  /// The DOFs asked for (or with a fit trial), in the order diagnosed.
+  std::vector<model::Dof> dofs;
+  /// Wall time of each stage, summed over the DOFs, in order: "screen" (trials prepared, the
+  /// standard model identified, fitted by output error and its errors broken down), "test"
+  /// (every candidate fitted and tested), "extend" (the greedy choice, the extended model),
+  /// "measure" (held-out gains, input-noise covariance). They add up to Diagnose's wall time.
+  std::vector<StageTime> timing;
+  /// Status "findings" (some effect found), "none" (every DOF diagnosed, nothing found) or
+  /// "failed" (no DOF could be diagnosed); the stage timings; per DOF the effects found with
+  /// their held-out gain.
+  PipelineSummary Summary() const;
 };
 
 /// Diagnoses the campaign. Throws model::InputError for unusable input.

@@ -31,6 +31,7 @@
 #include "uuvplan/ident/one_step_ls.h"
 #include "uuvplan/ident/output_error.h"
 #include "uuvplan/ident/steady_state.h"
+#include "uuvplan/ident/summary.h"
 #include "uuvplan/ident/trial_data.h"
 #include "uuvplan/ident/validation.h"
 #include "uuvplan/model/campaign.h"
@@ -73,12 +74,6 @@ std::string_view IdentifyStatusName(IdentifyStatus s);
 /// Which estimator produced a DOF's reported parameters.
 enum class FinalEstimator { kOutputError, kSteadyStateIntegral, kOneStep, kNone };
 std::string_view FinalEstimatorName(FinalEstimator e);
-
-/// Wall time of one stage of the identification (s).
-struct StageTime {
-  std::string stage;
-  double seconds = 0.0;
-};
 
 struct DofIdentification {
   model::Dof dof = model::Dof::kSurge;
@@ -123,7 +118,8 @@ struct TrialReport {
 };
 
 /// What an identification did, in the style of Ceres' Solver::Summary: the status, the wall
-/// time of each stage summed over the DOFs, and the estimator and status of each DOF.
+/// time of each stage summed over the DOFs, and the estimator and status of each DOF. Its
+/// texts are those of the shared shape (summary.h), built by Shape().
 struct IdentifySummary {
   struct DofLine {
     model::Dof dof = model::Dof::kSurge;
@@ -138,11 +134,13 @@ struct IdentifySummary {
   int num_trials = 0;
   std::vector<StageTime> stages;  ///< prepare, estimate, refine, validate (all DOFs)
   std::vector<DofLine> dofs;
-  double total_seconds() const;
+  /// The shared shape: pipeline "identify", the status's name, one line per DOF.
+  PipelineSummary Shape() const;
+  double total_seconds() const { return Shape().total_seconds(); }
   /// One line: "identify: warnings, 2 DOF(s) from 6 trial(s) in 0.41 s (surge output_error, …)".
-  std::string Brief() const;
+  std::string Brief() const { return Shape().Brief(); }
   /// A few lines: the brief line, the stage timings, one line per DOF.
-  std::string Full() const;
+  std::string Full() const { return Shape().Full(); }
 };
 
 struct IdentifyResult {

@@ -1,0 +1,57 @@
+// The summary of a diagnosis in the pipelines' shared shape (summary.h): status, the stage
+// timings of the driver, per DOF the effects found with their held-out gain.
+#include <algorithm>
+
+#include "../number_text.h"
+#include "uuvplan/ident/diagnosis.h"
+
+namespace uuvplan::ident {
+namespace {
+
+bool Diagnosed(const DiagnosisResult& r, model::Dof dof) {
+  return std::any_of(r.extended.begin(), r.extended.end(),
+                     [&](const DofIdentification& e) { return e.dof == dof; });
+}
+
+// "thrust_asymmetry (held-out gain 3.12% on validate)".
+std::string FindingText(const Finding& f) {
+  return f.effect + " (held-out gain " + Fmt(100.0 * f.gain.relative, 3) + "% on " + f.gain.on +
+         ")";
+}
+
+PipelineSummary::DofLine DofLineOf(const DiagnosisResult& r, model::Dof dof) {
+  if (!Diagnosed(r, dof)) {
+    return {dof, "not diagnosed",
+            "not diagnosed: its standard model could not be fitted (see the notes)"};
+  }
+  std::string effects, details;
+  int n = 0;
+  for (const Finding& f : r.findings) {
+    if (f.dof != dof) continue;
+    effects += (effects.empty() ? "" : "+") + f.effect;
+    details += (details.empty() ? "" : ", ") + FindingText(f);
+    ++n;
+  }
+  if (n == 0) return {dof, "none", "no effect found"};
+  return {dof, effects, std::to_string(n) + " effect(s): " + details};
+}
+
+}  // namespace
+
+PipelineSummary DiagnosisResult::Summary() const {
+  PipelineSummary s{"diagnose", "", "", static_cast<int>(nominal.trials.size()), timing, {}};
+  bool any_diagnosed = false;
+  for (model::Dof dof : dofs) {
+    any_diagnosed = any_diagnosed || Diagnosed(*this, dof);
+    s.dofs.push_back(DofLineOf(*this, dof));
+  }
+  s.status = !any_diagnosed ? "failed" : findings.empty() ? "none" : "findings";
+  if (!any_diagnosed) {
+    s.message = "no DOF could be diagnosed (see the notes)";
+  } else if (!warnings.empty()) {
+    s.message = std::to_string(warnings.size()) + " warning(s) beside the findings";
+  }
+  return s;
+}
+
+}  // namespace uuvplan::ident
