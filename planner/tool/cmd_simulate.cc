@@ -14,7 +14,8 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
-#include "uuvplan/model/virtual_pool.h"
+#include "uuvplan/io/virtual_campaign.h"
+#include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::tool {
@@ -29,7 +30,7 @@ struct SimulateOptions {
   std::string out;
   double step_s = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the truth's step
   std::string json;
-  model::VirtualPoolOptions virtual_pool;  ///< --seed bound here
+  model::VirtualCampaignOptions campaign;  ///< --seed bound here
 };
 
 // SimulateCampaign's default pause between trials (s).
@@ -192,7 +193,7 @@ nlohmann::json SimulationJson(const model::Campaign& campaign,
   }
   const CampaignTotals totals = Totals(campaign, designs);
   return {{"campaign", (fs::path(o.out) / "campaign.yaml").string()},
-          {"seed", o.virtual_pool.seed},
+          {"seed", o.campaign.seed},
           {"step", step_s},
           {"trials", trials},
           {"rows", totals.rows},
@@ -215,8 +216,8 @@ int RunSimulate(const SimulateOptions& options) {
 
   std::vector<model::TrialDesign> designs;
   for (const auto& t : plan.trials) designs.push_back(t.design);
-  const model::Campaign campaign =
-      model::SimulateCampaign(truth, designs, o.out, o.virtual_pool, kPauseS);
+  o.campaign.pause_s = kPauseS;
+  const model::Campaign campaign = io::SimulateCampaign(truth, designs, o.out, o.campaign);
 
   for (const std::string& note : SaturationNotes(plan, truth.vehicle)) {
     std::cerr << "uuvplan simulate: note: " << note << "\n";
@@ -224,7 +225,7 @@ int RunSimulate(const SimulateOptions& options) {
   std::ostream& out = ReportStream(o.json);
   out << "Simulated " << campaign.trials.size() << " trial(s) of plan " << o.plan
       << " on the virtual '" << truth.vehicle.name << "' of " << o.truth << "\n"
-      << "(seed " << o.virtual_pool.seed << ", RK4 step " << truth.integration_step_s << " s, "
+      << "(seed " << o.campaign.seed << ", RK4 step " << truth.integration_step_s << " s, "
       << kPauseS << " s pause between trials)\n\n";
   PrintCampaignTable(campaign, designs, out);
   const CampaignTotals totals = Totals(campaign, designs);
@@ -245,7 +246,7 @@ void BindSimulate(CLI::App* sub, SimulateOptions* o) {
       ->required();
   sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
       ->required();
-  sub->add_option("--seed", o->virtual_pool.seed,
+  sub->add_option("--seed", o->campaign.seed,
                   "seed of the sensor noise, drop-outs and outliers")
       ->capture_default_str();
   sub->add_option("--step", o->step_s,
