@@ -26,8 +26,7 @@ int RunDiagnose(const DiagnoseCommandOptions& co) {
   const model::Campaign campaign = io::ReadCampaign(co.campaign);
   ident::DiagnoseOptions o;
   o.dofs = ParseDofFlags(co.dofs);
-  // TODO(issue #12, diagnosis engineer): DiagnoseOptions gains `verbose`; then set it here:
-  // o.verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
+  o.verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
   const ident::DiagnosisResult result = ident::Diagnose(campaign, o);
   PrintDiagnosis(result, ReportStream(co.json));
   if (!co.json.empty()) WriteJson(co.json, io::DiagnosisJson(result));

@@ -30,12 +30,8 @@ struct SimulateOptions {
   std::string out;
   double step_s = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the truth's step
   std::string json;
-  model::VirtualCampaignOptions campaign;  ///< --seed bound here
+  model::VirtualCampaignOptions campaign;  ///< --seed bound here; its pause_s between trials
 };
-
-// SimulateCampaign's default pause between trials (s).
-// TODO(issue #12, planner engineer): read it from VirtualPoolOptions once the pause lives there.
-constexpr double kPauseS = 60.0;
 
 std::string MappingNames(const model::Vehicle& v, model::Dof dof) {
   std::string names;
@@ -216,7 +212,6 @@ int RunSimulate(const SimulateOptions& options) {
 
   std::vector<model::TrialDesign> designs;
   for (const auto& t : plan.trials) designs.push_back(t.design);
-  o.campaign.pause_s = kPauseS;
   const model::Campaign campaign = io::SimulateCampaign(truth, designs, o.out, o.campaign);
 
   for (const std::string& note : SaturationNotes(plan, truth.vehicle)) {
@@ -226,7 +221,7 @@ int RunSimulate(const SimulateOptions& options) {
   out << "Simulated " << campaign.trials.size() << " trial(s) of plan " << o.plan
       << " on the virtual '" << truth.vehicle.name << "' of " << o.truth << "\n"
       << "(seed " << o.campaign.seed << ", RK4 step " << truth.integration_step_s << " s, "
-      << kPauseS << " s pause between trials)\n\n";
+      << o.campaign.pause_s << " s pause between trials)\n\n";
   PrintCampaignTable(campaign, designs, out);
   const CampaignTotals totals = Totals(campaign, designs);
   out << "\n"
