@@ -79,45 +79,38 @@ void CheckPlanAgainstTruth(const planner::Schedule& plan, const model::Truth& tr
   }
 }
 
-// The forces a trial asks of each mapping: (force, mapping name) at every extreme.
-std::vector<std::pair<double, std::string>> Demands(const model::TrialDesign& d) {
-  switch (d.kind) {
-    case model::TrialKind::kSteady:
-      return {{d.force, d.mapping}};
-    case model::TrialKind::kSine:
-      return {{d.offset + std::abs(d.amplitude), d.mapping},
-              {d.offset - std::abs(d.amplitude), d.mapping}};
-    case model::TrialKind::kSegments: {
-      std::vector<std::pair<double, std::string>> out;
-      for (const auto& s : d.segments)
-        out.push_back({s.force, s.mapping.empty() ? d.mapping : s.mapping});
-      return out;
+// The virtual pool applies whatever force is asked; a real thruster saturates. Say so when a
+// push asks more of a thruster of its mapping than it can give (tau_i = share_i·phi within the
+// range); "" when every thruster can.
+std::string SaturationNote(const model::TrialDesign& d, const model::Vehicle& v, double force,
+                           const std::string& name) {
+  const model::ThrustMapping& m = v.mappings[v.MappingIndex(name)];
+  for (const auto& [index, share] : m.shares) {
+    const model::Thruster& th = v.thrusters[index];
+    const double tau = share * force;
+    const double limit = tau >= 0 ? th.MaxForwardThrust() : th.MaxReverseThrust();
+    if (std::abs(tau) > limit * (1 + 1e-9)) {
+      std::ostringstream s;
+      s << "trial '" << d.id << "' asks " << force << " " << model::ForceUnit(d.dof)
+        << " of mapping '" << name << "': thruster " << th.name << " would give " << tau
+        << " N but can give at most " << (tau >= 0 ? "" : "-") << limit
+        << " N (the virtual pool does not saturate thrusters)";
+      return s.str();
     }
   }
-  return {};
+  return "";
 }
 
-// The virtual pool applies whatever force is asked; a real thruster saturates. Say so when a
-// plan asks more than the mapping's thrusters can give (tau_i = share_i·phi within the range).
+// One note per push extreme that saturates: each push's largest force, then its smallest.
 std::vector<std::string> SaturationNotes(const planner::Schedule& plan, const model::Vehicle& v) {
   std::vector<std::string> notes;
   for (const auto& t : plan.trials) {
-    for (const auto& [force, name] : Demands(t.design)) {
-      const model::ThrustMapping& m = v.mappings[v.MappingIndex(name)];
-      for (const auto& [index, share] : m.shares) {
-        const model::Thruster& th = v.thrusters[index];
-        const double tau = share * force;
-        const double limit = tau >= 0 ? th.MaxForwardThrust() : th.MaxReverseThrust();
-        if (std::abs(tau) > limit * (1 + 1e-9)) {
-          std::ostringstream s;
-          s << "trial '" << t.design.id << "' asks " << force << " "
-            << model::ForceUnit(t.design.dof) << " of mapping '" << name << "': thruster "
-            << th.name << " would give " << tau << " N but can give at most "
-            << (tau >= 0 ? "" : "-") << limit
-            << " N (the virtual pool does not saturate thrusters)";
-          notes.push_back(s.str());
-          break;
-        }
+    for (const model::ForceDemand& push : t.design.Demands()) {
+      std::vector<double> extremes = {push.max};
+      if (push.min != push.max) extremes.push_back(push.min);
+      for (const double force : extremes) {
+        std::string note = SaturationNote(t.design, v, force, push.mapping);
+        if (!note.empty()) notes.push_back(std::move(note));
       }
     }
   }
