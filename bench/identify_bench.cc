@@ -30,6 +30,7 @@
 #include "uuvplan/ident/monte_carlo.h"  // TrueParameter
 #include "uuvplan/io/io.h"
 #include "uuvplan/model/trial_design.h"
+#include "uuvplan/io/virtual_campaign.h"
 #include "uuvplan/model/virtual_pool.h"
 
 namespace {
@@ -73,7 +74,7 @@ int TimeIdentify(long rows, double rate) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() /
                                     ("uuvplan_identify_bench_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
-  model::VirtualPoolOptions vo;
+  model::VirtualCampaignOptions vo;
   vo.seed = 5;
   const auto t0 = Clock::now();
   // One long trial: the PRBS legs then the sine, as segments sampled finely enough (0.05 s).
@@ -83,7 +84,7 @@ int TimeIdentify(long rows, double rate) {
     all.segments.push_back({s.offset + s.amplitude * std::sin(s.omega * x), dt, ""});
     all.duration += dt;
   }
-  model::SimulateCampaign(truth, {all}, dir.string(), vo);
+  io::SimulateCampaign(truth, {all}, dir.string(), vo);
   const auto t1 = Clock::now();
   const std::string campaign_path = (dir / "campaign.yaml").string();
   std::printf("identify_bench: wrote %s (%.1f s of trial) in %.1f s\n", campaign_path.c_str(),

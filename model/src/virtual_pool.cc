@@ -2,17 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <random>
 
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/io.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/util/seed.h"
-#include "uuvplan/model/util/text.h"
-#include "uuvplan/model/campaign_builder.h"
 
 namespace uuvplan::model {
 namespace {
@@ -152,40 +148,6 @@ std::vector<MeasuredVelocity> MeasureAuxMotion(const Vehicle& v, Dof dof,
   return out;
 }
 
-// Writes a built campaign under `out`: trial CSVs, vehicle.yaml (the truth's vehicle) and
-// campaign.yaml, everything in a sibling temporary directory first, then renamed into place,
-// so that a campaign is written whole or not at all.
-void WriteCampaignDirectory(const Campaign& campaign, const Truth& truth,
-                            const std::vector<TrialDesign>& designs,
-                            const std::filesystem::path& out, const std::string& out_dir,
-                            std::uint64_t seed) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::path tmp = out.string() + ".tmp-uuvplan";
-  fs::remove_all(tmp, ec);
-  fs::create_directories(tmp / "trials", ec);
-  if (ec) throw InputError(out_dir, "cannot create directory: " + ec.message());
-  try {
-    for (std::size_t i = 0; i < designs.size(); ++i) {
-      const TrialEntry& e = campaign.trials[i];
-      WriteTrialLog((tmp / e.file).string(), e.log,
-                    "uuvplan virtual pool: truth vehicle '" + truth.vehicle.name + "', trial '" +
-                        designs[i].id + "', seed " + std::to_string(seed));
-    }
-    WriteVehicleYaml((tmp / "vehicle.yaml").string(), truth.vehicle);
-    WriteCampaignYaml((tmp / "campaign.yaml").string(), campaign);
-  } catch (...) {
-    fs::remove_all(tmp, ec);
-    throw;
-  }
-  if (fs::exists(out)) fs::remove(out, ec);
-  fs::rename(tmp, out, ec);
-  if (ec) {
-    fs::remove_all(tmp, ec);
-    throw InputError(out_dir, "cannot move the campaign into place: " + ec.message());
-  }
-}
-
 }  // namespace
 
 ModelStructure TruthStructure(const Truth& truth, Dof dof) {
@@ -262,34 +224,6 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
   for (const auto& a : aux_measured) log.velocity[Index(a.dof)] = OnRows(log.t, a.t, a.y);
   LogMappingColumn(v, cmd, &log);
   return log;
-}
-
-Campaign SimulateCampaign(const Truth& truth, const std::vector<TrialDesign>& designs,
-                          const std::string& out_dir, const VirtualPoolOptions& options,
-                          double pause_s) {
-  namespace fs = std::filesystem;
-  // "dir/" and "dir" are the same directory; the temporary sibling must be beside it.
-  fs::path out = fs::path(out_dir).lexically_normal();
-  if (out.filename().empty()) out = out.parent_path();
-  std::error_code ec;
-  if (fs::exists(out) && !fs::is_empty(out, ec)) {
-    throw InputError(out_dir, "output directory exists and is not empty; choose a new --out "
-                              "(nothing is overwritten)");
-  }
-  VirtualCampaignOptions build;
-  build.seed = options.seed;
-  build.command_rate_hz = options.command_rate_hz;
-  build.pause_s = pause_s;
-  Campaign campaign = BuildVirtualCampaign(truth, designs, build);
-  campaign.path = (out / "campaign.yaml").string();
-  campaign.vehicle_file = "vehicle.yaml";
-  for (std::size_t i = 0; i < designs.size(); ++i) {
-    TrialEntry& e = campaign.trials[i];
-    e.file = "trials/" + designs[i].id + ".csv";
-    e.path = (out / e.file).string();
-  }
-  WriteCampaignDirectory(campaign, truth, designs, out, out_dir, options.seed);
-  return campaign;
 }
 
 }  // namespace uuvplan::model

@@ -98,8 +98,8 @@ void PrintNotPlanned(const planner::ScheduleResult& own, const model::Pool& pool
     out << "\n" << d.message << "\n";
     if (d.required_travel > 0) {
       out << "  (the smallest useful " << model::DofName(d.dof) << " trial needs "
-          << d.required_travel << " of free travel, i.e. " << d.required_travel + 2 * pool.margin
-          << " with the margins)\n";
+          << d.required_travel << " of free travel, i.e. "
+          << pool.WallToWallFor(d.required_travel) << " with the margins)\n";
     }
   }
 }
@@ -144,7 +144,7 @@ nlohmann::json CheckPoolJson(const planner::PoolCheckResult& r, const TrialsToCh
     for (const auto& d : checked.own.dofs) {
       if (d.complete) continue;
       nlohmann::json m = {{"message", d.message}};
-      if (d.required_travel > 0) m["required_pool"] = d.required_travel + 2 * pool.margin;
+      if (d.required_travel > 0) m["required_pool"] = pool.WallToWallFor(d.required_travel);
       missing[std::string(model::DofName(d.dof))] = m;
     }
     j["not_planned"] = missing;

@@ -22,7 +22,7 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
-#include "uuvplan/model/virtual_pool.h"
+#include "uuvplan/io/virtual_campaign.h"
 #include "uuvplan/planner/design_loop.h"
 #include "uuvplan/planner/pool_check.h"
 #include "uuvplan/planner/schedule.h"
@@ -37,7 +37,7 @@ using model::InputError;
 struct DemoOptions {
   std::string cases;  ///< empty: the built-in copy of cases/romeo (demo_case.h)
   std::string out;    ///< empty: a new directory under the system's temporary directory
-  std::uint64_t seed = model::VirtualPoolOptions{}.seed;
+  std::uint64_t seed = model::VirtualCampaignOptions{}.seed;
 };
 
 // Nominal heave force of each leg (N, z down: positive pushes ROMEO down, where the vertical
@@ -306,9 +306,9 @@ int RunDemo(const DemoOptions& o) {
   const std::vector<planner::PlannedTrial> plan = HeavePlan();
   std::vector<model::TrialDesign> designs;
   for (const auto& t : plan) designs.push_back(t.design);
-  model::VirtualPoolOptions pool_options;
-  pool_options.seed = o.seed;
-  const model::Campaign campaign = model::SimulateCampaign(c.truth, designs, out, pool_options);
+  model::VirtualCampaignOptions campaign_options;
+  campaign_options.seed = o.seed;
+  const model::Campaign campaign = io::SimulateCampaign(c.truth, designs, out, campaign_options);
   WritePlan(plan, out);
   PrintHeaveCampaign(campaign, designs, out);
   ShowDiagnosis(campaign);

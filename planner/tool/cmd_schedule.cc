@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "command.h"
+#include "trial_text.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
@@ -55,33 +56,11 @@ void CheckDofsPlannable(const std::vector<model::Dof>& dofs, const model::Vehicl
   }
 }
 
-std::string Force(const model::TrialDesign& d) {
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(1);
-  switch (d.kind) {
-    case model::TrialKind::kSteady:
-      s << d.force;
-      break;
-    case model::TrialKind::kSine:
-      s << d.offset << " ± " << d.amplitude << ", ω " << std::setprecision(3) << d.omega << " (T "
-        << std::setprecision(1) << 2 * M_PI / d.omega << " s)";
-      break;
-    case model::TrialKind::kSegments:
-      for (std::size_t i = 0; i < d.segments.size(); ++i) {
-        const auto& g = d.segments[i];
-        s << (i ? " | " : "") << g.force << " " << std::setprecision(0) << g.duration << "s"
-          << std::setprecision(1) << (g.mapping.empty() ? "" : " " + g.mapping);
-      }
-      break;
-  }
-  return s.str();
-}
-
 void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
                    const model::Pool& pool, std::ostream& out) {
   out << "Schedule for " << v.name << " in pool " << pool.name
-      << " (free: " << pool.length - 2 * pool.margin << " m length, "
-      << pool.width - 2 * pool.margin << " m width, " << pool.depth - 2 * pool.margin
+      << " (free: " << pool.FreeTravel(model::Dof::kSurge) << " m length, "
+      << pool.FreeTravel(model::Dof::kSway) << " m width, " << pool.FreeTravel(model::Dof::kHeave)
       << " m depth): " << planner::PlanStatusName(r.status) << "\n\n";
   out << std::left << std::setw(17) << "id" << std::setw(9) << "kind" << std::setw(22) << "mapping"
       << std::right << std::setw(8) << "T (s)"
@@ -95,7 +74,8 @@ void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
     out << std::left << std::setw(17) << d.id << std::setw(9) << model::TrialKindName(d.kind)
         << std::setw(22) << d.mapping << std::right << std::fixed << std::setprecision(1)
         << std::setw(8) << d.duration << "  " << std::left << std::setw(17) << travel.str()
-        << std::right << std::setw(9) << std::setprecision(2) << t.thrust_min << "  " << Force(d)
+        << std::right << std::setw(9) << std::setprecision(2) << t.thrust_min << "  "
+        << ForceText(d, kScheduleForceStyle)
         << "\n";
   }
   out << "\nPredicted 1σ (worst over the a priori box) and robust D criterion:\n";
@@ -135,7 +115,7 @@ nlohmann::json ScheduleResultJson(const planner::ScheduleResult& r, const model:
       nlohmann::json m = {{"message", d.message}};
       if (d.required_travel > 0) {
         m["required_travel"] = d.required_travel;
-        m["required_pool"] = d.required_travel + 2 * pool.margin;
+        m["required_pool"] = pool.WallToWallFor(d.required_travel);
       }
       missing[std::string(model::DofName(d.dof))] = m;
     }

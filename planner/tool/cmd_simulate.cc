@@ -14,7 +14,8 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
-#include "uuvplan/model/virtual_pool.h"
+#include "uuvplan/io/virtual_campaign.h"
+#include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::tool {
@@ -29,12 +30,8 @@ struct SimulateOptions {
   std::string out;
   double step_s = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the truth's step
   std::string json;
-  model::VirtualPoolOptions virtual_pool;  ///< --seed bound here
+  model::VirtualCampaignOptions campaign;  ///< --seed bound here; its pause_s between trials
 };
-
-// SimulateCampaign's default pause between trials (s).
-// TODO(issue #12, planner engineer): read it from VirtualPoolOptions once the pause lives there.
-constexpr double kPauseS = 60.0;
 
 std::string MappingNames(const model::Vehicle& v, model::Dof dof) {
   std::string names;
@@ -82,45 +79,38 @@ void CheckPlanAgainstTruth(const planner::Schedule& plan, const model::Truth& tr
   }
 }
 
-// The forces a trial asks of each mapping: (force, mapping name) at every extreme.
-std::vector<std::pair<double, std::string>> Demands(const model::TrialDesign& d) {
-  switch (d.kind) {
-    case model::TrialKind::kSteady:
-      return {{d.force, d.mapping}};
-    case model::TrialKind::kSine:
-      return {{d.offset + std::abs(d.amplitude), d.mapping},
-              {d.offset - std::abs(d.amplitude), d.mapping}};
-    case model::TrialKind::kSegments: {
-      std::vector<std::pair<double, std::string>> out;
-      for (const auto& s : d.segments)
-        out.push_back({s.force, s.mapping.empty() ? d.mapping : s.mapping});
-      return out;
+// The virtual pool applies whatever force is asked; a real thruster saturates. Say so when a
+// push asks more of a thruster of its mapping than it can give (tau_i = share_i·phi within the
+// range); "" when every thruster can.
+std::string SaturationNote(const model::TrialDesign& d, const model::Vehicle& v, double force,
+                           const std::string& name) {
+  const model::ThrustMapping& m = v.mappings[v.MappingIndex(name)];
+  for (const auto& [index, share] : m.shares) {
+    const model::Thruster& th = v.thrusters[index];
+    const double tau = share * force;
+    const double limit = tau >= 0 ? th.MaxForwardThrust() : th.MaxReverseThrust();
+    if (std::abs(tau) > limit * (1 + 1e-9)) {
+      std::ostringstream s;
+      s << "trial '" << d.id << "' asks " << force << " " << model::ForceUnit(d.dof)
+        << " of mapping '" << name << "': thruster " << th.name << " would give " << tau
+        << " N but can give at most " << (tau >= 0 ? "" : "-") << limit
+        << " N (the virtual pool does not saturate thrusters)";
+      return s.str();
     }
   }
-  return {};
+  return "";
 }
 
-// The virtual pool applies whatever force is asked; a real thruster saturates. Say so when a
-// plan asks more than the mapping's thrusters can give (tau_i = share_i·phi within the range).
+// One note per push extreme that saturates: each push's largest force, then its smallest.
 std::vector<std::string> SaturationNotes(const planner::Schedule& plan, const model::Vehicle& v) {
   std::vector<std::string> notes;
   for (const auto& t : plan.trials) {
-    for (const auto& [force, name] : Demands(t.design)) {
-      const model::ThrustMapping& m = v.mappings[v.MappingIndex(name)];
-      for (const auto& [index, share] : m.shares) {
-        const model::Thruster& th = v.thrusters[index];
-        const double tau = share * force;
-        const double limit = tau >= 0 ? th.MaxForwardThrust() : th.MaxReverseThrust();
-        if (std::abs(tau) > limit * (1 + 1e-9)) {
-          std::ostringstream s;
-          s << "trial '" << t.design.id << "' asks " << force << " "
-            << model::ForceUnit(t.design.dof) << " of mapping '" << name << "': thruster "
-            << th.name << " would give " << tau << " N but can give at most "
-            << (tau >= 0 ? "" : "-") << limit
-            << " N (the virtual pool does not saturate thrusters)";
-          notes.push_back(s.str());
-          break;
-        }
+    for (const model::ForceDemand& push : t.design.Demands()) {
+      std::vector<double> extremes = {push.max};
+      if (push.min != push.max) extremes.push_back(push.min);
+      for (const double force : extremes) {
+        std::string note = SaturationNote(t.design, v, force, push.mapping);
+        if (!note.empty()) notes.push_back(std::move(note));
       }
     }
   }
@@ -192,7 +182,7 @@ nlohmann::json SimulationJson(const model::Campaign& campaign,
   }
   const CampaignTotals totals = Totals(campaign, designs);
   return {{"campaign", (fs::path(o.out) / "campaign.yaml").string()},
-          {"seed", o.virtual_pool.seed},
+          {"seed", o.campaign.seed},
           {"step", step_s},
           {"trials", trials},
           {"rows", totals.rows},
@@ -215,8 +205,7 @@ int RunSimulate(const SimulateOptions& options) {
 
   std::vector<model::TrialDesign> designs;
   for (const auto& t : plan.trials) designs.push_back(t.design);
-  const model::Campaign campaign =
-      model::SimulateCampaign(truth, designs, o.out, o.virtual_pool, kPauseS);
+  const model::Campaign campaign = io::SimulateCampaign(truth, designs, o.out, o.campaign);
 
   for (const std::string& note : SaturationNotes(plan, truth.vehicle)) {
     std::cerr << "uuvplan simulate: note: " << note << "\n";
@@ -224,8 +213,8 @@ int RunSimulate(const SimulateOptions& options) {
   std::ostream& out = ReportStream(o.json);
   out << "Simulated " << campaign.trials.size() << " trial(s) of plan " << o.plan
       << " on the virtual '" << truth.vehicle.name << "' of " << o.truth << "\n"
-      << "(seed " << o.virtual_pool.seed << ", RK4 step " << truth.integration_step_s << " s, "
-      << kPauseS << " s pause between trials)\n\n";
+      << "(seed " << o.campaign.seed << ", RK4 step " << truth.integration_step_s << " s, "
+      << o.campaign.pause_s << " s pause between trials)\n\n";
   PrintCampaignTable(campaign, designs, out);
   const CampaignTotals totals = Totals(campaign, designs);
   out << "\n"
@@ -245,7 +234,7 @@ void BindSimulate(CLI::App* sub, SimulateOptions* o) {
       ->required();
   sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
       ->required();
-  sub->add_option("--seed", o->virtual_pool.seed,
+  sub->add_option("--seed", o->campaign.seed,
                   "seed of the sensor noise, drop-outs and outliers")
       ->capture_default_str();
   sub->add_option("--step", o->step_s,

@@ -64,7 +64,7 @@ void PrintBriefOnTerminal(const std::string& brief);
 void WriteJson(const std::string& path, const nlohmann::json& j);
 
 /// `path` without a trailing separator ("dir/" and "dir" are the same directory):
-/// SimulateCampaign builds its temporary sibling by appending to the name.
+/// io::WriteCampaign builds its temporary sibling by appending to the name.
 std::string DirectoryName(const std::string& path);
 
 /// The DOFs named by repeated `--dof` flags; InputError naming the flag and the bad name.

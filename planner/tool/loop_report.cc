@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "trial_text.h"
 #include "uuvplan/ident/monte_carlo.h"
 #include "uuvplan/io/io.h"
 
@@ -26,25 +27,9 @@ std::string Percent(double p) {
 
 std::string TrialLine(const model::TrialDesign& d) {
   std::ostringstream s;
-  const std::string unit(model::ForceUnit(d.dof));
   s << std::left << std::setw(9) << model::TrialKindName(d.kind) << std::setw(22) << d.mapping
-    << std::right << std::fixed << std::setprecision(1) << std::setw(6) << d.duration << " s  ";
-  switch (d.kind) {
-    case model::TrialKind::kSteady:
-      s << d.force << " " << unit;
-      break;
-    case model::TrialKind::kSine:
-      s << d.offset << " ± " << d.amplitude << " " << unit << ", T " << 2 * M_PI / d.omega << " s";
-      break;
-    case model::TrialKind::kSegments:
-      for (std::size_t i = 0; i < d.segments.size(); ++i) {
-        const auto& g = d.segments[i];
-        s << (i ? " | " : "") << g.force << " " << unit << " " << std::setprecision(0) << g.duration
-          << " s" << std::setprecision(1)
-          << (g.mapping.empty() || g.mapping == d.mapping ? "" : " " + g.mapping);
-      }
-      break;
-  }
+    << std::right << std::fixed << std::setprecision(1) << std::setw(6) << d.duration << " s  "
+    << ForceText(d, kLoopForceStyle);
   if (d.ballast_steps != 0) s << ", ballast " << d.ballast_steps;
   return s.str();
 }

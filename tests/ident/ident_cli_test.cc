@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 #include "ident_cases.h"
-#include "uuvplan/model/virtual_pool.h"
+#include "uuvplan/io/virtual_campaign.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -53,9 +53,9 @@ fs::path TempDir(const std::string& name) {
 
 TEST(IdentifyCliTest, SimulatedCampaignGivesTheContractJson) {
   const fs::path dir = TempDir("sim");
-  model::VirtualPoolOptions vo;
+  model::VirtualCampaignOptions vo;
   vo.seed = 3;
-  model::SimulateCampaign(testing::CaseTruth("romeo"), testing::RomeoSurgeDesigns(), dir.string(), vo);
+  io::SimulateCampaign(testing::CaseTruth("romeo"), testing::RomeoSurgeDesigns(), dir.string(), vo);
   const fs::path out = dir / "identify.json";
   const RunResult r = RunUuvplan("identify " + (dir / "campaign.yaml").string() + " --json " + out.string());
   ASSERT_EQ(r.status, 0) << r.out;
@@ -82,8 +82,8 @@ TEST(IdentifyCliTest, SimulatedCampaignGivesTheContractJson) {
 
 TEST(IdentifyCliTest, DashWritesJsonToStdoutAndBadInputExits2) {
   const fs::path dir = TempDir("dash");
-  model::VirtualPoolOptions vo;
-  model::SimulateCampaign(testing::CaseTruth("uris"), {testing::UrisDesigns()[0]}, dir.string(), vo);
+  model::VirtualCampaignOptions vo;
+  io::SimulateCampaign(testing::CaseTruth("uris"), {testing::UrisDesigns()[0]}, dir.string(), vo);
   const RunResult ok = RunUuvplan("identify " + (dir / "campaign.yaml").string() + " --json -", false);
   ASSERT_EQ(ok.status, 0) << ok.out;
   EXPECT_NO_THROW(json::parse(ok.out)) << ok.out.substr(0, 200);

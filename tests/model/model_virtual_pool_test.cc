@@ -11,6 +11,7 @@
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/io/virtual_campaign.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/util/seed.h"
 #include "uuvplan/model/virtual_pool.h"
@@ -20,6 +21,7 @@ namespace {
 
 using io::ReadVehicle;
 using io::ReadCampaign;
+using io::SimulateCampaign;
 using io::WriteVehicleYaml;
 
 Truth RomeoSurgeTruth() {
@@ -176,7 +178,7 @@ TEST(VirtualPoolTest, CampaignWrittenWholeAndNeverOverwritten) {
   const fs::path dir = fs::temp_directory_path() / "uuvplan_vp_test";
   fs::remove_all(dir);
   const Truth truth = RomeoSurgeTruth();
-  VirtualPoolOptions o;
+  VirtualCampaignOptions o;
   const Campaign c = SimulateCampaign(truth, {PaperSurgeSine()}, dir.string(), o);
   EXPECT_TRUE(fs::exists(dir / "campaign.yaml"));
   EXPECT_TRUE(fs::exists(dir / "vehicle.yaml"));

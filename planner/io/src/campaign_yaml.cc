@@ -160,16 +160,10 @@ namespace {
 namespace fs = std::filesystem;
 
 // The campaign directory `dir` without a trailing separator ("dir/" and "dir" are the same
-// directory; the temporary sibling must be beside it). Refuses a directory with content.
-fs::path NewCampaignDirectory(const std::string& dir) {
+// directory; the temporary sibling must be beside it).
+fs::path CampaignDirectory(const std::string& dir) {
   fs::path out = fs::path(dir).lexically_normal();
   if (out.filename().empty()) out = out.parent_path();
-  std::error_code ec;
-  if (fs::exists(out) && !fs::is_empty(out, ec)) {
-    throw InputError(dir,
-                     "output directory exists and is not empty; choose a new --out "
-                     "(nothing is overwritten)");
-  }
   return out;
 }
 
@@ -187,9 +181,20 @@ void WriteCampaignFiles(const fs::path& tmp, const Campaign& campaign, const Veh
 
 }  // namespace
 
+void CheckNewCampaignDirectory(const std::string& dir) {
+  const fs::path out = CampaignDirectory(dir);
+  std::error_code ec;
+  if (fs::exists(out) && !fs::is_empty(out, ec)) {
+    throw InputError(dir,
+                     "output directory exists and is not empty; choose a new --out "
+                     "(nothing is overwritten)");
+  }
+}
+
 Campaign WriteCampaign(const std::string& dir, Campaign campaign, const Vehicle& vehicle,
                        const std::vector<std::string>& trial_comments) {
-  const fs::path out = NewCampaignDirectory(dir);
+  CheckNewCampaignDirectory(dir);
+  const fs::path out = CampaignDirectory(dir);
   // Everything is written to a sibling temporary directory first, then renamed into place,
   // so a campaign is written whole or not at all.
   const fs::path tmp = out.string() + ".tmp-uuvplan";

@@ -79,12 +79,9 @@ model::Dof DofOf(const JsonValue& v) {
 
 model::TrialKind KindOf(const JsonValue& v) {
   if (v.json().is_string()) {
-    const std::string k = v.json().get<std::string>();
-    if (k == "steady") return model::TrialKind::kSteady;
-    if (k == "sine") return model::TrialKind::kSine;
-    if (k == "segments") return model::TrialKind::kSegments;
+    if (const auto kind = model::kTrialKindNames.Parse(v.json().get<std::string>())) return *kind;
   }
-  v.Expected("a trial kind (steady, sine, segments)");
+  v.Expected("a trial kind (" + model::kTrialKindNames.List() + ")");
 }
 
 std::vector<model::SegmentDesign> SegmentsOf(const JsonValue& v, const std::string& trial_mapping) {

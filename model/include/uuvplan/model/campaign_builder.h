@@ -1,8 +1,8 @@
 // The one builder of virtual campaigns: a truth vehicle runs trial designs in order in the
 // virtual pool (virtual_pool.h), each from rest with its own seed, and the logs are kept in
 // memory. Monte Carlo, the design–identify loop and `uuvplan simulate`/`demo` (through
-// SimulateCampaign, which writes the campaign after building it) all build campaigns here,
-// so trial i of any of them draws the same noise for the same seed.
+// io::SimulateCampaign, which writes the campaign after building it) all build campaigns
+// here, so trial i of any of them draws the same noise for the same seed.
 #pragma once
 
 #include <cstddef>

@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "uuvplan/model/campaign.h"
 #include "uuvplan/model/model_structure.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/trial_log.h"
@@ -27,12 +26,5 @@ ModelStructure TruthStructure(const Truth& truth, Dof dof);
 /// Runs one trial; `start_time` is its start on the campaign clock (for drift).
 TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double start_time,
                          const VirtualPoolOptions& options);
-
-/// Runs trials in order (each from rest, campaign clock advancing by duration + `pause_s`),
-/// writes trial CSVs under `out_dir`/trials and `out_dir`/campaign.yaml (plus a copy of the
-/// truth's vehicle as vehicle.yaml). Returns the campaign as written.
-Campaign SimulateCampaign(const Truth& truth, const std::vector<TrialDesign>& designs,
-                          const std::string& out_dir, const VirtualPoolOptions& options,
-                          double pause_s = 60.0);
 
 }  // namespace uuvplan::model

@@ -19,6 +19,10 @@ model::Campaign ReadCampaign(const std::string& path);
 /// Writes campaign.yaml; trial files are written by the caller (paths relative to `path`).
 void WriteCampaignYaml(const std::string& path, const model::Campaign& campaign);
 
+/// Throws InputError when the campaign directory `dir` exists and is not empty (WriteCampaign
+/// refuses it: nothing is overwritten).
+void CheckNewCampaignDirectory(const std::string& dir);
+
 /// Writes a whole campaign into the new directory `dir`: `vehicle` as vehicle.yaml, each trial's
 /// log at its `file` (relative to `dir`, headed by the comment `trial_comments[i]` when given)
 /// and campaign.yaml naming them (and `campaign.pool_file` as given, if any). Everything goes to a
