@@ -112,7 +112,7 @@ struct DofModelKernel {
   /// dx/dt with its Jacobians, row-major: A = ∂f/∂x (NX × NX), B = ∂f/∂theta (NX × np); both
   /// fully written. Row 1: ∂(ΣF/m)/∂θ = J_term/m, ∂/∂m = −ΣF/m²; row 2 (lag):
   /// ∂((u − φ_a)/T)/∂T = −(u − φ_a)/T², ∂/∂d = (∂u/∂d)/T.
-  template <int NX>
+  template <int NX, bool kOthers = true>
   static void Linearize(const DofModel& m, double t, const double* x, const InputSample& in,
                         const TrialConditions& c, const double* theta, const Inverses& inv,
                         double* dx, double* A, double* B) {
@@ -135,7 +135,9 @@ struct DofModelKernel {
     visit(m.advance_);
     visit(m.coupling_);
     visit(m.drift_);
-    for (const auto& typed : m.others_) visit(typed);
+    if constexpr (kOthers) {
+      for (const auto& typed : m.others_) visit(typed);
+    }
     for (int j = 1; j < np; ++j) b1[j] *= inv.mass;
     b1[0] = -force * inv.mass * inv.mass;
     dx[0] = x[1];

@@ -134,16 +134,16 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
         Kernel::Derivative<kOthers>(model, te, xt, in_e, c, th, inv, k4);
       } else {
         double* Bp = B.data();
-        Kernel::Linearize<NX>(model, ta, x, in_a, c, th, inv, k1, A, Bp);
+        Kernel::Linearize<NX, kOthers>(model, ta, x, in_a, c, th, inv, k1, A, Bp);
         SensitivitySlope<NX>(A, Bp, S.data(), nullptr, 0.0, np, St.data(), K1.data());
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k1[s];
-        Kernel::Linearize<NX>(model, tm, xt, in_m, c, th, inv, k2, A, Bp);
+        Kernel::Linearize<NX, kOthers>(model, tm, xt, in_m, c, th, inv, k2, A, Bp);
         SensitivitySlope<NX>(A, Bp, S.data(), K1.data(), 0.5 * h, np, St.data(), K2.data());
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k2[s];
-        Kernel::Linearize<NX>(model, tm, xt, in_m, c, th, inv, k3, A, Bp);
+        Kernel::Linearize<NX, kOthers>(model, tm, xt, in_m, c, th, inv, k3, A, Bp);
         SensitivitySlope<NX>(A, Bp, S.data(), K2.data(), 0.5 * h, np, St.data(), K3.data());
         for (int s = 0; s < nx; ++s) xt[s] = x[s] + h * k3[s];
-        Kernel::Linearize<NX>(model, te, xt, in_e, c, th, inv, k4, A, Bp);
+        Kernel::Linearize<NX, kOthers>(model, te, xt, in_e, c, th, inv, k4, A, Bp);
         SensitivitySlope<NX>(A, Bp, S.data(), K3.data(), h, np, St.data(), K4.data());
       }
       for (int j = 0; j < ns; ++j) S[j] += (h / 6.0) * (K1[j] + 2.0 * K2[j] + 2.0 * K3[j] + K4[j]);
