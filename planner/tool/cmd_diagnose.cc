@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "command.h"
+#include "uuvplan/model/effects.h"
 #include "diagnosis_report.h"
 #include "uuvplan/io/diagnosis_json.h"
 #include "uuvplan/ident/diagnosis.h"
@@ -45,9 +46,7 @@ void BindDiagnose(CLI::App* sub, DiagnoseCommandOptions* o) {
 const CommandRegistration kRegistration(MakeCommand<DiagnoseCommandOptions>(
     "diagnose", 80,
     "What the standard model's simulation gets wrong on measured trials, which physical "
-    "effect causes it (installation loss, asymmetric drag, thruster lag, dead zone, "
-    "advance-speed loss, coupling, sensor delay, drift, a thrust map wrong in shape), the "
-    "extended model and its gain.",
+    "effect causes it (" + model::Effects().NameList() + "), the extended model and its gain.",
     BindDiagnose, RunDiagnose));
 
 }  // namespace
