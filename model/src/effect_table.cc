@@ -57,11 +57,19 @@ std::string VelocityPair(std::string_view q, Dof, const Vehicle&) {
              : "two velocity letters of u v w p q r (e.g. 'vr')";
 }
 
-// One proposal adding a single parameter at `start`.
-std::vector<Proposal> Single(const char* name, double start) {
+// One proposal adding parameter `name` at `start`, unless the structure has it.
+std::vector<Proposal> SingleIfAbsent(const ProposalContext& c, const char* name, double start) {
+  if (c.Has(name)) return {};
   Proposal p;
   p.start.push_back({name, start});
   return {p};
+}
+
+// "simulation overpredicts speed by 38% <where>: <cause>", or the cause alone without a group.
+std::string GroupSentence(const ErrorGroup* g, const std::string& where, const std::string& cause) {
+  if (!g) return cause;
+  return "simulation " + Over(g->relative) + " speed by " + Percent(g->relative) + " " + where +
+         ": " + cause;
 }
 
 // η < 1 (seed 000 eq. 3, Table I): the thrust of a mapping and direction that is not in open
@@ -139,9 +147,7 @@ EffectEntry AsymmetricDrag() {
   };
   e.describe = [](const FindingContext& f) {
     const ErrorGroup* g = Largest(f.breakdown.by_motion);
-    if (!g) return std::string("drag differs between the two directions");
-    return "simulation " + Over(g->relative) + " speed by " + Percent(g->relative) + " in " +
-           g->label + ": drag differs between the two directions";
+    return GroupSentence(g, g ? "in " + g->label : "", "drag differs between the two directions");
   };
   return e;
 }
@@ -157,7 +163,7 @@ EffectEntry ThrusterLag() {
   e.parameters[0].fit_lower = 0.0;  // T > 0: the lag divides by it
   e.parameters[0].fit_lower_open = true;
   e.propose = [](const ProposalContext& c) {
-    return c.Has(param::kLag) ? std::vector<Proposal>{} : Single(param::kLag, 0.1 * c.time_constant_s);
+    return SingleIfAbsent(c, param::kLag, 0.1 * c.time_constant_s);
   };
   e.describe = [](const FindingContext& f) {
     std::string s = "the response to every change of thrust comes late and smoothed";
@@ -179,14 +185,11 @@ EffectEntry Deadzone() {
   e.parameters = {{param::kDeadzone, "width d of the dead band", "N", "N·m", 0.0, 0.0, kInf}};
   e.parameters[0].fit_lower = 0.0;
   e.propose = [](const ProposalContext& c) {
-    return c.Has(param::kDeadzone) ? std::vector<Proposal>{}
-                                   : Single(param::kDeadzone, 0.02 * c.max_force);
+    return SingleIfAbsent(c, param::kDeadzone, 0.02 * c.max_force);
   };
   e.describe = [](const FindingContext& f) {
-    const ErrorGroup* g = Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands);
-    if (!g) return std::string("no thrust below a threshold");
-    return "simulation " + Over(g->relative) + " speed by " + Percent(g->relative) +
-           " for small commands: no thrust below a threshold";
+    return GroupSentence(Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands),
+                         "for small commands", "no thrust below a threshold");
   };
   return e;
 }
@@ -201,13 +204,11 @@ EffectEntry AdvanceSpeedLoss() {
                    0.0, 0.0, kInf}};
   e.make_term = [](Dof, const std::vector<std::string>&) { return MakeAdvanceLossTerm(); };
   e.propose = [](const ProposalContext& c) {
-    return c.Has(param::kAdvanceLoss) ? std::vector<Proposal>{} : Single(param::kAdvanceLoss, 0.0);
+    return SingleIfAbsent(c, param::kAdvanceLoss, 0.0);
   };
   e.describe = [](const FindingContext& f) {
     const ErrorGroup* g = Largest(f.breakdown.by_speed);
-    if (!g) return std::string("thrust falls with the speed of advance");
-    return "simulation " + Over(g->relative) + " speed by " + Percent(g->relative) + " at " +
-           g->label + ": thrust falls with the speed of advance";
+    return GroupSentence(g, g ? "at " + g->label : "", "thrust falls with the speed of advance");
   };
   return e;
 }
@@ -263,8 +264,7 @@ EffectEntry SensorDelay() {
   e.parameters = {{param::kSensorDelay, "delay τ of the measurement", "s", "s", 0.0, 0.0, kInf}};
   e.parameters[0].fit_lower = 0.0;  // the measurement cannot precede the motion
   e.propose = [](const ProposalContext& c) {
-    return c.Has(param::kSensorDelay) ? std::vector<Proposal>{}
-                                      : Single(param::kSensorDelay, 0.05 * c.time_constant_s);
+    return SingleIfAbsent(c, param::kSensorDelay, 0.05 * c.time_constant_s);
   };
   e.describe = [](const FindingContext& f) {
     return "every measurement lags the simulated motion by a fixed time (" +
@@ -285,8 +285,7 @@ EffectEntry ParameterDrift() {
   e.make_term = [](Dof, const std::vector<std::string>&) { return MakeDriftTerm(); };
   e.propose = [](const ProposalContext& c) {
     // Drift needs trials spread over the campaign clock.
-    return c.Has(param::kDrift) || !c.campaign_clock ? std::vector<Proposal>{}
-                                                     : Single(param::kDrift, 0.0);
+    return c.campaign_clock ? SingleIfAbsent(c, param::kDrift, 0.0) : std::vector<Proposal>{};
   };
   e.describe = [](const FindingContext& f) {
     const double per_s = f.params.empty() ? 0.0 : f.params[0].value;
