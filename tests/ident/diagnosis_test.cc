@@ -10,12 +10,15 @@
 #include <iterator>
 
 #include "support/hidden_effect.h"
+#include "support/real_data.h"
 #include "uuvplan/ident/chi_square.h"
 #include "uuvplan/ident/diagnosis.h"
 #include "uuvplan/io/io.h"
 
 namespace uuvplan::ident {
 namespace {
+
+using uuvplan::testing::RealDataPath;
 
 TEST(ChiSquareTest, MatchesTabulatedQuantiles) {
   // 95% and 99.9% quantiles from standard χ² tables (4 significant digits: tolerance 1e-4).
@@ -117,8 +120,8 @@ TEST(DiagnosisTest, CouplingSigmaIncludesTheNoiseOfTheLoggedVelocities) {
 // pay off on the held-out runs yaw_4, yaw_5: ≥ 10% (a ~70 ms lag against a time constant
 // I/k ≈ 0.25 s; 19% on these logs).
 TEST(DiagnosisTest, RealBluerovYawRunsShowTheThrusterLag) {
-  const model::Campaign campaign =
-      io::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) + "/data/bluerov-yaw-2016/campaign.yaml");
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
+  const model::Campaign campaign = io::ReadCampaign(RealDataPath("bluerov-yaw-2016/campaign.yaml"));
   const DiagnosisResult r = Diagnose(campaign, DiagnoseOptions{});
   ASSERT_FALSE(r.findings.empty());
   const Finding& first = r.findings.front();
@@ -139,8 +142,9 @@ TEST(DiagnosisTest, RealBluerovYawRunsShowTheThrusterLag) {
 // thrust map first, with p in [−0.7, −0.3] (the README's gains come from equation-error fits
 // without the lag) — not a drift over the sessions, which the amplitudes of one session rule out.
 TEST(DiagnosisTest, RealBluerovRunsOfAllAmplitudesShowTheThrustMapShape) {
-  const model::Campaign campaign = io::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) +
-                                                       "/data/bluerov-yaw-2016/campaign_all.yaml");
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
+  const model::Campaign campaign =
+      io::ReadCampaign(RealDataPath("bluerov-yaw-2016/campaign_all.yaml"));
   const DiagnosisResult r = Diagnose(campaign, DiagnoseOptions{});
   ASSERT_FALSE(r.findings.empty());
   const Finding& first = r.findings.front();
@@ -156,8 +160,8 @@ TEST(DiagnosisTest, RealBluerovRunsOfAllAmplitudesShowTheThrustMapShape) {
 // closed-loop caveat beside its findings, and not test or quote a drift over a campaign clock
 // the file does not give.
 TEST(DiagnosisTest, RealClosedLoopLogsWithoutClockAreQualified) {
-  const model::Campaign campaign =
-      io::ReadCampaign(std::string(UUVPLAN_SHARED_DIR) + "/data/tartan-pool-2022/campaign.yaml");
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("tartan-pool-2022");
+  const model::Campaign campaign = io::ReadCampaign(RealDataPath("tartan-pool-2022/campaign.yaml"));
   DiagnoseOptions o;
   o.dofs = {model::Dof::kHeave};
   const DiagnosisResult r = Diagnose(campaign, o);

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "ident_cases.h"
+#include "support/real_data.h"
 #include "uuvplan/io/virtual_campaign.h"
 
 namespace uuvplan::ident {
@@ -22,6 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using uuvplan::testing::RealDataPath;
 
 struct RunResult {
   int status = -1;
@@ -114,12 +116,13 @@ TEST(IdentifyCliTest, ThreeSamplesIdentifyNothingAndExitOne) {
 }
 
 TEST(IdentifyCliTest, RealBlueRovYawRuns) {
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
   // ../shared/data/bluerov-yaw-2016 (README "Sanity fit"): the output-error fit of yaw_1..3
   // gives I ≈ 1.04 kg·m², k ≈ 4.5 N·m·s and a validate MAE of 0.15–0.18 rad/s. The identified
   // inertia must land in the README's 0.9–1.4 range (every fit there) and the model must be
   // flagged as not explaining the data to the noise (thruster dynamics, the thrust map).
-  const RunResult r = RunUuvplan("identify " + std::string(UUVPLAN_SHARED_DIR) +
-                                     "/data/bluerov-yaw-2016/campaign.yaml --json -", false);
+  const RunResult r = RunUuvplan(
+      "identify " + RealDataPath("bluerov-yaw-2016/campaign.yaml") + " --json -", false);
   ASSERT_EQ(r.status, 0) << r.out;
   const json j = json::parse(r.out);
   const json& yaw = j.at("dofs").at("yaw");
@@ -131,10 +134,11 @@ TEST(IdentifyCliTest, RealBlueRovYawRuns) {
 }
 
 TEST(IdentifyCliTest, RealTartanClosedLoopIsSaidSo) {
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("tartan-pool-2022");
   // ../shared/data/tartan-pool-2022: commanded wrench of a closed-loop controller. Every DOF
   // must be flagged closed loop and its inertia reported unreliable.
-  const RunResult r = RunUuvplan("identify " + std::string(UUVPLAN_SHARED_DIR) +
-                                     "/data/tartan-pool-2022/campaign.yaml --json -", false);
+  const RunResult r = RunUuvplan(
+      "identify " + RealDataPath("tartan-pool-2022/campaign.yaml") + " --json -", false);
   ASSERT_EQ(r.status, 0) << r.out;
   const json j = json::parse(r.out);
   ASSERT_EQ(j.at("dofs").size(), 4u);

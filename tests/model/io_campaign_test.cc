@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "io_test_util.h"
+#include "support/real_data.h"
 #include "uuvplan/io/io.h"
 
 namespace uuvplan::model {
@@ -21,6 +22,7 @@ using ::testing::ElementsAre;
 using testing::ErrorOf;
 using ::testing::HasSubstr;
 using testing::ScratchDir;
+using uuvplan::testing::RealDataPath;
 
 TEST(ReadCampaignTest, ReadsTheFixture) {
   const std::string path = testing::SourcePath("tests/data/io/campaign.yaml");
@@ -89,11 +91,13 @@ void ExpectEveryTrialLoaded(const std::string& campaign_path, std::size_t trials
 }
 
 TEST(ReadCampaignTest, LoadsTheBluerovCampaign) {
-  ExpectEveryTrialLoaded(testing::SharedPath("data/bluerov-yaw-2016/campaign.yaml"), 5);
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
+  ExpectEveryTrialLoaded(RealDataPath("bluerov-yaw-2016/campaign.yaml"), 5);
 }
 
 TEST(ReadCampaignTest, LoadsTheBluerovCampaignOfAllRuns) {
-  const std::string path = testing::SharedPath("data/bluerov-yaw-2016/campaign_all.yaml");
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
+  const std::string path = RealDataPath("bluerov-yaw-2016/campaign_all.yaml");
   ExpectEveryTrialLoaded(path, 13);
   const Campaign c = ReadCampaign(path);
   EXPECT_EQ(c.trials[0].log.size(), 1763u);  // act34_1: 1771 lines, 7 comments, 1 header
@@ -102,7 +106,8 @@ TEST(ReadCampaignTest, LoadsTheBluerovCampaignOfAllRuns) {
 }
 
 TEST(ReadCampaignTest, LoadsTheTartanCampaign) {
-  const std::string path = testing::SharedPath("data/tartan-pool-2022/campaign.yaml");
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("tartan-pool-2022");
+  const std::string path = RealDataPath("tartan-pool-2022/campaign.yaml");
   ExpectEveryTrialLoaded(path, 16);
   EXPECT_EQ(ReadCampaign(path).trials[2].mapping, "tam-heave");
 }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "io_test_util.h"
+#include "support/real_data.h"
 #include "uuvplan/io/io.h"
 
 namespace uuvplan::model {
@@ -25,6 +26,7 @@ using ::testing::HasSubstr;
 using ::testing::IsEmpty;
 using ::testing::IsNan;
 using testing::ScratchDir;
+using uuvplan::testing::RealDataPath;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -112,16 +114,15 @@ TEST(ReadTrialLogTest, ReadsALineLongerThanTheReadBuffer) {
 }
 
 TEST(ReadTrialLogTest, ReadsTheSharedRealLogs) {
-  const TrialLog bluerov =
-      ReadTrialLog(testing::SharedPath("data/bluerov-yaw-2016/trials/yaw_1.csv"));
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016", "tartan-pool-2022");
+  const TrialLog bluerov = ReadTrialLog(RealDataPath("bluerov-yaw-2016/trials/yaw_1.csv"));
   EXPECT_EQ(bluerov.size(), 2926u);
   EXPECT_TRUE(bluerov.HasForce(Dof::kYaw));
   EXPECT_TRUE(bluerov.HasVelocity(Dof::kPitch));
   EXPECT_THAT(bluerov.notes, ElementsAre("ignored column 'thrust_T3'", "ignored column 'thrust_T4'",
                                          "ignored column 'pwm_T3'", "ignored column 'pwm_T4'",
                                          "ignored column 'ekf_yaw'"));
-  const TrialLog tartan =
-      ReadTrialLog(testing::SharedPath("data/tartan-pool-2022/trials/chunk_00.csv"));
+  const TrialLog tartan = ReadTrialLog(RealDataPath("tartan-pool-2022/trials/chunk_00.csv"));
   EXPECT_EQ(tartan.size(), 4085u - 11u);
   EXPECT_TRUE(tartan.HasPosition(Dof::kYaw));
   EXPECT_THAT(tartan.notes, IsEmpty());

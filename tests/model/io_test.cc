@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "io_test_util.h"
+#include "support/real_data.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/virtual_pool.h"
 
@@ -24,6 +25,7 @@ using testing::At;
 using testing::ErrorOf;
 using ::testing::HasSubstr;
 using testing::ScratchDir;
+using uuvplan::testing::RealDataPath;
 
 // ---------------------------------------------------------------------------------------------
 // Vehicle: the fixture.
@@ -97,14 +99,15 @@ mappings:
 }
 
 TEST(ReadVehicleTest, ReadsTheSharedRealVehicles) {
-  const Vehicle bluerov = ReadVehicle(testing::SharedPath("data/bluerov-yaw-2016/vehicle.yaml"));
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016", "tartan-pool-2022");
+  const Vehicle bluerov = ReadVehicle(RealDataPath("bluerov-yaw-2016/vehicle.yaml"));
   EXPECT_EQ(bluerov.name, "bluerov-liu-2016");
   EXPECT_EQ(bluerov.thrusters.size(), 6u);
   EXPECT_EQ(bluerov.mappings.at(0).shares.size(), 2u);
   EXPECT_EQ(bluerov.AddedMassBounds(Dof::kYaw), (std::array<double, 2>{0.5, 8.0}));
   EXPECT_EQ(bluerov.sensors.at(Dof::kYaw).velocity->rate_hz, 125);
 
-  const Vehicle tartan = ReadVehicle(testing::SharedPath("data/tartan-pool-2022/vehicle.yaml"));
+  const Vehicle tartan = ReadVehicle(RealDataPath("tartan-pool-2022/vehicle.yaml"));
   EXPECT_EQ(tartan.thrusters.size(), 8u);
   EXPECT_EQ(tartan.thrusters[4].command_min, -60);
   EXPECT_EQ(tartan.thrusters[0].model.a, 0.0);

@@ -20,10 +20,6 @@ inline std::string SourcePath(const std::string& relative) {
   return std::string(UUVPLAN_SOURCE_DIR) + "/" + relative;
 }
 
-inline std::string SharedPath(const std::string& relative) {
-  return std::string(UUVPLAN_SHARED_DIR) + "/" + relative;
-}
-
 inline std::string ReadText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
