@@ -112,7 +112,7 @@ TEST(DiagnosisTest, CouplingSigmaIncludesTheNoiseOfTheLoggedVelocities) {
 }
 
 // Real logs are the final judge (docs/diagnosis.md, "On real logs"; the identification of the
-// same logs is tested in ident_cli_test.cc). ../shared/data/bluerov-yaw-2016/README.md, defect 2:
+// same logs is tested in ident_cli_test.cc). shared/data/bluerov-yaw-2016/README.md, defect 2:
 // the fit improves markedly when the torque passes through a first-order lag of about 60 ms (a
 // 20–30 ms pure delay fits less well). The diagnosis must name that effect first, with a lag of
 // the same order — 40–120 ms: the README's 60 ms came from an equation-error fit on a grid of

@@ -1,6 +1,6 @@
 // `uuvplan identify` end to end (contract §identify, §Command line): a simulated campaign on
 // disk, the JSON with the contract's keys, '-' for stdout, exit status 2 on bad input, and the
-// two real campaigns of ../shared/data (open-loop BlueROV yaw; closed-loop Tartan AUV).
+// two real campaigns of shared/data (open-loop BlueROV yaw; closed-loop Tartan AUV).
 // Needs the uuvplan executable (built with the tool target).
 #include <gtest/gtest.h>
 
@@ -117,7 +117,7 @@ TEST(IdentifyCliTest, ThreeSamplesIdentifyNothingAndExitOne) {
 
 TEST(IdentifyCliTest, RealBlueRovYawRuns) {
   UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
-  // ../shared/data/bluerov-yaw-2016 (README "Sanity fit"): the output-error fit of yaw_1..3
+  // shared/data/bluerov-yaw-2016 (README "Sanity fit"): the output-error fit of yaw_1..3
   // gives I ≈ 1.04 kg·m², k ≈ 4.5 N·m·s and a validate MAE of 0.15–0.18 rad/s. The identified
   // inertia must land in the README's 0.9–1.4 range (every fit there) and the model must be
   // flagged as not explaining the data to the noise (thruster dynamics, the thrust map).
@@ -135,7 +135,7 @@ TEST(IdentifyCliTest, RealBlueRovYawRuns) {
 
 TEST(IdentifyCliTest, RealTartanClosedLoopIsSaidSo) {
   UUVPLAN_SKIP_WITHOUT_REAL_DATA("tartan-pool-2022");
-  // ../shared/data/tartan-pool-2022: commanded wrench of a closed-loop controller. Every DOF
+  // shared/data/tartan-pool-2022: commanded wrench of a closed-loop controller. Every DOF
   // must be flagged closed loop and its inertia reported unreliable.
   const RunResult r = RunUuvplan(
       "identify " + RealDataPath("tartan-pool-2022/campaign.yaml") + " --json -", false);
