@@ -1,11 +1,22 @@
 #!/usr/bin/env bash
 # Installs the dependencies (Debian packages, if missing) and builds uuvplan into build/.
-# Usage: scripts/build.sh [extra cmake -D options...]
+# Usage: scripts/build.sh [--target T]... [extra cmake -D options...]
+# Every script configures build/ the same way (warnings as errors), so the demo and the tests
+# share one build and nothing is compiled twice; --target builds only what is named.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
 build="${UUVPLAN_BUILD_DIR:-$root/build}"
+targets=()
+options=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --target) targets+=(--target "$2"); shift 2 ;;
+    *) options+=("$1"); shift ;;
+  esac
+done
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" "$@" >/dev/null
-cmake --build "$build" -j"$(nproc)" >&2
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DUUVPLAN_WERROR=ON "${launcher[@]}" \
+  "${options[@]}" >/dev/null
+cmake --build "$build" -j"$(nproc)" "${targets[@]}" >&2

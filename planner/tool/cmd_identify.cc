@@ -93,7 +93,7 @@ int RunIdentify(const IdentifyCommandOptions& co) {
 }
 
 void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
-  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml")->required();
+  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")->required();
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_option("--dof", o->dofs,
                   "identify only this DOF (repeatable; default: every DOF with fit trials)");

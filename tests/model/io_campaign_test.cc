@@ -59,6 +59,16 @@ TEST(ReadCampaignTest, ReadsTheFixture) {
   EXPECT_EQ(yaw.log.notes.size(), 1u);  // the heading was unwrapped
 }
 
+// issue #16: every command that takes a campaign accepts its directory too.
+TEST(ReadCampaignTest, ADirectoryStandsForItsCampaignYaml) {
+  const Campaign by_file = ReadCampaign(testing::SourcePath("tests/data/io/campaign.yaml"));
+  const Campaign by_dir = ReadCampaign(testing::SourcePath("tests/data/io"));
+  EXPECT_EQ(by_dir.path, by_file.path);
+  ASSERT_EQ(by_dir.trials.size(), by_file.trials.size());
+  EXPECT_EQ(by_dir.trials[0].path, by_file.trials[0].path);
+  EXPECT_EQ(by_dir.trials[0].log.t, by_file.trials[0].log.t);
+}
+
 TEST(ReadCampaignTest, PoolIsOptionalAndTrialsMayBeNone) {
   ScratchDir dir;
   const std::string path = dir.Write("empty_campaign.yaml", "vehicle: vehicle.yaml\ntrials: []\n");

@@ -103,7 +103,11 @@ TrialEntry ParseTrial(const Value& v, const Vehicle& vehicle, const TrialEntry* 
 
 const char* TrialUseName(TrialUse use) { return use == TrialUse::kFit ? "fit" : "validate"; }
 
-Campaign ReadCampaign(const std::string& path) {
+// A campaign directory stands for its campaign.yaml.
+Campaign ReadCampaign(const std::string& given) {
+  const std::string path =
+      std::filesystem::is_directory(given) ? (std::filesystem::path(given) / "campaign.yaml").string()
+                                           : given;
   return Guarded(path, [&] {
     const MapValue m =
         LoadYamlMap(path, "a campaign (vehicle, pool, trials)", "a map of campaign keys");

@@ -13,7 +13,8 @@ namespace uuvplan::io {
 /// The name of a trial's use in the campaign file and in results: fit | validate.
 const char* TrialUseName(model::TrialUse use);
 
-/// Reads the campaign YAML, its vehicle (and pool) and every trial CSV.
+/// Reads the campaign YAML (or DIR/campaign.yaml when `path` is a directory), its vehicle (and
+/// pool) and every trial CSV.
 model::Campaign ReadCampaign(const std::string& path);
 
 /// Writes campaign.yaml; trial files are written by the caller (paths relative to `path`).
