@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <filesystem>
 
 #include "io_test_util.h"
@@ -346,6 +348,24 @@ TEST(WriteCampaignTest, WritesADirectoryThatReadsBack) {
   EXPECT_THAT(ErrorOf([&] { WriteCampaign(dir.Path("out"), original, original.vehicle); }),
               HasSubstr("out: output directory exists and is not empty"));
   EXPECT_EQ(ReadCampaign(dir.Path("out/campaign.yaml")).trials.size(), back.trials.size());
+}
+
+// issue #15: the temporary directory is unique to the run, so a user's directory of the old
+// temporary name is never touched, and nothing of the run is left behind.
+TEST(WriteCampaignTest, LeavesOtherDirectoriesAlone) {
+  ScratchDir dir;
+  const Campaign original = ReadCampaign(dir.Path("campaign.yaml"));
+  std::filesystem::create_directories(dir.Path("mine.tmp-uuvplan"));
+  std::ofstream(dir.Path("mine.tmp-uuvplan/keep.txt")) << "user data\n";
+  Campaign c = original;
+  c.pool_file.reset();
+  WriteCampaign(dir.Path("mine"), c, c.vehicle);
+  EXPECT_EQ(testing::ReadText(dir.Path("mine.tmp-uuvplan/keep.txt")), "user data\n");
+  int leftovers = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir.Path(""))) {
+    leftovers += e.path().filename().string().rfind("mine.tmp-uuvplan-", 0) == 0;
+  }
+  EXPECT_EQ(leftovers, 0);
 }
 
 }  // namespace

@@ -3,6 +3,9 @@
 #include "uuvplan/io/campaign_yaml.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -195,32 +198,59 @@ void CheckNewCampaignDirectory(const std::string& dir) {
   }
 }
 
+namespace {
+
+// A new, empty directory beside `out`, unique to this call (mkdtemp: created exclusively, so
+// it can be neither a user's directory nor another run's).
+fs::path NewSiblingDirectory(const fs::path& out, const std::string& dir) {
+  std::error_code ec;
+  if (out.has_parent_path()) fs::create_directories(out.parent_path(), ec);
+  std::string pattern = out.string() + ".tmp-uuvplan-XXXXXX";
+  if (!::mkdtemp(pattern.data())) {
+    throw InputError(dir, "cannot create a temporary directory beside it: " +
+                              std::string(std::strerror(errno)));
+  }
+  return pattern;
+}
+
+// Renames the finished `tmp` to `out` (an empty `out` made by the user is replaced). When
+// another run put its campaign there first, the rename fails and says so.
+void MoveIntoPlace(const fs::path& tmp, const fs::path& out, const std::string& dir) {
+  std::error_code ec;
+  if (fs::is_directory(out) && fs::is_empty(out, ec)) fs::remove(out, ec);
+  fs::rename(tmp, out, ec);
+  if (!ec) return;
+  std::error_code ignored;
+  fs::remove_all(tmp, ignored);  // ours alone (NewSiblingDirectory)
+  if (fs::exists(out)) {
+    throw InputError(dir, "another run wrote a campaign there while this one was running; "
+                          "nothing of this run was kept");
+  }
+  throw InputError(dir, "cannot move the campaign into place: " + ec.message());
+}
+
+}  // namespace
+
 Campaign WriteCampaign(const std::string& dir, Campaign campaign, const Vehicle& vehicle,
                        const std::vector<std::string>& trial_comments) {
   CheckNewCampaignDirectory(dir);
   const fs::path out = CampaignDirectory(dir);
-  // Everything is written to a sibling temporary directory first, then renamed into place,
+  // Everything is written to a temporary sibling directory first, then renamed into place,
   // so a campaign is written whole or not at all.
-  const fs::path tmp = out.string() + ".tmp-uuvplan";
+  const fs::path tmp = NewSiblingDirectory(out, dir);
   std::error_code ec;
-  fs::remove_all(tmp, ec);
-  fs::create_directories(tmp / "trials", ec);
-  if (ec) throw InputError(dir, "cannot create directory: " + ec.message());
   campaign.path = (out / "campaign.yaml").string();
   campaign.vehicle_file = "vehicle.yaml";
   for (TrialEntry& e : campaign.trials) e.path = (out / e.file).string();
   try {
+    fs::create_directories(tmp / "trials", ec);
+    if (ec) throw InputError(dir, "cannot create directory: " + ec.message());
     WriteCampaignFiles(tmp, campaign, vehicle, trial_comments);
   } catch (...) {
-    fs::remove_all(tmp, ec);
+    fs::remove_all(tmp, ec);  // ours alone
     throw;
   }
-  if (fs::exists(out)) fs::remove(out, ec);
-  fs::rename(tmp, out, ec);
-  if (ec) {
-    fs::remove_all(tmp, ec);
-    throw InputError(dir, "cannot move the campaign into place: " + ec.message());
-  }
+  MoveIntoPlace(tmp, out, dir);
   return campaign;
 }
 
