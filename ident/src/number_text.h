@@ -2,16 +2,12 @@
 // identification's notes and warnings).
 #pragma once
 
-#include <sstream>
 #include <string>
+
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 
-inline std::string Fmt(double v, int precision = 4) {
-  std::ostringstream os;
-  os.precision(precision);
-  os << v;
-  return os.str();
-}
+inline std::string Fmt(double v, int precision = 4) { return model::Significant(v, precision); }
 
 }  // namespace uuvplan::ident

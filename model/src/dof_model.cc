@@ -60,12 +60,14 @@ DofModel::DofModel(const Vehicle& vehicle, const ModelStructure& s) : structure_
   AdoptStandardTerms(vehicle);
   const auto& effects = Effects().entries();
   for (const EffectEntry& e : effects) {
-    const std::vector<std::string> own = s.OfEffect(e.name);
-    if (!own.empty() && e.site == EffectSite::kForceTerm) AdoptEffectTerm(e.make_term(s.dof, own));
+    if (e.site != EffectSite::kForceTerm) continue;
+    if (const auto parameters = s.Of(e); !parameters.empty()) {
+      AdoptEffectTerm(e.make_term(s.dof, parameters));
+    }
   }
   for (const EffectEntry& e : effects) {
     if (e.site != EffectSite::kActuator && e.site != EffectSite::kSensor) continue;
-    for (const std::string& p : s.OfEffect(e.name)) names_.push_back(p);
+    for (const std::string& p : s.Of(e)) names_.push_back(p);
   }
   for (const std::string& p : s.parameters) {
     if (ParameterIndex(p) < 0) {

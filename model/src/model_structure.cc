@@ -21,11 +21,14 @@ std::vector<std::string> ModelStructure::WithPrefix(std::string_view prefix) con
 }
 
 std::vector<std::string> ModelStructure::OfEffect(std::string_view effect) const {
-  std::vector<std::string> out;
   const EffectEntry* entry = Effects().Find(effect);
-  if (!entry) return out;
+  return entry ? Of(*entry) : std::vector<std::string>{};
+}
+
+std::vector<std::string> ModelStructure::Of(const EffectEntry& effect) const {
+  std::vector<std::string> out;
   for (const std::string& p : parameters) {
-    if (entry->Owns(p)) out.push_back(p);
+    if (effect.Owns(p)) out.push_back(p);
   }
   return out;
 }

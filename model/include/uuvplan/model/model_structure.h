@@ -28,6 +28,8 @@ struct ModelStructure {
   /// The parameters of effect `effect` (effects.h) in this structure.
   std::vector<std::string> OfEffect(std::string_view effect) const;
   bool HasEffect(std::string_view effect) const { return !OfEffect(effect).empty(); }
+  /// The parameters `effect` declares, in this structure.
+  std::vector<std::string> Of(const struct EffectEntry& effect) const;
   void Add(const std::string& parameter);  ///< no-op when present
   void Remove(std::string_view parameter);
   /// A setting's value, or `fallback`.

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <charconv>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +26,14 @@ std::string Join(const Container& items, std::string_view separator = ", ") {
     out += std::string_view(item);
   }
   return out;
+}
+
+/// `digits` significant digits, as an std::ostream prints a double ("0.0523", "1.2e+03").
+inline std::string Significant(double x, int digits) {
+  std::ostringstream os;
+  os.precision(digits);
+  os << x;
+  return os.str();
 }
 
 /// The shortest text that reads back as exactly `x` (std::to_chars round trip).
