@@ -1,6 +1,9 @@
 #include "uuvplan/model/prior.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 #include "uuvplan/model/parameter.h"
 
@@ -23,6 +26,26 @@ double BluffBodyQuadraticDrag(const Vehicle& vehicle, Dof dof) {
   return 0.0;
 }
 
+// The largest generalised force (N or N·m) the thrusters give along `dof`: over its mappings
+// and both directions, the force at which the first working thruster reaches its limit. 0 when
+// no mapping acts on the DOF.
+double LargestThrust(const Vehicle& vehicle, Dof dof) {
+  double best = 0.0;
+  for (int mi : vehicle.MappingsOf(dof)) {
+    for (int sign : {+1, -1}) {
+      double limit = std::numeric_limits<double>::infinity();
+      for (const auto& [ti, share] : vehicle.mappings[mi].shares) {
+        if (share == 0.0) continue;
+        const Thruster& th = vehicle.thrusters.at(ti);
+        const double t = share * sign > 0 ? th.MaxForwardThrust() : th.MaxReverseThrust();
+        limit = std::min(limit, t / std::abs(share));
+      }
+      if (std::isfinite(limit)) best = std::max(best, limit);
+    }
+  }
+  return best;
+}
+
 // The nominal value of `name` (a standard drag parameter even when not in `values`).
 double DragOrNominal(const std::map<std::string, double>& values, const APrioriDrag& drag,
                      std::string_view name) {
@@ -36,9 +59,44 @@ double DragOrNominal(const std::map<std::string, double>& values, const APrioriD
 
 APrioriDrag DragOf(const Vehicle& vehicle, Dof dof, double fallback_rel_sigma) {
   const auto prior = vehicle.priors.find(dof);
-  if (prior != vehicle.priors.end() && prior->second.drag) return {*prior->second.drag, true};
+  if (prior != vehicle.priors.end() && prior->second.drag) {
+    return {*prior->second.drag, DragSource::kVehicleFile, 0.0};
+  }
+  const double thrust = LargestThrust(vehicle, dof);
+  if (thrust > 0) {
+    // k·v_t + kq·v_t² = F_max with k = 0.1·kq·v_t (prior.h).
+    const double v = TerminalSpeed(dof);
+    const double kq = thrust / (1.1 * v * v);
+    return {{0.1 * kq * v, kq, fallback_rel_sigma}, DragSource::kThrustRange, thrust};
+  }
   const double kq = BluffBodyQuadraticDrag(vehicle, dof);
-  return {{0.1 * kq, kq, fallback_rel_sigma}, false};
+  return {{0.1 * kq, kq, fallback_rel_sigma}, DragSource::kBluffBody, 0.0};
+}
+
+std::string DragAssumption(Dof dof, const APrioriDrag& drag) {
+  std::ostringstream s;
+  const std::string name(DofName(dof));
+  const bool rot = IsRotational(dof);
+  s.precision(4);
+  switch (drag.source) {
+    case DragSource::kVehicleFile:
+      s << name << ": a priori drag from the vehicle file (dofs." << name << ".drag)";
+      break;
+    case DragSource::kThrustRange:
+      s << name << ": no a priori drag (dofs." << name << ".drag in the vehicle file); assumed "
+        << "that the largest thrust, " << drag.thrust << " " << ForceUnit(dof)
+        << ", holds the vehicle at " << TerminalSpeed(dof) << (rot ? " rad/s" : " m/s")
+        << ": k = " << drag.drag.k << " " << Unit(param::kLinearDrag, dof) << ", kq = " << drag.drag.kq
+        << " " << Unit(param::kQuadraticDrag, dof) << " (k·v = 0.1·kq·v² there), ±"
+        << 100 * drag.drag.rel_sigma << "%";
+      break;
+    case DragSource::kBluffBody:
+      s << name << ": no a priori drag and no thruster on " << name << "; a bluff body of `size` "
+        << "(C_D = 1): k = " << drag.drag.k << ", kq = " << drag.drag.kq << ", ±"
+        << 100 * drag.drag.rel_sigma << "%";
+      break;
+  }
+  return s.str();
 }
 
 std::map<std::string, double> NominalValues(const Vehicle& vehicle, Dof dof,

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "format.h"
 #include "options_check.h"
 
 #include "uuvplan/model/effects.h"
@@ -289,6 +290,32 @@ std::vector<double> DofContext::CriterionValues(const std::vector<Eigen::MatrixX
   return out;
 }
 
+namespace {
+// Why a travel from `lo` to `hi` over the box does not fit: the pool side and its free length,
+// or the tether's turns, with what would host it.
+std::string TravelReason(const model::Pool& pool, model::Dof dof, double lo, double hi) {
+  const auto F = [](double v) { return internal::Fmt(v, 4); };
+  std::ostringstream s;
+  const double span = hi - lo, free = pool.FreeTravel(dof);
+  if (model::IsRotational(dof)) {
+    s << "rotation " << F(span) << " rad (" << F(span / (2 * M_PI))
+      << " turns) over the a priori box (from " << F(lo) << " to "
+      << F(hi) << " rad) exceeds the tether limit of " << F(free)
+      << " rad (max_turns " << F(pool.max_turns) << "): needs max_turns "
+      << F(pool.ExtentFor(dof, span));
+    return s.str();
+  }
+  const std::string_view side = model::Pool::SideName(dof);
+  s << "travel " << F(span) << " m over the a priori box (from "
+    << F(lo) << " to " << F(hi) << " m) exceeds the "
+    << F(free) << " m of free " << side << " (" << F(pool.WallToWall(dof))
+    << " m wall to wall - 2·" << F(pool.margin) << " m margin) by "
+    << F(span - free) << " m: needs a pool " << side << " of "
+    << F(pool.WallToWallFor(span)) << " m wall to wall";
+  return s.str();
+}
+}  // namespace
+
 TrialCheck DofContext::Check(const model::TrialDesign& design) const {
   TrialCheck c;
   c.available = available();
@@ -317,14 +344,7 @@ TrialCheck DofContext::Check(const model::TrialDesign& design) const {
   c.travel = {lo, hi};
   c.span = hi - lo;
   if (std::isfinite(c.available) && c.span > c.available + 1e-9) {
-    std::ostringstream s;
-    const std::string_view side = model::Pool::SideName(dof_);
-    s << "travel " << c.span << " m over the a priori box (from " << lo << " to " << hi
-      << " m) exceeds the " << c.available << " m free along the pool " << side << " ("
-      << pool_.WallToWall(dof_) << " m - 2·" << pool_.margin << " m margin) by "
-      << c.span - c.available << " m: needs a pool " << side << " of "
-      << pool_.WallToWallFor(c.span) << " m";
-    c.reasons.push_back(s.str());
+    c.reasons.push_back(TravelReason(pool_, dof_, lo, hi));
   }
   c.feasible = c.reasons.empty();
   return c;

@@ -109,13 +109,9 @@ ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
   const auto mb = vehicle.InertiaBounds(dof);
   const model::APrioriDrag drag = model::DragOf(vehicle, dof, options.fallback_drag_rel_sigma);
   const double rel = drag.drag.rel_sigma;
-  if (!drag.from_vehicle_file && notes) {
-    std::ostringstream s;
-    s << model::DofName(dof) << ": no a priori drag (dofs." << model::DofName(dof)
-      << ".drag in the vehicle file); planned with a bluff-body estimate k = " << drag.drag.k
-      << ", kq = " << drag.drag.kq << " (C_D = 1 on the frontal area of `size`), rel_sigma "
-      << rel << ". Give the drag of a previous fit to plan better.";
-    notes->push_back(s.str());
+  if (!drag.from_vehicle_file() && notes) {
+    notes->push_back(model::DragAssumption(dof, drag) +
+                     ". Give the drag of a previous fit to plan better.");
   }
   box.nominal = model::NominalValues(vehicle, dof, names, options.fallback_drag_rel_sigma);
   std::vector<std::string> etas;

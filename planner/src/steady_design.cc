@@ -8,6 +8,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "format.h"
 #include "options_check.h"
 
 #include "uuvplan/model/effects.h"
@@ -17,6 +18,8 @@
 #include "uuvplan/planner/thrust_limits.h"
 
 namespace uuvplan::planner {
+
+using internal::Fmt;
 
 bool SteadyDesignOptions::IsValid(std::string* error) const {
   internal::OptionsCheck check("SteadyDesignOptions", error);
@@ -372,10 +375,16 @@ SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignO
       out.required_travel = std::max(out.required_travel, smallest.travel);
       if (smallest.travel > avail - kTravelSafety) {
         std::ostringstream m;
-        m << DirName(name, s) << ": the smallest run (|phi| = " << lo << ", settles in "
-          << smallest.settle_s << " s, holds " << smallest.hold_s << " s) travels "
-          << smallest.travel << " over the box; the pool has " << avail << " free: needs "
-          << ctx.pool().WallToWallFor(smallest.travel) << " with its margins";
+        const model::Dof dof = ctx.dof();
+        const bool turns = model::IsRotational(dof);
+        const std::string unit(model::PositionUnit(dof));
+        m << DirName(name, s) << ": the smallest run (|phi| = " << Fmt(lo, 4) << " "
+          << model::ForceUnit(dof) << ", settles in " << Fmt(smallest.settle_s) << " s, holds "
+          << Fmt(smallest.hold_s) << " s) travels " << Fmt(smallest.travel, 4) << " " << unit
+          << " over the box; the " << (turns ? "tether allows " : "pool has ") << Fmt(avail, 4)
+          << " " << unit << (turns ? "" : " free") << ": needs "
+          << Fmt(ctx.pool().ExtentFor(dof, smallest.travel), 4)
+          << (turns ? " turns (max_turns)" : " m wall to wall");
         infeasible << " " << m.str() << ";";
         continue;
       }

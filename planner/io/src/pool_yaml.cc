@@ -14,8 +14,8 @@ namespace fs = std::filesystem;
 Pool ReadPool(const std::string& path) {
   return Guarded(path, [&] {
     const MapValue m =
-        LoadYamlMap(path, "a pool (name, length, width, depth, margin)", "a map of pool keys");
-    m.AllowOnly({"name", "length", "width", "depth", "margin"});
+        LoadYamlMap(path, "a pool (name, length, width, depth, margin, max_turns)", "a map of pool keys");
+    m.AllowOnly({"name", "length", "width", "depth", "margin", "max_turns"});
     Pool pool;
     const Value name = m.Optional("name");
     pool.name = name.absent() ? fs::path(path).stem().string() : Name(name, "a pool name");
@@ -27,6 +27,9 @@ Pool ReadPool(const std::string& path) {
       if (!(2 * pool.margin < std::min({pool.length, pool.width, pool.depth}))) {
         margin.Expected("a margin that leaves room to move (2·margin < length, width and depth)");
       }
+    }
+    if (const Value turns = m.Optional("max_turns"); !turns.absent()) {
+      pool.max_turns = Positive(turns);
     }
     return pool;
   });

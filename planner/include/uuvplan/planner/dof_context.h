@@ -110,7 +110,8 @@ class DofContext {
   /// Parameter vectors at the design points (centre first) and the check grid.
   const std::vector<Eigen::VectorXd>& design_thetas() const { return design_thetas_; }
   const std::vector<Eigen::VectorXd>& check_thetas() const { return check_thetas_; }
-  /// Free travel along the DOF (m), infinite for rotations.
+  /// Free travel along the DOF: m within the pool's walls less the margins, or for a rotation
+  /// rad within the tether's twist (2π·max_turns).
   double available() const { return pool_.FreeTravel(dof_); }
   double step_s() const { return step_s_; }
   /// Shortest and longest linearised time constants m/k_L over the box (s).
@@ -146,8 +147,9 @@ class DofContext {
   std::vector<double> CriterionValues(const std::vector<Eigen::MatrixXd>& M, Criterion c,
                                       const std::vector<int>& interest,
                                       bool* any_singular = nullptr) const;
-  /// Hard constraints of a trial: thrusters (sign, min_thrust, limits), pool travel over the
-  /// check grid, duration limit.
+  /// Hard constraints of a trial: thrusters (sign, min_thrust, limits), travel over the check
+  /// grid within the pool's free length/width/depth or the tether's turns, duration limit.
+  /// The one place these limits are checked.
   TrialCheck Check(const model::TrialDesign& design) const;
 
  private:
