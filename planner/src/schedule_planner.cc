@@ -9,6 +9,8 @@
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/text.h"
+#include "uuvplan/planner/determinacy.h"
 
 namespace uuvplan::planner {
 
@@ -181,6 +183,16 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
       if (sn.check.span > 0) plan.required_travel = std::max(plan.required_travel, sn.check.span);
     }
   }
+  if (o.max_completion_trials > 0) {
+    CompletionResult extra = CompleteWithLoopFamilies(*ctx, o.sine, o.steady, &info,
+                                                      name + "-more", o.max_completion_trials);
+    for (std::size_t i = 0; i < extra.trials.size(); ++i) {
+      plan.trials.push_back(extra.trials[i]);
+      plan.checks.push_back(extra.checks[i]);
+    }
+    for (auto& n : extra.notes) plan.notes.push_back(std::move(n));
+  }
+  plan.determinacy = InterestDeterminacy(*ctx, info);
   std::ostringstream m;
   for (const auto& f : failures) m << " " << f;
   if (plan.trials.empty()) {
@@ -189,10 +201,19 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
     return plan;
   }
   plan.status = DesignStatus::kOk;
-  plan.complete = failures.empty();
+  // Complete: every parameter of interest determined, whichever families did it (a steady run
+  // that does not fit is no loss when sines determine the drag).
+  plan.complete = plan.determinacy.determined;
   if (plan.complete) plan.required_travel = std::numeric_limits<double>::quiet_NaN();
   for (const auto& f : failures) plan.notes.push_back(name + ": " + f);
-  if (!plan.complete) plan.message = name + " only partly planned in pool '" + pool.name + "':" + m.str();
+  if (!plan.complete) {
+    plan.message = name + " only partly determined in pool '" + pool.name + "': " +
+                   model::Join(plan.determinacy.undetermined) + " stay undetermined after " +
+                   std::to_string(plan.trials.size()) + " trials." + m.str();
+    for (const auto& t : plan.trials) {
+      plan.required_travel = std::max(plan.required_travel, t.travel[1] - t.travel[0]);
+    }
+  }
   plan.predicted = PredictPrecision(*ctx, info, &plan.notes);
   return plan;
 }

@@ -23,6 +23,7 @@
 #include "uuvplan/model/dof.h"
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
+#include "uuvplan/planner/determinacy.h"
 #include "uuvplan/planner/dof_context.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/sine_design.h"
@@ -39,27 +40,35 @@ struct ScheduleOptions {
   std::vector<model::Dof> dofs;
   bool steady_runs = true;  ///< plan the steady runs
   bool sine_trial = true;   ///< plan the sine trial
+  /// Trials of the loop's families (determinacy.h) added to a DOF whose steady runs and sine
+  /// leave a parameter of interest undetermined. CHOSEN 3: each adds one sine or leg; a DOF
+  /// that three more do not determine is limited by the pool, not by the schedule's shape.
+  int max_completion_trials = 3;
   /// Information from earlier trials per DOF (absolute units); added to every design.
   std::map<model::Dof, PriorInformation> prior;
 
   bool IsValid(std::string* error) const;
 };
 
-/// kOk: every DOF completely planned; kPartial: some trials could not be planned (see the
-/// DOFs' messages: what is missing and the pool it would need); kInfeasible: nothing planned.
+/// kOk: every DOF's parameters of interest determined (determinacy.h); kPartial: some are not
+/// (see the DOFs' messages: what is missing and the pool it would need); kInfeasible: nothing
+/// planned.
 enum class PlanStatus { kOk, kPartial, kInfeasible };
 std::string_view PlanStatusName(PlanStatus s);
 
 struct DofPlan {
   model::Dof dof = model::Dof::kSurge;
-  /// kOk: at least one trial planned; `complete` also says every requested part was.
+  /// kOk: at least one trial planned; `complete` also says its trials determine every
+  /// parameter of interest (`determinacy`).
   DesignStatus status = DesignStatus::kFailed;
   bool complete = false;
+  Determinacy determinacy;
   std::string message;
   std::vector<PlannedTrial> trials;
   std::vector<TrialCheck> checks;
   PredictedPrecision predicted;
-  /// Free travel (m or rad) the DOF's smallest useful trial needs; NaN when it was planned.
+  /// Free travel (m or rad) the DOF's smallest useful trial needs (at least the largest span of
+  /// its planned trials); NaN when it was completely planned.
   double required_travel = 0.0;
   std::vector<std::string> notes;
 };
