@@ -1,7 +1,10 @@
 // `uuvplan check-pool VEHICLE --pool POOL [--plan PLAN.json] [--json F]`: can this pool host the
 // trials of a plan (or the planner's own schedule for this pool), which constraint fails and by
 // how much, the smallest pool that hosts them, and the best schedule that fits the given pool
-// with the information it loses (docs/planning.md). Exit status 1 when the pool cannot host it.
+// with the information it loses (docs/planning.md). The answer and exit status are the pool
+// verdict (planner/pool_verdict.h), the same as `schedule`'s for the same vehicle, pool and
+// DOFs: 1 when the pool cannot host the identification of every DOF asked for (a plan that
+// leaves out a DOF the planner cannot plan here does not make it hostable), 2 bad input.
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -13,7 +16,11 @@
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/planner/pool_check.h"
 #include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/pool_verdict.h"
 #include "uuvplan/planner/schedule_planner.h"
+#include "uuvplan/io/pool_verdict_json.h"
+#include "uuvplan/model/util/text.h"
+#include "verdict_text.h"
 
 namespace uuvplan::tool {
 namespace {
@@ -23,15 +30,16 @@ struct CheckPoolCliOptions {
   std::string pool;
   std::string plan;
   std::string json;
+  std::vector<std::string> dofs;
   planner::PoolCheckOptions check;  ///< --max-duration bound here
 };
 
-// The trials to check: the plan file's, or the planner's own schedule for this pool (then
-// `own` holds it and `own_partial` says whether some DOF could not be planned).
+// The trials to check: the plan file's, or the planner's own schedule for this pool; `own` is
+// the planner's schedule of the DOFs asked for either way (the verdict judges it).
 struct TrialsToCheck {
   planner::Schedule plan;
   planner::ScheduleResult own;
-  bool own_partial = false;
+  bool plan_given = false;
 };
 
 // Every trial of a plan file must use a mapping of the vehicle that acts on the trial's DOF.
@@ -51,80 +59,52 @@ void CheckPlanMappings(const planner::Schedule& plan, const model::Vehicle& vehi
 }
 
 TrialsToCheck ChooseTrials(const CheckPoolCliOptions& o, const model::Vehicle& vehicle,
-                           const model::Pool& pool) {
+                           const model::Pool& pool, const planner::ScheduleOptions& so) {
   TrialsToCheck t;
-  if (!o.plan.empty()) {
+  t.own = planner::PlanSchedule(vehicle, pool, so);
+  t.plan_given = !o.plan.empty();
+  if (t.plan_given) {
     t.plan = io::ReadScheduleJson(o.plan);
     CheckPlanMappings(t.plan, vehicle, o.plan);
   } else {
-    t.own = planner::PlanSchedule(vehicle, pool, o.check.schedule);
     t.plan = t.own.schedule;
-    t.own_partial = t.own.status != planner::PlanStatus::kOk;
   }
   return t;
 }
 
 void PrintTrialChecks(const planner::PoolCheckResult& r, std::ostream& out) {
   for (const auto& t : r.trials) {
+    const std::string unit(model::PositionUnit(t.dof));
     out << "  " << std::left << std::setw(18) << t.id
-        << (t.check.feasible ? "fits" : "DOES NOT FIT") << std::right << std::fixed
-        << std::setprecision(2) << "   travel [" << t.check.travel[0] << ", " << t.check.travel[1]
-        << "], |tau|min " << t.check.thrust_min << " N\n";
+        << (t.check.feasible ? "fits" : "DOES NOT FIT") << std::right << "   travel ["
+        << model::Significant(t.check.travel[0], 4) << ", "
+        << model::Significant(t.check.travel[1], 4) << "] " << unit << ", |tau|min "
+        << model::Significant(t.check.thrust_min, 4) << " N\n";
     for (const auto& reason : t.check.reasons) out << "      - " << reason << "\n";
-  }
-}
-
-// The extent asked of the pool along each axis that some trial moves on.
-void PrintRequiredPool(const planner::PoolCheckResult& r, std::ostream& out) {
-  bool axis[3] = {false, false, false};
-  for (const auto& t : r.trials) {
-    if (t.dof == model::Dof::kSurge) axis[0] = true;
-    if (t.dof == model::Dof::kSway) axis[1] = true;
-    if (t.dof == model::Dof::kHeave) axis[2] = true;
-  }
-  out << std::defaultfloat << "\nSmallest pool that hosts these trials (margins included):";
-  if (axis[0]) out << " length " << r.required_length << " m";
-  if (axis[1]) out << " width " << r.required_width << " m";
-  if (axis[2]) out << " depth " << r.required_depth << " m";
-  if (!axis[0] && !axis[1] && !axis[2]) out << " any (rotations only)";
-  out << "\n";
-}
-
-// Why the planner's own schedule leaves some DOF out, and the travel it would need.
-void PrintNotPlanned(const planner::ScheduleResult& own, const model::Pool& pool,
-                     std::ostream& out) {
-  for (const auto& d : own.dofs) {
-    if (d.complete) continue;
-    out << "\n" << d.message << "\n";
-    if (d.required_travel > 0) {
-      out << "  (the smallest useful " << model::DofName(d.dof) << " trial needs "
-          << d.required_travel << " of free travel, i.e. "
-          << pool.WallToWallFor(d.required_travel) << " with the margins)\n";
-    }
   }
 }
 
 void PrintAlternative(const planner::PoolCheckResult& r, std::ostream& out) {
   out << "\nBest schedule that fits this pool: " << planner::PlanStatusName(r.alternative.status)
       << ", " << r.alternative.schedule.trials.size() << " trials, pool time "
-      << r.alternative.schedule.pool_time << " s\n";
+      << model::Significant(r.alternative.schedule.pool_time, 4) << " s\n";
   for (const auto& t : r.alternative.schedule.trials) {
     out << "  " << std::left << std::setw(18) << t.design.id << std::right
         << model::TrialKindName(t.design.kind) << " " << t.design.mapping << ", "
-        << t.design.duration << " s\n";
+        << model::Significant(t.design.duration, 4) << " s\n";
   }
   for (const auto& d : r.alternative.dofs) {
     if (!d.complete && !d.message.empty()) out << "  " << d.message << "\n";
   }
   for (const auto& [dof, loss] : r.information_loss) {
-    out << "  information lost on " << model::DofName(dof) << ": " << std::setprecision(3)
-        << 100.0 * loss << "% (1 - D-efficiency against the plan)\n";
+    out << "  information lost on " << model::DofName(dof) << ": "
+        << model::Significant(100.0 * loss, 3) << "% (1 - D-efficiency against the plan)\n";
   }
 }
 
-// {"feasible", "trials": [...], "required": {...}, "not_planned"?: {...}, "fits"?: {...}}.
-nlohmann::json CheckPoolJson(const planner::PoolCheckResult& r, const TrialsToCheck& checked,
-                             bool feasible, const model::Pool& pool) {
+// {"feasible", "trials": [...], "required": {...}, "verdict": {...}, "fits"?: {...}}.
+nlohmann::json CheckPoolJson(const planner::PoolCheckResult& r,
+                             const planner::PoolVerdict& verdict, const model::Pool& pool) {
   nlohmann::json trials = nlohmann::json::array();
   for (const auto& t : r.trials) {
     trials.push_back({{"id", t.id},
@@ -132,23 +112,12 @@ nlohmann::json CheckPoolJson(const planner::PoolCheckResult& r, const TrialsToCh
                       {"feasible", t.check.feasible},
                       {"reasons", t.check.reasons},
                       {"travel", {t.check.travel[0], t.check.travel[1]}},
+                      {"travel_unit", std::string(model::PositionUnit(t.dof))},
                       {"thrust_min", t.check.thrust_min}});
   }
-  nlohmann::json j = {
-      {"feasible", feasible},
-      {"trials", trials},
-      {"required",
-       {{"length", r.required_length}, {"width", r.required_width}, {"depth", r.required_depth}}}};
-  if (checked.own_partial) {
-    nlohmann::json missing = nlohmann::json::object();
-    for (const auto& d : checked.own.dofs) {
-      if (d.complete) continue;
-      nlohmann::json m = {{"message", d.message}};
-      if (d.required_travel > 0) m["required_pool"] = pool.WallToWallFor(d.required_travel);
-      missing[std::string(model::DofName(d.dof))] = m;
-    }
-    j["not_planned"] = missing;
-  }
+  nlohmann::json v = io::PoolVerdictJson(verdict, pool);
+  nlohmann::json j = {{"feasible", verdict.hosted}, {"trials", trials},
+                      {"required", v["required"]}, {"verdict", v}};
   if (r.has_alternative) {
     nlohmann::json alt = io::ScheduleToJson(r.alternative.schedule);
     alt["status"] = std::string(planner::PlanStatusName(r.alternative.status));
@@ -162,26 +131,36 @@ nlohmann::json CheckPoolJson(const planner::PoolCheckResult& r, const TrialsToCh
 int RunCheckPool(const CheckPoolCliOptions& o) {
   const model::Vehicle vehicle = io::ReadVehicle(o.vehicle);
   const model::Pool pool = io::ReadPool(o.pool);
-  const TrialsToCheck checked = ChooseTrials(o, vehicle, pool);
-  const planner::PoolCheckResult r = planner::CheckPool(vehicle, pool, checked.plan, o.check);
-  const bool feasible = r.feasible && !checked.own_partial;
+  planner::PoolCheckOptions check = o.check;
+  check.schedule.dofs = ParseDofFlags(o.dofs);
+  for (const model::Dof dof : check.schedule.dofs) {
+    if (vehicle.MappingsOf(dof).empty() || !vehicle.sensors.count(dof)) {
+      throw model::InputError(o.vehicle, "--dof " + std::string(model::DofName(dof)) +
+                                             ": the vehicle has no mapping or no sensor on it");
+    }
+  }
+  const TrialsToCheck checked = ChooseTrials(o, vehicle, pool, check.schedule);
+  const planner::PoolCheckResult r = planner::CheckPool(vehicle, pool, checked.plan, check);
+  const planner::PoolVerdict verdict = planner::JudgePool(
+      vehicle, pool, check.schedule, checked.own, checked.plan_given ? &checked.plan : nullptr);
   std::ostream& out = ReportStream(o.json);
-  out << "Pool " << pool.name << " (" << pool.length << " x " << pool.width << " x " << pool.depth
-      << " m, margin " << pool.margin << " m) for " << vehicle.name << ", "
+  out << "Pool " << pool.name << " for " << vehicle.name << ", "
       << (o.plan.empty() ? "the planner's own schedule" : "plan " + o.plan) << ": "
-      << (feasible ? "CAN host it" : "CANNOT host it") << "\n\n";
+      << (verdict.hosted ? "CAN host it" : "CANNOT host it") << "\n\n";
   PrintTrialChecks(r, out);
-  PrintRequiredPool(r, out);
-  if (checked.own_partial) PrintNotPlanned(checked.own, pool, out);
+  PrintVerdict(verdict, pool, out);
   if (r.has_alternative) PrintAlternative(r, out);
-  if (!o.json.empty()) WriteJson(o.json, CheckPoolJson(r, checked, feasible, pool));
-  return feasible ? kExitOk : kExitActionNeeded;
+  if (!o.json.empty()) WriteJson(o.json, CheckPoolJson(r, verdict, pool));
+  return VerdictExit(verdict);
 }
 
 void BindCheckPool(CLI::App* sub, CheckPoolCliOptions* o) {
   sub->add_option("VEHICLE", o->vehicle, "vehicle file (YAML)")->required();
   sub->add_option("--pool", o->pool, "pool file (YAML)")->required();
   sub->add_option("--plan", o->plan, "schedule JSON (`uuvplan schedule --json`)");
+  sub->add_option("--dof", o->dofs,
+                  "DOF whose identification the pool must host (repeatable; default every DOF "
+                  "with a mapping and a sensor, as `schedule`)");
   AddJsonOption(sub, &o->json, "write the result");
   sub->add_option("--max-duration", o->check.schedule.planner.max_trial_duration_s,
                   "longest trial (s)")

@@ -1,9 +1,9 @@
 // `uuvplan schedule VEHICLE --pool POOL [--dof D]... [--json F]`: the test schedule of a vehicle
 // (a new payload) in a pool — steady runs and legs for drag and installation coefficients, a
 // sine trial for the inertia, per DOF, robust over the a priori box (docs/planning.md).
-// Exit status: 0 every requested DOF fully planned; 1 some trials cannot be hosted by the pool
-// (the partial schedule is still printed and written, with what is missing and why);
-// 2 bad input.
+// Exit status (the pool verdict, planner/pool_verdict.h): 0 the pool hosts the identification
+// of every requested DOF; 1 it does not (the partial schedule is still printed and written, with
+// the verdict: per DOF the limit and its need, and the smallest pool); 2 bad input.
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -17,7 +17,12 @@
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/pool_verdict.h"
 #include "uuvplan/planner/schedule_planner.h"
+#include "uuvplan/io/pool_verdict_json.h"
+#include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/text.h"
+#include "verdict_text.h"
 
 namespace uuvplan::tool {
 namespace {
@@ -56,35 +61,44 @@ void CheckDofsPlannable(const std::vector<model::Dof>& dofs, const model::Vehicl
   }
 }
 
+std::string TravelText(const planner::PlannedTrial& t) {
+  std::ostringstream travel;
+  travel << std::fixed << std::setprecision(2) << "[" << t.travel[0] << ", " << t.travel[1]
+         << "] " << model::PositionUnit(t.design.dof);
+  return travel.str();
+}
+
 void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
                    const model::Pool& pool, std::ostream& out) {
   out << "Schedule for " << v.name << " in pool " << pool.name
-      << " (free: " << pool.FreeTravel(model::Dof::kSurge) << " m length, "
-      << pool.FreeTravel(model::Dof::kSway) << " m width, " << pool.FreeTravel(model::Dof::kHeave)
-      << " m depth): " << planner::PlanStatusName(r.status) << "\n\n";
+      << " (free, walls less 2·" << model::Significant(pool.margin, 4) << " m margin: "
+      << model::Significant(pool.FreeTravel(model::Dof::kSurge), 4) << " m length, "
+      << model::Significant(pool.FreeTravel(model::Dof::kSway), 4) << " m width, "
+      << model::Significant(pool.FreeTravel(model::Dof::kHeave), 4) << " m depth; tether "
+      << model::Significant(pool.max_turns, 4) << " turns): " << planner::PlanStatusName(r.status)
+      << "\n\n";
   out << std::left << std::setw(17) << "id" << std::setw(9) << "kind" << std::setw(22) << "mapping"
       << std::right << std::setw(8) << "T (s)"
-      << "  " << std::left << std::setw(17) << "travel" << std::right << std::setw(9) << "|tau|min"
-      << "  force\n";
+      << "  " << std::left << std::setw(21) << "travel (m or rad)" << std::right << std::setw(11)
+      << "|tau|min N"
+      << "  force (N or N·m)\n";
   for (const auto& t : r.schedule.trials) {
     const auto& d = t.design;
-    std::ostringstream travel;
-    travel << std::fixed << std::setprecision(2) << "[" << t.travel[0] << ", " << t.travel[1]
-           << "]";
     out << std::left << std::setw(17) << d.id << std::setw(9) << model::TrialKindName(d.kind)
         << std::setw(22) << d.mapping << std::right << std::fixed << std::setprecision(1)
-        << std::setw(8) << d.duration << "  " << std::left << std::setw(17) << travel.str()
-        << std::right << std::setw(9) << std::setprecision(2) << t.thrust_min << "  "
-        << ForceText(d, kScheduleForceStyle)
-        << "\n";
+        << std::setw(8) << d.duration << "  " << std::left << std::setw(21) << TravelText(t)
+        << std::right << std::setw(11) << std::setprecision(2) << t.thrust_min << "  "
+        << ForceText(d, kScheduleForceStyle) << "\n";
   }
-  out << "\nPredicted 1σ (worst over the a priori box) and robust D criterion:\n";
+  out << "\nPredicted 1σ (worst over the a priori box) and robust D criterion (log det of the "
+         "relative information):\n";
   for (const auto& [dof, p] : r.schedule.predicted) {
     out << "  " << std::left << std::setw(6) << model::DofName(dof) << std::right << " D "
-        << std::setprecision(2) << p.criterion_value << ":";
-    for (const auto& [name, s] : p.sigma)
-      out << "  " << name << " " << std::setprecision(3) << std::defaultfloat << s;
-    out << std::fixed << "\n";
+        << model::Significant(p.criterion_value, 4) << ":";
+    for (const auto& [name, s] : p.sigma) {
+      out << "  " << name << " " << model::Significant(s, 3) << " " << model::Unit(name, dof);
+    }
+    out << "\n";
   }
   out << std::fixed << std::setprecision(0) << "\nPool time: " << r.schedule.pool_time << " s ("
       << std::setprecision(1) << r.schedule.pool_time / 60.0 << " min, pauses included), "
@@ -104,24 +118,19 @@ void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
 
 // {schedule..., "status", "notes": [...], "not_planned": {<dof>: {"message", "required_travel",
 // "required_pool"}}} (docs/cli.md, the schedule JSON).
-nlohmann::json ScheduleResultJson(const planner::ScheduleResult& r, const model::Pool& pool) {
+nlohmann::json ScheduleResultJson(const planner::ScheduleResult& r,
+                                  const planner::PoolVerdict& verdict, const model::Pool& pool) {
   nlohmann::json j = io::ScheduleToJson(r.schedule);
   j["status"] = std::string(planner::PlanStatusName(r.status));
   nlohmann::json notes = nlohmann::json::array();
   nlohmann::json missing = nlohmann::json::object();
   for (const auto& d : r.dofs) {
     for (const auto& n : d.notes) notes.push_back(n);
-    if (!d.complete) {
-      nlohmann::json m = {{"message", d.message}};
-      if (d.required_travel > 0) {
-        m["required_travel"] = d.required_travel;
-        m["required_pool"] = pool.WallToWallFor(d.required_travel);
-      }
-      missing[std::string(model::DofName(d.dof))] = m;
-    }
+    if (!d.complete) missing[std::string(model::DofName(d.dof))] = {{"message", d.message}};
   }
   j["notes"] = notes;
   if (!missing.empty()) j["not_planned"] = missing;
+  j["verdict"] = io::PoolVerdictJson(verdict, pool);
   return j;
 }
 
@@ -135,9 +144,12 @@ int RunSchedule(const ScheduleCliOptions& o) {
   std::string error;
   if (!so.IsValid(&error)) throw model::InputError("options", error);
   const planner::ScheduleResult r = planner::PlanSchedule(vehicle, pool, so);
-  PrintSchedule(r, vehicle, pool, ReportStream(o.json));
-  if (!o.json.empty()) WriteJson(o.json, ScheduleResultJson(r, pool));
-  return r.status == planner::PlanStatus::kOk ? kExitOk : kExitActionNeeded;
+  const planner::PoolVerdict verdict = planner::JudgePool(vehicle, pool, so, r, nullptr);
+  std::ostream& out = ReportStream(o.json);
+  PrintSchedule(r, vehicle, pool, out);
+  PrintVerdict(verdict, pool, out);
+  if (!o.json.empty()) WriteJson(o.json, ScheduleResultJson(r, verdict, pool));
+  return VerdictExit(verdict);
 }
 
 void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {

@@ -1,0 +1,89 @@
+// One feasibility model, one verdict: can this pool host the identification of these DOFs
+// (every parameter of interest determined, determinacy.h), and if not, what is the smallest pool
+// that would. `schedule`, `check-pool` (with and without a plan), `next`, `demo` and the start of
+// `loop` all print JudgePool's answer and exit on `hosted`.
+//
+// Per DOF: hosted when the planner's own schedule for the pool determines every parameter of
+// interest (its steady runs, its sine and the loop's families, schedule_planner.h) and, for a
+// given plan, every trial of the plan passes the hard constraints (DofContext::Check: thrusters,
+// no reversal, free length/width/depth over the a priori box, tether turns, duration). Otherwise
+// the limit that stops it and the DOF's need: the free travel (m, or rad of a rotation) with
+// which it would be hosted, checked by planning it again in a pool that offers it.
+// `required` covers EVERY DOF asked for, planned or not: per axis the largest of every trial's
+// extent (planned and given) and every DOF's need, wall to wall (+ 2·margin); for rotations
+// the tether's turns.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "uuvplan/model/pool.h"
+#include "uuvplan/model/vehicle.h"
+#include "uuvplan/planner/pool_check.h"
+#include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/schedule_planner.h"
+
+namespace uuvplan::planner {
+
+/// What stops a DOF: a side of the pool (free length/width/depth), the tether's turns, the
+/// thrust range (min_thrust against the largest thrust or the speed limit), no propeller
+/// reversal, the trial duration limit, or information (trials fit but do not determine it).
+enum class PoolLimit { kNone, kLength, kWidth, kDepth, kTether, kThrust, kNoReversal, kDuration,
+                       kInformation };
+std::string_view PoolLimitName(PoolLimit limit);
+
+struct DofVerdict {
+  model::Dof dof = model::Dof::kSurge;
+  bool hosted = false;
+  PoolLimit limit = PoolLimit::kNone;
+  std::string reason;  ///< why not hosted (empty when hosted)
+  /// Largest travel span of the DOF's trials in this pool (planned and given), free travel:
+  /// m for a translation, rad for a rotation.
+  double extent = 0.0;
+  /// Free travel (m or rad) with which the DOF is hosted: `extent` when hosted; +inf when no
+  /// pool size lifts the limit (thrust range, no reversal, duration).
+  double need = 0.0;
+  bool need_verified = false;  ///< a pool offering `need` was planned and hosts the DOF
+  Determinacy determinacy;     ///< of the planner's own schedule in this pool
+};
+
+/// Smallest pool that hosts every DOF asked for (wall to wall, m) and the tether turns.
+struct RequiredPool {
+  double length = 0.0, width = 0.0, depth = 0.0;  ///< m, wall to wall (free + 2·margin)
+  double turns = 0.0;                              ///< full turns about roll, pitch or yaw
+  bool exists = true;  ///< false: some DOF is limited by something no pool size lifts
+};
+
+struct PoolVerdict {
+  bool hosted = false;
+  std::vector<DofVerdict> dofs;
+  RequiredPool required;
+  bool plan_given = false;
+  std::vector<TrialPoolCheck> plan_checks;  ///< the given plan's trials, checked in this pool
+  std::string sentence;                     ///< one line: hosted or not, and why
+};
+
+struct VerdictOptions {
+  /// Re-plan a non-hosted DOF in a pool offering its need to confirm it (up to this many
+  /// enlargements by 1.5×). CHOSEN 2: the first guess (the largest failing run) usually holds.
+  int need_checks = 2;
+};
+
+/// The verdict for `own`, the planner's schedule of these DOFs in `pool` (PlanSchedule with
+/// `options`), and optionally a given plan (null: none).
+PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
+                      const ScheduleOptions& options, const ScheduleResult& own,
+                      const Schedule* plan, const VerdictOptions& verdict = {});
+
+/// The same, planning `own` first.
+PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
+                      const ScheduleOptions& options, const Schedule* plan = nullptr,
+                      const VerdictOptions& verdict = {});
+
+/// The verdict as readable lines (units on every number, free vs wall to wall said), the
+/// first being `sentence`; the same in every command.
+std::vector<std::string> VerdictLines(const PoolVerdict& verdict, const model::Pool& pool);
+
+}  // namespace uuvplan::planner
