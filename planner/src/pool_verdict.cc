@@ -242,12 +242,18 @@ std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& p
   for (const auto& d : v.dofs) out.push_back(DofLine(d, pool));
   std::ostringstream r;
   const RequiredPool& q = v.required;
-  r << "  smallest pool that hosts every DOF asked for: " << Fmt(q.length, 4) << " x "
-    << Fmt(q.width, 4) << " x " << Fmt(q.depth, 4) << " m wall to wall (free "
-    << Fmt(q.length - 2 * pool.margin, 4) << " x " << Fmt(q.width - 2 * pool.margin, 4) << " x "
-    << Fmt(q.depth - 2 * pool.margin, 4) << " m with the " << Fmt(pool.margin, 4)
-    << " m margin), tether " << Fmt(q.turns, 4) << " turns"
-    << (q.exists ? "" : "; but some DOF is limited by what no pool size lifts (see above)");
+  r << "  smallest pool that hosts every DOF asked for:";
+  bool rotation = false;
+  for (const auto& d : v.dofs) {
+    const double wall = d.dof == model::Dof::kSurge ? q.length
+                        : d.dof == model::Dof::kSway ? q.width : q.depth;
+    rotation = rotation || model::IsRotational(d.dof);
+    if (model::IsRotational(d.dof)) continue;
+    r << " " << model::Pool::SideName(d.dof) << " " << Fmt(wall, 4) << " m wall to wall ("
+      << Fmt(wall - 2 * pool.margin, 4) << " m free);";
+  }
+  if (rotation) r << " tether " << Fmt(q.turns, 4) << " turns;";
+  r << (q.exists ? " the rest as this pool" : " but some DOF is limited by what no pool size lifts");
   out.push_back(r.str());
   return out;
 }

@@ -25,6 +25,8 @@
 #include "uuvplan/io/virtual_campaign.h"
 #include "uuvplan/planner/design_loop.h"
 #include "uuvplan/planner/pool_check.h"
+#include "uuvplan/planner/pool_verdict.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/schedule_planner.h"
 
@@ -166,9 +168,12 @@ void ShowAprioriSchedule(const model::Truth& truth, const model::Pool& pool) {
   so.dofs = {model::Dof::kSurge};
   const planner::ScheduleResult schedule = planner::PlanSchedule(truth.vehicle, pool, so);
   std::cout << "1. A priori surge schedule in pool '" << pool.name << "' ("
-            << pool.FreeTravel(model::Dof::kSurge) << " m free), robust over m in ["
-            << truth.vehicle.InertiaBounds(model::Dof::kSurge)[0] << ", "
-            << truth.vehicle.InertiaBounds(model::Dof::kSurge)[1] << "] kg:\n";
+            << model::Significant(pool.FreeTravel(model::Dof::kSurge), 4)
+            << " m of free length, " << model::Significant(pool.length, 4)
+            << " m wall to wall), robust over m in ["
+            << model::Significant(truth.vehicle.InertiaBounds(model::Dof::kSurge)[0], 4) << ", "
+            << model::Significant(truth.vehicle.InertiaBounds(model::Dof::kSurge)[1], 4)
+            << "] kg:\n";
   for (const auto& t : schedule.schedule.trials) {
     const auto& d = t.design;
     std::cout << "   " << std::left << std::setw(14) << d.id << std::right << std::setw(9)
@@ -177,10 +182,12 @@ void ShowAprioriSchedule(const model::Truth& truth, const model::Pool& pool) {
               << t.travel[1] << "] m\n";
   }
   for (const auto& [dof, pred] : schedule.schedule.predicted) PrintSigmaColumns(pred);
-  const planner::PoolCheckResult check =
-      planner::CheckPool(truth.vehicle, pool, schedule.schedule, planner::PoolCheckOptions{});
-  std::cout << "   pool check: " << (check.feasible ? "the pool hosts every trial" : "NOT feasible")
-            << " (needs length " << std::setprecision(1) << check.required_length << " m)\n\n";
+  const planner::PoolVerdict verdict =
+      planner::JudgePool(truth.vehicle, pool, so, schedule, &schedule.schedule);
+  for (const auto& line : planner::VerdictLines(verdict, pool)) {
+    std::cout << "   " << line << "\n";
+  }
+  std::cout << "\n";
 }
 
 // 2. The design–identify loop on the virtual ROMEO.

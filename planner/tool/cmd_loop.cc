@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "command.h"
+#include "uuvplan/planner/pool_verdict.h"
+#include "verdict_text.h"
 #include "identify_table.h"
 #include "uuvplan/io/identify_json.h"
 #include "loop_report.h"
@@ -163,6 +165,18 @@ int RunLoopCommand(const LoopCliOptions& o) {
       << " trials, seed " << lo.seed << ")\n"
       << "Parameters of interest: m; kq where significant, else k; every η "
          "(* = above the target)\n\n";
+  // Before any trial: the pool verdict (planner/pool_verdict.h) on the loop's DOFs; a pool that
+  // cannot host them is refused with schedule's sentence and exit status.
+  planner::ScheduleOptions so = lo.step.schedule;
+  so.dofs = lo.step.dofs;
+  if (so.dofs.empty()) {
+    for (const auto& [dof, params] : truth.dofs) so.dofs.push_back(dof);
+  }
+  const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
+  if (!verdict.hosted) {
+    PrintVerdict(verdict, pool, out);
+    return VerdictExit(verdict);
+  }
   const planner::LoopResult r = planner::RunLoop(
       truth, pool, lo,
       [&](const planner::LoopIteration& it) { PrintIteration(it, target, o.verbose, out); });

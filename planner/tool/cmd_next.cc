@@ -3,8 +3,11 @@
 // knowledge of the design (box = estimates ± 2σ, prior information = covariance⁻¹) and plan the
 // single most informative next trial (planner/design_loop.h, docs/loop.md) — what a pool team
 // runs between two trials. The result can be run with `simulate --plan` (its "trial").
-// Exit status: 0 a trial is planned, or every parameter of interest is already below the
-// target (then "trial" is null); 1 no trial that is still needed fits the pool; 2 bad input.
+// Exit status: 0 a trial is planned and the pool hosts the identification of the DOFs driven
+// (the pool verdict, planner/pool_verdict.h, printed as `schedule` prints it), or every
+// parameter of interest is already below the target (then "trial" is null); 1 no trial that is
+// still needed fits the pool, or the pool verdict says it cannot host them (the best next trial
+// is still printed); 2 bad input.
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -17,8 +20,11 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
+#include "uuvplan/io/pool_verdict_json.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design_loop.h"
+#include "uuvplan/planner/pool_verdict.h"
+#include "verdict_text.h"
 
 namespace uuvplan::tool {
 namespace {
@@ -105,9 +111,20 @@ int RunNext(const NextCliOptions& o) {
   planner::DesignLoopOptions options = o.design;
   options.dofs = ParseDofFlags(o.dofs);
   const planner::NextStepResult r = planner::NextStep(campaign, pool, options);
-  PrintNextStep(r, campaign, pool, o, ReportStream(o.json));
-  if (!o.json.empty()) WriteJson(o.json, NextStepJson(r, o.design.target_percent));
-  return r.status == planner::NextStatus::kInfeasible ? kExitActionNeeded : kExitOk;
+  // The pool verdict of the DOFs driven (schedule's and check-pool's answer for them).
+  planner::ScheduleOptions so = options.schedule;
+  for (const auto& p : r.progress) so.dofs.push_back(p.dof);
+  const planner::PoolVerdict verdict = planner::JudgePool(campaign.vehicle, pool, so);
+  std::ostream& out = ReportStream(o.json);
+  PrintNextStep(r, campaign, pool, o, out);
+  PrintVerdict(verdict, pool, out);
+  if (!o.json.empty()) {
+    nlohmann::json j = NextStepJson(r, o.design.target_percent);
+    j["verdict"] = io::PoolVerdictJson(verdict, pool);
+    WriteJson(o.json, j);
+  }
+  if (r.status == planner::NextStatus::kInfeasible) return kExitActionNeeded;
+  return r.status == planner::NextStatus::kConverged ? kExitOk : VerdictExit(verdict);
 }
 
 void BindNext(CLI::App* sub, NextCliOptions* o) {
