@@ -181,8 +181,7 @@ PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
   out.required = Required(pool, out.dofs);
   std::ostringstream s;
   s << "Pool " << pool.name << (out.hosted ? " CAN" : " CANNOT") << " host the identification of "
-    << (out.hosted ? DofList(out.dofs, true) : DofList(out.dofs, false))
-    << (out.plan_given ? " (with the given plan)" : "");
+    << (out.hosted ? DofList(out.dofs, true) : DofList(out.dofs, false));
   if (own.dofs.empty()) s << ": " << own.message;
   out.sentence = s.str();
   return out;

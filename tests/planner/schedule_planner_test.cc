@@ -2,6 +2,7 @@
 // `schedule` / `check-pool` commands' exit statuses and JSON.
 #include "uuvplan/planner/schedule_planner.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,10 +12,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "planner_test_util.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/pool_check.h"
 
 namespace uuvplan::planner {
@@ -87,7 +90,7 @@ TEST_F(RomeoSchedule, SurgeScheduleFitsItsPoolAndA6mPoolIsRefused) {
   for (const auto& t : no.trials) {
     if (t.check.feasible) continue;
     ASSERT_FALSE(t.check.reasons.empty());
-    said = said || t.check.reasons.front().find("exceeds the 3 m free along the pool length") !=
+    said = said || t.check.reasons.front().find("exceeds the 3 m of free length (6 m wall to wall") !=
                        std::string::npos;
   }
   EXPECT_TRUE(said);
@@ -105,14 +108,15 @@ TEST_F(RomeoSchedule, PriorInformationReducesThePredictedSigma) {
   // An earlier trial that measured m to 1% (σ = 8 kg at ~700 kg) adds to every design.
   ScheduleOptions o = SurgeOnly();
   o.steady_runs = false;
+  o.max_completion_trials = 0;  // the sine alone leaves the η undetermined: partial, planned
   ScheduleResult without = PlanSchedule(*vehicle_, *pool_, o);
   PriorInformation prior;
   prior.names = {"m"};
   prior.M = Eigen::MatrixXd::Constant(1, 1, 1.0 / 64.0);
   o.prior[model::Dof::kSurge] = prior;
   ScheduleResult with = PlanSchedule(*vehicle_, *pool_, o);
-  ASSERT_EQ(without.status, PlanStatus::kOk) << without.message;
-  ASSERT_EQ(with.status, PlanStatus::kOk) << with.message;
+  ASSERT_NE(without.status, PlanStatus::kInfeasible) << without.message;
+  ASSERT_NE(with.status, PlanStatus::kInfeasible) << with.message;
   EXPECT_LT(with.schedule.predicted.at(model::Dof::kSurge).sigma.at("m"),
             without.schedule.predicted.at(model::Dof::kSurge).sigma.at("m"));
 }
@@ -168,40 +172,40 @@ TEST_F(RomeoSchedule, NextTrialWithoutEstimatesIsDesigned) {
   EXPECT_TRUE(r.predicted.sigma.count("m"));
 }
 
-TEST_F(RomeoSchedule, WholeRomeoScheduleSaysHeaveDoesNotFit) {
-  // Heave: 2 m of free depth (cases/romeo/pool.yaml); the seed ran heave under the Antarctic ice.
+TEST_F(RomeoSchedule, WholeRomeoScheduleDeterminesHeaveWithTheLoopsFamilies) {
+  // Heave: 2 m of free depth (cases/romeo/pool.yaml) hosts no settled steady run (the smallest
+  // travels 5.1 m), but the loop's next-trial families — a run from rest and sines — fit and
+  // determine m, k and the η (issue #13 item 2: what the loop can determine the schedule must
+  // not call undeterminable). The steady failure stays in the notes.
   ScheduleOptions o;
   const ScheduleResult r = PlanSchedule(*vehicle_, *pool_, o);
-  EXPECT_EQ(r.status, PlanStatus::kPartial) << r.message;
+  EXPECT_EQ(r.status, PlanStatus::kOk) << r.message;
   ASSERT_EQ(r.dofs.size(), 4u);  // surge, sway, heave, yaw: the DOFs with mappings and sensors
   for (const auto& d : r.dofs) {
-    if (d.dof == model::Dof::kHeave) {
-      EXPECT_FALSE(d.complete);
-      EXPECT_NE(d.message.find("heave"), std::string::npos);
-      EXPECT_GT(d.required_travel, 2.0);
-    } else {
-      EXPECT_TRUE(d.complete) << d.message;
-    }
+    EXPECT_TRUE(d.complete) << d.message;
+    EXPECT_TRUE(d.determinacy.determined) << model::Join(d.determinacy.undetermined);
+    if (d.dof != model::Dof::kHeave) continue;
+    bool completed = false;
+    for (const auto& t : d.trials) completed = completed || t.design.id.rfind("heave-more-", 0) == 0;
+    EXPECT_TRUE(completed);
+    EXPECT_THAT(d.notes, ::testing::Contains(::testing::HasSubstr("no steady run of heave fits")));
   }
 }
 
-TEST(UrisSchedule, RotationWithoutADragPriorSaysWhatIsMissing) {
-  // cases/uris gives no a priori drag; the bluff-body estimate of yaw is tiny (k ≈ 0.008), so
-  // the yaw torque of min_thrust (0.1 N·m) would spin URIS past the 0.35 rad/s rate limit.
-  // The schedule cannot plan yaw, and must say why with the numbers and what would fix it.
+TEST(UrisSchedule, RotationWithoutADragPriorPlansOnTheThrustScaledDrag) {
+  // cases/uris gives no a priori drag. The bluff-body fallback (k ≈ 0.004 for yaw, truth 2.1)
+  // made min_thrust spin URIS past the rate limit; the fallback from the thrust range says its
+  // assumption and yaw is planned.
   const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/uris/";
   ScheduleOptions o;
   o.dofs = {model::Dof::kYaw};
   const ScheduleResult r = PlanSchedule(io::ReadVehicle(dir + "vehicle.yaml"),
                                         io::ReadPool(dir + "pool.yaml"), o);
   ASSERT_EQ(r.dofs.size(), 1u);
-  EXPECT_EQ(r.dofs[0].status, DesignStatus::kInfeasible);
-  EXPECT_NE(r.dofs[0].message.find("min_thrust needs |phi| >= 0.1, which drives yaw beyond the "
-                                   "speed limit 0.35 rad/s"),
-            std::string::npos)
-      << r.dofs[0].message;
-  EXPECT_NE(r.dofs[0].message.find("give the vehicle file an a priori drag fit for yaw"),
-            std::string::npos);
+  EXPECT_TRUE(r.dofs[0].complete) << r.dofs[0].message;
+  EXPECT_THAT(r.dofs[0].notes,
+              ::testing::Contains(::testing::HasSubstr(
+                  "assumed that the largest thrust, 8 N·m, holds the vehicle at 1 rad/s")));
 }
 
 // The command line (UUVPLAN_BINARY): exit statuses and JSON of schedule and check-pool.
@@ -243,11 +247,46 @@ TEST(PlannerCli, ScheduleAndCheckPool) {
   const nlohmann::json c = nlohmann::json::parse(cin);
   EXPECT_FALSE(c["feasible"].get<bool>());
   EXPECT_GT(c["required"]["length"].get<double>(), 20.0);
+  EXPECT_EQ(c["required"]["unit"], "m");
+  EXPECT_EQ(c["required"]["measure"], "wall to wall");
+  EXPECT_EQ(c["verdict"]["dofs"]["surge"]["limit"], "length");
   EXPECT_FALSE(c["trials"][0]["reasons"].empty());
   EXPECT_TRUE(c.contains("fits"));
   // Bad input: exit 2.
   EXPECT_EQ(RunTool("schedule " + vehicle + " --pool " + pool + " --dof twist"), 2);
   EXPECT_EQ(RunTool("schedule " + (dir / "missing.yaml").string() + " --pool " + pool), 2);
+  fs::remove_all(dir);
+}
+
+// The same inputs, one answer: schedule, check-pool (own and --plan) and the start of loop on
+// ROMEO surge in a 6 m pool all exit 1 with the same verdict sentence.
+TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("uuvplan_verdict_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path small = dir / "small.yaml";
+  std::ofstream(small) << "name: small\nlength: 6\nwidth: 12\ndepth: 5\nmargin: 1.5\n";
+  const std::string v = testing::RomeoPath("vehicle.yaml"), p = " --pool " + small.string();
+  const std::string plan = (dir / "plan.json").string();
+  auto run = [&](const std::string& args, const std::string& name, std::string* text) {
+    const fs::path out = dir / name;
+    const std::string cmd = std::string(UUVPLAN_BINARY) + " " + args + " > " + out.string() + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(out);
+    text->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  const std::string sentence = "Pool small CANNOT host the identification of surge";
+  std::string a, b, c, d;
+  EXPECT_EQ(run("schedule " + v + p + " --dof surge --json " + plan, "a.txt", &a), 1);
+  EXPECT_EQ(run("check-pool " + v + p + " --dof surge", "b.txt", &b), 1);
+  EXPECT_EQ(run("check-pool " + v + p + " --dof surge --plan " + plan, "c.txt", &c), 1);
+  EXPECT_EQ(run("loop --truth " + testing::RomeoPath("truth.yaml") + p + " --dof surge", "d.txt",
+                &d), 1);
+  for (const std::string* t : {&a, &b, &c, &d}) {
+    EXPECT_NE(t->find(sentence), std::string::npos) << *t;
+  }
   fs::remove_all(dir);
 }
 

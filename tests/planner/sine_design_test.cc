@@ -198,8 +198,11 @@ TEST(RomeoYawSine, RespectsMinThrustAndTheRateLimit) {
   ASSERT_EQ(r.status, DesignStatus::kOk) << r.message;
   const auto& d = r.trial.design;
   EXPECT_GE(r.trial.thrust_min, v.min_thrust - 1e-9);
-  // No pool limit on a rotation: the trial runs its longest (SineDesignOptions 120 s).
-  EXPECT_NEAR(d.duration, 120.0, 1e-9);
+  // A rotation is limited by the tether (pool max_turns, default 3 turns): the trial runs the
+  // longest that keeps its rotation over the box within 2π·3 rad, at most 120 s.
+  EXPECT_LE(d.duration, 120.0 + 1e-9);
+  EXPECT_LE(r.check.span, 2 * M_PI * model::Pool::kDefaultMaxTurns + 1e-9);
+  EXPECT_GT(r.check.span, 0.99 * 2 * M_PI * model::Pool::kDefaultMaxTurns);
   // The largest force keeps the steady yaw rate within 0.35 rad/s at the lowest box drag
   // (k = 28.6·0.7): |offset| + amplitude <= 0.35·20.02.
   EXPECT_LE(std::abs(d.offset) + d.amplitude, 0.35 * 28.6 * 0.7 + 1e-9);
@@ -214,13 +217,15 @@ TEST(RomeoYawSine, RespectsMinThrustAndTheRateLimit) {
 }
 
 TEST(VsorYawSine, NoRoomForASwingGivesALongSteadyRunAndSaysWhy) {
-  // VSOR yaw (cases/vsor): min_thrust 2 N on two thrusters of share 0.64282 needs 3.11 N·m; the
-  // 0.35 rad/s rate limit at the lowest a priori (bluff-body) drag caps the torque at 4.25 N·m.
+  // VSOR yaw (cases/vsor): min_thrust 2 N on two thrusters of share 0.64282 needs 3.11 N·m; with
+  // the small a priori drag given here (k 5.40, kq 54.0, ±50%: the bluff-body estimate the
+  // planner used before issue #13) the 0.35 rad/s rate limit caps the torque at 4.25 N·m.
   // After the schedule's steady runs, a run from rest beats any swing in that range on Ds(m)
   // (σ(m) 0.087 against 0.110 for 4.0 ± 0.8 N·m): the sine's optimum has no amplitude. It must
   // be reported as the steady run it is, with the reason, not as a sine of amplitude 0.
   const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/vsor/";
-  const model::Vehicle v = io::ReadVehicle(dir + "vehicle.yaml");
+  model::Vehicle v = io::ReadVehicle(dir + "vehicle.yaml");
+  v.priors[model::Dof::kYaw].drag = model::DragPrior{5.40225, 54.0225, 0.5};
   const model::Pool pool = io::ReadPool(dir + "pool.yaml");
   const auto ctx = DofContext::APriori(v, pool, model::Dof::kYaw, {}, nullptr);
   const ForceRange range = ctx->ForceRangeFor(v.MappingIndex("yaw-ht1-ht7"), +1);
