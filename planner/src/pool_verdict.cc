@@ -211,8 +211,10 @@ std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
   std::ostringstream s;
   s << "  " << model::DofName(v.dof) << ": ";
   if (v.hosted) {
-    s << "hosted; its trials span " << Travel(pool, v.dof, v.extent) << " of "
-      << Travel(pool, v.dof, pool.FreeTravel(v.dof));
+    const double free = pool.FreeTravel(v.dof);
+    s << "hosted; its trials span " << Fmt(v.extent, 4) << " of the "
+      << Travel(pool, v.dof, free)
+      << (model::IsRotational(v.dof) ? " the tether allows" : "");
     return s.str();
   }
   s << "NOT hosted (" << PoolLimitName(v.limit) << "): ";
