@@ -81,13 +81,7 @@ void ConsiderSteadyLegs(const DofContext& ctx, const SteadyDesignOptions& o,
                         const std::vector<Eigen::MatrixXd>& info, const std::string& id,
                         Candidate* best) {
   for (const SteadyLeg& leg : MakeSteadyCandidates(ctx, o).legs) {
-    model::TrialDesign d;
-    d.id = id;
-    d.dof = ctx.dof();
-    d.kind = model::TrialKind::kSteady;
-    d.mapping = leg.mapping;
-    d.force = leg.force;
-    d.duration = leg.duration();
+    const model::TrialDesign d = LegDesign(leg, ctx.dof(), id);
     std::vector<Eigen::MatrixXd> m = ctx.Information(d);
     const double c = RobustD(ctx, info, m);
     if (!(c > best->criterion + 1e-9)) continue;

@@ -246,13 +246,7 @@ struct NextCandidates {
   // A steady run from rest of `leg`, taken if it scores more than 1e-9 above the best (the
   // criteria are O(1..100) logs; a tie keeps the earlier candidate, the sine) and is feasible.
   void ConsiderSteady(const SteadyLeg& leg, NextTrialResult* result) {
-    model::TrialDesign d;
-    d.id = o.id;
-    d.dof = ctx.dof();
-    d.kind = model::TrialKind::kSteady;
-    d.mapping = leg.mapping;
-    d.force = leg.force;
-    d.duration = leg.duration();
+    const model::TrialDesign d = LegDesign(leg, ctx.dof(), o.id);
     std::vector<Eigen::MatrixXd> info = ctx.Information(d);
     std::vector<Eigen::MatrixXd> total = info;
     for (std::size_t j = 0; j < total.size(); ++j) total[j] += M0[j];

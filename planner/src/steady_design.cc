@@ -351,6 +351,17 @@ std::string DirName(const std::string& mapping, int sign) {
 
 }  // namespace
 
+model::TrialDesign LegDesign(const SteadyLeg& leg, model::Dof dof, const std::string& id) {
+  model::TrialDesign d;
+  d.id = id;
+  d.dof = dof;
+  d.kind = model::TrialKind::kSteady;
+  d.mapping = leg.mapping;
+  d.force = leg.force;
+  d.duration = leg.duration();
+  return d;
+}
+
 SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignOptions& o) {
   SteadyCandidates out;
   const auto& v = ctx.vehicle();

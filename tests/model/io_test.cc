@@ -525,6 +525,18 @@ TEST(ReadPoolTest, NameDefaultsToTheFileStemAndMarginToZero) {
   const Pool pool = ReadPool(dir.Write("tank.yaml", "length: 5\nwidth: 3\ndepth: 2\n"));
   EXPECT_EQ(pool.name, "tank");
   EXPECT_EQ(pool.margin, 0.0);
+  EXPECT_EQ(pool.max_turns, Pool::kDefaultMaxTurns);  // the documented default, 3 turns
+}
+
+TEST(ReadPoolTest, MaxTurnsIsReadAndMustBePositive) {
+  ScratchDir dir;
+  EXPECT_EQ(ReadPool(dir.Write("t.yaml", "length: 5\nwidth: 3\ndepth: 2\nmax_turns: 1.5\n"))
+                .max_turns,
+            1.5);
+  EXPECT_THAT(ErrorOf([&] {
+                ReadPool(dir.Write("u.yaml", "length: 5\nwidth: 3\ndepth: 2\nmax_turns: 0\n"));
+              }),
+              HasSubstr("max_turns: expected a positive number, got '0'"));
 }
 
 TEST(ReadPoolTest, MissingDepth) {
@@ -553,7 +565,8 @@ TEST(ReadPoolTest, UnknownKey) {
   ScratchDir dir;
   dir.Edit("pool.yaml", "width: 12", "breadth: 12");
   EXPECT_THAT(ErrorOf([&] { ReadPool(dir.Path("pool.yaml")); }),
-              HasSubstr("unknown key 'breadth' (allowed: name, length, width, depth, margin)"));
+              HasSubstr("unknown key 'breadth' (allowed: name, length, width, depth, margin, "
+                        "max_turns)"));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -283,7 +283,12 @@ TEST(PoolTest, WallToWallAndFreeTravel) {
   EXPECT_DOUBLE_EQ(pool.WallToWall(Dof::kSway), 8.0);
   EXPECT_DOUBLE_EQ(pool.FreeTravel(Dof::kSurge), 18.0);
   EXPECT_DOUBLE_EQ(pool.WallToWallFor(pool.FreeTravel(Dof::kHeave)), 4.0);
-  EXPECT_TRUE(std::isinf(pool.FreeTravel(Dof::kYaw)));
+  // A rotation is bounded by the tether: 2π rad per turn, default 3 turns (docs/formats.md).
+  EXPECT_DOUBLE_EQ(pool.FreeTravel(Dof::kYaw), 2 * M_PI * Pool::kDefaultMaxTurns);
+  pool.max_turns = 1.5;
+  EXPECT_DOUBLE_EQ(pool.FreeTravel(Dof::kRoll), 3 * M_PI);
+  EXPECT_DOUBLE_EQ(pool.ExtentFor(Dof::kYaw, 3 * M_PI), 1.5);       // turns
+  EXPECT_DOUBLE_EQ(pool.ExtentFor(Dof::kHeave, 2.0), 4.0);          // m wall to wall
   EXPECT_EQ(Pool::SideName(Dof::kHeave), "depth");
 }
 

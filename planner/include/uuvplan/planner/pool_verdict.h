@@ -68,6 +68,7 @@ struct PoolVerdict {
 struct VerdictOptions {
   /// Re-plan a non-hosted DOF in a pool offering its need to confirm it (up to this many
   /// enlargements by 1.5×). CHOSEN 2: the first guess (the largest failing run) usually holds.
+  /// Negative: no confirmation (`need` stays the first guess, need_verified false).
   int need_checks = 2;
 };
 

@@ -71,6 +71,9 @@ struct SteadyDesignResult {
   std::vector<std::string> notes;
 };
 
+/// A leg as a trial of its own: a steady run from rest of `dof` named `id`.
+model::TrialDesign LegDesign(const SteadyLeg& leg, model::Dof dof, const std::string& id);
+
 /// Step 1 alone: the candidate legs (from rest) of every mapping and direction that fits.
 struct SteadyCandidates {
   std::vector<SteadyLeg> legs;
