@@ -52,14 +52,14 @@ struct BoxOptions {
   double eta_nominal = 0.8;
   /// Range of eta in constraint checks (seed 000: 0.56-0.89; 1 = open water).
   std::array<double, 2> eta_range = {0.5, 1.0};
-  /// Relative uncertainty assumed when a DOF has no a priori drag (bluff-body estimate).
+  /// Relative uncertainty assumed when a DOF has no a priori drag (model::DragOf's fallback).
   double fallback_drag_rel_sigma = 0.5;
 };
 
 /// The a priori box of `dof` for a model with parameters `parameter_names` (DofModel order).
-/// Without `dofs.<dof>.drag` in the vehicle, the drag is a bluff-body estimate
-/// (kq = ½·ρ·C_D·A, C_D = 1, A the frontal area of the box `size`; k = 0.1·kq·1 m/s) and a
-/// note saying so is appended to `notes`.
+/// Without `dofs.<dof>.drag` in the vehicle, the drag is model::DragOf's fallback (the drag
+/// that holds the vehicle at 1 m/s or 1 rad/s under its largest thrust) and a note saying so,
+/// model::DragAssumption, is appended to `notes`.
 ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
                         const std::vector<std::string>& parameter_names, const BoxOptions& options,
                         std::vector<std::string>* notes);
