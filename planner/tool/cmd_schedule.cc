@@ -116,8 +116,8 @@ void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
   }
 }
 
-// {schedule..., "status", "notes": [...], "not_planned": {<dof>: {"message", "required_travel",
-// "required_pool"}}} (docs/cli.md, the schedule JSON).
+// {schedule..., "status", "notes": [...], "not_planned": {<dof>: {"message"}}, "verdict": {...}}
+// (docs/cli.md; the needs and the required pool, with units, are the verdict's).
 nlohmann::json ScheduleResultJson(const planner::ScheduleResult& r,
                                   const planner::PoolVerdict& verdict, const model::Pool& pool) {
   nlohmann::json j = io::ScheduleToJson(r.schedule);
