@@ -3,8 +3,9 @@
 // knowledge of the design (box = estimates ± 2σ, prior information = covariance⁻¹) and plan the
 // single most informative next trial (planner/design_loop.h, docs/loop.md) — what a pool team
 // runs between two trials. The result can be run with `simulate --plan` (its "trial").
-// Exit status: 0 a trial is planned, or every parameter of interest is already below the
-// target (then "trial" is null); 1 no trial that is still needed fits the pool; 2 bad input.
+// Exit status (docs/cli.md): 0 a trial is planned, or the DOFs have converged (then "trial" is
+// null); 1 no trial that is still needed fits the pool; 2 bad input; 5 stuck (no trial the pool
+// allows adds information); 6 convergence refused (precise but non-physical or invalid).
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -71,6 +72,18 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
     case planner::NextStatus::kInfeasible:
       out << "No trial can be planned: " << r.message << "\n";
       break;
+    case planner::NextStatus::kStuck:
+      out << "No trial adds enough information: " << r.message << "\n";
+      break;
+    case planner::NextStatus::kRefused:
+      out << "Convergence refused: " << r.message << "\n";
+      break;
+  }
+  for (const auto& c : r.candidates) {
+    out << "Candidate " << c.trial << " (" << model::DofName(c.dof) << "): σ(" << c.parameter
+        << ") " << model::Significant(c.sigma_now, 3) << " → " << model::Significant(c.sigma_after, 3)
+        << ", about " << model::Significant(c.trials_to_target, 3) << " such trials to the target"
+        << (c.negligible ? " — negligible" : "") << "\n";
   }
   if (!r.notes.empty()) {
     out << "\nNotes:\n";
@@ -91,6 +104,8 @@ nlohmann::json NextStepJson(const planner::NextStepResult& r, double target) {
   j["source"] = r.source;
   j["target"] = target;
   j["progress"] = ProgressJson(r.progress);
+  j["candidates"] = CandidatesJson(r.candidates);
+  j["exit_status"] = ExitStatus(r.status);
   j["notes"] = r.notes;
   return j;
 }
@@ -107,7 +122,7 @@ int RunNext(const NextCliOptions& o) {
   const planner::NextStepResult r = planner::NextStep(campaign, pool, options);
   PrintNextStep(r, campaign, pool, o, ReportStream(o.json));
   if (!o.json.empty()) WriteJson(o.json, NextStepJson(r, o.design.target_percent));
-  return r.status == planner::NextStatus::kInfeasible ? kExitActionNeeded : kExitOk;
+  return ExitStatus(r.status);
 }
 
 void BindNext(CLI::App* sub, NextCliOptions* o) {
