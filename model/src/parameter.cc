@@ -39,7 +39,7 @@ const std::vector<ParameterFamily>& StandardFamilies() {
     };
     f[0].fit_lower = 0.0;  // m > 0: the DOF model divides by it
     f[0].fit_lower_open = true;
-    f[0].above_rigid_inertia = true;  // added mass is positive for a body in water
+    f[0].above_dry_mass = true;  // added mass is positive for a body in water
     return f;
   }();
   return families;

@@ -190,7 +190,7 @@ const DofProgress* ProgressOf(const std::vector<DofProgress>& progress, Dof dof)
 // information: a parameter of interest estimated for the first time, or gaining at least
 // min_information_ratio of its information, or the DOF converging (the trial confirmed it).
 void MeasureGain(const DofProgress* before, const LoopOptions& options, LoopIteration* it) {
-  for (const auto& [name, predicted] : it->predicted.sigma) {
+  for (const auto& [name, predicted] : it->at_estimates.sigma) {
     double achieved = std::numeric_limits<double>::quiet_NaN();
     for (const auto& e : it->params[it->dof]) {
       if (e.name == name && e.state == ident::ParameterState::kEstimated) achieved = e.sigma;
@@ -223,6 +223,7 @@ LoopIteration RunIteration(internal::Decision d, const LoopOptions& options,
   it.trial = d.trial;
   it.predicted = d.predicted;
   it.candidates = d.candidates;
+  it.at_estimates = d.at_estimates;
   it.notes = d.notes;
   it.start = builder->clock();
   builder->Append(d.trial.design);

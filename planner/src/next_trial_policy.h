@@ -52,7 +52,8 @@ struct Decision {
   model::Dof dof = model::Dof::kSurge;
   std::string source;
   PlannedTrial trial;
-  PredictedPrecision predicted;
+  PredictedPrecision predicted;     ///< the design's: the worst over its box
+  PredictedPrecision at_estimates;  ///< at the current estimates (the box's centre)
   std::vector<CandidateGain> candidates;
   std::vector<DofStop> stops;  ///< the DOFs that get no trial, and why
   std::vector<std::string> notes;

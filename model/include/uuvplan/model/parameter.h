@@ -46,11 +46,11 @@ struct ParameterFamily {
   bool fit_lower_open = false;
   /// Physically admissible identified values (issue #13: drag >= 0, 0 < η <= 1.2, m above the
   /// dry mass), where narrower than the file range [lower, upper]: the largest value a vehicle
-  /// can have (NaN: `upper`), and whether the value must exceed the vehicle's rigid-body
-  /// inertia in the DOF (Vehicle::RigidInertia: the dry mass, or its rotational inertia). An
+  /// can have (NaN: `upper`), and whether a translational value must exceed the vehicle's dry
+  /// mass (a rotational inertia in a vehicle file is computed, not weighed: no bound). An
   /// estimate outside is non-physical: a fit the loop must not converge on.
   double physical_upper = std::numeric_limits<double>::quiet_NaN();
-  bool above_rigid_inertia = false;
+  bool above_dry_mass = false;
 
   /// `value` is finite and within the fit's range.
   bool Fittable(double value) const {

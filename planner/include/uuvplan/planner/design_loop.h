@@ -143,8 +143,8 @@ DofProgress EvaluateProgress(const model::Vehicle& vehicle, model::Dof dof,
                              const ident::DofIdentification* previous = nullptr);
 
 /// "" when `value` of parameter `name` is physically admissible on `dof` of `vehicle` (its
-/// family's physical range, ParameterFamily::Physical; m above the rigid-body inertia where the
-/// vehicle gives it: the dry mass, a rotational inertia of the vehicle file), else why not.
+/// family's physical range, ParameterFamily::Physical; a translational m above the vehicle's
+/// dry mass), else why not.
 std::string NonPhysical(const model::Vehicle& vehicle, model::Dof dof, const std::string& name,
                         double value);
 
@@ -217,9 +217,10 @@ struct LoopIteration {
   PlannedTrial trial;
   PredictedPrecision predicted;  ///< what the design expected after the trial
   std::vector<CandidateGain> candidates;  ///< the gain of every DOF's candidate trial
-  /// Per parameter of the trial's DOF the design predicted σ for: [predicted, achieved] σ
-  /// after the trial (achieved NaN when not estimated).
+  /// Per parameter of the trial's DOF the design predicted σ for: [predicted at the estimates
+  /// before the trial, achieved] σ after the trial (achieved NaN when not estimated).
   std::map<std::string, std::array<double, 2>> sigma;
+  PredictedPrecision at_estimates;  ///< the trial's predicted σ at the estimates before it
   bool new_information = true;  ///< some parameter of interest gained information (see above)
   double start = 0.0;            ///< campaign clock at the trial's start (s)
   double pool_time = 0.0;        ///< pool time so far, this trial included (s)
