@@ -430,7 +430,8 @@ void NoTrial(Decision* d) {
 
 std::string ConvergedMessage(const DesignLoopOptions& options) {
   return "every parameter of interest is below " + Fmt(options.target_percent) +
-         "% percentile error: no further trial needed";
+         "% percentile error, physical, not an a priori fallback, validated and consistent "
+         "with the estimate before its newest trial: no further trial needed";
 }
 
 }  // namespace

@@ -46,8 +46,7 @@ std::string ThrustLimit(const model::Vehicle& vehicle, const PlannedTrial& trial
       if (range.feasible && std::abs(f) >= 0.95 * range.max_abs) {
         return "thrust range: the trial asks " + Fmt(std::abs(f)) + " " + unit + " of the " +
                Fmt(range.max_abs) + " " + unit + " " + demand.mapping +
-               " gives in that direction; stronger thrusters (or a lighter drag of interest's "
-               "speed range) would lift it";
+               " gives in that direction; stronger thrusters would lift it";
       }
     }
   }
