@@ -84,6 +84,9 @@ EffectEntry InstallationLoss() {
   ParameterFamily& eta = e.parameters[0];
   eta.lower_open = true;
   eta.expected = "an installation coefficient in (0, 2]";
+  // CHOSEN (issue #13): an installation can lose thrust (Table I: 0.55–0.89) but gains at most
+  // a little (a duct or a wall effect); an estimate above 1.2 is a fit absorbing another error.
+  eta.physical_upper = 1.2;
   eta.file_key = "eta";
   eta.check_qualifier = EtaQualifier;
   e.propose = [](const ProposalContext& c) {

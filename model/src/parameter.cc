@@ -19,6 +19,12 @@ std::string ParameterFamily::Expected() const {
   return "a number in " + lo + ", " + ShortestNumber(upper) + "]";
 }
 
+std::string ParameterFamily::PhysicalExpected() const {
+  if (!(physical_upper < upper)) return Expected();
+  return std::string("a number in ") + (lower_open ? "(" : "[") + ShortestNumber(lower) + ", " +
+         ShortestNumber(physical_upper) + "]";
+}
+
 const std::vector<ParameterFamily>& StandardFamilies() {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   static const std::vector<ParameterFamily> families = [] {
@@ -33,6 +39,7 @@ const std::vector<ParameterFamily>& StandardFamilies() {
     };
     f[0].fit_lower = 0.0;  // m > 0: the DOF model divides by it
     f[0].fit_lower_open = true;
+    f[0].above_dry_mass = true;  // added mass is positive for a body in water
     return f;
   }();
   return families;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <sstream>
 
@@ -21,14 +22,18 @@ namespace {
 using internal::Fmt;
 using model::Dof;
 
-constexpr model::EnumNames<NextStatus, 3> kNextStatusNames{
+constexpr model::EnumNames<NextStatus, 5> kNextStatusNames{
     {{{NextStatus::kTrial, "trial"},
       {NextStatus::kConverged, "converged"},
-      {NextStatus::kInfeasible, "infeasible"}}}};
-constexpr model::EnumNames<LoopStatus, 3> kLoopStatusNames{
+      {NextStatus::kInfeasible, "infeasible"},
+      {NextStatus::kStuck, "stuck"},
+      {NextStatus::kRefused, "refused"}}}};
+constexpr model::EnumNames<LoopStatus, 5> kLoopStatusNames{
     {{{LoopStatus::kConverged, "converged"},
       {LoopStatus::kBudgetSpent, "budget_spent"},
-      {LoopStatus::kInfeasible, "infeasible"}}}};
+      {LoopStatus::kInfeasible, "infeasible"},
+      {LoopStatus::kStuck, "stuck"},
+      {LoopStatus::kRefused, "refused"}}}};
 
 std::vector<Dof> CampaignDofs(const model::Campaign& c) {
   std::vector<Dof> out;
@@ -119,16 +124,38 @@ void UpdateEstimates(ident::DofIdentification id, std::size_t trials,
                        std::to_string(trials) + " trial(s)";
 }
 
+// Each DOF's identification without its newest fit trial (the consistency test's reference
+// for `next`, which has no memory of earlier steps); DOFs with one fit trial have none.
+std::map<Dof, ident::DofIdentification> PreviousEstimates(const model::Campaign& campaign,
+                                                          const std::vector<Dof>& dofs,
+                                                          const ident::IdentifyOptions& options) {
+  std::map<Dof, ident::DofIdentification> out;
+  for (Dof dof : dofs) {
+    if (internal::FitTrials(campaign, dof) < 2) continue;
+    model::Campaign earlier = campaign;
+    for (auto e = earlier.trials.end(); e != earlier.trials.begin();) {
+      --e;
+      if (e->dof == dof && e->use == model::TrialUse::kFit) {
+        earlier.trials.erase(e);
+        break;
+      }
+    }
+    out.emplace(dof, IdentifyDof(earlier, dof, options));
+  }
+  return out;
+}
+
 std::string BudgetSpentMessage(const LoopOptions& options,
                                const std::vector<DofProgress>& progress) {
   std::ostringstream m;
   m << "trial budget of " << options.budget << " spent before the target of "
     << Fmt(options.step.target_percent) << "%:";
   for (const auto& p : progress) {
-    if (!p.converged) {
-      m << " " << model::DofName(p.dof) << " " << p.worst << " at "
-        << (std::isfinite(p.worst_percent) ? Fmt(p.worst_percent) + "%" : "not estimated") << ";";
-    }
+    if (p.converged) continue;
+    m << " " << model::DofName(p.dof) << " " << p.worst << " at "
+      << (std::isfinite(p.worst_percent) ? Fmt(p.worst_percent) + "%" : "not estimated");
+    if (p.precise && !p.doubts.empty()) m << " but not trusted (" << p.doubts.front() << ")";
+    m << ";";
   }
   m << " raise --budget or the target";
   return m.str();
@@ -136,9 +163,11 @@ std::string BudgetSpentMessage(const LoopOptions& options,
 
 // Whether the loop stops before running the decided trial; if so, sets the result's status.
 bool LoopEnds(const internal::Decision& d, const LoopOptions& options, LoopResult* result) {
-  if (d.status == NextStatus::kConverged || d.status == NextStatus::kInfeasible) {
-    result->status =
-        d.status == NextStatus::kConverged ? LoopStatus::kConverged : LoopStatus::kInfeasible;
+  if (d.status != NextStatus::kTrial) {
+    result->status = d.status == NextStatus::kConverged   ? LoopStatus::kConverged
+                     : d.status == NextStatus::kInfeasible ? LoopStatus::kInfeasible
+                     : d.status == NextStatus::kStuck      ? LoopStatus::kStuck
+                                                           : LoopStatus::kRefused;
     result->message = d.message;
     return true;
   }
@@ -150,10 +179,42 @@ bool LoopEnds(const internal::Decision& d, const LoopOptions& options, LoopResul
   return false;
 }
 
-// Runs the decided trial in the virtual pool, re-identifies its DOF and measures progress.
+const DofProgress* ProgressOf(const std::vector<DofProgress>& progress, Dof dof) {
+  for (const auto& p : progress) {
+    if (p.dof == dof) return &p;
+  }
+  return nullptr;
+}
+
+// Predicted against achieved σ of the trial's DOF, and whether the trial brought new
+// information: a parameter of interest estimated for the first time, or gaining at least
+// min_information_ratio of its information, or the DOF converging (the trial confirmed it).
+void MeasureGain(const DofProgress* before, const LoopOptions& options, LoopIteration* it) {
+  for (const auto& [name, predicted] : it->at_estimates.sigma) {
+    double achieved = std::numeric_limits<double>::quiet_NaN();
+    for (const auto& e : it->params[it->dof]) {
+      if (e.name == name && e.state == ident::ParameterState::kEstimated) achieved = e.sigma;
+    }
+    it->sigma[name] = {predicted, achieved};
+  }
+  const DofProgress* after = ProgressOf(it->progress, it->dof);
+  if (before == nullptr || after == nullptr) return;
+  it->new_information = after->converged;
+  for (std::size_t i = 0; i < after->interest.size() && i < before->interest.size(); ++i) {
+    const InterestParameter& a = after->interest[i];
+    const InterestParameter& b = before->interest[i];
+    if (a.name != b.name || !a.estimated) continue;
+    const double ratio = b.estimated ? std::pow(b.sigma / a.sigma, 2) - 1.0
+                                     : std::numeric_limits<double>::infinity();
+    if (ratio >= options.step.min_information_ratio) it->new_information = true;
+  }
+}
+
+// Runs the decided trial in the virtual pool, re-identifies its DOF (keeping the identification
+// before it for the consistency test) and measures progress.
 LoopIteration RunIteration(internal::Decision d, const LoopOptions& options,
                            const std::vector<Dof>& dofs, model::VirtualCampaignBuilder* builder,
-                           ident::IdentifyResult* estimates) {
+                           ident::IdentifyResult* estimates, internal::LoopMemory* memory) {
   LoopIteration it;
   it.index = static_cast<int>(builder->campaign().trials.size());
   it.dof = d.dof;
@@ -161,6 +222,8 @@ LoopIteration RunIteration(internal::Decision d, const LoopOptions& options,
   // Ids are unique in a campaign (they name the log files): an a priori trial keeps its id.
   it.trial = d.trial;
   it.predicted = d.predicted;
+  it.candidates = d.candidates;
+  it.at_estimates = d.at_estimates;
   it.notes = d.notes;
   it.start = builder->clock();
   builder->Append(d.trial.design);
@@ -170,13 +233,79 @@ LoopIteration RunIteration(internal::Decision d, const LoopOptions& options,
   for (const auto& w : id.warnings) {
     it.notes.push_back(std::string(model::DofName(d.dof)) + ": identify: " + w);
   }
+  memory->previous.erase(d.dof);
+  if (const ident::DofIdentification* old = estimates->Find(d.dof)) {
+    memory->previous.emplace(d.dof, *old);
+  }
   UpdateEstimates(std::move(id), campaign.trials.size(), estimates);
   for (const auto& x : estimates->dofs) it.params[x.dof] = x.params;
   for (Dof dof : dofs) {
-    it.progress.push_back(EvaluateProgress(campaign.vehicle, dof, estimates->Find(dof),
-                                           internal::FitTrials(campaign, dof), options.step));
+    const auto prev = memory->previous.find(dof);
+    it.progress.push_back(EvaluateProgress(
+        campaign.vehicle, dof, estimates->Find(dof), internal::FitTrials(campaign, dof),
+        options.step, prev == memory->previous.end() ? nullptr : &prev->second));
   }
+  MeasureGain(ProgressOf(d.progress, d.dof), options, &it);
   return it;
+}
+
+// Designs alike to the planner's resolution: same kind and mappings, levels within 5%, duration
+// within 10% (a re-planned leg differs by a solver tolerance, not by intent).
+bool SameDesign(const model::TrialDesign& a, const model::TrialDesign& b) {
+  auto near = [](double x, double y, double rel) {
+    return std::abs(x - y) <= rel * std::max(std::abs(x), std::abs(y)) + 1e-9;
+  };
+  if (a.dof != b.dof || a.kind != b.kind || a.mapping != b.mapping ||
+      a.segments.size() != b.segments.size() || !near(a.duration, b.duration, 0.1)) {
+    return false;
+  }
+  for (std::size_t i = 0; i < a.segments.size(); ++i) {
+    if (a.segments[i].mapping != b.segments[i].mapping ||
+        !near(a.segments[i].force, b.segments[i].force, 0.05)) {
+      return false;
+    }
+  }
+  return near(a.force, b.force, 0.05) && near(a.offset, b.offset, 0.05) &&
+         near(a.amplitude, b.amplitude, 0.05) && near(a.omega, b.omega, 0.05);
+}
+
+// Issue #13: a design never runs again after `max_repeats` runs without new information; its
+// DOF is stuck (with the limit that keeps the planner on that design). True when it stopped.
+bool StopRepeat(internal::Planner& planner, const internal::Decision& d, const LoopResult& result,
+                const model::Campaign& campaign, const LoopOptions& options,
+                internal::LoopMemory* memory) {
+  int idle = 0;
+  for (const auto& it : result.iterations) {
+    if (it.dof == d.dof && !it.new_information && SameDesign(it.trial.design, d.trial.design)) {
+      ++idle;
+    }
+  }
+  if (idle < options.max_repeats) return false;
+  const DofProgress* p = ProgressOf(d.progress, d.dof);
+  CandidateGain gain = d.candidates.empty() ? CandidateGain{} : d.candidates.back();
+  std::string reason = "this design ran " + std::to_string(idle) +
+                       " times without new information; " +
+                       internal::StuckReason(planner, campaign, *p,
+                                             result.estimates.Find(d.dof), d.trial, gain);
+  memory->stopped[d.dof] = {d.dof, NextStatus::kStuck, reason};
+  return true;
+}
+
+// Counts consecutive failed consistency tests of the trial's DOF; refuses the DOF after
+// LoopOptions::max_inconsistent of them.
+void TrackConsistency(const LoopIteration& it, const LoopOptions& options,
+                      std::map<Dof, int>* streak, internal::LoopMemory* memory) {
+  const DofProgress* p = ProgressOf(it.progress, it.dof);
+  if (p == nullptr || !p->consistency.tested) return;
+  int& n = (*streak)[it.dof];
+  n = p->consistency.consistent ? 0 : n + 1;
+  if (n >= options.max_inconsistent) {
+    memory->stopped[it.dof] = {
+        it.dof, NextStatus::kRefused,
+        "estimates inconsistent across " + std::to_string(n) + " consecutive trials (last: " +
+            p->consistency.text + "): the model does not explain every trial, or its σ are "
+            "overconfident (try `uuvplan diagnose`)"};
+  }
 }
 
 }  // namespace
@@ -186,14 +315,23 @@ bool DesignLoopOptions::IsValid(std::string* error) const {
   check
       .Require(target_percent > 0 && std::isfinite(target_percent), "target_percent",
                Fmt(target_percent), "0 < target_percent < inf")
-      .Require(usable_percent > 0, "usable_percent", Fmt(usable_percent), "usable_percent > 0");
+      .Require(usable_percent > 0, "usable_percent", Fmt(usable_percent), "usable_percent > 0")
+      .Require(consistency_level > 0 && consistency_level < 1, "consistency_level",
+               Fmt(consistency_level), "0 < consistency_level < 1")
+      .Require(max_trials_to_target > 0, "max_trials_to_target", Fmt(max_trials_to_target),
+               "> 0")
+      .Require(min_information_ratio > 0, "min_information_ratio", Fmt(min_information_ratio),
+               "> 0");
   return check.ok() && schedule.IsValid(error) && identify.IsValid(error);
 }
 
 bool LoopOptions::IsValid(std::string* error) const {
   internal::OptionsCheck check("LoopOptions", error);
   check.Require(budget >= 1, "budget", budget, "budget >= 1")
-      .Require(command_rate_hz > 0, "command_rate_hz", Fmt(command_rate_hz), "> 0");
+      .Require(command_rate_hz > 0, "command_rate_hz", Fmt(command_rate_hz), "> 0")
+      .Require(max_repeats >= 0, "max_repeats", max_repeats, "max_repeats >= 0")
+      .Require(max_inconsistent >= 1, "max_inconsistent", max_inconsistent,
+               "max_inconsistent >= 1");
   return check.ok() && step.IsValid(error);
 }
 
@@ -225,8 +363,10 @@ NextStepResult NextStep(const model::Campaign& campaign, const model::Pool& pool
     r.estimates.message = "no fit trial yet: nothing to identify";
   }
   internal::Planner planner{campaign.vehicle, pool, options, {}};
-  internal::Decision d = internal::Decide(planner, campaign, dofs, r.estimates);
+  const internal::LoopMemory memory{PreviousEstimates(campaign, dofs, options.identify), {}};
+  internal::Decision d = internal::Decide(planner, campaign, dofs, r.estimates, memory);
   r.status = d.status;
+  r.candidates = std::move(d.candidates);
   r.message = std::move(d.message);
   r.progress = std::move(d.progress);
   r.dof = d.dof;
@@ -261,13 +401,19 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
   virtual_pool.pool = pool;
   model::VirtualCampaignBuilder builder(truth, virtual_pool);
   internal::Planner planner{truth.vehicle, pool, options.step, {}};
+  internal::LoopMemory memory;
+  std::map<Dof, int> inconsistent;
   std::map<Dof, std::vector<model::TrialDesign>> per_dof;
   for (;;) {
     const auto t0 = std::chrono::steady_clock::now();
-    internal::Decision d = internal::Decide(planner, builder.campaign(), dofs, result.estimates);
+    internal::Decision d =
+        internal::Decide(planner, builder.campaign(), dofs, result.estimates, memory);
     result.progress = d.progress;
     if (LoopEnds(d, options, &result)) break;
-    LoopIteration it = RunIteration(std::move(d), options, dofs, &builder, &result.estimates);
+    if (StopRepeat(planner, d, result, builder.campaign(), options, &memory)) continue;
+    LoopIteration it =
+        RunIteration(std::move(d), options, dofs, &builder, &result.estimates, &memory);
+    TrackConsistency(it, options, &inconsistent, &memory);
     per_dof[it.dof].push_back(it.trial.design);
     result.pool_time = it.pool_time;
     it.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "format.h"
+#include "loop_trust.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/text.h"
@@ -21,6 +22,8 @@ namespace {
 using model::Dof;
 using Direction = std::pair<std::string, int>;  // (mapping, sign ±1)
 
+constexpr const char* kAPrioriSource = "a priori schedule";
+
 int Sign(double x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
 
 // The trial's id as a campaign names it: the file stem ("trials/surge-sine.csv" → "surge-sine").
@@ -31,20 +34,14 @@ std::string EntryId(const model::TrialEntry& e) {
 // Estimates of a DOF as DesignNextTrial wants them (box centre, and prior information from the
 // covariance, rows in `names` order): the values the data decided — estimated, or dropped to 0
 // as insignificant. An estimate is left out (the design keeps the a priori value, without prior
-// information on it) when it is insignificant (percentile error above `max_percent`: its ±2σ box
-// would span zero) or physically implausible (m outside half the lower to twice the upper a
-// priori inertia bound, negative drag, η outside (0, 1.5]): a diverged fit must not steer the
-// design, e.g. to a time constant of milliseconds.
+// information on it) when it is an a priori fallback (held, not reliable: never information),
+// insignificant (percentile error above `max_percent`: its ±2σ box would span zero) or
+// non-physical (NonPhysical; m above twice the upper a priori inertia bound): a diverged fit
+// must not steer the design, e.g. to a time constant of milliseconds.
 void DesignInputs(const model::Vehicle& vehicle, const ident::DofIdentification& id,
                   double max_percent, ParameterValues* estimates, std::vector<std::string>* names,
                   Eigen::MatrixXd* covariance, std::vector<std::string>* notes) {
-  const auto bounds = vehicle.InertiaBounds(id.dof);
-  auto plausible = [&](const std::string& n, double v) {
-    if (n == model::param::kMass) return v >= 0.5 * bounds[0] && v <= 2.0 * bounds[1];
-    if (n == model::param::kLinearDrag || n == model::param::kQuadraticDrag) return v >= 0.0;
-    if (model::StartsWith(n, model::param::kEtaPrefix)) return v > 0.0 && v <= 1.5;
-    return true;
-  };
+  const double m_max = 2.0 * vehicle.InertiaBounds(id.dof)[1];
   std::vector<int> idx;
   for (std::size_t j = 0; j < id.params.size(); ++j) {
     const ident::ParameterEstimate& p = id.params[j];
@@ -54,9 +51,18 @@ void DesignInputs(const model::Vehicle& vehicle, const ident::DofIdentification&
     const double percent = p.value != 0.0 ? 100.0 * p.sigma / std::abs(p.value)
                                           : std::numeric_limits<double>::infinity();
     const bool nuisance = p.name == model::param::kBias || p.name == model::param::kBiasStep;
-    if (!plausible(p.name, p.value)) {
+    if (Held(id, p.name)) {
       notes->push_back(p.name + " = " + Fmt(p.value) +
-                       " is implausible: the design keeps its a priori value");
+                       " is not reliable (an a priori fallback): the design keeps its a priori "
+                       "value");
+      continue;
+    }
+    std::string wrong = NonPhysical(vehicle, id.dof, p.name, p.value);
+    if (wrong.empty() && p.name == model::param::kMass && p.value > m_max) {
+      wrong = "m = " + Fmt(p.value) + " is implausible (above twice the a priori bound)";
+    }
+    if (!wrong.empty()) {
+      notes->push_back(wrong + ": the design keeps its a priori value");
       continue;
     }
     if (!nuisance && !(percent < max_percent)) {
@@ -171,6 +177,72 @@ class DofTrialPolicy {
     return false;
   }
 
+  // The planned trial's predicted σ at the current estimates (the centre of the design's box;
+  // the design's own prediction is the worst over the box, pessimistic by design: on ROMEO
+  // surge in a 5 m pool it predicted σ(kq) down 29% where the trial achieved 78%).
+  PredictedPrecision AtEstimates() const {
+    std::vector<std::string> notes;
+    const auto probe = DofContext::APriori(planner_.vehicle, planner_.pool, dof_,
+                                           planner_.options.schedule.planner, &notes);
+    ParameterBox centre;
+    centre.nominal = probe->box().nominal;
+    for (const auto& [name, value] : estimates_) {
+      if (centre.nominal.count(name)) centre.nominal[name] = value;
+    }
+    const DofContext ctx(planner_.vehicle, planner_.pool, dof_, std::move(centre),
+                         planner_.options.schedule.planner);
+    // The identification fixes what it dropped as insignificant (seed 000 §IV-D model
+    // selection): so does the prediction, by a prior 1000× tighter than its σ before the drop
+    // (k dropped leaves kq alone to explain the drag; left free, k and kq are confounded and
+    // the predicted gain on kq was 10× too small).
+    std::vector<std::string> names = names_;
+    for (const auto& [name, sigma] : dropped_) {
+      if (ctx.Index(name) >= 0) names.push_back(name);
+    }
+    Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(names.size(), names.size());
+    covariance.topLeftCorner(names_.size(), names_.size()) = covariance_;
+    for (std::size_t i = names_.size(), j = 0; i < names.size(); ++j) {
+      if (ctx.Index(dropped_[j].first) < 0) continue;
+      covariance(i, i) = std::pow(1e-3 * dropped_[j].second, 2);
+      ++i;
+    }
+    PriorInformation prior;
+    if (!names.empty()) prior = PriorInformation::FromCovariance(names, covariance);
+    return PredictPrecision(
+        ctx, TrialsInformation(ctx, {d_->trial}, names.empty() ? nullptr : &prior));
+  }
+
+  // The planned trial's predicted gain (CandidateGain): the parameter of interest above the
+  // target it brings nearest to the target, at the current estimates.
+  CandidateGain Gain() {
+    d_->at_estimates = AtEstimates();
+    CandidateGain best;
+    best.dof = dof_;
+    best.trial = d_->trial.design.id;
+    best.trials_to_target = std::numeric_limits<double>::infinity();
+    for (const auto& q : progress_.interest) {
+      if (q.percent <= planner_.options.target_percent) continue;
+      CandidateGain g = best;
+      g.parameter = q.name;
+      const auto after = d_->at_estimates.sigma.find(q.name);
+      g.sigma_after = after != d_->at_estimates.sigma.end() ? after->second : g.sigma_after;
+      const auto known = std::find(names_.begin(), names_.end(), q.name);
+      const int i = static_cast<int>(known - names_.begin());
+      g.sigma_now = known != names_.end() ? std::sqrt(covariance_(i, i))
+                                          : std::numeric_limits<double>::infinity();
+      g.trials_to_target = TrialsToTarget(g.sigma_now, g.sigma_after,
+                                          planner_.options.target_percent / 100 * std::abs(q.value));
+      g.gain = std::isinf(g.sigma_now) ? (std::isfinite(g.sigma_after) ? 1.0 : 0.0)
+                                       : 1.0 - g.sigma_after / g.sigma_now;
+      if (!(g.trials_to_target >= best.trials_to_target)) best = g;
+    }
+    // The a priori schedule's trials are designed as a set (seed 000: steady runs at several
+    // levels, then the sine): one alone may inform nothing, and each runs once.
+    best.negligible = d_->source != kAPrioriSource &&
+                      !(best.trials_to_target <= planner_.options.max_trials_to_target);
+    return best;
+  }
+
  private:
   // The DOF's trials run so far (by id), the directions its fit trials pushed in, and the a
   // priori schedule's trials not run yet, in seed 000 order.
@@ -213,6 +285,12 @@ class DofTrialPolicy {
     DesignInputs(planner_.vehicle, *id, planner_.options.usable_percent, &estimates_, &names_,
                  &covariance_, &input_notes);
     for (const auto& n : input_notes) d_->notes.push_back(name_ + ": " + n);
+    for (const auto& p : id->params) {
+      if (p.state == ident::ParameterState::kDropped && std::isfinite(p.sigma_before_drop) &&
+          p.sigma_before_drop > 0) {
+        dropped_.push_back({p.name, p.sigma_before_drop});
+      }
+    }
   }
 
   const PlannedTrial* PendingPushing(const Direction& w) const {
@@ -229,7 +307,7 @@ class DofTrialPolicy {
 
   bool TakeAPriori(const PlannedTrial& t, const std::string& why_this) {
     d_->dof = dof_;
-    d_->source = "a priori schedule";
+    d_->source = kAPrioriSource;
     d_->trial = t;
     // Predicted precision after this trial: its information over the a priori box plus the
     // prior information of the estimates so far (what DesignNextTrial reports for its trials).
@@ -320,13 +398,40 @@ class DofTrialPolicy {
   std::string want_why_;
   bool reference_ = false;
   ParameterValues estimates_;
+  std::vector<std::pair<std::string, double>> dropped_;  ///< name, σ before the drop
   std::vector<std::string> names_;
   Eigen::MatrixXd covariance_ = Eigen::MatrixXd(0, 0);
 };
 
+// A DOF's trials stop: the DOF with its stop's kind and reason, in the message's words.
+void AddStop(Dof dof, NextStatus kind, const std::string& reason, Decision* d) {
+  d->stops.push_back({dof, kind, reason});
+}
+
+// The decision when no DOF that needs a trial gets one: infeasible before refused before stuck
+// (the pool verdict first; then what no trial can fix; then what this pool cannot).
+void NoTrial(Decision* d) {
+  d->status = NextStatus::kStuck;
+  for (const auto& s : d->stops) {
+    if (s.kind == NextStatus::kInfeasible) d->status = NextStatus::kInfeasible;
+    if (s.kind == NextStatus::kRefused && d->status != NextStatus::kInfeasible) {
+      d->status = NextStatus::kRefused;
+    }
+  }
+  std::ostringstream m;
+  m << (d->status == NextStatus::kInfeasible ? "no trial can be planned for the DOFs still "
+                                               "above the target:"
+        : d->status == NextStatus::kRefused ? "no convergence claimed:"
+                                            : "stuck: no trial this pool allows adds enough "
+                                              "information:");
+  for (const auto& s : d->stops) m << " " << s.reason << ";";
+  d->message = m.str();
+}
+
 std::string ConvergedMessage(const DesignLoopOptions& options) {
   return "every parameter of interest is below " + Fmt(options.target_percent) +
-         "% percentile error: no further trial needed";
+         "% percentile error, physical, not an a priori fallback, validated and consistent "
+         "with the estimate before its newest trial: no further trial needed";
 }
 
 }  // namespace
@@ -383,12 +488,31 @@ int FitTrials(const model::Campaign& campaign, Dof dof) {
   return trials;
 }
 
+double TrialsToTarget(double sigma_now, double sigma_after, double sigma_target) {
+  if (!(sigma_after < sigma_now)) return std::numeric_limits<double>::infinity();
+  if (std::isinf(sigma_now) || !(sigma_now > sigma_target)) return 0.0;
+  // Information adds: after n such trials 1/σ² = 1/σ_now² + n·(1/σ_after² − 1/σ_now²).
+  const double ratio = std::pow(sigma_now / sigma_after, 2) - 1.0;
+  return (std::pow(sigma_now / sigma_target, 2) - 1.0) / ratio;
+}
+
+bool PlanCandidate(Planner& planner, const model::Campaign& campaign, const DofProgress& progress,
+                   const ident::DofIdentification* id, Decision* d, CandidateGain* gain,
+                   std::string* why) {
+  DofTrialPolicy policy(planner, campaign, progress, d);
+  if (!policy.Plan(id, why)) return false;
+  *gain = policy.Gain();
+  return true;
+}
+
 Decision Decide(Planner& planner, const model::Campaign& campaign, const std::vector<Dof>& dofs,
-                const ident::IdentifyResult& estimates) {
+                const ident::IdentifyResult& estimates, const LoopMemory& memory) {
   Decision d;
   for (Dof dof : dofs) {
+    const auto prev = memory.previous.find(dof);
     d.progress.push_back(EvaluateProgress(planner.vehicle, dof, estimates.Find(dof),
-                                          FitTrials(campaign, dof), planner.options));
+                                          FitTrials(campaign, dof), planner.options,
+                                          prev == memory.previous.end() ? nullptr : &prev->second));
   }
   std::vector<const DofProgress*> order;
   for (const auto& p : d.progress) {
@@ -403,27 +527,44 @@ Decision Decide(Planner& planner, const model::Campaign& campaign, const std::ve
   std::stable_sort(order.begin(), order.end(), [](const DofProgress* a, const DofProgress* b) {
     return a->worst_percent > b->worst_percent;
   });
-  std::vector<std::string> reasons;
   for (const DofProgress* p : order) {
-    std::string why;
-    if (DofTrialPolicy(planner, campaign, *p, &d).Plan(estimates.Find(p->dof), &why)) {
-      d.status = NextStatus::kTrial;
-      std::ostringstream m;
-      m << std::string(model::DofName(p->dof)) << " is furthest from the target (" << p->worst
-        << " at "
-        << (std::isfinite(p->worst_percent) ? Fmt(p->worst_percent) + "%"
-                                            : std::string("not estimated yet"))
-        << "): " << d.source << " trial '" << d.trial.design.id << "'";
-      d.message = m.str();
-      return d;
+    const std::string name(model::DofName(p->dof));
+    if (const auto s = memory.stopped.find(p->dof); s != memory.stopped.end()) {
+      AddStop(p->dof, s->second.kind, name + ": " + s->second.reason, &d);
+      continue;
     }
-    reasons.push_back(why);
+    if (!p->refusal.empty()) {
+      AddStop(p->dof, NextStatus::kRefused, name + ": " + p->refusal, &d);
+      continue;
+    }
+    std::string why;
+    CandidateGain gain;
+    Decision tried = d;
+    if (!PlanCandidate(planner, campaign, *p, estimates.Find(p->dof), &tried, &gain, &why)) {
+      d.notes = tried.notes;
+      AddStop(p->dof, NextStatus::kInfeasible, why, &d);
+      continue;
+    }
+    tried.candidates.push_back(gain);
+    if (gain.negligible && !p->precise) {
+      d.notes = tried.notes;
+      d.candidates = tried.candidates;
+      AddStop(p->dof, NextStatus::kStuck,
+              StuckReason(planner, campaign, *p, estimates.Find(p->dof), tried.trial, gain), &d);
+      continue;
+    }
+    std::ostringstream m;  // before `d` is replaced: `p` points into d.progress
+    m << name << " is furthest from the target (" << p->worst << " at "
+      << (std::isfinite(p->worst_percent) ? Fmt(p->worst_percent) + "%"
+                                          : std::string("not estimated yet"))
+      << (p->precise && !p->doubts.empty() ? ", not trusted yet: " + p->doubts.front() : "")
+      << "): " << tried.source << " trial '" << tried.trial.design.id << "'";
+    d = std::move(tried);
+    d.status = NextStatus::kTrial;
+    d.message = m.str();
+    return d;
   }
-  d.status = NextStatus::kInfeasible;
-  std::ostringstream m;
-  m << "no trial can be planned for the DOFs still above the target:";
-  for (const auto& r : reasons) m << " " << r << ";";
-  d.message = m.str();
+  NoTrial(&d);
   return d;
 }
 }  // namespace uuvplan::planner::internal

@@ -36,6 +36,14 @@ struct Planner {
   const ScheduleResult& APriori(model::Dof dof);
 };
 
+/// Why a DOF gets no further trial: infeasible (the pool cannot host what it needs), stuck (no
+/// trial adds enough information), refused (estimates no trial of this model can make right).
+struct DofStop {
+  model::Dof dof = model::Dof::kSurge;
+  NextStatus kind = NextStatus::kStuck;
+  std::string reason;
+};
+
 /// What the policy decided for the next trial (the fields of NextStepResult it fills).
 struct Decision {
   NextStatus status = NextStatus::kInfeasible;
@@ -44,14 +52,43 @@ struct Decision {
   model::Dof dof = model::Dof::kSurge;
   std::string source;
   PlannedTrial trial;
-  PredictedPrecision predicted;
+  PredictedPrecision predicted;     ///< the design's: the worst over its box
+  PredictedPrecision at_estimates;  ///< at the current estimates (the box's centre)
+  std::vector<CandidateGain> candidates;
+  std::vector<DofStop> stops;  ///< the DOFs that get no trial, and why
   std::vector<std::string> notes;
 };
 
+/// What the loop remembers between decisions: each DOF's identification before its newest
+/// trial (the consistency test's reference) and the DOFs it has stopped (stuck or refused).
+struct LoopMemory {
+  std::map<model::Dof, ident::DofIdentification> previous;
+  std::map<model::Dof, DofStop> stopped;
+};
+
 /// The next trial of `campaign` among `dofs` given its identification `estimates`: the DOF
-/// furthest above the target (ties in the order of `dofs`) that can be given a trial.
+/// furthest above the target (ties in the order of `dofs`) whose candidate trial adds
+/// information (CandidateGain); DOFs that are stopped, refused or stuck are skipped with
+/// their reason in `stops`.
 Decision Decide(Planner& planner, const model::Campaign& campaign,
-                const std::vector<model::Dof>& dofs, const ident::IdentifyResult& estimates);
+                const std::vector<model::Dof>& dofs, const ident::IdentifyResult& estimates,
+                const LoopMemory& memory = {});
+
+/// The trial the policy plans for one DOF (into `d`) and its gain; false with `why` when none.
+bool PlanCandidate(Planner& planner, const model::Campaign& campaign, const DofProgress& progress,
+                   const ident::DofIdentification* id, Decision* d, CandidateGain* gain,
+                   std::string* why);
+
+/// Number of trials like one that takes σ_now to σ_after needed to reach σ_target (the
+/// information of independent trials adds); +inf when the trial adds nothing.
+double TrialsToTarget(double sigma_now, double sigma_after, double sigma_target);
+
+/// The sentence of a stuck DOF (stuck_limit.cc): its bottleneck, the candidate's gain, the
+/// limit that binds (pool size, thrust range, rotation-rate limit, no reversal within a trial)
+/// and what would lift it, checked by planning the DOF again with the limit relaxed.
+std::string StuckReason(Planner& planner, const model::Campaign& campaign,
+                        const DofProgress& progress, const ident::DofIdentification* id,
+                        const PlannedTrial& trial, const CandidateGain& gain);
 
 /// `asked`, or when it is empty every DOF the truth has parameters for (what the loop and the
 /// paper procedure run on a virtual vehicle).

@@ -5,8 +5,9 @@
 // parameter of interest (m; kq where significant, else k; every η) has a percentile error
 // below the target, or the trial budget is spent. Prints each iteration (trial planned,
 // estimates, σ, pool time) and the total pool time. Deterministic for a given seed.
-// Exit status: 0 converged; 1 not converged within the budget, or a DOF cannot be given the
-// trial it needs in this pool; 2 bad input.
+// Exit status (docs/cli.md, docs/loop.md): 0 converged; 1 a DOF cannot be given the trial it
+// needs in this pool; 2 bad input; 4 budget spent; 5 stuck (no trial the pool allows adds
+// information); 6 convergence refused (estimates inconsistent, non-physical or invalid).
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -22,6 +23,7 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
+#include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design_loop.h"
 
@@ -42,9 +44,18 @@ struct LoopCliOptions {
 
 json Num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
-std::string Short(double v, int precision) {
+// "σ predicted → achieved: m 31.2 → 29.8 kg, kq 120 → 98.4 N·s²/m²".
+std::string SigmaLine(const planner::LoopIteration& it) {
   std::ostringstream s;
-  s << std::setprecision(precision) << v;
+  s << "σ predicted → achieved:";
+  const char* sep = " ";
+  for (const auto& [name, pa] : it.sigma) {
+    const std::string unit = model::Unit(name, it.dof);
+    s << sep << name << " " << model::Significant(pa[0], 3) << " → "
+      << (std::isfinite(pa[1]) ? model::Significant(pa[1], 3) : std::string("—"))
+      << (unit == "1" ? "" : " " + unit);
+    sep = ", ";
+  }
   return s.str();
 }
 
@@ -53,26 +64,32 @@ void PrintIteration(const planner::LoopIteration& it, double target, bool verbos
   const auto& d = it.trial.design;
   out << "#" << std::left << std::setw(3) << it.index + 1 << std::setw(6) << model::DofName(d.dof)
       << std::setw(20) << d.id << TrialLine(d) << "\n     " << it.source << "; pool time "
-      << std::fixed << std::setprecision(0) << it.pool_time << " s" << std::defaultfloat << "\n";
+      << std::fixed << std::setprecision(0) << it.pool_time << " s" << std::defaultfloat
+      << (it.new_information ? "" : "; no new information") << "\n";
   for (const auto& p : it.progress) {
     if (p.dof != it.dof) continue;
     out << "     ";
-    for (const auto& q : p.interest) {
-      out << " " << q.name << " ";
-      if (q.estimated) {
-        out << Short(q.value, 5) << "±" << Short(q.sigma, 2) << " (" << std::fixed
-            << std::setprecision(q.percent < 10 ? 2 : 1) << q.percent << "%"
-            << (q.percent <= target ? "" : "*") << ")" << std::defaultfloat;
-      } else {
-        out << "—";
-      }
-    }
+    for (const auto& q : p.interest) out << " " << InterestText(p.dof, q, target);
     out << "\n";
+    for (const auto& q : p.interest) {
+      if (!q.physical) out << "      ! " << q.flag << "\n";
+    }
+    if (p.consistency.tested) out << "      " << p.consistency.text << "\n";
   }
+  if (!it.sigma.empty()) out << "      " << SigmaLine(it) << "\n";
   if (verbose) {
     for (const auto& n : it.notes) out << "     note: " << n << "\n";
   }
   out.flush();
+}
+
+json SigmaJson(const planner::LoopIteration& it) {
+  json j = json::object();
+  for (const auto& [name, pa] : it.sigma) {
+    j[name] = {{"predicted", Num(pa[0])}, {"achieved", Num(pa[1])},
+               {"unit", model::Unit(name, it.dof)}};
+  }
+  return j;
 }
 
 json IterationJson(const planner::LoopIteration& it) {
@@ -89,6 +106,9 @@ json IterationJson(const planner::LoopIteration& it) {
           {"start", it.start},
           {"pool_time", it.pool_time},
           {"predicted", PredictedJson(it.dof, it.predicted)},
+          {"sigma", SigmaJson(it)},
+          {"candidates", CandidatesJson(it.candidates)},
+          {"new_information", it.new_information},
           {"progress", ProgressJson(it.progress)},
           {"notes", it.notes}};
 }
@@ -122,8 +142,8 @@ std::vector<model::Dof> SimulableDofs(const LoopCliOptions& o, const model::Trut
 void PrintLoopSummary(const planner::LoopResult& r, const planner::LoopOptions& lo,
                       const model::Truth& truth, std::ostream& out) {
   out << "\n"
-      << (r.converged ? "Converged" : "NOT converged") << " after " << r.iterations.size()
-      << " trial(s): " << r.message << "\n"
+      << (r.converged ? "Converged" : "NOT converged (" + std::string(planner::LoopStatusName(r.status)) + ")")
+      << " after " << r.iterations.size() << " trial(s): " << r.message << "\n"
       << "Pool time: " << std::fixed << std::setprecision(0) << r.pool_time << " s ("
       << std::setprecision(1) << r.pool_time / 60.0 << " min, " << lo.step.schedule.planner.pause_s
       << " s pauses between trials included)";
@@ -143,6 +163,7 @@ json LoopJson(const planner::LoopResult& r, const planner::LoopOptions& lo) {
           {"converged", r.converged},
           {"pool_time", r.pool_time},
           {"status", std::string(planner::LoopStatusName(r.status))},
+          {"exit_status", ExitStatus(r.status)},
           {"message", r.message},
           {"target", lo.step.target_percent},
           {"budget", lo.budget},
@@ -182,7 +203,7 @@ int RunLoopCommand(const LoopCliOptions& o) {
       [&](const planner::LoopIteration& it) { PrintIteration(it, target, o.verbose, out); });
   PrintLoopSummary(r, lo, truth, out);
   if (!o.json.empty()) WriteJson(o.json, LoopJson(r, lo));
-  return r.converged ? kExitOk : kExitActionNeeded;
+  return ExitStatus(r.status);
 }
 
 void BindLoop(CLI::App* sub, LoopCliOptions* o) {

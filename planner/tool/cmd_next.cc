@@ -3,11 +3,12 @@
 // knowledge of the design (box = estimates ± 2σ, prior information = covariance⁻¹) and plan the
 // single most informative next trial (planner/design_loop.h, docs/loop.md) — what a pool team
 // runs between two trials. The result can be run with `simulate --plan` (its "trial").
-// Exit status: 0 a trial is planned and the pool hosts the identification of the DOFs driven
-// (the pool verdict, planner/pool_verdict.h, printed as `schedule` prints it), or every
-// parameter of interest is already below the target (then "trial" is null); 1 no trial that is
-// still needed fits the pool, or the pool verdict says it cannot host them (the best next trial
-// is still printed); 2 bad input.
+// Exit status (docs/cli.md): 0 a trial is planned and the pool hosts the identification of the
+// DOFs driven (the pool verdict, planner/pool_verdict.h, printed as `schedule` prints it), or the
+// DOFs have converged (then "trial" is null); 1 no trial that is still needed fits the pool, or
+// the pool verdict says it cannot host them (the best next trial is still printed); 2 bad input;
+// 5 stuck (no trial the pool allows adds information); 6 convergence refused (precise but
+// non-physical or invalid).
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -77,6 +78,18 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
     case planner::NextStatus::kInfeasible:
       out << "No trial can be planned: " << r.message << "\n";
       break;
+    case planner::NextStatus::kStuck:
+      out << "No trial adds enough information: " << r.message << "\n";
+      break;
+    case planner::NextStatus::kRefused:
+      out << "Convergence refused: " << r.message << "\n";
+      break;
+  }
+  for (const auto& c : r.candidates) {
+    out << "Candidate " << c.trial << " (" << model::DofName(c.dof) << "): σ(" << c.parameter
+        << ") " << model::Significant(c.sigma_now, 3) << " → " << model::Significant(c.sigma_after, 3)
+        << ", about " << model::Significant(c.trials_to_target, 3) << " such trials to the target"
+        << (c.negligible ? " — negligible" : "") << "\n";
   }
   if (!r.notes.empty()) {
     out << "\nNotes:\n";
@@ -97,6 +110,8 @@ nlohmann::json NextStepJson(const planner::NextStepResult& r, double target) {
   j["source"] = r.source;
   j["target"] = target;
   j["progress"] = ProgressJson(r.progress);
+  j["candidates"] = CandidatesJson(r.candidates);
+  j["exit_status"] = ExitStatus(r.status);
   j["notes"] = r.notes;
   return j;
 }
@@ -115,16 +130,18 @@ int RunNext(const NextCliOptions& o) {
   planner::ScheduleOptions so = options.schedule;
   for (const auto& p : r.progress) so.dofs.push_back(p.dof);
   const planner::PoolVerdict verdict = planner::JudgePool(campaign.vehicle, pool, so);
+  const int exit_status =
+      r.status == planner::NextStatus::kTrial ? VerdictExit(verdict) : ExitStatus(r.status);
   std::ostream& out = ReportStream(o.json);
   PrintNextStep(r, campaign, pool, o, out);
   PrintVerdict(verdict, pool, out);
   if (!o.json.empty()) {
     nlohmann::json j = NextStepJson(r, o.design.target_percent);
     j["verdict"] = io::PoolVerdictJson(verdict, pool);
+    j["exit_status"] = exit_status;
     WriteJson(o.json, j);
   }
-  if (r.status == planner::NextStatus::kInfeasible) return kExitActionNeeded;
-  return r.status == planner::NextStatus::kConverged ? kExitOk : VerdictExit(verdict);
+  return exit_status;
 }
 
 void BindNext(CLI::App* sub, NextCliOptions* o) {

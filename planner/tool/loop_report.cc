@@ -5,7 +5,10 @@
 #include <iomanip>
 #include <sstream>
 
+#include "command.h"
 #include "trial_text.h"
+#include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/ident/monte_carlo.h"
 #include "uuvplan/io/io.h"
 
@@ -34,36 +37,106 @@ std::string TrialLine(const model::TrialDesign& d) {
   return s.str();
 }
 
+int ExitStatus(planner::LoopStatus s) {
+  switch (s) {
+    case planner::LoopStatus::kConverged: return kExitOk;
+    case planner::LoopStatus::kInfeasible: return kExitActionNeeded;
+    case planner::LoopStatus::kBudgetSpent: return kExitBudgetSpent;
+    case planner::LoopStatus::kStuck: return kExitStuck;
+    case planner::LoopStatus::kRefused: return kExitRefused;
+  }
+  return kExitActionNeeded;
+}
+
+int ExitStatus(planner::NextStatus s) {
+  switch (s) {
+    case planner::NextStatus::kTrial:
+    case planner::NextStatus::kConverged: return kExitOk;
+    case planner::NextStatus::kInfeasible: return kExitActionNeeded;
+    case planner::NextStatus::kStuck: return kExitStuck;
+    case planner::NextStatus::kRefused: return kExitRefused;
+  }
+  return kExitActionNeeded;
+}
+
+std::string InterestText(model::Dof dof, const planner::InterestParameter& q, double target) {
+  const std::string unit = model::Unit(q.name, dof);
+  const std::string u = unit == "1" ? "" : " " + unit;
+  std::ostringstream s;
+  s << q.name << " ";
+  if (!std::isfinite(q.value)) return s.str() + "—";
+  s << model::Significant(q.value, 4) << u << " ± " << model::Significant(q.sigma, 3);
+  if (q.estimated) s << " (" << Percent(q.percent) << (q.percent <= target ? "" : "*") << ")";
+  if (q.held) s << " [HELD: no information]";
+  if (!q.physical) s << " [NON-PHYSICAL]";
+  return s.str();
+}
+
+json CandidatesJson(const std::vector<planner::CandidateGain>& candidates) {
+  json j = json::array();
+  for (const auto& c : candidates) {
+    j.push_back({{"dof", std::string(model::DofName(c.dof))},
+                 {"trial", c.trial},
+                 {"parameter", c.parameter},
+                 {"sigma_now", Num(c.sigma_now)},
+                 {"sigma_after", Num(c.sigma_after)},
+                 {"gain", Num(c.gain)},
+                 {"trials_to_target", Num(c.trials_to_target)},
+                 {"negligible", c.negligible}});
+  }
+  return j;
+}
+
+namespace {
+
+std::string DofHeadline(const planner::DofProgress& p, double target) {
+  if (p.converged) return "converged: every parameter of interest below " + Percent(target);
+  if (p.precise) {
+    return "every parameter of interest below " + Percent(target) + " but NOT trusted";
+  }
+  return "worst " + p.worst + " at " + Percent(p.worst_percent) + " (target " + Percent(target) +
+         ")";
+}
+
+void PrintInterestLine(model::Dof dof, const planner::InterestParameter& q, double target,
+                       const model::Truth* truth, std::ostream& out) {
+  std::ostringstream line;
+  const std::string unit = model::Unit(q.name, dof);
+  line << "    " << std::left << std::setw(30) << q.name << std::right;
+  if (std::isfinite(q.value)) {
+    line << std::setw(11) << model::Significant(q.value, 4) << " ± " << std::left
+         << std::setw(10) << model::Significant(q.sigma, 3) << std::right << std::setw(8)
+         << (q.estimated ? Percent(q.percent) : "held") << (q.estimated && q.percent <= target ? "  ok" : "    ")
+         << " " << std::left << std::setw(12) << (unit == "1" ? "" : unit) << std::right;
+  } else {
+    line << std::setw(34) << "not estimated yet" << std::setw(17) << "";
+  }
+  if (truth != nullptr) {
+    const double v = ident::TrueParameter(*truth, dof, q.name);
+    line << " true " << model::Significant(v, 4);
+    if (std::isfinite(q.value) && v != 0) {
+      line << std::fixed << std::setprecision(2) << "  error " << std::showpos
+           << 100.0 * (q.value - v) / std::abs(v) << "%" << std::noshowpos << " ("
+           << std::setprecision(1) << (q.value - v) / q.sigma << "σ)" << std::defaultfloat;
+    }
+  }
+  out << line.str() << "\n";
+  if (!q.flag.empty()) out << "      ! " << q.flag << "\n";
+}
+
+}  // namespace
+
 void PrintProgress(const std::vector<planner::DofProgress>& progress, double target,
                    std::ostream& out, const model::Truth* truth) {
   for (const auto& p : progress) {
     out << "  " << model::DofName(p.dof) << " (" << p.trials << " trial"
-        << (p.trials == 1 ? "" : "s") << "): "
-        << (p.converged ? "every parameter of interest below " + Percent(target)
-                        : "worst " + p.worst + " at " + Percent(p.worst_percent) + " (target " +
-                              Percent(target) + ")")
-        << "\n";
-    for (const auto& q : p.interest) {
-      std::ostringstream line;
-      line << "    " << std::left << std::setw(30) << q.name << std::right;
-      if (q.estimated) {
-        line << std::setw(11) << std::setprecision(5) << q.value << " ± " << std::left
-             << std::setw(10) << std::setprecision(3) << q.sigma << std::right << std::setw(8)
-             << Percent(q.percent) << (q.percent <= target ? "  ok" : "    ");
-      } else {
-        line << std::setw(34) << "not estimated yet"
-             << "    ";
+        << (p.trials == 1 ? "" : "s") << "): " << DofHeadline(p, target) << "\n";
+    for (const auto& q : p.interest) PrintInterestLine(p.dof, q, target, truth, out);
+    if (p.consistency.tested) out << "    consistency: " << p.consistency.text << "\n";
+    if (!p.converged) {
+      for (const auto& d : p.doubts) {
+        if (d != p.consistency.text) out << "    not trusted: " << d << "\n";
       }
-      if (truth != nullptr) {
-        const double v = ident::TrueParameter(*truth, p.dof, q.name);
-        line << "   true " << std::setprecision(5) << v;
-        if (q.estimated && v != 0) {
-          line << std::fixed << std::setprecision(2) << "  error " << std::showpos
-               << 100.0 * (q.value - v) / std::abs(v) << "%" << std::noshowpos << " ("
-               << std::setprecision(1) << (q.value - v) / q.sigma << "σ)" << std::defaultfloat;
-        }
-      }
-      out << line.str() << "\n";
     }
   }
 }
@@ -73,15 +146,30 @@ json ProgressJson(const std::vector<planner::DofProgress>& progress) {
   for (const auto& p : progress) {
     json interest = json::object();
     for (const auto& q : p.interest) {
-      interest[q.name] =
-          q.estimated
-              ? json{{"value", Num(q.value)}, {"sigma", Num(q.sigma)}, {"percent", Num(q.percent)}}
-              : json(nullptr);
+      interest[q.name] = std::isfinite(q.value) ? json{{"value", Num(q.value)},
+                                                        {"sigma", Num(q.sigma)},
+                                                        {"percent", Num(q.percent)},
+                                                        {"unit", model::Unit(q.name, p.dof)},
+                                                        {"held", q.held},
+                                                        {"physical", q.physical},
+                                                        {"flag", q.flag}}
+                                                  : json(nullptr);
+    }
+    json consistency = nullptr;
+    if (p.consistency.tested) {
+      consistency = {{"chi2", Num(p.consistency.chi2)},
+                     {"dof", p.consistency.dof},
+                     {"p_value", Num(p.consistency.p_value)},
+                     {"level", p.consistency.level},
+                     {"consistent", p.consistency.consistent},
+                     {"worst", p.consistency.worst},
+                     {"worst_sigmas", Num(p.consistency.worst_sigmas)}};
     }
     j[std::string(model::DofName(p.dof))] = {
         {"converged", p.converged}, {"worst", p.worst},   {"worst_percent", Num(p.worst_percent)},
         {"trials", p.trials},       {"usable", p.usable}, {"status", p.status},
-        {"interest", interest}};
+        {"precise", p.precise},     {"trusted", p.trusted}, {"doubts", p.doubts},
+        {"refusal", p.refusal},     {"consistency", consistency}, {"interest", interest}};
   }
   return j;
 }

@@ -13,6 +13,22 @@
 
 namespace uuvplan::tool {
 
+/// Exit statuses of `next` and `loop` beyond the common 0/1/2 (docs/cli.md): the budget ran
+/// out, the DOFs left are stuck (no trial adds information), convergence refused (estimates
+/// inconsistent, non-physical or failing validation).
+inline constexpr int kExitBudgetSpent = 4;
+inline constexpr int kExitStuck = 5;
+inline constexpr int kExitRefused = 6;
+int ExitStatus(planner::LoopStatus s);
+int ExitStatus(planner::NextStatus s);
+
+/// "m 912.6 kg ± 31.2 (3.42%)" with the parameter's unit, flags for held and non-physical.
+std::string InterestText(model::Dof dof, const planner::InterestParameter& q, double target);
+
+/// [{"dof", "trial", "parameter", "sigma_now", "sigma_after", "gain", "trials_to_target",
+///   "negligible"}] (SI; null for +inf).
+nlohmann::json CandidatesJson(const std::vector<planner::CandidateGain>& candidates);
+
 /// "sine  surge-front  120.0 s  35.0 ± 25.0 N, T 26.0 s" — kind, mapping, duration, force.
 std::string TrialLine(const model::TrialDesign& d);
 

@@ -44,6 +44,13 @@ struct ParameterFamily {
   /// Where a fit may go: the model is undefined (or unidentifiable) below this; NaN: anywhere.
   double fit_lower = std::numeric_limits<double>::quiet_NaN();
   bool fit_lower_open = false;
+  /// Physically admissible identified values (issue #13: drag >= 0, 0 < η <= 1.2, m above the
+  /// dry mass), where narrower than the file range [lower, upper]: the largest value a vehicle
+  /// can have (NaN: `upper`), and whether a translational value must exceed the vehicle's dry
+  /// mass (a rotational inertia in a vehicle file is computed, not weighed: no bound). An
+  /// estimate outside is non-physical: a fit the loop must not converge on.
+  double physical_upper = std::numeric_limits<double>::quiet_NaN();
+  bool above_dry_mass = false;
 
   /// `value` is finite and within the fit's range.
   bool Fittable(double value) const {
@@ -60,6 +67,11 @@ struct ParameterFamily {
   bool Admissible(double value) const {
     return (lower_open ? value > lower : value >= lower) && value <= upper;
   }
+  /// Admissible and within the physical range (the vehicle's rigid inertia is checked by the
+  /// caller: planner::NonPhysical).
+  bool Physical(double value) const { return Admissible(value) && !(value > physical_upper); }
+  /// The physical range in words: "a number >= 0", "a number in (0, 1.2]".
+  std::string PhysicalExpected() const;
   /// `expected`, or the admissible range in words: "a positive number", "a number >= 0".
   std::string Expected() const;
 };

@@ -22,6 +22,7 @@
 //     pause_s), the accounting of PlanSchedule.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -55,6 +56,20 @@ struct DesignLoopOptions {
   /// percentile error below this (%). CHOSEN: seed 000's significance limit; before, the box
   /// estimates ± 2σ would be wider than the a priori one and the a priori schedule is better.
   double usable_percent = kInsignificantPercent;
+  /// Level of the χ² consistency test of each new trial against the previous estimate
+  /// (ConsistencyTest). CHOSEN 1%: the test is conservative (C_prev + C_new bounds the
+  /// covariance of the change), so a failure at 1% is an inconsistency, not chance.
+  double consistency_level = 0.01;
+  /// A trial's information gain is negligible when reaching the target at its rate would take
+  /// more than this many such trials (CandidateGain::trials_to_target). CHOSEN 5: a pool
+  /// session's worth of repeats; the ROMEO loop's useful trials need at most 3.
+  double max_trials_to_target = 5.0;
+  /// A trial brought new information when some parameter of interest gained at least this
+  /// fraction of the information it had ((σ_before/σ_after)² − 1). CHOSEN 0.05 (σ down 2.4%).
+  double min_information_ratio = 0.05;
+  /// The identified model fails validation when its output-error residuals have a lag-1
+  /// autocorrelation above this (the level at which identification warns of model error).
+  double max_residual_lag1 = 0.8;
   ScheduleOptions schedule;  ///< the a priori schedule of each DOF (its `dofs` is ignored)
   NextTrialOptions next;     ///< the sequential design (its `schedule` is replaced by the above)
   ident::IdentifyOptions identify;
@@ -65,11 +80,36 @@ struct DesignLoopOptions {
 /// One parameter of interest of a DOF as the identification left it.
 struct InterestParameter {
   std::string name;
-  bool estimated = false;  ///< identified with a finite σ
+  bool estimated = false;  ///< identified with a finite σ (and not held: see `held`)
   double value = std::numeric_limits<double>::quiet_NaN();
   double sigma = std::numeric_limits<double>::quiet_NaN();
-  /// 100·σ/|value| (seed 000 §III-A); +inf when not estimated.
+  /// 100·σ/|value| (seed 000 §III-A); +inf when not estimated or held.
   double percent = std::numeric_limits<double>::infinity();
+  /// An a priori fallback: the identification held it (or a parameter it depends on) at its a
+  /// priori value or calls it not reliable (ill-conditioned least squares). Its value and σ are
+  /// kept for printing but never counted as information (percent = +inf).
+  bool held = false;
+  bool physical = true;  ///< within its family's physical range (NonPhysical)
+  std::string flag;      ///< why it is held or non-physical ("" when neither)
+};
+
+/// The χ² test of a DOF's newest trial against the estimate before it (issue #13): over the
+/// parameters estimated (and reliable) in both, Δθ = θ_new − θ_prev and
+/// χ² = Δθᵀ (C_prev + C_new)⁻¹ Δθ on n = |Δθ| degrees of freedom, consistent when its survival
+/// probability is at least the level. C_prev + C_new bounds the covariance of Δθ from above
+/// (for nested efficient estimates it is C_prev − C_new, Hausman 1978), so the test is
+/// conservative: it fails on estimates that moved by many of their σ (an overconfident σ or a
+/// model that does not explain every trial), not by chance.
+struct ConsistencyTest {
+  bool tested = false;  ///< false: no earlier estimate with a parameter in common
+  double chi2 = std::numeric_limits<double>::quiet_NaN();
+  int dof = 0;
+  double p_value = std::numeric_limits<double>::quiet_NaN();
+  double level = 0.0;
+  bool consistent = false;  ///< tested and p_value >= level
+  std::string worst;        ///< the parameter that moved by most of its combined σ
+  double worst_sigmas = std::numeric_limits<double>::quiet_NaN();
+  std::string text;         ///< one sentence for people
 };
 
 /// How far a DOF is from the target.
@@ -80,21 +120,56 @@ struct DofProgress {
   std::string worst;  ///< name of the parameter with the largest percentile error
   double worst_percent = std::numeric_limits<double>::infinity();
   bool usable = false;     ///< estimates good enough for the sequential design
-  bool converged = false;  ///< every parameter of interest below the target
+  bool precise = false;    ///< every parameter of interest below the target by its own σ
+  /// Convergence (issue #13) needs more than precision: every parameter of interest physical,
+  /// none held, the model validated and the newest trial consistent with the estimate before it.
+  bool trusted = false;
+  bool converged = false;         ///< precise and trusted
+  ConsistencyTest consistency;    ///< the newest trial against the estimate before it
+  std::vector<std::string> doubts;  ///< why the estimates are not trusted (empty when trusted)
+  /// Precise and consistent, yet non-physical or failing validation: more trials of this model
+  /// cannot make it right, the loop refuses to converge on it (its reason; "" otherwise).
+  std::string refusal;
   std::string status;      ///< the identification's status and message for the DOF
 };
 
 /// The parameters of interest of `dof` for a vehicle (m; kq when it is estimated and
-/// significant, else k; every η of its mappings in a direction the thrusters can hold), and how
-/// far `identification` (may be null: no trial yet) has brought them.
+/// significant, else k; every η of its mappings in a direction the thrusters can hold), how far
+/// `identification` (may be null: no trial yet) has brought them, and whether they can be
+/// trusted; `previous` (may be null) is the DOF's identification before its newest trial.
 DofProgress EvaluateProgress(const model::Vehicle& vehicle, model::Dof dof,
                              const ident::DofIdentification* identification, int trials,
-                             const DesignLoopOptions& options);
+                             const DesignLoopOptions& options,
+                             const ident::DofIdentification* previous = nullptr);
+
+/// "" when `value` of parameter `name` is physically admissible on `dof` of `vehicle` (its
+/// family's physical range, ParameterFamily::Physical; a translational m above the vehicle's
+/// dry mass), else why not.
+std::string NonPhysical(const model::Vehicle& vehicle, model::Dof dof, const std::string& name,
+                        double value);
+
+/// The predicted information gain of a candidate trial for its DOF's parameters of interest
+/// above the target: for each, the information ratio r = (σ_now/σ_after)² − 1 (σ_now the
+/// identification's σ the design knew, +inf when it knew none) and the number of such trials
+/// to the target n = ((σ_now/σ_target)² − 1)/r; the bottleneck is the parameter with the
+/// largest n. Negligible when n > DesignLoopOptions::max_trials_to_target.
+struct CandidateGain {
+  model::Dof dof = model::Dof::kSurge;
+  std::string trial;      ///< the candidate's id
+  std::string parameter;  ///< the bottleneck
+  double sigma_now = std::numeric_limits<double>::quiet_NaN();
+  double sigma_after = std::numeric_limits<double>::quiet_NaN();  ///< predicted
+  double gain = 0.0;  ///< 1 − σ_after/σ_now of the bottleneck (1 when σ_now is +inf)
+  double trials_to_target = 0.0;
+  bool negligible = false;
+};
 
 enum class NextStatus {
   kTrial,       ///< a next trial is planned
   kConverged,   ///< every parameter of interest is already below the target: nothing to run
   kInfeasible,  ///< no DOF that needs a trial can be given one in this pool (see message)
+  kStuck,       ///< every trial the pool allows adds negligible information (see message)
+  kRefused,     ///< precise but non-physical or failing validation: no convergence claimed
 };
 std::string_view NextStatusName(NextStatus s);
 
@@ -108,6 +183,7 @@ struct NextStepResult {
   std::string source;
   PlannedTrial trial;
   PredictedPrecision predicted;  ///< predicted σ of the DOF's parameters after the trial
+  std::vector<CandidateGain> candidates;  ///< every DOF's candidate trial, in the order tried
   std::vector<std::string> notes;
 };
 
@@ -121,6 +197,14 @@ struct LoopOptions {
   int budget = 40;                ///< most trials to run before giving up
   std::uint64_t seed = 1;         ///< trial i draws from model::StreamSeed(seed, i)
   double command_rate_hz = 20.0;  ///< virtual pool's command rate (VirtualPoolOptions)
+  /// A design that already ran this many times without new information
+  /// (DesignLoopOptions::min_information_ratio) is not run again: its DOF is stuck. Issue #13:
+  /// never more than twice.
+  int max_repeats = 2;
+  /// Consecutive failed consistency tests of a DOF before the loop refuses it. CHOSEN 3: one
+  /// failure is an overconfident early σ the next trials correct (VSOR yaw), three in a row a
+  /// model that does not explain the trials.
+  int max_inconsistent = 3;
 
   bool IsValid(std::string* error) const;
 };
@@ -132,6 +216,12 @@ struct LoopIteration {
   std::string source;  ///< see NextStepResult::source
   PlannedTrial trial;
   PredictedPrecision predicted;  ///< what the design expected after the trial
+  std::vector<CandidateGain> candidates;  ///< the gain of every DOF's candidate trial
+  /// Per parameter of the trial's DOF the design predicted σ for: [predicted at the estimates
+  /// before the trial, achieved] σ after the trial (achieved NaN when not estimated).
+  std::map<std::string, std::array<double, 2>> sigma;
+  PredictedPrecision at_estimates;  ///< the trial's predicted σ at the estimates before it
+  bool new_information = true;  ///< some parameter of interest gained information (see above)
   double start = 0.0;            ///< campaign clock at the trial's start (s)
   double pool_time = 0.0;        ///< pool time so far, this trial included (s)
   /// Estimates of every identified DOF after this trial (theta layout of each DOF).
@@ -145,6 +235,8 @@ enum class LoopStatus {
   kConverged,    ///< every parameter of interest below the target
   kBudgetSpent,  ///< the trial budget ran out first
   kInfeasible,   ///< a DOF that needs a trial cannot get one in this pool
+  kStuck,        ///< a DOF's trials add negligible information (a pool, thrust, ... limit)
+  kRefused,      ///< a DOF's estimates are inconsistent, non-physical or fail validation
 };
 std::string_view LoopStatusName(LoopStatus s);
 
