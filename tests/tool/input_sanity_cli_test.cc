@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "ident/ident_cases.h"
+#include "support/real_data.h"
 #include "tool_test_util.h"
 #include "uuvplan/io/virtual_campaign.h"
 
@@ -84,7 +86,7 @@ void ExpectStopped(const TempDir& dir, const std::string& campaign, const std::s
                    const std::string& unit) {
   const ToolRun r = RunTool("identify '" + campaign + "'", dir);
   EXPECT_EQ(r.status, 2) << r.out << r.err;
-  EXPECT_THAT(r.err, ::testing::AnyOf(HasSubstr("trials/yaw_flrr.csv"), HasSubstr("trials/surge_front.csv")));
+  EXPECT_THAT(r.err, ::testing::ContainsRegex("trials/[a-z_0-9]+\\.csv: column " + column));
   EXPECT_THAT(r.err, HasSubstr("column " + column + ":")) << r.err;
   EXPECT_THAT(r.err, HasSubstr(unit)) << r.err;
   EXPECT_THAT(r.err, HasSubstr("--accept-units"));
@@ -138,6 +140,20 @@ TEST(InputSanityCliTest, ForceOfTheWrongSignStops) {
   const std::string c = Campaign(dir, model::Dof::kYaw, true, true);
   EditColumn(Trial(c, model::Dof::kYaw), "force_yaw", [](double f) { return -f; });
   ExpectStopped(dir, c, "force_yaw", "negate force_yaw");
+}
+
+TEST(InputSanityCliTest, RealBluerovGyroInDegreesPerSecondStops) {
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
+  // shared/data/bluerov-yaw-2016 copied with its gyro converted to deg/s (its rates reach
+  // 0.3–1.7 rad/s, so 16–100 "rad/s" in degrees): stopped, naming vel_yaw and deg/s.
+  TempDir dir;
+  const std::string copy = dir / "bluerov";
+  std::filesystem::copy(uuvplan::testing::RealDataPath("bluerov-yaw-2016"), copy,
+                        std::filesystem::copy_options::recursive);
+  for (const auto& f : std::filesystem::directory_iterator(copy + "/trials")) {
+    EditColumn(f.path().string(), "vel_yaw", [](double v) { return v * kDegrees; });
+  }
+  ExpectStopped(dir, copy + "/campaign.yaml", "vel_yaw", "deg/s");
 }
 
 }  // namespace
