@@ -33,7 +33,7 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
   Stopwatch watch;
   DofIdentification r;
   r.dof = dof;
-  const stages::DofTrials trials = stages::SelectTrials(dof, all, &r);
+  const stages::DofTrials trials = stages::SelectTrials(dof, all, o.data.outliers, &r);
   if (trials.fit.empty()) {
     r.status = IdentifyStatus::kFailed;
     r.message = "no fit trial for " + std::string(model::DofName(dof)) +
@@ -140,13 +140,18 @@ IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& 
     result.dofs.push_back(IdentifyDof(campaign, d, trials, share, o));
   }
   result.status = IdentifyStatus::kOk;
+  std::string failed;
   for (const auto& d : result.dofs) {
-    if (d.status == IdentifyStatus::kFailed) result.status = IdentifyStatus::kFailed;
-    else if (d.status == IdentifyStatus::kWarnings && result.status == IdentifyStatus::kOk)
+    if (d.status == IdentifyStatus::kFailed) {
+      result.status = IdentifyStatus::kFailed;
+      failed += (failed.empty() ? "" : ", ") + std::string(model::DofName(d.dof));
+    } else if (d.status == IdentifyStatus::kWarnings && result.status == IdentifyStatus::kOk) {
       result.status = IdentifyStatus::kWarnings;
+    }
   }
   result.message = std::to_string(result.dofs.size()) + " DOF(s) identified from " +
-                   std::to_string(trials.size()) + " trial(s)";
+                   std::to_string(trials.size()) + " trial(s)" +
+                   (failed.empty() ? "" : "; failed: " + failed + " (the reason on each DOF's FAILED line)");
   return result;
 }
 

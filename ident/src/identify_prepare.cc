@@ -35,7 +35,27 @@ double CommandRoughness(const TrialData& d) {
 
 namespace stages {
 
-DofTrials SelectTrials(model::Dof dof, const std::vector<TrialData>& all, DofIdentification* r) {
+namespace {
+
+// The DOF's warnings about a trial's data: columns without values, many outliers.
+void WarnAboutData(const TrialData& d, const OutlierOptions& outliers, DofIdentification* r) {
+  for (const std::string& c : d.unusable_columns) {
+    r->warnings.push_back(d.name + ": column " + c + " has no usable value (all NaN?): the " +
+                          "trial is identified from its other measurement only");
+  }
+  const std::string pos = OutlierFinding(d.name, "position", d.position_outliers.size(),
+                                         d.position.size() + d.position_outliers.size(), outliers);
+  const std::string vel = OutlierFinding(d.name, "velocity", d.velocity_outliers.size(),
+                                         d.velocity.size() + d.velocity_outliers.size(), outliers);
+  for (const std::string& w : {pos, vel}) {
+    if (!w.empty()) r->warnings.push_back(w);
+  }
+}
+
+}  // namespace
+
+DofTrials SelectTrials(model::Dof dof, const std::vector<TrialData>& all,
+                       const OutlierOptions& outliers, DofIdentification* r) {
   DofTrials t;
   for (const TrialData& d : all) {
     if (d.dof != dof) continue;
@@ -54,11 +74,7 @@ DofTrials SelectTrials(model::Dof dof, const std::vector<TrialData>& all, DofIde
     }
   }
   for (const TrialData& d : all) {
-    if (d.dof != dof) continue;
-    for (const std::string& c : d.unusable_columns) {
-      r->warnings.push_back(d.name + ": column " + c + " has no usable value (all NaN?): the " +
-                            "trial is identified from its other measurement only");
-    }
+    if (d.dof == dof) WarnAboutData(d, outliers, r);
   }
   return t;
 }

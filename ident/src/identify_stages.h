@@ -54,7 +54,10 @@ struct LeastSquaresAnswer {
 };
 
 // prepare
-DofTrials SelectTrials(model::Dof dof, const std::vector<TrialData>& all, DofIdentification* r);
+/// The DOF's trials; unusable columns and an outlier fraction above
+/// OutlierOptions::finding_fraction are the DOF's warnings.
+DofTrials SelectTrials(model::Dof dof, const std::vector<TrialData>& all,
+                       const OutlierOptions& outliers, DofIdentification* r);
 model::ModelStructure ChooseStructure(const model::Vehicle& vehicle, model::Dof dof,
                                       const DofTrials& trials, const IdentifyOptions& o);
 bool SuspectClosedLoop(const std::vector<const TrialData*>& fit, ClosedLoop setting);

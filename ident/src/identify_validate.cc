@@ -1,7 +1,8 @@
 // Stage 4 of identifying a DOF, validate: the reported estimates with what makes them
-// doubtful (not excited, negative drag, closed loop, nothing significant), and the free-run
-// simulation of every trial with the identified model (velocity MAE, seed 002 eq. 37;
-// position RMS; residual whiteness).
+// doubtful (not excited, closed loop) and what makes the fit a failure (docs/identification.md,
+// "Failure statuses": non-physical, nothing or no dynamics significant, a free run that
+// diverges or does no better than ν ≡ 0), and the free-run simulation of every trial with the
+// identified model (velocity MAE, seed 002 eq. 37; position RMS; residual whiteness).
 #include <algorithm>
 #include <cmath>
 
@@ -26,17 +27,51 @@ void KeepValuesBeforeDrop(const DofContext& c, const std::vector<ParameterEstima
   }
 }
 
-void WarnImplausible(DofIdentification* r) {
+// The DOF fails with `reason` (reasons add up, "; "-separated, in the message).
+void Fail(const std::string& reason, DofIdentification* r) {
+  if (r->status == IdentifyStatus::kFailed && !r->message.empty()) {
+    r->message += "; " + reason;
+  } else {
+    r->status = IdentifyStatus::kFailed;
+    r->message = reason;
+  }
+}
+
+// How far `value` lies outside the family's admissible range (0 inside it).
+double DistanceOutside(const model::ParameterFamily& f, double value) {
+  if (f.Admissible(value)) return 0.0;
+  return value < f.lower || (f.lower_open && value == f.lower) ? f.lower - value : value - f.upper;
+}
+
+// Non-physical estimates (model/parameter.h, each family's admissible range: drag ≥ 0, m > 0,
+// 0 < η ≤ 2, …): outside the range by more than 3σ is a failed fit; outside but within 3σ, a
+// warning and the parameter unreliable. 3σ, not 1.96σ: a true value on the bound (kq = 0 on
+// URIS, seed 004 Table 4) then fails 0.13% of fits, not 2.5% (one-sided normal tail).
+void CheckAdmissible(DofIdentification* r) {
+  constexpr double kMargin = 3.0;  // σ
   for (const auto& e : r->params) {
-    if (IsDragParameter(e.name) && e.state == ParameterState::kEstimated && e.value < 0 &&
-        e.significant) {
-      r->warnings.push_back(e.name + " = " + Fmt(e.value) + " ± " + Fmt(e.sigma) +
-                            " is negative: physically implausible (drag only dissipates). The "
-                            "speed range may be too narrow to separate k and kq, or the model "
-                            "misses an effect (thrust map, lag, coupling; try `uuvplan diagnose`)");
-      r->unreliable.push_back(e.name);
+    const model::ParameterFamily* f = model::FamilyOf(e.name);
+    if (e.state != ParameterState::kEstimated || !f) continue;
+    const double outside = DistanceOutside(*f, e.value);
+    if (!(outside > 0) && std::isfinite(e.value)) continue;
+    const std::string what = e.name + " = " + Fmt(e.value) + " ± " + Fmt(e.sigma) + " " +
+                             model::Unit(e.name, r->dof) + " is outside its admissible range (" +
+                             f->Expected() + ")";
+    const std::string why =
+        IsDragParameter(e.name)
+            ? " (drag only dissipates: the speed range may be too narrow to separate k and kq, "
+              "or the model misses an effect — thrust map, lag, coupling; try `uuvplan diagnose`)"
+            : "";
+    r->unreliable.push_back(e.name);
+    if (!std::isfinite(e.value) || !(outside <= kMargin * e.sigma)) {
+      Fail("non-physical fit: " + what + ", by more than 3σ" + why, r);
+    } else {
+      r->warnings.push_back(what + ", within 3σ of it: not to be trusted" + why);
     }
   }
+}
+
+void WarnClosedLoop(DofIdentification* r) {
   if (r->closed_loop_suspected) {
     r->warnings.push_back(
         "closed-loop data suspected: the logged force of most fit trials changes at every row "
@@ -47,22 +82,52 @@ void WarnImplausible(DofIdentification* r) {
   }
 }
 
+bool Significant(const ParameterEstimate& e) {
+  return e.state == ParameterState::kEstimated && e.significant;
+}
+
 void FailWithoutEstimate(DofIdentification* r) {
+  const ParameterEstimate* m = r->Param(model::param::kMass);
   if (r->estimator == FinalEstimator::kNone) {
-    r->status = IdentifyStatus::kFailed;
-    r->message = "no estimate: no estimator could fit these trials (see the warnings); they do "
-                 "not excite the model (longer trials, steady runs at several levels, a sine)";
-  } else if (std::none_of(r->params.begin(), r->params.end(), [](const ParameterEstimate& e) {
-               return e.state == ParameterState::kEstimated && e.significant;
-             })) {
+    Fail("no estimate: no estimator could fit these trials (see the warnings); they do not "
+         "excite the model (longer trials, steady runs at several levels, a sine)", r);
+  } else if (std::none_of(r->params.begin(), r->params.end(), Significant)) {
     // Seed 000 §IV-D: every estimate has a percentile error above 51.02% — numbers, but no
     // usable estimate (e.g. a trial far too short for the model).
-    r->status = IdentifyStatus::kFailed;
-    r->message = "no parameter is identified: every estimate is insignificant (percentile error "
-                 "above 51.02%); the trials do not excite the model (longer trials, steady runs "
-                 "at several levels, a sine)";
-    r->warnings.push_back(r->message);
+    Fail("no parameter is identified: every estimate is insignificant (percentile error above "
+         "51.02%); the trials do not excite the model (longer trials, steady runs at several "
+         "levels, a sine)", r);
+  } else if (m && m->state == ParameterState::kEstimated && !m->significant &&
+             std::none_of(r->params.begin(), r->params.end(), [](const ParameterEstimate& e) {
+               return IsDragParameter(e.name) && Significant(e);
+             })) {
+    // A constant force alone is no model of the dynamics: inertia and every drag insignificant.
+    Fail("no dynamics identified: m and every drag coefficient are insignificant (percentile "
+         "error above 51.02%); only a constant force is — the trials do not excite the "
+         "dynamics (steady runs at several levels, a sine, open-loop)", r);
   }
+}
+
+// A usable model's free run beats ν ≡ 0 (the velocity MAE of seed 002 eq. 37) on its fit
+// trials and on its validate trials; a free run that diverges is no model at all.
+void CheckFreeRun(DofIdentification* r) {
+  for (const auto& t : r->fit.trials) {
+    if (!std::isfinite(t.velocity_mae)) {
+      Fail("diverged: the free-run simulation of " + t.name +
+           " with the identified model diverges — the model is not usable for simulation", r);
+      return;
+    }
+  }
+  const std::string unit(model::VelocityUnit(r->dof));
+  auto check = [&](const char* trials, double model_mae, double zero_mae) {
+    if (!(model_mae < zero_mae) && std::isfinite(zero_mae)) {
+      Fail(std::string("no better than a zero-velocity model: free-run velocity MAE on the ") +
+               trials + " trials " + Fmt(model_mae) + " " + unit + " against " + Fmt(zero_mae) +
+               " " + unit + " for ν ≡ 0", r);
+    }
+  };
+  check("fit", r->fit.velocity_mae_fit, r->fit.zero_velocity_mae_fit);
+  check("validate", r->fit.velocity_mae_validate, r->fit.zero_velocity_mae_validate);
 }
 
 }  // namespace
@@ -78,7 +143,8 @@ void ReportEstimates(const DofContext& c, const LeastSquaresAnswer& ls,
   r->params = MakeEstimates(r->parameter_names, e.theta, e.covariance, e.state);
   if (r->steady) KeepValuesBeforeDrop(c, r->steady->estimates, e.state, r);
   if (r->output_error) KeepValuesBeforeDrop(c, r->output_error->estimates, e.state, r);
-  WarnImplausible(r);
+  CheckAdmissible(r);
+  WarnClosedLoop(r);
   FailWithoutEstimate(r);
 }
 
@@ -88,14 +154,7 @@ void ValidateStage(const DofContext& c, const ValidationOptions& o, DofIdentific
     for (const TrialData* d : c.trials.fit) fits.push_back(ValidateTrial(c.model, r->theta, *d, o));
     for (const TrialData* d : c.trials.validate) fits.push_back(ValidateTrial(c.model, r->theta, *d, o));
     r->fit = Summarize(std::move(fits));
-    for (const auto& t : r->fit.trials) {
-      if (!std::isfinite(t.velocity_mae)) {
-        r->warnings.push_back("the free-run simulation of " + t.name +
-                              " with the identified model diverges: the model is not usable "
-                              "for simulation as identified");
-        break;
-      }
-    }
+    CheckFreeRun(r);
     if (r->output_error && r->output_error->ok() && r->output_error->residual_lag1 > 0.8) {
       r->warnings.push_back("the identified model does not explain the measurements to their "
                             "noise level (output-error residuals strongly correlated, lag-1 " +

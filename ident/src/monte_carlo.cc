@@ -104,8 +104,11 @@ class CoverageTally {
   }
 
   // Every estimator's estimates of one DOF; false if the DOF failed.
+  // Every DOF with an estimate is tallied, a `failed` one too (e.g. kq < 0 by more than 3σ
+  // when the truth is on the bound): leaving those out would keep the good repetitions only
+  // and overstate the coverage. A DOF without any estimate is a failure.
   bool AddDof(const DofIdentification& d) {
-    if (d.status == IdentifyStatus::kFailed) return false;
+    if (d.estimator == FinalEstimator::kNone) return false;
     if (d.steady && d.steady->ok()) {
       for (const auto& e : d.steady->estimates) Add("steady_state", d.dof, e);
     }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "number_text.h"
 #include "options_check.h"
 
 namespace uuvplan::ident {
@@ -86,8 +87,21 @@ double PredictionResidual(const Signal& s, int hw, const std::vector<char>& skip
 }  // namespace
 
 bool OutlierOptions::IsValid(std::string* error) const {
-  return Require(half_window >= 2 && threshold > 0 && !(noise_floor < 0),
-                 "OutlierOptions: need half_window >= 2, threshold > 0, noise_floor >= 0", error);
+  return Require(half_window >= 2 && threshold > 0 && !(noise_floor < 0) &&
+                     finding_fraction >= 0 && finding_fraction <= 1,
+                 "OutlierOptions: need half_window >= 2, threshold > 0, noise_floor >= 0, "
+                 "finding_fraction in [0, 1]",
+                 error);
+}
+
+std::string OutlierFinding(const std::string& trial, const std::string& signal,
+                           std::size_t excluded, std::size_t total, const OutlierOptions& o) {
+  if (total == 0 || !(static_cast<double>(excluded) > o.finding_fraction * total)) return "";
+  return trial + ": " + std::to_string(excluded) + " of " + std::to_string(total) + " " + signal +
+         " samples (" + Fmt(100.0 * excluded / total, 3) + "%) excluded as outliers, more than " +
+         Fmt(100.0 * o.finding_fraction, 3) +
+         "%: a sensor fault, a unit or timing mistake, or motion the outlier test takes for "
+         "noise — look at the log before trusting this fit (the excluded times are in --json)";
 }
 
 std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& o,

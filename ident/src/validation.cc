@@ -157,16 +157,18 @@ TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& thet
     const double w = grid[g + 1] > grid[g] ? (t - grid[g]) / (grid[g + 1] - grid[g]) : 0.0;
     return sim.x(g, c) + w * (sim.x(g + 1, c) - sim.x(g, c));
   };
-  double sum_abs = 0.0;
+  double sum_abs = 0.0, sum_abs_zero = 0.0;
   std::vector<double> verr;
   for (std::size_t k = 0; k < vref.size(); ++k) {
     if (vref.t[k] < 0) continue;
     const double e = model_at(vref.t[k], 1) - vref.y[k];  // ν_model − ν_measured (eq. 37)
     sum_abs += std::abs(e);
+    sum_abs_zero += std::abs(vref.y[k]);
     verr.push_back(-e);
   }
   f.velocity_samples = static_cast<int>(verr.size());
   f.velocity_mae = f.velocity_samples > 0 ? sum_abs / f.velocity_samples : kNaN;
+  f.zero_velocity_mae = f.velocity_samples > 0 ? sum_abs_zero / f.velocity_samples : kNaN;
   std::vector<double> perr;
   cursor = 0;
   g = 0;
@@ -193,13 +195,14 @@ TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& thet
 FitSummary Summarize(std::vector<TrialFit> trials) {
   FitSummary s;
   s.trials = std::move(trials);
-  double va[3] = {0, 0, 0}, pa[3] = {0, 0, 0};
+  double va[3] = {0, 0, 0}, za[3] = {0, 0, 0}, pa[3] = {0, 0, 0};
   int vn[3] = {0, 0, 0}, pn[3] = {0, 0, 0};
   for (const TrialFit& f : s.trials) {
     const int u = f.use == model::TrialUse::kFit ? 0 : 1;
     for (int k : {u, 2}) {
       if (f.velocity_samples > 0) {
         va[k] += f.velocity_mae * f.velocity_samples;
+        za[k] += f.zero_velocity_mae * f.velocity_samples;
         vn[k] += f.velocity_samples;
       }
       if (f.position_samples > 0) {
@@ -213,6 +216,8 @@ FitSummary Summarize(std::vector<TrialFit> trials) {
   s.velocity_mae_fit = mae(0);
   s.velocity_mae_validate = mae(1);
   s.velocity_mae_all = mae(2);
+  s.zero_velocity_mae_fit = vn[0] > 0 ? za[0] / vn[0] : kNaN;
+  s.zero_velocity_mae_validate = vn[1] > 0 ? za[1] / vn[1] : kNaN;
   s.position_rms_fit = rms(0);
   s.position_rms_validate = rms(1);
   s.position_rms_all = rms(2);

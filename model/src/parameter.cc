@@ -37,7 +37,8 @@ const std::vector<ParameterFamily>& StandardFamilies() {
         {param::kBiasStep, "force of one ballast step (seed 000 eq. 20)", "N", "N·m", 0.0, -kInf,
          kInf},
     };
-    f[0].fit_lower = 0.0;  // m > 0: the DOF model divides by it
+    f[0].lower_open = true;  // m > 0: no inertia is not a body
+    f[0].fit_lower = 0.0;    // the DOF model divides by it
     f[0].fit_lower_open = true;
     f[0].above_dry_mass = true;  // added mass is positive for a body in water
     return f;

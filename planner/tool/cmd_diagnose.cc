@@ -22,10 +22,11 @@ struct DiagnoseCommandOptions {
   std::string campaign;
   std::string json;
   std::vector<std::string> dofs;
+  bool accept_units = false;
 };
 
 int RunDiagnose(const DiagnoseCommandOptions& co) {
-  const model::Campaign campaign = io::ReadCampaign(co.campaign);
+  const model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
   ident::DiagnoseOptions o;
   o.dofs = ParseDofFlags(co.dofs);
   o.verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
@@ -41,6 +42,7 @@ void BindDiagnose(CLI::App* sub, DiagnoseCommandOptions* o) {
   sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")->required();
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_option("--dof", o->dofs, "diagnose only this DOF (repeatable)");
+  AddAcceptUnitsFlag(sub, &o->accept_units);
 }
 
 const CommandRegistration kRegistration(MakeCommand<DiagnoseCommandOptions>(

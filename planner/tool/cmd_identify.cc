@@ -1,8 +1,9 @@
 // `uuvplan identify CAMPAIGN [--json F] [--dof D]... [--steady TRIAL:T0:T1]... [--no-refine]
-// [--no-prune] [--closed-loop yes|no|auto]`: parameter estimates with standard deviations and
-// the fit of the identified model (ident/identify.h, docs/identification.md). Exit status 0
-// when every DOF was identified, 1 when some DOF could not be (the message says what would fix
-// it), 2 on bad input. On a terminal, the summary's Brief() line follows on stderr.
+// [--no-prune] [--closed-loop yes|no|auto] [--accept-units]`: parameter estimates with standard
+// deviations and the fit of the identified model (ident/identify.h, docs/identification.md).
+// Exit status 0 when every DOF was identified, 1 when some DOF failed (its FAILED line says
+// why), 2 on bad input — units or signs that look wrong among it (ident/input_sanity.h) unless
+// --accept-units. On a terminal, the summary's Brief() line follows on stderr.
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ struct IdentifyCommandOptions {
   std::vector<std::string> dofs;
   std::vector<std::string> steady;
   std::string closed_loop{kClosedLoopNames.Name(ident::IdentifyOptions{}.closed_loop)};
+  bool accept_units = false;
   ident::IdentifyOptions identify;  ///< --no-refine, --no-prune bound here
 };
 
@@ -72,7 +74,7 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
 }
 
 int RunIdentify(const IdentifyCommandOptions& co) {
-  const model::Campaign campaign = io::ReadCampaign(co.campaign);
+  const model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
   ident::IdentifyOptions o = co.identify;
   o.dofs = ParseDofFlags(co.dofs);
   for (const std::string& s : co.steady) AddSteadyWindow(s, campaign, &o);
@@ -110,6 +112,7 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
   sub->add_option("--closed-loop", o->closed_loop,
                   "whether the logs were recorded in closed loop: auto (detect), yes, no")
       ->capture_default_str();
+  AddAcceptUnitsFlag(sub, &o->accept_units);
 }
 
 const CommandRegistration kRegistration(MakeCommand<IdentifyCommandOptions>(

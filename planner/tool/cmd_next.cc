@@ -35,6 +35,7 @@ struct NextCliOptions {
   std::string pool;
   std::vector<std::string> dofs;
   std::string json;
+  bool accept_units = false;
   planner::DesignLoopOptions design;  ///< --target bound here
 };
 
@@ -121,7 +122,7 @@ int RunNext(const NextCliOptions& o) {
     throw model::InputError("--target", "expected a percentile error > 0 (%), got " +
                                             model::ShortestNumber(o.design.target_percent));
   }
-  const model::Campaign campaign = io::ReadCampaign(o.campaign);
+  const model::Campaign campaign = ReadCampaignForIdentification(o.campaign, o.accept_units);
   const model::Pool pool = io::ReadPool(o.pool);
   planner::DesignLoopOptions options = o.design;
   options.dofs = ParseDofFlags(o.dofs);
@@ -154,6 +155,7 @@ void BindNext(CLI::App* sub, NextCliOptions* o) {
                   "percentile error 100·σ/|θ| (%) every parameter of interest must reach")
       ->capture_default_str();
   AddJsonOption(sub, &o->json, "also write the result");
+  AddAcceptUnitsFlag(sub, &o->accept_units);
 }
 
 const CommandRegistration kRegistration(MakeCommand<NextCliOptions>(

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "uuvplan/ident/input_sanity.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
 
@@ -52,6 +53,28 @@ std::vector<model::Dof> ParseDofFlags(const std::vector<std::string>& names) {
     dofs.push_back(*dof);
   }
   return dofs;
+}
+
+void AddAcceptUnitsFlag(CLI::App* sub, bool* accept) {
+  sub->add_flag("--accept-units", *accept,
+                "identify even when a log's units or signs look wrong (a rate 57.3× the "
+                "derivative of its angle, a position column that holds a velocity, a force "
+                "opposite to the motion); the findings are then printed as warnings");
+}
+
+model::Campaign ReadCampaignForIdentification(const std::string& path, bool accept_units) {
+  model::Campaign campaign = io::ReadCampaign(path);
+  const std::vector<ident::InputProblem> problems = ident::CheckInputSanity(campaign);
+  if (problems.empty()) return campaign;
+  std::string text;
+  for (const ident::InputProblem& p : problems) text += "\n  " + p.Text();
+  if (accept_units) {
+    std::cerr << "warning: units or signs look wrong (accepted by --accept-units):" << text << "\n";
+    return campaign;
+  }
+  throw model::InputError(problems.front().file,
+                          "units or signs look wrong, identification not started:" + text +
+                              "\n(fix the columns; if they are right, pass --accept-units)");
 }
 
 }  // namespace uuvplan::tool

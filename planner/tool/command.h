@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "uuvplan/model/campaign.h"
 #include "uuvplan/model/dof.h"
 
 namespace uuvplan::tool {
@@ -66,6 +67,15 @@ void WriteJson(const std::string& path, const nlohmann::json& j);
 /// `path` without a trailing separator ("dir/" and "dir" are the same directory):
 /// io::WriteCampaign builds its temporary sibling by appending to the name.
 std::string DirectoryName(const std::string& path);
+
+/// `--accept-units`: identify even when the campaign's logs fail the unit and sign checks.
+void AddAcceptUnitsFlag(CLI::App* sub, bool* accept);
+
+/// The campaign at `path` (io::ReadCampaign) after the unit and sign checks of
+/// ident/input_sanity.h, run by every command that identifies from it (identify, diagnose,
+/// next): a finding is a model::InputError naming the file, the column and the likely unit
+/// (exit 2), or with `accept_units` a warning on stderr.
+model::Campaign ReadCampaignForIdentification(const std::string& path, bool accept_units);
 
 /// The DOFs named by repeated `--dof` flags; InputError naming the flag and the bad name.
 std::vector<model::Dof> ParseDofFlags(const std::vector<std::string>& names);

@@ -54,7 +54,9 @@ void PrintParameters(const ident::DofIdentification& d, std::ostream& out) {
 void PrintFit(const ident::DofIdentification& d, std::ostream& out) {
   const auto& f = d.fit;
   out << "  fit: velocity MAE (seed 002 eq. 37) fit " << Cell(f.velocity_mae_fit) << ", validate "
-      << Cell(f.velocity_mae_validate) << " " << model::VelocityUnit(d.dof) << "; position RMS fit "
+      << Cell(f.velocity_mae_validate) << " " << model::VelocityUnit(d.dof) << " (zero-velocity model "
+      << Cell(f.zero_velocity_mae_fit) << ", " << Cell(f.zero_velocity_mae_validate)
+      << "); position RMS fit "
       << Cell(f.position_rms_fit) << ", validate " << Cell(f.position_rms_validate) << " "
       << model::PositionUnit(d.dof) << "\n";
   out << "  " << std::left << std::setw(34) << "trial" << std::setw(10) << "use" << std::right
@@ -79,6 +81,7 @@ void PrintDof(const ident::DofIdentification& d, std::ostream& out) {
   out << dof << " (" << ident::IdentifyStatusName(d.status) << ", estimator "
       << ident::FinalEstimatorName(d.estimator) << "; " << d.fit_trials.size() << " fit, "
       << d.validate_trials.size() << " validate trial(s))\n";
+  if (d.status == ident::IdentifyStatus::kFailed) out << "  FAILED: " << d.message << "\n";
   out << "  " << std::left << std::setw(26) << "parameter" << std::right << std::setw(13) << "value"
       << std::setw(12) << "sigma" << std::setw(10) << "error %"
       << "  significance\n";

@@ -2,6 +2,7 @@
 // disk, the JSON with the contract's keys, '-' for stdout, exit status 2 on bad input, and the
 // two real campaigns of shared/data (open-loop BlueROV yaw; closed-loop Tartan AUV).
 // Needs the uuvplan executable (built with the tool target).
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -115,37 +116,63 @@ TEST(IdentifyCliTest, ThreeSamplesIdentifyNothingAndExitOne) {
   fs::remove_all(dir);
 }
 
-TEST(IdentifyCliTest, RealBlueRovYawRuns) {
+TEST(IdentifyCliTest, RealBlueRovYawIsANonPhysicalFit) {
   UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
   // shared/data/bluerov-yaw-2016 (README "Sanity fit"): the output-error fit of yaw_1..3
   // gives I ≈ 1.04 kg·m², k ≈ 4.5 N·m·s and a validate MAE of 0.15–0.18 rad/s. The identified
-  // inertia must land in the README's 0.9–1.4 range (every fit there) and the model must be
-  // flagged as not explaining the data to the noise (thruster dynamics, the thrust map).
+  // inertia must land in the README's 0.9–1.4 range (every fit there). The standard model's
+  // kq comes out negative (−0.56 ± 0.07 N·m·s²/rad², 8σ below 0: the thrust map is wrong in
+  // shape, docs/diagnosis.md): a non-physical fit, so the DOF is failed and identify exits 1,
+  // with the reason on the terminal (it exited 0 with a warning before issue #14).
   const RunResult r = RunUuvplan(
       "identify " + RealDataPath("bluerov-yaw-2016/campaign.yaml") + " --json -", false);
-  ASSERT_EQ(r.status, 0) << r.out;
+  ASSERT_EQ(r.status, 1) << r.out;
   const json j = json::parse(r.out);
   const json& yaw = j.at("dofs").at("yaw");
+  EXPECT_EQ(yaw.at("status"), "failed");
+  EXPECT_THAT(yaw.at("message").get<std::string>(),
+              ::testing::HasSubstr("non-physical fit: kq = "));
   const double m = yaw.at("params").at("m").at("value").get<double>();
   EXPECT_GT(m, 0.9);
   EXPECT_LT(m, 1.4);
   EXPECT_FALSE(yaw.at("closed_loop_suspected").get<bool>());
   EXPECT_LT(yaw.at("fit").at("velocity_mae").at("validate").get<double>(), 0.25);
+  const RunResult text = RunUuvplan("identify " + RealDataPath("bluerov-yaw-2016/campaign.yaml"));
+  EXPECT_THAT(text.out, ::testing::HasSubstr("FAILED: non-physical fit: kq"));
 }
 
-TEST(IdentifyCliTest, RealTartanClosedLoopIsSaidSo) {
+TEST(IdentifyCliTest, RealTartanFailuresAndOutliersAreSaidSo) {
   UUVPLAN_SKIP_WITHOUT_REAL_DATA("tartan-pool-2022");
   // shared/data/tartan-pool-2022: commanded wrench of a closed-loop controller. Every DOF
-  // must be flagged closed loop and its inertia reported unreliable.
+  // must be flagged closed loop and its inertia reported unreliable. Yaw either fits with a
+  // free run better than ν ≡ 0 or is failed with its reason (issue #14); surge's kq is
+  // −400 ± 13 N·s²/m² (non-physical, failed). Either failure makes identify exit 1. 67 of
+  // 470 yaw position samples of chunk_12 (14%) are outliers: a warning naming the trial.
   const RunResult r = RunUuvplan(
       "identify " + RealDataPath("tartan-pool-2022/campaign.yaml") + " --json -", false);
-  ASSERT_EQ(r.status, 0) << r.out;
   const json j = json::parse(r.out);
   ASSERT_EQ(j.at("dofs").size(), 4u);
   for (const auto& [dof, d] : j.at("dofs").items()) {
     EXPECT_TRUE(d.at("closed_loop_suspected").get<bool>()) << dof;
     EXPECT_FALSE(d.at("params").at("m").value("reliable", true)) << dof;
   }
+  const json& yaw = j.at("dofs").at("yaw");
+  const json& mae = yaw.at("fit").at("velocity_mae");
+  const json& zero = yaw.at("fit").at("zero_velocity_mae");
+  const bool better = mae.at("fit").is_number() && mae.at("validate").is_number() &&
+                      mae.at("fit").get<double>() < zero.at("fit").get<double>() &&
+                      mae.at("validate").get<double>() < zero.at("validate").get<double>();
+  if (!better) {
+    EXPECT_EQ(yaw.at("status"), "failed");
+    EXPECT_FALSE(yaw.at("message").get<std::string>().empty());
+  }
+  EXPECT_EQ(j.at("dofs").at("surge").at("status"), "failed");
+  EXPECT_EQ(r.status, 1) << r.out.substr(0, 300);
+  EXPECT_THAT(yaw.at("warnings").dump(),
+              ::testing::HasSubstr("trials/chunk_12.csv: 67 of 470 position samples"));
+  const RunResult text = RunUuvplan("identify " + RealDataPath("tartan-pool-2022/campaign.yaml"));
+  EXPECT_THAT(text.out, ::testing::HasSubstr("  FAILED: "));
+  EXPECT_THAT(text.out, ::testing::HasSubstr("excluded as outliers, more than 5%"));
 }
 
 }  // namespace

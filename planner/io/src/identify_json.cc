@@ -4,6 +4,7 @@
 //                                         "state", ...}},
 //                     "fit": {"velocity_mae": {"trials": {<file>: v}, "fit", "validate",
 //                                              "overall"}, "position_rms": {...},
+//                             "zero_velocity_mae": {"fit", "validate"} (the baseline, ν ≡ 0),
 //                             "trials": [...residual analysis...]},
 //                     "parameter_names", "covariance", "estimator", "stages", ...}},
 //    "trials": [{"file", "dof", "use", "outliers", "gaps", "notes"}]}
@@ -82,6 +83,7 @@ json FitTrialJson(const ident::TrialFit& t) {
   return {{"file", t.name},
           {"use", TrialUseName(t.use)},
           {"velocity_mae", JsonNumber(t.velocity_mae)},
+          {"zero_velocity_mae", JsonNumber(t.zero_velocity_mae)},
           {"velocity_reference", t.velocity_reference},
           {"velocity_samples", t.velocity_samples},
           {"position_rms", JsonNumber(t.position_rms)},
@@ -102,6 +104,8 @@ json FitJson(const ident::FitSummary& f) {
            FigureJson(mae_trials, f.velocity_mae_fit, f.velocity_mae_validate, f.velocity_mae_all)},
           {"position_rms",
            FigureJson(rms_trials, f.position_rms_fit, f.position_rms_validate, f.position_rms_all)},
+          {"zero_velocity_mae", {{"fit", JsonNumber(f.zero_velocity_mae_fit)},
+                                 {"validate", JsonNumber(f.zero_velocity_mae_validate)}}},
           {"trials", trials}};
 }
 

@@ -67,7 +67,8 @@ struct IdentifyOptions {
 enum class IdentifyStatus {
   kOk,        ///< estimates with σ, nothing to report
   kWarnings,  ///< estimates with caveats (see warnings)
-  kFailed,    ///< no usable estimate for some DOF
+  kFailed,    ///< no usable estimate: none, nothing significant, non-physical, diverged or no
+              ///< better than ν ≡ 0 (docs/identification.md "Failure statuses")
 };
 std::string_view IdentifyStatusName(IdentifyStatus s);
 

@@ -60,7 +60,7 @@ struct CoverageCell {
 
 struct MonteCarloReport {
   int repetitions = 0;
-  int failures = 0;  ///< repetitions where Identify threw or a DOF failed
+  int failures = 0;  ///< repetitions where Identify threw or a DOF got no estimate
   std::vector<CoverageCell> cells;
   std::vector<std::string> notes;
   const CoverageCell* Find(const std::string& estimator, model::Dof dof,

@@ -17,6 +17,10 @@ struct OutlierOptions {
   double threshold = 6.0;  ///< robust standard deviations
   /// Residuals smaller than this many known noise σ are never outliers (0: no floor).
   double noise_floor = 4.0;
+  /// More than this fraction of a signal's samples excluded is itself a finding (a sensor
+  /// fault, a unit or timing mistake, or motion the test takes for noise): reported as a
+  /// warning of the DOF, with the count and the trial.
+  double finding_fraction = 0.05;
   bool IsValid(std::string* error) const;
 };
 
@@ -34,6 +38,11 @@ std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& optio
                                     double known_sigma = -1.0,
                                     const std::vector<double>* protect = nullptr,
                                     double protect_radius = 0.0);
+
+/// The warning for `excluded` of `total` samples of `signal` ("velocity") of `trial` excluded,
+/// or "" when at most `options.finding_fraction` of them.
+std::string OutlierFinding(const std::string& trial, const std::string& signal,
+                           std::size_t excluded, std::size_t total, const OutlierOptions& options);
 
 /// `s` without the given samples.
 Signal RemoveSamples(const Signal& s, const std::vector<Outlier>& outliers);

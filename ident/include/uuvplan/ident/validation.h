@@ -54,6 +54,9 @@ struct TrialFit {
   model::TrialUse use = model::TrialUse::kFit;
   double velocity_mae = 0.0;   ///< seed 002 eq. 37 (m/s or rad/s)
   int velocity_samples = 0;
+  /// The same error of the zero-velocity model (ν ≡ 0: mean |ν_measured|) on the same samples:
+  /// the baseline a usable model must beat (docs/identification.md, "Failure statuses").
+  double zero_velocity_mae = 0.0;
   /// "measured" (vel_ column) or "estimated" (Savitzky–Golay derivative of the positions).
   std::string velocity_reference;
   double position_rms = 0.0;   ///< m or rad; NaN without positions
@@ -74,6 +77,8 @@ struct FitSummary {
   /// Pooled over the samples of the trials of each use (NaN when none).
   double velocity_mae_fit = 0.0, velocity_mae_validate = 0.0, velocity_mae_all = 0.0;
   double position_rms_fit = 0.0, position_rms_validate = 0.0, position_rms_all = 0.0;
+  /// The zero-velocity model's velocity MAE, pooled the same way (the baseline to beat).
+  double zero_velocity_mae_fit = 0.0, zero_velocity_mae_validate = 0.0;
 };
 FitSummary Summarize(std::vector<TrialFit> trials);
 
