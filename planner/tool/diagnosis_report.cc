@@ -83,7 +83,10 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
     if (std::isfinite(t.gain)) {
       out << ", held-out gain " << std::setprecision(1) << 100.0 * t.gain << "%"
           << (t.accepted ? "  ACCEPTED" : "  (not enough)");
+    } else if (!t.unscored.empty()) {
+      out << ", held-out gain cannot be scored: " << t.unscored;
     }
+    if (!t.non_physical.empty()) out << "  non-physical: " << t.non_physical;
     out << "\n";
   }
   for (const auto& n : r.notes) out << "note: " << n << "\n";

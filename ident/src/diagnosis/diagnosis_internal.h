@@ -35,7 +35,8 @@ struct StructureFit {
 
 StructureFit FitStructure(const model::Vehicle& vehicle, const model::ModelStructure& structure,
                           const Trials& trials, const Values& start,
-                          const std::set<std::string>& dropped, const OutputErrorOptions& options);
+                          const std::set<std::string>& dropped, const OutputErrorOptions& options,
+                          const Values& fixed = {});
 
 /// A candidate extension of the current structure: an effect's proposal applied to it.
 struct Candidate {
@@ -59,10 +60,11 @@ ErrorBreakdown Breakdown(const model::Vehicle& vehicle, const model::DofModel& m
                          const Eigen::VectorXd& theta, const Trials& trials, double step_s,
                          bool campaign_clock);
 
-/// The held-out gain of going from `before` to `after` (step 4).
+/// The held-out gain of going from `before` to `after` (step 4): on `validate`, else by
+/// cross-validation across `fit` (its folds fitted on up to `threads` threads).
 DiagnosisGain HeldOutGain(const model::Vehicle& vehicle, const StructureFit& before,
                           const StructureFit& after, const Trials& fit, const Trials& validate,
-                          const OutputErrorOptions& oe);
+                          const OutputErrorOptions& oe, int threads);
 
 /// Adds the errors-in-variables covariance of coupling terms to `f` (input_noise.cc).
 void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,

@@ -2,10 +2,12 @@
 
 namespace uuvplan::ident::diagnosis {
 
-// Every parameter starts at `start` where given, else at its null value ("no effect").
+// Every parameter starts at `start` where given, else at its null value ("no effect"); those in
+// `fixed` are held at their value there.
 StructureFit FitStructure(const model::Vehicle& vehicle, const model::ModelStructure& structure,
                           const Trials& trials, const Values& start,
-                          const std::set<std::string>& dropped, const OutputErrorOptions& options) {
+                          const std::set<std::string>& dropped, const OutputErrorOptions& options,
+                          const Values& fixed) {
   StructureFit f;
   f.structure = structure;
   f.model = std::make_shared<model::DofModel>(vehicle, structure);
@@ -20,6 +22,9 @@ StructureFit FitStructure(const model::Vehicle& vehicle, const model::ModelStruc
     if (dropped.count(n)) {
       state[i] = ParameterState::kDropped;
       theta0[i] = 0.0;
+    } else if (const auto held = fixed.find(n); held != fixed.end()) {
+      state[i] = ParameterState::kFixed;
+      theta0[i] = held->second;
     }
   }
   OutputErrorOptions o = options;

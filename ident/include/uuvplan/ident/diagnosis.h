@@ -20,6 +20,7 @@
 // input noise) — and DiagnosisResult::Summary() gives them in the pipelines' shape (summary.h).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <cstdint>
 #include <limits>
@@ -58,6 +59,11 @@ struct DiagnoseOptions {
   std::vector<std::string> candidates = model::Effects().Diagnosable();
   /// Print the standard model's fit on stderr (the CLI sets it from UUVPLAN_VERBOSE).
   bool verbose = false;
+  /// Threads for the candidate fits (0: one per core). The result does not depend on it.
+  int threads = 0;
+  /// Called at each stage of each DOF with a line saying what runs (the CLI prints it on
+  /// stderr once a run has taken 2 s); empty: silent.
+  std::function<void(const std::string&)> progress;
   /// DOFs to diagnose; empty: every DOF with a fit trial.
   std::vector<model::Dof> dofs;
   IdentifyOptions identify;        ///< for the nominal (standard-model) identification
@@ -73,8 +79,12 @@ struct DiagnosisGain {
   std::string metric = "velocity_mae";
   double before = 0.0;
   double after = 0.0;
-  double relative = 0.0;  ///< (before − after) / before
+  double relative = 0.0;  ///< (before − after) / before; NaN when not scored
   std::string on;         ///< "validate" or "cross-validation"
+  /// False when the held-out data cannot score the two models (no held-out trial, a fold
+  /// without trials, a free run that cannot be simulated): `unscored` says why.
+  bool scored = false;
+  std::string unscored;
 };
 
 struct Finding {
@@ -99,8 +109,14 @@ struct CandidateTest {
   double max_z = 0.0;
   bool significant = false;  ///< p < significance and a new parameter ≥ min_z σ from null
   /// Held-out gain (relative velocity-MAE reduction) of a significant candidate, when
-  /// evaluated; NaN otherwise.
+  /// evaluated and scored; NaN otherwise.
   double gain = std::numeric_limits<double>::quiet_NaN();
+  /// Why a significant candidate's held-out gain could not be scored (empty when it was).
+  std::string unscored;
+  /// Why the extension is not physical (a parameter outside its family's admissible range,
+  /// model/parameter.h), e.g. "kq_neg = -453.4 N·s²/m² (expected a number >= 0)"; such a
+  /// candidate is never significant.
+  std::string non_physical;
   bool accepted = false;  ///< significant, held-out gain ≥ min_gain, and chosen in its round
   int round = 0;  ///< greedy round (0 = against the standard model)
 };
