@@ -9,6 +9,7 @@
 
 #include "diagnosis/diagnosis_internal.h"
 #include "diagnosis/parallel.h"
+#include "number_text.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 
@@ -59,6 +60,11 @@ using diagnosis::Candidate;
 using diagnosis::StructureFit;
 using diagnosis::Trials;
 using diagnosis::Values;
+
+void Progress(const DiagnoseOptions& options, const std::string& line) {
+  if (options.progress) options.progress(line);
+}
+
 
 std::vector<std::unique_ptr<TrialData>> PrepareAll(const model::Campaign& campaign,
                                                    const TrialDataOptions& data) {
@@ -139,8 +145,9 @@ std::vector<Significant> TestCandidates(const model::Vehicle& vehicle,
   diagnosis::ParallelFor(candidates.size(), options.threads, [&](std::size_t i) {
     Values s = d.current.values;
     for (const auto& [n, v0] : candidates[i].proposal.start) s[n] = v0;
-    fits[i] = diagnosis::FitStructure(vehicle, candidates[i].structure, d.fit, s,
-                                      d.current.dropped, options.output_error);
+    fits[i] = diagnosis::FitPhysical(vehicle, candidates[i].structure, d.fit, s,
+                                     d.current.dropped, options.output_error, d.current.values,
+                                     d.current.held);
   });
   std::vector<Significant> significant;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -186,10 +193,14 @@ void Accept(Significant* sig, const DiagnosisGain& g, std::set<std::string>* use
 bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, bool campaign_clock,
                 int round, std::set<std::string>* used, DofDiagnosis* d, DiagnosisResult* result,
                 StageClock* clock) {
+  Progress(options, std::string(model::DofName(d->dof)) + ": round " + std::to_string(round + 1) +
+                        ", fitting the candidate effects");
   std::vector<Significant> significant =
       TestCandidates(vehicle, options, campaign_clock, round, *used, *d, result);
   clock->Lap("test");
   for (Significant& sig : significant) {
+    Progress(options, std::string(model::DofName(d->dof)) + ": held-out gain of " +
+                          result->tests[sig.test].effect);
     const DiagnosisGain g = diagnosis::HeldOutGain(vehicle, d->current, sig.fit, d->fit,
                                                    d->validate, options.output_error,
                                                    options.threads);
@@ -210,7 +221,7 @@ void AddInputNoise(const model::Campaign& campaign, const DiagnoseOptions& optio
   if (d->current.structure.WithPrefix(model::param::kCouplingPrefix).empty()) return;
   diagnosis::AddInputNoiseCovariance(campaign, d->fit, options.identify.data,
                                      options.output_error, options.input_noise_replicates,
-                                     options.seed, &d->current, &result->notes);
+                                     options.seed, options.threads, &d->current, &result->notes);
 }
 
 // Every finding's parameters as the final extended model estimates them, and its sentence
@@ -220,13 +231,21 @@ void AddInputNoise(const model::Campaign& campaign, const DiagnoseOptions& optio
 void FinalParameters(DofDiagnosis* d) {
   for (std::size_t i = 0; i < d->found.size(); ++i) {
     Finding& f = d->found[i];
-    std::vector<model::ParameterValue> values;
-    for (ParameterEstimate& p : f.params) {
-      const int k = FindEstimate(d->current.oe.estimates, p.name);
-      if (k >= 0) p = d->current.oe.estimates[k];
-      values.push_back({p.name, p.value, p.sigma});
-    }
     const Candidate& c = d->accepted[i];
+    f.params.clear();
+    std::vector<model::ParameterValue> values;
+    for (const std::string& name : c.added) {
+      const int k = FindEstimate(d->current.oe.estimates, name);
+      const auto held = d->current.held.find(name);
+      if (k >= 0) {
+        f.params.push_back(d->current.oe.estimates[k]);
+      } else if (held != d->current.held.end()) {  // at its admissible bound, not estimated
+        f.params.push_back({name, held->second, 0.0, ParameterState::kFixed});
+      } else {
+        continue;
+      }
+      values.push_back({name, f.params.back().value, f.params.back().sigma});
+    }
     if (c.effect->describe) f.what = c.effect->describe({values, d->breakdown, c.proposal.detail});
   }
 }
@@ -293,8 +312,8 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   if (options.verbose) Verbose(d.current);
   const std::string name(model::DofName(d.dof));
   if (!d.current.oe.ok()) {
-    result->notes.push_back(name + ": output-error fit of the standard model failed (" +
-                            d.current.oe.message + "); nothing to diagnose");
+    result->not_diagnosed[d.dof] =
+        "the output-error fit of its standard model failed (" + d.current.oe.message + ")";
     clock->Lap("screen");
     return;
   }
@@ -313,6 +332,11 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   }
   AddInputNoise(campaign, options, &d, result);
   FinalParameters(&d);
+  for (const std::string& p : d.current.held_at_bound) {
+    result->notes.push_back(name + ": the extended model holds " + p + " at its admissible bound " +
+                            Fmt(d.current.held.at(p)) + " " + model::Unit(p, d.dof) +
+                            " (the free fit puts it outside: model/parameter.h)");
+  }
   clock->Lap("measure");
   result->findings.insert(result->findings.end(), d.found.begin(), d.found.end());
   result->extended.push_back(Extended(nominal, d.current));
@@ -329,6 +353,7 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
   const auto prepared = PrepareAll(campaign, options.identify.data);
   const std::vector<Dof> dofs = DofsToDiagnose(prepared, options.dofs);
   result.dofs = dofs;
+  Progress(options, "identifying the standard model");
   result.nominal = IdentifyNominal(campaign, prepared, dofs, options.identify);
   clock.Lap("screen");
   const bool campaign_clock =
@@ -336,11 +361,13 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
                   [](const model::TrialEntry& e) { return e.has_start; });
   for (Dof dof : dofs) {
     const DofIdentification* nominal = result.nominal.Find(dof);
-    if (!nominal || nominal->theta.size() == 0) {
-      result.notes.push_back(std::string(model::DofName(dof)) +
-                             ": the standard model could not be identified; nothing to diagnose");
+    if (!nominal || nominal->theta.size() == 0 || nominal->status == IdentifyStatus::kFailed) {
+      result.not_diagnosed[dof] =
+          "the identification of its standard model failed" +
+          (nominal && !nominal->message.empty() ? " (" + nominal->message + ")" : std::string());
       continue;
     }
+    Progress(options, std::string(model::DofName(dof)) + ": testing the effects");
     DiagnoseDof(campaign, options, prepared, *nominal, campaign_clock, &result, &clock);
   }
   std::stable_sort(result.findings.begin(), result.findings.end(),

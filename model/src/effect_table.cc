@@ -26,6 +26,13 @@ std::string Percent(double r) {
 
 std::string Over(double r) { return r >= 0 ? "overpredicts" : "underpredicts"; }
 
+// "0.082 ± 0.003 s" from the cross-correlation's lag and its σ (σ unknown: the value alone).
+std::string LagText(const ErrorBreakdown& b) {
+  std::string s = Significant(b.lag_s, 2);
+  if (std::isfinite(b.lag_sigma_s)) s += " ± " + Significant(b.lag_sigma_s, 2);
+  return s + " s";
+}
+
 std::string Fixed2(double x) {
   std::ostringstream s;
   s.precision(2);
@@ -169,7 +176,7 @@ EffectEntry ThrusterLag() {
     std::string s = "the response to every change of thrust comes late and smoothed";
     // The cross-correlation resolves whole samples only; a lag below that is not quoted.
     if (std::abs(f.breakdown.lag_s) > 0) {
-      s += " (measured velocity lags the simulation by " + Fixed2(f.breakdown.lag_s) + " s)";
+      s += " (measured velocity lags the simulation by " + LagText(f.breakdown) + ")";
     }
     return s;
   };
@@ -268,7 +275,7 @@ EffectEntry SensorDelay() {
   };
   e.describe = [](const FindingContext& f) {
     return "every measurement lags the simulated motion by a fixed time (" +
-           Fixed2(f.breakdown.lag_s) + " s at the best cross-correlation)";
+           LagText(f.breakdown) + " at the best cross-correlation)";
   };
   return e;
 }
@@ -289,13 +296,13 @@ EffectEntry ParameterDrift() {
   };
   e.describe = [](const FindingContext& f) {
     const double per_s = f.params.empty() ? 0.0 : f.params[0].value;
+    const double sigma_s = f.params.empty() ? 0.0 : f.params[0].sigma;
     const double span_h = f.breakdown.campaign_span_h;
-    std::ostringstream rate;
-    rate.precision(2);
-    rate << std::abs(100.0 * per_s * 3600.0);
     std::string s = "the thrust " + std::string(per_s >= 0 ? "grows" : "falls") + " by " +
                     Percent(per_s * 3600.0 * span_h) + " from the first to the last trial (" +
-                    Fixed2(span_h) + " h apart, " + rate.str() + "% per hour)";
+                    Fixed2(span_h) + " h apart, " +
+                    Significant(std::abs(100.0 * per_s * 3600.0), 3) + " ± " +
+                    Significant(100.0 * sigma_s * 3600.0, 2) + "% per hour)";
     if (span_h > 24.0) {
       s += ". The trials are days apart: ballast, battery or thrust map may differ between "
            "sessions; if each session used its own command amplitude, a thrust map wrong in "

@@ -6,10 +6,17 @@
 #include <iomanip>
 
 #include "identify_table.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::tool {
 
 namespace {
+
+// "0.082 ± 0.003 s" (3 significant digits of σ's order), or "0.082 s" when σ is unknown.
+std::string ValueSigma(double value, double sigma, const std::string& unit) {
+  if (!std::isfinite(sigma)) return model::Significant(value, 3) + " " + unit;
+  return model::Significant(value, 3) + " ± " + model::Significant(sigma, 2) + " " + unit;
+}
 
 // Where the standard model's free-run simulation goes wrong on one DOF.
 void PrintBreakdown(const ident::ErrorBreakdown& b, std::ostream& out) {
@@ -27,10 +34,13 @@ void PrintBreakdown(const ident::ErrorBreakdown& b, std::ostream& out) {
   print(b.by_motion);
   print(b.by_speed);
   print(b.by_command);
-  out << "  measured velocity lags the simulation by " << std::setprecision(2) << b.lag_s << " s; ";
+  out << "  measured velocity lags the simulation by " << ValueSigma(b.lag_s, b.lag_sigma_s, "s")
+      << (std::isfinite(b.lag_sigma_s) ? "" : " (σ needs 2 trials or more)") << "; ";
   if (std::isfinite(b.drift_per_hour)) {
-    out << "speed error drifts " << std::showpos << std::setprecision(1) << 100.0 * b.drift_per_hour
-        << std::noshowpos << "% per hour of campaign\n";
+    out << "speed error drifts "
+        << ValueSigma(100.0 * b.drift_per_hour, 100.0 * b.drift_sigma_per_hour, "% per hour")
+        << " of campaign" << (std::isfinite(b.drift_sigma_per_hour) ? "" : " (σ needs 3 trials)")
+        << "\n";
   } else {
     out << "drift over the campaign not assessed (no `start` times: campaign clock unknown)\n";
   }
@@ -43,7 +53,9 @@ void PrintFindings(const ident::DiagnosisResult& r, std::ostream& out) {
     out << "  " << ++i << ". " << f.effect << " (" << model::DofName(f.dof)
         << "): " << f.what << "\n     extension:";
     for (const auto& p : f.params) {
-      out << " " << p.name << " = " << Cell(p.value) << " ± " << Cell(p.sigma);
+      const bool held = p.state == ident::ParameterState::kFixed;
+      out << " " << p.name << " = " << Cell(p.value) << (held ? "" : " ± " + Cell(p.sigma))
+          << " " << model::Unit(p.name, f.dof) << (held ? " (held at its admissible bound)" : "");
     }
     out << "\n     evidence: likelihood ratio D = " << std::setprecision(1) << f.statistic << " on "
         << f.added_parameters << " parameter(s), p = " << std::scientific << std::setprecision(1)
@@ -61,11 +73,14 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
   out << std::fixed;
   for (const auto& b : r.breakdowns) PrintBreakdown(b, out);
   out << "\nFindings (ordered by gain):\n";
+  for (const auto& [dof, why] : r.not_diagnosed) {
+    out << "  FAILED: " << model::DofName(dof) << " not diagnosed: " << why << "\n";
+  }
   for (const auto& w : r.warnings) out << "  WARNING: " << w << "\n";
   if (r.findings.empty()) {
     // breakdowns: one per DOF whose standard model could be fitted and diagnosed.
     if (r.breakdowns.empty()) {
-      out << "  none: no DOF could be diagnosed (see the notes)\n";
+      out << "  none: no DOF could be diagnosed\n";
     } else {
       out << "  none: the standard model explains the data of";
       for (const auto& b : r.breakdowns) out << " " << model::DofName(b.dof);

@@ -164,6 +164,10 @@ CandidateTest Test(const Candidate& c, const StructureFit& base, const Structure
     if (e.sigma > 0) t.max_z = std::max(t.max_z, std::abs(e.value - null_value) / e.sigma);
   }
   t.non_physical = NonPhysical(base, ext);
+  for (const std::string& name : ext.held_at_bound) {
+    t.detail += (t.detail.empty() ? "" : "; ") + name + " held at its bound " +
+                Fmt(ext.held.at(name));
+  }
   return t;
 }
 

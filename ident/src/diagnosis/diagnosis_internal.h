@@ -31,12 +31,22 @@ struct StructureFit {
   Values values;  ///< by parameter name
   std::set<std::string> dropped;
   int free_parameters = 0;  ///< model parameters + nuisance initial states
+  Values held;              ///< parameters held at a value (FitPhysical: at an admissible bound)
+  std::set<std::string> held_at_bound;  ///< those the free fit put outside their range
 };
 
 StructureFit FitStructure(const model::Vehicle& vehicle, const model::ModelStructure& structure,
                           const Trials& trials, const Values& start,
                           const std::set<std::string>& dropped, const OutputErrorOptions& options,
                           const Values& fixed = {});
+
+/// FitStructure within the families' admissible ranges (model/parameter.h): a parameter the fit
+/// puts outside its range (and `base` had inside) is held at the bound and the rest refitted;
+/// one that cannot be held (an open bound) is left for the test to call non-physical.
+StructureFit FitPhysical(const model::Vehicle& vehicle, const model::ModelStructure& structure,
+                         const Trials& trials, const Values& start,
+                         const std::set<std::string>& dropped, const OutputErrorOptions& options,
+                         const Values& base, Values held = {});
 
 /// A candidate extension of the current structure: an effect's proposal applied to it.
 struct Candidate {
@@ -69,7 +79,7 @@ DiagnosisGain HeldOutGain(const model::Vehicle& vehicle, const StructureFit& bef
 /// Adds the errors-in-variables covariance of coupling terms to `f` (input_noise.cc).
 void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
                              const TrialDataOptions& data, const OutputErrorOptions& oe,
-                             int replicates, std::uint64_t seed, StructureFit* f,
+                             int replicates, std::uint64_t seed, int threads, StructureFit* f,
                              std::vector<std::string>* notes);
 
 /// Largest |φⁿ| over the trials.

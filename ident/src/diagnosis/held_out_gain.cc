@@ -107,9 +107,10 @@ std::vector<Trials> DealFolds(const model::Vehicle& vehicle, const Trials& fit) 
 StructureFit FoldFit(const model::Vehicle& vehicle, const StructureFit& full,
                      const StructureFit& current, const Trials& fold,
                      const OutputErrorOptions& oe) {
-  StructureFit f = FitStructure(vehicle, full.structure, fold, full.values, full.dropped, oe);
+  StructureFit f =
+      FitStructure(vehicle, full.structure, fold, full.values, full.dropped, oe, full.held);
   if (f.oe.ok() || f.oe.not_identifiable.empty()) return f;
-  Values held;
+  Values held = full.held;
   for (const std::string& name : f.oe.not_identifiable) {
     const auto c = current.values.find(name);
     held[name] = c != current.values.end() ? c->second : model::NullValue(name);

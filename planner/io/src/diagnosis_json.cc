@@ -59,7 +59,9 @@ json BreakdownJson(const ident::ErrorBreakdown& b) {
           {"by_speed", GroupsJson(b.by_speed)},
           {"by_command", GroupsJson(b.by_command)},
           {"lag_s", b.lag_s},
+          {"lag_sigma_s", JsonNumber(b.lag_sigma_s)},
           {"drift_per_hour", b.drift_per_hour},
+          {"drift_sigma_per_hour", JsonNumber(b.drift_sigma_per_hour)},
           {"velocity_mae", b.velocity_mae}};
 }
 

@@ -21,6 +21,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <cstdint>
 #include <limits>
@@ -133,14 +134,17 @@ struct DiagnosisResult {
   std::vector<std::string> notes;
   /// The DOFs asked for (or with a fit trial), in the order diagnosed.
   std::vector<model::Dof> dofs;
+  /// The DOFs refused, and why: the standard model's identification failed (a diagnosis of a
+  /// failed fit would name effects of the failure), or its output-error fit did.
+  std::map<model::Dof, std::string> not_diagnosed;
   /// Wall time of each stage, summed over the DOFs, in order: "screen" (trials prepared, the
   /// standard model identified, fitted by output error and its errors broken down), "test"
   /// (every candidate fitted and tested), "extend" (the greedy choice, the extended model),
   /// "measure" (held-out gains, input-noise covariance). They add up to Diagnose's wall time.
   std::vector<StageTime> timing;
   /// Status "findings" (some effect found), "none" (every DOF diagnosed, nothing found) or
-  /// "failed" (no DOF could be diagnosed); the stage timings; per DOF the effects found with
-  /// their held-out gain.
+  /// "failed" (some DOF could not be diagnosed: not_diagnosed says why); the stage timings; per
+  /// DOF the effects found with their held-out gain.
   PipelineSummary Summary() const;
 };
 
