@@ -279,15 +279,29 @@ void AddCaveats(const DofIdentification& nominal, const DiagnoseOptions& options
   }
 }
 
-// The nominal identification with the extended structure's output-error estimate.
-DofIdentification Extended(const DofIdentification& nominal, const StructureFit& current) {
+// The nominal identification with `f`'s structure and output-error estimate, and the free run
+// of every trial in `trials` with it (validation.h, the scores of `uuvplan score`).
+DofIdentification AsIdentification(const DofIdentification& nominal, const StructureFit& f,
+                                   const Trials& trials, double step_s) {
   DofIdentification ext = nominal;
-  ext.structure = current.structure;
-  ext.parameter_names = current.model->parameter_names();
-  ext.theta = current.oe.theta;
-  ext.covariance = current.oe.covariance;
-  ext.params = current.oe.estimates;
+  ext.structure = f.structure;
+  ext.parameter_names = f.model->parameter_names();
+  ext.theta = f.oe.theta;
+  ext.covariance = f.oe.covariance;
+  ext.params = f.oe.estimates;
+  for (const auto& [name, value] : f.held) {
+    if (FindEstimate(ext.params, name) < 0) {
+      ext.params.push_back({name, value, 0.0, ParameterState::kFixed});
+    }
+  }
   ext.estimator = FinalEstimator::kOutputError;
+  ValidationOptions vo;
+  vo.step_s = step_s;
+  std::vector<TrialFit> fits;
+  for (const TrialData* t : trials) fits.push_back(ValidateTrial(*f.model, f.oe.theta, *t, vo));
+  std::sort(fits.begin(), fits.end(),
+            [](const TrialFit& a, const TrialFit& b) { return a.trial < b.trial; });
+  ext.fit = Summarize(std::move(fits));
   return ext;
 }
 
@@ -317,6 +331,7 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
     clock->Lap("screen");
     return;
   }
+  const StructureFit standard = d.current;
   Trials all = d.fit;
   all.insert(all.end(), d.validate.begin(), d.validate.end());
   d.breakdown = diagnosis::Breakdown(campaign.vehicle, *d.current.model, d.current.oe.theta, all,
@@ -339,7 +354,8 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   }
   clock->Lap("measure");
   result->findings.insert(result->findings.end(), d.found.begin(), d.found.end());
-  result->extended.push_back(Extended(nominal, d.current));
+  result->standard.push_back(AsIdentification(nominal, standard, all, oe.step_s));
+  result->extended.push_back(AsIdentification(nominal, d.current, all, oe.step_s));
   clock->Lap("extend");
 }
 

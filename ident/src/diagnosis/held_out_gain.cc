@@ -8,34 +8,11 @@
 
 #include "diagnosis_internal.h"
 #include "parallel.h"
-#include "uuvplan/ident/validation.h"
+#include "uuvplan/ident/score.h"
 
 namespace uuvplan::ident::diagnosis {
 
 namespace {
-
-// Velocity MAE of the free-run simulations of `trials`, pooled over samples; NaN with the
-// reason in `why` when a trial's free run cannot be simulated or has no velocity sample.
-double PooledMae(const model::DofModel& model, const Eigen::VectorXd& theta, const Trials& trials,
-                 double step_s, std::string* why, int* samples = nullptr) {
-  ValidationOptions vo;
-  vo.step_s = step_s;
-  double sum = 0.0;
-  int n = 0;
-  for (const TrialData* t : trials) {
-    const TrialFit fit = ValidateTrial(model, theta, *t, vo);
-    if (fit.velocity_samples == 0) continue;  // nothing to score in this trial
-    if (!std::isfinite(fit.velocity_mae)) {
-      *why = "the free run of " + t->name + " cannot be simulated";
-      return std::nan("");
-    }
-    sum += fit.velocity_mae * fit.velocity_samples;
-    n += fit.velocity_samples;
-  }
-  if (n == 0) *why = "no held-out velocity sample";
-  if (samples) *samples = n;
-  return n ? sum / n : std::nan("");
-}
 
 // Scores `before` and `after` on `held_out` (`samples` velocity samples); false (and `why`)
 // when either cannot be scored.
@@ -43,8 +20,8 @@ bool ScorePair(const StructureFit& before, const StructureFit& after, const Tria
                double step_s, double* mae_before, double* mae_after, std::string* why,
                int* samples = nullptr) {
   std::string b, a;
-  *mae_before = PooledMae(*before.model, before.oe.theta, held_out, step_s, &b, samples);
-  *mae_after = PooledMae(*after.model, after.oe.theta, held_out, step_s, &a);
+  *mae_before = PooledVelocityMae(*before.model, before.oe.theta, held_out, step_s, &b, samples);
+  *mae_after = PooledVelocityMae(*after.model, after.oe.theta, held_out, step_s, &a);
   if (!b.empty()) *why = "the current model: " + b;
   if (!a.empty()) *why = "the extension: " + a;
   return b.empty() && a.empty();

@@ -127,8 +127,13 @@ struct DiagnosisResult {
   std::vector<Finding> findings;  ///< ordered by gain, largest first
   std::vector<ErrorBreakdown> breakdowns;
   std::vector<CandidateTest> tests;
-  /// The extended structure and its estimate per DOF (the standard one when nothing found).
+  /// The extended structure and its estimate per DOF diagnosed (the standard one when nothing
+  /// found), every parameter with σ (0 for one held at its admissible bound); `fit` holds the
+  /// free run of every trial of the DOF with it, as `uuvplan score` computes it.
   std::vector<DofIdentification> extended;
+  /// The standard model per DOF diagnosed, as diagnosis fits it (output error, every parameter
+  /// free: the "before" of the first finding), with its free runs in `fit` likewise.
+  std::vector<DofIdentification> standard;
   /// What limits the findings' meaning (e.g. closed-loop data), to show beside them.
   std::vector<std::string> warnings;
   std::vector<std::string> notes;
