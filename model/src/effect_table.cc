@@ -345,8 +345,9 @@ EffectEntry ThrustMap() {
     std::ostringstream exponent;
     exponent.precision(2);
     exponent << std::fixed << 1.0 + p;
-    std::string s = "the delivered force grows as |command|^" + exponent.str() +
-                    ", not in proportion: at a fifth of the largest command it is " +
+    std::string s = "the delivered force grows as |nominal force|^" + exponent.str() +
+                    ", not in proportion to the thrust table's force: at a fifth of the largest "
+                    "nominal force it is " +
                     Percent(fifth) + (fifth >= 0 ? " above" : " below") +
                     " what the thrust map says";
     if (const ErrorGroup* g = Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands)) {

@@ -82,6 +82,11 @@ void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
                              int replicates, std::uint64_t seed, int threads, StructureFit* f,
                              std::vector<std::string>* notes);
 
+/// The corrected static thrust map of each mapping of `trials` that `f`'s thrust_map effect
+/// implies (diagnosis.h CorrectedThrustMap); empty without one.
+std::vector<CorrectedThrustMap> CorrectedThrustMaps(const model::Vehicle& vehicle,
+                                                    const StructureFit& f, const Trials& trials);
+
 /// Largest |φⁿ| over the trials.
 double MaxForce(const Trials& trials);
 

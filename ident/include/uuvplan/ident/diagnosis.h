@@ -88,6 +88,28 @@ struct DiagnosisGain {
   std::string unscored;
 };
 
+/// The static thrust map a thrust_map (and dead zone) finding implies, in the units of the
+/// vehicle file: for the reference thruster of a mapping (largest |share|), each command V →
+/// the force the vehicle file's thrust model gives (nominal) and the force the extended model
+/// delivers, f_d = share·φ_d, φ_d = φ·(|φ|/φ_ref)^p with φ = Thrust(V)/share (after the dead
+/// zone, when found), with σ from σ_p: σ_fd = |f_d·ln(|φ|/φ_ref)|·σ_p.
+struct CorrectedThrustMap {
+  std::string mapping, thruster;
+  struct Row {
+    double command = 0.0, nominal = 0.0, delivered = 0.0, sigma = 0.0;  // command unit, N
+  };
+  std::vector<Row> rows;  ///< commands from command_min to command_max, 0 left out
+  /// The delivered force grows as |V|^n over the commands of the data (log–log slope), n ± σ.
+  double command_exponent = 0.0, command_exponent_sigma = 0.0;
+  /// The commands of the fit trials span [smallest, largest] |V| (n's meaning is there).
+  double smallest_command = 0.0, largest_command = 0.0;
+  /// Least-squares fit of the delivered force by the vehicle file's poly2 thrust model
+  /// f = sign(V)·(a·V² + b·|V|), a, b ≥ 0: the map to put in the vehicle file.
+  double poly2_a = 0.0, poly2_b = 0.0;
+  /// "linear in the command", "square in the command" or "grows as |command|^n".
+  std::string shape;
+};
+
 struct Finding {
   std::string effect;  ///< name in the effect table (model/effects.h)
   model::Dof dof = model::Dof::kSurge;
@@ -97,6 +119,8 @@ struct Finding {
   int added_parameters = 0;
   double p_value = 1.0;
   DiagnosisGain gain;
+  /// thrust_map findings: the corrected static map of each mapping of the fit trials.
+  std::vector<CorrectedThrustMap> thrust_maps;
 };
 
 /// One candidate's test (also those not retained), for the report.
