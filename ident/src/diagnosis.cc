@@ -146,8 +146,7 @@ std::vector<Significant> TestCandidates(const model::Vehicle& vehicle,
     Values s = d.current.values;
     for (const auto& [n, v0] : candidates[i].proposal.start) s[n] = v0;
     fits[i] = diagnosis::FitPhysical(vehicle, candidates[i].structure, d.fit, s,
-                                     d.current.dropped, options.output_error, d.current.values,
-                                     d.current.held);
+                                     d.current.dropped, options.output_error, d.current.values);
   });
   std::vector<Significant> significant;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -329,7 +328,8 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
     start[nominal.parameter_names[i]] = nominal.theta[i];
   }
   const OutputErrorOptions& oe = options.output_error;
-  d.current = diagnosis::FitStructure(campaign.vehicle, nominal.structure, d.fit, start, {}, oe);
+  // Within the admissible ranges too: the standard model with a negative drag is no model.
+  d.current = diagnosis::FitPhysical(campaign.vehicle, nominal.structure, d.fit, start, {}, oe, {});
   if (options.verbose) Verbose(d.current);
   const std::string name(model::DofName(d.dof));
   if (!d.current.oe.ok()) {

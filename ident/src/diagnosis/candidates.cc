@@ -154,7 +154,10 @@ CandidateTest Test(const Candidate& c, const StructureFit& base, const Structure
   const int n = ext.oe.num_residuals;
   const double s2 = 2.0 * ext.oe.cost / std::max(1, n - ext.free_parameters);
   t.statistic = std::max(0.0, 2.0 * (base.oe.cost - ext.oe.cost) / s2);
-  t.p_value = ChiSquareSurvival(t.statistic, t.added_parameters);
+  // A parameter held at its bound in `base` may be free again in `ext` (FitPhysical decides
+  // per fit): the test counts every parameter `ext` frees.
+  const int freed = std::max(t.added_parameters, ext.free_parameters - base.free_parameters);
+  t.p_value = ChiSquareSurvival(t.statistic, freed);
   for (const std::string& name : c.added) {
     const int k = FindEstimate(ext.oe.estimates, name);
     if (k < 0) continue;
