@@ -106,7 +106,8 @@ struct CorrectedThrustMap {
   /// Least-squares fit of the delivered force by the vehicle file's poly2 thrust model
   /// f = sign(V)·(a·V² + b·|V|), a, b ≥ 0: the map to put in the vehicle file.
   double poly2_a = 0.0, poly2_b = 0.0;
-  /// "linear in the command", "square in the command" or "grows as |command|^n".
+  /// "linear in the command", "square in the command" (each when that power law stays within
+  /// 20% of the fitted one over the commands of the data) or "a power of the command, |command|^n".
   std::string shape;
 };
 
