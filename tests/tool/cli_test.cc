@@ -28,8 +28,10 @@ namespace fs = std::filesystem;
 
 const std::string kRomeoTruth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/truth.yaml";
 const std::string kVsorTruth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/vsor/truth.yaml";
+// The contract's commands and uuvplan's `score` (issue #14: compare two models on one campaign).
 const std::set<std::string> kContractCommands = {"schedule", "check-pool", "simulate", "identify",
-                                                 "next",     "loop",       "diagnose", "demo"};
+                                                 "next",     "loop",       "diagnose", "demo",
+                                                 "score"};
 
 // A small ROMEO plan: one trial of each kind (seed 000 §IV-D flavours, short).
 std::string SmallPlan() {
