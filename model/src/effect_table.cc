@@ -115,7 +115,8 @@ EffectEntry InstallationLoss() {
     const std::string mapping = name.substr(0, name.rfind('.'));
     const std::string sign = name.substr(name.rfind('.') + 1) == "neg" ? "negative" : "positive";
     std::string s = "thrust " + sign + " in mapping " + mapping + " delivers " +
-                    Percent(1 - worst->value) + (worst->value <= 1 ? " less" : " more") +
+                    Percent(1 - worst->value) + " ± " + Significant(100 * worst->sigma, 2) + "%" +
+                    (worst->value <= 1 ? " less" : " more") +
                     " than the open-water model";
     if (const ErrorGroup* g =
             Labeled(f.breakdown.by_thrust, "thrust " + sign + " in " + mapping)) {
@@ -341,11 +342,10 @@ EffectEntry ThrustMap() {
   e.describe = [](const FindingContext& f) {
     // At a fifth of the largest command the force is 0.2^p of nominal.
     const double p = f.params.empty() ? 0.0 : f.params[0].value;
+    const double sigma = f.params.empty() ? 0.0 : f.params[0].sigma;
     const double fifth = std::pow(0.2, p) - 1.0;
-    std::ostringstream exponent;
-    exponent.precision(2);
-    exponent << std::fixed << 1.0 + p;
-    std::string s = "the delivered force grows as |nominal force|^" + exponent.str() +
+    std::string s = "the delivered force grows as |nominal force|^(" + Significant(1.0 + p, 3) +
+                    " ± " + Significant(sigma, 2) + ")" +
                     ", not in proportion to the thrust table's force: at a fifth of the largest "
                     "nominal force it is " +
                     Percent(fifth) + (fifth >= 0 ? " above" : " below") +
