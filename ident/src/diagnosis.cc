@@ -146,7 +146,8 @@ std::vector<Significant> TestCandidates(const model::Vehicle& vehicle,
     Values s = d.current.values;
     for (const auto& [n, v0] : candidates[i].proposal.start) s[n] = v0;
     fits[i] = diagnosis::FitPhysical(vehicle, candidates[i].structure, d.fit, s,
-                                     d.current.dropped, options.output_error, d.current.values);
+                                     d.current.dropped, options.output_error, d.current.values,
+                                     d.current.held);
   });
   std::vector<Significant> significant;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -187,6 +188,18 @@ void Accept(Significant* sig, const DiagnosisGain& g, std::set<std::string>* use
   d->accepted.push_back(sig->candidate);
 }
 
+// The candidates are tested with the parameters the current model holds at a bound held too
+// (one fit each; their D is then conservative). A significant one is refitted with every
+// parameter free again (FitPhysical re-decides which to hold), so that a bound the extension
+// makes unnecessary is released (a kq < 0 of the standard model that a thrust map explains).
+void ReleaseHeld(const model::Vehicle& vehicle, const DiagnoseOptions& options,
+                 const DofDiagnosis& d, StructureFit* fit) {
+  if (fit->held.empty()) return;
+  StructureFit free = diagnosis::FitPhysical(vehicle, fit->structure, d.fit, fit->values,
+                                             fit->dropped, options.output_error, d.current.values);
+  if (free.oe.ok() && free.oe.cost <= fit->oe.cost) *fit = std::move(free);
+}
+
 // One greedy round (test, then measure and extend): the most significant candidate that also
 // predicts held-out data better is taken. False when none is.
 bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, bool campaign_clock,
@@ -200,6 +213,7 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
   for (Significant& sig : significant) {
     Progress(options, std::string(model::DofName(d->dof)) + ": held-out gain of " +
                           result->tests[sig.test].effect);
+    ReleaseHeld(vehicle, options, *d, &sig.fit);
     const DiagnosisGain g = diagnosis::HeldOutGain(vehicle, d->current, sig.fit, d->fit,
                                                    d->validate, options.output_error,
                                                    options.threads);
