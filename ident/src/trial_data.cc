@@ -83,10 +83,39 @@ bool TrialDataOptions::IsValid(std::string* error) const {
 LogAuxVelocities::LogAuxVelocities(Dof own, std::array<Signal, model::kNumDofs> velocities)
     : own_(own), velocities_(std::move(velocities)) {}
 
+// Linear interpolation as Interpolate(), from the interval found last by this thread for this
+// log (a simulation asks at increasing times: one or two comparisons instead of a binary search;
+// the value does not depend on the hint). thread_local: diagnosis fits candidates in parallel on
+// the same trials.
 void LogAuxVelocities::At(double t, std::array<double, model::kNumDofs>* v) const {
+  thread_local const LogAuxVelocities* owner = nullptr;
+  thread_local std::array<std::size_t, model::kNumDofs> hint{};
+  if (owner != this) {
+    owner = this;
+    hint.fill(0);
+  }
   for (int d = 0; d < model::kNumDofs; ++d) {
     if (d == Index(own_)) continue;
-    (*v)[d] = velocities_[d].empty() ? 0.0 : Interpolate(velocities_[d].t, velocities_[d].y, t);
+    const Signal& s = velocities_[d];
+    if (s.empty()) {
+      (*v)[d] = 0.0;
+      continue;
+    }
+    std::size_t& i = hint[d];
+    if (t <= s.t.front() || t >= s.t.back()) {
+      (*v)[d] = t <= s.t.front() ? s.y.front() : s.y.back();
+      continue;
+    }
+    if (i + 1 >= s.t.size() || s.t[i] > t) i = 0;
+    if (!(t < s.t[i + 1])) {  // the interval of Interpolate: t[i] <= t < t[i + 1]
+      if (i + 2 < s.t.size() && t < s.t[i + 2]) {
+        ++i;
+      } else {
+        i = static_cast<std::size_t>(std::upper_bound(s.t.begin(), s.t.end(), t) - s.t.begin()) - 1;
+      }
+    }
+    const double w = (t - s.t[i]) / (s.t[i + 1] - s.t[i]);
+    (*v)[d] = s.y[i] + w * (s.y[i + 1] - s.y[i]);
   }
 }
 

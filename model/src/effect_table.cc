@@ -26,6 +26,13 @@ std::string Percent(double r) {
 
 std::string Over(double r) { return r >= 0 ? "overpredicts" : "underpredicts"; }
 
+// "0.082 ± 0.003 s" from the cross-correlation's lag and its σ (σ unknown: the value alone).
+std::string LagText(const ErrorBreakdown& b) {
+  std::string s = Significant(b.lag_s, 2);
+  if (std::isfinite(b.lag_sigma_s)) s += " ± " + Significant(b.lag_sigma_s, 2);
+  return s + " s";
+}
+
 std::string Fixed2(double x) {
   std::ostringstream s;
   s.precision(2);
@@ -111,7 +118,8 @@ EffectEntry InstallationLoss() {
     const std::string mapping = name.substr(0, name.rfind('.'));
     const std::string sign = name.substr(name.rfind('.') + 1) == "neg" ? "negative" : "positive";
     std::string s = "thrust " + sign + " in mapping " + mapping + " delivers " +
-                    Percent(1 - worst->value) + (worst->value <= 1 ? " less" : " more") +
+                    Percent(1 - worst->value) + " ± " + Significant(100 * worst->sigma, 2) + "%" +
+                    (worst->value <= 1 ? " less" : " more") +
                     " than the open-water model";
     if (const ErrorGroup* g =
             Labeled(f.breakdown.by_thrust, "thrust " + sign + " in " + mapping)) {
@@ -172,7 +180,7 @@ EffectEntry ThrusterLag() {
     std::string s = "the response to every change of thrust comes late and smoothed";
     // The cross-correlation resolves whole samples only; a lag below that is not quoted.
     if (std::abs(f.breakdown.lag_s) > 0) {
-      s += " (measured velocity lags the simulation by " + Fixed2(f.breakdown.lag_s) + " s)";
+      s += " (measured velocity lags the simulation by " + LagText(f.breakdown) + ")";
     }
     return s;
   };
@@ -271,7 +279,7 @@ EffectEntry SensorDelay() {
   };
   e.describe = [](const FindingContext& f) {
     return "every measurement lags the simulated motion by a fixed time (" +
-           Fixed2(f.breakdown.lag_s) + " s at the best cross-correlation)";
+           LagText(f.breakdown) + " at the best cross-correlation)";
   };
   return e;
 }
@@ -292,13 +300,13 @@ EffectEntry ParameterDrift() {
   };
   e.describe = [](const FindingContext& f) {
     const double per_s = f.params.empty() ? 0.0 : f.params[0].value;
+    const double sigma_s = f.params.empty() ? 0.0 : f.params[0].sigma;
     const double span_h = f.breakdown.campaign_span_h;
-    std::ostringstream rate;
-    rate.precision(2);
-    rate << std::abs(100.0 * per_s * 3600.0);
     std::string s = "the thrust " + std::string(per_s >= 0 ? "grows" : "falls") + " by " +
                     Percent(per_s * 3600.0 * span_h) + " from the first to the last trial (" +
-                    Fixed2(span_h) + " h apart, " + rate.str() + "% per hour)";
+                    Fixed2(span_h) + " h apart, " +
+                    Significant(std::abs(100.0 * per_s * 3600.0), 3) + " ± " +
+                    Significant(100.0 * sigma_s * 3600.0, 2) + "% per hour)";
     if (span_h > 24.0) {
       s += ". The trials are days apart: ballast, battery or thrust map may differ between "
            "sessions; if each session used its own command amplitude, a thrust map wrong in "
@@ -337,12 +345,12 @@ EffectEntry ThrustMap() {
   e.describe = [](const FindingContext& f) {
     // At a fifth of the largest command the force is 0.2^p of nominal.
     const double p = f.params.empty() ? 0.0 : f.params[0].value;
+    const double sigma = f.params.empty() ? 0.0 : f.params[0].sigma;
     const double fifth = std::pow(0.2, p) - 1.0;
-    std::ostringstream exponent;
-    exponent.precision(2);
-    exponent << std::fixed << 1.0 + p;
-    std::string s = "the delivered force grows as |command|^" + exponent.str() +
-                    ", not in proportion: at a fifth of the largest command it is " +
+    std::string s = "the delivered force grows as |nominal force|^(" + Significant(1.0 + p, 3) +
+                    " ± " + Significant(sigma, 2) + ")" +
+                    ", not in proportion to the thrust table's force: at a fifth of the largest "
+                    "nominal force it is " +
                     Percent(fifth) + (fifth >= 0 ? " above" : " below") +
                     " what the thrust map says";
     if (const ErrorGroup* g = Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands)) {

@@ -6,10 +6,20 @@
 #include <iomanip>
 
 #include "identify_table.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::tool {
 
 namespace {
+
+// " N·s/m", or nothing for a pure number (unit "1").
+std::string UnitText(const std::string& unit) { return unit == "1" ? "" : " " + unit; }
+
+// "0.082 ± 0.003 s" (3 significant digits of σ's order), or "0.082 s" when σ is unknown.
+std::string ValueSigma(double value, double sigma, const std::string& unit) {
+  if (!std::isfinite(sigma)) return model::Significant(value, 3) + " " + unit;
+  return model::Significant(value, 3) + " ± " + model::Significant(sigma, 2) + " " + unit;
+}
 
 // Where the standard model's free-run simulation goes wrong on one DOF.
 void PrintBreakdown(const ident::ErrorBreakdown& b, std::ostream& out) {
@@ -27,12 +37,31 @@ void PrintBreakdown(const ident::ErrorBreakdown& b, std::ostream& out) {
   print(b.by_motion);
   print(b.by_speed);
   print(b.by_command);
-  out << "  measured velocity lags the simulation by " << std::setprecision(2) << b.lag_s << " s; ";
+  out << "  measured velocity lags the simulation by " << ValueSigma(b.lag_s, b.lag_sigma_s, "s")
+      << (std::isfinite(b.lag_sigma_s) ? "" : " (σ needs 2 trials or more)") << "; ";
   if (std::isfinite(b.drift_per_hour)) {
-    out << "speed error drifts " << std::showpos << std::setprecision(1) << 100.0 * b.drift_per_hour
-        << std::noshowpos << "% per hour of campaign\n";
+    out << "speed error drifts "
+        << ValueSigma(100.0 * b.drift_per_hour, 100.0 * b.drift_sigma_per_hour, "% per hour")
+        << " of campaign" << (std::isfinite(b.drift_sigma_per_hour) ? "" : " (σ needs 3 trials)")
+        << "\n";
   } else {
     out << "drift over the campaign not assessed (no `start` times: campaign clock unknown)\n";
+  }
+}
+
+// The corrected static thrust map of a thrust_map finding, per thruster command.
+void PrintThrustMap(const ident::CorrectedThrustMap& m, std::ostream& out) {
+  out << "     corrected thrust map of " << m.mapping << " (thruster " << m.thruster
+      << "; commands of the data " << model::Significant(m.smallest_command, 3) << " to "
+      << model::Significant(m.largest_command, 3) << " in the vehicle file's command unit): "
+      << m.shape << "\n       for the vehicle file: thrust: {model: poly2, a: "
+      << model::Significant(m.poly2_a, 4) << ", b: " << model::Significant(m.poly2_b, 4) << "}\n"
+      << "       " << std::setw(10) << "command" << std::setw(16) << "nominal (N)" << std::setw(24)
+      << "delivered (N)" << "\n";
+  for (const auto& r : m.rows) {
+    out << "       " << std::setw(10) << model::Significant(r.command, 3) << std::setw(16)
+        << model::Significant(r.nominal, 4) << std::setw(24)
+        << (model::Significant(r.delivered, 4) + " ± " + model::Significant(r.sigma, 2)) << "\n";
   }
 }
 
@@ -43,13 +72,36 @@ void PrintFindings(const ident::DiagnosisResult& r, std::ostream& out) {
     out << "  " << ++i << ". " << f.effect << " (" << model::DofName(f.dof)
         << "): " << f.what << "\n     extension:";
     for (const auto& p : f.params) {
-      out << " " << p.name << " = " << Cell(p.value) << " ± " << Cell(p.sigma);
+      const bool held = p.state == ident::ParameterState::kFixed;
+      out << " " << p.name << " = " << Cell(p.value) << (held ? "" : " ± " + Cell(p.sigma))
+          << UnitText(model::Unit(p.name, f.dof)) << (held ? " (held at its admissible bound)" : "");
     }
     out << "\n     evidence: likelihood ratio D = " << std::setprecision(1) << f.statistic << " on "
         << f.added_parameters << " parameter(s), p = " << std::scientific << std::setprecision(1)
         << f.p_value << std::fixed << "\n     gain: velocity MAE " << std::setprecision(4)
         << f.gain.before << " -> " << f.gain.after << " (" << std::setprecision(0)
         << 100.0 * f.gain.relative << "% better) on " << f.gain.on << "\n";
+    for (const auto& m : f.thrust_maps) PrintThrustMap(m, out);
+  }
+}
+
+// Per DOF: the standard and the extended model's free-run velocity MAE (what `uuvplan score`
+// gives for the file `--write-vehicle` writes).
+void PrintModels(const ident::DiagnosisResult& r, std::ostream& out) {
+  for (std::size_t i = 0; i < r.extended.size() && i < r.standard.size(); ++i) {
+    const ident::FitSummary &a = r.standard[i].fit, &b = r.extended[i].fit;
+    const std::string unit(model::VelocityUnit(r.extended[i].dof));
+    auto pair = [&](double x, double y) {
+      return model::Significant(x, 4) + " -> " + model::Significant(y, 4) + " " + unit +
+             (x > 0 && std::isfinite(y) ? " (" + model::Significant(100 * (x - y) / x, 3) + "% better)"
+                                        : "");
+    };
+    out << "  " << model::DofName(r.extended[i].dof) << ": velocity MAE, standard -> extended: fit "
+        << pair(a.velocity_mae_fit, b.velocity_mae_fit);
+    if (std::isfinite(a.velocity_mae_validate)) {
+      out << ", validate " << pair(a.velocity_mae_validate, b.velocity_mae_validate);
+    }
+    out << "\n";
   }
 }
 
@@ -61,11 +113,14 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
   out << std::fixed;
   for (const auto& b : r.breakdowns) PrintBreakdown(b, out);
   out << "\nFindings (ordered by gain):\n";
+  for (const auto& [dof, why] : r.not_diagnosed) {
+    out << "  FAILED: " << model::DofName(dof) << " not diagnosed: " << why << "\n";
+  }
   for (const auto& w : r.warnings) out << "  WARNING: " << w << "\n";
   if (r.findings.empty()) {
     // breakdowns: one per DOF whose standard model could be fitted and diagnosed.
     if (r.breakdowns.empty()) {
-      out << "  none: no DOF could be diagnosed (see the notes)\n";
+      out << "  none: no DOF could be diagnosed\n";
     } else {
       out << "  none: the standard model explains the data of";
       for (const auto& b : r.breakdowns) out << " " << model::DofName(b.dof);
@@ -73,6 +128,11 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
     }
   }
   PrintFindings(r, out);
+  if (!r.extended.empty()) {
+    out << "\nThe extended model (all its findings; `--write-vehicle` writes it, `uuvplan score` "
+           "scores it):\n";
+    PrintModels(r, out);
+  }
   out << "\nCandidate effects tested (significant: p < 1e-3 and a new parameter >= 3 sigma from "
          "'no effect'; accepted: also >= 0.5% better on held-out data):\n";
   for (const auto& t : r.tests) {
@@ -83,7 +143,10 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
     if (std::isfinite(t.gain)) {
       out << ", held-out gain " << std::setprecision(1) << 100.0 * t.gain << "%"
           << (t.accepted ? "  ACCEPTED" : "  (not enough)");
+    } else if (!t.unscored.empty()) {
+      out << ", held-out gain cannot be scored: " << t.unscored;
     }
+    if (!t.non_physical.empty()) out << "  non-physical: " << t.non_physical;
     out << "\n";
   }
   for (const auto& n : r.notes) out << "note: " << n << "\n";

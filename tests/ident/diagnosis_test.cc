@@ -135,25 +135,8 @@ TEST(DiagnosisTest, RealBluerovYawRunsShowTheThrusterLag) {
 }
 
 
-// The 13 runs of three sessions (campaign_all.yaml, |u| = 0.1–0.7). README defect 1: the thrust
-// table is wrong in shape — with one inertia and drag, the torque gain relative to |u| = 0.7 is
-// 4.84 at 0.1, 2.65 at 0.2, 1.65 at 0.3/0.4, 1.54 at 0.4 (torques 0.18–6.4 N·m), i.e. a power
-// law u·(|u|/u_ref)^p with p ≈ −0.44 (ln 4.84 / ln(0.181/6.366)). The diagnosis must name the
-// thrust map first, with p in [−0.7, −0.3] (the README's gains come from equation-error fits
-// without the lag) — not a drift over the sessions, which the amplitudes of one session rule out.
-TEST(DiagnosisTest, RealBluerovRunsOfAllAmplitudesShowTheThrustMapShape) {
-  UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
-  const model::Campaign campaign =
-      io::ReadCampaign(RealDataPath("bluerov-yaw-2016/campaign_all.yaml"));
-  const DiagnosisResult r = Diagnose(campaign, DiagnoseOptions{});
-  ASSERT_FALSE(r.findings.empty());
-  const Finding& first = r.findings.front();
-  EXPECT_EQ(first.effect, "thrust_map");
-  ASSERT_EQ(first.params.size(), 1u);
-  EXPECT_GT(first.params[0].value, -0.7);
-  EXPECT_LT(first.params[0].value, -0.3);
-  EXPECT_GT(first.gain.relative, 0.10);
-}
+// The 13 runs of three sessions (campaign_all.yaml): diagnosis_model_test.cc
+// (DiagnosisModelTest.RealBluerovThrustMapShapeAndLagScored).
 
 // tartan-pool-2022 is closed-loop flight without trial start times (its README, defect 1;
 // notes/pitfalls.md: say so rather than report a confident answer). The diagnosis must put the

@@ -218,11 +218,19 @@ TEST(ReadVehicleTest, RepeatedKey) {
                         std::to_string(line) + ")"));
 }
 
-TEST(ReadVehicleTest, ParamsAreTruthOnly) {
+// A vehicle file may hold a model (`diagnose --write-vehicle`, issue #14): its keys are
+// checked as a truth file's, by every reader of the vehicle.
+TEST(ReadVehicleTest, ModelParamsAreChecked) {
   ScratchDir dir;
   dir.Edit("vehicle.yaml", "    drag: {k: 10, kq: 200}", "    params: {m: 800}");
+  EXPECT_NO_THROW(ReadVehicle(dir.Path("vehicle.yaml")));
+  dir.Edit("vehicle.yaml", "    params: {m: 800}", "    params: {m: -800}");
   EXPECT_THAT(ErrorOf([&] { ReadVehicle(dir.Path("vehicle.yaml")); }),
-              HasSubstr("dofs.heave: unknown key 'params' (allowed: drag, added_mass)"));
+              HasSubstr("dofs.heave.params.m: expected a positive number, got '-800'"));
+  dir.Edit("vehicle.yaml", "    params: {m: -800}", "    paramz: {m: 800}");
+  EXPECT_THAT(ErrorOf([&] { ReadVehicle(dir.Path("vehicle.yaml")); }),
+              HasSubstr("dofs.heave: unknown key 'paramz' (allowed: drag, added_mass, params, "
+                        "effects, sigma)"));
 }
 
 TEST(ReadVehicleTest, UnknownDofKey) {

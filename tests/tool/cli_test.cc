@@ -15,6 +15,7 @@
 
 #include "tool_test_util.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/planner/schedule.h"
 
@@ -27,8 +28,10 @@ namespace fs = std::filesystem;
 
 const std::string kRomeoTruth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/truth.yaml";
 const std::string kVsorTruth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/vsor/truth.yaml";
+// The contract's commands and uuvplan's `score` (issue #14: compare two models on one campaign).
 const std::set<std::string> kContractCommands = {"schedule", "check-pool", "simulate", "identify",
-                                                 "next",     "loop",       "diagnose", "demo"};
+                                                 "next",     "loop",       "diagnose", "demo",
+                                                 "score"};
 
 // A small ROMEO plan: one trial of each kind (seed 000 §IV-D flavours, short).
 std::string SmallPlan() {
@@ -210,8 +213,49 @@ TEST(Cli, DiagnoseWithNothingDiagnosableExitsOneAndSaysSo) {
       "vehicle: vehicle.yaml\ntrials:\n  - file: trials/a.csv\n    dof: surge\n    mapping: surge-front\n");
   const ToolRun r = RunTool("diagnose '" + campaign + "'", dir);
   EXPECT_EQ(r.status, 1) << r.out << r.err;
-  EXPECT_THAT(r.out, HasSubstr("none: no DOF could be diagnosed (see the notes)"));
-  EXPECT_THAT(r.out, HasSubstr("surge: output-error fit of the standard model failed"));
+  EXPECT_THAT(r.out, HasSubstr("none: no DOF could be diagnosed"));
+  EXPECT_THAT(r.out, HasSubstr("FAILED: surge not diagnosed: the "));
+}
+
+// `diagnose --write-vehicle` writes a vehicle file every command reads, `score` scores it on
+// the campaign with the figures diagnose printed for the extended model, and a vehicle file
+// without a model is refused by `score` with the key it needs (exit 2).
+TEST(Cli, DiagnoseWritesTheModelAndScoreScoresIt) {
+  const TempDir dir;
+  const std::string plan = dir.Write(
+      "plan.json",
+      R"({"trials": [
+  {"id": "a", "dof": "surge", "kind": "segments", "duration": 40, "mapping": "surge-front",
+   "segments": [{"force": 60, "duration": 20, "mapping": "surge-front"},
+                {"force": 20, "duration": 20, "mapping": "surge-front"}]},
+  {"id": "b", "dof": "surge", "kind": "segments", "duration": 40, "mapping": "surge-front",
+   "segments": [{"force": 30, "duration": 20, "mapping": "surge-front"},
+                {"force": 70, "duration": 20, "mapping": "surge-front"}]}]})");
+  ASSERT_EQ(RunTool("simulate --truth '" + kRomeoTruth + "' --plan '" + plan + "' --out '" +
+                        (dir / "c") + "' --seed 3",
+                    dir)
+                .status,
+            0);
+  const std::string model = dir / "model.yaml";
+  const ToolRun d = RunTool("diagnose '" + (dir / "c") + "' --write-vehicle '" + model + "'", dir);
+  ASSERT_EQ(d.status, 0) << d.out << d.err;
+  EXPECT_THAT(ReadText(model), HasSubstr("sigma:"));
+  EXPECT_EQ(RunTool("schedule '" + model + "' --pool '" + std::string(UUVPLAN_SOURCE_DIR) +
+                        "/cases/romeo/pool.yaml' --dof surge",
+                    dir)
+                .status,
+            0);  // the vehicle file with a model is a vehicle file
+  const ToolRun s = RunTool("score '" + model + "' '" + (dir / "c") + "' --json '" +
+                                (dir / "score.json") + "'",
+                            dir);
+  ASSERT_EQ(s.status, 0) << s.out << s.err;
+  // The fit trials' pooled MAE, as diagnose printed it for the extended model (4 digits).
+  const auto json = nlohmann::json::parse(ReadText(dir / "score.json"));
+  const double fit_mae = json["dofs"]["surge"]["velocity_mae_fit"];
+  EXPECT_THAT(d.out, HasSubstr("-> " + model::Significant(fit_mae, 4) + " m/s"));
+  const ToolRun bad = RunTool("score '" + (dir / "c/vehicle.yaml") + "' '" + (dir / "c") + "'", dir);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_THAT(bad.err, HasSubstr("dofs.<dof>.params"));
 }
 
 TEST(Cli, SimulateMalformedPlanExitsTwoNamingFileTrialAndKey) {

@@ -126,18 +126,47 @@ double CrossCorrelation(const std::vector<Sample>& ps, double shift) {
   return sxx > 0 && syy > 0 ? sxy / std::sqrt(sxx * syy) : 0.0;
 }
 
-// The shift in [−2, 2] s (0.05 s steps) with the best summed cross-correlation.
-double Lag(const std::vector<std::vector<Sample>>& per_trial) {
-  double best_shift = -2.0, best = -std::numeric_limits<double>::infinity();
-  for (int k = -40; k <= 40; ++k) {
-    double corr = 0.0;
-    for (const auto& samples : per_trial) corr += CrossCorrelation(samples, 0.05 * k);
-    if (corr > best) {
-      best = corr;
-      best_shift = 0.05 * k;
+// The shift in [−2, 2] s with the best cross-correlation summed over `trials` (all when empty):
+// the best of 0.05 s steps, refined by the parabola through it and its neighbours.
+// corr[k][j]: trial j's correlation at shift 0.05·(k − 40).
+double BestShift(const std::vector<std::vector<double>>& corr, std::size_t skip) {
+  std::vector<double> total(corr.size(), 0.0);
+  for (std::size_t k = 0; k < corr.size(); ++k) {
+    for (std::size_t j = 0; j < corr[k].size(); ++j) {
+      if (j != skip) total[k] += corr[k][j];
     }
   }
-  return best_shift;
+  const std::size_t best = std::max_element(total.begin(), total.end()) - total.begin();
+  double shift = 0.05 * (static_cast<double>(best) - 40.0);
+  if (best > 0 && best + 1 < total.size()) {
+    const double a = total[best - 1], b = total[best], c = total[best + 1];
+    const double curvature = a - 2 * b + c;
+    if (curvature < 0) shift += 0.05 * 0.5 * (a - c) / curvature;
+  }
+  return shift;
+}
+
+// The lag (BestShift over every trial) and its jackknife σ over trials (Efron & Tibshirani,
+// An Introduction to the Bootstrap, eq. 11.5): σ² = (n−1)/n·Σ(lag₋ⱼ − mean)², NaN for n < 2.
+void AddLag(const std::vector<std::vector<Sample>>& per_trial, ErrorBreakdown* b) {
+  std::vector<std::vector<double>> corr(81, std::vector<double>(per_trial.size()));
+  for (int k = 0; k <= 80; ++k) {
+    for (std::size_t j = 0; j < per_trial.size(); ++j) {
+      corr[k][j] = CrossCorrelation(per_trial[j], 0.05 * (k - 40));
+    }
+  }
+  b->lag_s = BestShift(corr, per_trial.size());
+  const std::size_t n = per_trial.size();
+  if (n < 2) {
+    b->lag_sigma_s = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  std::vector<double> loo(n);
+  double mean = 0.0;
+  for (std::size_t j = 0; j < n; ++j) mean += (loo[j] = BestShift(corr, j)) / n;
+  double ss = 0.0;
+  for (double l : loo) ss += (l - mean) * (l - mean);
+  b->lag_sigma_s = std::sqrt((n - 1.0) / n * ss);
 }
 
 // Least-squares slope of the trials' relative speed error over campaign time (per hour).
@@ -152,7 +181,10 @@ void AddDrift(const Trials& trials, const std::vector<std::vector<Sample>>& per_
                         a.sim / a.meas - 1.0});
     }
   }
-  if (points.size() < 2) return;
+  if (points.size() < 2) {
+    b->drift_sigma_per_hour = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
   double mt = 0, me = 0;
   for (auto [t, e] : points) {
     mt += t;
@@ -166,6 +198,12 @@ void AddDrift(const Trials& trials, const std::vector<std::vector<Sample>>& per_
     sxx += (t - mt) * (t - mt);
   }
   b->drift_per_hour = sxx > 0 ? sxy / sxx : 0.0;
+  // σ of a least-squares slope: s/√Sxx, s² = Σ residual² / (n − 2).
+  double ss = 0.0;
+  for (auto [t, e] : points) ss += std::pow(e - me - b->drift_per_hour * (t - mt), 2);
+  b->drift_sigma_per_hour = points.size() > 2 && sxx > 0
+                                ? std::sqrt(ss / (points.size() - 2.0) / sxx)
+                                : std::numeric_limits<double>::quiet_NaN();
   const auto [first, last] = std::minmax_element(
       points.begin(), points.end(), [](const auto& a, const auto& c) { return a.first < c.first; });
   b->campaign_span_h = last->first - first->first;
@@ -188,11 +226,12 @@ ErrorBreakdown Breakdown(const model::Vehicle& vehicle, const model::DofModel& m
   }
   AddGrouped(vehicle, per_trial, MaxForce(trials), std::string(model::VelocityUnit(b.dof)), &b);
   b.velocity_mae = n ? abs_err / n : 0.0;
-  b.lag_s = Lag(per_trial);
+  AddLag(per_trial, &b);
   if (campaign_clock) {
     AddDrift(trials, per_trial, &b);
   } else {
-    b.drift_per_hour = b.campaign_span_h = std::numeric_limits<double>::quiet_NaN();
+    b.drift_per_hour = b.campaign_span_h = b.drift_sigma_per_hour =
+        std::numeric_limits<double>::quiet_NaN();
   }
   return b;
 }

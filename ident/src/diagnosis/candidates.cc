@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../number_text.h"
 #include "diagnosis_internal.h"
 #include "uuvplan/ident/chi_square.h"
 
@@ -121,6 +122,21 @@ std::vector<Candidate> CandidatesFor(const std::string& name, const model::Vehic
   return out;
 }
 
+// "" when every parameter of `ext` lies in its family's admissible range (model/parameter.h),
+// else the first that does not, e.g. "kq_neg = -453.4 N·s²/m² (expected a number >= 0)". A
+// parameter already outside it in `base` is the standard model's problem, not the extension's.
+std::string NonPhysical(const StructureFit& base, const StructureFit& ext) {
+  for (const ParameterEstimate& e : ext.oe.estimates) {
+    const model::ParameterFamily* family = model::FamilyOf(e.name);
+    if (!family || family->Admissible(e.value)) continue;
+    const auto b = base.values.find(e.name);
+    if (b != base.values.end() && !family->Admissible(b->second)) continue;
+    return e.name + " = " + Fmt(e.value) + " " + model::Unit(e.name, ext.structure.dof) +
+           " (expected " + family->Expected() + ")";
+  }
+  return "";
+}
+
 // Likelihood ratio D = 2·(C₀ − C₁)/s₁², s₁² = 2·C₁/(N − P₁), ~ χ²(Δp) under "no effect"
 // (diagnosis.h); max_z: the new parameter farthest from its null value, in σ.
 CandidateTest Test(const Candidate& c, const StructureFit& base, const StructureFit& ext,
@@ -138,7 +154,10 @@ CandidateTest Test(const Candidate& c, const StructureFit& base, const Structure
   const int n = ext.oe.num_residuals;
   const double s2 = 2.0 * ext.oe.cost / std::max(1, n - ext.free_parameters);
   t.statistic = std::max(0.0, 2.0 * (base.oe.cost - ext.oe.cost) / s2);
-  t.p_value = ChiSquareSurvival(t.statistic, t.added_parameters);
+  // A parameter held at its bound in `base` may be free again in `ext` (FitPhysical decides
+  // per fit): the test counts every parameter `ext` frees.
+  const int freed = std::max(t.added_parameters, ext.free_parameters - base.free_parameters);
+  t.p_value = ChiSquareSurvival(t.statistic, freed);
   for (const std::string& name : c.added) {
     const int k = FindEstimate(ext.oe.estimates, name);
     if (k < 0) continue;
@@ -146,6 +165,11 @@ CandidateTest Test(const Candidate& c, const StructureFit& base, const Structure
     const auto null = c.proposal.null.find(name);
     const double null_value = null != c.proposal.null.end() ? null->second : model::NullValue(name);
     if (e.sigma > 0) t.max_z = std::max(t.max_z, std::abs(e.value - null_value) / e.sigma);
+  }
+  t.non_physical = NonPhysical(base, ext);
+  for (const std::string& name : ext.held_at_bound) {
+    t.detail += (t.detail.empty() ? "" : "; ") + name + " held at its bound " +
+                Fmt(ext.held.at(name));
   }
   return t;
 }

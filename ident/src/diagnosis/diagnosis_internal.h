@@ -31,11 +31,22 @@ struct StructureFit {
   Values values;  ///< by parameter name
   std::set<std::string> dropped;
   int free_parameters = 0;  ///< model parameters + nuisance initial states
+  Values held;              ///< parameters held at a value (FitPhysical: at an admissible bound)
+  std::set<std::string> held_at_bound;  ///< those the free fit put outside their range
 };
 
 StructureFit FitStructure(const model::Vehicle& vehicle, const model::ModelStructure& structure,
                           const Trials& trials, const Values& start,
-                          const std::set<std::string>& dropped, const OutputErrorOptions& options);
+                          const std::set<std::string>& dropped, const OutputErrorOptions& options,
+                          const Values& fixed = {});
+
+/// FitStructure within the families' admissible ranges (model/parameter.h): a parameter the fit
+/// puts outside its range (and `base` had inside) is held at the bound and the rest refitted;
+/// one that cannot be held (an open bound) is left for the test to call non-physical.
+StructureFit FitPhysical(const model::Vehicle& vehicle, const model::ModelStructure& structure,
+                         const Trials& trials, const Values& start,
+                         const std::set<std::string>& dropped, const OutputErrorOptions& options,
+                         const Values& base, Values held = {});
 
 /// A candidate extension of the current structure: an effect's proposal applied to it.
 struct Candidate {
@@ -59,16 +70,22 @@ ErrorBreakdown Breakdown(const model::Vehicle& vehicle, const model::DofModel& m
                          const Eigen::VectorXd& theta, const Trials& trials, double step_s,
                          bool campaign_clock);
 
-/// The held-out gain of going from `before` to `after` (step 4).
+/// The held-out gain of going from `before` to `after` (step 4): on `validate`, else by
+/// cross-validation across `fit` (its folds fitted on up to `threads` threads).
 DiagnosisGain HeldOutGain(const model::Vehicle& vehicle, const StructureFit& before,
                           const StructureFit& after, const Trials& fit, const Trials& validate,
-                          const OutputErrorOptions& oe);
+                          const OutputErrorOptions& oe, int threads);
 
 /// Adds the errors-in-variables covariance of coupling terms to `f` (input_noise.cc).
 void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
                              const TrialDataOptions& data, const OutputErrorOptions& oe,
-                             int replicates, std::uint64_t seed, StructureFit* f,
+                             int replicates, std::uint64_t seed, int threads, StructureFit* f,
                              std::vector<std::string>* notes);
+
+/// The corrected static thrust map of each mapping of `trials` that `f`'s thrust_map effect
+/// implies (diagnosis.h CorrectedThrustMap); empty without one.
+std::vector<CorrectedThrustMap> CorrectedThrustMaps(const model::Vehicle& vehicle,
+                                                    const StructureFit& f, const Trials& trials);
 
 /// Largest |φⁿ| over the trials.
 double MaxForce(const Trials& trials);

@@ -21,8 +21,10 @@ std::string FindingText(const Finding& f) {
 
 PipelineSummary::DofLine DofLineOf(const DiagnosisResult& r, model::Dof dof) {
   if (!Diagnosed(r, dof)) {
+    const auto why = r.not_diagnosed.find(dof);
     return {dof, "not diagnosed",
-            "not diagnosed: its standard model could not be fitted (see the notes)"};
+            "not diagnosed: " +
+                (why != r.not_diagnosed.end() ? why->second : std::string("no breakdown"))};
   }
   std::string effects, details;
   int n = 0;
@@ -45,9 +47,11 @@ PipelineSummary DiagnosisResult::Summary() const {
     any_diagnosed = any_diagnosed || Diagnosed(*this, dof);
     s.dofs.push_back(DofLineOf(*this, dof));
   }
-  s.status = !any_diagnosed ? "failed" : findings.empty() ? "none" : "findings";
+  s.status = !not_diagnosed.empty() ? "failed" : findings.empty() ? "none" : "findings";
   if (!any_diagnosed) {
-    s.message = "no DOF could be diagnosed (see the notes)";
+    s.message = "no DOF could be diagnosed";
+  } else if (!not_diagnosed.empty()) {
+    s.message = std::to_string(not_diagnosed.size()) + " DOF(s) not diagnosed";
   } else if (!warnings.empty()) {
     s.message = std::to_string(warnings.size()) + " warning(s) beside the findings";
   }

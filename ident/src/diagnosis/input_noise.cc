@@ -6,10 +6,12 @@
 // perturbed by fresh draws of the same noise (seeded) spreads as the noise already in them:
 //   Cov_eiv = (1/R)·Σ_r (θ̂_r − θ̂)(θ̂_r − θ̂)ᵀ,   Cov = Cov_oe + Cov_eiv.
 #include <cmath>
+#include <optional>
 #include <random>
 #include <sstream>
 
 #include "diagnosis_internal.h"
+#include "parallel.h"
 
 namespace uuvplan::ident::diagnosis {
 
@@ -74,7 +76,7 @@ void UpdateSigmas(StructureFit* f) {
 
 void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
                              const TrialDataOptions& data, const OutputErrorOptions& oe,
-                             int replicates, std::uint64_t seed, StructureFit* f,
+                             int replicates, std::uint64_t seed, int threads, StructureFit* f,
                              std::vector<std::string>* notes) {
   const std::string dof(model::DofName(f->structure.dof));
   std::map<Dof, double> noise;
@@ -83,14 +85,20 @@ void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
   const int np = static_cast<int>(f->oe.theta.size());
   Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(np, np);
   int used = 0;
-  for (int r = 0; r < replicates; ++r) {
-    const auto perturbed = Perturbed(campaign, fit, noise, data, seed, r);
+  // The refits are independent (replicate r draws from its own stream): run in parallel, each
+  // into its slot, and summed in order.
+  std::vector<std::optional<Eigen::VectorXd>> refit(replicates);
+  ParallelFor(replicates, threads, [&](std::size_t r) {
+    const auto perturbed = Perturbed(campaign, fit, noise, data, seed, static_cast<int>(r));
     Trials trials;
     for (const auto& t : perturbed) trials.push_back(t.get());
     const StructureFit g =
-        FitStructure(campaign.vehicle, f->structure, trials, f->values, f->dropped, oe);
-    if (!g.oe.ok() || g.oe.theta.size() != np) continue;
-    const Eigen::VectorXd d = g.oe.theta - f->oe.theta;
+        FitStructure(campaign.vehicle, f->structure, trials, f->values, f->dropped, oe, f->held);
+    if (g.oe.ok() && g.oe.theta.size() == np) refit[r] = g.oe.theta;
+  });
+  for (const auto& theta : refit) {
+    if (!theta) continue;
+    const Eigen::VectorXd d = *theta - f->oe.theta;
     cov += d * d.transpose();
     ++used;
   }

@@ -21,9 +21,45 @@ json GroupsJson(const std::vector<ident::ErrorGroup>& groups) {
   return out;
 }
 
+json ThrustMapJson(const ident::CorrectedThrustMap& m) {
+  json rows = json::array();
+  for (const auto& r : m.rows) {
+    rows.push_back({{"command", r.command},
+                    {"nominal", r.nominal},
+                    {"delivered", r.delivered},
+                    {"sigma", r.sigma}});
+  }
+  return {{"mapping", m.mapping},
+          {"thruster", m.thruster},
+          {"shape", m.shape},
+          {"command_exponent", JsonNumber(m.command_exponent)},
+          {"command_exponent_sigma", JsonNumber(m.command_exponent_sigma)},
+          {"command_range", {m.smallest_command, m.largest_command}},
+          {"thrust", {{"model", "poly2"}, {"a", m.poly2_a}, {"b", m.poly2_b}}},
+          {"rows", rows}};
+}
+
+// A model of one DOF: {"params": {<name>: {value, sigma}}, "settings", "velocity_mae":
+// {fit, validate}} (its free runs, as `uuvplan score` computes them).
+json ModelJson(const ident::DofIdentification& d) {
+  json params = json::object();
+  for (std::size_t i = 0; i < d.parameter_names.size(); ++i) {
+    const ident::ParameterEstimate* e = d.Param(d.parameter_names[i]);
+    params[d.parameter_names[i]] = {{"value", d.theta[static_cast<Eigen::Index>(i)]},
+                                    {"sigma", JsonNumber(e ? e->sigma : 0.0)}};
+  }
+  return {{"params", params},
+          {"settings", d.structure.settings},
+          {"velocity_mae",
+           {{"fit", JsonNumber(d.fit.velocity_mae_fit)},
+            {"validate", JsonNumber(d.fit.velocity_mae_validate)}}}};
+}
+
 json FindingJson(const ident::Finding& f) {
   json params = json::object();
   for (const auto& p : f.params) params[p.name] = {{"value", p.value}, {"sigma", p.sigma}};
+  json maps = json::array();
+  for (const auto& m : f.thrust_maps) maps.push_back(ThrustMapJson(m));
   return {{"effect", f.effect},
           {"dof", std::string(model::DofName(f.dof))},
           {"what", f.what},
@@ -32,8 +68,9 @@ json FindingJson(const ident::Finding& f) {
            {{"metric", f.gain.metric},
             {"before", f.gain.before},
             {"after", f.gain.after},
-            {"relative", f.gain.relative},
+            {"relative", JsonNumber(f.gain.relative)},
             {"on", f.gain.on}}},
+          {"thrust_maps", maps},
           {"statistic", f.statistic},
           {"p_value", f.p_value},
           {"added_parameters", f.added_parameters}};
@@ -50,6 +87,8 @@ json CandidateTestJson(const ident::CandidateTest& t) {
           {"max_z", t.max_z},
           {"significant", t.significant},
           {"gain", JsonNumber(t.gain)},
+          {"unscored", t.unscored},
+          {"non_physical", t.non_physical},
           {"accepted", t.accepted}};
 }
 
@@ -59,7 +98,9 @@ json BreakdownJson(const ident::ErrorBreakdown& b) {
           {"by_speed", GroupsJson(b.by_speed)},
           {"by_command", GroupsJson(b.by_command)},
           {"lag_s", b.lag_s},
-          {"drift_per_hour", b.drift_per_hour},
+          {"lag_sigma_s", JsonNumber(b.lag_sigma_s)},
+          {"drift_per_hour", JsonNumber(b.drift_per_hour)},
+          {"drift_sigma_per_hour", JsonNumber(b.drift_sigma_per_hour)},
           {"velocity_mae", b.velocity_mae}};
 }
 
@@ -69,12 +110,20 @@ json DiagnosisJson(const ident::DiagnosisResult& r) {
   json findings = json::array(), tests = json::array(), breakdown = json::object();
   for (const auto& f : r.findings) findings.push_back(FindingJson(f));
   for (const auto& t : r.tests) tests.push_back(CandidateTestJson(t));
+  json extended = json::object(), standard = json::object();
+  for (const auto& e : r.extended) extended[std::string(model::DofName(e.dof))] = ModelJson(e);
+  for (const auto& e : r.standard) standard[std::string(model::DofName(e.dof))] = ModelJson(e);
+  json not_diagnosed = json::object();
+  for (const auto& [dof, why] : r.not_diagnosed) not_diagnosed[std::string(model::DofName(dof))] = why;
   for (const auto& b : r.breakdowns)
     breakdown[std::string(model::DofName(b.dof))] = BreakdownJson(b);
   return {{"nominal", IdentifyJson(r.nominal)},
           {"findings", findings},
           {"tests", tests},
           {"breakdown", breakdown},
+          {"standard", standard},
+          {"extended", extended},
+          {"not_diagnosed", not_diagnosed},
           {"warnings", r.warnings},
           {"notes", r.notes}};
 }

@@ -36,9 +36,23 @@ void ParseParams(const Value& v, Dof dof, const Vehicle& vehicle, DofTruth* trut
   }
 }
 
-// dofs.<dof>.params and .effects of a truth file; nullopt when the DOF has neither.
+// sigma: {<parameter>: σ}, σ >= 0 of parameters the DOF's params or effects give.
+void ParseSigma(const Value& v, DofTruth* truth) {
+  const MapValue m(v, "a map {<parameter>: sigma}");
+  for (const MapValue::Entry& e : m.entries()) {
+    if (!truth->params.count(e.key)) {
+      e.key_value.Expected("a parameter given by this DOF's params or effects");
+    }
+    truth->sigma[e.key] = NonNegative(e.value);
+  }
+}
+
+}  // namespace
+
+// dofs.<dof>.params, .effects and .sigma of a truth file (or of a vehicle file with a model,
+// as `diagnose --write-vehicle` writes it); nullopt when the DOF has no params.
 std::optional<DofTruth> ParseTruthDof(const Value& v, Dof dof, const Vehicle& vehicle) {
-  const MapValue m(v, "a map {drag, added_mass, params, effects}");
+  const MapValue m(v, "a map {drag, added_mass, params, effects, sigma}");
   const Value effects = m.Optional("effects");
   if (!m.Has("params")) {
     if (!effects.absent()) m.Required("params");  // effects act on the true parameters
@@ -46,15 +60,19 @@ std::optional<DofTruth> ParseTruthDof(const Value& v, Dof dof, const Vehicle& ve
   }
   DofTruth truth;
   ParseParams(m.Required("params"), dof, vehicle, &truth);
-  if (effects.absent()) return truth;
-  const MapValue settings(effects, "a map {<effect>: {settings}}");
-  for (const MapValue::Entry& e : settings.entries()) {
-    const EffectEntry* effect = Effects().Find(e.key);
-    if (!effect) e.key_value.Expected("an effect (" + Effects().NameList() + ")");
-    ParseEffectSettings(*effect, e.value, dof, vehicle, &truth);
+  if (!effects.absent()) {
+    const MapValue settings(effects, "a map {<effect>: {settings}}");
+    for (const MapValue::Entry& e : settings.entries()) {
+      const EffectEntry* effect = Effects().Find(e.key);
+      if (!effect) e.key_value.Expected("an effect (" + Effects().NameList() + ")");
+      ParseEffectSettings(*effect, e.value, dof, vehicle, &truth);
+    }
   }
+  if (const Value sigma = m.Optional("sigma"); !sigma.absent()) ParseSigma(sigma, &truth);
   return truth;
 }
+
+namespace {
 
 // virtual_pool: {step, dropout_probability, outlier_probability, outlier_size}.
 void ParseVirtualPool(const Value& v, Truth* truth) {

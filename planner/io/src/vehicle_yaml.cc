@@ -159,15 +159,12 @@ DragPrior ParseDrag(const Value& v) {
   return drag;
 }
 
-// dofs.<dof> of a vehicle: a priori drag and added mass. A truth file adds params and effects
-// (read by ParseTruthDof).
-DofPrior ParsePrior(const Value& v, bool truth) {
-  const MapValue m(v, "a map {drag, added_mass}");
-  if (truth) {
-    m.AllowOnly({"drag", "added_mass", "params", "effects"});
-  } else {
-    m.AllowOnly({"drag", "added_mass"});
-  }
+// dofs.<dof> of a vehicle: a priori drag and added mass. A truth file, or a vehicle file with
+// an identified model (`diagnose --write-vehicle`), adds params, effects and sigma (read by
+// ParseTruthDof).
+DofPrior ParsePrior(const Value& v) {
+  const MapValue m(v, "a map {drag, added_mass, params, effects, sigma}");
+  m.AllowOnly({"drag", "added_mass", "params", "effects", "sigma"});
   DofPrior prior;
   if (const Value d = m.Optional("drag"); !d.absent()) prior.drag = ParseDrag(d);
   if (const Value a = m.Optional("added_mass"); !a.absent()) prior.added_mass = AddedMassBounds(a);
@@ -221,7 +218,7 @@ Vehicle ParseVehicle(const MapValue& root, bool truth) {
   if (const Value v = root.Optional("dofs"); !v.absent()) {
     const MapValue priors(v, "a map {<dof>: {drag, added_mass}}");
     for (const MapValue::Entry& e : priors.entries()) {
-      vehicle.priors[DofKey(e)] = ParsePrior(e.value, truth);
+      vehicle.priors[DofKey(e)] = ParsePrior(e.value);
     }
   }
   if (const Value v = root.Optional("sensors"); !v.absent()) {
@@ -235,9 +232,18 @@ Vehicle ParseVehicle(const MapValue& root, bool truth) {
 
 Vehicle ReadVehicle(const std::string& path) {
   return Guarded(path, [&] {
-    return ParseVehicle(LoadYamlMap(path, "a vehicle (name, mass, size, thrusters, mappings, ...)",
-                                    "a map of vehicle keys"),
-                        false);
+    const MapValue root = LoadYamlMap(path, "a vehicle (name, mass, size, thrusters, mappings, ...)",
+                                      "a map of vehicle keys");
+    Vehicle vehicle = ParseVehicle(root, false);
+    // A model written into the vehicle file is checked here too: every command that reads
+    // the file reports its faults, though only `score` and `simulate` use it.
+    if (const Value v = root.Optional("dofs"); !v.absent()) {
+      const MapValue dofs(v, "a map of DOFs");
+      for (const MapValue::Entry& e : dofs.entries()) {
+        ParseTruthDof(e.value, DofKey(e), vehicle);
+      }
+    }
+    return vehicle;
   });
 }
 

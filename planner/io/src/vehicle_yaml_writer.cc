@@ -3,7 +3,9 @@
 // written with 17 significant digits, enough to read back exactly.
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
+#include <map>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -11,6 +13,8 @@
 
 #include "uuvplan/io/files.h"
 #include "uuvplan/io/vehicle_yaml.h"
+#include "uuvplan/model/effects.h"
+#include "uuvplan/model/parameter.h"
 
 namespace uuvplan::io {
 
@@ -100,9 +104,82 @@ void EmitBody(YAML::Emitter& out, const Vehicle& v) {
   EmitPair(out, v.added_mass);
 }
 
+// {m, k, kq, bias, bias_step, eta: {<mapping>.<dir>: v}} and {<effect>: {<key>: v, ...}} of a
+// model (truth_yaml.cc and truth_effects.cc read them back): each parameter where its family
+// puts it in a truth file.
+void EmitModel(YAML::Emitter& out, const DofTruth& model) {
+  std::map<std::string, double> eta;
+  std::map<std::string, std::map<std::string, double>> plain;  // effect -> key -> value
+  std::map<std::string, std::map<std::string, std::map<std::string, double>>> qualified;
+  out << YAML::Key << "params" << YAML::Value << YAML::BeginMap;
+  for (const auto& [name, value] : model.params) {
+    const EffectEntry* owner = Effects().OwnerOf(name);
+    const ParameterFamily* family = FamilyOf(name);
+    if (family && family->name == param::kEtaPrefix) {
+      eta[std::string(Qualifier(name))] = value;
+    } else if (!owner || !family) {
+      out << YAML::Key << name << YAML::Value << value;
+    } else if (family->qualified()) {
+      qualified[owner->name][std::string(family->file_key)][std::string(Qualifier(name))] = value;
+    } else {
+      plain[owner->name][name] = value;
+    }
+  }
+  if (!eta.empty()) out << YAML::Key << "eta" << YAML::Value << eta;
+  out << YAML::EndMap;
+  for (const EffectEntry& e : Effects().entries()) {
+    if (!plain.count(e.name) && !qualified.count(e.name)) continue;
+    for (const EffectSetting& setting : e.settings) {
+      const auto it = model.settings.find(std::string(setting.setting));
+      if (it != model.settings.end()) plain[e.name][std::string(setting.file_key)] = it->second;
+    }
+  }
+  if (plain.empty() && qualified.empty()) return;
+  out << YAML::Key << "effects" << YAML::Value << YAML::BeginMap;
+  for (const EffectEntry& e : Effects().entries()) {
+    if (!plain.count(e.name) && !qualified.count(e.name)) continue;
+    out << YAML::Key << e.name << YAML::Value << YAML::BeginMap;
+    for (const auto& [key, value] : plain[e.name]) out << YAML::Key << key << YAML::Value << value;
+    for (const auto& [key, map] : qualified[e.name]) out << YAML::Key << key << YAML::Value << map;
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
+void EmitDofs(YAML::Emitter& out, const Vehicle& v, const std::map<Dof, DofTruth>& models) {
+  std::map<Dof, bool> dofs;
+  for (const auto& [dof, prior] : v.priors) dofs[dof] = true;
+  for (const auto& [dof, model] : models) dofs[dof] = true;
+  if (dofs.empty()) return;
+  out << YAML::Key << "dofs" << YAML::Value << YAML::BeginMap;
+  for (const auto& [dof, unused] : dofs) {
+    out << YAML::Key << std::string(DofName(dof)) << YAML::Value << YAML::BeginMap;
+    if (const auto p = v.priors.find(dof); p != v.priors.end() && p->second.drag) {
+      const DragPrior& d = *p->second.drag;
+      out << YAML::Key << "drag" << YAML::Value;
+      EmitFlowMap(out, {{"k", d.k}, {"kq", d.kq}, {"rel_sigma", d.rel_sigma}});
+    }
+    if (const auto p = v.priors.find(dof); p != v.priors.end() && p->second.added_mass) {
+      out << YAML::Key << "added_mass" << YAML::Value;
+      EmitPair(out, *p->second.added_mass);
+    }
+    if (const auto m = models.find(dof); m != models.end()) {
+      EmitModel(out, m->second);
+      if (!m->second.sigma.empty()) out << YAML::Key << "sigma" << YAML::Value << m->second.sigma;
+    }
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
 }  // namespace
 
 void WriteVehicleYaml(const std::string& path, const Vehicle& v) {
+  WriteVehicleYaml(path, v, {}, "written by uuvplan");
+}
+
+void WriteVehicleYaml(const std::string& path, const Vehicle& v,
+                      const std::map<Dof, DofTruth>& models, const std::string& comment) {
   YAML::Emitter out;
   out.SetDoublePrecision(17);
   out << YAML::BeginMap;
@@ -112,24 +189,20 @@ void WriteVehicleYaml(const std::string& path, const Vehicle& v) {
   out << YAML::EndSeq;
   out << YAML::Key << "min_thrust" << YAML::Value << v.min_thrust;
   EmitMappings(out, v);
-  EmitPerDof(out, "dofs", v.priors, [&out](const DofPrior& prior) {
-    if (prior.drag) {
-      out << YAML::Key << "drag" << YAML::Value;
-      EmitFlowMap(
-          out,
-          {{"k", prior.drag->k}, {"kq", prior.drag->kq}, {"rel_sigma", prior.drag->rel_sigma}});
-    }
-    if (prior.added_mass) {
-      out << YAML::Key << "added_mass" << YAML::Value;
-      EmitPair(out, *prior.added_mass);
-    }
-  });
+  EmitDofs(out, v, models);
   EmitPerDof(out, "sensors", v.sensors, [&out](const DofSensors& s) {
     EmitSensor(out, "position", s.position);
     EmitSensor(out, "velocity", s.velocity);
   });
   out << YAML::EndMap;
-  WriteFileAtomically(path, std::string("# written by uuvplan\n") + out.c_str() + "\n");
+  std::string text;
+  std::size_t from = 0;
+  while (from <= comment.size()) {  // each line of the comment as a YAML comment
+    const std::size_t end = std::min(comment.find('\n', from), comment.size());
+    text += "# " + comment.substr(from, end - from) + "\n";
+    from = end + 1;
+  }
+  WriteFileAtomically(path, text + out.c_str() + "\n");
 }
 
 }  // namespace uuvplan::io

@@ -20,6 +20,8 @@
 // input noise) — and DiagnosisResult::Summary() gives them in the pipelines' shape (summary.h).
 #pragma once
 
+#include <functional>
+#include <map>
 #include <optional>
 #include <cstdint>
 #include <limits>
@@ -58,6 +60,11 @@ struct DiagnoseOptions {
   std::vector<std::string> candidates = model::Effects().Diagnosable();
   /// Print the standard model's fit on stderr (the CLI sets it from UUVPLAN_VERBOSE).
   bool verbose = false;
+  /// Threads for the candidate fits (0: one per core). The result does not depend on it.
+  int threads = 0;
+  /// Called at each stage of each DOF with a line saying what runs (the CLI prints it on
+  /// stderr once a run has taken 2 s); empty: silent.
+  std::function<void(const std::string&)> progress;
   /// DOFs to diagnose; empty: every DOF with a fit trial.
   std::vector<model::Dof> dofs;
   IdentifyOptions identify;        ///< for the nominal (standard-model) identification
@@ -73,8 +80,35 @@ struct DiagnosisGain {
   std::string metric = "velocity_mae";
   double before = 0.0;
   double after = 0.0;
-  double relative = 0.0;  ///< (before − after) / before
+  double relative = 0.0;  ///< (before − after) / before; NaN when not scored
   std::string on;         ///< "validate" or "cross-validation"
+  /// False when the held-out data cannot score the two models (no held-out trial, a fold
+  /// without trials, a free run that cannot be simulated): `unscored` says why.
+  bool scored = false;
+  std::string unscored;
+};
+
+/// The static thrust map a thrust_map (and dead zone) finding implies, in the units of the
+/// vehicle file: for the reference thruster of a mapping (largest |share|), each command V →
+/// the force the vehicle file's thrust model gives (nominal) and the force the extended model
+/// delivers, f_d = share·φ_d, φ_d = φ·(|φ|/φ_ref)^p with φ = Thrust(V)/share (after the dead
+/// zone, when found), with σ from σ_p: σ_fd = |f_d·ln(|φ|/φ_ref)|·σ_p.
+struct CorrectedThrustMap {
+  std::string mapping, thruster;
+  struct Row {
+    double command = 0.0, nominal = 0.0, delivered = 0.0, sigma = 0.0;  // command unit, N
+  };
+  std::vector<Row> rows;  ///< commands from command_min to command_max, 0 left out
+  /// The delivered force grows as |V|^n over the commands of the data (log–log slope), n ± σ.
+  double command_exponent = 0.0, command_exponent_sigma = 0.0;
+  /// The commands of the fit trials span [smallest, largest] |V| (n's meaning is there).
+  double smallest_command = 0.0, largest_command = 0.0;
+  /// Least-squares fit of the delivered force by the vehicle file's poly2 thrust model
+  /// f = sign(V)·(a·V² + b·|V|), a, b ≥ 0: the map to put in the vehicle file.
+  double poly2_a = 0.0, poly2_b = 0.0;
+  /// "linear in the command", "square in the command" (each when that power law stays within
+  /// 20% of the fitted one over the commands of the data) or "a power of the command, |command|^n".
+  std::string shape;
 };
 
 struct Finding {
@@ -86,6 +120,8 @@ struct Finding {
   int added_parameters = 0;
   double p_value = 1.0;
   DiagnosisGain gain;
+  /// thrust_map findings: the corrected static map of each mapping of the fit trials.
+  std::vector<CorrectedThrustMap> thrust_maps;
 };
 
 /// One candidate's test (also those not retained), for the report.
@@ -99,8 +135,14 @@ struct CandidateTest {
   double max_z = 0.0;
   bool significant = false;  ///< p < significance and a new parameter ≥ min_z σ from null
   /// Held-out gain (relative velocity-MAE reduction) of a significant candidate, when
-  /// evaluated; NaN otherwise.
+  /// evaluated and scored; NaN otherwise.
   double gain = std::numeric_limits<double>::quiet_NaN();
+  /// Why a significant candidate's held-out gain could not be scored (empty when it was).
+  std::string unscored;
+  /// Why the extension is not physical (a parameter outside its family's admissible range,
+  /// model/parameter.h), e.g. "kq_neg = -453.4 N·s²/m² (expected a number >= 0)"; such a
+  /// candidate is never significant.
+  std::string non_physical;
   bool accepted = false;  ///< significant, held-out gain ≥ min_gain, and chosen in its round
   int round = 0;  ///< greedy round (0 = against the standard model)
 };
@@ -110,21 +152,29 @@ struct DiagnosisResult {
   std::vector<Finding> findings;  ///< ordered by gain, largest first
   std::vector<ErrorBreakdown> breakdowns;
   std::vector<CandidateTest> tests;
-  /// The extended structure and its estimate per DOF (the standard one when nothing found).
+  /// The extended structure and its estimate per DOF diagnosed (the standard one when nothing
+  /// found), every parameter with σ (0 for one held at its admissible bound); `fit` holds the
+  /// free run of every trial of the DOF with it, as `uuvplan score` computes it.
   std::vector<DofIdentification> extended;
+  /// The standard model per DOF diagnosed, as diagnosis fits it (output error, every parameter
+  /// free: the "before" of the first finding), with its free runs in `fit` likewise.
+  std::vector<DofIdentification> standard;
   /// What limits the findings' meaning (e.g. closed-loop data), to show beside them.
   std::vector<std::string> warnings;
   std::vector<std::string> notes;
   /// The DOFs asked for (or with a fit trial), in the order diagnosed.
   std::vector<model::Dof> dofs;
+  /// The DOFs refused, and why: the standard model's identification failed (a diagnosis of a
+  /// failed fit would name effects of the failure), or its output-error fit did.
+  std::map<model::Dof, std::string> not_diagnosed;
   /// Wall time of each stage, summed over the DOFs, in order: "screen" (trials prepared, the
   /// standard model identified, fitted by output error and its errors broken down), "test"
   /// (every candidate fitted and tested), "extend" (the greedy choice, the extended model),
   /// "measure" (held-out gains, input-noise covariance). They add up to Diagnose's wall time.
   std::vector<StageTime> timing;
   /// Status "findings" (some effect found), "none" (every DOF diagnosed, nothing found) or
-  /// "failed" (no DOF could be diagnosed); the stage timings; per DOF the effects found with
-  /// their held-out gain.
+  /// "failed" (some DOF could not be diagnosed: not_diagnosed says why); the stage timings; per
+  /// DOF the effects found with their held-out gain.
   PipelineSummary Summary() const;
 };
 

@@ -24,9 +24,11 @@ struct ErrorBreakdown {
   std::vector<ErrorGroup> by_speed;   ///< low / high speed (split at the median |ξ|)
   std::vector<ErrorGroup> by_command; ///< small commands (|φ| < 20% of the largest) / others
   double lag_s = 0.0;                 ///< measured velocity lags the simulation by this (s)
+  double lag_sigma_s = 0.0;           ///< its σ (jackknife over trials; NaN with one trial)
   /// Trend of the relative speed error over campaign time, and the campaign time between the
   /// first and last trial's middle; NaN when a trial has no `start` (campaign clock unknown).
   double drift_per_hour = 0.0;
+  double drift_sigma_per_hour = 0.0;  ///< its σ (least squares; NaN with fewer than 3 trials)
   double campaign_span_h = 0.0;
   double velocity_mae = 0.0;          ///< overall
 

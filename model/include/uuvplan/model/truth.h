@@ -33,6 +33,9 @@ struct DofTruth {
   std::map<char, AuxMotion> aux_motion;
   /// Structure settings of its effects (effects.h EffectSetting), e.g. "thrust_reference".
   std::map<std::string, double> settings;
+  /// σ of identified parameters by name (a model written by `diagnose --write-vehicle`);
+  /// empty in a hand-written truth.
+  std::map<std::string, double> sigma;
 };
 
 struct Truth {
