@@ -42,7 +42,8 @@ double Seconds(std::chrono::steady_clock::time_point a) {
 
 int main(int argc, char** argv) {
   const int reps = argc > 1 ? std::atoi(argv[1]) : 200;
-  const std::string only = argc > 2 ? argv[2] : "";
+  const std::string only = argc > 2 && std::string(argv[2]) != "all" ? argv[2] : "";
+  const double ar1 = argc > 3 ? std::atof(argv[3]) : 0.0;
   namespace t = ident::testing;
   const std::vector<Case> cases = {{"romeo_surge", "romeo", t::RomeoSurgeDesigns()},
                                    {"romeo_heave", "romeo", t::RomeoHeaveDesigns()},
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
                                    {"uris", "uris", t::UrisDesigns()}};
   bool known = only.empty() || only == "crb";
   for (const Case& c : cases) known = known || only == c.name;
-  if (reps <= 1 || !known || argc > 3) {
+  if (reps <= 1 || !known || argc > 4 || !(std::abs(ar1) < 1)) {
     std::fprintf(stderr,
                  "usage: identify_validation [repetitions > 1, default 200] [case: romeo_surge, "
                  "romeo_heave, romeo_yaw, vsor, uris or crb]\n");
@@ -67,7 +68,9 @@ int main(int argc, char** argv) {
     o.identify.prune_insignificant = false;
     o.cramer_rao = false;
     const auto t0 = std::chrono::steady_clock::now();
-    const ident::MonteCarloReport r = ident::RunMonteCarlo(t::CaseTruth(c.truth), c.designs, o);
+    model::Truth truth = t::CaseTruth(c.truth);
+    truth.defects.noise_ar1 = ar1;
+    const ident::MonteCarloReport r = ident::RunMonteCarlo(truth, c.designs, o);
     std::printf("== %s: %d repetitions, %d failures, %.0f s\n%s", c.name.c_str(), r.repetitions,
                 r.failures, Seconds(t0), r.Table().c_str());
     if (r.failures > 0) exit_code = 1;
