@@ -21,7 +21,7 @@ std::vector<std::pair<int, int>> GroupRuns(const std::vector<int>& groups) {
 
 // The first lag at which the autocorrelation of u, pooled within runs, falls below 2/√n
 // (searched up to a twentieth of the longest run).
-int CorrelationLength(const Eigen::VectorXd& u, const std::vector<std::pair<int, int>>& runs) {
+int RunCorrelationLength(const Eigen::VectorXd& u, const std::vector<std::pair<int, int>>& runs) {
   const double den = u.squaredNorm();
   const int n = static_cast<int>(u.size());
   if (!(den > 0) || n < 40) return 1;
@@ -39,6 +39,10 @@ int CorrelationLength(const Eigen::VectorXd& u, const std::vector<std::pair<int,
 }
 
 }  // namespace
+
+int CorrelationLength(const Eigen::VectorXd& u, const std::vector<int>& groups) {
+  return RunCorrelationLength(u, GroupRuns(groups));
+}
 
 double Ar1Coefficient(const Eigen::VectorXd& r) {
   const Eigen::Index n = r.size();
@@ -95,7 +99,7 @@ PrewhitenedCovariance PrewhitenedSandwich(const Eigen::MatrixXd& J, const Eigen:
   }
   out.mean_rho = n > 0 ? rho_sum / n : 0.0;
   // Batch means of the whitened scores Z_jᵀ û_j within groups.
-  out.block = std::max(1, 2 * CorrelationLength(u, runs) - 1);
+  out.block = std::max(1, 2 * RunCorrelationLength(u, runs) - 1);
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(p, p);
   for (const auto& [a, b] : runs) {
     for (int s = a; s < b; s += out.block) {

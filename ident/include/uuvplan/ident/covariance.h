@@ -35,6 +35,10 @@ PrewhitenedCovariance PrewhitenedSandwich(const Eigen::MatrixXd& J, const Eigen:
                                           const std::vector<int>& groups,
                                           const Eigen::MatrixXd* bread_inverse = nullptr);
 
+/// The first lag at which the autocorrelation of u, pooled within runs of equal `groups`
+/// labels, falls below 2/√n (searched up to a twentieth of the longest run; 1 for short u).
+int CorrelationLength(const Eigen::VectorXd& u, const std::vector<int>& groups);
+
 /// Lag-1 coefficient of the AR(1) fitted to a group's residuals (least squares of r_i on
 /// r_{i−1}), clamped to [−0.9, 0.99]: an exactly unit root has no stationary variance.
 double Ar1Coefficient(const Eigen::VectorXd& r);
