@@ -49,14 +49,18 @@ double Ar1Coefficient(const Eigen::VectorXd& r) {
   if (n < 3) return 0.0;
   const double num = r.head(n - 1).dot(r.tail(n - 1));
   const double den = r.head(n - 1).squaredNorm();
-  return den > 0 ? std::clamp(num / den, -0.9, 0.99) : 0.0;
+  if (!(den > 0)) return 0.0;
+  // Least squares of an AR(1) is biased towards 0 by (1 + 3ρ)/n (Marriott & Pope 1954): for
+  // ρ = 0.9 on 100 samples 0.863, a long-run variance (1 + ρ)/(1 − ρ) of 13.6 for 19, σ 18% low.
+  const double rho = num / den;
+  return std::clamp(rho + (1.0 + 3.0 * rho) / static_cast<double>(n), -0.9, 0.99);
 }
 
-double NoiseAr1FromDifferences(const std::vector<double>& y) {
+double NoiseAr1FromDifferences(const std::vector<double>& y, const std::vector<double>& s) {
   double g0 = 0.0, g1 = 0.0;
   double prev_d = std::nan("");
-  for (std::size_t i = 1; i < y.size(); ++i) {
-    const double d = y[i] - y[i - 1];  // NaN across a missing sample
+  for (std::size_t i = 1; i < y.size() && i < s.size(); ++i) {
+    const double d = (y[i] - s[i]) - (y[i - 1] - s[i - 1]);  // NaN across a missing sample
     if (std::isnan(d)) {
       prev_d = std::nan("");
       continue;

@@ -14,8 +14,9 @@
 // least 2: rows share an endpoint). The estimate is the two-stage least squares
 // ψ = (X̂ᵀF)⁻¹X̂ᵀY, X̂ = Z(ZᵀZ)⁻¹ZᵀF (Söderström & Stoica,
 // "System Identification" §8: lagged inputs and outputs as instruments, valid when the noise
-// is a moving average shorter than the lag) and its covariance the AR(1)-prewhitened sandwich
-// A⁻¹·S·A⁻ᵀ, A = X̂ᵀF, scores X̂_kᵀe_k (covariance.h). The same lag removes the errors-in-variables bias of the
+// is a moving average shorter than the lag) and its covariance the sandwich A⁻¹·X̂ᵀΩX̂·A⁻ᵀ,
+// A = X̂ᵀF, Ω the MA(1) of the rows' residuals (consecutive rows share a knot), as the one-step
+// least squares (least_squares.h Ma1VarianceModelCovariance). The same lag removes the errors-in-variables bias of the
 // noisy ξ̃ in F.
 #pragma once
 
@@ -50,7 +51,6 @@ struct ClosedLoopIvResult {
   int lag_knots = 0;       ///< d
   int instrument_lags = 1; ///< L
   double lag_s = 0.0;      ///< d in seconds (mean knot spacing × d)
-  double rho = 0.0;        ///< mean AR(1) coefficient of the residuals (prewhitening)
   bool ok() const { return fit.ok(); }
 };
 

@@ -40,14 +40,16 @@ PrewhitenedCovariance PrewhitenedSandwich(const Eigen::MatrixXd& J, const Eigen:
 int CorrelationLength(const Eigen::VectorXd& u, const std::vector<int>& groups);
 
 /// Lag-1 coefficient of the AR(1) fitted to a group's residuals (least squares of r_i on
-/// r_{i−1}), clamped to [−0.9, 0.99]: an exactly unit root has no stationary variance.
+/// r_{i−1}, plus its small-sample bias (1 + 3ρ)/n), clamped to [−0.9, 0.99]: an exactly unit
+/// root has no stationary variance.
 double Ar1Coefficient(const Eigen::VectorXd& r);
 
-/// AR(1) noise of a sensor from its raw samples y (a smooth signal plus noise): with
-/// d_i = y_i − y_{i−1}, γ_d(1)/γ_d(0) = −(1 − ρ)/2 for AR(1) noise, so ρ = 1 + 2·γ_d(1)/γ_d(0)
-/// (white: −1/2, ρ = 0). The signal's own differences are positively correlated and bias ρ up
-/// (a larger σ: the safe side). Clamped to [0, 0.99]. NaN samples split the series.
-double NoiseAr1FromDifferences(const std::vector<double>& y);
+/// AR(1) noise of a sensor from its raw samples y and their smoothed values s (same times):
+/// with d_i = (y_i − s_i) − (y_{i−1} − s_{i−1}), the differences of the noise (the smoothing
+/// removes the signal's differences, which would dominate a gyro's at 50 Hz),
+/// γ_d(1)/γ_d(0) = −(1 − ρ)/2 for AR(1) noise, so ρ = 1 + 2·γ_d(1)/γ_d(0) (white: −1/2,
+/// ρ = 0). Clamped to [0, 0.99]. NaN samples split the series.
+double NoiseAr1FromDifferences(const std::vector<double>& y, const std::vector<double>& s);
 
 /// Σ_s Σ_t c_s c_t ρ^|s−t| = cᵀΩc/σ² of a stationary AR(1) (O(n): q_s = c_s + ρ·q_{s−1},
 /// the sum is 2·Σ c_s q_s − Σ c_s²).
