@@ -43,33 +43,6 @@ bool OneStepOptions::IsValid(std::string* error) const {
                  "OneStepOptions: max_step_s > 0, max_condition > 1, newey_west_lags >= 0", error);
 }
 
-namespace {
-
-// Runs of usable filtered samples: SmoothRuns, or (not splitting at force jumps) every stretch
-// of finite, non-edge samples of one velocity run.
-std::vector<std::pair<std::size_t, std::size_t>> RowRuns(const TrialData& d, bool split_at_jumps) {
-  if (split_at_jumps) return SmoothRuns(d);
-  std::vector<std::pair<std::size_t, std::size_t>> out;
-  const SmoothedSignal& v = d.velocity_estimate;
-  std::size_t begin = 0;
-  bool open = false;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const bool usable = !v.edge[i] && std::isfinite(v.value[i]);
-    if (open && (!usable || v.run[i] != v.run[begin])) {
-      out.push_back({begin, i});
-      open = false;
-    }
-    if (usable && !open) {
-      begin = i;
-      open = true;
-    }
-  }
-  if (open) out.push_back({begin, v.size()});
-  return out;
-}
-
-}  // namespace
-
 OneStepRows BuildOneStepRows(const model::DofModel& model,
                              const std::vector<const TrialData*>& trials,
                              const Eigen::VectorXd& theta, const std::vector<int>& free,
@@ -104,7 +77,7 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
       const double span = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
       window = span * (trial->sg_window - 1);
     }
-    for (const auto& [begin, end] : RowRuns(*trial, o.split_at_force_jumps)) {
+    for (const auto& [begin, end] : SmoothRuns(*trial, o.split_at_force_jumps)) {
       std::vector<double> kt, kx;
       for (std::size_t i = begin; i < end; ++i) {
         if (!kt.empty() && v.t[i] - kt.back() < window - 1e-9) continue;

@@ -136,14 +136,17 @@ TEST(IdentifyCliTest, RealBlueRovYawRuns) {
 TEST(IdentifyCliTest, RealTartanClosedLoopIsSaidSo) {
   UUVPLAN_SKIP_WITHOUT_REAL_DATA("tartan-pool-2022");
   // shared/data/tartan-pool-2022: commanded wrench of a closed-loop controller. Every DOF
-  // must be flagged closed loop and its inertia reported unreliable.
+  // must be flagged closed loop, identified by the closed-loop estimator (named in the JSON)
+  // and its inertia reported unreliable. Sway ("not usable", the data's README) has no
+  // significant closed-loop estimate: failed, exit 1.
   const RunResult r = RunUuvplan(
       "identify " + RealDataPath("tartan-pool-2022/campaign.yaml") + " --json -", false);
-  ASSERT_EQ(r.status, 0) << r.out;
+  ASSERT_EQ(r.status, 1) << r.out;
   const json j = json::parse(r.out);
   ASSERT_EQ(j.at("dofs").size(), 4u);
   for (const auto& [dof, d] : j.at("dofs").items()) {
     EXPECT_TRUE(d.at("closed_loop_suspected").get<bool>()) << dof;
+    EXPECT_EQ(d.at("estimator").get<std::string>(), "closed_loop_iv") << dof;
     EXPECT_FALSE(d.at("params").at("m").value("reliable", true)) << dof;
   }
 }
