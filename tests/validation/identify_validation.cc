@@ -10,7 +10,7 @@
 //     (offset 35 N, amplitude 25 N, period 26 s, 260 s) must lie within 25% of the bound at the
 //     truth.
 //
-// Run: build-ident/tests/identify_validation [repetitions = 200] [case = all]
+// Run: build/tests/identify_validation [repetitions = 200] [case = all] [AR(1) ρ = 0]
 //      (case: romeo_surge, romeo_heave, romeo_yaw, vsor, uris, crb)
 // Exit status 1 when a claim fails. Model selection is off (fixed structures): coverage is a
 // property of an estimator of a given model. The CI subset is tests/ident/ident_coverage_test.cc.
@@ -55,7 +55,8 @@ int main(int argc, char** argv) {
   if (reps <= 1 || !known || argc > 4 || !(std::abs(ar1) < 1)) {
     std::fprintf(stderr,
                  "usage: identify_validation [repetitions > 1, default 200] [case: romeo_surge, "
-                 "romeo_heave, romeo_yaw, vsor, uris or crb]\n");
+                 "romeo_heave, romeo_yaw, vsor, uris, crb or all] [sensor noise AR(1) ρ in "
+                 "(-1, 1), default 0]\n");
     return 2;
   }
   int exit_code = 0;
