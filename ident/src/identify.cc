@@ -19,10 +19,11 @@ constexpr model::EnumNames<IdentifyStatus, 3> kIdentifyStatusNames{{{
     {IdentifyStatus::kFailed, "failed"},
 }}};
 
-constexpr model::EnumNames<FinalEstimator, 4> kFinalEstimatorNames{{{
+constexpr model::EnumNames<FinalEstimator, 5> kFinalEstimatorNames{{{
     {FinalEstimator::kOutputError, "output_error"},
     {FinalEstimator::kSteadyStateIntegral, "steady_state+integral"},
     {FinalEstimator::kOneStep, "one_step_ls"},
+    {FinalEstimator::kClosedLoopIv, "closed_loop_iv"},
     {FinalEstimator::kNone, "none"},
 }}};
 
@@ -93,7 +94,7 @@ std::vector<Dof> DofsToIdentify(const std::vector<TrialData>& trials, const Iden
 
 bool IdentifyOptions::IsValid(std::string* error) const {
   return data.IsValid(error) && steady.IsValid(error) && inertia.IsValid(error) &&
-         one_step.IsValid(error) && output_error.IsValid(error) &&
+         one_step.IsValid(error) && closed_loop_iv.IsValid(error) && output_error.IsValid(error) &&
          Require(validation.step_s > 0, "ValidationOptions::step_s must be > 0", error);
 }
 

@@ -134,6 +134,18 @@ void ChooseAnswer(const DofContext& c, LeastSquaresAnswer* ls, DofIdentification
   }
 }
 
+// Under feedback (closed_loop_iv.h): the instrumental-variable estimate of m and every
+// regressor-linear parameter, the non-linear ones at the least-squares answer's values.
+void ClosedLoop(const DofContext& c, const IdentifyOptions& o, const LeastSquaresAnswer& ls,
+                DofIdentification* r) {
+  if (!r->closed_loop_suspected) return;
+  ClosedLoopIvOptions iv = o.closed_loop_iv;
+  iv.prune_insignificant = o.prune_insignificant && iv.prune_insignificant;
+  r->closed_loop_iv =
+      ClosedLoopInstrumentalFit(c.model, c.trials.fit, ls.estimate.theta, o.one_step, iv);
+  if (!r->closed_loop_iv->ok()) r->notes.push_back(r->closed_loop_iv->fit.message);
+}
+
 }  // namespace
 
 LeastSquaresAnswer EstimateStage(const DofContext& c, const IdentifyOptions& o,
@@ -153,6 +165,7 @@ LeastSquaresAnswer EstimateStage(const DofContext& c, const IdentifyOptions& o,
   }
   OneStep(c, o, &ls, r);
   ChooseAnswer(c, &ls, r);
+  ClosedLoop(c, o, ls, r);
   return ls;
 }
 

@@ -142,10 +142,25 @@ StageEstimate Adopt(const DofContext& c, const LeastSquaresAnswer& ls, const Ref
   return e;
 }
 
+// Under feedback the command carries the measurement noise the controller saw, so the output
+// error (which simulates from that command) and the least squares are biased: the
+// instrumental-variable estimate is reported instead, and no output error is run.
+bool AdoptClosedLoop(DofIdentification* r, StageEstimate* e) {
+  if (!r->closed_loop_iv || !r->closed_loop_iv->ok()) return false;
+  const OneStepDofResult& f = r->closed_loop_iv->fit;
+  *e = {f.theta, f.covariance, f.state};
+  r->estimator = FinalEstimator::kClosedLoopIv;
+  r->notes.push_back("closed loop: " + f.message + "; the output error is not run (under "
+                     "feedback the command correlates with the measurement noise)");
+  return true;
+}
+
 }  // namespace
 
 StageEstimate RefineStage(const DofContext& c, const LeastSquaresAnswer& ls,
                           const IdentifyOptions& o, DofIdentification* r) {
+  StageEstimate closed_loop;
+  if (AdoptClosedLoop(r, &closed_loop)) return closed_loop;
   if (!o.refine) return ls.estimate;
   RefineStart s = StartFrom(c, ls);
   OutputErrorResult oe = FitWithRestart(c, ls, s, r);

@@ -7,6 +7,7 @@
 
 #include "number_text.h"
 #include "options_check.h"
+#include "uuvplan/ident/covariance.h"
 #include "uuvplan/ident/regression.h"
 #include "uuvplan/model/effects.h"
 
@@ -32,6 +33,7 @@ struct Run {
   // derivative of interval s's known-force integral with respect to a velocity offset.
   bool white = false;
   std::vector<double> D;
+  double rho = 0.0;  // AR(1) coefficient of the raw samples' noise (covariance.h)
 };
 
 // One row of the regression y_i = m·ξ_i − c_run − (t_i − t_s)·b_trial (seed 000 eqs. 16–19).
@@ -84,6 +86,9 @@ void AddRuns(const model::DofModel& model, const TrialData& trial, const Eigen::
     gain = 1.0;
   }
   const SmoothedSignal& src = raw ? raw_signal : v;
+  // The sensor's noise colour from its own samples (ρ = 1 + 2·γ_d(1)/γ_d(0) of the differences
+  // of raw − smoothed).
+  const double rho = raw ? NoiseAr1FromDifferences(trial.velocity.y, v.value) : 0.0;
   for (const auto& [begin, end] : SmoothRuns(trial)) {
     Run run;
     run.trial = trial.index;
@@ -105,6 +110,7 @@ void AddRuns(const model::DofModel& model, const TrialData& trial, const Eigen::
     if (raw && stride == 1 && run.noise_var > 0) {
       run.D = WhiteNoiseSensitivity(model, trial, run, raw_signal, theta_known, o.max_step_s);
       run.white = true;
+      run.rho = rho;
     }
     runs->push_back(std::move(run));
   }
@@ -202,7 +208,9 @@ double KnownParameterVariance(const std::vector<Row>& rows, const Eigen::VectorX
 // error e_s enters H_s (−m̂·e_s after moving it to the residual) and, through the drag terms,
 // every later y_i: by half of each adjacent interval's sensitivity D (the interpolation's
 // value basis integrates to ½ on each side). m̂ = Σ_i g_i·y_i (g_i = H_i·Nc⁻¹e₀), so
-//   ∂m̂/∂e_s = ½D_{s−1}·Σ_{i≥s} g_i + ½D_s·Σ_{i>s} g_i − m̂·g_s,   σ²_white = Σ_s σ_s²·(∂m̂/∂e_s)².
+//   ∂m̂/∂e_s = ½D_{s−1}·Σ_{i≥s} g_i + ½D_s·Σ_{i>s} g_i − m̂·g_s,
+//   σ²_white = σ²·Σ_s Σ_t (∂m̂/∂e_s)(∂m̂/∂e_t)·ρ^|s−t|
+// for the sensor's AR(1) noise (ρ from its samples, NoiseAr1FromDifferences; ρ = 0: white).
 // The integrals make these errors cumulative (a random walk along the run), which a
 // Newey–West window of a few filter spans cannot see.
 double WhiteNoiseVariance(const std::vector<Run>& runs, const std::vector<Row>& rows,
@@ -214,12 +222,13 @@ double WhiteNoiseVariance(const std::vector<Run>& runs, const std::vector<Row>& 
     std::vector<double> g(k), tail(k + 1, 0.0);
     for (int s2 = 0; s2 < k; ++s2) g[s2] = RowDot(rows[i0 + s2], a0);
     for (int s2 = k - 1; s2 >= 0; --s2) tail[s2] = tail[s2 + 1] + g[s2];
+    std::vector<double> c(k);
     for (int s2 = 0; s2 < k; ++s2) {
-      double c = -m * g[s2];
-      if (s2 > 0) c += 0.5 * run.D[s2 - 1] * tail[s2];
-      if (s2 + 1 < k) c += 0.5 * run.D[s2] * tail[s2 + 1];
-      var_white += run.noise_var * c * c;
+      c[s2] = -m * g[s2];
+      if (s2 > 0) c[s2] += 0.5 * run.D[s2 - 1] * tail[s2];
+      if (s2 + 1 < k) c[s2] += 0.5 * run.D[s2] * tail[s2 + 1];
     }
+    var_white += run.noise_var * Ar1QuadraticForm(c, run.rho);
     i0 += k;
   }
   return var_white;

@@ -242,6 +242,9 @@ LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
       fit.covariance = (larger ? fit.sigma2 : 1.0) * unit;
       break;
     }
+    case CovarianceKind::kKnownNoiseAtLeast:
+      fit.covariance = (fit.dof > 0 ? std::max(1.0, fit.sigma2) : 1.0) * unit;
+      break;
     case CovarianceKind::kDifferenced: {
       std::vector<int> g(n, 0);
       if (groups) g = *groups;

@@ -77,7 +77,7 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
       const double span = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
       window = span * (trial->sg_window - 1);
     }
-    for (const auto& [begin, end] : SmoothRuns(*trial)) {
+    for (const auto& [begin, end] : SmoothRuns(*trial, o.split_at_force_jumps)) {
       std::vector<double> kt, kx;
       for (std::size_t i = begin; i < end; ++i) {
         if (!kt.empty() && v.t[i] - kt.back() < window - 1e-9) continue;

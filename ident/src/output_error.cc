@@ -8,6 +8,7 @@
 #include "model_selection.h"
 #include "number_text.h"
 #include "options_check.h"
+#include "uuvplan/ident/covariance.h"
 #include "uuvplan/ident/least_squares.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/ident/significance.h"
@@ -361,50 +362,6 @@ double ResidualLag1(const Problem& p, const Eigen::VectorXd& r) {
   return count > 0 ? sum / count : 0.0;
 }
 
-// Correlation length of the residuals: the first lag where their autocorrelation falls below
-// 2/√n (searched up to n/20 and 5000 lags).
-int CorrelationLength(const Eigen::VectorXd& r) {
-  const int n = static_cast<int>(r.size());
-  if (n < 40) return 1;
-  const Eigen::VectorXd c = r.array() - r.mean();
-  const double den = c.squaredNorm();
-  if (!(den > 0)) return 1;
-  const double bound = 2.0 / std::sqrt(static_cast<double>(n));
-  const int max_lag = std::min(n / 20, 5000);
-  for (int l = 1; l < max_lag; ++l) {
-    if (std::abs(c.head(n - l).dot(c.tail(n - l)) / den) < bound) return l;
-  }
-  return max_lag;
-}
-
-// Autocorrelation-robust covariance by batch means: the scores g_i = J_iᵀ r_i summed over
-// contiguous blocks (within a trial) at least twice the residuals' correlation length; the
-// block sums are nearly independent, Cov = (JᵀJ)⁻¹·Σ_b G_b G_bᵀ·(JᵀJ)⁻¹. O(n·p²) whatever the
-// correlation length (a Newey–West sum over thousands of lags would be O(n·L·p²)).
-Eigen::MatrixXd BatchMeansCovariance(const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
-                                     const std::vector<int>& groups, int block) {
-  const Eigen::Index n = J.rows(), p = J.cols();
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(p, p);
-  Eigen::VectorXd g = Eigen::VectorXd::Zero(p);
-  int in_block = 0, blocks = 0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    if (i > 0 && (groups[i] != groups[i - 1] || in_block >= block)) {
-      S.noalias() += g * g.transpose();
-      g.setZero();
-      in_block = 0;
-      ++blocks;
-    }
-    g.noalias() += J.row(i).transpose() * r[i];
-    ++in_block;
-  }
-  S.noalias() += g * g.transpose();
-  ++blocks;
-  const Eigen::MatrixXd A = J.transpose() * J;
-  const Eigen::MatrixXd Ainv = A.ldlt().solve(Eigen::MatrixXd::Identity(p, p));
-  const double correction = blocks > 1 ? static_cast<double>(blocks) / (blocks - 1) : 1.0;
-  return correction * Ainv * S * Ainv;
-}
-
 }  // namespace
 
 bool OutputErrorOptions::IsValid(std::string* error) const {
@@ -580,16 +537,19 @@ int RefitWithoutGrossErrors(Problem* p, const OutputErrorOptions& o, LmOutcome* 
   return gross;
 }
 
-// Residuals correlated over the record (model error or coloured noise): the batch-means
-// covariance of z, never less than the white-noise one s²·crb_z.
+// Residuals correlated over the record (model error or coloured noise): the AR(1)-prewhitened
+// sandwich of z (covariance.h; ρ per trial and sensor), never less than the white-noise one
+// s²·crb_z.
 Eigen::MatrixXd RobustCovariance(const Problem& p, const LmOutcome& lm, double sigma2,
                                  const Eigen::MatrixXd& crb_z) {
   std::vector<int> groups(p.num_r());
   for (const TrialProblem& tp : p.trials()) {
-    for (int k = 0; k < tp.num_residuals(); ++k) groups[tp.r_offset + k] = tp.trial->index;
+    const int npos = static_cast<int>(tp.pos_y.size());
+    for (int k = 0; k < tp.num_residuals(); ++k) {
+      groups[tp.r_offset + k] = 2 * tp.trial->index + (k < npos ? 0 : 1);
+    }
   }
-  const int block = std::max(2, 2 * CorrelationLength(lm.r));
-  const Eigen::MatrixXd hac = BatchMeansCovariance(lm.J, lm.r, groups, block);
+  const Eigen::MatrixXd hac = PrewhitenedSandwich(lm.J, lm.r, groups, &crb_z).covariance;
   for (int j = 0; j < hac.rows(); ++j) {
     if (hac(j, j) < sigma2 * crb_z(j, j)) return sigma2 * crb_z;
   }
@@ -728,8 +688,8 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
   if (res.hac_covariance) {
     res.notes.push_back("output-error residuals are not white (mean lag-1 autocorrelation " +
                         Fmt(res.residual_lag1, 3) +
-                        "): model error or coloured noise; σ from batch means of the scores "
-                        "(blocks of twice the residuals' correlation length)");
+                        "): model error or coloured noise; σ from the scores prewhitened by an "
+                        "AR(1) of the residuals per trial and sensor, then batch means (a sandwich)");
   }
   res.message = Message(res);
   return res;

@@ -375,7 +375,8 @@ bool NearForceJump(const TrialData& d, double t, double half_span) {
   return it != d.force_jumps.end() && *it <= t + half_span;
 }
 
-std::vector<std::pair<std::size_t, std::size_t>> SmoothRuns(const TrialData& d) {
+std::vector<std::pair<std::size_t, std::size_t>> SmoothRuns(const TrialData& d,
+                                                            bool split_at_force_jumps) {
   std::vector<std::pair<std::size_t, std::size_t>> out;
   const SmoothedSignal& v = d.velocity_estimate;
   const double half = FilterHalfSpan(d);
@@ -383,14 +384,15 @@ std::vector<std::pair<std::size_t, std::size_t>> SmoothRuns(const TrialData& d) 
   bool open = false;
   std::size_t next_jump = 0;
   for (std::size_t i = 0; i < v.size(); ++i) {
-    const bool usable = !v.edge[i] && std::isfinite(v.value[i]) && !NearForceJump(d, v.t[i], half);
+    const bool usable = !v.edge[i] && std::isfinite(v.value[i]) &&
+                        (!split_at_force_jumps || !NearForceJump(d, v.t[i], half));
     // A jump between the previous usable sample and this one also ends the run.
     bool crossed = false;
     while (next_jump < d.force_jumps.size() && d.force_jumps[next_jump] <= v.t[i]) {
       crossed = true;
       ++next_jump;
     }
-    const bool new_run = open && (v.run[i] != v.run[begin] || crossed);
+    const bool new_run = open && (v.run[i] != v.run[begin] || (split_at_force_jumps && crossed));
     if (open && (!usable || new_run)) {
       out.push_back({begin, i});
       open = false;

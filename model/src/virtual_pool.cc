@@ -44,15 +44,21 @@ double WrapAngle(double a) {
   return w;
 }
 
-// Noisy samples with drop-outs (NaN) and multipath outliers (seed 000 Fig. 14).
+// Noisy samples with drop-outs (NaN) and multipath outliers (seed 000 Fig. 14). The noise is
+// AR(1), e_i = ρ·e_{i−1} + √(1 − ρ²)·σ·n_i with e_0 = σ·n_0 (stationary; ρ = 0: white, the same
+// draws as before the option existed).
 std::vector<double> Corrupt(const Eigen::VectorXd& clean, const SensorSpec& spec,
                             const SensorDefects& defects, std::mt19937_64& rng) {
   std::normal_distribution<double> noise(0.0, spec.sigma);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double outlier = defects.outlier_size > 0 ? defects.outlier_size : 20.0 * spec.sigma;
+  const double rho = defects.noise_ar1;
+  const double innovation = std::sqrt(1.0 - rho * rho);
   std::vector<double> y(clean.size());
+  double e = 0.0;
   for (Eigen::Index i = 0; i < clean.size(); ++i) {
-    y[i] = clean[i] + noise(rng);
+    e = i == 0 ? noise(rng) : rho * e + innovation * noise(rng);
+    y[i] = clean[i] + e;
     if (u(rng) < defects.outlier_probability) y[i] += (u(rng) < 0.5 ? -1 : 1) * outlier;
     if (i > 0 && u(rng) < defects.dropout_probability) y[i] = std::nan("");
   }

@@ -144,16 +144,18 @@ TEST(IdentifyCliTest, RealBlueRovYawIsANonPhysicalFit) {
 TEST(IdentifyCliTest, RealTartanFailuresAndOutliersAreSaidSo) {
   UUVPLAN_SKIP_WITHOUT_REAL_DATA("tartan-pool-2022");
   // shared/data/tartan-pool-2022: commanded wrench of a closed-loop controller. Every DOF
-  // must be flagged closed loop and its inertia reported unreliable. Yaw either fits with a
-  // free run better than ν ≡ 0 or is failed with its reason (issue #14); surge's kq is
-  // −400 ± 13 N·s²/m² (non-physical, failed). Either failure makes identify exit 1. 67 of
-  // 470 yaw position samples of chunk_12 (14%) are outliers: a warning naming the trial.
+  // must be flagged closed loop, identified by the closed-loop estimator (named in the JSON)
+  // and its inertia reported unreliable. Yaw either fits with a free run better than ν ≡ 0 or
+  // is failed with its reason (issue #14); sway ("not usable", the data's README) has no
+  // significant closed-loop estimate: failed, exit 1. 67 of 470 yaw position samples of
+  // chunk_12 (14%) are outliers: a warning naming the trial.
   const RunResult r = RunUuvplan(
       "identify " + RealDataPath("tartan-pool-2022/campaign.yaml") + " --json -", false);
   const json j = json::parse(r.out);
   ASSERT_EQ(j.at("dofs").size(), 4u);
   for (const auto& [dof, d] : j.at("dofs").items()) {
     EXPECT_TRUE(d.at("closed_loop_suspected").get<bool>()) << dof;
+    EXPECT_EQ(d.at("estimator").get<std::string>(), "closed_loop_iv") << dof;
     EXPECT_FALSE(d.at("params").at("m").value("reliable", true)) << dof;
   }
   const json& yaw = j.at("dofs").at("yaw");
@@ -166,7 +168,7 @@ TEST(IdentifyCliTest, RealTartanFailuresAndOutliersAreSaidSo) {
     EXPECT_EQ(yaw.at("status"), "failed");
     EXPECT_FALSE(yaw.at("message").get<std::string>().empty());
   }
-  EXPECT_EQ(j.at("dofs").at("surge").at("status"), "failed");
+  EXPECT_EQ(j.at("dofs").at("sway").at("status"), "failed");
   EXPECT_EQ(r.status, 1) << r.out.substr(0, 300);
   EXPECT_THAT(yaw.at("warnings").dump(),
               ::testing::HasSubstr("trials/chunk_12.csv: 67 of 470 position samples"));

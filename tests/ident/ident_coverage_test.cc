@@ -5,8 +5,9 @@
 // ROMEO surge sine trial.
 //
 // The CI runs a seeded subset (30 repetitions, 50 for the CRB: the first repetitions of the
-// full run, same seeds); the full size is tests/validation/identify_validation.cc
-//   build/tests/identify_validation 200
+// full run, same seeds), with white and with AR(1) ρ = 0.9 sensor noise; the full size is
+// tests/validation/identify_validation.cc
+//   build/tests/identify_validation 200 [case|all] [ρ]
 // which checks the issue's [90%, 99%] band on every cell; figures in docs/validation.md.
 //
 // Model selection is off (fixed structures): coverage is a property of an estimator of a given
@@ -35,10 +36,12 @@ struct McCase {
   std::string name;
   std::string truth;
   std::vector<model::TrialDesign> designs;
+  double ar1 = 0.0;  ///< sensor noise AR(1) coefficient (model::SensorDefects::noise_ar1)
 };
 void PrintTo(const McCase& c, std::ostream* os) { *os << c.name; }
 
 class CoverageTest : public ::testing::TestWithParam<McCase> {};
+
 
 TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   const McCase& c = GetParam();
@@ -47,7 +50,9 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   o.seed = 7;
   o.identify.prune_insignificant = false;
   o.cramer_rao = false;
-  const MonteCarloReport rep = RunMonteCarlo(testing::CaseTruth(c.truth), c.designs, o);
+  model::Truth truth = testing::CaseTruth(c.truth);
+  truth.defects.noise_ar1 = c.ar1;
+  const MonteCarloReport rep = RunMonteCarlo(truth, c.designs, o);
   std::cout << c.name << ", " << rep.repetitions << " repetitions\n" << rep.Table();
   EXPECT_EQ(rep.failures, 0);
   // Per cell: the true coverage of a 95% interval must be at least 90% (the band). With
@@ -60,6 +65,13 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   for (const CoverageCell& cell : rep.cells) {
     if (cell.estimator == "final") continue;             // the output error, counted once
     if (cell.n < 0.8 * rep.repetitions) continue;        // reported in too few repetitions
+    if (c.ar1 > 0 && (cell.estimator == "steady_state" || cell.estimator == "integral_inertia")) {
+      // Known gaps under AR(1) noise (docs/validation.md, "Coloured noise"), printed, not
+      // scored: the steady-state points' σ from a short segment's lag-1 (VSOR sd/σ up to 2.3);
+      // the integral method's errors-in-variables correction with a position sensor (ROMEO
+      // heave m covers ~68%) and its noise ρ from raw − smoothed differences (VSOR sd/σ 0.56).
+      continue;
+    }
     const double se = std::sqrt(0.9 * 0.1 / cell.n);
     EXPECT_GE(cell.coverage(), 0.90 - 2.33 * se)
         << cell.estimator << " " << model::DofName(cell.dof) << " " << cell.name;
@@ -81,12 +93,21 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   }
 }
 
+// The same campaigns with AR(1) sensor noise of ρ = 0.9 (the worst case): the output
+// error's and the one-step LS's σ must stay calibrated (covariance.h, docs/identification.md).
 std::vector<McCase> Cases() {
-  return {{"romeo_surge", "romeo", testing::RomeoSurgeDesigns()},
-          {"romeo_heave", "romeo", testing::RomeoHeaveDesigns()},
-          {"romeo_yaw", "romeo", testing::RomeoYawDesigns()},
-          {"vsor", "vsor", testing::VsorDesigns()},
-          {"uris", "uris", testing::UrisDesigns()}};
+  std::vector<McCase> white = {{"romeo_surge", "romeo", testing::RomeoSurgeDesigns()},
+                               {"romeo_heave", "romeo", testing::RomeoHeaveDesigns()},
+                               {"romeo_yaw", "romeo", testing::RomeoYawDesigns()},
+                               {"vsor", "vsor", testing::VsorDesigns()},
+                               {"uris", "uris", testing::UrisDesigns()}};
+  std::vector<McCase> all = white;
+  for (McCase c : white) {
+    c.name += "_ar1_09";
+    c.ar1 = 0.9;
+    all.push_back(c);
+  }
+  return all;
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, CoverageTest, ::testing::ValuesIn(Cases()),

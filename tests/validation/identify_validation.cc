@@ -10,7 +10,7 @@
 //     (offset 35 N, amplitude 25 N, period 26 s, 260 s) must lie within 25% of the bound at the
 //     truth.
 //
-// Run: build-ident/tests/identify_validation [repetitions = 200] [case = all]
+// Run: build/tests/identify_validation [repetitions = 200] [case = all] [AR(1) ρ = 0]
 //      (case: romeo_surge, romeo_heave, romeo_yaw, vsor, uris, crb)
 // Exit status 1 when a claim fails. Model selection is off (fixed structures): coverage is a
 // property of an estimator of a given model. The CI subset is tests/ident/ident_coverage_test.cc.
@@ -42,7 +42,8 @@ double Seconds(std::chrono::steady_clock::time_point a) {
 
 int main(int argc, char** argv) {
   const int reps = argc > 1 ? std::atoi(argv[1]) : 200;
-  const std::string only = argc > 2 ? argv[2] : "";
+  const std::string only = argc > 2 && std::string(argv[2]) != "all" ? argv[2] : "";
+  const double ar1 = argc > 3 ? std::atof(argv[3]) : 0.0;
   namespace t = ident::testing;
   const std::vector<Case> cases = {{"romeo_surge", "romeo", t::RomeoSurgeDesigns()},
                                    {"romeo_heave", "romeo", t::RomeoHeaveDesigns()},
@@ -51,10 +52,11 @@ int main(int argc, char** argv) {
                                    {"uris", "uris", t::UrisDesigns()}};
   bool known = only.empty() || only == "crb";
   for (const Case& c : cases) known = known || only == c.name;
-  if (reps <= 1 || !known || argc > 3) {
+  if (reps <= 1 || !known || argc > 4 || !(std::abs(ar1) < 1)) {
     std::fprintf(stderr,
                  "usage: identify_validation [repetitions > 1, default 200] [case: romeo_surge, "
-                 "romeo_heave, romeo_yaw, vsor, uris or crb]\n");
+                 "romeo_heave, romeo_yaw, vsor, uris, crb or all] [sensor noise AR(1) ρ in "
+                 "(-1, 1), default 0]\n");
     return 2;
   }
   int exit_code = 0;
@@ -67,7 +69,9 @@ int main(int argc, char** argv) {
     o.identify.prune_insignificant = false;
     o.cramer_rao = false;
     const auto t0 = std::chrono::steady_clock::now();
-    const ident::MonteCarloReport r = ident::RunMonteCarlo(t::CaseTruth(c.truth), c.designs, o);
+    model::Truth truth = t::CaseTruth(c.truth);
+    truth.defects.noise_ar1 = ar1;
+    const ident::MonteCarloReport r = ident::RunMonteCarlo(truth, c.designs, o);
     std::printf("== %s: %d repetitions, %d failures, %.0f s\n%s", c.name.c_str(), r.repetitions,
                 r.failures, Seconds(t0), r.Table().c_str());
     if (r.failures > 0) exit_code = 1;

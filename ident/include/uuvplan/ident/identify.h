@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "uuvplan/ident/estimate.h"
+#include "uuvplan/ident/closed_loop_iv.h"
 #include "uuvplan/ident/integral_inertia.h"
 #include "uuvplan/ident/one_step_ls.h"
 #include "uuvplan/ident/output_error.h"
@@ -56,6 +57,7 @@ struct IdentifyOptions {
   SteadyStateOptions steady;
   IntegralInertiaOptions inertia;
   OneStepOptions one_step;
+  ClosedLoopIvOptions closed_loop_iv;
   OutputErrorOptions output_error;
   ValidationOptions validation;
   bool refine = true;                ///< run the output-error stage
@@ -73,7 +75,7 @@ enum class IdentifyStatus {
 std::string_view IdentifyStatusName(IdentifyStatus s);
 
 /// Which estimator produced a DOF's reported parameters.
-enum class FinalEstimator { kOutputError, kSteadyStateIntegral, kOneStep, kNone };
+enum class FinalEstimator { kOutputError, kSteadyStateIntegral, kOneStep, kClosedLoopIv, kNone };
 std::string_view FinalEstimatorName(FinalEstimator e);
 
 struct DofIdentification {
@@ -93,6 +95,9 @@ struct DofIdentification {
   std::optional<IntegralInertiaResult> inertia;
   std::optional<OneStepDofResult> one_step;
   std::optional<OutputErrorResult> output_error;
+  /// Under feedback (closed_loop_suspected): the instrumental-variable estimate, reported
+  /// instead of the output error (closed_loop_iv.h).
+  std::optional<ClosedLoopIvResult> closed_loop_iv;
   FitSummary fit;
   bool closed_loop_suspected = false;
   std::vector<std::string> notes;

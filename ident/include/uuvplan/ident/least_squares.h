@@ -6,6 +6,7 @@
 //   known noise:             Cov = (Hᵀ W H)⁻¹          (w_i = 1/σ_i², the noise is known)
 //   conservative:            Cov = (Hᵀ W H)⁻¹, times s² when s²·(n − p) exceeds the 99% point of
 //                            χ²(n − p) (known noise unless the residuals say it is larger)
+//   known noise at least:    Cov = max(1, s²)·(Hᵀ W H)⁻¹
 //   Newey–West (HAC):        Cov = (HᵀWH)⁻¹ S (HᵀWH)⁻¹·n/(n − p),
 //                            S = Σ_l κ_l Σ_i (w_i h_i r_i)(w_{i-l} h_{i-l} r_{i-l})ᵀ + transpose,
 //                            Bartlett κ_l = 1 − l/(L + 1); lags never cross a group boundary.
@@ -27,6 +28,10 @@ enum class CovarianceKind {
   kResidual,      ///< seed 000 eqs. 11–12: noise variance estimated from the residuals
   kKnownNoise,    ///< weights are 1/σ² of a known noise
   kConservative,  ///< known noise, inflated by s² when the residuals are significantly larger
+  /// Known noise, inflated by s² whenever s² > 1: Cov = max(1, s²)·(HᵀWH)⁻¹. For weights whose
+  /// σ may be too small (coloured noise under-resolved by a short segment's lag-1), with few
+  /// degrees of freedom to test s² against χ².
+  kKnownNoiseAtLeast,
   kNeweyWest,     ///< autocorrelation-robust sandwich (Bartlett kernel)
   /// Consecutive rows of a group share a noise term (e.g. y_k = … + e_k − e_{k−1}, and white
   /// errors besides): the residual is MA(1) within groups, Ω = γ0·I + γ1·(L + Lᵀ) with γ0, γ1

@@ -76,6 +76,11 @@ struct OneStepOptions {
   /// 0 = the seeds' plain least squares.
   int iv_iterations = 2;
   double simulation_step_s = 0.02;  ///< for the instruments' simulations
+  /// Runs of rows end at large command steps (the filtered velocity is distorted across the
+  /// kink of the acceleration: SmoothRuns). Closed-loop commands step all the time, which would
+  /// leave almost no row: the closed-loop estimator keeps them (its lagged instruments do not
+  /// see a distortion at the row's own endpoints).
+  bool split_at_force_jumps = true;
   bool IsValid(std::string* error) const;
 };
 

@@ -127,6 +127,8 @@ bool NearForceJump(const TrialData& trial, double t, double half_span);
 /// inside one filter run, away from its edges, finite, and not within half a filter window of
 /// a large command change (a run is split there: the filtered velocity is distorted across
 /// the kink of the acceleration, and integrating through it would bias the regression).
-std::vector<std::pair<std::size_t, std::size_t>> SmoothRuns(const TrialData& trial);
+/// `split_at_force_jumps` false keeps those samples (closed-loop commands step at every row).
+std::vector<std::pair<std::size_t, std::size_t>> SmoothRuns(const TrialData& trial,
+                                                            bool split_at_force_jumps = true);
 
 }  // namespace uuvplan::ident

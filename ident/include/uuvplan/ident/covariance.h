@@ -1,0 +1,58 @@
+// Covariance of an estimator whose errors are coloured (docs/identification.md, "σ with
+// coloured residuals"): AR(1)-prewhitened sandwiches and the AR(1) noise of a sensor.
+//
+// An M-estimator linearised at its solution, θ̂ − θ ≈ A⁻¹ Σ_i J_iᵀ e_i (A = JᵀJ, J the rows'
+// derivatives, e the errors), has Cov(θ̂) = A⁻¹·Var(Σ_i J_iᵀ e_i)·A⁻¹. With AR(1) errors within a
+// group, e_i = ρ·e_{i−1} + u_i (u_0 = e_0), the score sum is rewritten on the innovations:
+//
+//   Σ_i J_iᵀ e_i = Σ_j Z_jᵀ u_j,   Z_j = J_j + ρ·Z_{j+1}   (backward recursion within the group)
+//
+// and the u_j are nearly independent: Var(Σ Z_jᵀ u_j) is estimated by batch means of the
+// whitened scores Z_jᵀ û_j over blocks of twice the correlation length of û (1 when û is white:
+// White's HC), which keeps what the AR(1) does not describe (model error, heteroscedasticity).
+// Prewhitening before a HAC sum is Andrews & Monahan (1992); without it a Newey–West or batch-
+// means sum over few, long blocks underestimates the long-run variance of ρ = 0.9 errors
+// (Σ_l ρ^|l| = 19 needs lags of ~50 samples per block, more than short trials hold).
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace uuvplan::ident {
+
+struct PrewhitenedCovariance {
+  Eigen::MatrixXd covariance;  ///< A⁻¹ S A⁻¹
+  double mean_rho = 0.0;       ///< of the groups, weighted by their rows
+  int block = 1;               ///< batch length of the whitened scores
+  int blocks = 0;
+};
+
+/// Cov(θ̂) of a (weighted) least-squares or output-error solution: `J` the rows' derivatives
+/// with respect to the estimated vector, `r` the residuals at the solution (same weighting),
+/// `groups` a label per row (a trial and sensor: ρ is estimated per group, within which rows
+/// are consecutive in time). `bread_inverse` (may be null: (JᵀJ)⁻¹) is A⁻¹.
+PrewhitenedCovariance PrewhitenedSandwich(const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
+                                          const std::vector<int>& groups,
+                                          const Eigen::MatrixXd* bread_inverse = nullptr);
+
+/// The first lag at which the autocorrelation of u, pooled within runs of equal `groups`
+/// labels, falls below 2/√n (searched up to a twentieth of the longest run; 1 for short u).
+int CorrelationLength(const Eigen::VectorXd& u, const std::vector<int>& groups);
+
+/// Lag-1 coefficient of the AR(1) fitted to a group's residuals (least squares of r_i on
+/// r_{i−1}, plus its small-sample bias (1 + 3ρ)/n), clamped to [−0.9, 0.99]: an exactly unit
+/// root has no stationary variance.
+double Ar1Coefficient(const Eigen::VectorXd& r);
+
+/// AR(1) noise of a sensor from its raw samples y and their smoothed values s (same times):
+/// with d_i = (y_i − s_i) − (y_{i−1} − s_{i−1}), the differences of the noise (the smoothing
+/// removes the signal's differences, which would dominate a gyro's at 50 Hz),
+/// γ_d(1)/γ_d(0) = −(1 − ρ)/2 for AR(1) noise, so ρ = 1 + 2·γ_d(1)/γ_d(0) (white: −1/2,
+/// ρ = 0). Clamped to [0, 0.99]. NaN samples split the series.
+double NoiseAr1FromDifferences(const std::vector<double>& y, const std::vector<double>& s);
+
+/// Σ_s Σ_t c_s c_t ρ^|s−t| = cᵀΩc/σ² of a stationary AR(1) (O(n): q_s = c_s + ρ·q_{s−1},
+/// the sum is 2·Σ c_s q_s − Σ c_s²).
+double Ar1QuadraticForm(const std::vector<double>& c, double rho);
+
+}  // namespace uuvplan::ident

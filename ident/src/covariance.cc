@@ -1,0 +1,126 @@
+#include "uuvplan/ident/covariance.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace uuvplan::ident {
+namespace {
+
+// [begin, end) of each run of equal consecutive group labels.
+std::vector<std::pair<int, int>> GroupRuns(const std::vector<int>& groups) {
+  std::vector<std::pair<int, int>> runs;
+  const int n = static_cast<int>(groups.size());
+  for (int i = 0; i < n;) {
+    int j = i + 1;
+    while (j < n && groups[j] == groups[i]) ++j;
+    runs.push_back({i, j});
+    i = j;
+  }
+  return runs;
+}
+
+// The first lag at which the autocorrelation of u, pooled within runs, falls below 2/√n
+// (searched up to a twentieth of the longest run).
+int RunCorrelationLength(const Eigen::VectorXd& u, const std::vector<std::pair<int, int>>& runs) {
+  const double den = u.squaredNorm();
+  const int n = static_cast<int>(u.size());
+  if (!(den > 0) || n < 40) return 1;
+  int longest = 0;
+  for (const auto& [a, b] : runs) longest = std::max(longest, b - a);
+  const double bound = 2.0 / std::sqrt(static_cast<double>(n));
+  for (int l = 1; l < std::max(2, longest / 20); ++l) {
+    double c = 0.0;
+    for (const auto& [a, b] : runs) {
+      for (int i = a + l; i < b; ++i) c += u[i] * u[i - l];
+    }
+    if (std::abs(c / den) < bound) return l;
+  }
+  return std::max(1, longest / 20);
+}
+
+}  // namespace
+
+int CorrelationLength(const Eigen::VectorXd& u, const std::vector<int>& groups) {
+  return RunCorrelationLength(u, GroupRuns(groups));
+}
+
+double Ar1Coefficient(const Eigen::VectorXd& r) {
+  const Eigen::Index n = r.size();
+  if (n < 3) return 0.0;
+  const double num = r.head(n - 1).dot(r.tail(n - 1));
+  const double den = r.head(n - 1).squaredNorm();
+  if (!(den > 0)) return 0.0;
+  // Least squares of an AR(1) is biased towards 0 by (1 + 3ρ)/n (Marriott & Pope 1954): for
+  // ρ = 0.9 on 100 samples 0.863, a long-run variance (1 + ρ)/(1 − ρ) of 13.6 for 19, σ 18% low.
+  const double rho = num / den;
+  return std::clamp(rho + (1.0 + 3.0 * rho) / static_cast<double>(n), -0.9, 0.99);
+}
+
+double NoiseAr1FromDifferences(const std::vector<double>& y, const std::vector<double>& s) {
+  double g0 = 0.0, g1 = 0.0;
+  double prev_d = std::nan("");
+  for (std::size_t i = 1; i < y.size() && i < s.size(); ++i) {
+    const double d = (y[i] - s[i]) - (y[i - 1] - s[i - 1]);  // NaN across a missing sample
+    if (std::isnan(d)) {
+      prev_d = std::nan("");
+      continue;
+    }
+    g0 += d * d;
+    if (!std::isnan(prev_d)) g1 += d * prev_d;
+    prev_d = d;
+  }
+  if (!(g0 > 0)) return 0.0;
+  return std::clamp(1.0 + 2.0 * g1 / g0, 0.0, 0.99);
+}
+
+double Ar1QuadraticForm(const std::vector<double>& c, double rho) {
+  double q = 0.0, sum = 0.0, sq = 0.0;
+  for (double cs : c) {
+    q = cs + rho * q;
+    sum += cs * q;
+    sq += cs * cs;
+  }
+  return 2.0 * sum - sq;
+}
+
+PrewhitenedCovariance PrewhitenedSandwich(const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
+                                          const std::vector<int>& groups,
+                                          const Eigen::MatrixXd* bread_inverse) {
+  const Eigen::Index n = J.rows(), p = J.cols();
+  PrewhitenedCovariance out;
+  const auto runs = GroupRuns(groups);
+  // Innovations û and the filtered rows Z, group by group.
+  Eigen::VectorXd u(n);
+  Eigen::MatrixXd Z(n, p);
+  double rho_sum = 0.0;
+  for (const auto& [a, b] : runs) {
+    const double rho = Ar1Coefficient(r.segment(a, b - a));
+    rho_sum += rho * (b - a);
+    u[a] = r[a];
+    for (int i = a + 1; i < b; ++i) u[i] = r[i] - rho * r[i - 1];
+    Z.row(b - 1) = J.row(b - 1);
+    for (int i = b - 2; i >= a; --i) Z.row(i) = J.row(i) + rho * Z.row(i + 1);
+  }
+  out.mean_rho = n > 0 ? rho_sum / n : 0.0;
+  // Batch means of the whitened scores Z_jᵀ û_j within groups.
+  out.block = std::max(1, 2 * RunCorrelationLength(u, runs) - 1);
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(p, p);
+  for (const auto& [a, b] : runs) {
+    for (int s = a; s < b; s += out.block) {
+      const int e = std::min(b, s + out.block);
+      const Eigen::VectorXd g = Z.middleRows(s, e - s).transpose() * u.segment(s, e - s);
+      S.noalias() += g * g.transpose();
+      ++out.blocks;
+    }
+  }
+  // The scores sum to zero at the solution (p constraints): B/(B − p) as HC1's n/(n − p).
+  const double correction =
+      out.blocks > p ? static_cast<double>(out.blocks) / (out.blocks - p) : 1.0;
+  const Eigen::MatrixXd Ainv = bread_inverse ? *bread_inverse
+                                             : Eigen::MatrixXd((J.transpose() * J).ldlt().solve(
+                                                   Eigen::MatrixXd::Identity(p, p)));
+  out.covariance = correction * Ainv * S * Ainv.transpose();
+  return out;
+}
+
+}  // namespace uuvplan::ident
