@@ -398,7 +398,9 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
                   [](const model::TrialEntry& e) { return e.has_start; });
   for (Dof dof : dofs) {
     const DofIdentification* nominal = result.nominal.Find(dof);
-    if (!nominal || nominal->theta.size() == 0 || nominal->status == IdentifyStatus::kFailed) {
+    // A standard model that is only non-physical is diagnosed: the extension is the remedy.
+    if (!nominal || nominal->theta.size() == 0 ||
+        (nominal->status == IdentifyStatus::kFailed && !nominal->failed_only_non_physical)) {
       result.not_diagnosed[dof] =
           "the identification of its standard model failed" +
           (nominal && !nominal->message.empty() ? " (" + nominal->message + ")" : std::string());

@@ -28,12 +28,14 @@ void KeepValuesBeforeDrop(const DofContext& c, const std::vector<ParameterEstima
 }
 
 // The DOF fails with `reason` (reasons add up, "; "-separated, in the message).
-void Fail(const std::string& reason, DofIdentification* r) {
+void Fail(const std::string& reason, DofIdentification* r, bool non_physical = false) {
   if (r->status == IdentifyStatus::kFailed && !r->message.empty()) {
     r->message += "; " + reason;
+    r->failed_only_non_physical = r->failed_only_non_physical && non_physical;
   } else {
     r->status = IdentifyStatus::kFailed;
     r->message = reason;
+    r->failed_only_non_physical = non_physical;
   }
 }
 
@@ -64,7 +66,7 @@ void CheckAdmissible(DofIdentification* r) {
             : "";
     r->unreliable.push_back(e.name);
     if (!std::isfinite(e.value) || !(outside <= kMargin * e.sigma)) {
-      Fail("non-physical fit: " + what + ", by more than 3σ" + why, r);
+      Fail("non-physical fit: " + what + ", by more than 3σ" + why, r, /*non_physical=*/true);
     } else {
       r->warnings.push_back(what + ", within 3σ of it: not to be trusted" + why);
     }

@@ -82,6 +82,10 @@ struct DofIdentification {
   model::Dof dof = model::Dof::kSurge;
   IdentifyStatus status = IdentifyStatus::kOk;
   std::string message;
+  /// Failed, and every reason is an estimate outside its admissible range: the standard model
+  /// fits the data only with non-physical values, i.e. it misses an effect — what `diagnose`
+  /// looks for (it refits within the ranges), so diagnosis still runs on such a DOF.
+  bool failed_only_non_physical = false;
   model::ModelStructure structure;
   std::vector<std::string> parameter_names;  ///< theta layout (model::DofModel)
   Eigen::VectorXd theta;                     ///< values used by the model (0 when dropped)
