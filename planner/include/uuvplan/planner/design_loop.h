@@ -259,6 +259,16 @@ struct LoopResult {
 LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const LoopOptions& options,
                    const std::function<void(const LoopIteration&)>& on_iteration = {});
 
+/// Designs alike to the planner's resolution: same DOF, kind and mappings, levels within 5%,
+/// duration within 10% (a re-planned leg differs by a solver tolerance, not by intent). The
+/// loop's repeat rule (LoopOptions::max_repeats) counts runs of alike designs.
+bool SameDesign(const model::TrialDesign& a, const model::TrialDesign& b);
+
+/// The largest number of runs of one design (SameDesign) that brought no new information
+/// (LoopIteration::new_information) in `iterations`, over every design. Issue #13: at most
+/// LoopOptions::max_repeats (2).
+int MostUninformativeRepeats(const std::vector<LoopIteration>& iterations);
+
 /// Pool time of trials run in this order: Σ durations + pause_s between consecutive trials.
 double PoolTime(const std::vector<model::TrialDesign>& designs, double pause_s);
 
