@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <iostream>
 #include <sstream>
 
 #include "uuvplan/model/parameter.h"
@@ -43,6 +45,27 @@ std::vector<EstimateCheck> InterestChecks(const model::Truth& truth,
   return out;
 }
 
+std::string IterationText(const model::Truth& truth, const planner::LoopIteration& it) {
+  const model::TrialDesign& d = it.trial.design;
+  std::ostringstream o;
+  o << "  #" << it.index << " " << d.id << " (" << it.source << ", " << d.mapping << ", force "
+    << Significant(d.force, 3) << ", offset " << Significant(d.offset, 3) << ", amplitude "
+    << Significant(d.amplitude, 3) << ", " << Significant(d.duration, 3) << " s)"
+    << (it.new_information ? "" : " no new information");
+  for (const auto& p : it.progress) {
+    if (p.dof != it.dof) continue;
+    for (const auto& q : p.interest) {
+      o << "\n      " << q.name << " = " << Significant(q.value, 4) << " ± "
+        << Significant(q.sigma, 3) << " (truth " << Significant(TruthOf(truth, p.dof, q.name), 4)
+        << ")" << (q.held ? " held" : "");
+    }
+    o << "\n      " << p.consistency.text;
+    for (const auto& why : p.doubts) o << "\n      doubt: " << why;
+  }
+  for (const auto& n : it.notes) o << "\n      note: " << n;
+  return o.str();
+}
+
 }  // namespace
 
 LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
@@ -59,7 +82,11 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
   c.hosted = verdict.hosted;
   c.verdict = verdict.sentence;
-  const planner::LoopResult r = planner::RunLoop(truth, pool, lo);
+  // UUVPLAN_VERBOSE=1: each trial, its DOF's estimates of interest and their trust.
+  const bool verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
+  const planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const auto& it) {
+    if (verbose) std::cout << IterationText(truth, it) << std::endl;
+  });
   c.status = r.status;
   c.message = r.message;
   c.trials = static_cast<int>(r.iterations.size());
