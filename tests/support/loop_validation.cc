@@ -59,6 +59,13 @@ std::string IterationText(const model::Truth& truth, const planner::LoopIteratio
         << Significant(q.sigma, 3) << " (truth " << Significant(TruthOf(truth, p.dof, q.name), 4)
         << ")" << (q.held ? " held" : "");
     }
+    if (const auto e = it.params.find(p.dof); e != it.params.end()) {
+      o << "\n      all:";
+      for (const auto& x : e->second) {
+        o << " " << x.name << " " << Significant(x.value, 4) << "±" << Significant(x.sigma, 2)
+          << "[" << static_cast<int>(x.state) << "]";
+      }
+    }
     o << "\n      " << p.consistency.text;
     for (const auto& why : p.doubts) o << "\n      doubt: " << why;
   }
