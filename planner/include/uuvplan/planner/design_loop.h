@@ -45,6 +45,19 @@ namespace uuvplan::planner {
 /// statistically insignificant.
 inline constexpr double kInsignificantPercent = 51.02;
 
+/// The loop's identification: every parameter of the structure kept
+/// (IdentifyOptions::prune_insignificant = false). Seed 000 §IV-D's model selection refits
+/// without the parameters it finds insignificant, and the σ of that refit are conditional on
+/// the dropped ones being exactly 0: on random vehicles a dropped bias or linear drag that is
+/// small but not zero moved m, the drag and η by 4–281 of their σ while the loop converged
+/// (docs/validation.md, "The loop on every vehicle"). The loop judges precision by σ, so it
+/// needs the σ of the full model (as the coverage figures of identification do).
+inline ident::IdentifyOptions LoopIdentifyOptions() {
+  ident::IdentifyOptions o;
+  o.prune_insignificant = false;
+  return o;
+}
+
 struct DesignLoopOptions {
   /// DOFs to drive to the target, in this order (ties in the choice of the next DOF go to the
   /// first). Empty: NextStep takes the DOFs the campaign has fit trials of (every DOF the
@@ -72,7 +85,7 @@ struct DesignLoopOptions {
   double max_residual_lag1 = 0.8;
   ScheduleOptions schedule;  ///< the a priori schedule of each DOF (its `dofs` is ignored)
   NextTrialOptions next;     ///< the sequential design (its `schedule` is replaced by the above)
-  ident::IdentifyOptions identify;
+  ident::IdentifyOptions identify = LoopIdentifyOptions();
 
   bool IsValid(std::string* error) const;
 };
