@@ -110,6 +110,7 @@ void LoopTally::Add(const LoopCaseOutcome& c, int max_repeats) {
   ++cases;
   hosted += c.hosted ? 1 : 0;
   agree += c.agree ? 1 : 0;
+  (c.hosted ? hosted_agree : refused_agree) += c.agree ? 1 : 0;
   if (!c.agree) {
     failures.push_back(c.name + ": the verdict says " + (c.hosted ? "hosted" : "not hosted") +
                        " but the loop ended " + std::string(planner::LoopStatusName(c.status)));
@@ -156,7 +157,9 @@ std::string CaseLine(const LoopCaseOutcome& c) {
 std::string TallyText(const LoopTally& t) {
   std::ostringstream o;
   o << "cases " << t.cases << ", hosted " << t.hosted << ", verdict and loop agree " << t.agree
-    << "/" << t.cases << ", converged " << t.converged << "; parameters of interest within 3σ "
+    << "/" << t.cases << " (hosted and not infeasible " << t.hosted_agree << "/" << t.hosted
+    << ", not hosted and not converged " << t.refused_agree << "/" << t.cases - t.hosted
+    << "), converged " << t.converged << "; parameters of interest within 3σ "
     << t.within3 << "/" << t.interest;
   if (t.interest > 0) o << " (" << Significant(100.0 * t.within3 / t.interest, 3) << "%)";
   o << "; most runs of one design without new information " << t.most_repeats;

@@ -53,6 +53,8 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
 
 struct LoopTally {
   int cases = 0, hosted = 0, agree = 0, converged = 0;
+  int hosted_agree = 0;  ///< hosted pools whose loop did not end infeasible
+  int refused_agree = 0;  ///< pools not hosted whose RunLoop did not converge either
   int interest = 0, within3 = 0;  ///< over converged cases
   int most_repeats = 0;
   std::vector<std::string> failures;  ///< every broken claim, one sentence each
