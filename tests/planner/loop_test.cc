@@ -317,6 +317,15 @@ TEST(PaperProcedureTest, EncodesSeedSectionIVD) {
   }
 }
 
+// ROMEO's pool shrunk to 5 × 5 × 5 m with a 1 m margin (3 m free each way).
+model::Pool FiveMetrePool() {
+  model::Pool small = RomeoPool();
+  small.name = "5 m";
+  small.length = small.width = small.depth = 5.0;
+  small.margin = 1.0;
+  return small;
+}
+
 // Issue #13: ROMEO surge in a 5 × 5 × 5 m pool (3 m of free length) once re-planned the same
 // 2.8 N leg 22 times. Now: a distinct status whose sentence names the binding limit (the pool,
 // checked by planning again in a pool with twice the free travel), and no design runs more
@@ -325,10 +334,7 @@ TEST(PaperProcedureTest, EncodesSeedSectionIVD) {
 // low speeds), which the loop no longer uses by default (LoopIdentifyOptions); it is kept here
 // to exercise the stop rule on the issue's own case. ~1 s.
 TEST(StopRulesTest, SmallPoolStopsStuckNamingThePool) {
-  model::Pool small = RomeoPool();
-  small.name = "5 m";
-  small.length = small.width = small.depth = 5.0;
-  small.margin = 1.0;
+  const model::Pool small = FiveMetrePool();
   LoopOptions o;
   o.step.dofs = {Dof::kSurge};
   o.step.identify.prune_insignificant = true;
@@ -362,10 +368,7 @@ TEST(StopRulesTest, SmallPoolStopsStuckNamingThePool) {
 // 306 on seed 1). RunLoop is run although the pool verdict does not host surge there (the
 // verdict judges over the a priori box; `loop` refuses before any trial, exit 1). ~1 s.
 TEST(StopRulesTest, SmallPoolConvergesWithinThreeSigmaOnTheFullModel) {
-  model::Pool small = RomeoPool();
-  small.name = "5 m";
-  small.length = small.width = small.depth = 5.0;
-  small.margin = 1.0;
+  const model::Pool small = FiveMetrePool();
   LoopOptions o;
   o.step.dofs = {Dof::kSurge};
   const model::Truth truth = RomeoTruth();
