@@ -249,26 +249,6 @@ LoopIteration RunIteration(internal::Decision d, const LoopOptions& options,
   return it;
 }
 
-// Designs alike to the planner's resolution: same kind and mappings, levels within 5%, duration
-// within 10% (a re-planned leg differs by a solver tolerance, not by intent).
-bool SameDesign(const model::TrialDesign& a, const model::TrialDesign& b) {
-  auto near = [](double x, double y, double rel) {
-    return std::abs(x - y) <= rel * std::max(std::abs(x), std::abs(y)) + 1e-9;
-  };
-  if (a.dof != b.dof || a.kind != b.kind || a.mapping != b.mapping ||
-      a.segments.size() != b.segments.size() || !near(a.duration, b.duration, 0.1)) {
-    return false;
-  }
-  for (std::size_t i = 0; i < a.segments.size(); ++i) {
-    if (a.segments[i].mapping != b.segments[i].mapping ||
-        !near(a.segments[i].force, b.segments[i].force, 0.05)) {
-      return false;
-    }
-  }
-  return near(a.force, b.force, 0.05) && near(a.offset, b.offset, 0.05) &&
-         near(a.amplitude, b.amplitude, 0.05) && near(a.omega, b.omega, 0.05);
-}
-
 // Issue #13: a design never runs again after `max_repeats` runs without new information; its
 // DOF is stuck (with the limit that keeps the planner on that design). True when it stopped.
 bool StopRepeat(internal::Planner& planner, const internal::Decision& d, const LoopResult& result,
@@ -276,9 +256,7 @@ bool StopRepeat(internal::Planner& planner, const internal::Decision& d, const L
                 internal::LoopMemory* memory) {
   int idle = 0;
   for (const auto& it : result.iterations) {
-    if (it.dof == d.dof && !it.new_information && SameDesign(it.trial.design, d.trial.design)) {
-      ++idle;
-    }
+    if (!it.new_information && SameDesign(it.trial.design, d.trial.design)) ++idle;
   }
   if (idle < options.max_repeats) return false;
   const DofProgress* p = ProgressOf(d.progress, d.dof);
@@ -376,6 +354,37 @@ NextStepResult NextStep(const model::Campaign& campaign, const model::Pool& pool
   r.notes = std::move(d.notes);
   for (const auto& n : r.estimates.notes) r.notes.push_back("identify: " + n);
   return r;
+}
+
+bool SameDesign(const model::TrialDesign& a, const model::TrialDesign& b) {
+  auto near = [](double x, double y, double rel) {
+    return std::abs(x - y) <= rel * std::max(std::abs(x), std::abs(y)) + 1e-9;
+  };
+  if (a.dof != b.dof || a.kind != b.kind || a.mapping != b.mapping ||
+      a.segments.size() != b.segments.size() || !near(a.duration, b.duration, 0.1)) {
+    return false;
+  }
+  for (std::size_t i = 0; i < a.segments.size(); ++i) {
+    if (a.segments[i].mapping != b.segments[i].mapping ||
+        !near(a.segments[i].force, b.segments[i].force, 0.05)) {
+      return false;
+    }
+  }
+  return near(a.force, b.force, 0.05) && near(a.offset, b.offset, 0.05) &&
+         near(a.amplitude, b.amplitude, 0.05) && near(a.omega, b.omega, 0.05);
+}
+
+int MostUninformativeRepeats(const std::vector<LoopIteration>& iterations) {
+  int most = 0;
+  for (const auto& it : iterations) {
+    if (it.new_information) continue;
+    int runs = 0;
+    for (const auto& other : iterations) {
+      if (!other.new_information && SameDesign(other.trial.design, it.trial.design)) ++runs;
+    }
+    most = std::max(most, runs);
+  }
+  return most;
 }
 
 double PoolTime(const std::vector<model::TrialDesign>& designs, double pause_s) {

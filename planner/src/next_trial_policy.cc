@@ -542,7 +542,17 @@ Decision Decide(Planner& planner, const model::Campaign& campaign, const std::ve
     Decision tried = d;
     if (!PlanCandidate(planner, campaign, *p, estimates.Find(p->dof), &tried, &gain, &why)) {
       d.notes = tried.notes;
-      AddStop(p->dof, NextStatus::kInfeasible, why, &d);
+      // Infeasible is the pool verdict's answer: no trial for a DOF that has none yet. A DOF
+      // whose trials ran in this pool and that no further trial fits (at its estimates ± 2σ)
+      // is held by a limit of this pool: stuck, with what stops the next trial.
+      if (p->trials > 0) {
+        AddStop(p->dof, NextStatus::kStuck,
+                why + " (after " + std::to_string(p->trials) + " trial(s) of " + name +
+                    " in this pool; a larger pool or a wider thrust range lifts it)",
+                &d);
+      } else {
+        AddStop(p->dof, NextStatus::kInfeasible, why, &d);
+      }
       continue;
     }
     tried.candidates.push_back(gain);

@@ -131,8 +131,11 @@ int RunNext(const NextCliOptions& o) {
   planner::ScheduleOptions so = options.schedule;
   for (const auto& p : r.progress) so.dofs.push_back(p.dof);
   const planner::PoolVerdict verdict = planner::JudgePool(campaign.vehicle, pool, so);
-  const int exit_status =
-      r.status == planner::NextStatus::kTrial ? VerdictExit(verdict) : ExitStatus(r.status);
+  // A DOF that ran trials here and gets no further one is stuck (5) in a pool the verdict
+  // hosts; in one it does not host, the verdict's answer stands (1), as before any trial.
+  const bool verdict_answers = r.status == planner::NextStatus::kTrial ||
+                               (r.status == planner::NextStatus::kStuck && !verdict.hosted);
+  const int exit_status = verdict_answers ? VerdictExit(verdict) : ExitStatus(r.status);
   std::ostream& out = ReportStream(o.json);
   PrintNextStep(r, campaign, pool, o, out);
   PrintVerdict(verdict, pool, out);

@@ -317,17 +317,27 @@ TEST(PaperProcedureTest, EncodesSeedSectionIVD) {
   }
 }
 
-// Issue #13: ROMEO surge in a 5 × 5 × 5 m pool (3 m of free length) once re-planned the same
-// 2.8 N leg 22 times. Now: a distinct status whose sentence names the binding limit (the pool,
-// checked by planning again in a pool with twice the free travel), and no design runs more
-// than twice without new information. ~1 s.
-TEST(StopRulesTest, SmallPoolStopsStuckNamingThePool) {
+// ROMEO's pool shrunk to 5 × 5 × 5 m with a 1 m margin (3 m free each way).
+model::Pool FiveMetrePool() {
   model::Pool small = RomeoPool();
   small.name = "5 m";
   small.length = small.width = small.depth = 5.0;
   small.margin = 1.0;
+  return small;
+}
+
+// Issue #13: ROMEO surge in a 5 × 5 × 5 m pool (3 m of free length) once re-planned the same
+// 2.8 N leg 22 times. Now: a distinct status whose sentence names the binding limit (the pool,
+// checked by planning again in a pool with twice the free travel), and no design runs more
+// than twice without new information. The issue's case ran with seed 000's model selection in
+// the identification (k dropped as insignificant, kq alone explaining the drag at the pool's
+// low speeds), which the loop no longer uses by default (LoopIdentifyOptions); it is kept here
+// to exercise the stop rule on the issue's own case. ~1 s.
+TEST(StopRulesTest, SmallPoolStopsStuckNamingThePool) {
+  const model::Pool small = FiveMetrePool();
   LoopOptions o;
   o.step.dofs = {Dof::kSurge};
+  o.step.identify.prune_insignificant = true;
   const LoopResult r = RunLoop(RomeoTruth(), small, o);
   ASSERT_EQ(r.status, LoopStatus::kStuck) << r.message;
   EXPECT_FALSE(r.converged);
@@ -349,6 +359,26 @@ TEST(StopRulesTest, SmallPoolStopsStuckNamingThePool) {
       EXPECT_FALSE(r.iterations[i].sigma.empty()) << "predicted vs achieved σ reported";
       EXPECT_FALSE(r.iterations[i].candidates.empty()) << "the candidate's gain reported";
     }
+  }
+}
+
+// The same 5 m pool with the loop's identification of the full model (no model selection,
+// LoopIdentifyOptions): the trials that were stuck on kq determine k and kq together, and the
+// loop converges on estimates within 3σ of the truth (m 902 ± 9.7 kg for 890, kq 295 ± 14 for
+// 306 on seed 1). RunLoop is run although the pool verdict does not host surge there (the
+// verdict judges over the a priori box; `loop` refuses before any trial, exit 1). ~1 s.
+TEST(StopRulesTest, SmallPoolConvergesWithinThreeSigmaOnTheFullModel) {
+  const model::Pool small = FiveMetrePool();
+  LoopOptions o;
+  o.step.dofs = {Dof::kSurge};
+  const model::Truth truth = RomeoTruth();
+  const LoopResult r = RunLoop(truth, small, o);
+  ASSERT_EQ(r.status, LoopStatus::kConverged) << r.message;
+  const DofProgress* p = Find(r.progress, Dof::kSurge);
+  ASSERT_NE(p, nullptr);
+  for (const auto& q : p->interest) {
+    const double truth_value = truth.dofs.at(Dof::kSurge).params.at(q.name);
+    EXPECT_LE(std::abs(q.value - truth_value), 3.0 * q.sigma) << q.name;  // issue #13: 3σ
   }
 }
 

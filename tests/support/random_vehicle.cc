@@ -6,6 +6,11 @@
 #include <random>
 #include <string>
 
+#include "uuvplan/model/mapping.h"
+#include "uuvplan/model/parameter.h"
+#include "uuvplan/model/prior.h"
+#include "uuvplan/model/util/seed.h"
+
 namespace uuvplan::testing {
 namespace {
 
@@ -71,6 +76,30 @@ RandomCase MakeRandomCase(std::uint64_t seed, int max_dofs) {
   c.pool.depth = Uniform(rng, 2.0, 8.0);
   c.pool.margin = std::min(0.5 * v.size[0], 0.45 * std::min(c.pool.width, c.pool.depth));
   return c;
+}
+
+model::Truth MakeRandomTruth(const RandomCase& c, std::uint64_t seed) {
+  // A stream apart from MakeRandomCase's (which seeds with `seed` itself).
+  std::mt19937_64 rng(model::StreamSeed(seed, 0x7275746852ULL));
+  model::Truth truth;
+  truth.vehicle = c.vehicle;
+  for (Dof dof : c.dofs) {
+    model::DofTruth& t = truth.dofs[dof];
+    const auto mb = c.vehicle.InertiaBounds(dof);
+    const model::APrioriDrag drag = model::DragOf(c.vehicle, dof, 0.5);
+    const double factor = std::exp(Uniform(rng, std::log(0.5), std::log(2.0)));
+    t.params[model::param::kMass] = Uniform(rng, mb[0], mb[1]);
+    t.params[model::param::kLinearDrag] = factor * drag.drag.k;
+    t.params[model::param::kQuadraticDrag] = factor * drag.drag.kq;
+    t.params[model::param::kBias] = Uniform(rng, -0.02, 0.02) * drag.thrust;
+    for (int i : c.vehicle.MappingsOf(dof)) {
+      const model::ThrustMapping& m = c.vehicle.mappings[i];
+      for (model::Direction d : {model::Direction::kPos, model::Direction::kNeg}) {
+        if (!m.IsOpenWater(d)) t.params[model::EtaName(m.name, d)] = Uniform(rng, 0.55, 0.95);
+      }
+    }
+  }
+  return truth;
 }
 
 }  // namespace uuvplan::testing

@@ -45,6 +45,19 @@ namespace uuvplan::planner {
 /// statistically insignificant.
 inline constexpr double kInsignificantPercent = 51.02;
 
+/// The loop's identification: every parameter of the structure kept
+/// (IdentifyOptions::prune_insignificant = false). Seed 000 §IV-D's model selection refits
+/// without the parameters it finds insignificant, and the σ of that refit are conditional on
+/// the dropped ones being exactly 0: on random vehicles a dropped bias or linear drag that is
+/// small but not zero moved m, the drag and η by 4–281 of their σ while the loop converged
+/// (docs/validation.md, "The loop on every vehicle"). The loop judges precision by σ, so it
+/// needs the σ of the full model (as the coverage figures of identification do).
+inline ident::IdentifyOptions LoopIdentifyOptions() {
+  ident::IdentifyOptions o;
+  o.prune_insignificant = false;
+  return o;
+}
+
 struct DesignLoopOptions {
   /// DOFs to drive to the target, in this order (ties in the choice of the next DOF go to the
   /// first). Empty: NextStep takes the DOFs the campaign has fit trials of (every DOF the
@@ -72,7 +85,7 @@ struct DesignLoopOptions {
   double max_residual_lag1 = 0.8;
   ScheduleOptions schedule;  ///< the a priori schedule of each DOF (its `dofs` is ignored)
   NextTrialOptions next;     ///< the sequential design (its `schedule` is replaced by the above)
-  ident::IdentifyOptions identify;
+  ident::IdentifyOptions identify = LoopIdentifyOptions();
 
   bool IsValid(std::string* error) const;
 };
@@ -258,6 +271,16 @@ struct LoopResult {
 /// options or a DOF the truth or the vehicle cannot run.
 LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const LoopOptions& options,
                    const std::function<void(const LoopIteration&)>& on_iteration = {});
+
+/// Designs alike to the planner's resolution: same DOF, kind and mappings, levels within 5%,
+/// duration within 10% (a re-planned leg differs by a solver tolerance, not by intent). The
+/// loop's repeat rule (LoopOptions::max_repeats) counts runs of alike designs.
+bool SameDesign(const model::TrialDesign& a, const model::TrialDesign& b);
+
+/// The largest number of runs of one design (SameDesign) that brought no new information
+/// (LoopIteration::new_information) in `iterations`, over every design. Issue #13: at most
+/// LoopOptions::max_repeats (2).
+int MostUninformativeRepeats(const std::vector<LoopIteration>& iterations);
 
 /// Pool time of trials run in this order: Σ durations + pause_s between consecutive trials.
 double PoolTime(const std::vector<model::TrialDesign>& designs, double pause_s);

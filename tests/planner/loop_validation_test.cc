@@ -1,0 +1,76 @@
+// The loop on every vehicle (issue #13), CI subset of tests/validation/loop_validation.cc
+// (docs/validation.md "The loop on every vehicle"): URIS in its own pool and random vehicles 1,
+// 2 and 4 (tests/support/random_vehicle.h, two DOFs each). Seed 4 is a hosted pool whose loop
+// used to end "infeasible" after three heave trials (no further trial fitting at the
+// estimates): a hosted pool must never end infeasible.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/loop_validation.h"
+#include "support/random_vehicle.h"
+#include "uuvplan/io/pool_yaml.h"
+#include "uuvplan/io/truth_yaml.h"
+
+namespace uuvplan::testing {
+namespace {
+
+std::string CaseFile(const std::string& c, const std::string& file) {
+  return std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + c + "/" + file;
+}
+
+// The claims of issue #13 on one case: the verdict and the loop agree; a converged loop has
+// every final parameter of interest within 3σ of the truth (on this subset all are: the 95% of
+// the issue is over the full-size run); otherwise a non-zero status with its reason; no design
+// runs more than LoopOptions::max_repeats times without new information.
+void CheckCase(const LoopCaseOutcome& c) {
+  SCOPED_TRACE(CaseLine(c));
+  EXPECT_TRUE(c.agree);
+  if (c.status == planner::LoopStatus::kConverged) {
+    EXPECT_FALSE(c.interest.empty());
+    for (const auto& e : c.interest) EXPECT_TRUE(e.within3) << e.name;
+  } else {
+    EXPECT_FALSE(c.message.empty());
+  }
+  EXPECT_LE(c.most_repeats, planner::LoopOptions{}.max_repeats);
+}
+
+TEST(LoopValidation, Uris) {
+  const LoopCaseOutcome c =
+      RunLoopCase("uris", io::ReadTruth(CaseFile("uris", "truth.yaml")),
+                  io::ReadPool(CaseFile("uris", "pool.yaml")), 1);
+  CheckCase(c);
+  EXPECT_TRUE(c.hosted);
+  EXPECT_EQ(c.status, planner::LoopStatus::kConverged);  // docs/validation.md: 9 trials
+}
+
+TEST(LoopValidation, RandomVehicles) {
+  for (std::uint64_t seed : {1, 2, 4}) {
+    const RandomCase rc = MakeRandomCase(seed, 2);
+    CheckCase(RunLoopCase(rc.vehicle.name, MakeRandomTruth(rc, seed), rc.pool, seed));
+  }
+}
+
+TEST(LoopValidation, HostedPoolThatNoFurtherTrialFitsIsStuckNotInfeasible) {
+  const RandomCase rc = MakeRandomCase(4, 2);
+  const LoopCaseOutcome c = RunLoopCase(rc.vehicle.name, MakeRandomTruth(rc, 4), rc.pool, 4);
+  ASSERT_TRUE(c.hosted) << c.verdict;
+  EXPECT_EQ(c.status, planner::LoopStatus::kStuck) << c.message;
+}
+
+TEST(LoopValidation, RandomTruthIsSeededAndInsideThePhysicalRanges) {
+  const RandomCase rc = MakeRandomCase(7, 4);
+  const model::Truth a = MakeRandomTruth(rc, 7), b = MakeRandomTruth(rc, 7);
+  ASSERT_EQ(a.dofs.size(), rc.dofs.size());
+  for (const auto& [dof, t] : a.dofs) {
+    EXPECT_EQ(t.params, b.dofs.at(dof).params);
+    const auto mb = rc.vehicle.InertiaBounds(dof);
+    EXPECT_GE(t.params.at("m"), mb[0]);
+    EXPECT_LE(t.params.at("m"), mb[1]);
+    EXPECT_GT(t.params.at("k"), 0.0);
+    EXPECT_GT(t.params.at("kq"), 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace uuvplan::testing

@@ -1,0 +1,170 @@
+// The loop's validation tallies (loop_validation.h).
+#include "support/loop_validation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+#include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/text.h"
+#include "uuvplan/planner/pool_verdict.h"
+
+namespace uuvplan::testing {
+namespace {
+
+using model::Significant;
+
+double TruthOf(const model::Truth& truth, model::Dof dof, const std::string& name) {
+  const auto d = truth.dofs.find(dof);
+  if (d != truth.dofs.end()) {
+    if (const auto p = d->second.params.find(name); p != d->second.params.end()) return p->second;
+  }
+  return model::NullValue(name);
+}
+
+std::vector<EstimateCheck> InterestChecks(const model::Truth& truth,
+                                          const std::vector<planner::DofProgress>& progress) {
+  std::vector<EstimateCheck> out;
+  for (const auto& p : progress) {
+    for (const auto& q : p.interest) {
+      if (!q.estimated || q.held) continue;
+      EstimateCheck c;
+      c.dof = p.dof;
+      c.name = q.name;
+      c.value = q.value;
+      c.sigma = q.sigma;
+      c.truth = TruthOf(truth, p.dof, q.name);
+      c.z = (c.value - c.truth) / c.sigma;
+      c.within3 = std::abs(c.z) <= 3.0;  // issue #13's criterion
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+std::string IterationText(const model::Truth& truth, const planner::LoopIteration& it) {
+  const model::TrialDesign& d = it.trial.design;
+  std::ostringstream o;
+  o << "  #" << it.index << " " << d.id << " (" << it.source << ", " << d.mapping << ", force "
+    << Significant(d.force, 3) << ", offset " << Significant(d.offset, 3) << ", amplitude "
+    << Significant(d.amplitude, 3) << ", " << Significant(d.duration, 3) << " s)"
+    << (it.new_information ? "" : " no new information");
+  for (const auto& p : it.progress) {
+    if (p.dof != it.dof) continue;
+    for (const auto& q : p.interest) {
+      o << "\n      " << q.name << " = " << Significant(q.value, 4) << " ± "
+        << Significant(q.sigma, 3) << " (truth " << Significant(TruthOf(truth, p.dof, q.name), 4)
+        << ")" << (q.held ? " held" : "");
+    }
+    if (const auto e = it.params.find(p.dof); e != it.params.end()) {
+      o << "\n      all:";
+      for (const auto& x : e->second) {
+        o << " " << x.name << " " << Significant(x.value, 4) << "±" << Significant(x.sigma, 2)
+          << "[" << static_cast<int>(x.state) << "]";
+      }
+    }
+    o << "\n      " << p.consistency.text;
+    for (const auto& why : p.doubts) o << "\n      doubt: " << why;
+  }
+  for (const auto& n : it.notes) o << "\n      note: " << n;
+  return o.str();
+}
+
+}  // namespace
+
+LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
+                            const model::Pool& pool, std::uint64_t seed) {
+  const auto t0 = std::chrono::steady_clock::now();
+  LoopCaseOutcome c;
+  c.name = name;
+  for (const auto& [dof, params] : truth.dofs) c.dofs.push_back(dof);
+  planner::LoopOptions lo;
+  lo.seed = seed;
+  lo.step.dofs = c.dofs;
+  planner::ScheduleOptions so = lo.step.schedule;
+  so.dofs = c.dofs;
+  const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
+  c.hosted = verdict.hosted;
+  c.verdict = verdict.sentence;
+  // UUVPLAN_VERBOSE=1: each trial, its DOF's estimates of interest and their trust.
+  const bool verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
+  const planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const auto& it) {
+    if (verbose) std::cout << IterationText(truth, it) << std::endl;
+  });
+  c.status = r.status;
+  c.message = r.message;
+  c.trials = static_cast<int>(r.iterations.size());
+  c.pool_time_s = r.pool_time;
+  c.agree = c.hosted ? r.status != planner::LoopStatus::kInfeasible
+                     : r.status != planner::LoopStatus::kConverged;
+  if (r.converged) c.interest = InterestChecks(truth, r.progress);
+  c.most_repeats = planner::MostUninformativeRepeats(r.iterations);
+  c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return c;
+}
+
+void LoopTally::Add(const LoopCaseOutcome& c, int max_repeats) {
+  ++cases;
+  hosted += c.hosted ? 1 : 0;
+  agree += c.agree ? 1 : 0;
+  (c.hosted ? hosted_agree : refused_agree) += c.agree ? 1 : 0;
+  if (!c.agree) {
+    failures.push_back(c.name + ": the verdict says " + (c.hosted ? "hosted" : "not hosted") +
+                       " but the loop ended " + std::string(planner::LoopStatusName(c.status)));
+  }
+  if (c.status == planner::LoopStatus::kConverged) {
+    ++converged;
+    for (const auto& e : c.interest) {
+      ++interest;
+      within3 += e.within3 ? 1 : 0;
+    }
+  }
+  most_repeats = std::max(most_repeats, c.most_repeats);
+  if (c.most_repeats > max_repeats) {
+    failures.push_back(c.name + ": a design ran " + std::to_string(c.most_repeats) +
+                       " times without new information");
+  }
+}
+
+bool LoopTally::Pass() const {
+  // Issue #13: ≥ 95% of the parameters of converged vehicles within 3σ.
+  const bool coverage = interest == 0 || within3 >= 0.95 * interest;
+  return failures.empty() && coverage;
+}
+
+std::string CaseLine(const LoopCaseOutcome& c) {
+  std::ostringstream o;
+  o << c.name << " [";
+  for (std::size_t i = 0; i < c.dofs.size(); ++i) {
+    o << (i ? " " : "") << model::DofName(c.dofs[i]);
+  }
+  o << "]: verdict " << (c.hosted ? "hosted" : "NOT hosted") << ", loop "
+    << planner::LoopStatusName(c.status) << " after " << c.trials << " trial(s), pool time "
+    << Significant(c.pool_time_s / 60.0, 3) << " min, wall " << Significant(c.wall_s, 3)
+    << " s, most uninformative repeats " << c.most_repeats << (c.agree ? "" : "  DISAGREE");
+  for (const auto& e : c.interest) {
+    o << "\n    " << model::DofName(e.dof) << " " << e.name << " = " << Significant(e.value, 4)
+      << " ± " << Significant(e.sigma, 3) << " (truth " << Significant(e.truth, 4) << ", "
+      << Significant(e.z, 3) << "σ)" << (e.within3 ? "" : "  > 3σ");
+  }
+  if (c.status != planner::LoopStatus::kConverged) o << "\n    reason: " << c.message;
+  return o.str();
+}
+
+std::string TallyText(const LoopTally& t) {
+  std::ostringstream o;
+  o << "cases " << t.cases << ", hosted " << t.hosted << ", verdict and loop agree " << t.agree
+    << "/" << t.cases << " (hosted and not infeasible " << t.hosted_agree << "/" << t.hosted
+    << ", not hosted and not converged " << t.refused_agree << "/" << t.cases - t.hosted
+    << "), converged " << t.converged << "; parameters of interest within 3σ "
+    << t.within3 << "/" << t.interest;
+  if (t.interest > 0) o << " (" << Significant(100.0 * t.within3 / t.interest, 3) << "%)";
+  o << "; most runs of one design without new information " << t.most_repeats;
+  for (const auto& f : t.failures) o << "\n  FAIL " << f;
+  return o.str();
+}
+
+}  // namespace uuvplan::testing

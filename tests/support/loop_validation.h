@@ -1,0 +1,71 @@
+// The loop's validation (issue #13, docs/validation.md "The loop on every vehicle"): one case
+// (a truth and a pool) through the pool verdict and the loop, and the tallies over cases that
+// the full-size program (tests/validation/loop_validation.cc) prints and the CI subset
+// (tests/planner/loop_validation_test.cc) asserts:
+//   - feasibility: JudgePool's verdict against the loop's end (a hosted pool never ends
+//     infeasible; a pool not hosted is refused by `loop` with exit 1 before any trial, and
+//     RunLoop itself, run anyway, must not converge there);
+//   - on converged cases, each final estimate of a parameter of interest within 3σ of the truth
+//     (|θ̂ − θ| ≤ 3σ; required ≥ 95% of them over all cases);
+//   - the stop reason of the others; the most runs of one design without new information
+//     (required ≤ LoopOptions::max_repeats = 2).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "uuvplan/model/pool.h"
+#include "uuvplan/model/truth.h"
+#include "uuvplan/planner/design_loop.h"
+
+namespace uuvplan::testing {
+
+/// One final estimate against its truth.
+struct EstimateCheck {
+  model::Dof dof = model::Dof::kSurge;
+  std::string name;
+  double value = 0.0, sigma = 0.0, truth = 0.0;
+  double z = 0.0;  ///< (value − truth)/σ
+  bool within3 = false;
+};
+
+struct LoopCaseOutcome {
+  std::string name;
+  std::vector<model::Dof> dofs;
+  bool hosted = false;  ///< JudgePool's verdict on the loop's DOFs
+  std::string verdict;  ///< its sentence
+  planner::LoopStatus status = planner::LoopStatus::kInfeasible;  ///< RunLoop's end
+  std::string message;
+  int trials = 0;
+  double pool_time_s = 0.0;
+  double wall_s = 0.0;
+  /// hosted ⇒ not infeasible; not hosted ⇒ not converged (the `loop` command exits 1 before
+  /// any trial there, RunLoop must not claim the contrary).
+  bool agree = false;
+  std::vector<EstimateCheck> interest;  ///< final parameters of interest (estimated, not held)
+  int most_repeats = 0;                 ///< planner::MostUninformativeRepeats
+};
+
+/// Runs the verdict and the loop (seed `seed`, defaults otherwise) on `truth` in `pool`.
+LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
+                            const model::Pool& pool, std::uint64_t seed);
+
+struct LoopTally {
+  int cases = 0, hosted = 0, agree = 0, converged = 0;
+  int hosted_agree = 0;  ///< hosted pools whose loop did not end infeasible
+  int refused_agree = 0;  ///< pools not hosted whose RunLoop did not converge either
+  int interest = 0, within3 = 0;  ///< over converged cases
+  int most_repeats = 0;
+  std::vector<std::string> failures;  ///< every broken claim, one sentence each
+
+  void Add(const LoopCaseOutcome& c, int max_repeats);
+  /// Every claim holds: all agree, ≥ 95% within 3σ, repeats ≤ max_repeats (checked in Add).
+  bool Pass() const;
+};
+
+/// One line per case and the tally, units on every number.
+std::string CaseLine(const LoopCaseOutcome& c);
+std::string TallyText(const LoopTally& t);
+
+}  // namespace uuvplan::testing
