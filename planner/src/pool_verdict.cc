@@ -256,6 +256,15 @@ std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& p
   if (rotation) r << " tether " << Fmt(q.turns, 4) << " turns;";
   r << (q.exists ? " the rest as this pool" : " but some DOF is limited by what no pool size lifts");
   out.push_back(r.str());
+  if (!v.hosted) {
+    // The verdict is robust (docs/planning.md): every trial must hold for every vehicle of the
+    // a priori box. A sequential loop designs at its estimates instead, so it may get further.
+    out.push_back(
+        "  assumption: judged over the whole a priori box (the vehicle file's inertia bounds and "
+        "drag prior); a vehicle away from the box's worst corner may still be identified here by "
+        "running the trials that fit and re-planning with `next`, but that cannot be promised "
+        "before the first estimates");
+  }
   return out;
 }
 
