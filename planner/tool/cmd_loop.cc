@@ -22,6 +22,7 @@
 #include "loop_report.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/io/pool_verdict_json.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
@@ -196,6 +197,15 @@ int RunLoopCommand(const LoopCliOptions& o) {
   const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
   if (!verdict.hosted) {
     PrintVerdict(verdict, pool, out);
+    if (!o.json.empty()) {
+      WriteJson(o.json, {{"iterations", json::array()},
+                         {"converged", false},
+                         {"status", std::string(planner::LoopStatusName(
+                                        planner::LoopStatus::kInfeasible))},
+                         {"exit_status", VerdictExit(verdict)},
+                         {"message", verdict.sentence},
+                         {"verdict", io::PoolVerdictJson(verdict, pool)}});
+    }
     return VerdictExit(verdict);
   }
   const planner::LoopResult r = planner::RunLoop(

@@ -282,11 +282,20 @@ TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
   EXPECT_EQ(run("schedule " + v + p + " --dof surge --json " + plan, "a.txt", &a), 1);
   EXPECT_EQ(run("check-pool " + v + p + " --dof surge", "b.txt", &b), 1);
   EXPECT_EQ(run("check-pool " + v + p + " --dof surge --plan " + plan, "c.txt", &c), 1);
-  EXPECT_EQ(run("loop --truth " + testing::RomeoPath("truth.yaml") + p + " --dof surge", "d.txt",
-                &d), 1);
+  const std::string loop_json = (dir / "loop.json").string();
+  EXPECT_EQ(run("loop --truth " + testing::RomeoPath("truth.yaml") + p + " --dof surge --json " +
+                    loop_json,
+                "d.txt", &d),
+            1);
   for (const std::string* t : {&a, &b, &c, &d}) {
     EXPECT_NE(t->find(sentence), std::string::npos) << *t;
   }
+  // The refused loop still writes its JSON: the verdict, status and exit status.
+  std::ifstream in(loop_json);
+  std::string e((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(e.find("\"status\": \"infeasible\""), std::string::npos) << e;
+  EXPECT_NE(e.find("\"exit_status\": 1"), std::string::npos) << e;
+  EXPECT_NE(e.find(sentence), std::string::npos) << e;
   fs::remove_all(dir);
 }
 
