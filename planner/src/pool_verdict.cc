@@ -160,14 +160,21 @@ std::string_view PoolLimitName(PoolLimit limit) { return kLimitNames.Name(limit)
 PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
                       const ScheduleOptions& options, const ScheduleResult& own,
                       const Schedule* plan, const VerdictOptions& vo) {
+  if (plan == nullptr) return JudgePoolOnChecks(vehicle, pool, options, own, nullptr, vo);
+  PoolCheckOptions pco;
+  pco.schedule = options;
+  pco.plan_alternative = false;
+  const std::vector<TrialPoolCheck> checks = CheckPool(vehicle, pool, *plan, pco).trials;
+  return JudgePoolOnChecks(vehicle, pool, options, own, &checks, vo);
+}
+
+PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& pool,
+                              const ScheduleOptions& options, const ScheduleResult& own,
+                              const std::vector<TrialPoolCheck>* plan_checks,
+                              const VerdictOptions& vo) {
   PoolVerdict out;
-  out.plan_given = plan != nullptr;
-  if (plan != nullptr) {
-    PoolCheckOptions pco;
-    pco.schedule = options;
-    pco.plan_alternative = false;
-    out.plan_checks = CheckPool(vehicle, pool, *plan, pco).trials;
-  }
+  out.plan_given = plan_checks != nullptr;
+  if (plan_checks != nullptr) out.plan_checks = *plan_checks;
   out.hosted = !own.dofs.empty();
   for (const auto& p : own.dofs) {
     DofVerdict v = JudgeOwn(&p, p.dof, pool);

@@ -133,16 +133,12 @@ int RunCheckPool(const CheckPoolCliOptions& o) {
   const model::Pool pool = io::ReadPool(o.pool);
   planner::PoolCheckOptions check = o.check;
   check.schedule.dofs = ParseDofFlags(o.dofs);
-  for (const model::Dof dof : check.schedule.dofs) {
-    if (vehicle.MappingsOf(dof).empty() || !vehicle.sensors.count(dof)) {
-      throw model::InputError(o.vehicle, "--dof " + std::string(model::DofName(dof)) +
-                                             ": the vehicle has no mapping or no sensor on it");
-    }
-  }
+  CheckDofsPlannable(check.schedule.dofs, vehicle, o.vehicle);
   const TrialsToCheck checked = ChooseTrials(o, vehicle, pool, check.schedule);
   const planner::PoolCheckResult r = planner::CheckPool(vehicle, pool, checked.plan, check);
-  const planner::PoolVerdict verdict = planner::JudgePool(
-      vehicle, pool, check.schedule, checked.own, checked.plan_given ? &checked.plan : nullptr);
+  // The plan's trials are checked once (CheckPool, same options) and judged on those checks.
+  const planner::PoolVerdict verdict = planner::JudgePoolOnChecks(
+      vehicle, pool, check.schedule, checked.own, checked.plan_given ? &r.trials : nullptr);
   std::ostream& out = ReportStream(o.json);
   out << "Pool " << pool.name << " for " << vehicle.name << ", "
       << (o.plan.empty() ? "the planner's own schedule" : "plan " + o.plan) << ": "

@@ -44,23 +44,6 @@ planner::Robustness ParseRobustness(const std::string& s) {
   throw model::InputError("--robust", "expected maximin, average or nominal, got '" + s + "'");
 }
 
-// Every DOF asked for must have a thrust mapping to drive it and a sensor to observe it.
-void CheckDofsPlannable(const std::vector<model::Dof>& dofs, const model::Vehicle& vehicle,
-                        const std::string& vehicle_path) {
-  for (const model::Dof dof : dofs) {
-    const std::string name(model::DofName(dof));
-    if (vehicle.MappingsOf(dof).empty()) {
-      throw model::InputError(vehicle_path + ": mappings",
-                              "--dof " + name + ": no thrust mapping acts on " + name);
-    }
-    auto s = vehicle.sensors.find(dof);
-    if (s == vehicle.sensors.end() || (!s->second.position && !s->second.velocity)) {
-      throw model::InputError(vehicle_path + ": sensors." + name,
-                              "--dof " + name + ": no position or velocity sensor on " + name);
-    }
-  }
-}
-
 std::string TravelText(const planner::PlannedTrial& t) {
   std::ostringstream travel;
   travel << std::fixed << std::setprecision(2) << "[" << t.travel[0] << ", " << t.travel[1]

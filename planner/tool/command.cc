@@ -43,6 +43,22 @@ std::string DirectoryName(const std::string& path) {
   return p.string();
 }
 
+void CheckDofsPlannable(const std::vector<model::Dof>& dofs, const model::Vehicle& vehicle,
+                        const std::string& vehicle_path) {
+  for (const model::Dof dof : dofs) {
+    const std::string name(model::DofName(dof));
+    if (vehicle.MappingsOf(dof).empty()) {
+      throw model::InputError(vehicle_path + ": mappings",
+                              "--dof " + name + ": no thrust mapping acts on " + name);
+    }
+    auto s = vehicle.sensors.find(dof);
+    if (s == vehicle.sensors.end() || (!s->second.position && !s->second.velocity)) {
+      throw model::InputError(vehicle_path + ": sensors." + name,
+                              "--dof " + name + ": no position or velocity sensor on " + name);
+    }
+  }
+}
+
 std::vector<model::Dof> ParseDofFlags(const std::vector<std::string>& names) {
   std::vector<model::Dof> dofs;
   for (const std::string& name : names) {

@@ -16,6 +16,7 @@
 
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/dof.h"
+#include "uuvplan/model/vehicle.h"
 
 namespace uuvplan::tool {
 
@@ -79,5 +80,10 @@ model::Campaign ReadCampaignForIdentification(const std::string& path, bool acce
 
 /// The DOFs named by repeated `--dof` flags; InputError naming the flag and the bad name.
 std::vector<model::Dof> ParseDofFlags(const std::vector<std::string>& names);
+
+/// Every DOF asked for must have a thrust mapping to drive it and a sensor to observe it;
+/// InputError naming the vehicle file's key otherwise.
+void CheckDofsPlannable(const std::vector<model::Dof>& dofs, const model::Vehicle& vehicle,
+                        const std::string& vehicle_path);
 
 }  // namespace uuvplan::tool

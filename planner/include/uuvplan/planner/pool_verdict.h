@@ -78,6 +78,13 @@ PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
                       const ScheduleOptions& options, const ScheduleResult& own,
                       const Schedule* plan, const VerdictOptions& verdict = {});
 
+/// The same for a given plan whose trials CheckPool has already checked in this pool
+/// (`plan_checks`, null: no plan), so that check-pool simulates each trial once.
+PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& pool,
+                              const ScheduleOptions& options, const ScheduleResult& own,
+                              const std::vector<TrialPoolCheck>* plan_checks,
+                              const VerdictOptions& verdict = {});
+
 /// The same, planning `own` first.
 PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
                       const ScheduleOptions& options, const Schedule* plan = nullptr,
