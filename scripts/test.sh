@@ -14,7 +14,7 @@ status=0
 ctest --output-on-failure -j"$(nproc)" 2>&1 | tee "$log" || status=$?
 echo "Slowest tests:"
 grep -E '^ *[0-9]+/[0-9]+ Test +#' "$log" | sed -E 's/^.*Test +#[0-9]+: ([^ ]+) .* ([0-9.]+) sec$/\2 s  \1/' |
-  sort -rn | head -10 | sed 's/^/  /'
+  sort -rn | awk 'NR <= 10 { print "  " $0 }'  # reads to the end: no SIGPIPE under pipefail
 echo "test.sh: build and tests took $((SECONDS - start)) s"
 grep -E 'tests passed|tests failed' "$log" | tail -1  # ctest's summary, last
 exit "$status"
