@@ -88,18 +88,28 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   so.dofs = c.dofs;
   const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
   c.hosted = verdict.hosted;
+  c.hostability = verdict.hostability;
   c.verdict = verdict.sentence;
+  planner::VerdictOptions at_truth;
+  at_truth.need_checks = -1;
+  at_truth.judge_points = false;
+  c.hosted_at_truth =
+      planner::JudgePool(planner::VehicleOfTruth(truth), pool, so, nullptr, at_truth).hosted;
   // UUVPLAN_VERBOSE=1: each trial, its DOF's estimates of interest and their trust.
   const bool verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
-  const planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const auto& it) {
+  planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const auto& it) {
     if (verbose) std::cout << IterationText(truth, it) << std::endl;
   });
+  planner::ReadLoopEnd(verdict, &r);  // as `uuvplan loop` reads it
   c.status = r.status;
   c.message = r.message;
   c.trials = static_cast<int>(r.iterations.size());
   c.pool_time_s = r.pool_time;
-  c.agree = c.hosted ? r.status != planner::LoopStatus::kInfeasible
-                     : r.status != planner::LoopStatus::kConverged;
+  switch (c.hostability) {
+    case planner::Hostability::kAll: c.agree = r.status != planner::LoopStatus::kInfeasible; break;
+    case planner::Hostability::kNone: c.agree = r.status != planner::LoopStatus::kConverged; break;
+    case planner::Hostability::kPart: c.agree = true; break;  // measured below
+  }
   if (r.converged) c.interest = InterestChecks(truth, r.progress);
   c.most_repeats = planner::MostUninformativeRepeats(r.iterations);
   c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -141,7 +151,8 @@ std::string CaseLine(const LoopCaseOutcome& c) {
   for (std::size_t i = 0; i < c.dofs.size(); ++i) {
     o << (i ? " " : "") << model::DofName(c.dofs[i]);
   }
-  o << "]: verdict " << (c.hosted ? "hosted" : "NOT hosted") << ", loop "
+  o << "]: verdict " << planner::HostabilityName(c.hostability) << ", at the truth "
+    << (c.hosted_at_truth ? "hosted" : "NOT hosted") << ", loop "
     << planner::LoopStatusName(c.status) << " after " << c.trials << " trial(s), pool time "
     << Significant(c.pool_time_s / 60.0, 3) << " min, wall " << Significant(c.wall_s, 3)
     << " s, most uninformative repeats " << c.most_repeats << (c.agree ? "" : "  DISAGREE");

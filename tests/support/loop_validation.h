@@ -18,6 +18,7 @@
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/truth.h"
 #include "uuvplan/planner/design_loop.h"
+#include "uuvplan/planner/pool_verdict.h"
 
 namespace uuvplan::testing {
 
@@ -33,8 +34,11 @@ struct EstimateCheck {
 struct LoopCaseOutcome {
   std::string name;
   std::vector<model::Dof> dofs;
-  bool hosted = false;  ///< JudgePool's verdict on the loop's DOFs
+  bool hosted = false;  ///< JudgePool's verdict on the loop's DOFs: hosted over the whole box
+  planner::Hostability hostability = planner::Hostability::kNone;  ///< all / part / none
   std::string verdict;  ///< its sentence
+  /// The verdict for the true vehicle itself (a degenerate box at the truth, box_points.h).
+  bool hosted_at_truth = false;
   planner::LoopStatus status = planner::LoopStatus::kInfeasible;  ///< RunLoop's end
   std::string message;
   int trials = 0;
