@@ -120,9 +120,20 @@ void LoopTally::Add(const LoopCaseOutcome& c, int max_repeats) {
   ++cases;
   hosted += c.hosted ? 1 : 0;
   agree += c.agree ? 1 : 0;
-  (c.hosted ? hosted_agree : refused_agree) += c.agree ? 1 : 0;
+  if (c.hostability == planner::Hostability::kAll) hosted_agree += c.agree ? 1 : 0;
+  if (c.hostability == planner::Hostability::kNone) {
+    ++none;
+    refused_agree += c.agree ? 1 : 0;
+  }
+  if (c.hostability == planner::Hostability::kPart) {
+    ++part;
+    part_converged += c.status == planner::LoopStatus::kConverged ? 1 : 0;
+    part_outside += c.status == planner::LoopStatus::kInfeasible ? 1 : 0;
+  }
+  ++at_truth[c.hosted_at_truth ? 1 : 0][c.status == planner::LoopStatus::kConverged ? 1 : 0];
   if (!c.agree) {
-    failures.push_back(c.name + ": the verdict says " + (c.hosted ? "hosted" : "not hosted") +
+    failures.push_back(c.name + ": the verdict says " +
+                       std::string(planner::HostabilityName(c.hostability)) +
                        " but the loop ended " + std::string(planner::LoopStatusName(c.status)));
   }
   if (c.status == planner::LoopStatus::kConverged) {
@@ -167,10 +178,15 @@ std::string CaseLine(const LoopCaseOutcome& c) {
 
 std::string TallyText(const LoopTally& t) {
   std::ostringstream o;
-  o << "cases " << t.cases << ", hosted " << t.hosted << ", verdict and loop agree " << t.agree
-    << "/" << t.cases << " (hosted and not infeasible " << t.hosted_agree << "/" << t.hosted
-    << ", not hosted and not converged " << t.refused_agree << "/" << t.cases - t.hosted
-    << "), converged " << t.converged << "; parameters of interest within 3σ "
+  o << "cases " << t.cases << ", verdict all/part/none " << t.hosted << "/" << t.part << "/"
+    << t.none << ", verdict and loop agree " << t.agree << "/" << t.cases
+    << " (all: not infeasible " << t.hosted_agree << "/" << t.hosted << "; part: converged "
+    << t.part_converged << ", infeasible outside the hostable part " << t.part_outside
+    << ", other " << t.part - t.part_converged - t.part_outside << "; none: not converged "
+    << t.refused_agree << "/" << t.none << "), converged " << t.converged
+    << "; verdict at the truth hosted: converged " << t.at_truth[1][1] << "/"
+    << t.at_truth[1][0] + t.at_truth[1][1] << ", not hosted: converged " << t.at_truth[0][1]
+    << "/" << t.at_truth[0][0] + t.at_truth[0][1] << "; parameters of interest within 3σ "
     << t.within3 << "/" << t.interest;
   if (t.interest > 0) o << " (" << Significant(100.0 * t.within3 / t.interest, 3) << "%)";
   o << "; most runs of one design without new information " << t.most_repeats;

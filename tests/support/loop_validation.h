@@ -58,7 +58,12 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
 struct LoopTally {
   int cases = 0, hosted = 0, agree = 0, converged = 0;
   int hosted_agree = 0;  ///< hosted pools whose loop did not end infeasible
-  int refused_agree = 0;  ///< pools not hosted whose RunLoop did not converge either
+  int refused_agree = 0;  ///< pools hosted for no point of the box whose RunLoop did not converge
+  int part = 0, none = 0;  ///< pools hosted for part of the box, for none
+  int part_converged = 0, part_outside = 0;  ///< part pools: converged, infeasible (outside)
+  /// The verdict at the true vehicle (box_points.h) against the loop: [hosted at the truth?]
+  /// [converged?] counts (the measurement behind choosing the three-valued verdict).
+  int at_truth[2][2] = {{0, 0}, {0, 0}};
   int interest = 0, within3 = 0;  ///< over converged cases
   int most_repeats = 0;
   std::vector<std::string> failures;  ///< every broken claim, one sentence each
