@@ -25,6 +25,9 @@ constexpr model::EnumNames<PoolLimit, 9> kLimitNames{{{
     {PoolLimit::kThrust, "thrust range"}, {PoolLimit::kNoReversal, "no reversal"},
     {PoolLimit::kDuration, "duration"}, {PoolLimit::kInformation, "information"}}}};
 
+constexpr model::EnumNames<Hostability, 3> kHostabilityNames{{{
+    {Hostability::kAll, "all"}, {Hostability::kPart, "part"}, {Hostability::kNone, "none"}}}};
+
 PoolLimit SpaceLimit(model::Dof dof) {
   switch (dof) {
     case model::Dof::kSurge: return PoolLimit::kLength;
@@ -81,6 +84,30 @@ void ConfirmNeed(const model::Vehicle& vehicle, const model::Pool& pool,
   }
 }
 
+// A DOF not hosted over the whole box, planned again at the box's centre and corners
+// (box_points.h): hosted at some, it is hosted for part of the box (the first trials decide).
+void JudgePoints(const model::Vehicle& vehicle, const model::Pool& pool,
+                 const ScheduleOptions& options, DofVerdict* v) {
+  ScheduleOptions so = options;
+  so.dofs = {v->dof};
+  for (const BoxPoint& point : VerdictPoints(vehicle, v->dof, options.planner.box)) {
+    const ScheduleResult r = PlanSchedule(VehicleAt(vehicle, v->dof, point), pool, so);
+    v->points.push_back({point, r.status == PlanStatus::kOk});
+    if (v->points.back().hosted) v->hostability = Hostability::kPart;
+  }
+}
+
+// The pool's hostability: all when every DOF is hosted, none when one is hosted nowhere.
+Hostability Overall(const std::vector<DofVerdict>& dofs) {
+  if (dofs.empty()) return Hostability::kNone;
+  Hostability h = Hostability::kAll;
+  for (const auto& d : dofs) {
+    if (d.hostability == Hostability::kNone) return Hostability::kNone;
+    if (d.hostability == Hostability::kPart) h = Hostability::kPart;
+  }
+  return h;
+}
+
 // The verdict of one DOF from the planner's own plan of it in this pool.
 DofVerdict JudgeOwn(const DofPlan* p, model::Dof dof, const model::Pool& pool) {
   DofVerdict v;
@@ -95,7 +122,10 @@ DofVerdict JudgeOwn(const DofPlan* p, model::Dof dof, const model::Pool& pool) {
   for (const auto& t : p->trials) v.extent = std::max(v.extent, t.travel[1] - t.travel[0]);
   v.hosted = p->status == DesignStatus::kOk && p->complete;
   v.need = v.extent;
-  if (v.hosted) return v;
+  if (v.hosted) {
+    v.hostability = Hostability::kAll;
+    return v;
+  }
   v.reason = p->message;
   const double free = pool.FreeTravel(dof);
   const double asked = std::isfinite(p->required_travel) ? p->required_travel : free;
@@ -113,19 +143,24 @@ DofVerdict JudgeOwn(const DofPlan* p, model::Dof dof, const model::Pool& pool) {
   return v;
 }
 
-// A given plan's trials of `v.dof`: each must pass DofContext::Check in this pool.
-void JudgePlanTrials(const std::vector<TrialPoolCheck>& checks, DofVerdict* v) {
+// A given plan's trials of `v.dof`: each must pass DofContext::Check in this pool. False when
+// one fails.
+bool JudgePlanTrials(const std::vector<TrialPoolCheck>& checks, DofVerdict* v) {
+  bool fits = true;
   for (const auto& c : checks) {
     if (c.dof != v->dof) continue;
     v->extent = std::max(v->extent, c.check.span);
     v->need = std::max(v->need, c.check.span);
     if (c.check.feasible) continue;
+    fits = false;
     const std::string why = model::Join(c.check.reasons, "; ");
     if (v->hosted || v->limit == PoolLimit::kNone) v->limit = LimitOfText(v->dof, why);
     v->hosted = false;
+    v->hostability = Hostability::kNone;
     v->reason += (v->reason.empty() ? "" : " ") + std::string("plan trial '") + c.id + "': " + why;
     if (v->limit != SpaceLimit(v->dof)) v->need = kInf;
   }
+  return fits;
 }
 
 RequiredPool Required(const model::Pool& pool, const std::vector<DofVerdict>& dofs) {
@@ -145,17 +180,42 @@ RequiredPool Required(const model::Pool& pool, const std::vector<DofVerdict>& do
   return r;
 }
 
-std::string DofList(const std::vector<DofVerdict>& dofs, bool hosted) {
+std::string DofList(const std::vector<DofVerdict>& dofs, Hostability h) {
   std::vector<std::string> names;
   for (const auto& d : dofs) {
-    if (d.hosted == hosted) names.emplace_back(model::DofName(d.dof));
+    if (d.hostability == h) names.emplace_back(model::DofName(d.dof));
   }
   return model::Join(names);
+}
+
+// "Pool P CAN host …", "… can host … for PART of the a priori box …", "… CANNOT host …".
+std::string Sentence(const PoolVerdict& v, const model::Pool& pool) {
+  std::ostringstream s;
+  s << "Pool " << pool.name;
+  switch (v.hostability) {
+    case Hostability::kAll:
+      s << " CAN host the identification of " << DofList(v.dofs, Hostability::kAll);
+      break;
+    case Hostability::kPart:
+      s << " can host the identification of " << DofList(v.dofs, Hostability::kPart)
+        << " for PART of the a priori box only (the first trials decide: `loop` and `next` run "
+           "and stop when the estimates fall outside it)";
+      break;
+    case Hostability::kNone:
+      s << " CANNOT host the identification of " << DofList(v.dofs, Hostability::kNone);
+      if (!v.dofs.empty() && !v.dofs.front().points.empty()) {
+        s << " for any vehicle of the a priori box checked (its centre and corners)";
+      }
+      break;
+  }
+  return s.str();
 }
 
 }  // namespace
 
 std::string_view PoolLimitName(PoolLimit limit) { return kLimitNames.Name(limit); }
+
+std::string_view HostabilityName(Hostability h) { return kHostabilityNames.Name(h); }
 
 PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
                       const ScheduleOptions& options, const ScheduleResult& own,
@@ -178,19 +238,19 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
   out.hosted = !own.dofs.empty();
   for (const auto& p : own.dofs) {
     DofVerdict v = JudgeOwn(&p, p.dof, pool);
-    JudgePlanTrials(out.plan_checks, &v);
+    const bool plan_fits = JudgePlanTrials(out.plan_checks, &v);
     if (!v.hosted && std::isfinite(v.need) && vo.need_checks >= 0) {
       ConfirmNeed(vehicle, pool, options, vo, &v);
     }
+    // A given plan that fails its own checks is judged as given: no other point rescues it.
+    if (!v.hosted && vo.judge_points && plan_fits) JudgePoints(vehicle, pool, options, &v);
     out.hosted = out.hosted && v.hosted;
     out.dofs.push_back(std::move(v));
   }
   out.required = Required(pool, out.dofs);
-  std::ostringstream s;
-  s << "Pool " << pool.name << (out.hosted ? " CAN" : " CANNOT") << " host the identification of "
-    << (out.hosted ? DofList(out.dofs, true) : DofList(out.dofs, false));
-  if (own.dofs.empty()) s << ": " << own.message;
-  out.sentence = s.str();
+  out.hostability = Overall(out.dofs);
+  out.sentence = Sentence(out, pool);
+  if (own.dofs.empty()) out.sentence += ": " + own.message;
   return out;
 }
 
@@ -224,7 +284,9 @@ std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
       << (model::IsRotational(v.dof) ? " the tether allows" : "");
     return s.str();
   }
-  s << "NOT hosted (" << PoolLimitName(v.limit) << "): ";
+  s << (v.hostability == Hostability::kPart ? "hosted for PART of the a priori box ("
+                                             : "NOT hosted (")
+    << PoolLimitName(v.limit) << "): ";
   if (std::isfinite(v.need)) {
     s << (v.need_verified ? "needs " : "needs at least ") << Travel(pool, v.dof, v.need)
       << (v.need_verified ? ", confirmed by planning it there" : "") << ". ";
@@ -232,6 +294,12 @@ std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
     s << "no pool size lifts this limit. ";
   }
   s << v.reason;
+  if (v.points.empty()) return s.str();
+  std::vector<std::string> at, not_at;
+  for (const auto& p : v.points) (p.hosted ? at : not_at).push_back(p.point.label);
+  s << " Planned at the box's centre and corners: hosted "
+    << (at.empty() ? "at none" : "at " + model::Join(at, "; "))
+    << (not_at.empty() ? "" : "; not at " + model::Join(not_at, "; ")) << ".";
   return s.str();
 }
 
@@ -263,16 +331,37 @@ std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& p
   if (rotation) r << " tether " << Fmt(q.turns, 4) << " turns;";
   r << (q.exists ? " the rest as this pool" : " but some DOF is limited by what no pool size lifts");
   out.push_back(r.str());
-  if (!v.hosted) {
-    // The verdict is robust (docs/planning.md): every trial must hold for every vehicle of the
-    // a priori box. A sequential loop designs at its estimates instead, so it may get further.
+  if (v.hostability == Hostability::kPart) {
     out.push_back(
         "  assumption: judged over the whole a priori box (the vehicle file's inertia bounds and "
-        "drag prior); a vehicle away from the box's worst corner may still be identified here by "
-        "running the trials that fit and re-planning with `next`, but that cannot be promised "
-        "before the first estimates");
+        "drag prior); the pool hosts the vehicles at the points listed, so the first trials "
+        "decide: `loop` and `next` run, and a loop that then ends stuck on a DOF above has met a "
+        "vehicle outside the hostable part (status infeasible, exit 1)");
+  } else if (!v.hosted) {
+    out.push_back(
+        "  assumption: judged over the whole a priori box (its centre and four (m, drag) "
+        "corners each planned as a known vehicle): no vehicle of the box is hosted, `loop` "
+        "refuses before any trial");
   }
   return out;
+}
+
+void ReadLoopEnd(const PoolVerdict& verdict, LoopResult* result) {
+  if (verdict.hostability != Hostability::kPart || result->status != LoopStatus::kStuck) return;
+  std::vector<std::string> outside;
+  for (const auto& p : result->progress) {
+    if (p.converged) continue;
+    for (const auto& d : verdict.dofs) {
+      if (d.dof == p.dof && d.hostability == Hostability::kPart) {
+        outside.emplace_back(model::DofName(p.dof));
+      }
+    }
+  }
+  if (outside.empty()) return;
+  result->status = LoopStatus::kInfeasible;
+  result->message = "the first trials place " + model::Join(outside) +
+                    " outside the part of the a priori box the pool hosts (the verdict "
+                    "before any trial: " + verdict.sentence + "); " + result->message;
 }
 
 }  // namespace uuvplan::planner

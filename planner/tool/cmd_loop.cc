@@ -188,15 +188,16 @@ int RunLoopCommand(const LoopCliOptions& o) {
       << "Parameters of interest: m; kq where significant, else k; every η "
          "(* = above the target)\n\n";
   // Before any trial: the pool verdict (planner/pool_verdict.h) on the loop's DOFs; a pool that
-  // cannot host them is refused with schedule's sentence and exit status.
+  // hosts them for no vehicle of the a priori box is refused with schedule's sentence and exit
+  // status; one that hosts them for part of the box is run, and the loop's end read against it.
   planner::ScheduleOptions so = lo.step.schedule;
   so.dofs = lo.step.dofs;
   if (so.dofs.empty()) {
     for (const auto& [dof, params] : truth.dofs) so.dofs.push_back(dof);
   }
   const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
-  if (!verdict.hosted) {
-    PrintVerdict(verdict, pool, out);
+  if (!verdict.hosted) PrintVerdict(verdict, pool, out);
+  if (!planner::LoopMayRun(verdict)) {
     if (!o.json.empty()) {
       WriteJson(o.json, {{"iterations", json::array()},
                          {"converged", false},
@@ -208,11 +209,17 @@ int RunLoopCommand(const LoopCliOptions& o) {
     }
     return VerdictExit(verdict);
   }
-  const planner::LoopResult r = planner::RunLoop(
+  if (!verdict.hosted) out << "\n";
+  planner::LoopResult r = planner::RunLoop(
       truth, pool, lo,
       [&](const planner::LoopIteration& it) { PrintIteration(it, target, o.verbose, out); });
+  planner::ReadLoopEnd(verdict, &r);
   PrintLoopSummary(r, lo, truth, out);
-  if (!o.json.empty()) WriteJson(o.json, LoopJson(r, lo));
+  if (!o.json.empty()) {
+    json j = LoopJson(r, lo);
+    j["verdict"] = io::PoolVerdictJson(verdict, pool);
+    WriteJson(o.json, j);
+  }
   return ExitStatus(r.status);
 }
 

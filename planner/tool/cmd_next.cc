@@ -4,9 +4,11 @@
 // single most informative next trial (planner/design_loop.h, docs/loop.md) — what a pool team
 // runs between two trials. The result can be run with `simulate --plan` (its "trial").
 // Exit status (docs/cli.md): 0 a trial is planned and the pool hosts the identification of the
-// DOFs driven (the pool verdict, planner/pool_verdict.h, printed as `schedule` prints it), or the
-// DOFs have converged (then "trial" is null); 1 no trial that is still needed fits the pool, or
-// the pool verdict says it cannot host them (the best next trial is still printed); 2 bad input;
+// DOFs driven for all or part of the a priori box (the pool verdict, planner/pool_verdict.h,
+// printed as `schedule` prints it), or the DOFs have converged (then "trial" is null); 1 no
+// trial that is still needed fits the pool, or the pool verdict says it hosts them for no vehicle
+// of the box (the best next trial is still printed), or a DOF of a pool not hosted over the
+// whole box is stuck (outside the hostable part); 2 bad input;
 // 5 stuck (no trial the pool allows adds information); 6 convergence refused (precise but
 // non-physical or invalid).
 #include <iomanip>
@@ -132,10 +134,15 @@ int RunNext(const NextCliOptions& o) {
   for (const auto& p : r.progress) so.dofs.push_back(p.dof);
   const planner::PoolVerdict verdict = planner::JudgePool(campaign.vehicle, pool, so);
   // A DOF that ran trials here and gets no further one is stuck (5) in a pool the verdict
-  // hosts; in one it does not host, the verdict's answer stands (1), as before any trial.
-  const bool verdict_answers = r.status == planner::NextStatus::kTrial ||
-                               (r.status == planner::NextStatus::kStuck && !verdict.hosted);
-  const int exit_status = verdict_answers ? VerdictExit(verdict) : ExitStatus(r.status);
+  // hosts; in one it hosts for part of the box or none, the pool's answer is 1 (as `loop`'s,
+  // planner::ReadLoopEnd). A trial is planned (0) where the loop may run: all or part.
+  int exit_status = ExitStatus(r.status);
+  if (r.status == planner::NextStatus::kTrial && !planner::LoopMayRun(verdict)) {
+    exit_status = VerdictExit(verdict);
+  }
+  if (r.status == planner::NextStatus::kStuck && !verdict.hosted) {
+    exit_status = VerdictExit(verdict);
+  }
   std::ostream& out = ReportStream(o.json);
   PrintNextStep(r, campaign, pool, o, out);
   PrintVerdict(verdict, pool, out);

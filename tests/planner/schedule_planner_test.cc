@@ -259,14 +259,17 @@ TEST(PlannerCli, ScheduleAndCheckPool) {
 }
 
 // The same inputs, one answer: schedule, check-pool (own and --plan) and the start of loop on
-// ROMEO surge in a 6 m pool all exit 1 with the same verdict sentence.
+// ROMEO surge in a pool 3 m long (hosted for no vehicle of the a priori box) all exit 1 with the
+// same verdict sentence; in a 6 m pool (hosted for part of the box) they print the same "PART"
+// verdict, schedule and check-pool exit 1 (nothing can be promised before the first trials)
+// and loop runs — and converges (docs/planning.md, "The pool verdict").
 TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
   namespace fs = std::filesystem;
   const fs::path dir =
       fs::temp_directory_path() / ("uuvplan_verdict_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path small = dir / "small.yaml";
-  std::ofstream(small) << "name: small\nlength: 6\nwidth: 12\ndepth: 5\nmargin: 1.5\n";
+  std::ofstream(small) << "name: small\nlength: 3\nwidth: 12\ndepth: 5\nmargin: 1\n";
   const std::string v = testing::RomeoPath("vehicle.yaml"), p = " --pool " + small.string();
   const std::string plan = (dir / "plan.json").string();
   auto run = [&](const std::string& args, const std::string& name, std::string* text) {
@@ -296,6 +299,22 @@ TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
   EXPECT_NE(e.find("\"status\": \"infeasible\""), std::string::npos) << e;
   EXPECT_NE(e.find("\"exit_status\": 1"), std::string::npos) << e;
   EXPECT_NE(e.find(sentence), std::string::npos) << e;
+  // Part of the box: the same sentence everywhere; the loop runs.
+  const fs::path six = dir / "six.yaml";
+  std::ofstream(six) << "name: six\nlength: 6\nwidth: 12\ndepth: 5\nmargin: 1\n";
+  const std::string q = " --pool " + six.string();
+  const std::string part = "Pool six can host the identification of surge for PART of the a "
+                           "priori box only";
+  EXPECT_EQ(run("schedule " + v + q + " --dof surge --json " + plan, "e.txt", &a), 1);
+  EXPECT_EQ(run("check-pool " + v + q + " --dof surge", "f.txt", &b), 1);
+  EXPECT_EQ(run("check-pool " + v + q + " --dof surge --plan " + plan, "g.txt", &c), 1);
+  EXPECT_EQ(run("loop --truth " + testing::RomeoPath("truth.yaml") + q + " --dof surge", "h.txt",
+                &d),
+            0);
+  for (const std::string* t : {&a, &b, &c, &d}) {
+    EXPECT_NE(t->find(part), std::string::npos) << *t;
+  }
+  EXPECT_NE(d.find("Converged after"), std::string::npos) << d;
   fs::remove_all(dir);
 }
 

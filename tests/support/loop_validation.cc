@@ -88,18 +88,28 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   so.dofs = c.dofs;
   const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
   c.hosted = verdict.hosted;
+  c.hostability = verdict.hostability;
   c.verdict = verdict.sentence;
+  planner::VerdictOptions at_truth;
+  at_truth.need_checks = -1;
+  at_truth.judge_points = false;
+  c.hosted_at_truth =
+      planner::JudgePool(planner::VehicleOfTruth(truth), pool, so, nullptr, at_truth).hosted;
   // UUVPLAN_VERBOSE=1: each trial, its DOF's estimates of interest and their trust.
   const bool verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
-  const planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const auto& it) {
+  planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const auto& it) {
     if (verbose) std::cout << IterationText(truth, it) << std::endl;
   });
+  planner::ReadLoopEnd(verdict, &r);  // as `uuvplan loop` reads it
   c.status = r.status;
   c.message = r.message;
   c.trials = static_cast<int>(r.iterations.size());
   c.pool_time_s = r.pool_time;
-  c.agree = c.hosted ? r.status != planner::LoopStatus::kInfeasible
-                     : r.status != planner::LoopStatus::kConverged;
+  switch (c.hostability) {
+    case planner::Hostability::kAll: c.agree = r.status != planner::LoopStatus::kInfeasible; break;
+    case planner::Hostability::kNone: c.agree = r.status != planner::LoopStatus::kConverged; break;
+    case planner::Hostability::kPart: c.agree = true; break;  // measured below
+  }
   if (r.converged) c.interest = InterestChecks(truth, r.progress);
   c.most_repeats = planner::MostUninformativeRepeats(r.iterations);
   c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -110,9 +120,20 @@ void LoopTally::Add(const LoopCaseOutcome& c, int max_repeats) {
   ++cases;
   hosted += c.hosted ? 1 : 0;
   agree += c.agree ? 1 : 0;
-  (c.hosted ? hosted_agree : refused_agree) += c.agree ? 1 : 0;
+  if (c.hostability == planner::Hostability::kAll) hosted_agree += c.agree ? 1 : 0;
+  if (c.hostability == planner::Hostability::kNone) {
+    ++none;
+    refused_agree += c.agree ? 1 : 0;
+  }
+  if (c.hostability == planner::Hostability::kPart) {
+    ++part;
+    part_converged += c.status == planner::LoopStatus::kConverged ? 1 : 0;
+    part_outside += c.status == planner::LoopStatus::kInfeasible ? 1 : 0;
+  }
+  ++at_truth[c.hosted_at_truth ? 1 : 0][c.status == planner::LoopStatus::kConverged ? 1 : 0];
   if (!c.agree) {
-    failures.push_back(c.name + ": the verdict says " + (c.hosted ? "hosted" : "not hosted") +
+    failures.push_back(c.name + ": the verdict says " +
+                       std::string(planner::HostabilityName(c.hostability)) +
                        " but the loop ended " + std::string(planner::LoopStatusName(c.status)));
   }
   if (c.status == planner::LoopStatus::kConverged) {
@@ -141,7 +162,8 @@ std::string CaseLine(const LoopCaseOutcome& c) {
   for (std::size_t i = 0; i < c.dofs.size(); ++i) {
     o << (i ? " " : "") << model::DofName(c.dofs[i]);
   }
-  o << "]: verdict " << (c.hosted ? "hosted" : "NOT hosted") << ", loop "
+  o << "]: verdict " << planner::HostabilityName(c.hostability) << ", at the truth "
+    << (c.hosted_at_truth ? "hosted" : "NOT hosted") << ", loop "
     << planner::LoopStatusName(c.status) << " after " << c.trials << " trial(s), pool time "
     << Significant(c.pool_time_s / 60.0, 3) << " min, wall " << Significant(c.wall_s, 3)
     << " s, most uninformative repeats " << c.most_repeats << (c.agree ? "" : "  DISAGREE");
@@ -156,10 +178,15 @@ std::string CaseLine(const LoopCaseOutcome& c) {
 
 std::string TallyText(const LoopTally& t) {
   std::ostringstream o;
-  o << "cases " << t.cases << ", hosted " << t.hosted << ", verdict and loop agree " << t.agree
-    << "/" << t.cases << " (hosted and not infeasible " << t.hosted_agree << "/" << t.hosted
-    << ", not hosted and not converged " << t.refused_agree << "/" << t.cases - t.hosted
-    << "), converged " << t.converged << "; parameters of interest within 3σ "
+  o << "cases " << t.cases << ", verdict all/part/none " << t.hosted << "/" << t.part << "/"
+    << t.none << ", verdict and loop agree " << t.agree << "/" << t.cases
+    << " (all: not infeasible " << t.hosted_agree << "/" << t.hosted << "; part: converged "
+    << t.part_converged << ", infeasible outside the hostable part " << t.part_outside
+    << ", other " << t.part - t.part_converged - t.part_outside << "; none: not converged "
+    << t.refused_agree << "/" << t.none << "), converged " << t.converged
+    << "; verdict at the truth hosted: converged " << t.at_truth[1][1] << "/"
+    << t.at_truth[1][0] + t.at_truth[1][1] << ", not hosted: converged " << t.at_truth[0][1]
+    << "/" << t.at_truth[0][0] + t.at_truth[0][1] << "; parameters of interest within 3σ "
     << t.within3 << "/" << t.interest;
   if (t.interest > 0) o << " (" << Significant(100.0 * t.within3 / t.interest, 3) << "%)";
   o << "; most runs of one design without new information " << t.most_repeats;

@@ -18,6 +18,7 @@
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/truth.h"
 #include "uuvplan/planner/design_loop.h"
+#include "uuvplan/planner/pool_verdict.h"
 
 namespace uuvplan::testing {
 
@@ -33,8 +34,11 @@ struct EstimateCheck {
 struct LoopCaseOutcome {
   std::string name;
   std::vector<model::Dof> dofs;
-  bool hosted = false;  ///< JudgePool's verdict on the loop's DOFs
+  bool hosted = false;  ///< JudgePool's verdict on the loop's DOFs: hosted over the whole box
+  planner::Hostability hostability = planner::Hostability::kNone;  ///< all / part / none
   std::string verdict;  ///< its sentence
+  /// The verdict for the true vehicle itself (a degenerate box at the truth, box_points.h).
+  bool hosted_at_truth = false;
   planner::LoopStatus status = planner::LoopStatus::kInfeasible;  ///< RunLoop's end
   std::string message;
   int trials = 0;
@@ -54,7 +58,12 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
 struct LoopTally {
   int cases = 0, hosted = 0, agree = 0, converged = 0;
   int hosted_agree = 0;  ///< hosted pools whose loop did not end infeasible
-  int refused_agree = 0;  ///< pools not hosted whose RunLoop did not converge either
+  int refused_agree = 0;  ///< pools hosted for no point of the box whose RunLoop did not converge
+  int part = 0, none = 0;  ///< pools hosted for part of the box, for none
+  int part_converged = 0, part_outside = 0;  ///< part pools: converged, infeasible (outside)
+  /// The verdict at the true vehicle (box_points.h) against the loop: [hosted at the truth?]
+  /// [converged?] counts (the measurement behind choosing the three-valued verdict).
+  int at_truth[2][2] = {{0, 0}, {0, 0}};
   int interest = 0, within3 = 0;  ///< over converged cases
   int most_repeats = 0;
   std::vector<std::string> failures;  ///< every broken claim, one sentence each

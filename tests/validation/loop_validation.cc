@@ -1,5 +1,5 @@
 // Full-size validation of the loop (issue #13; docs/validation.md "The loop on every vehicle"):
-// ROMEO, VSOR and URIS in their own pools and N seeded random vehicles
+// ROMEO, VSOR, URIS and payload60 (issue #13's 60 kg payload) in their own pools and N seeded random vehicles
 // (tests/support/random_vehicle.h, truth MakeRandomTruth) through the pool verdict and
 // planner::RunLoop; tallies of tests/support/loop_validation.h. Exit status 1 when a claim fails.
 //
@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     std::cout << t::CaseLine(c) << std::endl;
   };
   if (seed_cases) {
-    for (const char* c : {"romeo", "vsor", "uris"}) {
+    for (const char* c : {"romeo", "vsor", "uris", "payload60"}) {
       report(t::RunLoopCase(c, uuvplan::io::ReadTruth(CasePath(c, "truth.yaml")),
                             uuvplan::io::ReadPool(CasePath(c, "pool.yaml")), 1));
     }

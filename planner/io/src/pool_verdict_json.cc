@@ -20,6 +20,17 @@ nlohmann::json TravelJson(const model::Pool& pool, model::Dof dof, double free) 
   return j;
 }
 
+// The box points a DOF not hosted over the whole box was planned at: SI values and whether
+// the pool hosts that vehicle.
+nlohmann::json PointsJson(const planner::DofVerdict& d) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : d.points) {
+    out.push_back({{"m", p.point.m}, {"k", p.point.k}, {"kq", p.point.kq},
+                   {"label", p.point.label}, {"hosted", p.hosted}});
+  }
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json PoolVerdictJson(const planner::PoolVerdict& v, const model::Pool& pool) {
@@ -32,7 +43,9 @@ nlohmann::json PoolVerdictJson(const planner::PoolVerdict& v, const model::Pool&
         {"extent", TravelJson(pool, d.dof, d.extent)},
         {"need", TravelJson(pool, d.dof, d.need)},
         {"need_verified", d.need_verified},
-        {"undetermined", d.determinacy.undetermined}};
+        {"undetermined", d.determinacy.undetermined},
+        {"hostability", std::string(planner::HostabilityName(d.hostability))},
+        {"points", PointsJson(d)}};
   }
   const planner::RequiredPool& r = v.required;
   const double m2 = 2 * pool.margin;
@@ -42,7 +55,9 @@ nlohmann::json PoolVerdictJson(const planner::PoolVerdict& v, const model::Pool&
       {"free", {{"length", r.length - m2}, {"width", r.width - m2}, {"depth", r.depth - m2},
                 {"unit", "m"}}},
       {"turns", r.turns}, {"turns_unit", "turns"}, {"exists", r.exists}};
-  return {{"hosted", v.hosted},   {"sentence", v.sentence},
+  return {{"hosted", v.hosted},
+          {"hostability", std::string(planner::HostabilityName(v.hostability))},
+          {"sentence", v.sentence},
           {"lines", planner::VerdictLines(v, pool)}, {"dofs", dofs},
           {"required", required}};
 }

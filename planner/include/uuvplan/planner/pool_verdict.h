@@ -12,6 +12,13 @@
 // `required` covers EVERY DOF asked for, planned or not: per axis the largest of every trial's
 // extent (planned and given) and every DOF's need, wall to wall (+ 2·margin); for rotations
 // the tether's turns.
+//
+// Three-valued (issue #13): the schedule is robust, planned for every vehicle of the a priori
+// box. A DOF it cannot host over the whole box is planned again at the box's centre and at its
+// four (m, drag) corners (box_points.h): hosted at some of them, it is hosted for PART of the
+// box — the first trials decide, and `uuvplan loop` / `next` run there; at none, for none. A
+// loop run in a part pool that ends stuck on a part DOF has met a vehicle outside the hostable
+// part: ReadLoopEnd makes that the pool's answer (infeasible, exit 1) with that sentence.
 #pragma once
 
 #include <limits>
@@ -21,6 +28,8 @@
 
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
+#include "uuvplan/planner/box_points.h"
+#include "uuvplan/planner/design_loop.h"
 #include "uuvplan/planner/pool_check.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/schedule_planner.h"
@@ -33,6 +42,17 @@ namespace uuvplan::planner {
 enum class PoolLimit { kNone, kLength, kWidth, kDepth, kTether, kThrust, kNoReversal, kDuration,
                        kInformation };
 std::string_view PoolLimitName(PoolLimit limit);
+
+/// For how much of the a priori box the pool hosts a DOF (or every DOF asked for): every
+/// vehicle of the box, part of it (some of the points checked: the first trials decide), none.
+enum class Hostability { kAll, kPart, kNone };
+std::string_view HostabilityName(Hostability h);
+
+/// One point of the box checked for a DOF not hosted over the whole box.
+struct PointVerdict {
+  BoxPoint point;
+  bool hosted = false;
+};
 
 struct DofVerdict {
   model::Dof dof = model::Dof::kSurge;
@@ -47,6 +67,9 @@ struct DofVerdict {
   double need = 0.0;
   bool need_verified = false;  ///< a pool offering `need` was planned and hosts the DOF
   Determinacy determinacy;     ///< of the planner's own schedule in this pool
+  /// kAll exactly when `hosted`; else kPart or kNone by `points`.
+  Hostability hostability = Hostability::kNone;
+  std::vector<PointVerdict> points;  ///< centre and corners checked when not hosted
 };
 
 /// Smallest pool that hosts every DOF asked for (wall to wall, m) and the tether turns.
@@ -57,7 +80,9 @@ struct RequiredPool {
 };
 
 struct PoolVerdict {
-  bool hosted = false;
+  bool hosted = false;  ///< every DOF hosted over the whole a priori box
+  /// kAll when hosted; kNone when some DOF is hosted at no point checked; else kPart.
+  Hostability hostability = Hostability::kNone;
   std::vector<DofVerdict> dofs;
   RequiredPool required;
   bool plan_given = false;
@@ -70,6 +95,9 @@ struct VerdictOptions {
   /// enlargements by 1.5×). CHOSEN 2: the first guess (the largest failing run) usually holds.
   /// Negative: no confirmation (`need` stays the first guess, need_verified false).
   int need_checks = 2;
+  /// Plan a DOF not hosted over the box again at the box's centre and corners (Hostability).
+  /// false: a DOF not hosted is kNone without checking.
+  bool judge_points = true;
 };
 
 /// The verdict for `own`, the planner's schedule of these DOFs in `pool` (PlanSchedule with
@@ -93,5 +121,14 @@ PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
 /// The verdict as readable lines (units on every number, free vs wall to wall said), the
 /// first being `sentence`; the same in every command.
 std::vector<std::string> VerdictLines(const PoolVerdict& verdict, const model::Pool& pool);
+
+/// Whether `uuvplan loop` (and `next`) may run trials: the pool hosts the DOFs for all or part
+/// of the box.
+inline bool LoopMayRun(const PoolVerdict& v) { return v.hostability != Hostability::kNone; }
+
+/// A loop's end read against the verdict it ran under: in a pool hosted for part of the box, a
+/// loop stuck with a part DOF short of the target has met a vehicle outside the hostable part —
+/// status kInfeasible (the pool cannot host this vehicle) with that sentence before the stop's.
+void ReadLoopEnd(const PoolVerdict& verdict, LoopResult* result);
 
 }  // namespace uuvplan::planner
