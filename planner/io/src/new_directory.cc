@@ -6,6 +6,8 @@
 #include <fstream>
 #include <system_error>
 
+#include <sys/stat.h>
+
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::io {
@@ -69,6 +71,10 @@ void WriteNewDirectory(const std::string& dir, const std::map<std::string, std::
       f.close();
       if (!f) throw InputError((out / name).string(), "cannot write the file");
     }
+    // mkdtemp made it private (0700): give it the permissions of a directory made by mkdir.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    fs::permissions(tmp, static_cast<fs::perms>(0777 & ~mask), ec);
   } catch (...) {
     fs::remove_all(tmp, ec);  // ours alone
     throw;

@@ -68,7 +68,9 @@ void AddRanges(const Panel& p, Range* x, Range* y) {
     }
     if (s.style == Style::kBars) y->Add(p.log_y ? NAN : 0.0);
   }
-  for (const Level& l : p.levels) y->Add(Y(l.y, p.log_y));
+  for (const Level& l : p.levels) {
+    if (l.sets_range) y->Add(Y(l.y, p.log_y));
+  }
   if (!p.categories.empty()) {
     x->Add(-0.5);
     x->Add(static_cast<double>(p.categories.size()) - 0.5);
@@ -77,7 +79,7 @@ void AddRanges(const Panel& p, Range* x, Range* y) {
 
 void SetStyle(plstream& pls, Colour c, Style s) {
   pls.col0(Index(c));
-  pls.lsty(s == Style::kDashed ? 3 : s == Style::kDotted ? 2 : 1);
+  pls.lsty(s == Style::kDashed ? 3 : s == Style::kDotted ? 2 : 1);  // as LineStyle
   pls.width(s == Style::kDotted ? 1.5 : 2.0);
 }
 
@@ -160,17 +162,27 @@ void DrawSeries(plstream& pls, const Series& s, bool log_y) {
   }
 }
 
-void DrawLevels(plstream& pls, const Panel& p, const Range& x) {
-  pls.schr(0, 0.6);
+bool Shown(const Level& l, const Range& y, bool log_y) {
+  const double v = Y(l.y, log_y);
+  return std::isfinite(v) && (l.sets_range || (v >= y.lo && v <= y.hi));
+}
+
+void DrawLevels(plstream& pls, const Panel& p, const Range& x, const Range& y_range) {
   for (const Level& l : p.levels) {
+    if (!Shown(l, y_range, p.log_y)) continue;
     const double y = Y(l.y, p.log_y);
-    if (!std::isfinite(y)) continue;
     SetStyle(pls, l.colour, l.style);
     pls.join(x.lo, y, x.hi, y);
-    if (!l.label.empty()) pls.ptex(x.hi - 0.005 * (x.hi - x.lo), y, 1.0, 0.0, 1.0, Text(l.label + " ").c_str());
   }
-  pls.schr(0, 0.75);
 }
+
+PLINT LineStyle(Style s) { return s == Style::kDashed ? 3 : s == Style::kDotted ? 2 : 1; }
+
+// One legend entry: how it is drawn, its colour and line style, its text.
+struct Entry {
+  PLINT opt, colour, style;
+  std::string text;
+};
 
 PLINT LegendOpt(Style s) {
   if (s == Style::kBand || s == Style::kBars) return PL_LEGEND_COLOR_BOX;
@@ -178,30 +190,40 @@ PLINT LegendOpt(Style s) {
   return PL_LEGEND_LINE;
 }
 
-// The legend outside the plot box, on its right.
-void DrawLegend(plstream& pls, const Panel& p) {
-  std::vector<const Series*> shown;
+// The labelled series, then the labelled levels (each label once), for the legend.
+std::vector<Entry> LegendEntries(const Panel& p, const Range& y) {
+  std::vector<Entry> entries;
   for (const Series& s : p.series) {
-    if (!s.label.empty()) shown.push_back(&s);
+    if (!s.label.empty()) entries.push_back({LegendOpt(s.style), Index(s.colour), LineStyle(s.style), Text(s.label)});
   }
-  if (shown.empty()) return;
-  const std::size_t n = shown.size();
-  std::vector<PLINT> opt(n), colours(n), patterns(n, 0), styles(n), numbers(n, 1);
+  for (const Level& l : p.levels) {
+    if (l.label.empty() || !Shown(l, y, p.log_y)) continue;
+    const std::string text = Text(l.label);
+    const bool seen = std::any_of(entries.begin(), entries.end(), [&](const Entry& e) { return e.text == text; });
+    if (!seen) entries.push_back({PL_LEGEND_LINE, Index(l.colour), LineStyle(l.style), text});
+  }
+  return entries;
+}
+
+// The legend outside the plot box, on its right, centred vertically.
+void DrawLegend(plstream& pls, const Panel& p, const Range& y) {
+  const std::vector<Entry> entries = LegendEntries(p, y);
+  if (entries.empty()) return;
+  const std::size_t n = entries.size();
+  std::vector<PLINT> opt(n), colours(n), black(n, Index(Colour::kBlack)), patterns(n, 0), styles(n), numbers(n, 1);
   std::vector<PLFLT> scales(n, 0.8), widths(n, 2.0), box_widths(n, 1.0);
-  std::vector<std::string> texts(n);
   std::vector<const char*> text(n), symbols(n, "•");
   for (std::size_t i = 0; i < n; ++i) {
-    opt[i] = LegendOpt(shown[i]->style);
-    colours[i] = Index(shown[i]->colour);
-    styles[i] = shown[i]->style == Style::kDashed ? 3 : shown[i]->style == Style::kDotted ? 2 : 1;
-    texts[i] = Text(shown[i]->label);
-    text[i] = texts[i].c_str();
+    opt[i] = entries[i].opt;
+    colours[i] = entries[i].colour;
+    styles[i] = entries[i].style;
+    text[i] = entries[i].text.c_str();
   }
   PLFLT w = 0, h = 0;
-  pls.schr(0, 0.65);
-  pls.legend(&w, &h, PL_LEGEND_BACKGROUND, PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_OUTSIDE,
-             0.01, 0.0, 0.04, 0, 1, 1, static_cast<PLINT>(n), 1, static_cast<PLINT>(n), opt.data(),
-             0.6, 1.0, 1.6, 0.0, colours.data(), text.data(), colours.data(), patterns.data(),
+  pls.schr(0, 0.75);
+  pls.legend(&w, &h, PL_LEGEND_BACKGROUND, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE,
+             0.01, 0.0, 0.05, 0, 1, 1, static_cast<PLINT>(n), 1, static_cast<PLINT>(n), opt.data(),
+             0.5, 0.8, 1.8, 0.0, black.data(), text.data(), colours.data(), patterns.data(),
              scales.data(), box_widths.data(), colours.data(), styles.data(), widths.data(),
              colours.data(), scales.data(), numbers.data(), symbols.data());
   pls.schr(0, 0.75);
@@ -228,23 +250,22 @@ void DrawAxes(plstream& pls, const Panel& p) {
 
 void DrawPanel(plstream& pls, const Panel& p, double x0, double x1, double y0, double y1) {
   // Room for the y label on the left, the legend on the right, labels below, title above.
-  pls.vpor(x0 + 0.085 * (x1 - x0) + 0.02, x0 + 0.78 * (x1 - x0), y0 + 0.2 * (y1 - y0),
+  pls.vpor(x0 + 0.085 * (x1 - x0) + 0.02, x0 + 0.74 * (x1 - x0), y0 + 0.2 * (y1 - y0),
            y1 - 0.14 * (y1 - y0));
   Range x, y;
   AddRanges(p, &x, &y);
-  if (p.categories.empty()) x.lo = x.lo, x.hi = x.hi;
   if (!(x.lo < x.hi)) x.Pad();
   y.Pad();
   pls.wind(x.lo, x.hi, y.lo, y.hi);
   for (const Series& s : p.series) {
     if (s.style == Style::kBand) DrawSeries(pls, s, p.log_y);  // bands under everything
   }
-  DrawLevels(pls, p, x);
+  DrawLevels(pls, p, x, y);
   for (const Series& s : p.series) {
     if (s.style != Style::kBand) DrawSeries(pls, s, p.log_y);
   }
   DrawAxes(pls, p);
-  DrawLegend(pls, p);
+  DrawLegend(pls, p, y);
 }
 
 void Draw(plstream& pls, const Figure& f) {

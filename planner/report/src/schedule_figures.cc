@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <set>
@@ -53,20 +54,29 @@ Panel PositionPanel(const planner::DofContext& ctx, const planner::PlannedTrial&
   return p;
 }
 
-// Each thruster's limits once (several thrusters often share them).
-std::vector<Level> ThrustLevels(const model::Vehicle& v, const std::vector<bool>& used) {
+// Each working thruster's limits once (several thrusters often share them); a limit more
+// than twice the largest force is left off the scale (named in the panel's title instead).
+std::vector<Level> ThrustLevels(const model::Vehicle& v, const planner::ThrusterForces& f,
+                                std::string* off_scale) {
   std::set<double> forward, reverse;
+  double largest = 0.0;
   for (std::size_t i = 0; i < v.thrusters.size(); ++i) {
-    if (!used[i]) continue;
+    if (!f.used[i]) continue;
     forward.insert(v.thrusters[i].MaxForwardThrust());
     reverse.insert(v.thrusters[i].MaxReverseThrust());
+    for (double x : f.force[i]) largest = std::max(largest, std::abs(x));
   }
-  std::vector<Level> levels = {{0.0, "zero (reversal)", Colour::kBlack, Style::kLine}};
-  for (double f : forward) levels.push_back({f, "limit " + model::Significant(f, 3) + " N", Colour::kVermillion, Style::kDashed});
-  for (double r : reverse) levels.push_back({-r, "limit -" + model::Significant(r, 3) + " N", Colour::kVermillion, Style::kDashed});
+  std::vector<Level> levels = {{0.0, "zero (reversal)", Colour::kBlack, Style::kLine, true}};
+  auto limit = [&](double y) {
+    const bool near = std::abs(y) <= 2 * largest;
+    levels.push_back({y, "limit " + model::Significant(y, 3) + " N", Colour::kVermillion, Style::kDashed, near});
+    if (!near) *off_scale += (off_scale->empty() ? "" : ", ") + model::Significant(y, 3) + " N";
+  };
+  for (double x : forward) limit(x);
+  for (double x : reverse) limit(-x);
   if (v.min_thrust > 0) {
-    levels.push_back({v.min_thrust, "min_thrust", Colour::kGrey, Style::kDotted});
-    levels.push_back({-v.min_thrust, "-min_thrust", Colour::kGrey, Style::kDotted});
+    levels.push_back({v.min_thrust, "±min_thrust", Colour::kGrey, Style::kDotted, true});
+    levels.push_back({-v.min_thrust, "±min_thrust", Colour::kGrey, Style::kDotted, true});
   }
   return levels;
 }
@@ -86,7 +96,9 @@ std::vector<Panel> ThrustPanels(const model::Vehicle& v, const model::TrialDesig
                                 colours[k % 8], f.t, f.force[i], {}, {}});
     ++k;
   }
-  thrusters.levels = ThrustLevels(v, f.used);
+  std::string off_scale;
+  thrusters.levels = ThrustLevels(v, f, &off_scale);
+  if (!off_scale.empty()) thrusters.title += " (limits " + off_scale + " off the scale)";
   Panel input;
   input.title = "designed input phi_n (" + std::string(model::TrialKindName(d.kind)) + ", mapping " + d.mapping + ")";
   input.x_label = "t (s)";
@@ -99,7 +111,9 @@ std::vector<Panel> ThrustPanels(const model::Vehicle& v, const model::TrialDesig
 Figure TrialFigure(const planner::DofContext& ctx, const planner::PlannedTrial& trial, int index) {
   const model::TrialDesign& d = trial.design;
   Figure f;
-  f.name = "schedule-" + std::to_string(index + 1) + "-" + d.id;
+  char number[16];
+  std::snprintf(number, sizeof number, "%02d", index + 1);  // file names sort in trial order
+  f.name = "schedule-" + std::string(number) + "-" + d.id;
   f.title = "Trial " + std::to_string(index + 1) + ": " + d.id + " (" + std::string(model::DofName(d.dof)) +
             ", " + model::Significant(d.duration, 3) + " s)";
   f.caption = "Trial " + d.id + ": the position from rest over the a priori box (shaded: the "

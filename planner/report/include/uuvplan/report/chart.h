@@ -37,6 +37,9 @@ struct Level {
   std::string label;  ///< written at the line's right end
   Colour colour = Colour::kGrey;
   Style style = Style::kDashed;
+  /// false: drawn only when the series' range reaches it (a limit far beyond the data would
+  /// flatten them), and then left out of the legend.
+  bool sets_range = true;
 };
 
 struct Panel {
