@@ -3,7 +3,8 @@
 // figures as PNG and SVG files (planner/report, docs/report.md). INPUT is a schedule
 // (`schedule --json`, with --vehicle and --pool), a loop's JSON (`loop --json`), or a campaign
 // (identified and diagnosed here). DIR is written whole or not at all. Exit status: 0 written;
-// 1 written, but an identification it reports failed; 2 bad input.
+// 1 written, but a DOF could not be diagnosed (with --no-diagnosis: could not be identified),
+// as `diagnose` (`identify`) would say; 2 bad input.
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -121,7 +122,10 @@ int RunReport(const ReportCommandOptions& o) {
   std::cout << "report: " << (std::filesystem::path(io::DirectoryPath(o.out)) / "report.html").string()
             << " (" << files.figures << " figures, also as PNG and SVG in "
             << (std::filesystem::path(io::DirectoryPath(o.out)) / "figures").string() << ")\n";
-  const bool failed = in.identification && in.identification->status == ident::IdentifyStatus::kFailed;
+  // The verdict of the command whose result is reported: diagnose's (a DOF it could not
+  // diagnose), or with --no-diagnosis identify's (a DOF that failed).
+  const bool failed = in.diagnosis ? !in.diagnosis->not_diagnosed.empty()
+                                   : in.identification && in.identification->status == ident::IdentifyStatus::kFailed;
   return failed ? kExitActionNeeded : kExitOk;
 }
 

@@ -41,11 +41,11 @@ void ReadIteration(const JsonValue& it, int index, LoopHistory* h) {
   const JsonValue params = it.Required("params", "the estimates after the trial");
   if (!params.json().is_object()) params.Expected("an object of DOFs");
   for (const auto& [dof_name, p] : params.json().items()) {
-    const JsonValue dv(p, params.file(), params.key_path() + "." + dof_name);
+    const JsonValue dv(p, params.file(), params.KeyPath(dof_name));
     const model::Dof d = DofKey(dv, dof_name);
     if (!p.is_object()) dv.Expected("an object of parameters");
     for (const auto& [name, e] : p.items()) {
-      const JsonValue ev(e, dv.file(), dv.key_path() + "." + name);
+      const JsonValue ev(e, dv.file(), dv.KeyPath(name));
       LoopPoint point{index, pool_time, NumberOrNaN(ev.Required("value")),
                       NumberOrNaN(ev.Required("sigma")), d == dof ? PredictedSigma(it, name) : kNaN};
       h->series[d][name].push_back(point);

@@ -53,7 +53,7 @@ Figure CandidateGainFigure(const ident::DiagnosisResult& diagnosis, model::Dof d
               "fit did not see; only significant candidates are scored (others at 0), and an "
               "effect is accepted when its gain reaches the threshold.";
   Panel p;
-  p.x_label = "candidate (round)";
+  p.x_label = "";
   p.y_label = "held-out gain (%)";
   Series accepted{"accepted", Style::kBars, Colour::kGreen, {}, {}, {}, {}};
   Series other{"not accepted", Style::kBars, Colour::kGrey, {}, {}, {}, {}};
@@ -68,9 +68,9 @@ Figure CandidateGainFigure(const ident::DiagnosisResult& diagnosis, model::Dof d
   }
   p.series = {accepted, other};
   p.levels.push_back({0.0, "", Colour::kBlack, Style::kLine});
-  p.title = std::to_string(p.categories.size()) + " candidates tested";
+  p.title = std::to_string(p.categories.size()) + " candidates tested: effect (greedy round)";
   f.panels.push_back(std::move(p));
-  f.height = 420;
+  f.height = 560;
   return f;
 }
 

@@ -1,5 +1,6 @@
 #include "uuvplan/report/html.h"
 
+#include <cctype>
 #include <sstream>
 
 namespace uuvplan::report {
@@ -18,7 +19,7 @@ nav a{margin-right:14px;color:#0072b2;text-decoration:none}
 .table{overflow-x:auto;margin:8px 0 14px}
 table{border-collapse:collapse;font-size:.9em}caption{text-align:left;font-weight:bold;padding:4px 0}
 th,td{border:1px solid #ccc;padding:3px 8px;text-align:right;white-space:nowrap}
-th{background:#eef4fa}td:first-child,th:first-child{text-align:left}
+th{background:#eef4fa;text-align:left}td.t{text-align:left}
 figure{margin:12px 0 20px}figure img{width:100%;height:auto;border:1px solid #ddd}
 figcaption{font-size:.9em;color:#444;margin-top:4px}
 )";
@@ -37,6 +38,12 @@ std::string Escape(const std::string& s) {
   return out;
 }
 
+// Numbers align right, words left: a cell is a number when it starts like one.
+bool IsNumber(const std::string& cell) {
+  const std::size_t i = !cell.empty() && (cell[0] == '-' || cell[0] == '+') ? 1 : 0;
+  return cell == "—" || (i < cell.size() && std::isdigit(static_cast<unsigned char>(cell[i])));
+}
+
 void WriteTable(const Table& t, std::ostream& out) {
   out << "<div class=\"table\"><table>";
   if (!t.caption.empty()) out << "<caption>" << Escape(t.caption) << "</caption>";
@@ -45,7 +52,7 @@ void WriteTable(const Table& t, std::ostream& out) {
   out << "</tr></thead><tbody>\n";
   for (const auto& row : t.rows) {
     out << "<tr>";
-    for (const auto& cell : row) out << "<td>" << Escape(cell) << "</td>";
+    for (const auto& cell : row) out << (IsNumber(cell) ? "<td>" : "<td class=\"t\">") << Escape(cell) << "</td>";
     out << "</tr>\n";
   }
   out << "</tbody></table></div>\n";

@@ -99,7 +99,7 @@ Figure ParameterFigure(const ident::DofIdentification& dof, const std::string& s
               "(θ/θ̂ = 1): the bars span ±1σ (dark) and ±2σ (light), σ from the fit's covariance; "
               "the table gives the values with units.";
   Panel p;
-  p.x_label = "parameter";
+  p.x_label = "";
   p.y_label = "theta / estimate (1)";
   Series two{"±2σ", Style::kErrorBars, Colour::kSky, {}, {}, {}, {}};
   Series one{"±1σ", Style::kErrorBars, Colour::kBlue, {}, {}, {}, {}};
@@ -115,7 +115,7 @@ Figure ParameterFigure(const ident::DofIdentification& dof, const std::string& s
   p.levels.push_back({1.0, "", Colour::kGrey, Style::kDotted});
   p.title = std::to_string(p.categories.size()) + " parameters estimated";
   f.panels.push_back(std::move(p));
-  f.height = 380;
+  f.height = 520;
   return f;
 }
 

@@ -239,19 +239,19 @@ void DrawAxes(plstream& pls, const Panel& p) {
   } else {
     pls.box("bc", 1, 0, yopt, 0, 0);
     const double n = static_cast<double>(p.categories.size());
-    for (std::size_t i = 0; i < p.categories.size(); ++i) {
-      pls.mtex("b", 1.5 + 1.2 * (i % 2), (i + 0.5) / n, 0.5, Text(p.categories[i]).c_str());
+    for (std::size_t i = 0; i < p.categories.size(); ++i) {  // vertical, ending at the axis
+      pls.mtex("bv", 0.7, (i + 0.5) / n, 1.0, Text(p.categories[i]).c_str());
     }
   }
-  pls.mtex("b", p.categories.empty() ? 3.0 : 4.2, 0.5, 0.5, Text(p.x_label).c_str());
+  if (p.categories.empty()) pls.mtex("b", 3.0, 0.5, 0.5, Text(p.x_label).c_str());
   pls.mtex("l", 5.0, 0.5, 0.5, Text(p.y_label).c_str());
   pls.mtex("t", 0.8, 0.0, 0.0, Text(p.title).c_str());
 }
 
 void DrawPanel(plstream& pls, const Panel& p, double x0, double x1, double y0, double y1) {
   // Room for the y label on the left, the legend on the right, labels below, title above.
-  pls.vpor(x0 + 0.085 * (x1 - x0) + 0.02, x0 + 0.74 * (x1 - x0), y0 + 0.2 * (y1 - y0),
-           y1 - 0.14 * (y1 - y0));
+  const double bottom = p.categories.empty() ? 0.2 : 0.5;  // vertical category names
+  pls.vpor(x0 + 0.085, x0 + 0.74 * (x1 - x0), y0 + bottom * (y1 - y0), y1 - 0.14 * (y1 - y0));
   Range x, y;
   AddRanges(p, &x, &y);
   if (!(x.lo < x.hi)) x.Pad();
