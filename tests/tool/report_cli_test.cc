@@ -101,13 +101,13 @@ TEST(ReportTool, RomeoScheduleReportRendersInChromium) {
   for (const char* unit : {"duration (s)", "min_thrust (N)", "length (m)", "largest forward thrust (N)"}) {
     EXPECT_THAT(html, HasSubstr(std::string("<th>") + unit + "</th>"));
   }
-  ExpectRenders(tmp / "report", {"vehicle", "pool", "schedule"}, CheckReportFiles(tmp / "report"),
+  ExpectRenders(tmp / "report", {"summary", "vehicle", "pool", "schedule"}, CheckReportFiles(tmp / "report"),
                 "report-romeo-schedule.png", tmp);
 }
 
-// A virtual ROMEO heave campaign (truth-effects: η = 0.56 upward, seed 000 §IV-D) after a
-// heave loop: estimates, validation, diagnosis (installation loss found) and the loop history.
-// The virtual twin of the real-data report below.
+// A virtual ROMEO heave campaign (the planned heave trials run on truth-effects.yaml) after a
+// heave loop: estimates, validation, diagnosis (every candidate tested, in its table) and the
+// loop history. The virtual twin of the real-data report below.
 TEST(ReportTool, VirtualRomeoCampaignAfterLoopReport) {
   TempDir tmp;
   const std::string plan = tmp / "schedule.json", loop = tmp / "loop.json";
@@ -122,13 +122,14 @@ TEST(ReportTool, VirtualRomeoCampaignAfterLoopReport) {
                                 (tmp / "report") + "'", tmp);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string html = ReadText(tmp / "report/report.html");
-  EXPECT_THAT(html, HasSubstr("installation_loss"));
+  EXPECT_THAT(html, HasSubstr("<td class=\"t\">installation_loss</td>"));  // a candidate tested
+  EXPECT_THAT(html, HasSubstr("<td class=\"t\">identification of heave</td>"));  // the summary
   for (const char* fig : {"identification-heave-free-run", "identification-heave-residuals",
                           "identification-heave-parameters", "diagnosis-heave-residuals",
                           "diagnosis-heave-gains", "loop-percentile-error"}) {
     EXPECT_TRUE(fs::exists(tmp / ("report/figures/" + std::string(fig) + ".png"))) << fig;
   }
-  ExpectRenders(tmp / "report", {"vehicle", "estimates", "validation", "diagnosis", "loop"},
+  ExpectRenders(tmp / "report", {"summary", "vehicle", "estimates", "validation", "diagnosis", "loop"},
                 CheckReportFiles(tmp / "report"), "report-romeo-campaign.png", tmp);
 }
 

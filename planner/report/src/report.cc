@@ -65,6 +65,10 @@ ReportFiles BuildReport(const ReportInputs& in) {
     doc.sections.push_back(std::move(s));
   }
   if (!out.notes.empty()) doc.sections.push_back({"notes", "Notes", out.notes, {}, {}});
+  doc.sections.insert(doc.sections.begin(),
+                      SummarySection(in.schedule ? &*in.schedule : nullptr,
+                                     in.identification ? &*in.identification : nullptr,
+                                     in.diagnosis ? &*in.diagnosis : nullptr, in.loop ? &*in.loop : nullptr));
   out.files["report.html"] = Html(doc);
   return out;
 }

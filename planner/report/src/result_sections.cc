@@ -45,7 +45,7 @@ Section ValidationSection(const ident::IdentifyResult& result) {
                          "velocity mean absolute error (seed 002 eq. 37) against the zero-velocity "
                          "model's, position RMS error, and the residuals' whiteness (seed 004 §5.2).");
   Table t{"Free runs", {"trial", "DOF", "use", "velocity MAE", "zero-velocity MAE", "velocity unit",
-                        "position RMS", "position unit", "residual lags outside ±1.96/√N (of 20)", "white"}, {}};
+                        "position RMS", "position unit", "lags outside ±1.96/√N (of 20)", "white"}, {}};
   for (const ident::DofIdentification& d : result.dofs) {
     for (const ident::TrialFit& f : d.fit.trials) {
       t.rows.push_back({f.name, DofText(d.dof), f.use == model::TrialUse::kFit ? "fit" : "validate",
