@@ -223,7 +223,7 @@ void DrawLegend(plstream& pls, const Panel& p, const Range& y) {
   pls.schr(0, 0.75);
   pls.legend(&w, &h, PL_LEGEND_BACKGROUND, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE,
              0.01, 0.0, 0.05, 0, 1, 1, static_cast<PLINT>(n), 1, static_cast<PLINT>(n), opt.data(),
-             0.5, 0.8, 1.8, 0.0, black.data(), text.data(), colours.data(), patterns.data(),
+             0.5, 0.7, 1.8, 0.0, black.data(), text.data(), colours.data(), patterns.data(),
              scales.data(), box_widths.data(), colours.data(), styles.data(), widths.data(),
              colours.data(), scales.data(), numbers.data(), symbols.data());
   pls.schr(0, 0.75);
@@ -244,14 +244,16 @@ void DrawAxes(plstream& pls, const Panel& p) {
     }
   }
   if (p.categories.empty()) pls.mtex("b", 3.0, 0.5, 0.5, Text(p.x_label).c_str());
-  pls.mtex("l", 5.0, 0.5, 0.5, Text(p.y_label).c_str());
+  pls.mtex("l", 4.6, 0.5, 0.5, Text(p.y_label).c_str());
   pls.mtex("t", 0.8, 0.0, 0.0, Text(p.title).c_str());
 }
 
-void DrawPanel(plstream& pls, const Panel& p, double x0, double x1, double y0, double y1) {
-  // Room for the y label on the left, the legend on the right, labels below, title above.
+void DrawPanel(plstream& pls, const Panel& p, double x0, double x1, double y0, double y1,
+               double legend) {
+  // Room for the y label on the left, the legend (`legend` of the panel's width) on the right,
+  // labels below, the title above.
   const double bottom = p.categories.empty() ? 0.2 : 0.5;  // vertical category names
-  pls.vpor(x0 + 0.085, x0 + 0.74 * (x1 - x0), y0 + bottom * (y1 - y0), y1 - 0.14 * (y1 - y0));
+  pls.vpor(x0 + 0.095, x1 - legend * (x1 - x0), y0 + bottom * (y1 - y0), y1 - 0.14 * (y1 - y0));
   Range x, y;
   AddRanges(p, &x, &y);
   if (!(x.lo < x.hi)) x.Pad();
@@ -284,7 +286,7 @@ void Draw(plstream& pls, const Figure& f) {
     const int r = static_cast<int>(i) / columns, c = static_cast<int>(i) % columns;
     const double h = (1 - title) / rows;
     DrawPanel(pls, f.panels[i], static_cast<double>(c) / columns, static_cast<double>(c + 1) / columns,
-              1 - title - (r + 1) * h, 1 - title - r * h);
+              1 - title - (r + 1) * h, 1 - title - r * h, columns == 1 ? 0.35 : 0.26);
   }
 }
 

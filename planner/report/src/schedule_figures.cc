@@ -29,12 +29,12 @@ std::vector<Level> PoolLevels(const model::Pool& pool, Dof dof, double lo, doubl
     return {{free_lo, "tether twist limit", Colour::kVermillion, Style::kDashed},
             {free_lo + free, "tether twist limit", Colour::kVermillion, Style::kDashed}};
   }
-  const std::string side(model::Pool::SideName(dof));
-  return {{free_lo - pool.margin, "wall", Colour::kBlack, Style::kLine},
+  const std::string wall = "wall (" + std::string(model::Pool::SideName(dof)) + " " +
+                           model::Significant(pool.WallToWall(dof), 3) + " m)";
+  return {{free_lo - pool.margin, wall, Colour::kBlack, Style::kLine},
           {free_lo, "margin", Colour::kVermillion, Style::kDashed},
           {free_lo + free, "margin", Colour::kVermillion, Style::kDashed},
-          {free_lo + free + pool.margin, "wall (" + side + " " + model::Significant(pool.WallToWall(dof), 3) + " m)",
-           Colour::kBlack, Style::kLine}};
+          {free_lo + free + pool.margin, wall, Colour::kBlack, Style::kLine}};
 }
 
 Panel PositionPanel(const planner::DofContext& ctx, const planner::PlannedTrial& trial) {
