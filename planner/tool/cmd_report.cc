@@ -41,7 +41,8 @@ struct ReportCommandOptions {
 constexpr int kCurvePoints = 800;
 
 bool IsJsonFile(const std::string& path) {
-  return std::filesystem::path(path).extension() == ".json" && std::filesystem::is_regular_file(path);
+  return std::filesystem::path(path).extension() == ".json" &&
+         std::filesystem::is_regular_file(path);
 }
 
 void AddVehicleAndPool(const ReportCommandOptions& o, report::ReportInputs* in) {
@@ -57,8 +58,9 @@ void AddVehicleAndPool(const ReportCommandOptions& o, report::ReportInputs* in) 
 
 void AddSchedule(const ReportCommandOptions& o, report::ReportInputs* in) {
   if (o.vehicle.empty() || o.pool.empty()) {
-    throw InputError(o.input, "a schedule names neither its vehicle nor its pool: expected "
-                              "--vehicle VEHICLE.yaml and --pool POOL.yaml (those given to `schedule`)");
+    throw InputError(o.input,
+                     "a schedule names neither its vehicle nor its pool: expected "
+                     "--vehicle VEHICLE.yaml and --pool POOL.yaml (those given to `schedule`)");
   }
   in->title = "Schedule report";
   in->schedule = io::ReadScheduleJson(o.input);
@@ -119,23 +121,27 @@ int RunReport(const ReportCommandOptions& o) {
   if (!o.loop.empty()) in.loop = io::ReadLoopJson(o.loop);
   const report::ReportFiles files = report::BuildReport(in);
   io::WriteNewDirectory(o.out, files.files, "-o", "a report");
-  std::cout << "report: " << (std::filesystem::path(io::DirectoryPath(o.out)) / "report.html").string()
-            << " (" << files.figures << " figures, also as PNG and SVG in "
+  std::cout << "report: "
+            << (std::filesystem::path(io::DirectoryPath(o.out)) / "report.html").string() << " ("
+            << files.figures << " figures, also as PNG and SVG in "
             << (std::filesystem::path(io::DirectoryPath(o.out)) / "figures").string() << ")\n";
   // The verdict of the command whose result is reported: diagnose's (a DOF it could not
   // diagnose), or with --no-diagnosis identify's (a DOF that failed).
   const bool failed = in.diagnosis ? !in.diagnosis->not_diagnosed.empty()
-                                   : in.identification && in.identification->status == ident::IdentifyStatus::kFailed;
+                                   : in.identification && in.identification->status ==
+                                                              ident::IdentifyStatus::kFailed;
   return failed ? kExitActionNeeded : kExitOk;
 }
 
 void BindReport(CLI::App* sub, ReportCommandOptions* o) {
   sub->add_option("INPUT", o->input,
                   "a schedule (schedule --json), a loop's JSON (loop --json), or a campaign "
-                  "(campaign.yaml or its directory)")->required();
+                  "(campaign.yaml or its directory)")
+      ->required();
   sub->add_option("-o,--out", o->out, "report directory to create (new or empty)")->required();
   sub->add_option("--vehicle", o->vehicle, "vehicle file (required with a schedule)");
-  sub->add_option("--pool", o->pool, "pool file (required with a schedule; default: the campaign's)");
+  sub->add_option("--pool", o->pool,
+                  "pool file (required with a schedule; default: the campaign's)");
   sub->add_option("--loop", o->loop, "also report this loop's history (loop --json)");
   sub->add_flag("--no-diagnosis", o->no_diagnosis, "identify the campaign without diagnosing it");
   AddAcceptUnitsFlag(sub, &o->accept_units);

@@ -1,5 +1,7 @@
 // The report library without the tool: a figure drawn by PLplot into PNG and SVG bytes, the
 // base64 of the data URIs, the HTML's escaping and units, and the figures of a schedule.
+#include "uuvplan/report/render.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -10,7 +12,6 @@
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/planner/schedule_planner.h"
 #include "uuvplan/report/html.h"
-#include "uuvplan/report/render.h"
 #include "uuvplan/report/schedule_figures.h"
 #include "uuvplan/report/sections.h"
 
@@ -41,7 +42,8 @@ TEST(ReportRender, PngAndSvgOfAFigure) {
   EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
   // IHDR holds the width and height (big-endian) at bytes 16..23: the figure's 1100 × 370.
   const auto be32 = [&](int at) {
-    return (static_cast<unsigned char>(png[at]) << 24) | (static_cast<unsigned char>(png[at + 1]) << 16) |
+    return (static_cast<unsigned char>(png[at]) << 24) |
+           (static_cast<unsigned char>(png[at + 1]) << 16) |
            (static_cast<unsigned char>(png[at + 2]) << 8) | static_cast<unsigned char>(png[at + 3]);
   };
   EXPECT_EQ(be32(16), 1100);
@@ -61,7 +63,8 @@ TEST(ReportHtml, Base64OfRfc4648Vectors) {
 
 TEST(ReportHtml, EscapesTextAndEmbedsFigures) {
   Document d{"<title>", "a & b", {}};
-  Section s{"one", "One", {"x < y"}, {{"t", {"duration (s)"}, {{"12.5"}}}}, {{"fig", "cap", "PNG"}}};
+  Section s{
+      "one", "One", {"x < y"}, {{"t", {"duration (s)"}, {{"12.5"}}}}, {{"fig", "cap", "PNG"}}};
   d.sections.push_back(s);
   const std::string html = Html(d);
   EXPECT_THAT(html, HasSubstr("&lt;title&gt;"));
@@ -90,12 +93,14 @@ TEST(ReportFigures, ScheduleFiguresOfRomeoSurge) {
     const Series& band = f.panels[0].series[0];
     ASSERT_EQ(band.style, Style::kBand);
     double lo = 0, hi = 0;
-    for (std::size_t i = 0; i < band.x.size(); ++i) lo = std::min(lo, band.y_low[i]), hi = std::max(hi, band.y_high[i]);
+    for (std::size_t i = 0; i < band.x.size(); ++i)
+      lo = std::min(lo, band.y_low[i]), hi = std::max(hi, band.y_high[i]);
     // The same grid as the pool check: the span fits the free length (1 mm for the coarser grid).
     EXPECT_LE(hi - lo, pool.FreeTravel(model::Dof::kSurge) + 1e-3) << f.name;
     EXPECT_GT(hi - lo, 0.0) << f.name;
     bool zero_line = false;
-    for (const Level& l : f.panels[1].levels) zero_line = zero_line || (l.y == 0 && l.style == Style::kLine);
+    for (const Level& l : f.panels[1].levels)
+      zero_line = zero_line || (l.y == 0 && l.style == Style::kLine);
     EXPECT_TRUE(zero_line) << f.name;
   }
 }

@@ -54,9 +54,10 @@ std::string Chromium() {
 // laptop screen) at build/artefacts/<shot>.
 std::string OpenInChromium(const std::string& browser, const std::string& html,
                            const std::string& shot, const TempDir& scratch) {
-  const std::string flags = " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
-                            " --disable-background-networking --disable-component-update"
-                            " --disable-sync --window-size=1366,900 --user-data-dir='";
+  const std::string flags =
+      " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
+      " --disable-background-networking --disable-component-update"
+      " --disable-sync --window-size=1366,900 --user-data-dir='";
   fs::create_directories(UUVPLAN_ARTEFACT_DIR);
   const std::string url = " 'file://" + fs::absolute(html).string() + "'";
   const std::string dom = scratch / "dom.html";
@@ -75,10 +76,11 @@ std::string OpenInChromium(const std::string& browser, const std::string& html,
   return ReadText(dom);
 }
 
-void ExpectRenders(const std::string& dir, const std::vector<std::string>& sections,
-                   int images, const std::string& shot, const TempDir& scratch) {
+void ExpectRenders(const std::string& dir, const std::vector<std::string>& sections, int images,
+                   const std::string& shot, const TempDir& scratch) {
   const std::string browser = Chromium();
-  if (browser.empty()) GTEST_SKIP() << "chromium not installed (scripts/install-deps.sh installs it)";
+  if (browser.empty())
+    GTEST_SKIP() << "chromium not installed (scripts/install-deps.sh installs it)";
   const std::string dom = OpenInChromium(browser, dir + "/report.html", shot, scratch);
   for (const auto& s : sections) EXPECT_THAT(dom, HasSubstr("<section id=\"" + s + "\">")) << s;
   EXPECT_EQ(Count(dom, "<img "), images);
@@ -88,21 +90,25 @@ TEST(ReportTool, RomeoScheduleReportRendersInChromium) {
   TempDir tmp;
   const std::string plan = tmp / "schedule.json";
   const ToolRun s = RunTool("schedule '" + kCases + "vehicle.yaml' --pool '" + kCases +
-                                "pool.yaml' --dof surge --dof heave --json '" + plan + "'", tmp);
+                                "pool.yaml' --dof surge --dof heave --json '" + plan + "'",
+                            tmp);
   ASSERT_EQ(s.status, 0) << s.err;
-  const ToolRun r = RunTool("report '" + plan + "' --vehicle '" + kCases + "vehicle.yaml' --pool '" +
-                                kCases + "pool.yaml' -o '" + (tmp / "report") + "'", tmp);
+  const ToolRun r =
+      RunTool("report '" + plan + "' --vehicle '" + kCases + "vehicle.yaml' --pool '" + kCases +
+                  "pool.yaml' -o '" + (tmp / "report") + "'",
+              tmp);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string html = ReadText(tmp / "report/report.html");
   const int trials = Count(ReadText(plan), "\"id\"");  // only trials have ids
   ASSERT_GT(trials, 1);
   EXPECT_EQ(CheckReportFiles(tmp / "report"), trials);  // one figure per trial
   EXPECT_EQ(Count(html, "id=\"fig-schedule-"), trials);
-  for (const char* unit : {"duration (s)", "min_thrust (N)", "length (m)", "largest forward thrust (N)"}) {
+  for (const char* unit :
+       {"duration (s)", "min_thrust (N)", "length (m)", "largest forward thrust (N)"}) {
     EXPECT_THAT(html, HasSubstr(std::string("<th>") + unit + "</th>"));
   }
-  ExpectRenders(tmp / "report", {"summary", "vehicle", "pool", "schedule"}, CheckReportFiles(tmp / "report"),
-                "report-romeo-schedule.png", tmp);
+  ExpectRenders(tmp / "report", {"summary", "vehicle", "pool", "schedule"},
+                CheckReportFiles(tmp / "report"), "report-romeo-schedule.png", tmp);
 }
 
 // A virtual ROMEO heave campaign (the planned heave trials run on truth-effects.yaml) after a
@@ -112,14 +118,22 @@ TEST(ReportTool, VirtualRomeoCampaignAfterLoopReport) {
   TempDir tmp;
   const std::string plan = tmp / "schedule.json", loop = tmp / "loop.json";
   ASSERT_EQ(RunTool("schedule '" + kCases + "vehicle.yaml' --pool '" + kCases +
-                        "pool.yaml' --dof heave --json '" + plan + "'", tmp).status, 0);
+                        "pool.yaml' --dof heave --json '" + plan + "'",
+                    tmp)
+                .status,
+            0);
   ASSERT_EQ(RunTool("simulate --truth '" + kCases + "truth-effects.yaml' --plan '" + plan +
-                        "' --out '" + (tmp / "campaign") + "'", tmp).status, 0);
+                        "' --out '" + (tmp / "campaign") + "'",
+                    tmp)
+                .status,
+            0);
   const ToolRun l = RunTool("loop --truth '" + kCases + "truth.yaml' --pool '" + kCases +
-                                "pool.yaml' --dof heave --budget 6 --json '" + loop + "'", tmp);
+                                "pool.yaml' --dof heave --budget 6 --json '" + loop + "'",
+                            tmp);
   ASSERT_TRUE(l.status == 0 || l.status == 4) << l.err;  // converged, or the budget spent
-  const ToolRun r = RunTool("report '" + (tmp / "campaign") + "' --loop '" + loop + "' -o '" +
-                                (tmp / "report") + "'", tmp);
+  const ToolRun r = RunTool(
+      "report '" + (tmp / "campaign") + "' --loop '" + loop + "' -o '" + (tmp / "report") + "'",
+      tmp);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string html = ReadText(tmp / "report/report.html");
   EXPECT_THAT(html, HasSubstr("<td class=\"t\">installation_loss</td>"));  // a candidate tested
@@ -129,15 +143,17 @@ TEST(ReportTool, VirtualRomeoCampaignAfterLoopReport) {
                           "diagnosis-heave-gains", "loop-percentile-error"}) {
     EXPECT_TRUE(fs::exists(tmp / ("report/figures/" + std::string(fig) + ".png"))) << fig;
   }
-  ExpectRenders(tmp / "report", {"summary", "vehicle", "estimates", "validation", "diagnosis", "loop"},
+  ExpectRenders(tmp / "report",
+                {"summary", "vehicle", "estimates", "validation", "diagnosis", "loop"},
                 CheckReportFiles(tmp / "report"), "report-romeo-campaign.png", tmp);
 }
 
 TEST(ReportTool, RealBlueRovYawReport) {
   UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
   TempDir tmp;
-  const ToolRun r = RunTool("report '" + testing::RealDataPath("bluerov-yaw-2016") + "' -o '" +
-                                (tmp / "report") + "'", tmp);
+  const ToolRun r = RunTool(
+      "report '" + testing::RealDataPath("bluerov-yaw-2016") + "' -o '" + (tmp / "report") + "'",
+      tmp);
   ASSERT_EQ(r.status, 0) << r.err;  // diagnose's verdict on these logs: every DOF diagnosed
   EXPECT_GE(CheckReportFiles(tmp / "report"), 5);
   const std::string html = ReadText(tmp / "report/report.html");
@@ -161,7 +177,8 @@ TEST(ReportTool, BadInputExitsTwoNamingFileOrKey) {
   fs::create_directories(tmp / "full");
   tmp.Write("full/x.txt", "");
   r = RunTool("report '" + plan + "' --vehicle '" + kCases + "vehicle.yaml' --pool '" + kCases +
-                  "pool.yaml' -o '" + (tmp / "full") + "'", tmp);
+                  "pool.yaml' -o '" + (tmp / "full") + "'",
+              tmp);
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.err, HasSubstr("not empty"));
   EXPECT_FALSE(fs::exists(tmp / "out"));  // nothing written on bad input

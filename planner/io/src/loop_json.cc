@@ -47,7 +47,8 @@ void ReadIteration(const JsonValue& it, int index, LoopHistory* h) {
     for (const auto& [name, e] : p.items()) {
       const JsonValue ev(e, dv.file(), dv.KeyPath(name));
       LoopPoint point{index, pool_time, NumberOrNaN(ev.Required("value")),
-                      NumberOrNaN(ev.Required("sigma")), d == dof ? PredictedSigma(it, name) : kNaN};
+                      NumberOrNaN(ev.Required("sigma")),
+                      d == dof ? PredictedSigma(it, name) : kNaN};
       h->series[d][name].push_back(point);
     }
   }
@@ -71,9 +72,11 @@ LoopHistory ReadLoopJson(const std::string& path) {
     ReadIteration(iterations.Item(i), static_cast<int>(i) + 1, &h);
   }
   if (const auto s = root.Optional("status")) h.status = String(*s, "a status");
-  if (const auto m = root.Optional("message")) h.message = m->json().is_string() ? m->json().get<std::string>() : "";
+  if (const auto m = root.Optional("message"))
+    h.message = m->json().is_string() ? m->json().get<std::string>() : "";
   if (const auto t = root.Optional("target")) h.target_percent = PositiveNumber(*t, "%");
-  if (const auto p = root.Optional("pool_time")) h.pool_time = NonNegativeNumber(*p, "a number >= 0 (s)");
+  if (const auto p = root.Optional("pool_time"))
+    h.pool_time = NonNegativeNumber(*p, "a number >= 0 (s)");
   return h;
 }
 

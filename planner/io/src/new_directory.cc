@@ -1,12 +1,12 @@
 #include "uuvplan/io/new_directory.h"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <system_error>
-
-#include <sys/stat.h>
 
 #include "uuvplan/model/input_error.h"
 
@@ -35,8 +35,8 @@ fs::path NewSiblingDirectory(const fs::path& out, const std::string& dir) {
   if (out.has_parent_path()) fs::create_directories(out.parent_path(), ec);
   std::string pattern = out.string() + ".tmp-uuvplan-XXXXXX";
   if (!::mkdtemp(pattern.data())) {
-    throw InputError(dir, "cannot create a temporary directory beside it: " +
-                              std::string(std::strerror(errno)));
+    throw InputError(
+        dir, "cannot create a temporary directory beside it: " + std::string(std::strerror(errno)));
   }
   return pattern;
 }
@@ -50,8 +50,9 @@ void MoveIntoPlace(const fs::path& tmp, const fs::path& out, const std::string& 
   std::error_code ignored;
   fs::remove_all(tmp, ignored);  // ours alone (NewSiblingDirectory)
   if (fs::exists(out)) {
-    throw InputError(dir, "another run wrote " + what + " there while this one was running; "
-                          "nothing of this run was kept");
+    throw InputError(dir, "another run wrote " + what +
+                              " there while this one was running; "
+                              "nothing of this run was kept");
   }
   throw InputError(dir, "cannot move " + what + " into place: " + ec.message());
 }

@@ -28,11 +28,20 @@ std::string Escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -52,7 +61,8 @@ void WriteTable(const Table& t, std::ostream& out) {
   out << "</tr></thead><tbody>\n";
   for (const auto& row : t.rows) {
     out << "<tr>";
-    for (const auto& cell : row) out << (IsNumber(cell) ? "<td>" : "<td class=\"t\">") << Escape(cell) << "</td>";
+    for (const auto& cell : row)
+      out << (IsNumber(cell) ? "<td>" : "<td class=\"t\">") << Escape(cell) << "</td>";
     out << "</tr>\n";
   }
   out << "</tbody></table></div>\n";

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "figure_parts.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::report {
@@ -19,8 +20,8 @@ Panel DofPanel(model::Dof dof, const std::map<std::string, std::vector<io::LoopP
   p.x_label = "accumulated pool time (min)";
   p.y_label = "100·σ/|θ| (%)";
   p.log_y = true;
-  const Colour colours[] = {Colour::kBlue, Colour::kOrange, Colour::kGreen, Colour::kPurple,
-                            Colour::kSky, Colour::kVermillion, Colour::kBlack, Colour::kGrey};
+  const Colour colours[] = {Colour::kBlue, Colour::kOrange,     Colour::kGreen, Colour::kPurple,
+                            Colour::kSky,  Colour::kVermillion, Colour::kBlack, Colour::kGrey};
   int k = 0;
   for (const auto& [name, points] : params) {
     Series achieved{name, Style::kLine, colours[k % 8], {}, {}, {}, {}};
@@ -42,20 +43,21 @@ Panel DofPanel(model::Dof dof, const std::map<std::string, std::vector<io::LoopP
     if (predicted.x.size() > 0) p.series.push_back(std::move(predicted));
     ++k;
   }
-  if (target > 0) p.levels.push_back({target, "target " + model::Significant(target, 3) + " %", Colour::kVermillion, Style::kDotted});
+  if (target > 0)
+    p.levels.push_back({target, "target " + model::Significant(target, 3) + " %",
+                        Colour::kVermillion, Style::kDotted});
   return p;
 }
 
 }  // namespace
 
 Figure LoopFigure(const io::LoopHistory& history) {
-  Figure f;
-  f.name = "loop-percentile-error";
-  f.title = "Loop: percentile error against pool time (" + history.status + ")";
-  f.caption = "Each parameter's percentile error 100·σ/|θ| (seed 000 §III-A, log scale) after "
-              "each trial of the loop against the accumulated pool time: achieved (solid, "
-              "markers: the identification's σ) and predicted by the planner for the DOF whose "
-              "trial it planned (dashed), with the target.";
+  Figure f = StartFigure(
+      "loop-percentile-error", "Loop: percentile error against pool time (" + history.status + ")",
+      "Each parameter's percentile error 100·σ/|θ| (seed 000 §III-A, log scale) after "
+      "each trial of the loop against the accumulated pool time: achieved (solid, "
+      "markers: the identification's σ) and predicted by the planner for the DOF whose "
+      "trial it planned (dashed), with the target.");
   for (const auto& [dof, params] : history.series) {
     f.panels.push_back(DofPanel(dof, params, history.target_percent));
   }

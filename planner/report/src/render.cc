@@ -21,12 +21,18 @@ struct Rgba {
 };
 
 // cmap0 index = 1 + Colour (0 is the white background). Okabe–Ito colours; bands at 30%.
-constexpr std::array<Rgba, 13> kPalette = {{{0, 0, 0, 1.0},       {0, 114, 178, 1.0},
-                                            {230, 159, 0, 1.0},   {0, 158, 115, 1.0},
-                                            {213, 94, 0, 1.0},    {204, 121, 167, 1.0},
-                                            {86, 180, 233, 1.0},  {240, 228, 66, 1.0},
-                                            {128, 128, 128, 1.0}, {0, 114, 178, 0.25},
-                                            {230, 159, 0, 0.3},   {128, 128, 128, 0.25},
+constexpr std::array<Rgba, 13> kPalette = {{{0, 0, 0, 1.0},
+                                            {0, 114, 178, 1.0},
+                                            {230, 159, 0, 1.0},
+                                            {0, 158, 115, 1.0},
+                                            {213, 94, 0, 1.0},
+                                            {204, 121, 167, 1.0},
+                                            {86, 180, 233, 1.0},
+                                            {240, 228, 66, 1.0},
+                                            {128, 128, 128, 1.0},
+                                            {0, 114, 178, 0.25},
+                                            {230, 159, 0, 0.3},
+                                            {128, 128, 128, 0.25},
                                             {213, 94, 0, 0.25}}};
 
 PLINT Index(Colour c) { return 1 + static_cast<PLINT>(c); }
@@ -152,10 +158,16 @@ void DrawBars(plstream& pls, const Series& s) {
 
 void DrawSeries(plstream& pls, const Series& s, bool log_y) {
   switch (s.style) {
-    case Style::kBand: DrawBand(pls, s, log_y); break;
+    case Style::kBand:
+      DrawBand(pls, s, log_y);
+      break;
     case Style::kPoints:
-    case Style::kErrorBars: DrawMarkers(pls, s, log_y); break;
-    case Style::kBars: DrawBars(pls, s); break;
+    case Style::kErrorBars:
+      DrawMarkers(pls, s, log_y);
+      break;
+    case Style::kBars:
+      DrawBars(pls, s);
+      break;
     default:
       SetStyle(pls, s.colour, s.style);
       DrawLine(pls, s.x, s.y, log_y);
@@ -194,12 +206,14 @@ PLINT LegendOpt(Style s) {
 std::vector<Entry> LegendEntries(const Panel& p, const Range& y) {
   std::vector<Entry> entries;
   for (const Series& s : p.series) {
-    if (!s.label.empty()) entries.push_back({LegendOpt(s.style), Index(s.colour), LineStyle(s.style), Text(s.label)});
+    if (!s.label.empty())
+      entries.push_back({LegendOpt(s.style), Index(s.colour), LineStyle(s.style), Text(s.label)});
   }
   for (const Level& l : p.levels) {
     if (l.label.empty() || !Shown(l, y, p.log_y)) continue;
     const std::string text = Text(l.label);
-    const bool seen = std::any_of(entries.begin(), entries.end(), [&](const Entry& e) { return e.text == text; });
+    const bool seen =
+        std::any_of(entries.begin(), entries.end(), [&](const Entry& e) { return e.text == text; });
     if (!seen) entries.push_back({PL_LEGEND_LINE, Index(l.colour), LineStyle(l.style), text});
   }
   return entries;
@@ -210,7 +224,8 @@ void DrawLegend(plstream& pls, const Panel& p, const Range& y) {
   const std::vector<Entry> entries = LegendEntries(p, y);
   if (entries.empty()) return;
   const std::size_t n = entries.size();
-  std::vector<PLINT> opt(n), colours(n), black(n, Index(Colour::kBlack)), patterns(n, 0), styles(n), numbers(n, 1);
+  std::vector<PLINT> opt(n), colours(n), black(n, Index(Colour::kBlack)), patterns(n, 0), styles(n),
+      numbers(n, 1);
   std::vector<PLFLT> scales(n, 0.8), widths(n, 2.0), box_widths(n, 1.0);
   std::vector<const char*> text(n), symbols(n, "•");
   for (std::size_t i = 0; i < n; ++i) {
@@ -221,11 +236,11 @@ void DrawLegend(plstream& pls, const Panel& p, const Range& y) {
   }
   PLFLT w = 0, h = 0;
   pls.schr(0, 0.75);
-  pls.legend(&w, &h, PL_LEGEND_BACKGROUND, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE,
-             0.01, 0.0, 0.05, 0, 1, 1, static_cast<PLINT>(n), 1, static_cast<PLINT>(n), opt.data(),
-             0.5, 0.7, 1.8, 0.0, black.data(), text.data(), colours.data(), patterns.data(),
-             scales.data(), box_widths.data(), colours.data(), styles.data(), widths.data(),
-             colours.data(), scales.data(), numbers.data(), symbols.data());
+  pls.legend(&w, &h, PL_LEGEND_BACKGROUND, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE, 0.01, 0.0, 0.05,
+             0, 1, 1, static_cast<PLINT>(n), 1, static_cast<PLINT>(n), opt.data(), 0.5, 0.7, 1.8,
+             0.0, black.data(), text.data(), colours.data(), patterns.data(), scales.data(),
+             box_widths.data(), colours.data(), styles.data(), widths.data(), colours.data(),
+             scales.data(), numbers.data(), symbols.data());
   pls.schr(0, 0.75);
 }
 
@@ -285,8 +300,9 @@ void Draw(plstream& pls, const Figure& f) {
   for (std::size_t i = 0; i < f.panels.size(); ++i) {
     const int r = static_cast<int>(i) / columns, c = static_cast<int>(i) % columns;
     const double h = (1 - title) / rows;
-    DrawPanel(pls, f.panels[i], static_cast<double>(c) / columns, static_cast<double>(c + 1) / columns,
-              1 - title - (r + 1) * h, 1 - title - r * h, columns == 1 ? 0.35 : 0.26);
+    DrawPanel(pls, f.panels[i], static_cast<double>(c) / columns,
+              static_cast<double>(c + 1) / columns, 1 - title - (r + 1) * h, 1 - title - r * h,
+              columns == 1 ? 0.35 : 0.26);
   }
 }
 
@@ -310,11 +326,13 @@ bool HasDevice(const char* name) {
 std::string Render(const Figure& figure, Format format) {
   const char* device = format == Format::kPng ? "pngcairo" : "svgcairo";
   if (!HasDevice(device)) {
-    throw std::runtime_error(std::string("PLplot has no '") + device +
-                             "' driver: install Debian's plplot-driver-cairo (scripts/install-deps.sh)");
+    throw std::runtime_error(
+        std::string("PLplot has no '") + device +
+        "' driver: install Debian's plplot-driver-cairo (scripts/install-deps.sh)");
   }
   Figure f = figure;
-  const int rows = (static_cast<int>(f.panels.size()) + std::max(1, f.columns) - 1) / std::max(1, f.columns);
+  const int rows =
+      (static_cast<int>(f.panels.size()) + std::max(1, f.columns) - 1) / std::max(1, f.columns);
   if (f.height <= 0) f.height = 40 + 330 * std::max(rows, 1);
   char* buffer = nullptr;
   std::size_t size = 0;

@@ -38,7 +38,8 @@ void AddIdentification(const ReportInputs& in, Document* doc, ReportFiles* out) 
 void AddDiagnosis(const ReportInputs& in, Document* doc, ReportFiles* out) {
   Section s = DiagnosisSection(*in.diagnosis);
   for (const BeforeAfter& ba : in.before_after) {
-    AddFigures({ResidualsBeforeAfterFigure(ba), CandidateGainFigure(*in.diagnosis, ba.dof)}, &s, out);
+    AddFigures({ResidualsBeforeAfterFigure(ba), CandidateGainFigure(*in.diagnosis, ba.dof)}, &s,
+               out);
   }
   doc->sections.push_back(std::move(s));
 }
@@ -53,7 +54,8 @@ ReportFiles BuildReport(const ReportInputs& in) {
   if (in.schedule) {
     Section s = ScheduleSection(*in.schedule);
     if (in.vehicle && in.pool) {
-      AddFigures(ScheduleFigures(*in.vehicle, *in.pool, *in.schedule, in.planner, &out.notes), &s, &out);
+      AddFigures(ScheduleFigures(*in.vehicle, *in.pool, *in.schedule, in.planner, &out.notes), &s,
+                 &out);
     }
     doc.sections.push_back(std::move(s));
   }
@@ -65,10 +67,11 @@ ReportFiles BuildReport(const ReportInputs& in) {
     doc.sections.push_back(std::move(s));
   }
   if (!out.notes.empty()) doc.sections.push_back({"notes", "Notes", out.notes, {}, {}});
-  doc.sections.insert(doc.sections.begin(),
-                      SummarySection(in.schedule ? &*in.schedule : nullptr,
-                                     in.identification ? &*in.identification : nullptr,
-                                     in.diagnosis ? &*in.diagnosis : nullptr, in.loop ? &*in.loop : nullptr));
+  doc.sections.insert(
+      doc.sections.begin(),
+      SummarySection(in.schedule ? &*in.schedule : nullptr,
+                     in.identification ? &*in.identification : nullptr,
+                     in.diagnosis ? &*in.diagnosis : nullptr, in.loop ? &*in.loop : nullptr));
   out.files["report.html"] = Html(doc);
   return out;
 }

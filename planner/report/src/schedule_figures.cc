@@ -43,8 +43,10 @@ Panel PositionPanel(const planner::DofContext& ctx, const planner::PlannedTrial&
   Panel p;
   p.title = "position over the a priori box";
   p.x_label = "t (s)";
-  p.y_label = std::string(model::DofName(d.dof)) + " position (" + Unit(model::PositionUnit(d.dof)) + ")";
-  p.series.push_back({"envelope of the box", Style::kBand, Colour::kBandBlue, e.t, {}, e.low, e.high});
+  p.y_label =
+      std::string(model::DofName(d.dof)) + " position (" + Unit(model::PositionUnit(d.dof)) + ")";
+  p.series.push_back(
+      {"envelope of the box", Style::kBand, Colour::kBandBlue, e.t, {}, e.low, e.high});
   p.series.push_back({"centre vehicle", Style::kLine, Colour::kBlue, e.t, e.nominal, {}, {}});
   const double lo = *std::min_element(e.low.begin(), e.low.end());
   const double hi = *std::max_element(e.high.begin(), e.high.end());
@@ -69,7 +71,8 @@ std::vector<Level> ThrustLevels(const model::Vehicle& v, const planner::Thruster
   std::vector<Level> levels = {{0.0, "zero (reversal)", Colour::kBlack, Style::kLine, true}};
   auto limit = [&](double y) {
     const bool near = std::abs(y) <= 2 * largest;
-    levels.push_back({y, "limit " + model::Significant(y, 3) + " N", Colour::kVermillion, Style::kDashed, near});
+    levels.push_back(
+        {y, "limit " + model::Significant(y, 3) + " N", Colour::kVermillion, Style::kDashed, near});
     if (!near) *off_scale += (off_scale->empty() ? "" : ", ") + model::Significant(y, 3) + " N";
   };
   for (double x : forward) limit(x);
@@ -87,20 +90,26 @@ std::vector<Panel> ThrustPanels(const model::Vehicle& v, const model::TrialDesig
   thrusters.title = "each thruster's force tau_i = share_i·phi_n";
   thrusters.x_label = "t (s)";
   thrusters.y_label = "thrust (N)";
-  const Colour colours[] = {Colour::kBlue, Colour::kOrange, Colour::kGreen, Colour::kPurple,
-                            Colour::kSky, Colour::kVermillion, Colour::kBlack, Colour::kGrey};
+  const Colour colours[] = {Colour::kBlue, Colour::kOrange,     Colour::kGreen, Colour::kPurple,
+                            Colour::kSky,  Colour::kVermillion, Colour::kBlack, Colour::kGrey};
   int k = 0;
   for (std::size_t i = 0; i < v.thrusters.size(); ++i) {
     if (!f.used[i]) continue;
-    thrusters.series.push_back({v.thrusters[i].name, k % 2 ? Style::kDashed : Style::kLine,
-                                colours[k % 8], f.t, f.force[i], {}, {}});
+    thrusters.series.push_back({v.thrusters[i].name,
+                                k % 2 ? Style::kDashed : Style::kLine,
+                                colours[k % 8],
+                                f.t,
+                                f.force[i],
+                                {},
+                                {}});
     ++k;
   }
   std::string off_scale;
   thrusters.levels = ThrustLevels(v, f, &off_scale);
   if (!off_scale.empty()) thrusters.title += " (limits " + off_scale + " off the scale)";
   Panel input;
-  input.title = "designed input phi_n (" + std::string(model::TrialKindName(d.kind)) + ", mapping " + d.mapping + ")";
+  input.title = "designed input phi_n (" + std::string(model::TrialKindName(d.kind)) +
+                ", mapping " + d.mapping + ")";
   input.x_label = "t (s)";
   input.y_label = "phi_n (" + Unit(model::ForceUnit(d.dof)) + ")";
   input.series.push_back({"phi_n", Style::kLine, Colour::kBlack, f.t, f.nominal, {}, {}});
@@ -114,9 +123,10 @@ Figure TrialFigure(const planner::DofContext& ctx, const planner::PlannedTrial& 
   char number[16];
   std::snprintf(number, sizeof number, "%02d", index + 1);  // file names sort in trial order
   f.name = "schedule-" + std::string(number) + "-" + d.id;
-  f.title = "Trial " + std::to_string(index + 1) + ": " + d.id + " (" + std::string(model::DofName(d.dof)) +
-            ", " + model::Significant(d.duration, 3) + " s)";
-  f.caption = "Trial " + d.id + ": the position from rest over the a priori box (shaded: the "
+  f.title = "Trial " + std::to_string(index + 1) + ": " + d.id + " (" +
+            std::string(model::DofName(d.dof)) + ", " + model::Significant(d.duration, 3) + " s)";
+  f.caption = "Trial " + d.id +
+              ": the position from rest over the a priori box (shaded: the "
               "envelope of the pool check's extreme vehicles; line: the centre vehicle), with the "
               "pool's walls and margins placed so the excursion is centred; each working "
               "thruster's force with its limits, min_thrust and the zero line (a reversal would "

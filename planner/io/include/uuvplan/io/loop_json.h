@@ -12,11 +12,11 @@
 namespace uuvplan::io {
 
 struct LoopPoint {
-  int iteration = 0;         ///< 1-based
-  double pool_time = 0.0;    ///< s, accumulated when the trial ends
-  double value = 0.0;        ///< the estimate after the trial (parameter unit)
-  double sigma = 0.0;        ///< its achieved σ (NaN when not estimated)
-  double predicted = 0.0;    ///< σ the planner predicted for it (NaN: not this DOF's trial)
+  int iteration = 0;       ///< 1-based
+  double pool_time = 0.0;  ///< s, accumulated when the trial ends
+  double value = 0.0;      ///< the estimate after the trial (parameter unit)
+  double sigma = 0.0;      ///< its achieved σ (NaN when not estimated)
+  double predicted = 0.0;  ///< σ the planner predicted for it (NaN: not this DOF's trial)
 };
 
 struct LoopTrialRow {

@@ -10,11 +10,24 @@
 namespace uuvplan::report {
 
 /// The report's palette (colour-blind safe, Okabe–Ito), plus light fills for bands.
-enum class Colour { kBlack, kBlue, kOrange, kGreen, kVermillion, kPurple, kSky, kYellow, kGrey,
-                    kBandBlue, kBandOrange, kBandGrey, kBandRed };
+enum class Colour {
+  kBlack,
+  kBlue,
+  kOrange,
+  kGreen,
+  kVermillion,
+  kPurple,
+  kSky,
+  kYellow,
+  kGrey,
+  kBandBlue,
+  kBandOrange,
+  kBandGrey,
+  kBandRed
+};
 
 enum class Style {
-  kLine,       ///< y against x
+  kLine,  ///< y against x
   kDashed,
   kDotted,
   kBand,       ///< filled between y_low and y_high over x
@@ -57,9 +70,9 @@ struct Figure {
   std::string title;    ///< one line above the panels
   std::string caption;  ///< what the figure shows, for the report
   std::vector<Panel> panels;
-  int columns = 1;      ///< panels laid out in rows of this many
-  int width = 1100;     ///< pixels of the PNG (the SVG has the same size in points)
-  int height = 0;       ///< 0: 330 per row of panels plus the title
+  int columns = 1;   ///< panels laid out in rows of this many
+  int width = 1100;  ///< pixels of the PNG (the SVG has the same size in points)
+  int height = 0;    ///< 0: 330 per row of panels plus the title
 };
 
 }  // namespace uuvplan::report

@@ -15,9 +15,9 @@ struct Table {
 };
 
 struct EmbeddedFigure {
-  std::string name;     ///< file stem (also the figure's files beside the report)
+  std::string name;  ///< file stem (also the figure's files beside the report)
   std::string caption;
-  std::string png;      ///< the PNG file's bytes
+  std::string png;  ///< the PNG file's bytes
 };
 
 struct Section {

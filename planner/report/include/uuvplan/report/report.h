@@ -26,8 +26,8 @@ struct ReportInputs {
   std::string vehicle_source;
   std::optional<model::Pool> pool;
   std::string pool_source;
-  std::optional<planner::Schedule> schedule;  ///< needs vehicle and pool for its figures
-  planner::PlannerOptions planner;            ///< the box the schedule's figures simulate
+  std::optional<planner::Schedule> schedule;            ///< needs vehicle and pool for its figures
+  planner::PlannerOptions planner;                      ///< the box the schedule's figures simulate
   std::optional<ident::IdentifyResult> identification;  ///< with free-run curves
   std::optional<ident::DiagnosisResult> diagnosis;
   std::vector<BeforeAfter> before_after;  ///< per DOF diagnosed

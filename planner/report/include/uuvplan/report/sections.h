@@ -28,7 +28,8 @@ Section DiagnosisSection(const ident::DiagnosisResult& diagnosis);
 Section LoopSection(const io::LoopHistory& history);
 /// The verdicts first, so the first screen answers: schedule size, each DOF's identification
 /// status, the effects found, the loop's outcome (whichever are given).
-Section SummarySection(const planner::Schedule* schedule, const ident::IdentifyResult* identification,
+Section SummarySection(const planner::Schedule* schedule,
+                       const ident::IdentifyResult* identification,
                        const ident::DiagnosisResult* diagnosis, const io::LoopHistory* loop);
 
 }  // namespace uuvplan::report
