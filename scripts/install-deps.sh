@@ -8,6 +8,10 @@ packages=(
   libeigen3-dev libnlopt-cxx-dev coinor-libipopt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  # figures (`uuvplan report`): PLplot, its cairo drivers (pngcairo, svgcairo)
+  libplplot-dev plplot-driver-cairo
+  # the report's render test opens the HTML in headless Chromium
+  chromium fonts-dejavu-core
 )
 
 missing=()

@@ -126,6 +126,7 @@ ScoreResult ScoreCampaign(const model::Campaign& campaign, const model::Truth& g
     const Eigen::VectorXd theta = dof_model.Theta(given.dofs.at(dof).params, &neutral);
     ValidationOptions vo;
     vo.step_s = options.step_s;
+    vo.curve_points = options.curve_points;
     std::vector<TrialFit> fits;
     for (const TrialData& t : trials) fits.push_back(ValidateTrial(dof_model, theta, t, vo));
     result.dofs.push_back(PoolDof(dof, fits));

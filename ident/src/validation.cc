@@ -81,6 +81,25 @@ ResidualAnalysis AnalyzeResiduals(const std::vector<double>& r, int max_lag, int
   return a;
 }
 
+namespace {
+
+// Up to `points` of the samples of `s` at t >= 0 (the ones `r`, measured − model, is of).
+FreeRunCurve Decimate(const Signal& s, const std::vector<double>& r, int points) {
+  FreeRunCurve c;
+  std::size_t first = 0;
+  while (first < s.size() && s.t[first] < 0) ++first;
+  const std::size_t n = std::min(r.size(), s.size() - first);
+  const std::size_t stride = std::max<std::size_t>(1, (n + points - 1) / points);
+  for (std::size_t k = 0; k < n; k += stride) {
+    c.t.push_back(s.t[first + k]);
+    c.measured.push_back(s.y[first + k]);
+    c.simulated.push_back(s.y[first + k] - r[k]);
+  }
+  return c;
+}
+
+}  // namespace
+
 TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& theta,
                        const TrialData& trial, const ValidationOptions& o,
                        const Eigen::VectorXd* x0_given) {
@@ -189,6 +208,7 @@ TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& thet
   const double step = s.size() > 1 ? (s.t.back() - s.t.front()) / (s.size() - 1) : 0.0;
   f.residuals = AnalyzeResiduals(r, o.max_lag, o.bins, step);
   f.residual_signal = use_pos ? "position" : "velocity";
+  if (o.curve_points > 0) f.curve = Decimate(s, r, o.curve_points);
   return f;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "uuvplan/io/files.h"
+#include "uuvplan/io/new_directory.h"
 #include "uuvplan/io/pool_yaml.h"
 #include "uuvplan/io/trial_log_csv.h"
 #include "uuvplan/io/vehicle_yaml.h"
@@ -166,14 +167,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The campaign directory `dir` without a trailing separator ("dir/" and "dir" are the same
-// directory; the temporary sibling must be beside it).
-fs::path CampaignDirectory(const std::string& dir) {
-  fs::path out = fs::path(dir).lexically_normal();
-  if (out.filename().empty()) out = out.parent_path();
-  return out;
-}
-
 void WriteCampaignFiles(const fs::path& tmp, const Campaign& campaign, const Vehicle& vehicle,
                         const std::vector<std::string>& trial_comments) {
   for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
@@ -188,53 +181,12 @@ void WriteCampaignFiles(const fs::path& tmp, const Campaign& campaign, const Veh
 
 }  // namespace
 
-void CheckNewCampaignDirectory(const std::string& dir) {
-  const fs::path out = CampaignDirectory(dir);
-  std::error_code ec;
-  if (fs::exists(out) && !fs::is_empty(out, ec)) {
-    throw InputError(dir,
-                     "output directory exists and is not empty; choose a new --out "
-                     "(nothing is overwritten)");
-  }
-}
-
-namespace {
-
-// A new, empty directory beside `out`, unique to this call (mkdtemp: created exclusively, so
-// it can be neither a user's directory nor another run's).
-fs::path NewSiblingDirectory(const fs::path& out, const std::string& dir) {
-  std::error_code ec;
-  if (out.has_parent_path()) fs::create_directories(out.parent_path(), ec);
-  std::string pattern = out.string() + ".tmp-uuvplan-XXXXXX";
-  if (!::mkdtemp(pattern.data())) {
-    throw InputError(dir, "cannot create a temporary directory beside it: " +
-                              std::string(std::strerror(errno)));
-  }
-  return pattern;
-}
-
-// Renames the finished `tmp` to `out` (an empty `out` made by the user is replaced). When
-// another run put its campaign there first, the rename fails and says so.
-void MoveIntoPlace(const fs::path& tmp, const fs::path& out, const std::string& dir) {
-  std::error_code ec;
-  if (fs::is_directory(out) && fs::is_empty(out, ec)) fs::remove(out, ec);
-  fs::rename(tmp, out, ec);
-  if (!ec) return;
-  std::error_code ignored;
-  fs::remove_all(tmp, ignored);  // ours alone (NewSiblingDirectory)
-  if (fs::exists(out)) {
-    throw InputError(dir, "another run wrote a campaign there while this one was running; "
-                          "nothing of this run was kept");
-  }
-  throw InputError(dir, "cannot move the campaign into place: " + ec.message());
-}
-
-}  // namespace
+void CheckNewCampaignDirectory(const std::string& dir) { CheckNewDirectory(dir, "--out"); }
 
 Campaign WriteCampaign(const std::string& dir, Campaign campaign, const Vehicle& vehicle,
                        const std::vector<std::string>& trial_comments) {
   CheckNewCampaignDirectory(dir);
-  const fs::path out = CampaignDirectory(dir);
+  const fs::path out = DirectoryPath(dir);
   // Everything is written to a temporary sibling directory first, then renamed into place,
   // so a campaign is written whole or not at all.
   const fs::path tmp = NewSiblingDirectory(out, dir);
@@ -250,7 +202,7 @@ Campaign WriteCampaign(const std::string& dir, Campaign campaign, const Vehicle&
     fs::remove_all(tmp, ec);  // ours alone
     throw;
   }
-  MoveIntoPlace(tmp, out, dir);
+  MoveIntoPlace(tmp, out, dir, "a campaign");
   return campaign;
 }
 

@@ -39,6 +39,7 @@ struct ScoreOptions {
   TrialDataOptions data;  ///< trial preparation, as identify's and diagnose's default
   double step_s = 0.02;   ///< RK4 step of the free runs (OutputErrorOptions::step_s)
   std::vector<model::Dof> dofs;  ///< DOFs to score; empty: every DOF the model gives
+  int curve_points = 0;  ///< keep each free run for figures (ValidationOptions::curve_points)
   bool IsValid(std::string* error) const;
 };
 

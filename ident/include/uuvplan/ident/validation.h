@@ -46,6 +46,16 @@ struct ValidationOptions {
   double step_s = 0.02;  ///< RK4 step of the free-run simulation
   int max_lag = 20;
   int bins = 11;
+  /// Keep the free run beside the measurement at up to this many sample times (evenly
+  /// decimated) in TrialFit::curve, for figures; 0 keeps nothing.
+  int curve_points = 0;
+};
+
+/// The measured and simulated signal (the one the residuals are of) at a trial's sample times.
+struct FreeRunCurve {
+  std::vector<double> t;          ///< s from the trial's start
+  std::vector<double> measured;   ///< m or rad (position), m/s or rad/s (velocity)
+  std::vector<double> simulated;  ///< the free run at the same times
 };
 
 struct TrialFit {
@@ -63,6 +73,7 @@ struct TrialFit {
   int position_samples = 0;
   ResidualAnalysis residuals;  ///< of the position (if measured) else velocity errors
   std::string residual_signal; ///< "position" or "velocity"
+  FreeRunCurve curve;          ///< with ValidationOptions::curve_points > 0, else empty
   double initial_position = 0.0, initial_velocity = 0.0;  ///< the free run's initial state
 };
 

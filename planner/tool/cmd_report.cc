@@ -1,0 +1,157 @@
+// `uuvplan report INPUT -o DIR [--vehicle V] [--pool P] [--loop LOOP.json] [--no-diagnosis]
+// [--accept-units]`: one self-contained HTML file (figures embedded, no network) and the
+// figures as PNG and SVG files (planner/report, docs/report.md). INPUT is a schedule
+// (`schedule --json`, with --vehicle and --pool), a loop's JSON (`loop --json`), or a campaign
+// (identified and diagnosed here). DIR is written whole or not at all. Exit status: 0 written;
+// 1 written, but a DOF could not be diagnosed (with --no-diagnosis: could not be identified),
+// as `diagnose` (`identify`) would say; 2 bad input.
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include "command.h"
+#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/score.h"
+#include "uuvplan/io/campaign_yaml.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/loop_json.h"
+#include "uuvplan/io/new_directory.h"
+#include "uuvplan/io/pool_yaml.h"
+#include "uuvplan/io/schedule_json.h"
+#include "uuvplan/io/vehicle_yaml.h"
+#include "uuvplan/model/input_error.h"
+#include "uuvplan/report/report.h"
+
+namespace uuvplan::tool {
+namespace {
+
+using model::InputError;
+
+struct ReportCommandOptions {
+  std::string input;
+  std::string out;
+  std::string vehicle;
+  std::string pool;
+  std::string loop;
+  bool no_diagnosis = false;
+  bool accept_units = false;
+};
+
+// Samples kept per free run for the figures: finer than a 1100 px wide panel shows.
+constexpr int kCurvePoints = 800;
+
+bool IsJsonFile(const std::string& path) {
+  return std::filesystem::path(path).extension() == ".json" &&
+         std::filesystem::is_regular_file(path);
+}
+
+void AddVehicleAndPool(const ReportCommandOptions& o, report::ReportInputs* in) {
+  if (!o.vehicle.empty()) {
+    in->vehicle = io::ReadVehicle(o.vehicle);
+    in->vehicle_source = o.vehicle;
+  }
+  if (!o.pool.empty()) {
+    in->pool = io::ReadPool(o.pool);
+    in->pool_source = o.pool;
+  }
+}
+
+void AddSchedule(const ReportCommandOptions& o, report::ReportInputs* in) {
+  if (o.vehicle.empty() || o.pool.empty()) {
+    throw InputError(o.input,
+                     "a schedule names neither its vehicle nor its pool: expected "
+                     "--vehicle VEHICLE.yaml and --pool POOL.yaml (those given to `schedule`)");
+  }
+  in->title = "Schedule report";
+  in->schedule = io::ReadScheduleJson(o.input);
+}
+
+// The free runs of the standard and the extended model of each diagnosed DOF.
+void AddBeforeAfter(const model::Campaign& campaign, report::ReportInputs* in) {
+  for (const ident::DofIdentification& ext : in->diagnosis->extended) {
+    const ident::DofIdentification* std_model = nullptr;
+    for (const auto& s : in->diagnosis->standard) {
+      if (s.dof == ext.dof) std_model = &s;
+    }
+    if (!std_model) continue;
+    ident::ScoreOptions so;
+    so.dofs = {ext.dof};
+    so.curve_points = kCurvePoints;
+    report::BeforeAfter ba;
+    ba.dof = ext.dof;
+    model::Truth given{campaign.vehicle, {{ext.dof, ident::ModelOf(*std_model)}}, {}, 0.01};
+    ba.before = ident::ScoreCampaign(campaign, given, so);
+    given.dofs[ext.dof] = ident::ModelOf(ext);
+    ba.after = ident::ScoreCampaign(campaign, given, so);
+    in->before_after.push_back(std::move(ba));
+  }
+}
+
+void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
+  const model::Campaign campaign = ReadCampaignForIdentification(o.input, o.accept_units);
+  in->title = "Campaign report: " + campaign.vehicle.name;
+  if (!in->vehicle) in->vehicle = campaign.vehicle, in->vehicle_source = campaign.path;
+  if (!in->pool && campaign.pool) in->pool = *campaign.pool, in->pool_source = campaign.path;
+  ident::IdentifyOptions identify;
+  identify.validation.curve_points = kCurvePoints;
+  if (o.no_diagnosis) {
+    in->identification = ident::Identify(campaign, identify);
+    return;
+  }
+  ident::DiagnoseOptions d;
+  d.identify = identify;
+  in->diagnosis = ident::Diagnose(campaign, d);
+  in->identification = in->diagnosis->nominal;
+  AddBeforeAfter(campaign, in);
+}
+
+int RunReport(const ReportCommandOptions& o) {
+  io::CheckNewDirectory(o.out, "-o");
+  report::ReportInputs in;
+  in.source = o.input;
+  AddVehicleAndPool(o, &in);
+  if (IsJsonFile(o.input) && io::IsLoopJson(o.input)) {
+    in.title = "Loop report";
+    in.loop = io::ReadLoopJson(o.input);
+  } else if (IsJsonFile(o.input)) {
+    AddSchedule(o, &in);
+  } else {
+    AddCampaign(o, &in);
+  }
+  if (!o.loop.empty()) in.loop = io::ReadLoopJson(o.loop);
+  const report::ReportFiles files = report::BuildReport(in);
+  io::WriteNewDirectory(o.out, files.files, "-o", "a report");
+  std::cout << "report: "
+            << (std::filesystem::path(io::DirectoryPath(o.out)) / "report.html").string() << " ("
+            << files.figures << " figures, also as PNG and SVG in "
+            << (std::filesystem::path(io::DirectoryPath(o.out)) / "figures").string() << ")\n";
+  // The verdict of the command whose result is reported: diagnose's (a DOF it could not
+  // diagnose), or with --no-diagnosis identify's (a DOF that failed).
+  const bool failed = in.diagnosis ? !in.diagnosis->not_diagnosed.empty()
+                                   : in.identification && in.identification->status ==
+                                                              ident::IdentifyStatus::kFailed;
+  return failed ? kExitActionNeeded : kExitOk;
+}
+
+void BindReport(CLI::App* sub, ReportCommandOptions* o) {
+  sub->add_option("INPUT", o->input,
+                  "a schedule (schedule --json), a loop's JSON (loop --json), or a campaign "
+                  "(campaign.yaml or its directory)")
+      ->required();
+  sub->add_option("-o,--out", o->out, "report directory to create (new or empty)")->required();
+  sub->add_option("--vehicle", o->vehicle, "vehicle file (required with a schedule)");
+  sub->add_option("--pool", o->pool,
+                  "pool file (required with a schedule; default: the campaign's)");
+  sub->add_option("--loop", o->loop, "also report this loop's history (loop --json)");
+  sub->add_flag("--no-diagnosis", o->no_diagnosis, "identify the campaign without diagnosing it");
+  AddAcceptUnitsFlag(sub, &o->accept_units);
+}
+
+const CommandRegistration kRegistration(MakeCommand<ReportCommandOptions>(
+    "report", 95,
+    "Write a self-contained HTML report (vehicle, pool, schedule or estimates, validation, "
+    "diagnosis, loop history; figures embedded) and its figures as PNG and SVG.",
+    BindReport, RunReport));
+
+}  // namespace
+}  // namespace uuvplan::tool

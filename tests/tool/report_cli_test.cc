@@ -1,0 +1,191 @@
+// `uuvplan report` (issue #18): the report of a ROMEO schedule, of a virtual ROMEO campaign
+// after `loop`, and of the real BlueROV yaw logs, opened in headless Chromium (Debian's
+// chromium, scripts/install-deps.sh) to check that it renders; the screenshots are kept under
+// build/artefacts/ for CI. Bad input: exit 2 naming the file or key.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "support/real_data.h"
+#include "tool/tool_test_util.h"
+
+namespace uuvplan::tool_test {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
+
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The report directory holds report.html and, per figure embedded, its PNG and SVG file.
+int CheckReportFiles(const std::string& dir) {
+  const std::string html = ReadText(dir + "/report.html");
+  const int images = Count(html, "<img ");
+  int pngs = 0;
+  for (const auto& e : fs::directory_iterator(dir + "/figures")) {
+    if (e.path().extension() != ".png") continue;
+    ++pngs;
+    EXPECT_TRUE(fs::exists(fs::path(e.path()).replace_extension(".svg"))) << e.path();
+    EXPECT_THAT(html, HasSubstr("id=\"fig-" + e.path().stem().string() + "\""));
+  }
+  EXPECT_EQ(images, pngs);
+  EXPECT_EQ(Count(html, "src=\"data:image/png;base64,"), images);  // every figure embedded
+  EXPECT_EQ(Count(html, "http://") + Count(html, "https://"), 0);  // nothing from the network
+  return images;
+}
+
+std::string Chromium() {
+  for (const char* name : {"chromium", "chromium-browser"}) {
+    const std::string probe = std::string("command -v ") + name + " >/dev/null 2>&1";
+    if (std::system(probe.c_str()) == 0) return name;
+  }
+  return "";
+}
+
+// Opens `html` in headless Chromium: its DOM after loading, and a 1366×900 screenshot (a
+// laptop screen) at build/artefacts/<shot>.
+std::string OpenInChromium(const std::string& browser, const std::string& html,
+                           const std::string& shot, const TempDir& scratch) {
+  const std::string flags =
+      " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
+      " --disable-background-networking --disable-component-update"
+      " --disable-sync --window-size=1366,900 --user-data-dir='";
+  fs::create_directories(UUVPLAN_ARTEFACT_DIR);
+  const std::string url = " 'file://" + fs::absolute(html).string() + "'";
+  const std::string dom = scratch / "dom.html";
+  const std::string run_dom = "timeout 120 " + browser + flags + (scratch / "profile-dom") +
+                              "' --dump-dom" + url + " >'" + dom + "' 2>/dev/null";
+  EXPECT_EQ(std::system(run_dom.c_str()), 0) << run_dom;
+  const std::string png = std::string(UUVPLAN_ARTEFACT_DIR) + "/" + shot;
+  fs::remove(png);
+  const std::string run_shot = "timeout 120 " + browser + flags + (scratch / "profile-shot") +
+                               "' --screenshot='" + png + "'" + url + " >/dev/null 2>&1";
+  EXPECT_EQ(std::system(run_shot.c_str()), 0) << run_shot;
+  EXPECT_TRUE(fs::exists(png)) << png;
+  // A blank 1366×900 page compresses to about 5.6 kB of PNG; the report's heading, navigation
+  // and first tables give well over 40 kB.
+  if (fs::exists(png)) EXPECT_GT(fs::file_size(png), 40000u) << png;
+  return ReadText(dom);
+}
+
+void ExpectRenders(const std::string& dir, const std::vector<std::string>& sections, int images,
+                   const std::string& shot, const TempDir& scratch) {
+  const std::string browser = Chromium();
+  if (browser.empty())
+    GTEST_SKIP() << "chromium not installed (scripts/install-deps.sh installs it)";
+  const std::string dom = OpenInChromium(browser, dir + "/report.html", shot, scratch);
+  for (const auto& s : sections) EXPECT_THAT(dom, HasSubstr("<section id=\"" + s + "\">")) << s;
+  EXPECT_EQ(Count(dom, "<img "), images);
+}
+
+TEST(ReportTool, RomeoScheduleReportRendersInChromium) {
+  TempDir tmp;
+  const std::string plan = tmp / "schedule.json";
+  const ToolRun s = RunTool("schedule '" + kCases + "vehicle.yaml' --pool '" + kCases +
+                                "pool.yaml' --dof surge --dof heave --json '" + plan + "'",
+                            tmp);
+  ASSERT_EQ(s.status, 0) << s.err;
+  const ToolRun r =
+      RunTool("report '" + plan + "' --vehicle '" + kCases + "vehicle.yaml' --pool '" + kCases +
+                  "pool.yaml' -o '" + (tmp / "report") + "'",
+              tmp);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string html = ReadText(tmp / "report/report.html");
+  const int trials = Count(ReadText(plan), "\"id\"");  // only trials have ids
+  ASSERT_GT(trials, 1);
+  EXPECT_EQ(CheckReportFiles(tmp / "report"), trials);  // one figure per trial
+  EXPECT_EQ(Count(html, "id=\"fig-schedule-"), trials);
+  for (const char* unit :
+       {"duration (s)", "min_thrust (N)", "length (m)", "largest forward thrust (N)"}) {
+    EXPECT_THAT(html, HasSubstr(std::string("<th>") + unit + "</th>"));
+  }
+  ExpectRenders(tmp / "report", {"summary", "vehicle", "pool", "schedule"},
+                CheckReportFiles(tmp / "report"), "report-romeo-schedule.png", tmp);
+}
+
+// A virtual ROMEO heave campaign (the planned heave trials run on truth-effects.yaml) after a
+// heave loop: estimates, validation, diagnosis (every candidate tested, in its table) and the
+// loop history. The virtual twin of the real-data report below.
+TEST(ReportTool, VirtualRomeoCampaignAfterLoopReport) {
+  TempDir tmp;
+  const std::string plan = tmp / "schedule.json", loop = tmp / "loop.json";
+  ASSERT_EQ(RunTool("schedule '" + kCases + "vehicle.yaml' --pool '" + kCases +
+                        "pool.yaml' --dof heave --json '" + plan + "'",
+                    tmp)
+                .status,
+            0);
+  ASSERT_EQ(RunTool("simulate --truth '" + kCases + "truth-effects.yaml' --plan '" + plan +
+                        "' --out '" + (tmp / "campaign") + "'",
+                    tmp)
+                .status,
+            0);
+  const ToolRun l = RunTool("loop --truth '" + kCases + "truth.yaml' --pool '" + kCases +
+                                "pool.yaml' --dof heave --budget 6 --json '" + loop + "'",
+                            tmp);
+  ASSERT_TRUE(l.status == 0 || l.status == 4) << l.err;  // converged, or the budget spent
+  const ToolRun r = RunTool(
+      "report '" + (tmp / "campaign") + "' --loop '" + loop + "' -o '" + (tmp / "report") + "'",
+      tmp);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string html = ReadText(tmp / "report/report.html");
+  EXPECT_THAT(html, HasSubstr("<td class=\"t\">installation_loss</td>"));  // a candidate tested
+  EXPECT_THAT(html, HasSubstr("<td class=\"t\">identification of heave</td>"));  // the summary
+  for (const char* fig : {"identification-heave-free-run", "identification-heave-residuals",
+                          "identification-heave-parameters", "diagnosis-heave-residuals",
+                          "diagnosis-heave-gains", "loop-percentile-error"}) {
+    EXPECT_TRUE(fs::exists(tmp / ("report/figures/" + std::string(fig) + ".png"))) << fig;
+  }
+  ExpectRenders(tmp / "report",
+                {"summary", "vehicle", "estimates", "validation", "diagnosis", "loop"},
+                CheckReportFiles(tmp / "report"), "report-romeo-campaign.png", tmp);
+}
+
+TEST(ReportTool, RealBlueRovYawReport) {
+  UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
+  TempDir tmp;
+  const ToolRun r = RunTool(
+      "report '" + testing::RealDataPath("bluerov-yaw-2016") + "' -o '" + (tmp / "report") + "'",
+      tmp);
+  ASSERT_EQ(r.status, 0) << r.err;  // diagnose's verdict on these logs: every DOF diagnosed
+  EXPECT_GE(CheckReportFiles(tmp / "report"), 5);
+  const std::string html = ReadText(tmp / "report/report.html");
+  EXPECT_THAT(html, HasSubstr("<section id=\"diagnosis\">"));
+  EXPECT_THAT(html, HasSubstr("trials/yaw_4.csv"));  // a held-out trial in the validation
+}
+
+TEST(ReportTool, BadInputExitsTwoNamingFileOrKey) {
+  TempDir tmp;
+  const std::string plan = tmp.Write("plan.json", R"({"trials": [{"id": "a", "dof": "surge",
+    "kind": "steady", "duration": 10, "mapping": "surge-front", "force": 30}]})");
+  ToolRun r = RunTool("report '" + plan + "' -o '" + (tmp / "out") + "'", tmp);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("--vehicle"));
+  const std::string loop = tmp.Write("loop.json", R"({"iterations": [{"trial": {"id": "a",
+    "dof": "surge", "kind": "steady", "duration": 10, "mapping": "surge-front", "force": 30},
+    "dof": "surge", "pool_time": "long", "params": {}}]})");
+  r = RunTool("report '" + loop + "' -o '" + (tmp / "out") + "'", tmp);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("iterations[0].pool_time"));
+  fs::create_directories(tmp / "full");
+  tmp.Write("full/x.txt", "");
+  r = RunTool("report '" + plan + "' --vehicle '" + kCases + "vehicle.yaml' --pool '" + kCases +
+                  "pool.yaml' -o '" + (tmp / "full") + "'",
+              tmp);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("not empty"));
+  EXPECT_FALSE(fs::exists(tmp / "out"));  // nothing written on bad input
+  for (const auto& e : fs::directory_iterator(tmp.path())) {
+    EXPECT_EQ(e.path().string().find(".tmp-uuvplan-"), std::string::npos) << e.path();
+  }
+}
+
+}  // namespace
+}  // namespace uuvplan::tool_test
