@@ -91,6 +91,19 @@ LinearFit FitWithConstant(const std::vector<double>& y, const std::vector<const 
   return {theta.head(p), ss_tot > 0 ? 1.0 - ss_res / ss_tot : 0.0};
 }
 
+// Whether y varies beyond rounding: its standard deviation above 1% of its RMS (a logged
+// constant's printed digits give ~1e-10 of it; the smallest planned change of thrust, a sine's
+// or a segment's, is tens of percent).
+bool Varies(const std::vector<double>& y) {
+  if (y.size() < 2) return false;
+  double mean = 0, mean_square = 0;
+  for (double v : y) mean += v, mean_square += v * v;
+  mean /= static_cast<double>(y.size());
+  mean_square /= static_cast<double>(y.size());
+  const double variance = std::max(0.0, mean_square - mean * mean);
+  return variance > 1e-4 * mean_square;
+}
+
 // 99th percentile of |y|.
 double AbsQuantile99(const std::vector<double>& y) {
   std::vector<double> a(y.size());
@@ -221,6 +234,9 @@ void CheckForceAgainstMotion(TrialCheck& c) {
   const Samples s = ForceAndMotion(c);
   if (s.size() < kMinSamples) return;
   const auto& f = s.columns[0];
+  // A force that does not vary (a steady trial's one step from rest) has no variance for a
+  // balance to explain: its R² is 0/0, and neither the column's kind nor the sign can be read.
+  if (!Varies(f)) return;
   const LinearFit as_position = FitWithConstant(f, {&s.columns[1], &s.columns[2]});
   if (!c.vel) {
     // The column read as a velocity: F = m·dx/dt + k·x + b.

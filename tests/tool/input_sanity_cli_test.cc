@@ -105,6 +105,26 @@ TEST(InputSanityCliTest, CleanCampaignIsIdentified) {
   EXPECT_THAT(r.err, Not(HasSubstr("units or signs")));
 }
 
+TEST(InputSanityCliTest, ThePlannersOwnScheduleRaisesNothing) {
+  // ROMEO's surge and yaw schedule in its pool, run on the truth by `simulate` and identified:
+  // no unit or sign finding. Its steady trials hold one force from rest (surge-steady-6 pushes
+  // 5.77 N for 81 s): a force without variance, whose 0/0 R² once called pos_surge a velocity
+  // and yaw-steady-4's force the wrong sign (exit 2 on the planner's own trials).
+  TempDir dir;
+  const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
+  ASSERT_EQ(RunTool("schedule " + romeo + "vehicle.yaml --pool " + romeo +
+                        "pool.yaml --dof surge --dof yaw --json " + (dir / "plan.json"),
+                    dir).status,
+            0);
+  ASSERT_EQ(RunTool("simulate --truth " + romeo + "truth.yaml --plan " + (dir / "plan.json") +
+                        " --out " + (dir / "campaign") + " --seed 3",
+                    dir).status,
+            0);
+  const ToolRun r = RunTool("identify " + (dir / "campaign/campaign.yaml"), dir);
+  EXPECT_EQ(r.status, 0) << r.err << r.out;
+  EXPECT_THAT(r.err, Not(HasSubstr("units or signs look wrong")));
+}
+
 TEST(InputSanityCliTest, GyroInDegreesPerSecondStops) {
   TempDir dir;
   const std::string c = Campaign(dir, model::Dof::kYaw, true, true);
