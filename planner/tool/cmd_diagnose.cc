@@ -57,7 +57,7 @@ bool WriteExtendedVehicle(const std::string& path, const std::string& campaign_p
     models[e.dof] = ident::ModelOf(e);
     const std::string problem = ident::Inadmissible(models[e.dof]);
     if (!problem.empty()) {
-      std::cerr << "diagnose: " << path << " not written: the " << model::DofName(e.dof)
+      std::cerr << "uuvplan: diagnose: error: " << path << " not written: the " << model::DofName(e.dof)
                 << " model has " << problem << "\n";
       return false;
     }

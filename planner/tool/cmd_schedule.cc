@@ -14,8 +14,10 @@
 #include "command.h"
 #include "trial_text.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/io/information_json.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
+#include "uuvplan/planner/information_table.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/pool_verdict.h"
 #include "uuvplan/planner/schedule_planner.h"
@@ -131,7 +133,11 @@ int RunSchedule(const ScheduleCliOptions& o) {
   std::ostream& out = ReportStream(o.json);
   PrintSchedule(r, vehicle, pool, out);
   PrintVerdict(verdict, pool, out);
-  if (!o.json.empty()) WriteJson(o.json, ScheduleResultJson(r, verdict, pool));
+  if (!o.json.empty()) {
+    nlohmann::json j = ScheduleResultJson(r, verdict, pool);
+    io::AddInformationJson(planner::InformationOf(vehicle, pool, r.schedule, so), &j);
+    WriteJson(o.json, j);
+  }
   return VerdictExit(verdict);
 }
 
