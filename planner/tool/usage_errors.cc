@@ -19,6 +19,21 @@ std::string Suggestion(const std::string& word, const std::vector<std::string>& 
   return best ? " (did you mean '" + *best + "'?)" : "";
 }
 
+// Length of the longest common subsequence: the tie-breaker between names equally far away
+// ("foo" is two edits from both "log" and "loop"; "loop" keeps its "oo").
+int CommonSubsequence(const std::string& a, const std::string& b) {
+  std::vector<int> row(b.size() + 1, 0);
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    int diagonal = 0;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const int above = row[j];
+      row[j] = a[i - 1] == b[j - 1] ? diagonal + 1 : std::max(row[j], row[j - 1]);
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
 std::vector<std::string> CommandNames(const CLI::App& app) {
   std::vector<std::string> names;
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
@@ -73,12 +88,15 @@ int EditDistance(const std::string& a, const std::string& b) {
 std::optional<std::string> ClosestName(const std::string& word,
                                        const std::vector<std::string>& candidates) {
   std::optional<std::string> best;
-  int best_distance = std::max(2, static_cast<int>(word.size()) / 3) + 1;
+  int best_distance = std::max(2, static_cast<int>(word.size()) / 3) + 1, best_common = 0;
   for (const std::string& c : candidates) {
     // A known name the word begins ("--vers" for "--version") is one edit away.
     const bool prefix = word.size() >= 3 && c.compare(0, word.size(), word) == 0;
     const int d = prefix ? 1 : EditDistance(word, c);
-    if (d < best_distance) best = c, best_distance = d;
+    const int common = CommonSubsequence(word, c);
+    if (d < best_distance || (d == best_distance && best && common > best_common)) {
+      best = c, best_distance = d, best_common = common;
+    }
   }
   return best;
 }

@@ -15,7 +15,9 @@ namespace uuvplan::tool {
 int EditDistance(const std::string& a, const std::string& b);
 
 /// The candidate closest to `word` by edit distance when it is close enough to be a typo (at
-/// most 2 edits or a third of the word's length, whichever is larger); nullopt otherwise.
+/// most 2 edits or a third of the word's length, whichever is larger; a name the word begins
+/// counts as one edit; between equally close names, the one sharing the longest subsequence);
+/// nullopt otherwise.
 std::optional<std::string> ClosestName(const std::string& word,
                                        const std::vector<std::string>& candidates);
 

@@ -3,6 +3,7 @@
 // that an output is written whole or not at all.
 #pragma once
 
+#include <map>
 #include <string>
 
 namespace uuvplan::io {
@@ -19,5 +20,11 @@ std::string ResolveBeside(const std::string& base_file, const std::string& file)
 /// Writes `text` to `path` atomically (temporary file + rename); model::InputError naming the
 /// path when it cannot.
 void WriteFileAtomically(const std::string& path, const std::string& text);
+
+/// Writes a new directory `dir` holding `files` (name inside the directory → text) whole or not
+/// at all: everything goes to a temporary sibling directory, then one rename puts it in place.
+/// model::InputError naming `dir` when it exists and is not empty (nothing is overwritten) or
+/// cannot be written.
+void WriteNewDirectory(const std::string& dir, const std::map<std::string, std::string>& files);
 
 }  // namespace uuvplan::io
