@@ -10,14 +10,12 @@
 #include "text_table.h"
 #include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::tool {
 
 std::string Cell(double v, int precision) {
-  if (!std::isfinite(v)) return "-";
-  std::ostringstream os;
-  os << std::setprecision(precision) << v;
-  return os.str();
+  return std::isfinite(v) ? model::Significant(v, precision) : "-";
 }
 
 namespace {

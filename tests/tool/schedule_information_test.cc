@@ -35,7 +35,11 @@ void CheckBlock(const std::string& dof, const json& b, const json& worst_sigma) 
   // Symmetric to round-off (the JSON keeps 17 digits).
   EXPECT_LE((M - M.transpose()).norm(), 1e-12 * M.norm()) << dof;
   Eigen::VectorXd d(n);
-  for (int i = 0; i < n; ++i) d[i] = std::abs(b["theta"][i].get<double>());
+  // criteria.h: D = diag(|θ_i|), a unit scale where θ_i = 0 (a bias's nominal value).
+  for (int i = 0; i < n; ++i) {
+    const double theta = std::abs(b["theta"][i].get<double>());
+    d[i] = theta > 0 ? theta : 1.0;
+  }
   const Eigen::MatrixXd R = d.asDiagonal() * M * d.asDiagonal();
   const Eigen::VectorXd lambda = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(R).eigenvalues();
   ASSERT_FALSE(b["criteria"]["singular"].get<bool>()) << dof << ": the schedule determines it";
