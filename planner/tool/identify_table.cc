@@ -54,24 +54,28 @@ void PrintParameters(const ident::DofIdentification& d, std::ostream& out) {
 // The fit figures of a DOF, overall and per trial with its residual analysis.
 void PrintFit(const ident::DofIdentification& d, std::ostream& out) {
   const auto& f = d.fit;
-  const std::string v_unit(model::VelocityUnit(d.dof)), p_unit(model::PositionUnit(d.dof));
+  // Angles for people in degrees (docs/cli.md); rates stay in rad/s, as the seeds report them.
+  const bool rotation = model::IsRotational(d.dof);
+  const double p_scale = rotation ? 180.0 / M_PI : 1.0;
+  const std::string v_unit(model::VelocityUnit(d.dof)), p_unit(rotation ? "°" : "m");
   out << "  fit: velocity MAE (seed 002 eq. 37) fit " << Cell(f.velocity_mae_fit) << ", validate "
       << Cell(f.velocity_mae_validate) << " " << v_unit << " (zero-velocity model "
       << Cell(f.zero_velocity_mae_fit) << ", " << Cell(f.zero_velocity_mae_validate)
-      << " " << v_unit << "); position RMS fit " << Cell(f.position_rms_fit) << ", validate "
-      << Cell(f.position_rms_validate) << " " << p_unit << "\n";
+      << " " << v_unit << "); position RMS fit " << Cell(p_scale * f.position_rms_fit) << ", validate "
+      << Cell(p_scale * f.position_rms_validate) << " " << p_unit << "\n";
   TextTable table({"DOF", "trial", "use", "vel. MAE (" + v_unit + ")", "pos. RMS (" + p_unit + ")",
                    "residuals"});
   for (const auto& t : f.trials) {
-    const std::string unit = t.residual_signal == "position" ? p_unit : v_unit;
+    const bool position = t.residual_signal == "position";
+    const std::string unit = position ? p_unit : v_unit;
     std::ostringstream res;
-    res << t.residual_signal << " mean " << Cell(t.residuals.mean, 3) << " " << unit << ", "
+    res << t.residual_signal << " mean " << Cell((position ? p_scale : 1.0) * t.residuals.mean, 3) << " " << unit << ", "
         << (t.residuals.white ? "white" : "NOT white") << " (" << t.residuals.lags_outside << "/"
         << (t.residuals.autocorrelation.empty() ? 0 : t.residuals.autocorrelation.size() - 1)
         << " lags outside ±" << Cell(t.residuals.bound95, 2) << ")"
         << (t.velocity_reference == "estimated" ? " [velocity estimated from positions]" : "");
     table.AddRow({std::string(model::DofName(d.dof)), t.name, io::TrialUseName(t.use),
-                  Cell(t.velocity_mae), Cell(t.position_rms), res.str()});
+                  Cell(t.velocity_mae), Cell(p_scale * t.position_rms), res.str()});
   }
   table.Print(out);
 }

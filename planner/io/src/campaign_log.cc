@@ -48,6 +48,11 @@ void CheckLog(const model::Vehicle& vehicle, const LoggedTrial& trial) {
                             "expected a mapping of the vehicle on " + dof + ": " +
                                 model::Join(names));
   }
+  if (trial.mapping.empty() && names.size() != 1) {
+    throw model::InputError("--mapping", "required: the vehicle has " +
+                                             std::to_string(names.size()) + " mappings on " + dof +
+                                             " (" + model::Join(names) + ")");
+  }
   const model::TrialLog log = ReadTrialLog(trial.csv, names);
   if (!log.HasForce(trial.dof)) {
     throw model::InputError(trial.csv, "no force_" + dof + " column: expected the nominal force "
