@@ -20,6 +20,20 @@ double ThrustModel::Thrust(double v) const {
   return (1.0 - deduction) * tau;  // seed 003: T_a = (1 - t)·T
 }
 
+double ThrustModel::Command(double thrust) const {
+  const double y = std::abs(thrust) / (1.0 - deduction);  // seed 003: T = T_a / (1 - t)
+  double v = 0.0;
+  switch (kind) {
+    case Kind::kSquare:  // seed 000 eq. 6 inverted: |V| = sqrt(|tau|/c)
+      v = std::sqrt(y / (thrust >= 0 ? c_pos : c_neg));
+      break;
+    case Kind::kPoly2:  // seed 002 eq. 1 inverted: a·V² + b·V = |tau|, V >= 0
+      v = a > 0 ? (-b + std::sqrt(b * b + 4 * a * y)) / (2 * a) : y / b;
+      break;
+  }
+  return std::copysign(v, thrust);
+}
+
 namespace {
 // Extremes of the thrust over [lo, hi]: sampled finely (the models are smooth and at most
 // quadratic per side, so a fine grid plus the ends finds them to far below any tolerance).

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "command.h"
+#include "text_table.h"
+#include "trial_text.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
@@ -73,26 +75,29 @@ TrialsToCheck ChooseTrials(const CheckPoolCliOptions& o, const model::Vehicle& v
 }
 
 void PrintTrialChecks(const planner::PoolCheckResult& r, std::ostream& out) {
+  TextTable table({"DOF", "trial", "fits", "travel", "|τ|min (N)"});
   for (const auto& t : r.trials) {
-    const std::string unit(model::PositionUnit(t.dof));
-    out << "  " << std::left << std::setw(18) << t.id
-        << (t.check.feasible ? "fits" : "DOES NOT FIT") << std::right << "   travel ["
-        << model::Significant(t.check.travel[0], 4) << ", "
-        << model::Significant(t.check.travel[1], 4) << "] " << unit << ", |tau|min "
-        << model::Significant(t.check.thrust_min, 4) << " N\n";
-    for (const auto& reason : t.check.reasons) out << "      - " << reason << "\n";
+    table.AddRow({std::string(model::DofName(t.dof)), t.id, t.check.feasible ? "yes" : "NO",
+                  TravelText(t.dof, t.check.travel[0], t.check.travel[1]),
+                  model::Significant(t.check.thrust_min, 3)});
+  }
+  table.Print(out);
+  for (const auto& t : r.trials) {
+    for (const auto& reason : t.check.reasons) out << "    - " << t.id << ": " << reason << "\n";
   }
 }
 
 void PrintAlternative(const planner::PoolCheckResult& r, std::ostream& out) {
   out << "\nBest schedule that fits this pool: " << planner::PlanStatusName(r.alternative.status)
       << ", " << r.alternative.schedule.trials.size() << " trials, pool time "
-      << model::Significant(r.alternative.schedule.pool_time, 4) << " s\n";
+      << model::DurationText(r.alternative.schedule.pool_time) << "\n";
+  TextTable table({"DOF", "trial", "kind", "mapping", "duration"});
   for (const auto& t : r.alternative.schedule.trials) {
-    out << "  " << std::left << std::setw(18) << t.design.id << std::right
-        << model::TrialKindName(t.design.kind) << " " << t.design.mapping << ", "
-        << model::Significant(t.design.duration, 4) << " s\n";
+    table.AddRow({std::string(model::DofName(t.design.dof)), t.design.id,
+                  std::string(model::TrialKindName(t.design.kind)), t.design.mapping,
+                  model::DurationText(t.design.duration)});
   }
+  table.Print(out);
   for (const auto& d : r.alternative.dofs) {
     if (!d.complete && !d.message.empty()) out << "  " << d.message << "\n";
   }

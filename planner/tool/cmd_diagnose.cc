@@ -25,17 +25,6 @@
 namespace uuvplan::tool {
 namespace {
 
-// Progress lines on stderr ("diagnose: 3.1 s: yaw: round 2, ..."), once the run has taken
-// `after_s`: a short run stays quiet.
-std::function<void(const std::string&)> ProgressAfter(double after_s) {
-  const auto start = std::chrono::steady_clock::now();
-  return [start, after_s](const std::string& line) {
-    const double s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (s >= after_s) std::cerr << "diagnose: " << model::Significant(s, 3) << " s: " << line << "\n";
-  };
-}
-
 struct DiagnoseCommandOptions {
   std::string campaign;
   std::string json;
@@ -57,7 +46,7 @@ bool WriteExtendedVehicle(const std::string& path, const std::string& campaign_p
     models[e.dof] = ident::ModelOf(e);
     const std::string problem = ident::Inadmissible(models[e.dof]);
     if (!problem.empty()) {
-      std::cerr << "diagnose: " << path << " not written: the " << model::DofName(e.dof)
+      std::cerr << "uuvplan: diagnose: error: " << path << " not written: the " << model::DofName(e.dof)
                 << " model has " << problem << "\n";
       return false;
     }
@@ -79,7 +68,7 @@ int RunDiagnose(const DiagnoseCommandOptions& co) {
   ident::DiagnoseOptions o = co.diagnose;
   o.dofs = ParseDofFlags(co.dofs);
   o.verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
-  o.progress = ProgressAfter(2.0);
+  o.progress = TerminalProgress("diagnose");
   const ident::DiagnosisResult result = ident::Diagnose(campaign, o);
   PrintDiagnosis(result, ReportStream(co.json));
   if (!co.json.empty()) WriteJson(co.json, io::DiagnosisJson(result));

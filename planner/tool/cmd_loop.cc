@@ -65,7 +65,7 @@ void PrintIteration(const planner::LoopIteration& it, double target, bool verbos
   const auto& d = it.trial.design;
   out << "#" << std::left << std::setw(3) << it.index + 1 << std::setw(6) << model::DofName(d.dof)
       << std::setw(20) << d.id << TrialLine(d) << "\n     " << it.source << "; pool time "
-      << std::fixed << std::setprecision(0) << it.pool_time << " s" << std::defaultfloat
+      << model::DurationText(it.pool_time)
       << (it.new_information ? "" : "; no new information") << "\n";
   for (const auto& p : it.progress) {
     if (p.dof != it.dof) continue;
@@ -145,13 +145,13 @@ void PrintLoopSummary(const planner::LoopResult& r, const planner::LoopOptions& 
   out << "\n"
       << (r.converged ? "Converged" : "NOT converged (" + std::string(planner::LoopStatusName(r.status)) + ")")
       << " after " << r.iterations.size() << " trial(s): " << r.message << "\n"
-      << "Pool time: " << std::fixed << std::setprecision(0) << r.pool_time << " s ("
-      << std::setprecision(1) << r.pool_time / 60.0 << " min, " << lo.step.schedule.planner.pause_s
-      << " s pauses between trials included)";
+      << "Pool time: " << model::DurationText(r.pool_time) << " ("
+      << model::DurationText(lo.step.schedule.planner.pause_s)
+      << " pauses between trials included)";
   for (const auto& [dof, t] : r.dof_pool_time) {
-    out << std::setprecision(0) << "; " << model::DofName(dof) << " " << t << " s";
+    out << "; " << model::DofName(dof) << " " << model::DurationText(t);
   }
-  out << std::defaultfloat << "\n\nFinal estimates against the truth:\n";
+  out << "\n\nFinal estimates against the truth:\n";
   PrintProgress(r.progress, lo.step.target_percent, out, &truth);
 }
 
@@ -210,9 +210,12 @@ int RunLoopCommand(const LoopCliOptions& o) {
     return VerdictExit(verdict);
   }
   if (!verdict.hosted) out << "\n";
-  planner::LoopResult r = planner::RunLoop(
-      truth, pool, lo,
-      [&](const planner::LoopIteration& it) { PrintIteration(it, target, o.verbose, out); });
+  const auto progress = TerminalProgress("loop");
+  planner::LoopResult r =
+      planner::RunLoop(truth, pool, lo, [&](const planner::LoopIteration& it) {
+        PrintIteration(it, target, o.verbose, out);
+        progress("trial " + std::to_string(it.index + 1) + " " + it.trial.design.id + " done");
+      });
   planner::ReadLoopEnd(verdict, &r);
   PrintLoopSummary(r, lo, truth, out);
   if (!o.json.empty()) {

@@ -18,12 +18,15 @@
 
 #include "command.h"
 #include "identify_table.h"
+#include "text_table.h"
+#include "trial_text.h"
 #include "uuvplan/io/identify_json.h"
 #include "loop_report.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/io/pool_verdict_json.h"
+#include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design_loop.h"
 #include "uuvplan/planner/pool_verdict.h"
@@ -44,16 +47,14 @@ struct NextCliOptions {
 // The planned trial: its design, the travel and thrust it needs, and the σ predicted after it.
 void PrintNextTrial(const planner::NextStepResult& r, std::ostream& out) {
   const auto& d = r.trial.design;
-  std::ostringstream travel;
-  travel << std::fixed << std::setprecision(2) << "[" << r.trial.travel[0] << ", "
-         << r.trial.travel[1] << "] " << model::PositionUnit(d.dof) << ", smallest thrust "
-         << r.trial.thrust_min << " N";
   out << "Next: " << d.id << " (" << model::DofName(d.dof) << ", " << r.source << ")\n  "
-      << TrialLine(d) << "\n  travel " << travel.str() << "\n  " << r.message << "\n";
+      << TrialLine(d) << "\n  travel " << TravelText(d.dof, r.trial.travel[0], r.trial.travel[1])
+      << ", smallest thrust " << model::Significant(r.trial.thrust_min, 3) << " N\n  "
+      << r.message << "\n";
   if (!r.predicted.sigma.empty()) {
     out << "  predicted σ after it:";
     for (const auto& [name, s] : r.predicted.sigma) {
-      out << "  " << name << " " << std::setprecision(3) << s;
+      out << "  " << name << " " << Quantity(s, model::Unit(name, d.dof));
     }
     out << "\n";
   }
@@ -89,8 +90,9 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
       break;
   }
   for (const auto& c : r.candidates) {
+    const std::string unit = model::Unit(c.parameter, c.dof);
     out << "Candidate " << c.trial << " (" << model::DofName(c.dof) << "): σ(" << c.parameter
-        << ") " << model::Significant(c.sigma_now, 3) << " → " << model::Significant(c.sigma_after, 3)
+        << ") " << Quantity(c.sigma_now, unit) << " → " << Quantity(c.sigma_after, unit)
         << ", about " << model::Significant(c.trials_to_target, 3) << " such trials to the target"
         << (c.negligible ? " — negligible" : "") << "\n";
   }

@@ -12,10 +12,15 @@
 #include <vector>
 
 #include "command.h"
+#include "text_table.h"
 #include "trial_text.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/io/command_files.h"
+#include "uuvplan/io/information_json.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
+#include "uuvplan/planner/command_sheet.h"
+#include "uuvplan/planner/information_table.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/pool_verdict.h"
 #include "uuvplan/planner/schedule_planner.h"
@@ -32,6 +37,7 @@ struct ScheduleCliOptions {
   std::string pool;
   std::vector<std::string> dofs;
   std::string json;
+  std::string commands;  ///< --commands DIR: per-thruster command files and the run sheet
   std::string robust{planner::RobustnessName(planner::ScheduleOptions{}.planner.robustness)};
   planner::ScheduleOptions schedule;  ///< --max-duration, --no-steady, --no-sine bound here
 };
@@ -44,13 +50,6 @@ planner::Robustness ParseRobustness(const std::string& s) {
   throw model::InputError("--robust", "expected maximin, average or nominal, got '" + s + "'");
 }
 
-std::string TravelText(const planner::PlannedTrial& t) {
-  std::ostringstream travel;
-  travel << std::fixed << std::setprecision(2) << "[" << t.travel[0] << ", " << t.travel[1]
-         << "] " << model::PositionUnit(t.design.dof);
-  return travel.str();
-}
-
 void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
                    const model::Pool& pool, std::ostream& out) {
   out << "Schedule for " << v.name << " in pool " << pool.name
@@ -60,31 +59,29 @@ void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
       << model::Significant(pool.FreeTravel(model::Dof::kHeave), 4) << " m depth; tether "
       << model::Significant(pool.max_turns, 4) << " turns): " << planner::PlanStatusName(r.status)
       << "\n\n";
-  out << std::left << std::setw(17) << "id" << std::setw(9) << "kind" << std::setw(22) << "mapping"
-      << std::right << std::setw(8) << "T (s)"
-      << "  " << std::left << std::setw(21) << "travel (m or rad)" << std::right << std::setw(11)
-      << "|tau|min N"
-      << "  force (N or N·m)\n";
+  TextTable trials({"DOF", "trial", "kind", "mapping", "duration", "travel", "|τ|min (N)",
+                    "force"});
   for (const auto& t : r.schedule.trials) {
     const auto& d = t.design;
-    out << std::left << std::setw(17) << d.id << std::setw(9) << model::TrialKindName(d.kind)
-        << std::setw(22) << d.mapping << std::right << std::fixed << std::setprecision(1)
-        << std::setw(8) << d.duration << "  " << std::left << std::setw(21) << TravelText(t)
-        << std::right << std::setw(11) << std::setprecision(2) << t.thrust_min << "  "
-        << ForceText(d, kScheduleForceStyle) << "\n";
+    trials.AddRow({std::string(model::DofName(d.dof)), d.id,
+                   std::string(model::TrialKindName(d.kind)), d.mapping,
+                   model::DurationText(d.duration), TravelText(d.dof, t.travel[0], t.travel[1]),
+                   model::Significant(t.thrust_min, 3), ForceText(d, kScheduleForceStyle)});
   }
+  trials.Print(out);
   out << "\nPredicted 1σ (worst over the a priori box) and robust D criterion (log det of the "
          "relative information):\n";
+  TextTable predicted({"DOF", "D (no unit)", "parameter", "σ"});
   for (const auto& [dof, p] : r.schedule.predicted) {
-    out << "  " << std::left << std::setw(6) << model::DofName(dof) << std::right << " D "
-        << model::Significant(p.criterion_value, 4) << ":";
+    std::string criterion = model::Significant(p.criterion_value, 4);
     for (const auto& [name, s] : p.sigma) {
-      out << "  " << name << " " << model::Significant(s, 3) << " " << model::Unit(name, dof);
+      predicted.AddRow({std::string(model::DofName(dof)), criterion, name,
+                        Quantity(s, model::Unit(name, dof))});
+      criterion = "";
     }
-    out << "\n";
   }
-  out << std::fixed << std::setprecision(0) << "\nPool time: " << r.schedule.pool_time << " s ("
-      << std::setprecision(1) << r.schedule.pool_time / 60.0 << " min, pauses included), "
+  predicted.Print(out);
+  out << "\nPool time: " << model::DurationText(r.schedule.pool_time) << " (pauses included), "
       << r.schedule.trials.size() << " trials\n";
   for (const auto& d : r.dofs) {
     if (!d.complete && !d.message.empty()) out << "\n" << d.message << "\n";
@@ -131,7 +128,17 @@ int RunSchedule(const ScheduleCliOptions& o) {
   std::ostream& out = ReportStream(o.json);
   PrintSchedule(r, vehicle, pool, out);
   PrintVerdict(verdict, pool, out);
-  if (!o.json.empty()) WriteJson(o.json, ScheduleResultJson(r, verdict, pool));
+  if (!o.json.empty()) {
+    nlohmann::json j = ScheduleResultJson(r, verdict, pool);
+    io::AddInformationJson(planner::InformationOf(vehicle, pool, r.schedule, so), &j);
+    WriteJson(o.json, j);
+  }
+  if (!o.commands.empty()) {
+    planner::CommandSheetOptions co;
+    co.schedule = so;
+    io::WriteCommandFiles(o.commands, planner::MakeCommandSheet(vehicle, pool, r.schedule, co),
+                          vehicle, pool);
+  }
   return VerdictExit(verdict);
 }
 
@@ -141,6 +148,9 @@ void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {
   sub->add_option("--dof", o->dofs,
                   "DOF to plan (repeatable; default every DOF with a mapping and a sensor)");
   AddJsonOption(sub, &o->json, "write the schedule");
+  sub->add_option("--commands", o->commands,
+                  "write each trial's thruster commands (CSV) and the run sheet (Markdown) into "
+                  "this new directory");
   sub->add_option("--robust", o->robust, "maximin (default), average or nominal")
       ->capture_default_str();
   sub->add_option("--max-duration", o->schedule.planner.max_trial_duration_s, "longest trial (s)")

@@ -1,6 +1,7 @@
 // What every command shares (command.h): the registry, the `--json` flag and its output, `--dof`.
 #include "command.h"
 
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <unistd.h>
@@ -8,6 +9,7 @@
 #include "uuvplan/ident/input_sanity.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::tool {
 
@@ -22,6 +24,19 @@ CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& 
 
 void PrintBriefOnTerminal(const std::string& brief) {
   if (isatty(STDERR_FILENO)) std::cerr << brief << "\n";
+}
+
+std::function<void(const std::string&)> TerminalProgress(const std::string& command,
+                                                         double after_s) {
+  if (!isatty(STDERR_FILENO)) return [](const std::string&) {};
+  const auto start = std::chrono::steady_clock::now();
+  return [start, after_s, command](const std::string& line) {
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (s >= after_s) {
+      std::cerr << "uuvplan " << command << ": " << model::DurationText(s) << ": " << line << "\n";
+    }
+  };
 }
 
 std::ostream& ReportStream(const std::string& json_path) {

@@ -62,6 +62,12 @@ std::ostream& ReportStream(const std::string& json_path);
 /// (isatty(2)): stdout, --json output and captured stderr stay as they were.
 void PrintBriefOnTerminal(const std::string& brief);
 
+/// Progress lines on stderr ("uuvplan diagnose: 3.1 s: yaw: round 2, ..."), only when stderr is a
+/// terminal and once the run has taken `after_s` (a short run stays quiet; captured output is
+/// unchanged).
+std::function<void(const std::string&)> TerminalProgress(const std::string& command,
+                                                         double after_s = 2.0);
+
 /// Writes `j` to `path` atomically, or to stdout when `path` is "-".
 void WriteJson(const std::string& path, const nlohmann::json& j);
 

@@ -6,6 +6,7 @@
 #include <iomanip>
 
 #include "identify_table.h"
+#include "text_table.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::tool {
@@ -105,6 +106,26 @@ void PrintModels(const ident::DiagnosisResult& r, std::ostream& out) {
   }
 }
 
+// The candidates tested, one row each: DOF, round, effect, likelihood ratio D, largest z, the
+// held-out gain and the verdict.
+void PrintCandidateTests(const ident::DiagnosisResult& r, std::ostream& out) {
+  TextTable table({"DOF", "round", "effect", "detail", "D (no unit)", "z (σ)", "gain (%)",
+                   "verdict"});
+  for (const auto& t : r.tests) {
+    std::string verdict = t.significant ? "significant" : "not significant";
+    if (std::isfinite(t.gain)) verdict += t.accepted ? ", ACCEPTED" : ", not enough gain";
+    if (!std::isfinite(t.gain) && !t.unscored.empty()) {
+      verdict += ", held-out gain cannot be scored: " + t.unscored;
+    }
+    if (!t.non_physical.empty()) verdict += ", non-physical: " + t.non_physical;
+    table.AddRow({std::string(model::DofName(t.dof)), std::to_string(t.round), t.effect,
+                  t.detail.empty() ? "-" : t.detail, model::Significant(t.statistic, 3),
+                  model::Significant(t.max_z, 3),
+                  std::isfinite(t.gain) ? model::Significant(100.0 * t.gain, 3) : "-", verdict});
+  }
+  table.Print(out);
+}
+
 }  // namespace
 
 void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
@@ -135,20 +156,7 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
   }
   out << "\nCandidate effects tested (significant: p < 1e-3 and a new parameter >= 3 sigma from "
          "'no effect'; accepted: also >= 0.5% better on held-out data):\n";
-  for (const auto& t : r.tests) {
-    out << "  round " << t.round << "  " << std::left << std::setw(20)
-        << t.effect << std::setw(4) << t.detail << std::right
-        << "  D = " << std::setw(10) << std::setprecision(1) << t.statistic
-        << "  z = " << std::setw(6) << t.max_z << (t.significant ? "  significant" : "");
-    if (std::isfinite(t.gain)) {
-      out << ", held-out gain " << std::setprecision(1) << 100.0 * t.gain << "%"
-          << (t.accepted ? "  ACCEPTED" : "  (not enough)");
-    } else if (!t.unscored.empty()) {
-      out << ", held-out gain cannot be scored: " << t.unscored;
-    }
-    if (!t.non_physical.empty()) out << "  non-physical: " << t.non_physical;
-    out << "\n";
-  }
+  PrintCandidateTests(r, out);
   for (const auto& n : r.notes) out << "note: " << n << "\n";
 }
 

@@ -7,21 +7,22 @@
 #include <iomanip>
 #include <sstream>
 
+#include "text_table.h"
 #include "uuvplan/io/campaign_yaml.h"
+#include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::tool {
 
 std::string Cell(double v, int precision) {
-  if (!std::isfinite(v)) return "-";
-  std::ostringstream os;
-  os << std::setprecision(precision) << v;
-  return os.str();
+  return std::isfinite(v) ? model::Significant(v, precision) : "-";
 }
 
 namespace {
 
-// The parameters of a DOF: value, σ, percentile error and significance.
+// The parameters of a DOF: value, σ (each with its unit), percentile error and significance.
 void PrintParameters(const ident::DofIdentification& d, std::ostream& out) {
+  TextTable table({"DOF", "parameter", "value", "σ", "error (%)", "significance"});
   for (const auto& e : d.params) {
     std::string sig;
     double value = e.value, sigma = e.sigma;
@@ -29,7 +30,6 @@ void PrintParameters(const ident::DofIdentification& d, std::ostream& out) {
       case ident::ParameterState::kEstimated:
         sig = e.significant ? "significant" : "NOT significant (> 51.02%)";
         break;
-
       case ident::ParameterState::kDropped:
         sig = "dropped (insignificant, set to 0)";
         value = e.value_before_drop;
@@ -44,36 +44,40 @@ void PrintParameters(const ident::DofIdentification& d, std::ostream& out) {
     }
     const double pe =
         e.state == ident::ParameterState::kFixed ? std::nan("") : e.percentile_error();
-    out << "  " << std::left << std::setw(26) << e.name << std::right << std::setw(13)
-        << Cell(value, 6) << std::setw(12) << Cell(sigma, 3) << std::setw(10) << Cell(pe, 3) << "  "
-        << sig << "\n";
+    const std::string unit = model::Unit(e.name, d.dof);
+    table.AddRow({std::string(model::DofName(d.dof)), e.name, Quantity(value, unit, 4),
+                  Quantity(sigma, unit, 3), Cell(pe, 3), sig});
   }
+  table.Print(out);
 }
 
 // The fit figures of a DOF, overall and per trial with its residual analysis.
 void PrintFit(const ident::DofIdentification& d, std::ostream& out) {
   const auto& f = d.fit;
+  // Angles for people in degrees (docs/cli.md); rates stay in rad/s, as the seeds report them.
+  const bool rotation = model::IsRotational(d.dof);
+  const double p_scale = rotation ? 180.0 / M_PI : 1.0;
+  const std::string v_unit(model::VelocityUnit(d.dof)), p_unit(rotation ? "°" : "m");
   out << "  fit: velocity MAE (seed 002 eq. 37) fit " << Cell(f.velocity_mae_fit) << ", validate "
-      << Cell(f.velocity_mae_validate) << " " << model::VelocityUnit(d.dof) << " (zero-velocity model "
+      << Cell(f.velocity_mae_validate) << " " << v_unit << " (zero-velocity model "
       << Cell(f.zero_velocity_mae_fit) << ", " << Cell(f.zero_velocity_mae_validate)
-      << "); position RMS fit "
-      << Cell(f.position_rms_fit) << ", validate " << Cell(f.position_rms_validate) << " "
-      << model::PositionUnit(d.dof) << "\n";
-  out << "  " << std::left << std::setw(34) << "trial" << std::setw(10) << "use" << std::right
-      << std::setw(12) << "vel. MAE" << std::setw(12) << "pos. RMS"
-      << "  residuals\n";
+      << " " << v_unit << "); position RMS fit " << Cell(p_scale * f.position_rms_fit) << ", validate "
+      << Cell(p_scale * f.position_rms_validate) << " " << p_unit << "\n";
+  TextTable table({"DOF", "trial", "use", "vel. MAE (" + v_unit + ")", "pos. RMS (" + p_unit + ")",
+                   "residuals"});
   for (const auto& t : f.trials) {
+    const bool position = t.residual_signal == "position";
+    const std::string unit = position ? p_unit : v_unit;
     std::ostringstream res;
-    res << t.residual_signal << " mean " << Cell(t.residuals.mean, 3) << ", "
+    res << t.residual_signal << " mean " << Cell((position ? p_scale : 1.0) * t.residuals.mean, 3) << " " << unit << ", "
         << (t.residuals.white ? "white" : "NOT white") << " (" << t.residuals.lags_outside << "/"
         << (t.residuals.autocorrelation.empty() ? 0 : t.residuals.autocorrelation.size() - 1)
-        << " lags outside ±" << Cell(t.residuals.bound95, 2) << ")";
-    out << "  " << std::left << std::setw(34) << t.name << std::setw(10) << io::TrialUseName(t.use)
-        << std::right << std::setw(12) << Cell(t.velocity_mae) << std::setw(12)
-        << Cell(t.position_rms) << "  " << res.str()
-        << (t.velocity_reference == "estimated" ? " [velocity estimated from positions]" : "")
-        << "\n";
+        << " lags outside ±" << Cell(t.residuals.bound95, 2) << ")"
+        << (t.velocity_reference == "estimated" ? " [velocity estimated from positions]" : "");
+    table.AddRow({std::string(model::DofName(d.dof)), t.name, io::TrialUseName(t.use),
+                  Cell(t.velocity_mae), Cell(p_scale * t.position_rms), res.str()});
   }
+  table.Print(out);
 }
 
 void PrintDof(const ident::DofIdentification& d, std::ostream& out) {
@@ -82,9 +86,6 @@ void PrintDof(const ident::DofIdentification& d, std::ostream& out) {
       << ident::FinalEstimatorName(d.estimator) << "; " << d.fit_trials.size() << " fit, "
       << d.validate_trials.size() << " validate trial(s))\n";
   if (d.status == ident::IdentifyStatus::kFailed) out << "  FAILED: " << d.message << "\n";
-  out << "  " << std::left << std::setw(26) << "parameter" << std::right << std::setw(13) << "value"
-      << std::setw(12) << "sigma" << std::setw(10) << "error %"
-      << "  significance\n";
   PrintParameters(d, out);
   PrintFit(d, out);
   if (d.one_step && d.one_step->ok() && d.one_step->standard) {

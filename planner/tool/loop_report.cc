@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "text_table.h"
 #include "trial_text.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
@@ -31,7 +32,7 @@ std::string Percent(double p) {
 std::string TrialLine(const model::TrialDesign& d) {
   std::ostringstream s;
   s << std::left << std::setw(9) << model::TrialKindName(d.kind) << std::setw(22) << d.mapping
-    << std::right << std::fixed << std::setprecision(1) << std::setw(6) << d.duration << " s  "
+    << std::right << std::setw(9) << model::DurationText(d.duration) << "  "
     << ForceText(d, kLoopForceStyle);
   if (d.ballast_steps != 0) s << ", ballast " << d.ballast_steps;
   return s.str();
@@ -98,30 +99,28 @@ std::string DofHeadline(const planner::DofProgress& p, double target) {
          ")";
 }
 
-void PrintInterestLine(model::Dof dof, const planner::InterestParameter& q, double target,
-                       const model::Truth* truth, std::ostream& out) {
-  std::ostringstream line;
+// One row of a DOF's interest table: parameter, value, σ, percentile error, state; with a
+// truth also the true value and the estimate's error against it (in % and in σ).
+std::vector<std::string> InterestRow(model::Dof dof, const planner::InterestParameter& q,
+                                     double target, const model::Truth* truth) {
   const std::string unit = model::Unit(q.name, dof);
-  line << "    " << std::left << std::setw(30) << q.name << std::right;
+  std::vector<std::string> row{std::string(model::DofName(dof)), q.name};
   if (std::isfinite(q.value)) {
-    line << std::setw(11) << model::Significant(q.value, 4) << " ± " << std::left
-         << std::setw(10) << model::Significant(q.sigma, 3) << std::right << std::setw(8)
-         << (q.estimated ? Percent(q.percent) : "held") << (q.estimated && q.percent <= target ? "  ok" : "    ")
-         << " " << std::left << std::setw(12) << (unit == "1" ? "" : unit) << std::right;
+    row.insert(row.end(), {Quantity(q.value, unit, 4), Quantity(q.sigma, unit, 3),
+                           q.estimated ? model::Significant(q.percent, 3) : "-",
+                           !q.estimated ? "held" : q.percent <= target ? "ok" : "above target"});
   } else {
-    line << std::setw(34) << "not estimated yet" << std::setw(17) << "";
+    row.insert(row.end(), {"-", "-", "-", "not estimated yet"});
   }
   if (truth != nullptr) {
     const double v = ident::TrueParameter(*truth, dof, q.name);
-    line << " true " << model::Significant(v, 4);
-    if (std::isfinite(q.value) && v != 0) {
-      line << std::fixed << std::setprecision(2) << "  error " << std::showpos
-           << 100.0 * (q.value - v) / std::abs(v) << "%" << std::noshowpos << " ("
-           << std::setprecision(1) << (q.value - v) / q.sigma << "σ)" << std::defaultfloat;
-    }
+    const bool compared = std::isfinite(q.value) && v != 0;
+    row.insert(row.end(),
+               {Quantity(v, unit, 4),
+                compared ? model::Significant(100.0 * (q.value - v) / std::abs(v), 3) : "-",
+                compared ? model::Significant((q.value - v) / q.sigma, 2) : "-"});
   }
-  out << line.str() << "\n";
-  if (!q.flag.empty()) out << "      ! " << q.flag << "\n";
+  return row;
 }
 
 }  // namespace
@@ -131,7 +130,14 @@ void PrintProgress(const std::vector<planner::DofProgress>& progress, double tar
   for (const auto& p : progress) {
     out << "  " << model::DofName(p.dof) << " (" << p.trials << " trial"
         << (p.trials == 1 ? "" : "s") << "): " << DofHeadline(p, target) << "\n";
-    for (const auto& q : p.interest) PrintInterestLine(p.dof, q, target, truth, out);
+    std::vector<std::string> titles{"DOF", "parameter", "value", "σ", "error (%)", "state"};
+    if (truth != nullptr) titles.insert(titles.end(), {"true", "off truth (%)", "off truth (σ)"});
+    TextTable table(titles);
+    for (const auto& q : p.interest) table.AddRow(InterestRow(p.dof, q, target, truth));
+    table.Print(out, "    ");
+    for (const auto& q : p.interest) {
+      if (!q.flag.empty()) out << "      ! " << q.name << ": " << q.flag << "\n";
+    }
     if (p.consistency.tested) out << "    consistency: " << p.consistency.text << "\n";
     if (!p.converged) {
       for (const auto& d : p.doubts) {

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "command.h"
+#include "usage_errors.h"
 #include "uuvplan/model/input_error.h"
 
 int main(int argc, char** argv) {
@@ -14,16 +15,23 @@ int main(int argc, char** argv) {
       "vehicles (drag, added mass, thruster installation losses)",
       "uuvplan"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("uuvplan ") + UUVPLAN_VERSION,
+                       "the version (CMake project()) and exit");
   auto& commands = Registry();
   std::sort(commands.begin(), commands.end(),
             [](const Command& a, const Command& b) { return a.order < b.order; });
   std::function<int()> run;
   for (auto& c : commands) c.add(app, &run);
+  if (const auto unknown = UnknownNameMessage(app, argc, argv)) {
+    std::cerr << *unknown << "\n";
+    return kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::cerr << ParseErrorMessage(e) << "\n";
+    return kExitBadInput;
   }
   try {
     return run ? run() : kExitBadInput;

@@ -4,6 +4,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "uuvplan/model/util/text.h"
+
 namespace uuvplan::tool {
 namespace {
 
@@ -30,7 +32,7 @@ std::string ForceText(const model::TrialDesign& d, const ForceTextStyle& style) 
     case model::TrialKind::kSine:
       s << d.offset << " ± " << d.amplitude << unit;
       if (style.sine_omega) {
-        s << ", ω " << std::setprecision(3) << d.omega << " (T " << std::setprecision(1)
+        s << ", ω " << std::setprecision(3) << d.omega << " rad/s (T " << std::setprecision(1)
           << 2 * M_PI / d.omega << " s)";
       } else {
         s << ", T " << 2 * M_PI / d.omega << " s";
@@ -41,6 +43,18 @@ std::string ForceText(const model::TrialDesign& d, const ForceTextStyle& style) 
       break;
   }
   return s.str();
+}
+
+std::string TravelText(model::Dof dof, double lo, double hi) {
+  if (!model::IsRotational(dof)) {
+    return "[" + model::Significant(lo, 3) + ", " + model::Significant(hi, 3) + "] m";
+  }
+  const double to_degrees = 180.0 / M_PI;
+  std::string text = "[" + model::Significant(lo * to_degrees, 4) + "°, " +
+                     model::Significant(hi * to_degrees, 4) + "°]";
+  const double turns = std::max(std::abs(lo), std::abs(hi)) / (2 * M_PI);
+  if (turns >= 1.0) text += " (" + model::Significant(turns, 3) + " turns)";
+  return text;
 }
 
 }  // namespace uuvplan::tool

@@ -18,12 +18,16 @@ struct ForceTextStyle {
   bool every_segment_mapping = false;
 };
 
-/// The schedule table's force column: "35.0"; "-5.0 ± 4.0, ω 0.262 (T 24.0 s)";
-/// "60.0 10s vertical-all | -60.0 10s vertical-all".
-inline constexpr ForceTextStyle kScheduleForceStyle{false, true, "s", true};
+/// The schedule table's force column: "35.0 N"; "-5.0 ± 4.0 N·m, ω 0.262 rad/s (T 24.0 s)";
+/// "60.0 N 10 s vertical-all | -60.0 N 10 s vertical-all".
+inline constexpr ForceTextStyle kScheduleForceStyle{true, true, " s", true};
 /// The loop's trial lines: "35.0 N"; "-5.0 ± 4.0 N, T 24.0 s"; "60.0 N 10 s | -60.0 N 10 s".
 inline constexpr ForceTextStyle kLoopForceStyle{true, false, " s", false};
 
 std::string ForceText(const model::TrialDesign& d, const ForceTextStyle& style);
+
+/// A trial's travel for people: "[-0.12, 3.4] m", or for a rotation in degrees and turns
+/// "[0°, 1080°] (3 turns)".
+std::string TravelText(model::Dof dof, double lo, double hi);
 
 }  // namespace uuvplan::tool

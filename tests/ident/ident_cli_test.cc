@@ -64,7 +64,7 @@ TEST(IdentifyCliTest, SimulatedCampaignGivesTheContractJson) {
   ASSERT_EQ(r.status, 0) << r.out;
   // The readable table names each parameter with value, σ, percentile error and significance.
   EXPECT_NE(r.out.find("parameter"), std::string::npos);
-  EXPECT_NE(r.out.find("error %"), std::string::npos);
+  EXPECT_NE(r.out.find("error (%)"), std::string::npos);
   EXPECT_NE(r.out.find("velocity MAE"), std::string::npos);
   std::ifstream f(out);
   const json j = json::parse(f);

@@ -29,10 +29,11 @@ namespace fs = std::filesystem;
 const std::string kRomeoTruth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/truth.yaml";
 const std::string kVsorTruth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/vsor/truth.yaml";
 // The contract's commands, uuvplan's `score` (issue #14: compare two models on one campaign)
-// and `report` (issue #18: the HTML report and its figures).
+// `report` (issue #18: the HTML report and its figures) and `log` (issue #18: grow a campaign at
+// the pool).
 const std::set<std::string> kContractCommands = {"schedule", "check-pool", "simulate", "identify",
                                                  "next",     "loop",       "diagnose", "demo",
-                                                 "score",    "report"};
+                                                 "score",    "report",     "log"};
 
 // A small ROMEO plan: one trial of each kind (seed 000 §IV-D flavours, short).
 std::string SmallPlan() {

@@ -19,6 +19,9 @@ struct ThrustModel {
 
   /// Thrust (N) for a command V (command units, e.g. volts).
   double Thrust(double command) const;
+  /// The command that gives `thrust` (N): the inverse of Thrust (both models are odd-signed and
+  /// monotonic), in closed form; it may lie outside a thruster's command range.
+  double Command(double thrust) const;
 };
 
 struct Thruster {

@@ -3,6 +3,7 @@
 // that an output is written whole or not at all.
 #pragma once
 
+#include <map>
 #include <string>
 
 namespace uuvplan::io {
