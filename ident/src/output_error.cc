@@ -508,6 +508,29 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
 
 namespace {
 
+// The coarse stage of a long record (OutputErrorOptions::coarse_measurements): the same
+// unknowns (z layout) fitted on bins ~duration/coarse_measurements long with a longer RK4
+// step; its answer starts the full-size fit. The start `z0` when the record is short or the
+// coarse fit fails (the full-size fit then does all the work, as without this stage).
+Eigen::VectorXd CoarseStart(const model::DofModel& model, const std::vector<const TrialData*>& trials,
+                            const Eigen::VectorXd& theta, const std::vector<int>& free,
+                            const std::vector<TrialInitialState>* initial, const Problem& full,
+                            const Eigen::VectorXd& z0, const OutputErrorOptions& o) {
+  if (o.coarse_measurements <= 0 || full.num_r() <= 2 * o.coarse_measurements) return z0;
+  double duration = 0.0;
+  for (const TrialProblem& tp : full.trials()) {
+    if (!tp.times.empty()) duration += tp.times.back();
+  }
+  OutputErrorOptions c = o;
+  c.bin_s = std::max(o.bin_s, duration / o.coarse_measurements);
+  c.step_s = std::min(std::max(o.step_s, 0.1), std::max(o.step_s, 5.0 * o.step_s));
+  c.grid_s = 0.0;
+  const Problem coarse(model, trials, theta, free, initial, c);
+  if (coarse.num_z() != full.num_z() || coarse.num_r() <= coarse.num_z()) return z0;
+  const LmOutcome lm = LevenbergMarquardt(coarse, z0, c);
+  return !lm.failed && lm.z.allFinite() ? lm.z : z0;
+}
+
 // Gross errors the data preparation let through (an outlier next to a command step, say)
 // would pull a least-squares fit: residuals beyond 6 robust standard deviations (and 5
 // declared σ) are left out and the fit repeated once. Returns how many were left out.
@@ -661,7 +684,8 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
                     std::to_string(p.num_z()) + " unknowns";
       return res;
     }
-    LmOutcome lm = LevenbergMarquardt(p, p.InitialZ(), o);
+    LmOutcome lm = LevenbergMarquardt(
+        p, CoarseStart(model, trials, theta, free, initial.empty() ? nullptr : &initial, p, p.InitialZ(), o), o);
     res.iterations += lm.iterations;
     if (lm.failed) {
       res.status = OutputErrorStatus::kFailed;
