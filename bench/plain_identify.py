@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The plain NumPy/SciPy identification issue #16 compares `uuvplan identify` with.
 
     python3 bench/plain_identify.py CAMPAIGN_DIR_OR_CSV
@@ -54,7 +54,7 @@ def main(path):
     theta, *_ = np.linalg.lstsq(A, b, rcond=None)
     r = b - A @ theta
     cov = np.linalg.inv(A.T @ A) * (r @ r) / (len(b) - A.shape[1])
-    m, k, kq, bias = theta[0], theta[1], theta[2], -theta[3]
+    m, k, kq, bias = theta
     sig = np.sqrt(np.diag(cov))
 
     # Free-run score: the fitted model on the logged (held) force, velocity MAE.
