@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs uuvplan's build and test dependencies from Debian packages (bookworm).
 # Idempotent and non-interactive: packages already present are not fetched again.
+# Usage: scripts/install-deps.sh [--bench]
+#   --bench  also the optional benchmark dependencies (bench/plain_identify.py: NumPy, SciPy);
+#            the build and the tests never need them.
 set -euo pipefail
 
 packages=(
@@ -13,6 +16,8 @@ packages=(
   # the report's render test opens the HTML in headless Chromium
   chromium fonts-dejavu-core
 )
+bench_packages=(python3 python3-numpy python3-scipy)
+if [ "${1:-}" = "--bench" ]; then packages+=("${bench_packages[@]}"); fi
 
 missing=()
 for p in "${packages[@]}"; do

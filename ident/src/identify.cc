@@ -2,6 +2,7 @@
 // of identify_stages.h (prepare → estimate → refine → validate), timed.
 #include "uuvplan/ident/identify.h"
 
+#include "diagnosis/parallel.h"
 #include "identify_stages.h"
 #include "options_check.h"
 #include "uuvplan/model/effects.h"
@@ -95,7 +96,8 @@ std::vector<Dof> DofsToIdentify(const std::vector<TrialData>& trials, const Iden
 bool IdentifyOptions::IsValid(std::string* error) const {
   return data.IsValid(error) && steady.IsValid(error) && inertia.IsValid(error) &&
          one_step.IsValid(error) && closed_loop_iv.IsValid(error) && output_error.IsValid(error) &&
-         Require(validation.step_s > 0, "ValidationOptions::step_s must be > 0", error);
+         Require(validation.step_s > 0, "ValidationOptions::step_s must be > 0", error) &&
+         Require(threads >= 0, "IdentifyOptions::threads must be >= 0 (0: one per core)", error);
 }
 
 std::string_view IdentifyStatusName(IdentifyStatus s) { return kIdentifyStatusNames.Name(s); }
@@ -120,26 +122,27 @@ IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& 
   std::string error;
   if (!o.IsValid(&error)) throw model::InputError("identify options", error);
   IdentifyResult result;
-  std::vector<TrialData> trials;
-  std::vector<double> prepare_s;  // per trial
-  trials.reserve(campaign.trials.size());
-  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
+  // Trials, then DOFs, in parallel: each job fills its own slot (diagnosis/parallel.h).
+  std::vector<TrialData> trials(campaign.trials.size());
+  std::vector<double> prepare_s(trials.size());  // per trial
+  diagnosis::ParallelFor(trials.size(), o.threads, [&](std::size_t i) {
     Stopwatch watch;
-    trials.push_back(PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.data));
-    prepare_s.push_back(watch.Lap());
-    result.trials.push_back(ReportOf(trials.back()));
-  }
+    trials[i] = PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.data);
+    prepare_s[i] = watch.Lap();
+  });
+  for (const TrialData& t : trials) result.trials.push_back(ReportOf(t));
   const std::vector<Dof> dofs = DofsToIdentify(trials, o);
   if (dofs.empty()) {
     result.status = IdentifyStatus::kFailed;
     result.message = "no trial has `use: fit`: nothing to identify";
     return result;
   }
-  for (Dof d : dofs) {
+  result.dofs.resize(dofs.size());
+  diagnosis::ParallelFor(dofs.size(), o.threads, [&](std::size_t k) {
     double share = 0.0;
-    for (const TrialData& t : trials) share += t.dof == d ? prepare_s[t.index] : 0.0;
-    result.dofs.push_back(IdentifyDof(campaign, d, trials, share, o));
-  }
+    for (const TrialData& t : trials) share += t.dof == dofs[k] ? prepare_s[t.index] : 0.0;
+    result.dofs[k] = IdentifyDof(campaign, dofs[k], trials, share, o);
+  });
   result.status = IdentifyStatus::kOk;
   std::string failed;
   for (const auto& d : result.dofs) {

@@ -9,6 +9,7 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/util/seed.h"
+#include "diagnosis/parallel.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -200,30 +201,45 @@ MonteCarloReport RunMonteCarlo(const model::Truth& truth,
   if (!o.IsValid(&error)) throw model::InputError("Monte Carlo options", error);
   MonteCarloReport report;
   report.repetitions = o.repetitions;
-  CoverageTally tally(truth, o.z);
-  std::map<std::pair<int, std::string>, double> crb;
-  bool crb_done = false;
   model::VirtualCampaignOptions virtual_pool;
   virtual_pool.uses = o.uses;
   virtual_pool.pause_s = o.pause_s;
-  for (int rep = 0; rep < o.repetitions; ++rep) {
-    virtual_pool.seed = model::SplitMix64(o.seed + 0x1000 * static_cast<std::uint64_t>(rep));
-    IdentifyResult res;
-    model::Campaign campaign;
+  auto pool_of = [&](int rep) {
+    model::VirtualCampaignOptions v = virtual_pool;
+    v.seed = model::SplitMix64(o.seed + 0x1000 * static_cast<std::uint64_t>(rep));
+    return v;
+  };
+  // Repetitions in parallel, each into its own slot; tallied in order below.
+  struct Slot {
+    IdentifyResult result;
+    std::string error;  ///< what Identify or the virtual pool threw
+  };
+  std::vector<Slot> slots(o.repetitions);
+  IdentifyOptions identify = o.identify;
+  if (o.threads != 1) identify.threads = 1;  // the repetitions share the cores
+  diagnosis::ParallelFor(slots.size(), o.threads, [&](std::size_t rep) {
     try {
-      campaign = model::BuildVirtualCampaign(truth, designs, virtual_pool);
-      res = Identify(campaign, o.identify);
+      slots[rep].result = Identify(model::BuildVirtualCampaign(truth, designs, pool_of(int(rep))), identify);
     } catch (const std::exception& ex) {
+      slots[rep].error = ex.what();
+    }
+  });
+  CoverageTally tally(truth, o.z);
+  std::map<std::pair<int, std::string>, double> crb;
+  bool crb_done = false;
+  for (int rep = 0; rep < o.repetitions; ++rep) {
+    const Slot& s = slots[rep];
+    if (!s.error.empty()) {
       ++report.failures;
-      if (report.notes.size() < 5) report.notes.push_back("repetition " + std::to_string(rep) + ": " + ex.what());
+      if (report.notes.size() < 5) report.notes.push_back("repetition " + std::to_string(rep) + ": " + s.error);
       continue;
     }
-    for (const DofIdentification& d : res.dofs) {
+    for (const DofIdentification& d : s.result.dofs) {
       if (!tally.AddDof(d)) ++report.failures;
     }
     if (o.cramer_rao && !crb_done) {
-      crb_done = true;
-      crb = CramerRaoSigmas(truth, campaign, res, o);
+      crb_done = true;  // the first good repetition's campaign, rebuilt from its seed
+      crb = CramerRaoSigmas(truth, model::BuildVirtualCampaign(truth, designs, pool_of(rep)), s.result, o);
     }
   }
   report.cells = tally.Cells(crb);

@@ -208,8 +208,9 @@ StackedSystem Stack(const std::vector<OneStepDofInput>& dofs, const std::vector<
 }
 
 // The trial simulated by the current estimate from the data's initial state: on a fine grid
-// (every input breakpoint, steps <= simulation_step_s) and at the data's samples. False when
-// a simulation diverges.
+// (every input breakpoint, steps <= simulation_step_s) and at the data's samples (left empty
+// when they are the fine grid's: velocities from positions, or dense samples). False when a
+// simulation diverges.
 bool SimulatedVelocities(const model::DofModel& model, const std::vector<const TrialData*>& trials,
                          const Eigen::VectorXd& theta, const OneStepOptions& o,
                          std::vector<SmoothedSignal>* fine, std::vector<SmoothedSignal>* sampled) {
@@ -241,9 +242,7 @@ bool SimulatedVelocities(const model::DofModel& model, const std::vector<const T
     // from positions are smooth local polynomials whose error is the filter's, not the
     // interpolation's; and samples denser than the fine grid leave no defect: no correction
     // for those.
-    if (trial->velocity_from_position || dense) {
-      s2 = f;
-    } else {
+    if (!trial->velocity_from_position && !dense) {
       s2.t = v.t;
       std::size_t i = 0;
       for (double t : v.t) {
@@ -299,7 +298,14 @@ bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const One
   std::vector<SmoothedSignal> fine, sampled;
   if (!SimulatedVelocities(*in.model, in.trials, theta_now, o, &fine, &sampled)) return false;
   const OneStepRows Z = BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &fine);
-  const OneStepRows Zs = BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &sampled);
+  // The interpolation defect Z − Zs is zero where the samples are the fine grid (empty).
+  bool defect = false;
+  for (std::size_t i = 0; i < sampled.size(); ++i) {
+    if (sampled[i].t.empty()) sampled[i] = fine[i];
+    else defect = true;
+  }
+  const OneStepRows Zs =
+      defect ? BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &sampled) : Z;
   if (Z.F.rows() != R.F.rows() || Zs.F.rows() != R.F.rows()) return false;
   // Rows scaled by 1/σ of their noise (Ω keeps its form: the weight is constant in a run).
   const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();

@@ -37,7 +37,19 @@ struct TrialProblem {
   struct Hermite {
     double h00, h10, h01, h11, u;  // cubic Hermite basis at the time (h10, h11 times h)
   };
-  std::vector<Hermite> weights;
+  // The basis of times[i] in its interval, computed when read (stored, it was 40 bytes a
+  // sample: 40 MB of a 10⁶-sample trial).
+  double U(int i) const {
+    const int g = interval[i];
+    const double h = grid[g + 1] - grid[g];
+    return h > 0 ? std::clamp((times[i] - grid[g]) / h, 0.0, 1.0) : 0.0;
+  }
+  Hermite Weights(int i) const {
+    const double h = grid[interval[i] + 1] - grid[interval[i]];
+    const double u = U(i);
+    return {(1 + 2 * u) * (1 - u) * (1 - u), h * u * (1 - u) * (1 - u), u * u * (3 - 2 * u),
+            h * u * u * (u - 1), u};
+  }
   int num_residuals() const { return static_cast<int>(pos_y.size() + vel_y.size()); }
 };
 
@@ -176,10 +188,6 @@ class Problem {
           for (double t : times) {
             while (g + 2 < tp.grid.size() && tp.grid[g + 1] < t) ++g;
             tp.interval.push_back(static_cast<int>(g));
-            const double h = tp.grid[g + 1] - tp.grid[g];
-            const double u = h > 0 ? std::clamp((t - tp.grid[g]) / h, 0.0, 1.0) : 0.0;
-            tp.weights.push_back({(1 + 2 * u) * (1 - u) * (1 - u), h * u * (1 - u) * (1 - u),
-                                  u * u * (3 - 2 * u), h * u * u * (u - 1), u});
           }
         }
       }
@@ -314,14 +322,14 @@ class Problem {
     double x(int i, int s) const {
       if (tp_.grid.empty()) return g_.x(i, s);
       const int k = tp_.interval[i];
-      const TrialProblem::Hermite& w = tp_.weights[i];
+      const TrialProblem::Hermite w = tp_.Weights(i);
       if (s >= 2) return (1 - w.u) * g_.x(k, s) + w.u * g_.x(k + 1, s);
       return w.h00 * g_.x(k, s) + w.h10 * dl_(k, s) + w.h01 * g_.x(k + 1, s) + w.h11 * dr_(k, s);
     }
     double S(int i, int s, int j) const {
       if (tp_.grid.empty()) return g_.S[s](i, j);
       const int k = tp_.interval[i];
-      const double u = tp_.weights[i].u;
+      const double u = tp_.U(i);
       return (1 - u) * g_.S[s](k, j) + u * g_.S[s](k + 1, j);
     }
 
@@ -508,6 +516,29 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
 
 namespace {
 
+// The coarse stage of a long record (OutputErrorOptions::coarse_measurements): the same
+// unknowns (z layout) fitted on bins ~duration/coarse_measurements long with a longer RK4
+// step; its answer starts the full-size fit. The start `z0` when the record is short or the
+// coarse fit fails (the full-size fit then does all the work, as without this stage).
+Eigen::VectorXd CoarseStart(const model::DofModel& model, const std::vector<const TrialData*>& trials,
+                            const Eigen::VectorXd& theta, const std::vector<int>& free,
+                            const std::vector<TrialInitialState>* initial, const Problem& full,
+                            const Eigen::VectorXd& z0, const OutputErrorOptions& o) {
+  if (o.coarse_measurements <= 0 || full.num_r() <= 2 * o.coarse_measurements) return z0;
+  double duration = 0.0;
+  for (const TrialProblem& tp : full.trials()) {
+    if (!tp.times.empty()) duration += tp.times.back();
+  }
+  OutputErrorOptions c = o;
+  c.bin_s = std::max(o.bin_s, duration / o.coarse_measurements);
+  c.step_s = std::min(std::max(o.step_s, 0.1), std::max(o.step_s, 5.0 * o.step_s));
+  c.grid_s = 0.0;
+  const Problem coarse(model, trials, theta, free, initial, c);
+  if (coarse.num_z() != full.num_z() || coarse.num_r() <= coarse.num_z()) return z0;
+  const LmOutcome lm = LevenbergMarquardt(coarse, z0, c);
+  return !lm.failed && lm.z.allFinite() ? lm.z : z0;
+}
+
 // Gross errors the data preparation let through (an outlier next to a command step, say)
 // would pull a least-squares fit: residuals beyond 6 robust standard deviations (and 5
 // declared σ) are left out and the fit repeated once. Returns how many were left out.
@@ -661,7 +692,8 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
                     std::to_string(p.num_z()) + " unknowns";
       return res;
     }
-    LmOutcome lm = LevenbergMarquardt(p, p.InitialZ(), o);
+    LmOutcome lm = LevenbergMarquardt(
+        p, CoarseStart(model, trials, theta, free, initial.empty() ? nullptr : &initial, p, p.InitialZ(), o), o);
     res.iterations += lm.iterations;
     if (lm.failed) {
       res.status = OutputErrorStatus::kFailed;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace uuvplan::ident {
 
@@ -70,7 +71,12 @@ IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const Tri
   // Slopes for cubic Hermite interpolation: the filter's acceleration where known.
   const std::vector<double>* va = &src.derivative;
   if (va && va->size() != vv.size()) va = nullptr;
-  std::size_t cursor = 0;
+  // The cursor starts at the first boundary (a binary search), not at the signal's start: the
+  // callers integrate one run of a long trial at a time, and a scan from the start each time
+  // made the one-step rows quadratic in the trial's length (400 runs × 10⁶ samples).
+  std::size_t cursor = vt.empty() ? 0
+                       : static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+                             0, std::upper_bound(vt.begin(), vt.end(), b[0]) - vt.begin() - 1));
   // Interpolation with a forward-moving cursor (queries are increasing): cubic Hermite between
   // samples with the filter's accelerations (the local polynomials of the Savitzky–Golay fit),
   // linear where an acceleration is missing.

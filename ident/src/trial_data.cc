@@ -383,9 +383,13 @@ std::vector<std::pair<std::size_t, std::size_t>> SmoothRuns(const TrialData& d,
   std::size_t begin = 0;
   bool open = false;
   std::size_t next_jump = 0;
+  // NearForceJump(d, t, half) with a forward cursor (t increases): the first jump >= t − half.
+  std::size_t near_jump = 0;
+  const std::vector<double>& jumps = d.force_jumps;
   for (std::size_t i = 0; i < v.size(); ++i) {
-    const bool usable = !v.edge[i] && std::isfinite(v.value[i]) &&
-                        (!split_at_force_jumps || !NearForceJump(d, v.t[i], half));
+    while (near_jump < jumps.size() && jumps[near_jump] < v.t[i] - half) ++near_jump;
+    const bool near = near_jump < jumps.size() && jumps[near_jump] <= v.t[i] + half;
+    const bool usable = !v.edge[i] && std::isfinite(v.value[i]) && (!split_at_force_jumps || !near);
     // A jump between the previous usable sample and this one also ends the run.
     bool crossed = false;
     while (next_jump < d.force_jumps.size() && d.force_jumps[next_jump] <= v.t[i]) {

@@ -84,6 +84,8 @@ void BindDiagnose(CLI::App* sub, DiagnoseCommandOptions* o) {
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_option("--dof", o->dofs, "diagnose only this DOF (repeatable)");
   AddAcceptUnitsFlag(sub, &o->accept_units);
+  AddThreadsOption(sub, {&o->diagnose.threads, &o->diagnose.identify.threads},
+                   "the candidate fits and the nominal identification");
   sub->add_option("--write-vehicle", o->write_vehicle,
                   "write the extended model (every parameter with sigma, the effects found) "
                   "into this vehicle file, for `uuvplan score` and every command");

@@ -113,6 +113,7 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
                   "whether the logs were recorded in closed loop: auto (detect), yes, no")
       ->capture_default_str();
   AddAcceptUnitsFlag(sub, &o->accept_units);
+  AddThreadsOption(sub, {&o->identify.threads}, "preparing the trials and fitting the DOFs");
 }
 
 const CommandRegistration kRegistration(MakeCommand<IdentifyCommandOptions>(

@@ -241,6 +241,7 @@ void BindLoop(CLI::App* sub, LoopCliOptions* o) {
                   "for)");
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_flag("--verbose", o->verbose, "print each iteration's design and identification notes");
+  AddThreadsOption(sub, {&o->loop.step.identify.threads}, "each iteration's identification (trials and DOFs)");
 }
 
 const CommandRegistration kRegistration(MakeCommand<LoopCliOptions>(

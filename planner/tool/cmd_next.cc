@@ -168,6 +168,7 @@ void BindNext(CLI::App* sub, NextCliOptions* o) {
       ->capture_default_str();
   AddJsonOption(sub, &o->json, "also write the result");
   AddAcceptUnitsFlag(sub, &o->accept_units);
+  AddThreadsOption(sub, {&o->design.identify.threads}, "identifying (trials and DOFs)");
 }
 
 const CommandRegistration kRegistration(MakeCommand<NextCliOptions>(

@@ -86,6 +86,13 @@ std::vector<model::Dof> ParseDofFlags(const std::vector<std::string>& names) {
   return dofs;
 }
 
+void AddThreadsOption(CLI::App* sub, const std::vector<int*>& targets, const std::string& what) {
+  sub->add_option_function<int>(
+         "--threads", [targets](int n) { for (int* t : targets) *t = n; },
+         "threads for " + what + " (default 0: one per core; the results do not depend on it)")
+      ->check(CLI::NonNegativeNumber);
+}
+
 void AddAcceptUnitsFlag(CLI::App* sub, bool* accept) {
   sub->add_flag("--accept-units", *accept,
                 "identify even when a log's units or signs look wrong (a rate 57.3× the "

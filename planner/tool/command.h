@@ -78,6 +78,10 @@ std::string DirectoryName(const std::string& path);
 /// `--accept-units`: identify even when the campaign's logs fail the unit and sign checks.
 void AddAcceptUnitsFlag(CLI::App* sub, bool* accept);
 
+/// `--threads N` (default 0: one per core), stored into every option of `targets` (the
+/// library Options' `threads`); `what` says what runs in parallel. Results never depend on it.
+void AddThreadsOption(CLI::App* sub, const std::vector<int*>& targets, const std::string& what);
+
 /// The campaign at `path` (io::ReadCampaign) after the unit and sign checks of
 /// ident/input_sanity.h, run by every command that identifies from it (identify, diagnose,
 /// next): a finding is a model::InputError naming the file, the column and the likely unit

@@ -63,6 +63,9 @@ struct IdentifyOptions {
   bool refine = true;                ///< run the output-error stage
   bool prune_insignificant = true;   ///< seed 000 §IV-D model selection (both stages)
   ClosedLoop closed_loop = ClosedLoop::kAuto;
+  /// Threads for preparing the trials and fitting the DOFs (0: one per core); each job fills
+  /// its own slot, so the result does not depend on it.
+  int threads = 0;
   bool IsValid(std::string* error) const;
 };
 

@@ -40,6 +40,9 @@ struct MonteCarloOptions {
   std::vector<model::TrialUse> uses;
   double pause_s = 60.0;
   bool cramer_rao = true;  ///< compute the output-error CRB at the truth (first repetition)
+  /// Threads for the repetitions (0: one per core). Each repetition draws from its own seed
+  /// and is tallied in order: the report does not depend on it.
+  int threads = 0;
   bool IsValid(std::string* error) const;
 };
 

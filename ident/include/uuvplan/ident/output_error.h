@@ -56,6 +56,12 @@ struct OutputErrorOptions {
   bool prune_insignificant = true;
   std::vector<std::string> prunable = {"k", "kq", "bias", "bias_step"};
   double max_condition = 1e12;
+  /// Multi-resolution start for long records: with more than 2× this many measurements, the
+  /// fit first runs on bins of about duration/coarse_measurements s (RK4 step up to 5× step_s,
+  /// at most 0.1 s), and Levenberg–Marquardt on every measurement starts where that stopped,
+  /// so the full-size simulations only polish (a 10⁶-sample trial: 2 instead of 6). The answer
+  /// is the full-size fit's, judged by its own convergence test. 0 = off.
+  int coarse_measurements = 100000;
   bool IsValid(std::string* error) const;
 };
 

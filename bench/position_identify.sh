@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Issue #16's comparison on one machine, in one run: `uuvplan identify` against the plain
+# NumPy/SciPy script (bench/plain_identify.py) on the 1,000,000-row position-only surge trial
+# (bench/position_identify_bench --write, seeded), alternating, best of N runs of each (the
+# machine is shared: the best run is the least disturbed one). Prints wall and CPU seconds and
+# the peak RSS of each, the CSV's size, and the estimates.
+#   bench/position_identify.sh [N] [UUVPLAN_BINARY]...   (default 5; build/uuvplan)
+# Needs the optional benchmark dependencies: scripts/install-deps.sh --bench.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${UUVPLAN_BUILD_DIR:-$root/build}"
+runs="${1:-5}"
+shift || true
+binaries=("$@")
+[ ${#binaries[@]} -gt 0 ] || binaries=("$build/uuvplan")
+python=/usr/bin/python3  # Debian's, which has python3-numpy and python3-scipy
+if ! "$python" -c 'import numpy, scipy' 2>/dev/null; then
+  echo "position_identify.sh: NumPy/SciPy missing: run scripts/install-deps.sh --bench" >&2
+  exit 2
+fi
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+"$build/bench/position_identify_bench" --write "$dir/campaign" --rows 1000000 >/dev/null
+csv="$(ls "$dir"/campaign/trials/*.csv)"
+echo "trial: $(wc -l <"$csv") lines, $(stat -c %s "$csv") bytes of CSV"
+best() {  # best (lowest wall) of the "wall user sys rss" lines on stdin
+  sort -n | head -1 | awk '{ printf "wall %.2f s, CPU %.2f s, peak RSS %.0f MB\n", $1, $2 + $3, $4 / 1024 }'
+}
+declare -A times
+for ((i = 0; i < runs; i++)); do
+  for b in "${binaries[@]}"; do
+    /usr/bin/time -f "%e %U %S %M" -o "$dir/t" "$b" identify "$dir/campaign" >"$dir/out" 2>/dev/null || true
+    times[$b]+="$(cat "$dir/t")"$'\n'
+  done
+  /usr/bin/time -f "%e %U %S %M" -o "$dir/t" "$python" "$root/bench/plain_identify.py" "$dir/campaign" >"$dir/py"
+  times[py]+="$(cat "$dir/t")"$'\n'
+done
+for b in "${binaries[@]}"; do
+  echo "$b identify, best of $runs: $(printf '%s' "${times[$b]}" | best)"
+  "$b" identify "$dir/campaign" 2>/dev/null | grep -E '^  (m|k|kq|bias) |note|WARNING' || true
+done
+echo "plain_identify.py, best of $runs: $(printf '%s' "${times[py]}" | best)"
+cat "$dir/py"
