@@ -538,8 +538,10 @@ int RefitWithoutGrossErrors(Problem* p, const OutputErrorOptions& o, LmOutcome* 
 }
 
 // Residuals correlated over the record (model error or coloured noise): the AR(1)-prewhitened
-// sandwich of z (covariance.h; ρ per trial and sensor), never less than the white-noise one
-// s²·crb_z.
+// sandwich of z (covariance.h; ρ per trial and sensor), each σ at least the white-noise one
+// s²·crb_z: D·HAC·D, D_jj = max(1, √(s²crb_jj / HAC_jj)), which keeps the correlations and a
+// positive semi-definite matrix. (Falling back to the whole white matrix when any entry, an
+// initial state say, fell below it left VSOR under ρ = 0.9 noise at 83–87% coverage.)
 Eigen::MatrixXd RobustCovariance(const Problem& p, const LmOutcome& lm, double sigma2,
                                  const Eigen::MatrixXd& crb_z) {
   std::vector<int> groups(p.num_r());
@@ -550,10 +552,12 @@ Eigen::MatrixXd RobustCovariance(const Problem& p, const LmOutcome& lm, double s
     }
   }
   const Eigen::MatrixXd hac = PrewhitenedSandwich(lm.J, lm.r, groups, &crb_z).covariance;
+  Eigen::VectorXd d(hac.rows());
   for (int j = 0; j < hac.rows(); ++j) {
-    if (hac(j, j) < sigma2 * crb_z(j, j)) return sigma2 * crb_z;
+    if (!(hac(j, j) > 0)) return sigma2 * crb_z;
+    d[j] = std::max(1.0, std::sqrt(sigma2 * crb_z(j, j) / hac(j, j)));
   }
-  return hac;
+  return d.asDiagonal() * hac * d.asDiagonal();
 }
 
 // Cov(z) = s²·(JᵀJ)⁻¹ (HAC when the residuals are coloured) and the CRB (JᵀJ)⁻¹, in the model
