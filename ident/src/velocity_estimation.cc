@@ -133,6 +133,8 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
     if (!*gains_set) {
       out->value_gain = wv.norm();
       out->derivative_gain = wd.norm() / h;
+      out->derivative_weights.assign(wd.data(), wd.data() + wd.size());
+      for (double& x : out->derivative_weights) x /= h;
       *gains_set = true;
     }
     for (int i = hw; i < n - hw; ++i) {
@@ -157,6 +159,8 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
     if (!*gains_set && !out->edge[b + i]) {
       out->value_gain = wv.norm();
       out->derivative_gain = wd.norm() / h;
+      out->derivative_weights.assign(wd.data(), wd.data() + wd.size());
+      for (double& x : out->derivative_weights) x /= h;
       *gains_set = true;
     }
   }

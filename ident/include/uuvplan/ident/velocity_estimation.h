@@ -57,6 +57,7 @@ struct SmoothedSignal {
   /// (per second; for the median step of the first run).
   double value_gain = 1.0;
   double derivative_gain = 0.0;
+  std::vector<double> derivative_weights;  ///< the centred filter's, per second (gain = norm)
   std::size_t size() const { return t.size(); }
 };
 
