@@ -38,7 +38,75 @@ int RunCorrelationLength(const Eigen::VectorXd& u, const std::vector<std::pair<i
   return std::max(1, longest / 20);
 }
 
+// Ωx, Ω_ij = ρ^|i−j|: forward and backward AR(1) recursions, Ωx = f + b − x.
+Eigen::VectorXd Ar1Times(const Eigen::VectorXd& x, double rho) {
+  const Eigen::Index n = x.size();
+  Eigen::VectorXd f(n), b(n);
+  for (Eigen::Index i = 0; i < n; ++i) f[i] = x[i] + (i > 0 ? rho * f[i - 1] : 0.0);
+  for (Eigen::Index i = n; i-- > 0;) b[i] = x[i] + (i + 1 < n ? rho * b[i + 1] : 0.0);
+  return f + b - x;
+}
+
+// L x, L the symmetric lag-1 matrix (½ on the first off-diagonals).
+Eigen::VectorXd LagTimes(const Eigen::VectorXd& x) {
+  const Eigen::Index n = x.size();
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index i = 1; i < n; ++i) {
+    y[i] += 0.5 * x[i - 1];
+    y[i - 1] += 0.5 * x[i];
+  }
+  return y;
+}
+
+// E Σr² and E Σr_i r_{i−1} (per unit marginal variance) of the residuals of a fit on the
+// orthonormal basis Q under AR(1) errors of coefficient ρ.
+std::pair<double, double> ExpectedResidualMoments(const Eigen::MatrixXd& Q, double rho) {
+  const Eigen::Index n = Q.rows(), q = Q.cols();
+  Eigen::MatrixXd OQ(n, q), LQ(n, q);
+  for (Eigen::Index c = 0; c < q; ++c) {
+    OQ.col(c) = Ar1Times(Q.col(c), rho);
+    LQ.col(c) = LagTimes(Q.col(c));
+  }
+  const Eigen::MatrixXd QOQ = Q.transpose() * OQ, QLQ = Q.transpose() * LQ;
+  const double sq = static_cast<double>(n) - QOQ.trace();
+  const double lag = (n - 1) * rho - 2.0 * (LQ.transpose() * OQ).trace() + (QLQ * QOQ).trace();
+  return {sq, lag};
+}
+
 }  // namespace
+
+double Ar1FromFittedResiduals(const std::vector<FittedResiduals>& fits) {
+  double num = 0.0, den = 0.0, N = 0.0;
+  std::vector<Eigen::MatrixXd> bases;
+  for (const FittedResiduals& f : fits) {
+    if (f.X.rows() <= f.X.cols() + 2 || !(f.sum_sq > 0)) continue;
+    Eigen::HouseholderQR<Eigen::MatrixXd> qr(f.X);
+    bases.push_back(qr.householderQ() * Eigen::MatrixXd::Identity(f.X.rows(), f.X.cols()));
+    num += f.sum_lag1;
+    den += f.sum_sq;
+    N += static_cast<double>(f.X.rows());
+  }
+  if (!(den > 0) || num / den <= 2.0 / std::sqrt(N)) return 0.0;
+  const double observed = num / den;
+  // g(ρ) = Σ E lag − ρ̂·Σ E sq rises with ρ; bisection on [0, 0.99].
+  auto g = [&](double rho) {
+    double lag = 0.0, sq = 0.0;
+    for (const Eigen::MatrixXd& Q : bases) {
+      const auto [s, l] = ExpectedResidualMoments(Q, rho);
+      sq += s;
+      lag += l;
+    }
+    return lag - observed * sq;
+  };
+  double lo = 0.0, hi = 0.99;
+  if (g(hi) <= 0) return hi;
+  if (g(lo) >= 0) return 0.0;
+  for (int it = 0; it < 40; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (g(mid) < 0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
 
 int CorrelationLength(const Eigen::VectorXd& u, const std::vector<int>& groups) {
   return RunCorrelationLength(u, GroupRuns(groups));

@@ -76,14 +76,12 @@ void AddRuns(const model::DofModel& model, const TrialData& trial, const Eigen::
   const int np = model.num_parameters();
   const SmoothedSignal& v = trial.velocity_estimate;
   const double input_sigma = trial.velocity_from_position ? trial.position_sigma : trial.velocity_sigma;
-  double gain = trial.velocity_from_position ? v.derivative_gain : v.value_gain;
   const bool raw = o.raw_measured_velocity && !trial.velocity_from_position &&
                    trial.velocity.size() == v.size() && trial.velocity.t == v.t;
   SmoothedSignal raw_signal;
   if (raw) {
     raw_signal = v;
     raw_signal.value = trial.velocity.y;
-    gain = 1.0;
   }
   const SmoothedSignal& src = raw ? raw_signal : v;
   // The sensor's noise colour from its own samples (ρ = 1 + 2·γ_d(1)/γ_d(0) of the differences
@@ -92,7 +90,9 @@ void AddRuns(const model::DofModel& model, const TrialData& trial, const Eigen::
   for (const auto& [begin, end] : SmoothRuns(trial)) {
     Run run;
     run.trial = trial.index;
-    run.noise_var = input_sigma > 0 ? std::pow(gain * input_sigma, 2) : 0.0;
+    // Raw samples: the sensor's σ (gain 1); else the filter's noise (AR(1)-aware).
+    run.noise_var = raw ? (input_sigma > 0 ? std::pow(input_sigma, 2) : 0.0)
+                        : std::pow(VelocityNoiseSigma(trial), 2);
     for (std::size_t i = begin; i < end; i += stride) {
       run.t.push_back(src.t[i]);
       run.xi.push_back(src.value[i]);

@@ -64,9 +64,7 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
   for (std::size_t ti = 0; ti < trials.size(); ++ti) {
     const TrialData* trial = trials[ti];
     const SmoothedSignal& v = trial->velocity_estimate;
-    const double input_sigma = trial->velocity_from_position ? trial->position_sigma : trial->velocity_sigma;
-    const double gain = trial->velocity_from_position ? v.derivative_gain : v.value_gain;
-    const double row_var = input_sigma > 0 && gain > 0 ? 2.0 * std::pow(gain * input_sigma, 2) : 0.0;
+    const double row_var = 2.0 * std::pow(VelocityNoiseSigma(*trial), 2);
     if (row_var > 0) {
       noise_var_sum += row_var;
       ++noise_count;

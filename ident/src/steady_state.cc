@@ -77,6 +77,7 @@ std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetect
   // mean) gives its own segments; the more precise estimate of each piece is kept.
   std::vector<SteadySegment> segments;
   std::vector<char> segment_from_position;
+  double noise_ar1[2] = {0.0, 0.0};  // of the velocity and the position sensor
   for (const bool from_position : {true, false}) {
     if (from_position ? !trial.has_position() : !trial.has_velocity()) continue;
     const Signal& s = from_position ? trial.position : trial.velocity;
@@ -100,6 +101,12 @@ std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetect
     } else {
       found = DetectSteadySegments(s, from_position, pieces, o, sigma);
     }
+    // Correlated noise: each speed's σ from the sensor's AR(1) pooled over the segments.
+    std::vector<const SpeedFit*> fits;
+    for (const SteadySegment& seg : found) fits.push_back(&seg.fit);
+    const double rho = PooledNoiseAr1(fits);
+    noise_ar1[from_position] = rho;
+    for (SteadySegment& seg : found) seg.fit.sigma = Ar1SpeedSigma(seg.fit, rho, sigma);
     for (const SteadySegment& seg : found) {
       bool replaced = false;
       for (std::size_t k = 0; k < segments.size(); ++k) {
@@ -134,6 +141,7 @@ std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetect
     if (trial.aux) trial.aux->At(mid, &p.velocities);
     p.user_marked = seg.user_marked;
     p.from_position = from_position;
+    p.noise_ar1 = noise_ar1[from_position];
     out.push_back(p);
   }
   return out;
@@ -158,7 +166,7 @@ void RefineSteadyPoints(const model::DofModel& model, const Eigen::VectorXd& the
     const SettlingFit f = SettlingSpeedFit(s, p.from_position, p.t0, p.t1, sigma, m / kl);
     if (!f.ok) continue;
     p.xi = f.speed;
-    p.sigma_xi = f.sigma;
+    p.sigma_xi = Ar1SpeedSigma(f, p.noise_ar1, sigma);
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include "number_text.h"
 #include "options_check.h"
+#include "uuvplan/ident/covariance.h"
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::ident {
@@ -300,6 +301,7 @@ void EstimateVelocity(const TrialDataOptions& o, TrialData* d) {
     SmoothedSignal s = SavitzkyGolay(d->position, sg);
     d->initial_position = s.value.front();
     d->initial_velocity = std::isfinite(s.derivative.front()) ? s.derivative.front() : 0.0;
+    d->position_noise_ar1 = NoiseAr1FromDifferences(d->position.y, s.value);
     d->velocity_estimate = s;
     d->velocity_estimate.value = s.derivative;  // velocity
     d->velocity_estimate.derivative = s.second_derivative;  // acceleration
@@ -412,6 +414,18 @@ std::vector<std::pair<std::size_t, std::size_t>> SmoothRuns(const TrialData& d,
 
 double EstimatedVelocity(const TrialData& d, double t) {
   return Interpolate(d.velocity_estimate.t, d.velocity_estimate.value, t);
+}
+
+double VelocityNoiseSigma(const TrialData& trial) {
+  const SmoothedSignal& v = trial.velocity_estimate;
+  const double sigma = trial.velocity_from_position ? trial.position_sigma : trial.velocity_sigma;
+  if (!(sigma > 0)) return 0.0;
+  if (!trial.velocity_from_position) return v.value_gain * sigma;
+  if (trial.position_noise_ar1 > 0 && !v.derivative_weights.empty()) {
+    return sigma * std::sqrt(std::max(0.0, Ar1QuadraticForm(v.derivative_weights,
+                                                            trial.position_noise_ar1)));
+  }
+  return v.derivative_gain * sigma;
 }
 
 }  // namespace uuvplan::ident

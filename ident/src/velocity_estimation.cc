@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "options_check.h"
+#include "uuvplan/ident/covariance.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -132,6 +133,8 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
     if (!*gains_set) {
       out->value_gain = wv.norm();
       out->derivative_gain = wd.norm() / h;
+      out->derivative_weights.assign(wd.data(), wd.data() + wd.size());
+      for (double& x : out->derivative_weights) x /= h;
       *gains_set = true;
     }
     for (int i = hw; i < n - hw; ++i) {
@@ -156,6 +159,8 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
     if (!*gains_set && !out->edge[b + i]) {
       out->value_gain = wv.norm();
       out->derivative_gain = wd.norm() / h;
+      out->derivative_weights.assign(wd.data(), wd.data() + wd.size());
+      for (double& x : out->derivative_weights) x /= h;
       *gains_set = true;
     }
   }
@@ -401,6 +406,12 @@ SpeedFit ConstantSpeedFit(const Signal& s, double t0, double t1, double known_si
   for (auto i = lo; i < hi; ++i) r.push_back(s.y[i] - ym - f.speed * (s.t[i] - tm));
   // Eq. 11 for the slope: σ_v² = σ_ε² / Σ(t − t̄)².
   SetSpeedSigma(r, 2, known_sigma, stt, &f);
+  f.fitted = 2;
+  f.design.assign(n, 1.0);
+  for (auto i = lo; i < hi; ++i) {
+    f.weights.push_back((s.t[i] - tm) / stt);
+    f.design.push_back(s.t[i] - tm);
+  }
   return f;
 }
 
@@ -416,6 +427,9 @@ SpeedFit MeanSpeedFit(const Signal& s, double t0, double t1, double known_sigma)
   for (auto i = lo; i < hi; ++i) r.push_back(s.y[i] - mean);
   f.speed = mean;
   SetSpeedSigma(r, 1, known_sigma, static_cast<double>(n), &f);
+  f.fitted = 1;
+  f.weights.assign(n, 1.0 / n);
+  f.design.assign(n, 1.0);
   return f;
 }
 
@@ -526,8 +540,22 @@ SettlingFit SettlingSpeedFit(const Signal& s, bool is_position, double t0, doubl
   // Without a visible transient τ is not determined: the covariance at fixed τ is used.
   const int q = cond < 1e12 && !(fixed_tau > 0) ? p : p - 1;
   const double var = known_sigma > 0 ? known_sigma * known_sigma : rss / (n - q);
-  const Eigen::MatrixXd C = var * N.topLeftCorner(q, q).ldlt().solve(Eigen::MatrixXd::Identity(q, q));
+  const Eigen::MatrixXd Ninv = N.topLeftCorner(q, q).ldlt().solve(Eigen::MatrixXd::Identity(q, q));
+  const Eigen::MatrixXd C = var * Ninv;
   const int iv = is_position ? 1 : 0, ib = is_position ? 2 : 1;
+  // The speed's weights on the samples: row iv of (JᵀJ)⁻¹Jᵀ; the residuals' lag-1.
+  const Eigen::VectorXd w = J.leftCols(q) * Ninv.col(iv);
+  f.weights.assign(w.data(), w.data() + n);
+  f.fitted = q;
+  f.design.assign(J.data(), J.data() + static_cast<std::ptrdiff_t>(n) * q);
+  std::vector<double> r(n);
+  for (int i = 0; i < n; ++i) {
+    const double arg = (s.t[lo + i] - start) / tau;
+    const double e = arg < 40.0 ? std::exp(-arg) : 0.0;
+    r[i] = s.y[lo + i] - coef[0] - (is_position ? coef[1] * (s.t[lo + i] - tbar) + coef[2] * e
+                                                : coef[1] * e);
+  }
+  f.lag1 = Lag1(r);
   f.speed = is_position ? coef[1] : coef[0];
   f.sigma = std::sqrt(std::max(0.0, C(iv, iv)));
   f.offset = coef[0];
@@ -641,6 +669,30 @@ std::vector<SteadySegment> DetectSteadySegments(const Signal& s, bool is_positio
     }
   }
   return out;
+}
+
+double PooledNoiseAr1(const std::vector<const SpeedFit*>& fits) {
+  std::vector<FittedResiduals> sets;
+  for (const SpeedFit* f : fits) {
+    if (!f->ok || f->fitted < 1 || f->design.size() != std::size_t(f->n) * f->fitted) continue;
+    FittedResiduals r;
+    r.X = Eigen::Map<const Eigen::MatrixXd>(f->design.data(), f->n, f->fitted);
+    r.sum_sq = f->residual_sd * f->residual_sd * (f->n - f->fitted);
+    r.sum_lag1 = f->lag1 * r.sum_sq;
+    sets.push_back(std::move(r));
+  }
+  return Ar1FromFittedResiduals(sets);
+}
+
+double Ar1SpeedSigma(const SpeedFit& fit, double rho, double noise_sigma) {
+  if (fit.weights.empty()) return fit.sigma;
+  double sd = noise_sigma;
+  if (!(sd > 0)) {
+    // E rss ≈ σ²·(n − q·(1 + ρ)/(1 − ρ)): fitted coefficients absorb q long-run variances.
+    const double dof = fit.n - fit.fitted * (1 + rho) / (1 - rho);
+    sd = fit.residual_sd * std::sqrt((fit.n - fit.fitted) / std::max(0.25 * fit.n, dof));
+  }
+  return sd * std::sqrt(std::max(0.0, Ar1QuadraticForm(fit.weights, rho)));
 }
 
 double Interpolate(const std::vector<double>& t, const std::vector<double>& y, double at) {

@@ -65,11 +65,10 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   for (const CoverageCell& cell : rep.cells) {
     if (cell.estimator == "final") continue;             // the output error, counted once
     if (cell.n < 0.8 * rep.repetitions) continue;        // reported in too few repetitions
-    if (c.ar1 > 0 && (cell.estimator == "steady_state" || cell.estimator == "integral_inertia")) {
-      // Known gaps under AR(1) noise (docs/validation.md, "Coloured noise"), printed, not
-      // scored: the steady-state points' σ from a short segment's lag-1 (VSOR sd/σ up to 2.3);
-      // the integral method's errors-in-variables correction with a position sensor (ROMEO
-      // heave m covers ~68%) and its noise ρ from raw − smoothed differences (VSOR sd/σ 0.56).
+    const bool integral_ar1 = c.ar1 > 0 && cell.estimator == "integral_inertia";
+    if (integral_ar1 && c.name.rfind("romeo_surge", 0) == 0) {
+      // Known gap under AR(1) noise (docs/validation.md, "Coloured noise"), printed, not
+      // scored: ROMEO surge's integral m is heavy-tailed (85% at full size, sd/σ 1.5).
       continue;
     }
     const double se = std::sqrt(0.9 * 0.1 / cell.n);
@@ -77,6 +76,13 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
         << cell.estimator << " " << model::DofName(cell.dof) << " " << cell.name;
     const double ms = (cell.sd * cell.sd + std::pow(cell.mean - cell.truth, 2)) /
                       (cell.mean_sigma * cell.mean_sigma);
+    // Under AR(1) the integral method's σ is conservative on VSOR (sd/σ 0.64 at full size: the
+    // gyro's ρ from raw − smoothed differences errs high): its coverage is scored, not its RMS.
+    // The steady state's σ varies between repetitions under AR(1) (ρ pooled over 3–5 segments,
+    // s² on 1 degree of freedom on VSOR): the spread over the mean σ is then not 1 even for a
+    // right σ (VSOR at n = 30: 1.54–1.63 with coverage 89–100%; 0.89–0.95 at n = 200), so its
+    // coverage is scored, not its RMS.
+    if (integral_ar1 || (c.ar1 > 0 && cell.estimator == "steady_state")) continue;
     pooled[cell.estimator].first += ms;
     pooled[cell.estimator].second += 1;
   }
@@ -93,8 +99,8 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   }
 }
 
-// The same campaigns with AR(1) sensor noise of ρ = 0.9 (the worst case): the output
-// error's and the one-step LS's σ must stay calibrated (covariance.h, docs/identification.md).
+// The same campaigns with AR(1) sensor noise of ρ = 0.9 (the worst case): every
+// estimator's σ must stay calibrated (covariance.h, docs/identification.md).
 std::vector<McCase> Cases() {
   std::vector<McCase> white = {{"romeo_surge", "romeo", testing::RomeoSurgeDesigns()},
                                {"romeo_heave", "romeo", testing::RomeoHeaveDesigns()},

@@ -51,6 +51,23 @@ double Ar1Coefficient(const Eigen::VectorXd& r);
 /// ρ = 0). Clamped to [0, 0.99]. NaN samples split the series.
 double NoiseAr1FromDifferences(const std::vector<double>& y, const std::vector<double>& s);
 
+/// Residuals of a least-squares fit of `X` (n × q, rows consecutive samples) to a series
+/// with AR(1) errors, summarised by Σr_i² and Σr_i·r_{i−1}.
+struct FittedResiduals {
+  Eigen::MatrixXd X;
+  double sum_sq = 0.0;
+  double sum_lag1 = 0.0;
+};
+
+/// The AR(1) coefficient of the errors behind several fits' residuals, freed of the fits'
+/// bias: r = (I − P)e, P = QQᵀ (Q an orthonormal basis of X), so with Ω_ij = ρ^|i−j|,
+/// E Σr² = n − tr(QᵀΩQ) and E Σr_i r_{i−1} = (n−1)ρ − 2tr(QᵀLΩQ) + tr(QᵀLQ·QᵀΩQ) (L the
+/// symmetric lag-1 matrix, ½ off the diagonal); ρ solves Σ_k E Σr_i r_{i−1} = ρ̂·Σ_k E Σr²,
+/// ρ̂ = Σ_k sum_lag1 / Σ_k sum_sq (bisection; Ωx in O(n)). A mean over n samples leaves
+/// ρ̂ ≈ ρ − (1 + 3ρ)/n (Marriott & Pope 1954); a settling fit's exponential column takes less.
+/// Clamped to [0, 0.99]; 0 when the pooled ρ̂ is not above 2/√N (N the samples).
+double Ar1FromFittedResiduals(const std::vector<FittedResiduals>& fits);
+
 /// Σ_s Σ_t c_s c_t ρ^|s−t| = cᵀΩc/σ² of a stationary AR(1) (O(n): q_s = c_s + ρ·q_{s−1},
 /// the sum is 2·Σ c_s q_s − Σ c_s²).
 double Ar1QuadraticForm(const std::vector<double>& c, double rho);

@@ -47,6 +47,7 @@ struct SteadyPoint {
   std::array<double, model::kNumDofs> velocities{};  ///< other DOFs at mid-segment
   bool user_marked = false;
   bool from_position = true;
+  double noise_ar1 = 0.0;  ///< AR(1) ρ of the sensor's noise (PooledNoiseAr1), in sigma_xi
 };
 
 /// Steady segments of a trial: detected in every constant-force piece, or the user's windows

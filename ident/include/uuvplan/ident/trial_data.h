@@ -82,6 +82,9 @@ struct TrialData {
   /// `derivative` is the acceleration of the same local polynomials.
   SmoothedSignal velocity_estimate;
   bool velocity_from_position = true;
+  /// AR(1) coefficient of the position noise (NoiseAr1FromDifferences of the raw and smoothed
+  /// positions; 0 when the velocity is measured).
+  double position_noise_ar1 = 0.0;
   int sg_window = 21;
   /// Initial state from the data: Savitzky–Golay end polynomial at the first sample (position
   /// NaN without position samples).
@@ -116,6 +119,12 @@ std::vector<ForcePiece> ConstantForcePieces(const TrialData& trial, double force
 
 /// Velocity estimate at time t (linear interpolation of velocity_estimate).
 double EstimatedVelocity(const TrialData& trial, double t);
+
+/// Standard deviation of the velocity estimate's noise (0 when the sensor σ is unknown): the
+/// filter's gain times the sensor σ; for a position-derived velocity under AR(1) position
+/// noise σ·√(wᵀΩw) with w the derivative weights (covariance.h, Ar1QuadraticForm) — AR(1)
+/// noise of ρ = 0.9 has differences √10 times smaller than white noise of the same σ.
+double VelocityNoiseSigma(const TrialData& trial);
 
 /// Half the time span of the Savitzky–Golay window of the velocity estimate (s).
 double FilterHalfSpan(const TrialData& trial);

@@ -57,6 +57,7 @@ struct SmoothedSignal {
   /// (per second; for the median step of the first run).
   double value_gain = 1.0;
   double derivative_gain = 0.0;
+  std::vector<double> derivative_weights;  ///< the centred filter's, per second (gain = norm)
   std::size_t size() const { return t.size(); }
 };
 
@@ -86,6 +87,9 @@ struct SpeedFit {
   double lag1 = 0.0;          ///< lag-1 autocorrelation of the residuals
   int n = 0;
   double t0 = 0.0, t1 = 0.0;
+  int fitted = 0;                ///< coefficients fitted to the n samples
+  std::vector<double> weights;   ///< speed = Σ weights_i·y_i over the n samples (linearised)
+  std::vector<double> design;    ///< the fit's n × fitted columns (column-major, linearised)
 };
 SpeedFit ConstantSpeedFit(const Signal& position, double t0, double t1,
                           double known_sigma = -1.0);
@@ -109,6 +113,15 @@ struct SettlingFit : SpeedFit {
 /// then linear in the other parameters and far more precise.
 SettlingFit SettlingSpeedFit(const Signal& s, bool is_position, double t0, double t1,
                              double known_sigma, double fixed_tau = -1.0);
+
+/// The AR(1) coefficient of a sensor's noise from the residuals of its steady-segment fits,
+/// pooled and freed of the fits' bias (covariance.h, Ar1FromFittedResiduals).
+double PooledNoiseAr1(const std::vector<const SpeedFit*>& fits);
+
+/// σ of a fit's speed under AR(1) noise of marginal sd `noise_sigma` (≤ 0: the residuals'
+/// sd) and coefficient ρ: σ² = noise_sigma²·wᵀΩw, Ω_ij = ρ^|i−j| (covariance.h,
+/// Ar1QuadraticForm), exact for any segment length where √((1+ρ)/(1−ρ)) is the long-segment limit.
+double Ar1SpeedSigma(const SpeedFit& fit, double rho, double noise_sigma);
 
 /// A time interval during which the commanded force and mapping are constant.
 struct ForcePiece {
