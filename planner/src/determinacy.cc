@@ -115,6 +115,106 @@ Determinacy InterestDeterminacy(const DofContext& ctx, const std::vector<Eigen::
   return d;
 }
 
+namespace {
+
+// One (point, trial, parameter) of ReachTarget: the loop's n = (I_t − I_now)/ΔI.
+struct Reach {
+  double n = 0.0, now = 0.0, per_trial = kInf, needed = kInf;  // n; percents
+};
+
+Reach ReachOf(const Eigen::MatrixXd& info, const Eigen::MatrixXd& trial, const Eigen::VectorXd& th,
+              int i, const PrecisionGoal& goal) {
+  Reach r;
+  const double value = std::abs(th[i]);
+  if (!(value > 0)) return {kInf, kInf, kInf, 0.0};
+  const double s_now = PredictedSigma(info, th)[i];
+  const double i_now = std::isfinite(s_now) && s_now > 0 ? 1.0 / (s_now * s_now) : 0.0;
+  const double s_target = goal.target_percent / 100.0 * value;
+  const double i_target = 1.0 / (s_target * s_target);
+  r.now = std::isnan(s_now) ? kInf : 100.0 * s_now / value;
+  if (i_now >= i_target) return r;  // already at the target: n = 0
+  const double s_after = PredictedSigma(info + trial, th)[i];
+  const double gain = std::isfinite(s_after) && s_after > 0 ? 1.0 / (s_after * s_after) - i_now
+                                                            : 0.0;
+  r.needed = 100.0 * std::sqrt(goal.max_trials_to_target / (i_target - i_now)) / value;
+  r.per_trial = gain > 0 ? 100.0 / (std::sqrt(gain) * value) : kInf;
+  r.n = gain > 0 ? (i_target - i_now) / gain : kInf;
+  return r;
+}
+
+std::string ReachText(const TargetReach& r, const PrecisionGoal& goal) {
+  using internal::Fmt;
+  std::string s = r.parameter + " reaches " +
+                  (std::isfinite(r.per_trial_percent) ? Fmt(r.per_trial_percent) + "%"
+                                                      : std::string("no precision")) +
+                  " per trial here (the best, '" + r.trial + "', repeated; " + Fmt(r.now_percent) +
+                  "% after the schedule's trials); the target " + Fmt(goal.target_percent) +
+                  "% needs ≤ " + Fmt(r.needed_percent) + "% per trial";
+  if (std::isfinite(r.trials)) s += " (about " + Fmt(std::ceil(r.trials), 3) + " such trials";
+  else s += " (no number of such trials";
+  return s + ": the loop stops as stuck beyond " + Fmt(goal.max_trials_to_target) + ")";
+}
+
+}  // namespace
+
+std::vector<PlannedTrial> LoopCandidates(const DofContext& ctx, const SineDesignOptions& sine,
+                                         const SteadyDesignOptions& steady,
+                                         const std::vector<Eigen::MatrixXd>& info,
+                                         const std::string& id) {
+  std::vector<PlannedTrial> out;
+  Candidate all;  // DesignNextTrial's choice: the D sine on every parameter or a steady leg
+  ConsiderSine(ctx, sine, info, id + "-d", &all);
+  ConsiderSteadyLegs(ctx, steady, info, id + "-d", &all);
+  if (std::isfinite(all.criterion)) out.push_back(all.trial);
+  for (const std::string& n : InterestNames(ctx, info)) {
+    if (!model::StartsWith(n, model::param::kEtaPrefix)) continue;
+    const std::string rest = n.substr(std::string(model::param::kEtaPrefix).size());
+    SineDesignOptions so = sine;  // the loop's directed trial (next_trial_policy.cc, step 2)
+    so.mappings = {rest.substr(0, rest.rfind('.'))};
+    so.sign = rest.substr(rest.rfind('.') + 1) == "pos" ? +1 : -1;
+    so.open_water_only = false;
+    Candidate directed;
+    ConsiderSine(ctx, so, info, id + "-" + rest, &directed);
+    if (std::isfinite(directed.criterion)) out.push_back(directed.trial);
+  }
+  return out;
+}
+
+TargetReach ReachTarget(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
+                        const std::vector<PlannedTrial>& trials, const PrecisionGoal& goal) {
+  TargetReach out;
+  std::vector<std::vector<Eigen::MatrixXd>> added;
+  for (const auto& t : trials) added.push_back(ctx.Information(t.design));
+  const std::vector<std::string> names = InterestNames(ctx, info);
+  double worst = -1.0;
+  for (std::size_t j = 0; j < info.size() && j < ctx.design_thetas().size(); ++j) {
+    TargetReach best;  // the trial with the least n of its bottleneck at this point
+    best.trials = kInf;
+    for (std::size_t t = 0; t < trials.size(); ++t) {
+      TargetReach here;
+      here.trial = trials[t].design.id;
+      here.trials = -1.0;
+      for (const std::string& n : names) {
+        const Reach r = ReachOf(info[j], added[t][j], ctx.design_thetas()[j], ctx.Index(n), goal);
+        if (!(r.n > here.trials)) continue;  // the bottleneck: the largest n (NaN never)
+        here.parameter = n;
+        here.trials = r.n;
+        here.now_percent = r.now;
+        here.per_trial_percent = r.per_trial;
+        here.needed_percent = r.needed;
+      }
+      if (here.trials < best.trials) best = here;
+    }
+    if (best.trials > worst) {
+      worst = best.trials;
+      out = best;
+    }
+  }
+  out.reached = worst <= goal.max_trials_to_target;
+  if (!out.reached) out.text = ReachText(out, goal);
+  return out;
+}
+
 CompletionResult CompleteWithLoopFamilies(const DofContext& ctx, const SineDesignOptions& sine,
                                           const SteadyDesignOptions& steady,
                                           std::vector<Eigen::MatrixXd>* info,

@@ -143,6 +143,7 @@ void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {
   AddJsonOption(sub, &o->json, "write the schedule");
   sub->add_option("--robust", o->robust, "maximin (default), average or nominal")
       ->capture_default_str();
+  AddTargetOption(sub, &o->schedule.precision.target_percent);
   sub->add_option("--max-duration", o->schedule.planner.max_trial_duration_s, "longest trial (s)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);

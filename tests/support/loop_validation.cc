@@ -84,7 +84,7 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   planner::LoopOptions lo;
   lo.seed = seed;
   lo.step.dofs = c.dofs;
-  planner::ScheduleOptions so = lo.step.schedule;
+  planner::ScheduleOptions so = lo.step.ScheduleAtTarget();
   so.dofs = c.dofs;
   const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
   c.hosted = verdict.hosted;
@@ -106,7 +106,11 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   c.trials = static_cast<int>(r.iterations.size());
   c.pool_time_s = r.pool_time;
   switch (c.hostability) {
-    case planner::Hostability::kAll: c.agree = r.status != planner::LoopStatus::kInfeasible; break;
+    // All, at the target: the loop neither ends infeasible nor stuck short of the target.
+    case planner::Hostability::kAll:
+      c.agree = r.status != planner::LoopStatus::kInfeasible &&
+                r.status != planner::LoopStatus::kStuck;
+      break;
     case planner::Hostability::kNone: c.agree = r.status != planner::LoopStatus::kConverged; break;
     case planner::Hostability::kPart: c.agree = true; break;  // measured below
   }
@@ -180,7 +184,8 @@ std::string TallyText(const LoopTally& t) {
   std::ostringstream o;
   o << "cases " << t.cases << ", verdict all/part/none " << t.hosted << "/" << t.part << "/"
     << t.none << ", verdict and loop agree " << t.agree << "/" << t.cases
-    << " (all: not infeasible " << t.hosted_agree << "/" << t.hosted << "; part: converged "
+    << " (all: neither infeasible nor stuck " << t.hosted_agree << "/" << t.hosted
+    << "; part: converged "
     << t.part_converged << ", infeasible outside the hostable part " << t.part_outside
     << ", other " << t.part - t.part_converged - t.part_outside << "; none: not converged "
     << t.refused_agree << "/" << t.none << "), converged " << t.converged

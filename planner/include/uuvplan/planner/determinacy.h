@@ -21,6 +21,19 @@
 
 namespace uuvplan::planner {
 
+/// The loop's target (DesignLoopOptions::target_percent, `--target`): the largest percentile
+/// error 100·σ/|θ| of every parameter of interest. Issue #5: 5%.
+inline constexpr double kDefaultTargetPercent = 5.0;
+/// The loop's stuck rule (DesignLoopOptions::max_trials_to_target): a trial is negligible when
+/// reaching the target at its rate takes more than this many such trials.
+inline constexpr double kDefaultMaxTrialsToTarget = 5.0;
+
+/// The precision the pool verdict judges at: the loop's target and its stuck rule.
+struct PrecisionGoal {
+  double target_percent = kDefaultTargetPercent;
+  double max_trials_to_target = kDefaultMaxTrialsToTarget;
+};
+
 struct Determinacy {
   bool determined = false;            ///< every parameter of interest determined
   std::string worst;                  ///< the parameter of interest with the largest error
@@ -31,6 +44,36 @@ struct Determinacy {
 /// The determinacy of ctx's parameters of interest given the information `info` (absolute,
 /// one matrix per design point of ctx's box).
 Determinacy InterestDeterminacy(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info);
+
+/// Whether the loop can bring every parameter of interest to the target from `info` (the
+/// schedule's information at each design point of ctx's box) with repeats of one of `trials`
+/// before its stuck rule stops it. The loop's rule (CandidateGain, next_trial_policy.cc): a
+/// candidate with σ_now → σ_after is negligible when n = ((σ_now/σ_t)² − 1)/((σ_now/σ_after)² − 1)
+/// > N; in information I = 1/σ² that is n = (I_t − I_now)/ΔI with ΔI = I_after − I_now the
+/// trial's gain, so repeats of that trial reach the target iff n ≤ N, i.e. the trial's own
+/// relative σ, 1/sqrt(ΔI)/|θ|, is at most sqrt(N/(I_t − I_now))/|θ| (with I_now the
+/// information of one trial alone: ≤ σ_t·sqrt(N + 1)). Per design point: the best trial (least
+/// n of its bottleneck parameter); reached when n ≤ N at every point.
+struct TargetReach {
+  bool reached = true;
+  std::string parameter;  ///< the bottleneck at the worst point ("" when reached there at once)
+  std::string trial;      ///< the best trial's id there
+  double now_percent = 0.0;        ///< the bottleneck's 100·σ/|θ| after the schedule
+  double per_trial_percent = 0.0;  ///< 100/(sqrt(ΔI)·|θ|) of the best trial
+  double needed_percent = 0.0;     ///< the largest per-trial value that reaches the target
+  double trials = 0.0;             ///< n at the worst point
+  std::string text;  ///< "kq reaches 18% per trial here; the target 5% needs ≤ 12% ..."
+};
+TargetReach ReachTarget(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
+                        const std::vector<PlannedTrial>& trials, const PrecisionGoal& goal);
+
+/// The trials the loop may design next on `info` (its candidates, next_trial_policy.cc): the
+/// better by robust D of the D-optimal sine on every parameter and every steady leg from rest
+/// (DesignNextTrial), and a sine directed at each η of interest (its mapping and direction).
+std::vector<PlannedTrial> LoopCandidates(const DofContext& ctx, const SineDesignOptions& sine,
+                                         const SteadyDesignOptions& steady,
+                                         const std::vector<Eigen::MatrixXd>& info,
+                                         const std::string& id);
 
 /// The trials the loop's next-trial design would add (DesignNextTrial's families: a sine
 /// designed for D on every parameter — with an offset, from rest, in any mapping and
