@@ -120,6 +120,7 @@ DofVerdict JudgeOwn(const DofPlan* p, model::Dof dof, const model::Pool& pool) {
     return v;
   }
   v.determinacy = p->determinacy;
+  v.reach = p->reach;
   for (const auto& t : p->trials) v.extent = std::max(v.extent, t.travel[1] - t.travel[0]);
   v.hosted = p->status == DesignStatus::kOk && p->complete;
   v.need = v.extent;
@@ -129,7 +130,6 @@ DofVerdict JudgeOwn(const DofPlan* p, model::Dof dof, const model::Pool& pool) {
   }
   v.reason = p->message;
   const double free = pool.FreeTravel(dof);
-  v.reach = p->reach;
   v.below_target = p->determinacy.determined && !p->reach.reached;
   if (v.below_target) {
     // Longer runs and swings inform the drag more: a larger pool, confirmed by planning

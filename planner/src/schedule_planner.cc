@@ -214,17 +214,9 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
   // Complete: every parameter of interest determined, whichever families did it (a steady run
   // that does not fit is no loss when sines determine the drag).
   // ... and the loop's target reachable from them before its stuck rule stops it.
-  // First with repeats of the schedule's own trials, then of the trials the loop would design
-  // next on their information (LoopCandidates).
+  // With the trials the loop would design next, one after the other.
   if (plan.determinacy.determined) {
-    plan.reach = ReachTarget(*ctx, info, plan.trials, o.precision);
-    if (!plan.reach.reached) {
-      std::vector<PlannedTrial> candidates = plan.trials;
-      for (auto& t : LoopCandidates(*ctx, o.sine, o.steady, info, name + "-next")) {
-        candidates.push_back(std::move(t));
-      }
-      plan.reach = ReachTarget(*ctx, info, candidates, o.precision);
-    }
+    plan.reach = ReachTarget(*ctx, o.sine, o.steady, info, o.precision, name + "-next");
   }
   plan.complete = plan.determinacy.determined && plan.reach.reached;
   if (plan.complete) plan.required_travel = std::numeric_limits<double>::quiet_NaN();

@@ -90,6 +90,13 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   c.hosted = verdict.hosted;
   c.hostability = verdict.hostability;
   c.verdict = verdict.sentence;
+  for (const auto& d : verdict.dofs) {
+    c.reach += std::string(c.reach.empty() ? "" : "; ") + std::string(model::DofName(d.dof)) +
+               " " + d.reach.parameter + " n " + Significant(d.reach.trials, 3) + " ('" +
+               d.reach.trial + "' after " + Significant(d.reach.now_percent, 3) + "%: " +
+               Significant(d.reach.per_trial_percent, 3) + "% per trial, needs " +
+               Significant(d.reach.needed_percent, 3) + "%)";
+  }
   planner::VerdictOptions at_truth;
   at_truth.need_checks = -1;
   at_truth.judge_points = false;
@@ -176,6 +183,7 @@ std::string CaseLine(const LoopCaseOutcome& c) {
       << " ± " << Significant(e.sigma, 3) << " (truth " << Significant(e.truth, 4) << ", "
       << Significant(e.z, 3) << "σ)" << (e.within3 ? "" : "  > 3σ");
   }
+  o << "\n    reach: " << c.reach;
   if (c.status != planner::LoopStatus::kConverged) o << "\n    reason: " << c.message;
   return o.str();
 }

@@ -37,6 +37,9 @@ struct LoopCaseOutcome {
   bool hosted = false;  ///< JudgePool's verdict on the loop's DOFs: hosted over the whole box
   planner::Hostability hostability = planner::Hostability::kNone;  ///< all / part / none
   std::string verdict;  ///< its sentence
+  /// Per DOF of the verdict: the loop's trials to the target predicted at the worst point of
+  /// the box (TargetReach: bottleneck, n, per-trial and needed percentile errors).
+  std::string reach;
   /// The verdict for the true vehicle itself (a degenerate box at the truth, box_points.h).
   bool hosted_at_truth = false;
   planner::LoopStatus status = planner::LoopStatus::kInfeasible;  ///< RunLoop's end

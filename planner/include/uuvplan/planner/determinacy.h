@@ -46,34 +46,32 @@ struct Determinacy {
 Determinacy InterestDeterminacy(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info);
 
 /// Whether the loop can bring every parameter of interest to the target from `info` (the
-/// schedule's information at each design point of ctx's box) with repeats of one of `trials`
-/// before its stuck rule stops it. The loop's rule (CandidateGain, next_trial_policy.cc): a
-/// candidate with σ_now → σ_after is negligible when n = ((σ_now/σ_t)² − 1)/((σ_now/σ_after)² − 1)
-/// > N; in information I = 1/σ² that is n = (I_t − I_now)/ΔI with ΔI = I_after − I_now the
-/// trial's gain, so repeats of that trial reach the target iff n ≤ N, i.e. the trial's own
-/// relative σ, 1/sqrt(ΔI)/|θ|, is at most sqrt(N/(I_t − I_now))/|θ| (with I_now the
-/// information of one trial alone: ≤ σ_t·sqrt(N + 1)). Per design point: the best trial (least
-/// n of its bottleneck parameter); reached when n ≤ N at every point.
+/// schedule's information at each design point of ctx's box) before its stuck rule stops it.
+/// The loop's rule (CandidateGain, next_trial_policy.cc): a candidate with σ_now → σ_after is
+/// negligible when n = ((σ_now/σ_t)² − 1)/((σ_now/σ_after)² − 1) > N (max_trials_to_target);
+/// in information I = 1/σ² that is n = (I_t − I_now)/ΔI, ΔI = I_after − I_now the candidate's
+/// gain: the trial's own relative σ, 100/(sqrt(ΔI)·|θ|), must be at most
+/// 100·sqrt(N/(I_t − I_now))/|θ| (with I_now one such trial's: ≤ target·sqrt(N + 1)). The
+/// candidate is the loop's (DesignNextTrial: the better by robust D of the D-optimal sine and
+/// every steady leg from rest), designed again after each one is added, as the loop does: the
+/// next D-optimal trial is not a repeat (measured: random vehicle 34's heave, docs/planning.md).
+/// Per design point: reached when every parameter of interest gets to the target before some
+/// candidate's n exceeds N (at most 2N candidates; n ≤ N throughout counts as reached).
 struct TargetReach {
   bool reached = true;
-  std::string parameter;  ///< the bottleneck at the worst point ("" when reached there at once)
-  std::string trial;      ///< the best trial's id there
-  double now_percent = 0.0;        ///< the bottleneck's 100·σ/|θ| after the schedule
-  double per_trial_percent = 0.0;  ///< 100/(sqrt(ΔI)·|θ|) of the best trial
+  std::string parameter;  ///< the bottleneck at the point reported
+  std::string trial;      ///< the loop's candidate there
+  int step = 0;           ///< its number after the schedule (1 = the first sequential trial)
+  double now_percent = 0.0;        ///< the bottleneck's 100·σ/|θ| before that candidate
+  double per_trial_percent = 0.0;  ///< 100/(sqrt(ΔI)·|θ|) of the candidate
   double needed_percent = 0.0;     ///< the largest per-trial value that reaches the target
-  double trials = 0.0;             ///< n at the worst point
-  std::string text;  ///< "kq reaches 18% per trial here; the target 5% needs ≤ 12% ..."
+  /// n there: the first stuck point's (reached false), else the largest met.
+  double trials = 0.0;
+  std::string text;  ///< "kq reaches 18% per trial here …; the target 5% needs ≤ 12% …"
 };
-TargetReach ReachTarget(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
-                        const std::vector<PlannedTrial>& trials, const PrecisionGoal& goal);
-
-/// The trials the loop may design next on `info` (its candidates, next_trial_policy.cc): the
-/// better by robust D of the D-optimal sine on every parameter and every steady leg from rest
-/// (DesignNextTrial), and a sine directed at each η of interest (its mapping and direction).
-std::vector<PlannedTrial> LoopCandidates(const DofContext& ctx, const SineDesignOptions& sine,
-                                         const SteadyDesignOptions& steady,
-                                         const std::vector<Eigen::MatrixXd>& info,
-                                         const std::string& id);
+TargetReach ReachTarget(const DofContext& ctx, const SineDesignOptions& sine,
+                        const SteadyDesignOptions& steady, std::vector<Eigen::MatrixXd> info,
+                        const PrecisionGoal& goal, const std::string& id);
 
 /// The trials the loop's next-trial design would add (DesignNextTrial's families: a sine
 /// designed for D on every parameter — with an offset, from rest, in any mapping and
