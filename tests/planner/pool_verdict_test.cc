@@ -88,7 +88,10 @@ void CheckVerdict(const model::Vehicle& v, const model::Pool& pool, const std::v
       for (const auto& p : d.points) any = any || p.hosted;
       EXPECT_EQ(any, d.hostability == Hostability::kPart) << what;
     }
-    EXPECT_EQ(d.hosted, d.determinacy.determined) << what << " " << model::DofName(d.dof);
+    // Hosted: determined and the loop's target reachable (ReachTarget), nothing else.
+    EXPECT_EQ(d.hosted, d.determinacy.determined && d.reach.reached)
+        << what << " " << model::DofName(d.dof);
+    EXPECT_EQ(d.below_target, d.determinacy.determined && !d.reach.reached) << what;
     EXPECT_EQ(d.hosted, d.limit == PoolLimit::kNone) << what << " " << d.reason;
     const double need = std::isfinite(d.need) ? std::max(d.need, d.extent) : d.extent;
     // `required` ≥ every DOF's need and its trials' extent (1 µm: the sum of the margins).
