@@ -30,12 +30,20 @@ double WorstPercent(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& i
   return nominal > 0 && std::isfinite(nominal) ? 100.0 * worst / nominal : kInf;
 }
 
-// The parameters of interest (determinacy.h): m, the drag of interest, the holdable η.
+// The parameters of interest (determinacy.h): m, the drag of interest, the holdable η. The
+// drag of interest is kq when it is determined over the box, or with `point` ≥ 0 at that design
+// point alone (the loop's choice at a vehicle: kq when its identification finds it significant).
 std::vector<std::string> InterestNames(const DofContext& ctx,
-                                       const std::vector<Eigen::MatrixXd>& info) {
+                                       const std::vector<Eigen::MatrixXd>& info, int point = -1) {
   std::vector<std::string> names = {model::param::kMass};
   const int iq = ctx.Index(model::param::kQuadraticDrag);
-  const bool kq = iq >= 0 && WorstPercent(ctx, info, iq) <= kInsignificantPercent;
+  double kq_percent = kInf;
+  if (iq >= 0 && point < 0) kq_percent = WorstPercent(ctx, info, iq);
+  if (iq >= 0 && point >= 0) {
+    const Eigen::VectorXd& th = ctx.design_thetas()[point];
+    kq_percent = 100.0 * PredictedSigma(info[point], th)[iq] / std::abs(th[iq]);
+  }
+  const bool kq = kq_percent <= kInsignificantPercent;
   names.push_back(kq || ctx.Index(model::param::kLinearDrag) < 0 ? model::param::kQuadraticDrag
                                                                   : model::param::kLinearDrag);
   const model::Vehicle& v = ctx.vehicle();
@@ -113,6 +121,115 @@ Determinacy InterestDeterminacy(const DofContext& ctx, const std::vector<Eigen::
         n + (std::isfinite(p) ? " (σ " + internal::Fmt(p) + "% of its value)" : " (no trial)"));
   }
   return d;
+}
+
+namespace {
+
+// One (point, trial, parameter) of ReachTarget: the loop's n = (I_t − I_now)/ΔI.
+struct Reach {
+  double n = 0.0, now = 0.0, per_trial = kInf, needed = kInf;  // n; percents
+};
+
+Reach ReachOf(const Eigen::MatrixXd& info, const Eigen::MatrixXd& trial, const Eigen::VectorXd& th,
+              int i, const PrecisionGoal& goal) {
+  Reach r;
+  const double value = std::abs(th[i]);
+  if (!(value > 0)) return {kInf, kInf, kInf, 0.0};
+  const double s_now = PredictedSigma(info, th)[i];
+  const double i_now = std::isfinite(s_now) && s_now > 0 ? 1.0 / (s_now * s_now) : 0.0;
+  const double s_target = goal.target_percent / 100.0 * value;
+  const double i_target = 1.0 / (s_target * s_target);
+  r.now = std::isnan(s_now) ? kInf : 100.0 * s_now / value;
+  if (i_now >= i_target) return r;  // already at the target: n = 0
+  const double s_after = PredictedSigma(info + trial, th)[i];
+  const double gain = std::isfinite(s_after) && s_after > 0 ? 1.0 / (s_after * s_after) - i_now
+                                                            : 0.0;
+  r.needed = 100.0 * std::sqrt(goal.max_trials_to_target / (i_target - i_now)) / value;
+  r.per_trial = gain > 0 ? 100.0 / (std::sqrt(gain) * value) : kInf;
+  r.n = gain > 0 ? (i_target - i_now) / gain : kInf;
+  return r;
+}
+
+std::string ReachText(const TargetReach& r, const PrecisionGoal& goal) {
+  using internal::Fmt;
+  std::string s = r.parameter + " reaches " +
+                  (std::isfinite(r.per_trial_percent) ? Fmt(r.per_trial_percent) + "%"
+                                                      : std::string("no precision")) +
+                  " per trial here ('" + r.trial + "', the loop's D-optimal trial " +
+                  std::to_string(r.step) + " after the schedule; " + Fmt(r.now_percent) +
+                  "% before it); the target " + Fmt(goal.target_percent) + "% needs ≤ " + Fmt(r.needed_percent) + "% per trial";
+  if (std::isfinite(r.trials)) s += " (about " + Fmt(std::ceil(r.trials), 3) + " such trials";
+  else s += " (no number of such trials";
+  return s + ": the loop stops as stuck beyond " + Fmt(goal.max_trials_to_target) + ")";
+}
+
+// DesignNextTrial's choice on `info`: the better by robust D of the D-optimal sine on every
+// parameter and every steady leg from rest (criterion -inf: none fits).
+Candidate LoopChoice(const DofContext& ctx, const SineDesignOptions& sine,
+                     const SteadyDesignOptions& steady, const std::vector<Eigen::MatrixXd>& info,
+                     const std::string& id) {
+  Candidate best;
+  ConsiderSine(ctx, sine, info, id, &best);
+  ConsiderSteadyLegs(ctx, steady, info, id, &best);
+  return best;
+}
+
+// The loop's stuck test of one candidate at design point j: its bottleneck (the parameter of
+// interest with the largest n).
+TargetReach Bottleneck(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
+                       const Eigen::MatrixXd& trial, int j, const PrecisionGoal& goal) {
+  TargetReach here;
+  here.trials = -1.0;
+  for (const std::string& n : InterestNames(ctx, info, j)) {
+    const Reach r = ReachOf(info[j], trial, ctx.design_thetas()[j], ctx.Index(n), goal);
+    if (!(r.n > here.trials)) continue;  // the bottleneck: the largest n
+    here.parameter = n;
+    here.trials = r.n;
+    here.now_percent = r.now;
+    here.per_trial_percent = r.per_trial;
+    here.needed_percent = r.needed;
+  }
+  return here;
+}
+
+}  // namespace
+
+TargetReach ReachTarget(const DofContext& ctx, const SineDesignOptions& sine,
+                        const SteadyDesignOptions& steady, std::vector<Eigen::MatrixXd> info,
+                        const PrecisionGoal& goal, const std::string& id) {
+  const std::size_t points = std::min(info.size(), ctx.design_thetas().size());
+  std::vector<bool> open(points, true);  // neither at the target nor stuck yet
+  TargetReach out;
+  out.trials = -1.0;
+  const int steps = 2 * static_cast<int>(std::ceil(goal.max_trials_to_target));
+  for (int k = 1; k <= steps && std::count(open.begin(), open.end(), true) > 0; ++k) {
+    const Candidate next = LoopChoice(ctx, sine, steady, info, id + "-" + std::to_string(k));
+    for (std::size_t j = 0; j < points; ++j) {
+      if (!open[j]) continue;
+      TargetReach here;
+      if (std::isfinite(next.criterion)) {
+        here = Bottleneck(ctx, info, next.information[j], static_cast<int>(j), goal);
+      } else {
+        here = Bottleneck(ctx, info, Eigen::MatrixXd::Zero(info[j].rows(), info[j].cols()),
+                          static_cast<int>(j), goal);
+      }
+      here.trial = next.trial.design.id;
+      here.step = k;
+      if (!(here.trials > 0)) open[j] = false;  // at the target there
+      const bool stuck = !(here.trials <= goal.max_trials_to_target);
+      if (stuck) open[j] = false;
+      // Reported: the first point stuck (then a larger n), else the largest n met.
+      if (stuck ? (out.reached || here.trials > out.trials)
+                : (out.reached && here.trials > out.trials)) {
+        out = here;
+        out.reached = !stuck;
+      }
+    }
+    if (!std::isfinite(next.criterion)) break;
+    for (std::size_t j = 0; j < info.size(); ++j) info[j] += next.information[j];
+  }
+  if (!out.reached) out.text = ReachText(out, goal);
+  return out;
 }
 
 CompletionResult CompleteWithLoopFamilies(const DofContext& ctx, const SineDesignOptions& sine,

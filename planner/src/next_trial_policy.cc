@@ -465,7 +465,7 @@ std::pair<std::string, int> EtaDirection(const std::string& name) {
 const ScheduleResult& Planner::APriori(Dof dof) {
   auto it = schedules.find(dof);
   if (it != schedules.end()) return it->second;
-  ScheduleOptions so = options.schedule;
+  ScheduleOptions so = options.ScheduleAtTarget();
   so.dofs = {dof};
   so.prior.clear();
   return schedules.emplace(dof, PlanSchedule(vehicle, pool, so)).first->second;

@@ -19,11 +19,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // within this of the free travel is a space limit.
 constexpr double kTravelSafety = 0.01;
 
-constexpr model::EnumNames<PoolLimit, 9> kLimitNames{{{
+constexpr model::EnumNames<PoolLimit, 10> kLimitNames{{{
     {PoolLimit::kNone, "none"}, {PoolLimit::kLength, "length"}, {PoolLimit::kWidth, "width"},
     {PoolLimit::kDepth, "depth"}, {PoolLimit::kTether, "tether"},
     {PoolLimit::kThrust, "thrust range"}, {PoolLimit::kNoReversal, "no reversal"},
-    {PoolLimit::kDuration, "duration"}, {PoolLimit::kInformation, "information"}}}};
+    {PoolLimit::kDuration, "duration"}, {PoolLimit::kInformation, "information"},
+    {PoolLimit::kRotationRate, "rotation rate"}}}};
 
 constexpr model::EnumNames<Hostability, 3> kHostabilityNames{{{
     {Hostability::kAll, "all"}, {Hostability::kPart, "part"}, {Hostability::kNone, "none"}}}};
@@ -119,6 +120,7 @@ DofVerdict JudgeOwn(const DofPlan* p, model::Dof dof, const model::Pool& pool) {
     return v;
   }
   v.determinacy = p->determinacy;
+  v.reach = p->reach;
   for (const auto& t : p->trials) v.extent = std::max(v.extent, t.travel[1] - t.travel[0]);
   v.hosted = p->status == DesignStatus::kOk && p->complete;
   v.need = v.extent;
@@ -128,6 +130,14 @@ DofVerdict JudgeOwn(const DofPlan* p, model::Dof dof, const model::Pool& pool) {
   }
   v.reason = p->message;
   const double free = pool.FreeTravel(dof);
+  v.below_target = p->determinacy.determined && !p->reach.reached;
+  if (v.below_target) {
+    // Longer runs and swings inform the drag more: a larger pool, confirmed by planning
+    // (ConfirmNeed); else the loop's own stuck limits (BelowTargetUnlifted).
+    v.limit = SpaceLimit(dof);
+    v.need = std::max(v.extent, std::isfinite(free) ? free : v.extent) * 1.5;
+    return v;
+  }
   const double asked = std::isfinite(p->required_travel) ? p->required_travel : free;
   bool space_note = Has(p->message, "travels");
   for (const auto& n : p->notes) space_note = space_note || Has(n, "travels");
@@ -141,6 +151,34 @@ DofVerdict JudgeOwn(const DofPlan* p, model::Dof dof, const model::Pool& pool) {
     v.need = space ? std::max(v.extent, std::isfinite(free) ? free : v.extent) * 1.5 : kInf;
   }
   return v;
+}
+
+// "9.66 m of free depth (12.66 m wall to wall)" or "18.85 rad (3 turns of the tether)".
+std::string Travel(const model::Pool& pool, model::Dof dof, double free) {
+  std::ostringstream s;
+  if (model::IsRotational(dof)) {
+    s << Fmt(free, 4) << " rad (" << Fmt(pool.ExtentFor(dof, free), 4) << " turns)";
+  } else {
+    s << Fmt(free, 4) << " m of free " << model::Pool::SideName(dof) << " ("
+      << Fmt(pool.WallToWallFor(free), 4) << " m wall to wall)";
+  }
+  return s.str();
+}
+
+// A DOF short of the target that no larger pool planned lifts: the loop's stuck rule names
+// what is left (stuck_limit.cc): the rotation-rate limit of a rotation, the no-reversal
+// limit of a translation (its drag seen over one speed range per direction).
+void BelowTargetUnlifted(const model::Pool& pool, DofVerdict* v) {
+  if (!v->below_target || v->need_verified) return;
+  const std::string tried = Travel(pool, v->dof, v->need);
+  v->limit = model::IsRotational(v->dof) ? PoolLimit::kRotationRate : PoolLimit::kNoReversal;
+  v->need = kInf;
+  v->reason += " A pool offering " + tried + " does not lift it either: " +
+               (model::IsRotational(v->dof)
+                    ? "the designs keep below the rotation-rate limit, where the drag hardly acts"
+                    : "the trials never reverse a thruster, so the drag is seen over one speed "
+                      "range per direction") +
+               ".";
 }
 
 // A given plan's trials of `v.dof`: each must pass DofContext::Check in this pool. False when
@@ -188,21 +226,27 @@ std::string DofList(const std::vector<DofVerdict>& dofs, Hostability h) {
   return model::Join(names);
 }
 
+// " to 5% (every parameter of interest's 100·σ/|θ|)": the precision judged at.
+std::string Goal(const PoolVerdict& v) {
+  return " to " + Fmt(v.goal.target_percent) + "% (every parameter of interest's 100·σ/|θ|)";
+}
+
 // "Pool P CAN host …", "… can host … for PART of the a priori box …", "… CANNOT host …".
 std::string Sentence(const PoolVerdict& v, const model::Pool& pool) {
   std::ostringstream s;
   s << "Pool " << pool.name;
   switch (v.hostability) {
     case Hostability::kAll:
-      s << " CAN host the identification of " << DofList(v.dofs, Hostability::kAll);
+      s << " CAN host the identification of " << DofList(v.dofs, Hostability::kAll) << Goal(v);
       break;
     case Hostability::kPart:
-      s << " can host the identification of " << DofList(v.dofs, Hostability::kPart)
+      s << " can host the identification of " << DofList(v.dofs, Hostability::kPart) << Goal(v)
         << " for PART of the a priori box only (the first trials decide: `loop` and `next` run "
            "and stop when the estimates fall outside it)";
       break;
     case Hostability::kNone:
-      s << " CANNOT host the identification of " << DofList(v.dofs, Hostability::kNone);
+      s << " CANNOT host the identification of " << DofList(v.dofs, Hostability::kNone)
+        << Goal(v);
       if (!v.dofs.empty() && !v.dofs.front().points.empty()) {
         s << " for any vehicle of the a priori box checked (its centre and corners)";
       }
@@ -233,6 +277,7 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
                               const std::vector<TrialPoolCheck>* plan_checks,
                               const VerdictOptions& vo) {
   PoolVerdict out;
+  out.goal = options.precision;
   out.plan_given = plan_checks != nullptr;
   if (plan_checks != nullptr) out.plan_checks = *plan_checks;
   out.hosted = !own.dofs.empty();
@@ -241,6 +286,7 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
     const bool plan_fits = JudgePlanTrials(out.plan_checks, &v);
     if (!v.hosted && std::isfinite(v.need) && vo.need_checks >= 0) {
       ConfirmNeed(vehicle, pool, options, vo, &v);
+      BelowTargetUnlifted(pool, &v);
     }
     // A given plan that fails its own checks is judged as given: no other point rescues it.
     if (!v.hosted && vo.judge_points && plan_fits) JudgePoints(vehicle, pool, options, &v);
@@ -261,18 +307,6 @@ PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
 }
 
 namespace {
-
-// "9.66 m of free depth (12.66 m wall to wall)" or "18.85 rad (3 turns of the tether)".
-std::string Travel(const model::Pool& pool, model::Dof dof, double free) {
-  std::ostringstream s;
-  if (model::IsRotational(dof)) {
-    s << Fmt(free, 4) << " rad (" << Fmt(pool.ExtentFor(dof, free), 4) << " turns)";
-  } else {
-    s << Fmt(free, 4) << " m of free " << model::Pool::SideName(dof) << " ("
-      << Fmt(pool.WallToWallFor(free), 4) << " m wall to wall)";
-  }
-  return s.str();
-}
 
 std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
   std::ostringstream s;

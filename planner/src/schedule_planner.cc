@@ -6,6 +6,8 @@
 #include <limits>
 #include <sstream>
 
+#include "format.h"
+#include "options_check.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/enum_names.h"
@@ -32,7 +34,15 @@ bool ScheduleOptions::IsValid(std::string* error) const {
       return false;
     }
   }
-  return planner.IsValid(error) && steady.IsValid(error) && sine.IsValid(error);
+  const bool goal = internal::OptionsCheck("ScheduleOptions", error)
+                        .Require(precision.target_percent > 0 &&
+                                     std::isfinite(precision.target_percent),
+                                 "precision.target_percent", precision.target_percent, "> 0")
+                        .Require(precision.max_trials_to_target > 0,
+                                 "precision.max_trials_to_target",
+                                 precision.max_trials_to_target, "> 0")
+                        .ok();
+  return goal && planner.IsValid(error) && steady.IsValid(error) && sine.IsValid(error);
 }
 
 std::vector<Eigen::MatrixXd> TrialsInformation(const DofContext& ctx,
@@ -203,14 +213,24 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
   plan.status = DesignStatus::kOk;
   // Complete: every parameter of interest determined, whichever families did it (a steady run
   // that does not fit is no loss when sines determine the drag).
-  plan.complete = plan.determinacy.determined;
+  // ... and the loop's target reachable from them before its stuck rule stops it.
+  // With the trials the loop would design next, one after the other.
+  if (plan.determinacy.determined) {
+    plan.reach = ReachTarget(*ctx, o.sine, o.steady, info, o.precision, name + "-next");
+  }
+  plan.complete = plan.determinacy.determined && plan.reach.reached;
   if (plan.complete) plan.required_travel = std::numeric_limits<double>::quiet_NaN();
   for (const auto& f : failures) plan.notes.push_back(name + ": " + f);
-  if (!plan.complete) {
+  if (plan.determinacy.determined && !plan.reach.reached) {
+    plan.message = name + " is determined in pool '" + pool.name + "' but not to the target " +
+                   internal::Fmt(o.precision.target_percent) + "%: " + plan.reach.text + "." + m.str();
+  } else if (!plan.complete) {
     plan.message = name + " only partly determined in pool '" + pool.name + "': " +
                    model::Join(plan.determinacy.undetermined) + " stay undetermined after " +
                    std::to_string(plan.trials.size()) + " trials." + m.str();
-    for (const auto& t : plan.trials) {
+  }
+  for (const auto& t : plan.trials) {
+    if (!plan.complete) {
       plan.required_travel = std::max(plan.required_travel, t.travel[1] - t.travel[0]);
     }
   }

@@ -163,6 +163,7 @@ void BindCheckPool(CLI::App* sub, CheckPoolCliOptions* o) {
                   "DOF whose identification the pool must host (repeatable; default every DOF "
                   "with a mapping and a sensor, as `schedule`)");
   AddJsonOption(sub, &o->json, "write the result");
+  AddTargetOption(sub, &o->check.schedule.precision.target_percent);
   sub->add_option("--max-duration", o->check.schedule.planner.max_trial_duration_s,
                   "longest trial (s)")
       ->capture_default_str()

@@ -190,7 +190,7 @@ int RunLoopCommand(const LoopCliOptions& o) {
   // Before any trial: the pool verdict (planner/pool_verdict.h) on the loop's DOFs; a pool that
   // hosts them for no vehicle of the a priori box is refused with schedule's sentence and exit
   // status; one that hosts them for part of the box is run, and the loop's end read against it.
-  planner::ScheduleOptions so = lo.step.schedule;
+  planner::ScheduleOptions so = lo.step.ScheduleAtTarget();
   so.dofs = lo.step.dofs;
   if (so.dofs.empty()) {
     for (const auto& [dof, params] : truth.dofs) so.dofs.push_back(dof);
@@ -229,9 +229,7 @@ int RunLoopCommand(const LoopCliOptions& o) {
 void BindLoop(CLI::App* sub, LoopCliOptions* o) {
   sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")->required();
   sub->add_option("--pool", o->pool, "pool.yaml")->required();
-  sub->add_option("--target", o->loop.step.target_percent,
-                  "percentile error 100·σ/|θ| (%) every parameter of interest must reach")
-      ->capture_default_str();
+  AddTargetOption(sub, &o->loop.step.target_percent);
   sub->add_option("--budget", o->loop.budget, "most trials to run")->capture_default_str();
   sub->add_option("--seed", o->loop.seed,
                   "seed of the virtual pool (trial i draws from its own stream, as `simulate`)")

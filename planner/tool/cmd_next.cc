@@ -132,7 +132,7 @@ int RunNext(const NextCliOptions& o) {
   options.dofs = ParseDofFlags(o.dofs);
   const planner::NextStepResult r = planner::NextStep(campaign, pool, options);
   // The pool verdict of the DOFs driven (schedule's and check-pool's answer for them).
-  planner::ScheduleOptions so = options.schedule;
+  planner::ScheduleOptions so = options.ScheduleAtTarget();
   for (const auto& p : r.progress) so.dofs.push_back(p.dof);
   const planner::PoolVerdict verdict = planner::JudgePool(campaign.vehicle, pool, so);
   // A DOF that ran trials here and gets no further one is stuck (5) in a pool the verdict
@@ -163,9 +163,7 @@ void BindNext(CLI::App* sub, NextCliOptions* o) {
   sub->add_option("--dof", o->dofs,
                   "DOF to drive to the target (repeatable; default: the DOFs the campaign "
                   "has trials of, or every DOF the vehicle can plan)");
-  sub->add_option("--target", o->design.target_percent,
-                  "percentile error 100·σ/|θ| (%) every parameter of interest must reach")
-      ->capture_default_str();
+  AddTargetOption(sub, &o->design.target_percent);
   AddJsonOption(sub, &o->json, "also write the result");
   AddAcceptUnitsFlag(sub, &o->accept_units);
   AddThreadsOption(sub, {&o->design.identify.threads}, "identifying (trials and DOFs)");

@@ -153,6 +153,7 @@ void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {
                   "this new directory");
   sub->add_option("--robust", o->robust, "maximin (default), average or nominal")
       ->capture_default_str();
+  AddTargetOption(sub, &o->schedule.precision.target_percent);
   sub->add_option("--max-duration", o->schedule.planner.max_trial_duration_s, "longest trial (s)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);

@@ -22,6 +22,15 @@ CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& 
   return sub->add_option("--json", *path, what + " as JSON to this file ('-' = stdout)");
 }
 
+CLI::Option* AddTargetOption(CLI::App* sub, double* target_percent) {
+  return sub
+      ->add_option("--target", *target_percent,
+                   "percentile error 100·σ/|θ| (%) every parameter of interest must reach; the "
+                   "pool verdict judges whether the loop can reach it in this pool")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+}
+
 void PrintBriefOnTerminal(const std::string& brief) {
   if (isatty(STDERR_FILENO)) std::cerr << brief << "\n";
 }

@@ -55,6 +55,11 @@ Command MakeCommand(std::string name, int order, std::string description,
 /// `--json F`: "<what> as JSON to this file ('-' = stdout)".
 CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& what);
 
+/// `--target PCT`: the loop's target percentile error 100·σ/|θ| (%), the precision the pool
+/// verdict judges at (schedule, check-pool, next, loop; one default, planner::
+/// kDefaultTargetPercent). Must be > 0 (exit 2 otherwise).
+CLI::Option* AddTargetOption(CLI::App* sub, double* target_percent);
+
 /// Where the readable report goes: stdout, or stderr when the JSON goes there (`--json -`).
 std::ostream& ReportStream(const std::string& json_path);
 

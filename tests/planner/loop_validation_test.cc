@@ -1,8 +1,7 @@
 // The loop on every vehicle (issue #13), CI subset of tests/validation/loop_validation.cc
 // (docs/validation.md "The loop on every vehicle"): URIS in its own pool and random vehicles 1,
-// 2 and 4 (tests/support/random_vehicle.h, two DOFs each). Seed 4 is a hosted pool whose loop
-// used to end "infeasible" after three heave trials (no further trial fitting at the
-// estimates): a hosted pool must never end infeasible.
+// 2 and 4 (tests/support/random_vehicle.h, two DOFs each). Seed 4's heave is determined but
+// short of the 5% target in its pool: part, and its stuck loop is outside the hostable part.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -45,17 +44,22 @@ TEST(LoopValidation, Uris) {
 }
 
 TEST(LoopValidation, RandomVehicles) {
-  for (std::uint64_t seed : {1, 2, 4}) {
+  for (std::uint64_t seed : {1, 2}) {  // 4: its own test below
     const RandomCase rc = MakeRandomCase(seed, 2);
     CheckCase(RunLoopCase(rc.vehicle.name, MakeRandomTruth(rc, seed), rc.pool, seed));
   }
 }
 
-TEST(LoopValidation, HostedPoolThatNoFurtherTrialFitsIsStuckNotInfeasible) {
+// Vehicle 4's heave: determined over the whole box (seed 000's 51%) but not to the loop's 5%
+// target everywhere (ReachTarget): the verdict says part, not all, and the loop, stuck on heave
+// kq, ends infeasible "outside the part of the a priori box the pool hosts" — before the
+// verdict judged at the target, "CAN host" and "stuck" contradicted each other here.
+TEST(LoopValidation, PoolShortOfTheTargetIsPartAndItsStuckLoopIsOutside) {
   const RandomCase rc = MakeRandomCase(4, 2);
   const LoopCaseOutcome c = RunLoopCase(rc.vehicle.name, MakeRandomTruth(rc, 4), rc.pool, 4);
-  ASSERT_TRUE(c.hosted) << c.verdict;
-  EXPECT_EQ(c.status, planner::LoopStatus::kStuck) << c.message;
+  EXPECT_EQ(c.hostability, planner::Hostability::kPart) << c.verdict;
+  EXPECT_EQ(c.status, planner::LoopStatus::kInfeasible) << c.message;
+  EXPECT_NE(c.message.find("outside the part"), std::string::npos) << c.message;
 }
 
 TEST(LoopValidation, RandomTruthIsSeededAndInsideThePhysicalRanges) {

@@ -280,7 +280,8 @@ TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
     text->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   };
-  const std::string sentence = "Pool small CANNOT host the identification of surge";
+  // The precision judged at is in the sentence: the loop's default target.
+  const std::string sentence = "Pool small CANNOT host the identification of surge to 5% ";
   std::string a, b, c, d;
   EXPECT_EQ(run("schedule " + v + p + " --dof surge --json " + plan, "a.txt", &a), 1);
   EXPECT_EQ(run("check-pool " + v + p + " --dof surge", "b.txt", &b), 1);
@@ -303,8 +304,8 @@ TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
   const fs::path six = dir / "six.yaml";
   std::ofstream(six) << "name: six\nlength: 6\nwidth: 12\ndepth: 5\nmargin: 1\n";
   const std::string q = " --pool " + six.string();
-  const std::string part = "Pool six can host the identification of surge for PART of the a "
-                           "priori box only";
+  const std::string part = "Pool six can host the identification of surge to 5% (every "
+                           "parameter of interest's 100·σ/|θ|) for PART of the a priori box only";
   EXPECT_EQ(run("schedule " + v + q + " --dof surge --json " + plan, "e.txt", &a), 1);
   EXPECT_EQ(run("check-pool " + v + q + " --dof surge", "f.txt", &b), 1);
   EXPECT_EQ(run("check-pool " + v + q + " --dof surge --plan " + plan, "g.txt", &c), 1);

@@ -84,12 +84,19 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   planner::LoopOptions lo;
   lo.seed = seed;
   lo.step.dofs = c.dofs;
-  planner::ScheduleOptions so = lo.step.schedule;
+  planner::ScheduleOptions so = lo.step.ScheduleAtTarget();
   so.dofs = c.dofs;
   const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
   c.hosted = verdict.hosted;
   c.hostability = verdict.hostability;
   c.verdict = verdict.sentence;
+  for (const auto& d : verdict.dofs) {
+    c.reach += std::string(c.reach.empty() ? "" : "; ") + std::string(model::DofName(d.dof)) +
+               " " + d.reach.parameter + " n " + Significant(d.reach.trials, 3) + " ('" +
+               d.reach.trial + "' after " + Significant(d.reach.now_percent, 3) + "%: " +
+               Significant(d.reach.per_trial_percent, 3) + "% per trial, needs " +
+               Significant(d.reach.needed_percent, 3) + "%)";
+  }
   planner::VerdictOptions at_truth;
   at_truth.need_checks = -1;
   at_truth.judge_points = false;
@@ -106,7 +113,11 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   c.trials = static_cast<int>(r.iterations.size());
   c.pool_time_s = r.pool_time;
   switch (c.hostability) {
-    case planner::Hostability::kAll: c.agree = r.status != planner::LoopStatus::kInfeasible; break;
+    // All, at the target: the loop neither ends infeasible nor stuck short of the target.
+    case planner::Hostability::kAll:
+      c.agree = r.status != planner::LoopStatus::kInfeasible &&
+                r.status != planner::LoopStatus::kStuck;
+      break;
     case planner::Hostability::kNone: c.agree = r.status != planner::LoopStatus::kConverged; break;
     case planner::Hostability::kPart: c.agree = true; break;  // measured below
   }
@@ -172,6 +183,7 @@ std::string CaseLine(const LoopCaseOutcome& c) {
       << " ± " << Significant(e.sigma, 3) << " (truth " << Significant(e.truth, 4) << ", "
       << Significant(e.z, 3) << "σ)" << (e.within3 ? "" : "  > 3σ");
   }
+  o << "\n    reach: " << c.reach;
   if (c.status != planner::LoopStatus::kConverged) o << "\n    reason: " << c.message;
   return o.str();
 }
@@ -180,7 +192,8 @@ std::string TallyText(const LoopTally& t) {
   std::ostringstream o;
   o << "cases " << t.cases << ", verdict all/part/none " << t.hosted << "/" << t.part << "/"
     << t.none << ", verdict and loop agree " << t.agree << "/" << t.cases
-    << " (all: not infeasible " << t.hosted_agree << "/" << t.hosted << "; part: converged "
+    << " (all: neither infeasible nor stuck " << t.hosted_agree << "/" << t.hosted
+    << "; part: converged "
     << t.part_converged << ", infeasible outside the hostable part " << t.part_outside
     << ", other " << t.part - t.part_converged - t.part_outside << "; none: not converged "
     << t.refused_agree << "/" << t.none << "), converged " << t.converged

@@ -63,8 +63,9 @@ struct DesignLoopOptions {
   /// first). Empty: NextStep takes the DOFs the campaign has fit trials of (every DOF the
   /// vehicle can plan when it has none); RunLoop the DOFs the truth has parameters for.
   std::vector<model::Dof> dofs;
-  /// Largest percentile error 100·σ/|θ| (%) of every parameter of interest. Issue #5: 5%.
-  double target_percent = 5.0;
+  /// Largest percentile error 100·σ/|θ| (%) of every parameter of interest. Issue #5: 5%
+  /// (the default the pool verdict judges at, ScheduleOptions::precision).
+  double target_percent = kDefaultTargetPercent;
   /// Estimates are usable for the sequential design once m and the drag of interest have a
   /// percentile error below this (%). CHOSEN: seed 000's significance limit; before, the box
   /// estimates ± 2σ would be wider than the a priori one and the a priori schedule is better.
@@ -76,7 +77,7 @@ struct DesignLoopOptions {
   /// A trial's information gain is negligible when reaching the target at its rate would take
   /// more than this many such trials (CandidateGain::trials_to_target). CHOSEN 5: a pool
   /// session's worth of repeats; the ROMEO loop's useful trials need at most 3.
-  double max_trials_to_target = 5.0;
+  double max_trials_to_target = kDefaultMaxTrialsToTarget;
   /// A trial brought new information when some parameter of interest gained at least this
   /// fraction of the information it had ((σ_before/σ_after)² − 1). CHOSEN 0.05 (σ down 2.4%).
   double min_information_ratio = 0.05;
@@ -88,6 +89,13 @@ struct DesignLoopOptions {
   ident::IdentifyOptions identify = LoopIdentifyOptions();
 
   bool IsValid(std::string* error) const;
+  /// `schedule` judged at this loop's target and stuck rule (ScheduleOptions::precision): the
+  /// options of the loop's a priori schedules and of the pool verdict `loop` and `next` print.
+  ScheduleOptions ScheduleAtTarget() const {
+    ScheduleOptions so = schedule;
+    so.precision = {target_percent, max_trials_to_target};
+    return so;
+  }
 };
 
 /// One parameter of interest of a DOF as the identification left it.

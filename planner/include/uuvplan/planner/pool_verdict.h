@@ -4,7 +4,9 @@
 // `loop` all print JudgePool's answer and exit on `hosted`.
 //
 // Per DOF: hosted when the planner's own schedule for the pool determines every parameter of
-// interest (its steady runs, its sine and the loop's families, schedule_planner.h) and, for a
+// interest (its steady runs, its sine and the loop's families, schedule_planner.h), lets the
+// loop bring them to its target before its stuck rule stops it (ReachTarget, determinacy.h:
+// "to this precision", ScheduleOptions::precision, `--target`) and, for a
 // given plan, every trial of the plan passes the hard constraints (DofContext::Check: thrusters,
 // no reversal, free length/width/depth over the a priori box, tether turns, duration). Otherwise
 // the limit that stops it and the DOF's need: the free travel (m, or rad of a rotation) with
@@ -38,9 +40,11 @@ namespace uuvplan::planner {
 
 /// What stops a DOF: a side of the pool (free length/width/depth), the tether's turns, the
 /// thrust range (min_thrust against the largest thrust or the speed limit), no propeller
-/// reversal, the trial duration limit, or information (trials fit but do not determine it).
+/// reversal, the trial duration limit, information (trials fit but do not determine it), or
+/// the rotation-rate limit (a rotation's drag, too slow to reach the target: the loop's stuck
+/// rule names it, stuck_limit.cc).
 enum class PoolLimit { kNone, kLength, kWidth, kDepth, kTether, kThrust, kNoReversal, kDuration,
-                       kInformation };
+                       kInformation, kRotationRate };
 std::string_view PoolLimitName(PoolLimit limit);
 
 /// For how much of the a priori box the pool hosts a DOF (or every DOF asked for): every
@@ -67,6 +71,10 @@ struct DofVerdict {
   double need = 0.0;
   bool need_verified = false;  ///< a pool offering `need` was planned and hosts the DOF
   Determinacy determinacy;     ///< of the planner's own schedule in this pool
+  /// Determined, but the loop's target is out of reach of its trials in this pool
+  /// (TargetReach of the schedule: the loop would end stuck).
+  bool below_target = false;
+  TargetReach reach;  ///< of the planner's own schedule in this pool
   /// kAll exactly when `hosted`; else kPart or kNone by `points`.
   Hostability hostability = Hostability::kNone;
   std::vector<PointVerdict> points;  ///< centre and corners checked when not hosted
@@ -81,6 +89,7 @@ struct RequiredPool {
 
 struct PoolVerdict {
   bool hosted = false;  ///< every DOF hosted over the whole a priori box
+  PrecisionGoal goal;   ///< the precision judged at (ScheduleOptions::precision)
   /// kAll when hosted; kNone when some DOF is hosted at no point checked; else kPart.
   Hostability hostability = Hostability::kNone;
   std::vector<DofVerdict> dofs;

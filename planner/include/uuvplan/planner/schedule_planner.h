@@ -44,13 +44,19 @@ struct ScheduleOptions {
   /// leave a parameter of interest undetermined. CHOSEN 3: each adds one sine or leg; a DOF
   /// that three more do not determine is limited by the pool, not by the schedule's shape.
   int max_completion_trials = 3;
+  /// The precision a DOF's schedule must let the loop reach (issue #13: the verdict judges at
+  /// the loop's target): `complete` also needs ReachTarget (determinacy.h). `uuvplan
+  /// schedule`, `check-pool`, `next` and `loop --target` set it; DesignLoopOptions shares the
+  /// defaults.
+  PrecisionGoal precision;
   /// Information from earlier trials per DOF (absolute units); added to every design.
   std::map<model::Dof, PriorInformation> prior;
 
   bool IsValid(std::string* error) const;
 };
 
-/// kOk: every DOF's parameters of interest determined (determinacy.h); kPartial: some are not
+/// kOk: every DOF's parameters of interest determined (determinacy.h) and the target
+/// reachable from its trials (ReachTarget); kPartial: some are not
 /// (see the DOFs' messages: what is missing and the pool it would need); kInfeasible: nothing
 /// planned.
 enum class PlanStatus { kOk, kPartial, kInfeasible };
@@ -63,6 +69,9 @@ struct DofPlan {
   DesignStatus status = DesignStatus::kFailed;
   bool complete = false;
   Determinacy determinacy;
+  /// Whether the loop can bring the parameters of interest to `ScheduleOptions::precision`
+  /// from these trials (ReachTarget; judged once they are determined, else left reached).
+  TargetReach reach;
   std::string message;
   std::vector<PlannedTrial> trials;
   std::vector<TrialCheck> checks;
