@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "campaign_checks.h"
 #include "uuvplan/io/files.h"
 #include "uuvplan/io/pool_yaml.h"
 #include "uuvplan/io/trial_log_csv.h"
@@ -124,11 +125,13 @@ Campaign ReadCampaign(const std::string& given) {
       campaign.pool = ReadPool(ReadableFile(pool));
       campaign.pool_file = pool.node().Scalar();
     }
-    for (const Value& item :
-         List(m.Required("trials"), "a list of trials {file, dof, mapping, ...}")) {
+    const Value trials = m.Required("trials");
+    for (const Value& item : List(trials, "a list of trials {file, dof, mapping, ...}")) {
       const TrialEntry* previous = campaign.trials.empty() ? nullptr : &campaign.trials.back();
       campaign.trials.push_back(ParseTrial(item, campaign.vehicle, previous));
+      CheckCampaignTrial(campaign, campaign.trials.size() - 1, item);
     }
+    CheckCampaignWork(campaign, trials);
     return campaign;
   });
 }

@@ -23,6 +23,7 @@
 #include "uuvplan/io/place.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/model/work_limits.h"
 
 namespace uuvplan::io {
 
@@ -129,6 +130,11 @@ class TrialLogParser {
 
   TrialLog Parse() {
     const std::size_t max_rows = CountNewlines(path_) + 1;
+    if (static_cast<double>(max_rows) > model::limits::kMaxTrialRows) {
+      Place(path_, 0, "").Fail(std::to_string(max_rows) + " lines, more than the " +
+                               Significant(model::limits::kMaxTrialRows, 3) +
+                               " rows a trial log may have: split the trial");
+    }
     LineReader reader(path_);
     std::string_view line;
     bool has_header = false;
