@@ -35,7 +35,8 @@ void CheckNotRepeated(const model::Campaign& campaign, std::size_t index, const 
   }
 }
 
-// The median interval between the rows where `column` has a sample (NaN if fewer than 3).
+// The median interval between the rows where `column` has a sample; NaN for fewer than 20
+// intervals (a hand-written log of a few rows says little about its sampling).
 double MedianInterval(const std::vector<double>& t, const std::vector<double>& column) {
   std::vector<double> dt;
   double last = std::nan("");
@@ -44,7 +45,7 @@ double MedianInterval(const std::vector<double>& t, const std::vector<double>& c
     if (!std::isnan(last)) dt.push_back(t[i] - last);
     last = t[i];
   }
-  if (dt.size() < 2) return std::nan("");
+  if (dt.size() < 20) return std::nan("");
   std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
   return dt[dt.size() / 2];
 }

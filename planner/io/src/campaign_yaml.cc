@@ -14,6 +14,7 @@
 
 #include "campaign_checks.h"
 #include "uuvplan/io/files.h"
+#include "uuvplan/io/output_claim.h"
 #include "uuvplan/io/pool_yaml.h"
 #include "uuvplan/io/trial_log_csv.h"
 #include "uuvplan/io/vehicle_yaml.h"
@@ -216,12 +217,15 @@ fs::path NewSiblingDirectory(const fs::path& out, const std::string& dir) {
   return pattern;
 }
 
-// Renames the finished `tmp` to `out` (an empty `out` made by the user is replaced). When
-// another run put its campaign there first, the rename fails and says so.
+// Renames the finished `tmp` over the empty `out` (rename(2) replaces an empty directory
+// atomically), its files and directories synced first. When another run put its campaign there
+// first, the rename fails and says so.
 void MoveIntoPlace(const fs::path& tmp, const fs::path& out, const std::string& dir) {
   std::error_code ec;
-  if (fs::is_directory(out) && fs::is_empty(out, ec)) fs::remove(out, ec);
+  SyncDirectory((tmp / "trials").string());
+  SyncDirectory(tmp.string());
   fs::rename(tmp, out, ec);
+  if (!ec) SyncDirectory(out.parent_path().string());
   if (!ec) return;
   std::error_code ignored;
   fs::remove_all(tmp, ignored);  // ours alone (NewSiblingDirectory)
@@ -236,7 +240,7 @@ void MoveIntoPlace(const fs::path& tmp, const fs::path& out, const std::string& 
 
 Campaign WriteCampaign(const std::string& dir, Campaign campaign, const Vehicle& vehicle,
                        const std::vector<std::string>& trial_comments) {
-  CheckNewCampaignDirectory(dir);
+  const OutputClaim claim(dir);  // shared with the caller's (SimulateCampaign)
   const fs::path out = CampaignDirectory(dir);
   // Everything is written to a temporary sibling directory first, then renamed into place,
   // so a campaign is written whole or not at all.

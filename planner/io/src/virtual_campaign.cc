@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "uuvplan/io/campaign_yaml.h"
+#include "uuvplan/io/output_claim.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/model/work_limits.h"
@@ -55,8 +56,8 @@ model::Campaign SimulateCampaign(const model::Truth& truth,
                                  const std::vector<model::TrialDesign>& designs,
                                  const std::string& dir,
                                  const model::VirtualCampaignOptions& options) {
-  CheckNewCampaignDirectory(dir);
   CheckSimulationWork(truth, designs, options);
+  const OutputClaim claim(dir);  // before the work: a second run on `dir` fails at once
   model::Campaign campaign = model::BuildVirtualCampaign(truth, designs, options);
   std::vector<std::string> comments;
   for (std::size_t i = 0; i < designs.size(); ++i) {
