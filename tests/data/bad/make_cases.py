@@ -44,17 +44,22 @@ def case(name, args, needles, forbidden=""):
     rows.append((name, args, " && ".join(needles), forbidden))
 
 
+def mutated_case(file, base, pattern, replacement, command, key_message, line_shift=0):
+    """A mutation of `base` written to `file`, run by `command % file`; the message names the
+    mutated line (+ line_shift: a list item is reported at its first line)."""
+    text, line = mutate(base, pattern, replacement)
+    write(file, text)
+    case(file, command % file, ["%s:%d: %s" % (file, line + line_shift, key_message)])
+
+
 # --- vehicle files: `schedule VEHICLE --pool POOL` -------------------------------------------
 VEHICLE = read("vehicle.yaml")
 SCHEDULE = "schedule {cases}/%s --pool {data}/io/pool.yaml"
 
 
 def vehicle_case(name, pattern, replacement, key_message, line_shift=0):
-    """line_shift: where the message is from the mutated line (a list item's first line)."""
-    text, line = mutate(VEHICLE, pattern, replacement)
-    file = "vehicle_%s.yaml" % name
-    write(file, text)
-    case(file, SCHEDULE % file, ["%s:%d: %s" % (file, line + line_shift, key_message)])
+    mutated_case("vehicle_%s.yaml" % name, VEHICLE, pattern, replacement, SCHEDULE, key_message,
+                 line_shift)
 
 
 vehicle_case("mass_tiny", r"^mass: .*", "mass: 1e-300", "mass: implausible: expected a vehicle mass")
@@ -113,11 +118,8 @@ POOL = read("pool.yaml")
 
 
 def pool_case(name, pattern, replacement, key_message):
-    text, line = mutate(POOL, pattern, replacement)
-    file = "pool_%s.yaml" % name
-    write(file, text)
-    case(file, "schedule {data}/io/vehicle.yaml --pool {cases}/" + file,
-         ["%s:%d: %s" % (file, line, key_message)])
+    mutated_case("pool_%s.yaml" % name, POOL, pattern, replacement,
+                 "schedule {data}/io/vehicle.yaml --pool {cases}/%s", key_message)
 
 
 pool_case("length_huge", r"^length: \S+", "length: 1e308", "length: implausible: expected a pool dimension")
@@ -141,10 +143,7 @@ SIMULATE = "simulate --truth {cases}/%s --plan {cases}/plan_good.json --out {out
 
 
 def truth_case(name, pattern, replacement, key_message):
-    text, line = mutate(TRUTH, pattern, replacement)
-    file = "truth_%s.yaml" % name
-    write(file, text)
-    case(file, SIMULATE % file, ["%s:%d: %s" % (file, line, key_message)])
+    mutated_case("truth_%s.yaml" % name, TRUTH, pattern, replacement, SIMULATE, key_message)
 
 
 truth_case("m_tiny", r"m: 890", "m: 1e-300", "dofs.surge.params.m: implausible: expected |m|")
@@ -217,10 +216,8 @@ CAMPAIGN = ("vehicle: ../../io/vehicle.yaml\npool: ../../io/pool.yaml\ntrials:\n
 
 
 def campaign_case(name, pattern, replacement, key_message):
-    text, line = mutate(CAMPAIGN, pattern, replacement)
-    file = "campaign_%s.yaml" % name
-    write(file, text)
-    case(file, "identify {cases}/" + file, ["%s:%d: %s" % (file, line, key_message)])
+    mutated_case("campaign_%s.yaml" % name, CAMPAIGN, pattern, replacement, "identify {cases}/%s",
+                 key_message)
 
 
 name = "campaign_same_log_twice.yaml"
