@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libnlopt-cxx-dev coinor-libipopt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  clang-14 libclang-rt-14-dev  # the sanitizer and fuzz stage (scripts/sanitize.sh)
 )
 
 missing=()

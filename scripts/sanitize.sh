@@ -7,6 +7,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${UUVPLAN_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+"$root/scripts/install-deps.sh"
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 # Warnings are errors in the gcc build (scripts/build.sh); clang's other warnings are not
