@@ -153,12 +153,19 @@ std::map<Dof, double> ParseInertia(const Value& v, double mass_size2) {
   return inertia;
 }
 
-DragPrior ParseDrag(const Value& v) {
+// A priori drag, plausible for the vehicle as a truth's k and kq (parameter.h).
+DragPrior ParseDrag(const Value& v, Dof dof, const Vehicle& vehicle) {
   const MapValue m(v, "a drag prior {k, kq, rel_sigma}");
   m.AllowOnly({"k", "kq", "rel_sigma"});
   DragPrior drag;
-  drag.k = NonNegative(m.Required("k"));
-  drag.kq = NonNegative(m.Required("kq"));
+  const auto coefficient = [&](const char* name) {
+    const Value x = m.Required(name);
+    const double value = NonNegative(x);
+    CheckPlausibleParameter(x, value, *FamilyNamed(name), dof, vehicle);
+    return value;
+  };
+  drag.k = coefficient(param::kLinearDrag);
+  drag.kq = coefficient(param::kQuadraticDrag);
   if (const Value s = m.Optional("rel_sigma"); !s.absent()) drag.rel_sigma = Positive(s);
   return drag;
 }
@@ -166,11 +173,11 @@ DragPrior ParseDrag(const Value& v) {
 // dofs.<dof> of a vehicle: a priori drag and added mass. A truth file, or a vehicle file with
 // an identified model (`diagnose --write-vehicle`), adds params, effects and sigma (read by
 // ParseTruthDof).
-DofPrior ParsePrior(const Value& v) {
+DofPrior ParsePrior(const Value& v, Dof dof, const Vehicle& vehicle) {
   const MapValue m(v, "a map {drag, added_mass, params, effects, sigma}");
   m.AllowOnly({"drag", "added_mass", "params", "effects", "sigma"});
   DofPrior prior;
-  if (const Value d = m.Optional("drag"); !d.absent()) prior.drag = ParseDrag(d);
+  if (const Value d = m.Optional("drag"); !d.absent()) prior.drag = ParseDrag(d, dof, vehicle);
   if (const Value a = m.Optional("added_mass"); !a.absent()) prior.added_mass = AddedMassBounds(a);
   return prior;
 }
@@ -234,7 +241,7 @@ Vehicle ParseVehicle(const MapValue& root, bool truth) {
   if (const Value v = root.Optional("dofs"); !v.absent()) {
     const MapValue priors(v, "a map {<dof>: {drag, added_mass}}");
     for (const MapValue::Entry& e : priors.entries()) {
-      vehicle.priors[DofKey(e)] = ParsePrior(e.value);
+      vehicle.priors[DofKey(e)] = ParsePrior(e.value, DofKey(e), vehicle);
     }
   }
   if (const Value v = root.Optional("sensors"); !v.absent()) {

@@ -89,6 +89,8 @@ vehicle_case("sensor_rate_zero", r"surge: \{position: \{rate: 3.33",
              "surge: {position: {rate: 0", "sensors.surge.position.rate: expected a positive")
 vehicle_case("dof_unknown", r"^  surge:$", "  surgee:", "dofs: expected a DOF")
 vehicle_case("drag_negative", r"drag: \{k: 46.9", "drag: {k: -1", "dofs.surge.drag.k: expected a number >= 0")
+vehicle_case("drag_kq_huge", r"drag: \{k: 46.9, kq: 306.2", "drag: {k: 46.9, kq: 1e308",
+             "dofs.surge.drag.kq: implausible: expected |kq|")
 vehicle_case("added_mass_reversed", r"^added_mass: .*", "added_mass: [1.0, 0.1]",
              "added_mass: expected [lo, hi]")
 vehicle_case("not_yaml", r"^mass: .*", "mass: [450", "not valid YAML", line_shift=1)
