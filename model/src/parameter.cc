@@ -34,7 +34,7 @@ std::string InputQuantity::Expected() const {
 }
 
 double PlausibleScale(const ParameterFamily& family, Dof dof, const Vehicle& vehicle) {
-  constexpr double kGravity = 9.81;
+  using plausible::kGravity;
   const double size = std::max({vehicle.size[0], vehicle.size[1], vehicle.size[2]});
   const double lever = IsRotational(dof) ? size : 1.0;  // m: torque = force × lever
   using Scale = ParameterFamily::Scale;

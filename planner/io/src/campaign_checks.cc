@@ -91,7 +91,7 @@ void CheckForces(const model::Vehicle& vehicle, const model::TrialEntry& trial,
   const double size = *std::max_element(vehicle.size.begin(), vehicle.size.end());
   for (model::Dof dof : model::kAllDofs) {
     const std::vector<double>& force = trial.log.force[model::Index(dof)];
-    const double scale = 9.81 * vehicle.mass * (model::IsRotational(dof) ? size : 1.0);
+    const double scale = model::plausible::kGravity * vehicle.mass * (model::IsRotational(dof) ? size : 1.0);
     for (std::size_t i = 0; i < force.size(); ++i) {
       if (model::plausible::kForceRatio.Holds(std::abs(force[i]) / scale) || std::isnan(force[i])) {
         continue;

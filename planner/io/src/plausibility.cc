@@ -10,7 +10,6 @@
 namespace uuvplan::io {
 
 using model::InputQuantity;
-using model::ShortestNumber;
 
 namespace {
 
@@ -56,7 +55,7 @@ void CheckPlausibleParameter(const Place& where, double x, const model::Paramete
 }
 
 void CheckPlausibleThruster(const Place& where, const model::Thruster& thruster, double mass) {
-  const double weight = 9.81 * mass;
+  const double weight = model::plausible::kGravity * mass;
   const double largest =
       std::max(std::abs(thruster.MaxForwardThrust()), std::abs(thruster.MaxReverseThrust()));
   if (!model::plausible::kThrustToWeight.Holds(largest / weight)) {
@@ -64,13 +63,6 @@ void CheckPlausibleThruster(const Place& where, const model::Thruster& thruster,
                            model::Significant(largest, 3) + " N for a " +
                            model::Significant(weight, 3) + " N vehicle");
   }
-}
-
-void CheckPlausibleSensor(const Place& where, const model::SensorSpec& spec, double size) {
-  CheckPlausible(Place(where.file(), where.line(), where.KeyPath("rate")), spec.rate_hz,
-                 model::plausible::kSensorRate);
-  CheckPlausible(Place(where.file(), where.line(), where.KeyPath("sigma")), spec.sigma / size,
-                 model::plausible::kSensorSigmaRatio);
 }
 
 }  // namespace uuvplan::io

@@ -122,6 +122,8 @@ struct InputQuantity {
 };
 
 namespace plausible {
+/// m/s²: weights are the scale of forces (PlausibleScale).
+inline constexpr double kGravity = 9.81;
 // From a 10 g micro-robot to a 10,000 t submarine; sizes from 1 cm to 500 m.
 inline constexpr InputQuantity kVehicleMass{"a vehicle mass", "kg", 0.01, 1e7};
 inline constexpr InputQuantity kVehicleSize{"a vehicle dimension", "m", 0.01, 500};

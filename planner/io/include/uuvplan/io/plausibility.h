@@ -36,7 +36,4 @@ void CheckPlausibleParameter(const Place& where, double x, const model::Paramete
 /// A thruster's largest thrust against the weight of a vehicle of `mass` kg.
 void CheckPlausibleThruster(const Place& where, const model::Thruster& thruster, double mass);
 
-/// A sensor's rate and σ; `size`: the vehicle's largest dimension (m), 1 for an angle's sensor.
-void CheckPlausibleSensor(const Place& where, const model::SensorSpec& spec, double size);
-
 }  // namespace uuvplan::io
