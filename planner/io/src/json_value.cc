@@ -105,6 +105,11 @@ json LoadJson(const std::string& path) {
     const std::size_t at = e.byte > 0 ? e.byte - 1 : 0;
     throw model::InputError(path + ":" + LineColumn(text, at),
                             "not valid JSON: " + WithoutQuotedInput(why));
+  } catch (const json::exception& e) {
+    // A number beyond the double range ("2e+308": out_of_range.406, found by fuzz_plan).
+    std::string why = e.what();
+    if (const auto bracket = why.find("] "); bracket != std::string::npos) why = why.substr(bracket + 2);
+    throw model::InputError(path, "not valid JSON: " + WithoutQuotedInput(why));
   }
 }
 

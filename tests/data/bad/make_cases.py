@@ -197,6 +197,9 @@ plan_case("ids_twice", lambda t, p: p["trials"].append(dict(t)), "trials[1].id")
 plan_case("segments_sum", lambda t, p: t.update(
     kind="segments", segments=[{"force": 10, "duration": 4}, {"force": -10, "duration": 4}]),
     "trials[0].duration: expected the segments' durations to add up")
+name = "plan_number_overflow.json"  # found by fuzz_plan: exit 3 before
+write(name, json.dumps(PLAN).replace('"duration": 10', '"duration": 2e+308') + "\n")
+case(name, CHECK % name, [name + ": not valid JSON: number overflow parsing '2e+308'"])
 name = "plan_not_json.json"
 write(name, "trials: [\n")
 case(name, CHECK % name, [name + ":1:3: not valid JSON"])
