@@ -15,6 +15,7 @@ packages=(
   libplplot-dev plplot-driver-cairo
   # the report's render test opens the HTML in headless Chromium
   chromium fonts-dejavu-core
+  clang-14 libclang-rt-14-dev  # the sanitizer and fuzz stage (scripts/sanitize.sh)
 )
 bench_packages=(python3 python3-numpy python3-scipy)
 if [ "${1:-}" = "--bench" ]; then packages+=("${bench_packages[@]}"); fi

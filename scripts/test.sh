@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs dependencies, builds everything with warnings as errors, and runs the whole test
-# suite (ctest), then prints the total time and the ten slowest tests. This is the README's
-# test command and what .ci/run runs. Tests that need ../shared (real logs, not shipped) are
-# reported as skipped with their reason when it is absent.
+# suite (ctest), then prints the total time and the ten slowest tests; then the sanitizer and
+# fuzz stage (scripts/sanitize.sh). This is the README's test command and what .ci/run runs.
+# Tests that need ../shared (real logs, not shipped) are reported as skipped with their reason
+# when it is absent.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export UUVPLAN_BUILD_DIR="${UUVPLAN_BUILD_DIR:-$root/build}"
@@ -17,4 +18,10 @@ grep -E '^ *[0-9]+/[0-9]+ Test +#' "$log" | sed -E 's/^.*Test +#[0-9]+: ([^ ]+) 
   sort -rn | awk 'NR <= 10 { print "  " $0 }'  # reads to the end: no SIGPIPE under pipefail
 echo "test.sh: build and tests took $((SECONDS - start)) s"
 grep -E 'tests passed|tests failed' "$log" | tail -1  # ctest's summary, last
+# The sanitizer stage (issue #15): io tests under ASan + UBSan and 60 s of each fuzz target in
+# build-fuzz/ (scripts/sanitize.sh); UUVPLAN_SKIP_SANITIZE=1 skips it for a quick local run.
+if [ "${UUVPLAN_SKIP_SANITIZE:-0}" != 1 ]; then
+  "$root/scripts/sanitize.sh" "${UUVPLAN_FUZZ_SECONDS:-60}" || status=1
+fi
+echo "test.sh: total $((SECONDS - start)) s"
 exit "$status"

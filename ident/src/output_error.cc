@@ -15,6 +15,7 @@
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/checked_count.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
@@ -174,7 +175,8 @@ class Problem {
         std::vector<double> grid = {0.0};
         auto extend_to = [&](double t) {
           const double last = grid.back();
-          const int pieces = static_cast<int>(std::ceil((t - last) / o.grid_s - 1e-9));
+          const int pieces = model::CheckedCount<int>((t - last) / o.grid_s, "output error grid",
+                                                      model::limits::kMaxTrialRows, "a coarser grid_s");
           for (int k = 1; k < pieces; ++k) grid.push_back(last + (t - last) * k / pieces);
           if (t > last) grid.push_back(t);
         };

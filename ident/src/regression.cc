@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "uuvplan/model/util/checked_count.h"
+
 namespace uuvplan::ident {
 
 std::vector<int> LinearParameters(const model::DofModel& model) {
@@ -106,7 +108,10 @@ IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const Tri
       double stop = end;
       while (next_break < breaks.size() && breaks[next_break] <= a) ++next_break;
       if (next_break < breaks.size() && breaks[next_break] < stop) stop = breaks[next_break];
-      const int pieces = std::max(1, static_cast<int>(std::ceil((stop - a) / max_step - 1e-9)));
+      const int pieces =
+          std::max(1, model::CheckedCount<int>((stop - a) / max_step, "regression quadrature pieces",
+                                               model::limits::kMaxSimulationSteps,
+                                               "a shorter interval between samples"));
       const double len = (stop - a) / pieces;
       for (int p = 0; p < pieces; ++p) {
         const double mid = a + (p + 0.5) * len;

@@ -328,8 +328,9 @@ SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap
     std::vector<double> d(m), y(p.y.begin() + b, p.y.begin() + e);
     // Central differences (exact for parabolas on any grid: the derivative of the parabola
     // through three points at the middle one), second-order one-sided at the ends.
+    const double* t = p.t.data() + b;  // a structured binding cannot be captured before C++20
     auto parabola_slope = [&](std::size_t i0, std::size_t at) {
-      const double t0 = p.t[b + i0], t1 = p.t[b + i0 + 1], t2 = p.t[b + i0 + 2], x = p.t[b + at];
+      const double t0 = t[i0], t1 = t[i0 + 1], t2 = t[i0 + 2], x = t[at];
       const double y0 = y[i0], y1 = y[i0 + 1], y2 = y[i0 + 2];
       return y0 * (2 * x - t1 - t2) / ((t0 - t1) * (t0 - t2)) +
              y1 * (2 * x - t0 - t2) / ((t1 - t0) * (t1 - t2)) +

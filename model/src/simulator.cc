@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "dof_model_kernel.h"
+#include "uuvplan/model/util/checked_count.h"
 
 namespace uuvplan::model {
 namespace {
@@ -21,13 +22,18 @@ inline double Inside(double t, double a, double b) {
 }
 
 // The output trajectory, sized: x for every output time, S (with sensitivities) in place.
-// Throws std::invalid_argument on a step <= 0 or unsorted or negative output times.
+// Throws std::invalid_argument on a step <= 0 or unsorted or negative output times, and
+// InputError when the simulation would take more than limits::kMaxSimulationSteps steps.
 Trajectory SizedOutput(int nx, int np, const std::vector<double>& output_times,
                        const SimulationOptions& options) {
   if (!(options.step_s > 0)) throw std::invalid_argument("SimulationOptions::step_s must be > 0");
   if (!std::is_sorted(output_times.begin(), output_times.end()) ||
       (!output_times.empty() && output_times.front() < 0)) {
     throw std::invalid_argument("Simulate: output times must be sorted and >= 0");
+  }
+  if (!output_times.empty()) {
+    CheckedCount(output_times.back() / options.step_s, "simulation (duration / integration step)",
+                 limits::kMaxSimulationSteps, "a shorter trial or a longer integration step");
   }
   Trajectory out;
   out.t = output_times;
@@ -108,7 +114,8 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
     while (next_break < breaks.size() && breaks[next_break] <= t) ++next_break;
     double b = output_times[next_out] - shift;
     if (next_break < breaks.size()) b = std::min(b, breaks[next_break]);
-    const int n = std::max(1, static_cast<int>(std::ceil((b - t) / options.step_s - 1e-9)));
+    const int n = std::max(1, CheckedCount<int>((b - t) / options.step_s, "simulation step count",
+                                                limits::kMaxSimulationSteps, "a longer step"));
     const double h = (b - t) / n;
     for (int k = 0; k < n; ++k) {
       const double ta = t + k * h;

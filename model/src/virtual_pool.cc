@@ -8,6 +8,7 @@
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/simulator.h"
+#include "uuvplan/model/util/checked_count.h"
 #include "uuvplan/model/util/seed.h"
 
 namespace uuvplan::model {
@@ -32,7 +33,10 @@ class SineAux final : public AuxVelocities {
 };
 
 std::vector<double> SampleTimes(double rate_hz, double duration) {
+  const long n = CheckedFloor(duration * rate_hz, "virtual pool samples (duration × rate)",
+                              limits::kMaxTrialRows, "a shorter trial or a lower sensor rate");
   std::vector<double> t;
+  t.reserve(static_cast<std::size_t>(n) + 2);
   const double dt = 1.0 / rate_hz;
   for (long k = 0; k * dt <= duration + 1e-9; ++k) t.push_back(k * dt);
   return t;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "uuvplan/model/simulator.h"
+#include "uuvplan/model/util/checked_count.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -23,7 +24,9 @@ void AddSensor(const model::SensorSpec& spec, int channel, double duration,
   }
   const double inv_var = 1.0 / (spec.sigma * spec.sigma);
   const double span = duration * spec.rate_hz;
-  const long whole = static_cast<long>(std::floor(span + 1e-9));
+  const long whole = model::CheckedFloor(span, "sensor samples (duration × rate)",
+                                         model::limits::kMaxTrialRows,
+                                         "a shorter trial or a lower sensor rate");
   for (long k = 0; k <= whole; ++k) samples->push_back({k / spec.rate_hz, channel, inv_var});
   const double frac = span - whole;
   if (frac > 1e-9) samples->push_back({(whole + 1) / spec.rate_hz, channel, frac * inv_var});
@@ -92,7 +95,8 @@ PositionTrace TracePosition(const model::DofModel& model, const Eigen::VectorXd&
                             double step_s) {
   PositionTrace trace;
   trace.dt = dt;
-  const long n = static_cast<long>(std::ceil(duration / dt - 1e-9));
+  const long n = model::CheckedCount(duration / dt, "position trace samples (duration / dt)",
+                                     model::limits::kMaxTrialRows, "a shorter trial");
   std::vector<double> times(n + 1);
   for (long i = 0; i <= n; ++i) times[i] = std::min(i * dt, duration);
   model::TrialConditions conditions;

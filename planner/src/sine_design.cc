@@ -10,6 +10,7 @@
 
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/checked_count.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/fisher_information.h"
 #include "uuvplan/planner/seed_rules.h"
@@ -84,7 +85,9 @@ double FirstOverflow(const DofContext& ctx, const model::DofModel& model,
       }
     }
   }
-  const std::size_t n_valid = static_cast<std::size_t>(std::ceil(horizon / dt - 1e-9)) + 1;
+  const std::size_t n_valid =
+      model::CheckedCount<std::size_t>(horizon / dt, "sine design horizon samples",
+                                       model::limits::kMaxTrialRows, "a shorter trial") + 1;
   for (std::size_t i = 1; i < lo.size() && i < n_valid; ++i) {
     const double s1 = hi[i] - lo[i];
     if (s1 > avail) {

@@ -6,7 +6,28 @@
 
 #include "command.h"
 #include "usage_errors.h"
+#include "uuvplan/io/plausibility.h"
 #include "uuvplan/model/input_error.h"
+
+namespace {
+
+// CLI11 reads "-1" for an unsigned option as 2^64 − 1: every unsigned option (--seed, --budget)
+// takes only numbers >= 0 (exit 2 otherwise).
+void RefuseNegativeCounts(CLI::App& app) {
+  for (CLI::App* sub : app.get_subcommands({})) {
+    for (CLI::Option* option : sub->get_options()) {
+      if (option->get_type_name() != "UINT") continue;
+      option->check(CLI::Validator(
+          [](std::string& text) {
+            return text.find('-') == std::string::npos ? std::string()
+                                                        : "expected a whole number >= 0, got " + text;
+          },
+          "UINT >= 0"));
+    }
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace uuvplan::tool;
@@ -20,8 +41,14 @@ int main(int argc, char** argv) {
   auto& commands = Registry();
   std::sort(commands.begin(), commands.end(),
             [](const Command& a, const Command& b) { return a.order < b.order; });
+  app.fallthrough();  // a flag of uuvplan itself may follow the command's name
   std::function<int()> run;
   for (auto& c : commands) c.add(app, &run);
+  bool accept_implausible = false;
+  app.add_flag("--accept-implausible", accept_implausible,
+               "read values outside the plausible ranges of a pool trial (docs/formats.md, "
+               "\"Plausibility\") as given, with a warning, instead of refusing the file");
+  RefuseNegativeCounts(app);
   if (const auto unknown = UnknownNameMessage(app, argc, argv)) {
     std::cerr << *unknown << "\n";
     return kExitBadInput;
@@ -32,6 +59,10 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     std::cerr << ParseErrorMessage(e) << "\n";
     return kExitBadInput;
+  }
+  if (accept_implausible) {
+    uuvplan::io::AcceptImplausible(
+        [](const std::string& warning) { std::cerr << "warning: " << warning << "\n"; });
   }
   try {
     return run ? run() : kExitBadInput;

@@ -1,6 +1,7 @@
 // Whole-or-nothing output files: the text goes to a temporary file in the target's directory
 // (so that the final rename stays within one file system and is atomic), then replaces the
-// target. A reader of `path` sees either the old file or the complete new one.
+// target. A reader of `path` sees either the old file or the complete new one; file and
+// directory are fsync'ed before and after the rename.
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "uuvplan/io/files.h"
+#include "uuvplan/io/output_claim.h"
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::io {
@@ -57,7 +59,9 @@ void WriteFileAtomically(const std::string& path, const std::string& text) {
   const int fd = CreateTemporary(path, &temp);
   if (fd < 0)
     throw model::InputError(path, "cannot create a temporary file beside it: " + ErrnoText());
-  const bool written = WriteAll(fd, text);
+  // The data reaches the disk before the rename makes it the file: after a crash the target
+  // is the old file or the whole new one, never an empty one.
+  const bool written = WriteAll(fd, text) && ::fsync(fd) == 0;
   const int write_errno = errno;
   const bool closed = ::close(fd) == 0;
   if (!written || !closed) {
@@ -70,6 +74,7 @@ void WriteFileAtomically(const std::string& path, const std::string& text) {
     ::unlink(temp.c_str());
     throw model::InputError(path, "cannot replace it with the new file: " + reason);
   }
+  SyncDirectory(std::filesystem::path(path).parent_path().string());  // the rename itself
 }
 
 }  // namespace uuvplan::io

@@ -12,8 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "campaign_checks.h"
 #include "uuvplan/io/files.h"
 #include "uuvplan/io/new_directory.h"
+#include "uuvplan/io/output_claim.h"
 #include "uuvplan/io/pool_yaml.h"
 #include "uuvplan/io/trial_log_csv.h"
 #include "uuvplan/io/vehicle_yaml.h"
@@ -125,11 +127,13 @@ Campaign ReadCampaign(const std::string& given) {
       campaign.pool = ReadPool(ReadableFile(pool));
       campaign.pool_file = pool.node().Scalar();
     }
-    for (const Value& item :
-         List(m.Required("trials"), "a list of trials {file, dof, mapping, ...}")) {
+    const Value trials = m.Required("trials");
+    for (const Value& item : List(trials, "a list of trials {file, dof, mapping, ...}")) {
       const TrialEntry* previous = campaign.trials.empty() ? nullptr : &campaign.trials.back();
       campaign.trials.push_back(ParseTrial(item, campaign.vehicle, previous));
+      CheckCampaignTrial(campaign, campaign.trials.size() - 1, item);
     }
+    CheckCampaignWork(campaign, trials);
     return campaign;
   });
 }
@@ -185,6 +189,7 @@ void CheckNewCampaignDirectory(const std::string& dir) { CheckNewDirectory(dir, 
 
 Campaign WriteCampaign(const std::string& dir, Campaign campaign, const Vehicle& vehicle,
                        const std::vector<std::string>& trial_comments) {
+  const OutputClaim claim(dir);  // shared with the caller's (SimulateCampaign)
   CheckNewCampaignDirectory(dir);
   const fs::path out = DirectoryPath(dir);
   // Everything is written to a temporary sibling directory first, then renamed into place,

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "text_checks.h"
 #include "uuvplan/io/files.h"
 #include "uuvplan/model/input_error.h"
 
@@ -91,6 +92,7 @@ std::string String(const JsonValue& v, const std::string& expectation) {
 
 json LoadJson(const std::string& path) {
   const std::string text = ReadFileText(path);
+  CheckInputText(path, text, false);
   try {
     return json::parse(text);
   } catch (const json::parse_error& e) {
@@ -101,7 +103,13 @@ json LoadJson(const std::string& path) {
       why = why.substr(colon + 2);
     }
     const std::size_t at = e.byte > 0 ? e.byte - 1 : 0;
-    throw model::InputError(path + ":" + LineColumn(text, at), "not valid JSON: " + why);
+    throw model::InputError(path + ":" + LineColumn(text, at),
+                            "not valid JSON: " + WithoutQuotedInput(why));
+  } catch (const json::exception& e) {
+    // A number beyond the double range ("2e+308": out_of_range.406, found by fuzz_plan).
+    std::string why = e.what();
+    if (const auto bracket = why.find("] "); bracket != std::string::npos) why = why.substr(bracket + 2);
+    throw model::InputError(path, "not valid JSON: " + WithoutQuotedInput(why));
   }
 }
 

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <system_error>
 
+#include "uuvplan/io/output_claim.h"
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::io {
@@ -43,10 +44,20 @@ fs::path NewSiblingDirectory(const fs::path& out, const std::string& dir) {
 
 void MoveIntoPlace(const fs::path& tmp, const fs::path& out, const std::string& dir,
                    const std::string& what) {
+  // Durable before visible: every directory of `tmp` synced, then one rename(2) over the empty
+  // `out` (it replaces an empty directory atomically; the OutputClaim on `out`, when the caller
+  // holds one, keeps other runs away), then the parent synced (issue #15).
   std::error_code ec;
-  if (fs::is_directory(out) && fs::is_empty(out, ec)) fs::remove(out, ec);
+  for (auto it = fs::recursive_directory_iterator(tmp, ec); !ec && it != fs::end(it); it.increment(ec)) {
+    if (it->is_directory(ec)) SyncDirectory(it->path().string());
+  }
+  SyncDirectory(tmp.string());
+  ec.clear();
   fs::rename(tmp, out, ec);
-  if (!ec) return;
+  if (!ec) {
+    SyncDirectory(out.has_parent_path() ? out.parent_path().string() : ".");
+    return;
+  }
   std::error_code ignored;
   fs::remove_all(tmp, ignored);  // ours alone (NewSiblingDirectory)
   if (fs::exists(out)) {

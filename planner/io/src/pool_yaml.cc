@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "uuvplan/io/plausibility.h"
 #include "uuvplan/io/yaml_value.h"
 
 namespace uuvplan::io {
@@ -19,9 +20,15 @@ Pool ReadPool(const std::string& path) {
     Pool pool;
     const Value name = m.Optional("name");
     pool.name = name.absent() ? fs::path(path).stem().string() : Name(name, "a pool name");
-    pool.length = Positive(m.Required("length"));
-    pool.width = Positive(m.Required("width"));
-    pool.depth = Positive(m.Required("depth"));
+    const auto dimension = [&m](const char* key) {
+      const Value v = m.Required(key);
+      const double x = Positive(v);
+      CheckPlausible(v, x, plausible::kPoolDimension);
+      return x;
+    };
+    pool.length = dimension("length");
+    pool.width = dimension("width");
+    pool.depth = dimension("depth");
     if (const Value margin = m.Optional("margin"); !margin.absent()) {
       pool.margin = NonNegative(margin);
       if (!(2 * pool.margin < std::min({pool.length, pool.width, pool.depth}))) {

@@ -12,6 +12,9 @@
 #include <set>
 #include <sstream>
 
+#include "uuvplan/io/json_value.h"
+#include "uuvplan/io/plausibility.h"
+
 namespace uuvplan::io {
 
 using nlohmann::json;
@@ -84,6 +87,13 @@ model::TrialKind KindOf(const JsonValue& v) {
   v.Expected("a trial kind (" + model::kTrialKindNames.List() + ")");
 }
 
+// A trial's or leg's duration: positive, and plausible for a pool trial (parameter.h).
+double PlausibleDuration(const JsonValue& v) {
+  const double duration = PositiveNumber(v, "s");
+  CheckPlausible(v, duration, model::plausible::kDuration);
+  return duration;
+}
+
 std::vector<model::SegmentDesign> SegmentsOf(const JsonValue& v, const std::string& trial_mapping) {
   if (!v.json().is_array() || v.json().empty()) {
     v.Expected("a non-empty array of {force, duration, mapping}");
@@ -94,7 +104,7 @@ std::vector<model::SegmentDesign> SegmentsOf(const JsonValue& v, const std::stri
     if (!s.json().is_object()) s.Expected("an object {force, duration, mapping}");
     model::SegmentDesign seg;
     seg.force = Number(s.Required("force", "N or N·m"));
-    seg.duration = PositiveNumber(s.Required("duration", "s"), "s");
+    seg.duration = PlausibleDuration(s.Required("duration", "s"));
     // The contract writes a mapping per segment; a hand-written plan may leave it to the trial.
     if (const auto m = s.Optional("mapping")) seg.mapping = String(*m, "a mapping name");
     if (seg.mapping == trial_mapping) seg.mapping.clear();
@@ -240,7 +250,7 @@ PlannedTrial TrialFromJson(const JsonValue& j) {
   d.id = TrialId(j.Required("id", "the trial's name"));
   d.dof = DofOf(j.Required("dof", "surge, sway, heave, roll, pitch or yaw"));
   d.kind = KindOf(j.Required("kind", "steady, sine or segments"));
-  d.duration = PositiveNumber(j.Required("duration", "s"), "s");
+  d.duration = PlausibleDuration(j.Required("duration", "s"));
   d.mapping = String(j.Required("mapping", "the thrust mapping of the trial"), "a mapping name");
   KindFieldsOf(j, &d);
   if (const auto t = j.Optional("travel")) trial.travel = TravelOf(*t);

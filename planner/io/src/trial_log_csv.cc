@@ -23,6 +23,7 @@
 #include "uuvplan/io/place.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/model/work_limits.h"
 
 namespace uuvplan::io {
 
@@ -32,6 +33,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 
 // Comment ('#' first) and blank lines carry no data and may appear anywhere.
 bool IsSkipped(std::string_view line) {
@@ -44,7 +46,11 @@ bool IsSkipped(std::string_view line) {
   Place(path, line, "").Fail(what);
 }
 
-std::string Quoted(std::string_view cell) { return "'" + std::string(cell) + "'"; }
+// A cell as the message quotes it: at most 40 characters.
+std::string Quoted(std::string_view cell) {
+  constexpr std::size_t kMax = 40;
+  return "'" + std::string(cell.substr(0, kMax)) + (cell.size() > kMax ? "...'" : "'");
+}
 
 std::FILE* OpenForReading(const std::string& path) {
   std::FILE* file = std::fopen(path.c_str(), "rb");
@@ -129,6 +135,11 @@ class TrialLogParser {
 
   TrialLog Parse() {
     const std::size_t max_rows = CountNewlines(path_) + 1;
+    if (static_cast<double>(max_rows) > model::limits::kMaxTrialRows) {
+      Place(path_, 0, "").Fail(std::to_string(max_rows) + " lines, more than the " +
+                               Significant(model::limits::kMaxTrialRows, 3) +
+                               " rows a trial log may have: split the trial");
+    }
     LineReader reader(path_);
     std::string_view line;
     bool has_header = false;
@@ -140,6 +151,8 @@ class TrialLogParser {
               "data rows");
     }
     const int header_line = reader.line_number();
+    // A UTF-8 byte order mark (spreadsheet exports) is not part of the first column's name.
+    if (header_line == 1 && StartsWith(line, kByteOrderMark)) line.remove_prefix(kByteOrderMark.size());
     ReadHeader(line, header_line);
     Reserve(max_rows);
     while (reader.Next(&line)) {
@@ -185,12 +198,19 @@ class TrialLogParser {
     }
     const bool has_time = std::any_of(columns_.begin(), columns_.end(),
                                       [](const Column& c) { return c.kind == Kind::kTime; });
-    if (!has_time) {
-      std::vector<std::string> names;
-      for (const Column& c : columns_) names.push_back("'" + c.name + "'");
+    if (has_time) return;
+    const bool any_known = std::any_of(columns_.begin(), columns_.end(),
+                                       [](const Column& c) { return c.kind != Kind::kIgnored; });
+    // A file that is no trial log at all is not quoted back (it may be anything).
+    if (!any_known) {
       Place(path_, line_number, "header")
-          .Expected("a 't' column (time, s)", "columns " + Join(names));
+          .Expected("a 't' column (time, s)",
+                    "no known column among " + std::to_string(columns_.size()) +
+                        " (is this a trial log? a header such as 't,force_surge,vel_surge')");
     }
+    std::vector<std::string> names;
+    for (const Column& c : columns_) names.push_back(Quoted(c.name));
+    Place(path_, line_number, "header").Expected("a 't' column (time, s)", "columns " + Join(names));
   }
 
   void AddColumn(std::string name, int line_number) {

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "truth_effects.h"
+#include "uuvplan/io/plausibility.h"
 #include "uuvplan/model/effects.h"
 #include "vehicle_keys.h"
 
@@ -22,10 +23,16 @@ namespace {
 void ParseParams(const Value& v, Dof dof, const Vehicle& vehicle, DofTruth* truth) {
   const MapValue m(v, "a map {m, k, kq, bias, bias_step, eta}");
   m.AllowOnly({"m", "k", "kq", "bias", "bias_step", "eta"});
-  truth->params[param::kMass] = Positive(m.Required("m"));
-  const auto optional = [&m](const char* key, double (*read)(const Value&)) {
+  // Each value also against its family's plausible ratio to the vehicle (parameter.h).
+  const auto plausible = [&](const Value& x, double value, const char* name) {
+    CheckPlausibleParameter(x, value, *FamilyNamed(name), dof, vehicle);
+    return value;
+  };
+  const Value mass = m.Required("m");
+  truth->params[param::kMass] = plausible(mass, Positive(mass), param::kMass);
+  const auto optional = [&](const char* key, double (*read)(const Value&)) {
     const Value x = m.Optional(key);
-    return x.absent() ? 0.0 : read(x);
+    return x.absent() ? 0.0 : plausible(x, read(x), key);
   };
   truth->params[param::kLinearDrag] = optional("k", NonNegative);
   truth->params[param::kQuadraticDrag] = optional("kq", NonNegative);
@@ -78,7 +85,10 @@ namespace {
 void ParseVirtualPool(const Value& v, Truth* truth) {
   const MapValue m(v, "a map {step, dropout_probability, outlier_probability, outlier_size}");
   m.AllowOnly({"step", "dropout_probability", "outlier_probability", "outlier_size"});
-  if (const Value x = m.Optional("step"); !x.absent()) truth->integration_step_s = Positive(x);
+  if (const Value x = m.Optional("step"); !x.absent()) {
+    truth->integration_step_s = Positive(x);
+    CheckPlausible(x, truth->integration_step_s, plausible::kIntegrationStep);
+  }
   if (const Value x = m.Optional("dropout_probability"); !x.absent()) {
     truth->defects.dropout_probability = Probability(x);
   }

@@ -2,11 +2,13 @@
 // knowledge and sensors. A truth file is a vehicle file with more keys (truth_yaml.cc).
 #include "uuvplan/io/vehicle_yaml.h"
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "uuvplan/io/plausibility.h"
 #include "uuvplan/model/util/text.h"
 #include "vehicle_keys.h"
 
@@ -51,7 +53,7 @@ ThrustModel ParseThrust(const Value& v) {
   return model;
 }
 
-Thruster ParseThruster(const Value& v, const std::vector<Thruster>& previous) {
+Thruster ParseThruster(const Value& v, const std::vector<Thruster>& previous, double mass) {
   const MapValue m(v, "a thruster {name, thrust, command}");
   m.AllowOnly({"name", "thrust", "command"});
   Thruster t;
@@ -67,14 +69,15 @@ Thruster ParseThruster(const Value& v, const std::vector<Thruster>& previous) {
   if (!(range[0] < range[1])) command.Expected(expectation);
   t.command_min = range[0];
   t.command_max = range[1];
+  CheckPlausibleThruster(v, t, mass);
   return t;
 }
 
-std::vector<Thruster> ParseThrusters(const Value& v) {
+std::vector<Thruster> ParseThrusters(const Value& v, double mass) {
   const std::string expectation = "a list of at least one thruster {name, thrust, command}";
   std::vector<Thruster> thrusters;
   for (const Value& item : List(v, expectation)) {
-    thrusters.push_back(ParseThruster(item, thrusters));
+    thrusters.push_back(ParseThruster(item, thrusters, mass));
   }
   if (thrusters.empty()) v.Expected(expectation);
   return thrusters;
@@ -135,7 +138,7 @@ std::vector<ThrustMapping> ParseMappings(const Value& v, const std::vector<Thrus
   return mappings;
 }
 
-std::map<Dof, double> ParseInertia(const Value& v) {
+std::map<Dof, double> ParseInertia(const Value& v, double mass_size2) {
   const MapValue m(v, "a map {<rotational DOF>: kg·m²}");
   std::map<Dof, double> inertia;
   for (const MapValue::Entry& e : m.entries()) {
@@ -145,16 +148,24 @@ std::map<Dof, double> ParseInertia(const Value& v) {
                        e.key + "' (the inertia of a translation is the mass)");
     }
     inertia[dof] = Positive(e.value);
+    CheckPlausible(e.value, inertia[dof] / mass_size2, plausible::kInertiaRatio);
   }
   return inertia;
 }
 
-DragPrior ParseDrag(const Value& v) {
+// A priori drag, plausible for the vehicle as a truth's k and kq (parameter.h).
+DragPrior ParseDrag(const Value& v, Dof dof, const Vehicle& vehicle) {
   const MapValue m(v, "a drag prior {k, kq, rel_sigma}");
   m.AllowOnly({"k", "kq", "rel_sigma"});
   DragPrior drag;
-  drag.k = NonNegative(m.Required("k"));
-  drag.kq = NonNegative(m.Required("kq"));
+  const auto coefficient = [&](const char* name) {
+    const Value x = m.Required(name);
+    const double value = NonNegative(x);
+    CheckPlausibleParameter(x, value, *FamilyNamed(name), dof, vehicle);
+    return value;
+  };
+  drag.k = coefficient(param::kLinearDrag);
+  drag.kq = coefficient(param::kQuadraticDrag);
   if (const Value s = m.Optional("rel_sigma"); !s.absent()) drag.rel_sigma = Positive(s);
   return drag;
 }
@@ -162,30 +173,34 @@ DragPrior ParseDrag(const Value& v) {
 // dofs.<dof> of a vehicle: a priori drag and added mass. A truth file, or a vehicle file with
 // an identified model (`diagnose --write-vehicle`), adds params, effects and sigma (read by
 // ParseTruthDof).
-DofPrior ParsePrior(const Value& v) {
+DofPrior ParsePrior(const Value& v, Dof dof, const Vehicle& vehicle) {
   const MapValue m(v, "a map {drag, added_mass, params, effects, sigma}");
   m.AllowOnly({"drag", "added_mass", "params", "effects", "sigma"});
   DofPrior prior;
-  if (const Value d = m.Optional("drag"); !d.absent()) prior.drag = ParseDrag(d);
+  if (const Value d = m.Optional("drag"); !d.absent()) prior.drag = ParseDrag(d, dof, vehicle);
   if (const Value a = m.Optional("added_mass"); !a.absent()) prior.added_mass = AddedMassBounds(a);
   return prior;
 }
 
-SensorSpec ParseSensorSpec(const Value& v) {
+// `size`: the scale of the sensor's σ (the vehicle's largest dimension, 1 rad for an angle).
+SensorSpec ParseSensorSpec(const Value& v, double size) {
   const MapValue m(v, "a sensor {rate, sigma}");
   m.AllowOnly({"rate", "sigma"});
   SensorSpec spec;
-  spec.rate_hz = Positive(m.Required("rate"));
-  spec.sigma = Positive(m.Required("sigma"));
+  const Value rate = m.Required("rate"), sigma = m.Required("sigma");
+  spec.rate_hz = Positive(rate);
+  spec.sigma = Positive(sigma);
+  CheckPlausible(rate, spec.rate_hz, plausible::kSensorRate);
+  CheckPlausible(sigma, spec.sigma / size, plausible::kSensorSigmaRatio);
   return spec;
 }
 
-DofSensors ParseDofSensors(const Value& v) {
+DofSensors ParseDofSensors(const Value& v, double size) {
   const MapValue m(v, "a map {position: {rate, sigma}, velocity: {rate, sigma}}");
   m.AllowOnly({"position", "velocity"});
   DofSensors sensors;
-  if (const Value p = m.Optional("position"); !p.absent()) sensors.position = ParseSensorSpec(p);
-  if (const Value s = m.Optional("velocity"); !s.absent()) sensors.velocity = ParseSensorSpec(s);
+  if (const Value p = m.Optional("position"); !p.absent()) sensors.position = ParseSensorSpec(p, size);
+  if (const Value s = m.Optional("velocity"); !s.absent()) sensors.velocity = ParseSensorSpec(s, size);
   if (!sensors.position && !sensors.velocity) v.Expected("a position and/or a velocity sensor");
   return sensors;
 }
@@ -203,28 +218,37 @@ Vehicle ParseVehicle(const MapValue& root, bool truth) {
   }
   Vehicle vehicle;
   vehicle.name = Name(root.Required("name"), "a vehicle name");
-  vehicle.mass = Positive(root.Required("mass"));
+  const Value mass = root.Required("mass");
+  vehicle.mass = Positive(mass);
+  CheckPlausible(mass, vehicle.mass, plausible::kVehicleMass);
   const Value size = root.Required("size");
   const std::vector<Value> sides = List(size, "[length, width, height] in m");
   if (sides.size() != 3) size.Expected("[length, width, height] in m");
-  for (int i = 0; i < 3; ++i) vehicle.size[i] = Positive(sides[i]);
-  if (const Value v = root.Optional("inertia"); !v.absent()) vehicle.inertia = ParseInertia(v);
+  for (int i = 0; i < 3; ++i) {
+    vehicle.size[i] = Positive(sides[i]);
+    CheckPlausible(sides[i], vehicle.size[i], plausible::kVehicleSize);
+  }
+  const double largest = *std::max_element(vehicle.size.begin(), vehicle.size.end());
+  if (const Value v = root.Optional("inertia"); !v.absent()) {
+    vehicle.inertia = ParseInertia(v, vehicle.mass * largest * largest);
+  }
   if (const Value v = root.Optional("added_mass"); !v.absent()) {
     vehicle.added_mass = AddedMassBounds(v);
   }
-  vehicle.thrusters = ParseThrusters(root.Required("thrusters"));
+  vehicle.thrusters = ParseThrusters(root.Required("thrusters"), vehicle.mass);
   if (const Value v = root.Optional("min_thrust"); !v.absent()) vehicle.min_thrust = NonNegative(v);
   vehicle.mappings = ParseMappings(root.Required("mappings"), vehicle.thrusters);
   if (const Value v = root.Optional("dofs"); !v.absent()) {
     const MapValue priors(v, "a map {<dof>: {drag, added_mass}}");
     for (const MapValue::Entry& e : priors.entries()) {
-      vehicle.priors[DofKey(e)] = ParsePrior(e.value);
+      vehicle.priors[DofKey(e)] = ParsePrior(e.value, DofKey(e), vehicle);
     }
   }
   if (const Value v = root.Optional("sensors"); !v.absent()) {
     const MapValue sensors(v, "a map {<dof>: {position, velocity}}");
     for (const MapValue::Entry& e : sensors.entries()) {
-      vehicle.sensors[DofKey(e)] = ParseDofSensors(e.value);
+      const Dof dof = DofKey(e);
+      vehicle.sensors[dof] = ParseDofSensors(e.value, IsRotational(dof) ? 1.0 : largest);
     }
   }
   return vehicle;

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <exception>
 
+#include "text_checks.h"
 #include "uuvplan/io/files.h"
 #include "uuvplan/io/number_text.h"
 #include "uuvplan/model/input_error.h"
@@ -176,6 +177,7 @@ std::string ReadableFile(const Value& v) {
 
 YAML::Node LoadYaml(const std::string& file, const std::string& what) {
   const std::string text = ReadFileText(file);
+  CheckInputText(file, text, true);
   YAML::Node root;
   try {
     root = YAML::Load(text);
@@ -188,7 +190,14 @@ YAML::Node LoadYaml(const std::string& file, const std::string& what) {
 
 MapValue LoadYamlMap(const std::string& file, const std::string& what,
                      const std::string& map_what) {
-  return MapValue(Value(LoadYaml(file, what), "", file, 0), map_what);
+  const YAML::Node root = LoadYaml(file, what);
+  // A file of another kind is not quoted back (it may be anything: /etc/passwd).
+  if (!root.IsMap()) {
+    throw model::InputError(file, "expected " + map_what + ", got " +
+                                      (root.IsSequence() ? "a list" : "text without YAML keys") +
+                                      " (is this the right file?)");
+  }
+  return MapValue(Value(root, "", file, 0), map_what);
 }
 
 void RethrowAsInputError(const std::string& file) {

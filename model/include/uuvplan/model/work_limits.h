@@ -1,0 +1,26 @@
+// The largest work an input may ask for (issue #15: no input may hang uuvplan or take more
+// than 2 GB). Each limit is far above any pool trial and says what it bounds; the io layer
+// checks inputs against them before any work starts, naming the key that is too large, and
+// CheckedCount (util/checked_count.h) enforces them where a count is computed.
+#pragma once
+
+namespace uuvplan::model::limits {
+
+/// Rows of one trial log or sampled trajectory (duration × rate): a day at 100 Hz is 8.6e6;
+/// 1e7 rows × the log's ~5 columns × 8 B is 400 MB.
+inline constexpr double kMaxTrialRows = 1e7;
+
+/// RK4 steps of one simulated trial (duration / integration step): 1e8 steps are ~2 s of CPU
+/// per simulation (bench/simulate_bench.cc), 1e4 s at a 0.1 ms step.
+inline constexpr double kMaxSimulationSteps = 1e8;
+
+/// Rows of all the trials of one campaign, read or simulated (the campaign is held in memory).
+inline constexpr double kMaxCampaignRows = 2e7;
+
+/// For one DOF, (fitted rows) × (fit trials): the output error's Jacobian is dense, one column
+/// per fit trial's initial velocity beside the parameters' (ident/src/output_error.cc), so its
+/// memory is 8 B × rows × trials — 400 MB here. 200 trials of 2,934 rows (half of them fit)
+/// are 2.9e7 (395 MB peak, 48 s); 2,000 such trials would need 35 GB.
+inline constexpr double kMaxRowsTimesTrials = 5e7;
+
+}  // namespace uuvplan::model::limits

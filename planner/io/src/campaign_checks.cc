@@ -1,0 +1,142 @@
+#include "campaign_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "uuvplan/io/plausibility.h"
+#include "uuvplan/model/util/text.h"
+#include "uuvplan/model/work_limits.h"
+
+namespace uuvplan::io {
+
+using model::Significant;
+
+namespace {
+
+// The same file, however it is written (a symbolic link, "./", "a/../").
+std::string Identity(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
+  return ec ? path : canonical.string();
+}
+
+void CheckNotRepeated(const model::Campaign& campaign, std::size_t index, const Value& item) {
+  const std::string self = Identity(campaign.trials[index].path);
+  for (std::size_t j = 0; j < index; ++j) {
+    if (Identity(campaign.trials[j].path) != self) continue;
+    Implausible(Place(item.file(), item.line(), item.KeyPath("file")),
+                "the same log as trials[" + std::to_string(j) + "] ('" + campaign.trials[j].file +
+                    "'): a trial fitted and validated on the same data, or counted twice, "
+                    "makes the σ and the validation meaningless");
+    return;
+  }
+}
+
+// The median interval between the rows where `column` has a sample; NaN for fewer than 20
+// intervals (a hand-written log of a few rows says little about its sampling).
+double MedianInterval(const std::vector<double>& t, const std::vector<double>& column) {
+  std::vector<double> dt;
+  double last = std::nan("");
+  for (std::size_t i = 0; i < t.size() && i < column.size(); ++i) {
+    if (std::isnan(column[i])) continue;
+    if (!std::isnan(last)) dt.push_back(t[i] - last);
+    last = t[i];
+  }
+  if (dt.size() < 20) return std::nan("");
+  std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
+  return dt[dt.size() / 2];
+}
+
+// The sampling of the trial's own sensor against the rate the vehicle declares for it: within a
+// factor 4 (a log may merge several streams; a ratio of 1000 is a time column in ms).
+void CheckSampling(const model::Campaign& campaign, const model::TrialEntry& trial,
+                   const Value& item) {
+  const Place at(item.file(), item.line(), item.KeyPath("file"));
+  const auto& log = trial.log;
+  const double span = log.t.back() - log.t.front();
+  if (span > model::plausible::kDuration.upper) {
+    Implausible(at, trial.file + ": column 't' spans " + Significant(span, 4) +
+                        " s, expected a trial of at most a day (is t in ms?)");
+  }
+  const auto sensors = campaign.vehicle.sensors.find(trial.dof);
+  if (sensors == campaign.vehicle.sensors.end()) return;
+  const int d = model::Index(trial.dof);
+  const bool velocity = sensors->second.velocity && !log.velocity[d].empty();
+  const std::optional<model::SensorSpec>& spec =
+      velocity ? sensors->second.velocity : sensors->second.position;
+  const std::vector<double>& column = velocity ? log.velocity[d] : log.position[d];
+  if (!spec || column.empty()) return;
+  const double ratio = MedianInterval(log.t, column) * spec->rate_hz;
+  if (std::isnan(ratio) || (ratio > 0.25 && ratio < 4)) return;
+  const std::string name = std::string(velocity ? "vel_" : "pos_") + std::string(DofName(trial.dof));
+  if (ratio > 300 && ratio < 3000) {
+    Implausible(at, trial.file + ": column 't' looks like milliseconds: '" + name +
+                        "' is sampled every " + Significant(ratio / spec->rate_hz, 4) +
+                        " 'seconds', the vehicle declares " + Significant(spec->rate_hz, 4) +
+                        " Hz (t must be in s)");
+    return;
+  }
+  Implausible(at, trial.file + ": '" + name + "' is sampled every " +
+                      Significant(ratio / spec->rate_hz, 4) + " s, which does not fit the " +
+                      Significant(spec->rate_hz, 4) + " Hz the vehicle declares (sensors." +
+                      std::string(DofName(trial.dof)) + ")");
+}
+
+// Every logged force or torque within a thousand weights (× the largest size, for a torque).
+void CheckForces(const model::Vehicle& vehicle, const model::TrialEntry& trial,
+                 const Value& item) {
+  const double size = *std::max_element(vehicle.size.begin(), vehicle.size.end());
+  for (model::Dof dof : model::kAllDofs) {
+    const std::vector<double>& force = trial.log.force[model::Index(dof)];
+    const double scale = model::plausible::kGravity * vehicle.mass * (model::IsRotational(dof) ? size : 1.0);
+    for (std::size_t i = 0; i < force.size(); ++i) {
+      if (model::plausible::kForceRatio.Holds(std::abs(force[i]) / scale) || std::isnan(force[i])) {
+        continue;
+      }
+      Implausible(Place(item.file(), item.line(), item.KeyPath("file")),
+                  trial.file + ": column 'force_" + std::string(model::DofName(dof)) +
+                      "' at t = " + model::ShortestNumber(trial.log.t[i]) + " s (data row " +
+                      std::to_string(i + 1) + "): expected " +
+                      model::plausible::kForceRatio.Expected() + " (" + Significant(scale, 3) +
+                      "), got " + model::ShortestNumber(force[i]));
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+void CheckCampaignTrial(const model::Campaign& campaign, std::size_t index, const Value& item) {
+  CheckNotRepeated(campaign, index, item);
+  CheckSampling(campaign, campaign.trials[index], item);
+  CheckForces(campaign.vehicle, campaign.trials[index], item);
+}
+
+void CheckCampaignWork(const model::Campaign& campaign, const Value& trials) {
+  double rows = 0;
+  std::map<model::Dof, std::pair<double, double>> fit;  // DOF -> (fit rows, fit trials)
+  for (const model::TrialEntry& trial : campaign.trials) {
+    rows += static_cast<double>(trial.log.size());
+    if (trial.use != model::TrialUse::kFit) continue;
+    fit[trial.dof].first += static_cast<double>(trial.log.size());
+    fit[trial.dof].second += 1;
+  }
+  if (rows > model::limits::kMaxCampaignRows) {
+    trials.Fail(std::to_string(campaign.trials.size()) + " trials hold " + Significant(rows, 3) +
+                " rows, more than the " + Significant(model::limits::kMaxCampaignRows, 3) +
+                " a campaign may hold in memory: split it into campaigns");
+  }
+  for (const auto& [dof, size] : fit) {
+    if (size.first * size.second <= model::limits::kMaxRowsTimesTrials) continue;
+    trials.Fail(Significant(size.second, 4) + " " + std::string(model::DofName(dof)) +
+                " fit trials of " + Significant(size.first, 3) + " rows in all: the output " +
+                "error would hold rows × trials = " + Significant(size.first * size.second, 3) +
+                " numbers (at most " + Significant(model::limits::kMaxRowsTimesTrials, 3) +
+                "): fewer, longer trials, or some as 'use: validate'");
+  }
+}
+
+}  // namespace uuvplan::io
