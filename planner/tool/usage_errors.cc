@@ -53,9 +53,16 @@ std::vector<std::string> OptionNames(const CLI::App& app) {
 }
 
 // The first option of argv[first..] that `app` does not know, with its message.
+// The command's own options and, after its name, uuvplan's (`--accept-implausible`: the app
+// falls through to them).
 std::optional<std::string> UnknownOption(const CLI::App& app, const std::string& where, int first,
-                                         int argc, const char* const* argv) {
-  const std::vector<std::string> known = OptionNames(app);
+                                         int argc, const char* const* argv,
+                                         const CLI::App* parent = nullptr) {
+  std::vector<std::string> known = OptionNames(app);
+  if (parent) {
+    const std::vector<std::string> inherited = OptionNames(*parent);
+    known.insert(known.end(), inherited.begin(), inherited.end());
+  }
   for (int i = first; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--") break;  // the rest are positional arguments
@@ -111,7 +118,7 @@ std::optional<std::string> UnknownNameMessage(const CLI::App& app, int argc,
     return "uuvplan: unknown command '" + first + "'" + Suggestion(first, commands) +
            "\nRun 'uuvplan --help' for the list of commands.";
   }
-  return UnknownOption(*app.get_subcommand(first), " for '" + first + "'", 2, argc, argv);
+  return UnknownOption(*app.get_subcommand(first), " for '" + first + "'", 2, argc, argv, &app);
 }
 
 std::string ParseErrorMessage(const CLI::ParseError& e) {
