@@ -66,7 +66,9 @@ std::string InterestText(model::Dof dof, const planner::InterestParameter& q, do
   std::ostringstream s;
   s << q.name << " ";
   if (!std::isfinite(q.value)) return s.str() + "—";
-  s << model::Significant(q.value, 4) << u << " ± " << model::Significant(q.sigma, 3);
+  s << model::Significant(q.value, 4) << u;
+  if (std::isfinite(q.sigma)) s << " ± " << model::Significant(q.sigma, 3);
+  else s << " (no σ: not estimated)";
   if (q.estimated) s << " (" << Percent(q.percent) << (q.percent <= target ? "" : "*") << ")";
   if (q.held) s << " [HELD: no information]";
   if (!q.physical) s << " [NON-PHYSICAL]";
