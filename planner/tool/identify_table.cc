@@ -89,8 +89,8 @@ void PrintOneStep(const ident::DofIdentification& d, std::ostream& out) {
     const char* sep = " ";
     for (const auto& e : d.one_step->estimates) {
       const std::string unit = model::Unit(e.name, d.dof);
-      out << sep << e.name << " = " << Quantity(e.value, unit, 4) << " ± "
-          << Quantity(e.sigma, unit, 3);
+      out << sep << e.name << " = " << Cell(e.value, 4) << " ± " << Cell(e.sigma, 3)
+          << (unit == "1" ? "" : " " + unit);
       sep = ", ";
     }
     out << "\n";
@@ -109,22 +109,22 @@ void PrintRlsConvergence(const ident::DofIdentification& d, std::ostream& out) {
   const ident::RlsDofResult& r = *d.rls;
   const int steps = static_cast<int>(r.theta.rows());
   std::vector<int> columns;
-  std::vector<std::string> titles = {"update", "t (s)"};
+  std::vector<std::string> titles = {"DOF", "t (s)"};
   for (std::size_t j = 0; j < r.names.size(); ++j) {
     if (r.state[j] != ident::ParameterState::kEstimated) continue;
     columns.push_back(static_cast<int>(j));
     titles.push_back(r.names[j] + " (" + model::Unit(r.names[j], d.dof) + ")");
   }
   out << "  RLS convergence (seed 004 eq. 15, forgetting λ = " << Cell(r.lambda, 6) << ", memory ≈ "
-      << (r.lambda < 1 ? Cell(1.0 / (1.0 - r.lambda), 3) : std::string("all")) << " rows):\n";
+      << (r.lambda < 1 ? Cell(1.0 / (1.0 - r.lambda), 3) : std::string("all")) << " rows), θ ± σ "
+      << "after about 10%, 25%, 50%, 75% and all of the " << steps << " rows:\n";
   TextTable table(titles);
   int last = -1;
   for (const double fraction : {0.1, 0.25, 0.5, 0.75, 1.0}) {
     const int k = std::max(0, static_cast<int>(std::ceil(fraction * steps)) - 1);
     if (k == last) continue;
     last = k;
-    std::vector<std::string> row = {std::to_string(k + 1) + "/" + std::to_string(steps),
-                                    Cell(r.psi.t[k], 4)};
+    std::vector<std::string> row = {std::string(model::DofName(d.dof)), Cell(r.psi.t[k], 4)};
     for (int j : columns) row.push_back(Cell(r.theta(k, j), 4) + " ± " + Cell(r.sigma(k, j), 2));
     table.AddRow(row);
   }

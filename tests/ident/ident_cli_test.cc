@@ -235,10 +235,15 @@ void CheckTable4(const model::Truth& truth, const std::string& name) {
     EXPECT_EQ(d.at("estimator"), "rls");
     EXPECT_EQ(d.at("params").at("kq").at("state"), "dropped");
     const Coefficient alpha = OverMass(d, "k"), gamma = OverMass(d, "");
+    std::cout << name << " " << row.dof << ": alpha " << alpha.value << " ± " << alpha.sigma
+              << " (Table 4 " << row.alpha << "), gamma " << gamma.value << " ± " << gamma.sigma
+              << " (" << row.gamma << ")\n";
     EXPECT_NEAR(alpha.value, row.alpha, std::max(kHalfUnit, 3 * alpha.sigma)) << alpha.sigma;
     EXPECT_NEAR(gamma.value, row.gamma, std::max(kHalfUnit, 3 * gamma.sigma)) << gamma.sigma;
     if (row.delta != 0.0) {
       const Coefficient delta = OverMass(d, "bias");
+      std::cout << name << " " << row.dof << ": delta " << delta.value << " ± " << delta.sigma
+                << " (Table 4 " << row.delta << ")\n";
       EXPECT_NEAR(delta.value, row.delta, std::max(kHalfUnit, 3 * delta.sigma)) << delta.sigma;
     } else {
       EXPECT_EQ(d.at("params").at("bias").at("state"), "dropped");  // pitch δ = 0
