@@ -20,12 +20,24 @@ constexpr model::EnumNames<IdentifyStatus, 3> kIdentifyStatusNames{{{
     {IdentifyStatus::kFailed, "failed"},
 }}};
 
-constexpr model::EnumNames<FinalEstimator, 5> kFinalEstimatorNames{{{
+constexpr model::EnumNames<FinalEstimator, 7> kFinalEstimatorNames{{{
     {FinalEstimator::kOutputError, "output_error"},
     {FinalEstimator::kSteadyStateIntegral, "steady_state+integral"},
     {FinalEstimator::kOneStep, "one_step_ls"},
     {FinalEstimator::kClosedLoopIv, "closed_loop_iv"},
+    {FinalEstimator::kSteadyState, "steady_state"},
+    {FinalEstimator::kRls, "rls"},
     {FinalEstimator::kNone, "none"},
+}}};
+
+// The values of `identify --method`.
+constexpr model::EnumNames<Method, 6> kMethodNames{{{
+    {Method::kChain, "chain"},
+    {Method::kLeastSquares, "ls"},
+    {Method::kIntegral, "integral"},
+    {Method::kOneStep, "one-step"},
+    {Method::kRls, "rls"},
+    {Method::kOutputError, "output-error"},
 }}};
 
 // One DOF through the four stages; `prepare_s` is the time its trials took to prepare.
@@ -52,6 +64,10 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
   r.closed_loop_suspected = stages::SuspectClosedLoop(trials.fit, o.closed_loop);
   r.timing.push_back({"prepare", prepare_s + watch.Lap()});
 
+  if (o.method != Method::kChain) {
+    r.notes.push_back("method " + std::string(MethodName(o.method)) +
+                      " (identify --method): its own estimate, no other stage");
+  }
   const stages::LeastSquaresAnswer ls = stages::EstimateStage(c, o, &r);
   r.timing.push_back({"estimate", watch.Lap()});
   const stages::StageEstimate final_estimate = stages::RefineStage(c, ls, o, &r);
@@ -96,6 +112,21 @@ std::vector<Dof> DofsToIdentify(const std::vector<TrialData>& trials, const Iden
 bool IdentifyOptions::IsValid(std::string* error) const {
   return data.IsValid(error) && steady.IsValid(error) && inertia.IsValid(error) &&
          one_step.IsValid(error) && closed_loop_iv.IsValid(error) && output_error.IsValid(error) &&
+         rls.IsValid(error) &&
+         Require(refine || method == Method::kChain,
+                 "--no-refine (refine = false) applies to the default chain only; method " +
+                     std::string(MethodName(method)) + " runs its own estimator alone",
+                 error) &&
+         Require(steady_windows.empty() || UsesSteadyState(method),
+                 "--steady (steady_windows) marks steady-state segments, which method " +
+                     std::string(MethodName(method)) + " does not use (only chain, ls, integral)",
+                 error) &&
+         Require(closed_loop != ClosedLoop::kYes || method == Method::kChain,
+                 "method " + std::string(MethodName(method)) +
+                     " is biased on closed-loop data (--closed-loop yes): the command correlates "
+                     "with the measurement noise; use the default chain (closed-loop "
+                     "instrumental variables)",
+                 error) &&
          Require(validation.step_s > 0, "ValidationOptions::step_s must be > 0", error) &&
          Require(threads >= 0, "IdentifyOptions::threads must be >= 0 (0: one per core)", error);
 }
@@ -103,6 +134,16 @@ bool IdentifyOptions::IsValid(std::string* error) const {
 std::string_view IdentifyStatusName(IdentifyStatus s) { return kIdentifyStatusNames.Name(s); }
 
 std::string_view FinalEstimatorName(FinalEstimator e) { return kFinalEstimatorNames.Name(e); }
+
+std::string_view MethodName(Method m) { return kMethodNames.Name(m); }
+
+std::optional<Method> ParseMethod(std::string_view name) { return kMethodNames.Parse(name); }
+
+std::string MethodNames() { return kMethodNames.List(); }
+
+bool UsesSteadyState(Method m) {
+  return m == Method::kChain || m == Method::kLeastSquares || m == Method::kIntegral;
+}
 
 const ParameterEstimate* DofIdentification::Param(const std::string& name) const {
   for (const auto& p : params) {
@@ -122,6 +163,7 @@ IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& 
   std::string error;
   if (!o.IsValid(&error)) throw model::InputError("identify options", error);
   IdentifyResult result;
+  result.method = o.method;
   // Trials, then DOFs, in parallel: each job fills its own slot (diagnosis/parallel.h).
   std::vector<TrialData> trials(campaign.trials.size());
   std::vector<double> prepare_s(trials.size());  // per trial
@@ -137,6 +179,7 @@ IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& 
     result.message = "no trial has `use: fit`: nothing to identify";
     return result;
   }
+  for (Dof d : dofs) stages::CheckMethodFits(d, trials, o);
   result.dofs.resize(dofs.size());
   diagnosis::ParallelFor(dofs.size(), o.threads, [&](std::size_t k) {
     double share = 0.0;

@@ -4,14 +4,26 @@
 // the one-step integral least squares of every regressor-linear parameter (seeds 002/004)
 // answers when there is no steady state, and supplies m when the integral method fails.
 #include <algorithm>
+#include <cmath>
 
 #include "identify_stages.h"
+#include "model_selection.h"
 #include "number_text.h"
 #include "uuvplan/ident/regression.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/input_error.h"
 
 namespace uuvplan::ident::stages {
 namespace {
+
+// No least-squares answer yet: the a priori values, every parameter held.
+LeastSquaresAnswer PriorAnswer(const DofContext& c) {
+  const int np = c.model.num_parameters();
+  LeastSquaresAnswer ls;
+  ls.estimate = {c.prior, Eigen::MatrixXd::Zero(np, np),
+                 std::vector<ParameterState>(np, ParameterState::kFixed)};
+  return ls;
+}
 
 // The steady points of every fit trial (detected, or in the user's windows); returns the
 // number of constant-force legs long enough to settle, for the note when none did.
@@ -50,9 +62,7 @@ LeastSquaresAnswer SteadyAndInertia(const DofContext& c, const IdentifyOptions& 
                                     bool final_pass, DofIdentification* r) {
   const int np = c.model.num_parameters();
   const int im = c.mass_index;
-  LeastSquaresAnswer ls;
-  ls.estimate = {c.prior, Eigen::MatrixXd::Zero(np, np),
-                 std::vector<ParameterState>(np, ParameterState::kFixed)};
+  LeastSquaresAnswer ls = PriorAnswer(c);
   r->inertia.reset();
   if (r->steady_points.empty()) return ls;
   r->steady = SteadyStateFit(c.model, r->steady_points, c.prior, c.steady);
@@ -73,6 +83,7 @@ LeastSquaresAnswer SteadyAndInertia(const DofContext& c, const IdentifyOptions& 
   }
   e.theta = r->steady->theta;
   e.covariance = r->steady->covariance;
+  if (o.method == Method::kLeastSquares) return ls;  // m stays a priori
   r->inertia = IntegralInertiaFit(c.model, InertiaTrials(c.trials.fit), e.theta, &e.covariance,
                                   o.inertia);
   if (r->inertia->ok() && r->inertia->m > 0) {
@@ -103,35 +114,91 @@ void OneStep(const DofContext& c, const IdentifyOptions& o, LeastSquaresAnswer* 
   }
 }
 
-// The least-squares answer: steady state + integral method (m from the one-step fit when the
-// integral method failed), else the one-step fit.
-void ChooseAnswer(const DofContext& c, LeastSquaresAnswer* ls, DofIdentification* r) {
+// The least-squares answer of the chain: steady state + integral method (m from the one-step
+// fit when the integral method failed), else the one-step fit. A single method (--method)
+// answers with its own estimate or not at all.
+void ChooseAnswer(const DofContext& c, Method method, LeastSquaresAnswer* ls, DofIdentification* r) {
   const int im = c.mass_index;
   StageEstimate& e = ls->estimate;
   const bool one_step_ok = r->one_step && r->one_step->ok();
-  if (ls->steady_ok) {
-    if (e.state[im] == ParameterState::kEstimated) {
+  const bool m_estimated = e.state[im] == ParameterState::kEstimated;
+  if (ls->steady_ok && method == Method::kLeastSquares) {
+    r->estimator = FinalEstimator::kSteadyState;
+    r->notes.push_back("ls: m is not estimated by the steady-state least squares (held at its a "
+                       "priori " + Fmt(e.theta[im]) + " " + model::Unit(model::param::kMass, c.model.dof()) +
+                       "; the free runs use it)");
+  } else if (ls->steady_ok && (m_estimated || method == Method::kIntegral)) {
+    if (m_estimated) r->estimator = FinalEstimator::kSteadyStateIntegral;
+    else if (r->inertia) r->notes.push_back(r->inertia->message.empty() ? "integral method failed" : r->inertia->message);
+  } else if (ls->steady_ok) {
+    if (r->inertia) {
+      r->notes.push_back(r->inertia->message.empty() ? "integral method failed" : r->inertia->message);
+    }
+    if (one_step_ok && r->one_step->theta[im] > 0) {
+      e.theta[im] = r->one_step->theta[im];
+      e.covariance(im, im) = r->one_step->covariance(im, im);
+      e.state[im] = ParameterState::kEstimated;
       r->estimator = FinalEstimator::kSteadyStateIntegral;
-    } else {
-      if (r->inertia) {
-        r->notes.push_back(r->inertia->message.empty() ? "integral method failed" : r->inertia->message);
-      }
-      if (one_step_ok && r->one_step->theta[im] > 0) {
-        e.theta[im] = r->one_step->theta[im];
-        e.covariance(im, im) = r->one_step->covariance(im, im);
-        e.state[im] = ParameterState::kEstimated;
-        r->estimator = FinalEstimator::kSteadyStateIntegral;
-      }
     }
   } else if (one_step_ok) {
     e = {r->one_step->theta, r->one_step->covariance, r->one_step->state};
     r->estimator = FinalEstimator::kOneStep;
   }
-  if (r->estimator == FinalEstimator::kNone) {
+  if (r->estimator == FinalEstimator::kNone && method == Method::kChain) {
     r->warnings.push_back("least squares gave no answer (" +
                           (r->one_step ? r->one_step->message : std::string("no one-step rows")) +
                           "); the output-error fit starts from the a priori values");
+  } else if (r->estimator == FinalEstimator::kNone) {
+    r->warnings.push_back("method " + std::string(MethodName(method)) +
+                          " gave no estimate (its reason in the notes)");
   }
+}
+
+// Seed 004 eq. 15 on the one-step rows of every fit trial, in campaign time: the estimate
+// after the last row, with its covariance (rls.h). Model selection as the other estimators
+// (seed 000 §IV-D; seed 004 §5.2 set β = 0 for "no significant improvement"): while a
+// prunable parameter's percentile error exceeds 51.02%, the worst is dropped (held at 0) and
+// the recursion rerun.
+LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofIdentification* r) {
+  LeastSquaresAnswer ls = PriorAnswer(c);
+  std::vector<int> free = LinearParameters(c.model);
+  Eigen::VectorXd given = c.prior;
+  std::vector<ParameterEstimate> dropped;
+  while (true) {
+    r->rls = RecursiveOneStep(c.model, c.trials.fit, given, free, o.one_step, o.rls);
+    if (!r->rls->ok()) {
+      r->warnings.push_back(r->rls->message);
+      return ls;
+    }
+    const RlsDofResult& f = *r->rls;
+    std::vector<PruneCandidate> candidates;
+    for (int j : f.free) candidates.push_back({f.names[j], f.final_theta[j], std::sqrt(f.covariance(j, j))});
+    double pe = 0.0;
+    const int worst = o.prune_insignificant ? WorstInsignificant(candidates, c.steady.prunable, &pe) : -1;
+    if (worst < 0) break;
+    const int j = f.free[worst];
+    ParameterEstimate e{f.names[j], 0.0, std::nan(""), ParameterState::kDropped, false,
+                        candidates[worst].value, candidates[worst].sigma};
+    dropped.push_back(e);
+    r->notes.push_back("rls: " + e.name + " = " + Fmt(e.value_before_drop) + " ± " +
+                       Fmt(e.sigma_before_drop) + " has a percentile error of " + Fmt(pe, 3) +
+                       "% > 51.02%: insignificant at 95%, dropped and the recursion rerun "
+                       "(seed 000 §IV-D)");
+    given[j] = 0.0;
+    free.erase(std::find(free.begin(), free.end(), j));
+  }
+  RlsDofResult& f = *r->rls;
+  f.estimates = MakeEstimates(f.names, f.final_theta, f.covariance, f.state);
+  for (const ParameterEstimate& e : dropped) {
+    const int j = c.model.ParameterIndex(e.name);
+    f.state[j] = ParameterState::kDropped;
+    f.estimates[j] = e;
+  }
+  for (const auto& n : f.not_excited) ls.not_excited.insert(n);
+  ls.estimate = {f.final_theta, f.covariance, f.state};
+  r->estimator = FinalEstimator::kRls;
+  r->notes.push_back(f.message);
+  return ls;
 }
 
 // Under feedback (closed_loop_iv.h): the instrumental-variable estimate of m and every
@@ -150,23 +217,48 @@ void ClosedLoop(const DofContext& c, const IdentifyOptions& o, const LeastSquare
 
 LeastSquaresAnswer EstimateStage(const DofContext& c, const IdentifyOptions& o,
                                  DofIdentification* r) {
-  const int long_pieces = CollectSteadyPoints(c, o, r);
-  LeastSquaresAnswer ls = SteadyAndInertia(c, o, false, r);
-  if (ls.steady_ok && ls.estimate.state[c.mass_index] == ParameterState::kEstimated) {
-    // Second pass: settle the steady speeds with τ = m/k_L of the first pass.
-    RefineSteadyPoints(c.model, ls.estimate.theta, c.trials.fit, &r->steady_points);
+  if (o.method == Method::kRls) return RlsAnswer(c, o, r);
+  if (o.method == Method::kOutputError) return PriorAnswer(c);
+  LeastSquaresAnswer ls = PriorAnswer(c);
+  if (UsesSteadyState(o.method)) {
+    const int long_pieces = CollectSteadyPoints(c, o, r);
+    ls = SteadyAndInertia(c, o, false, r);
+    if (ls.steady_ok && ls.estimate.state[c.mass_index] == ParameterState::kEstimated) {
+      // Second pass: settle the steady speeds with τ = m/k_L of the first pass.
+      RefineSteadyPoints(c.model, ls.estimate.theta, c.trials.fit, &r->steady_points);
+    }
+    ls = SteadyAndInertia(c, o, true, r);
+    if (r->steady_points.empty() && long_pieces > 0) {
+      r->notes.push_back("steady state: no settled segment in " + std::to_string(long_pieces) +
+                         " constant-force leg(s) of at least " +
+                         Fmt(c.steady.detection.min_duration_s) +
+                         " s (the speed did not settle within the noise; make the legs longer)");
+    }
   }
-  ls = SteadyAndInertia(c, o, true, r);
-  if (r->steady_points.empty() && long_pieces > 0) {
-    r->notes.push_back("steady state: no settled segment in " + std::to_string(long_pieces) +
-                       " constant-force leg(s) of at least " +
-                       Fmt(c.steady.detection.min_duration_s) +
-                       " s (the speed did not settle within the noise; make the legs longer)");
-  }
-  OneStep(c, o, &ls, r);
-  ChooseAnswer(c, &ls, r);
-  ClosedLoop(c, o, ls, r);
+  if (o.method == Method::kChain || o.method == Method::kOneStep) OneStep(c, o, &ls, r);
+  ChooseAnswer(c, o.method, &ls, r);
+  if (o.method == Method::kChain) ClosedLoop(c, o, ls, r);
   return ls;
+}
+
+void CheckMethodFits(model::Dof dof, const std::vector<TrialData>& trials, const IdentifyOptions& o) {
+  if (o.method != Method::kLeastSquares && o.method != Method::kIntegral) return;
+  std::string files;
+  for (const TrialData& d : trials) {
+    if (d.dof != dof || d.use != model::TrialUse::kFit) continue;
+    if (o.steady_windows.count(d.index)) return;
+    for (const ForcePiece& p : ConstantForcePieces(d, o.data.force_tolerance)) {
+      if (p.t1 - p.t0 >= o.steady.detection.min_duration_s) return;
+    }
+    files += (files.empty() ? "" : ", ") + d.name;
+  }
+  if (files.empty()) return;  // no fit trial: the DOF's own failure says so
+  throw model::InputError(
+      "--method " + std::string(MethodName(o.method)),
+      "the steady-state least squares (seed 000 eqs. 7–12) needs constant-force legs of at "
+      "least " + Fmt(o.steady.detection.min_duration_s) + " s, and the " +
+          std::string(model::DofName(dof)) + " fit trials (" + files +
+          ") have none; use --method one-step, rls or output-error, or mark windows with --steady");
 }
 
 }  // namespace uuvplan::ident::stages

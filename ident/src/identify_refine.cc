@@ -61,9 +61,9 @@ bool Suspicious(const DofContext& c, const OutputErrorResult& f) {
 // A least-squares start far from the answer can lead Levenberg–Marquardt to a poor local
 // minimum or nowhere: restart from the a priori values and keep the better fit.
 OutputErrorResult FitWithRestart(const DofContext& c, const LeastSquaresAnswer& ls,
-                                 const RefineStart& s, DofIdentification* r) {
+                                 const RefineStart& s, bool from_prior, DofIdentification* r) {
   OutputErrorResult oe = OutputErrorFit(c.model, c.trials.fit, s.theta, s.state, c.output_error);
-  if (!Suspicious(c, oe)) return oe;
+  if (from_prior || !Suspicious(c, oe)) return oe;
   Eigen::VectorXd alt = c.prior;
   for (int j = 0; j < c.model.num_parameters(); ++j) {
     if (ls.estimate.state[j] == ParameterState::kDropped) alt[j] = 0.0;
@@ -161,9 +161,12 @@ StageEstimate RefineStage(const DofContext& c, const LeastSquaresAnswer& ls,
                           const IdentifyOptions& o, DofIdentification* r) {
   StageEstimate closed_loop;
   if (AdoptClosedLoop(r, &closed_loop)) return closed_loop;
-  if (!o.refine) return ls.estimate;
+  // --method output-error starts from the a priori values (EstimateStage answered nothing);
+  // every other single method is its own answer.
+  const bool from_prior = o.method == Method::kOutputError;
+  if (!o.refine || !(o.method == Method::kChain || from_prior)) return ls.estimate;
   RefineStart s = StartFrom(c, ls);
-  OutputErrorResult oe = FitWithRestart(c, ls, s, r);
+  OutputErrorResult oe = FitWithRestart(c, ls, s, from_prior, r);
   if (oe.status == OutputErrorStatus::kIllConditioned && !oe.not_identifiable.empty()) {
     RefitHoldingUnidentifiable(c, &s, &oe, r);
   }

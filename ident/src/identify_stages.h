@@ -63,6 +63,10 @@ model::ModelStructure ChooseStructure(const model::Vehicle& vehicle, model::Dof 
 bool SuspectClosedLoop(const std::vector<const TrialData*>& fit, ClosedLoop setting);
 
 // estimate
+/// Throws model::InputError when the method cannot run on the DOF's fit trials (ls and integral
+/// without a constant-force leg long enough for a steady state, nor a --steady window).
+void CheckMethodFits(model::Dof dof, const std::vector<TrialData>& trials, const IdentifyOptions& o);
+/// The least-squares answer of the chain, or the single method's estimate (IdentifyOptions::method).
 LeastSquaresAnswer EstimateStage(const DofContext& c, const IdentifyOptions& o,
                                  DofIdentification* r);
 

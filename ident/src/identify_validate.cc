@@ -145,6 +145,7 @@ void ReportEstimates(const DofContext& c, const LeastSquaresAnswer& ls,
   r->params = MakeEstimates(r->parameter_names, e.theta, e.covariance, e.state);
   if (r->steady) KeepValuesBeforeDrop(c, r->steady->estimates, e.state, r);
   if (r->output_error) KeepValuesBeforeDrop(c, r->output_error->estimates, e.state, r);
+  if (r->rls) KeepValuesBeforeDrop(c, r->rls->estimates, e.state, r);
   CheckAdmissible(r);
   WarnClosedLoop(r);
   FailWithoutEstimate(r);

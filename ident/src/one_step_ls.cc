@@ -136,21 +136,18 @@ void PsiToPhysical(const model::DofModel& model, const Eigen::VectorXd& theta_gi
   *cov = J * psi_cov * J.transpose();
 }
 
-namespace {
-
-// The rows of one DOF without the parameters no row excites: those keep their given value and
-// are reported (e.g. η of a direction never used).
-OneStepRows DofRows(const OneStepDofInput& in, const OneStepOptions& o, OneStepDofResult* res) {
-  const model::DofModel& model = *in.model;
-  std::vector<int> free = in.free;
+OneStepRows ExcitedOneStepRows(const model::DofModel& model,
+                               const std::vector<const TrialData*>& trials,
+                               const Eigen::VectorXd& theta, std::vector<int> free,
+                               const OneStepOptions& o, std::vector<std::string>* not_excited) {
   if (free.empty()) free = LinearParameters(model);
-  OneStepRows rows = BuildOneStepRows(model, in.trials, in.theta, free, o);
+  OneStepRows rows = BuildOneStepRows(model, trials, theta, free, o);
   std::vector<int> keep;
   for (std::size_t c = 0; c < free.size(); ++c) {
     if (rows.F.rows() > 0 && rows.F.col(1 + c).cwiseAbs().maxCoeff() > 0) {
       keep.push_back(static_cast<int>(c));
     } else {
-      res->not_excited.push_back(model.parameter_names()[free[c]]);
+      not_excited->push_back(model.parameter_names()[free[c]]);
     }
   }
   if (keep.size() != free.size()) {
@@ -165,6 +162,13 @@ OneStepRows DofRows(const OneStepDofInput& in, const OneStepOptions& o, OneStepD
     rows.free = kept_free;
   }
   return rows;
+}
+
+namespace {
+
+// The rows of one DOF without the parameters no row excites.
+OneStepRows DofRows(const OneStepDofInput& in, const OneStepOptions& o, OneStepDofResult* res) {
+  return ExcitedOneStepRows(*in.model, in.trials, in.theta, in.free, o, &res->not_excited);
 }
 
 // The stacked block-diagonal system of all DOFs (seed 004 eqs. 12–14).

@@ -1,11 +1,68 @@
+// Recursive least squares with forgetting (seed 004 eq. 15) and its covariance (rls.h).
 #include "uuvplan/ident/rls.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "number_text.h"
 #include "options_check.h"
 #include "uuvplan/ident/regression.h"
 
 namespace uuvplan::ident {
+namespace {
+
+// P_0 = p0·diag(θ0²) (1 where θ0 = 0) with a given θ0; otherwise p0/‖F_j‖²·rows per column,
+// so that the prior is equally vague whatever the columns' units.
+Eigen::MatrixXd InitialP(const Eigen::MatrixXd& F, const RlsOptions& o, const Eigen::VectorXd& theta) {
+  const int p = static_cast<int>(F.cols());
+  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(p, p);
+  for (int j = 0; j < p; ++j) {
+    if (o.theta0.size() == p) {
+      const double scale = theta[j] != 0 ? std::abs(theta[j]) : 1.0;
+      P(j, j) = o.p0 * scale * scale;
+    } else {
+      const double n2 = F.col(j).squaredNorm() / std::max(1, static_cast<int>(F.rows()));
+      P(j, j) = n2 > 0 ? o.p0 / n2 : o.p0;
+    }
+  }
+  return P;
+}
+
+// The forgetting-weighted sums of the covariance (rls.h): A_k, B_k and the residual
+// autocovariances γ0 = Σ λ^{k−i} e_i² / (Σ λ^{k−i} − p), γ1 = Σ λ^{k−i} e_i e_{i−1} / Σ λ^{k−i}
+// over consecutive rows of a run (a-posteriori residuals).
+struct CovarianceSums {
+  Eigen::MatrixXd A, B;
+  Eigen::MatrixXd previous_row;  // F_{k−1}, empty at a run's start
+  double previous_e = 0.0;
+  double se = 0.0, sw = 0.0, s1 = 0.0, w1 = 0.0;
+
+  void Add(const Eigen::MatrixXd& Fk, const Eigen::VectorXd& e, bool continues, double lambda) {
+    A = lambda * lambda * A + Fk.transpose() * Fk;
+    B *= lambda * lambda;
+    se = lambda * se + e.squaredNorm();
+    sw = lambda * sw + static_cast<double>(e.size());
+    s1 *= lambda;
+    w1 *= lambda;
+    if (continues && previous_row.size() > 0) {
+      B += lambda * (Fk.transpose() * previous_row + previous_row.transpose() * Fk);
+      s1 += e[0] * previous_e;
+      w1 += 1.0;
+    }
+    previous_row = continues ? Fk : Eigen::MatrixXd();
+    previous_e = e[0];
+  }
+  double Gamma0(int p) const { return sw > p ? se / std::max(1.0, sw - p) : 1.0; }
+  double Gamma1(int p) const {
+    const double g1 = w1 > 0 ? s1 / w1 : 0.0;
+    return std::clamp(g1, -0.5 * Gamma0(p), 0.5 * Gamma0(p));
+  }
+  Eigen::MatrixXd Covariance(const Eigen::MatrixXd& P, int p) const {
+    return P * (Gamma0(p) * A + Gamma1(p) * B) * P;
+  }
+};
+
+}  // namespace
 
 bool RlsOptions::IsValid(std::string* error) const {
   return Require(lambda > 0.9 && lambda <= 1.0,
@@ -17,61 +74,49 @@ bool RlsOptions::IsValid(std::string* error) const {
 
 RlsTrajectory RecursiveLeastSquares(const Eigen::MatrixXd& F, const Eigen::VectorXd& Y,
                                     const std::vector<double>& t, const RlsOptions& o,
-                                    int rows_per_update) {
+                                    int rows_per_update, const std::vector<int>* runs) {
   const int p = static_cast<int>(F.cols());
   const int q = std::max(1, rows_per_update);
   const int steps = static_cast<int>(F.rows()) / q;
   RlsTrajectory out;
   Eigen::VectorXd theta = o.theta0.size() == p ? o.theta0 : Eigen::VectorXd::Zero(p);
-  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(p, p);
-  for (int j = 0; j < p; ++j) {
-    const double scale = theta[j] != 0 ? std::abs(theta[j]) : 1.0;
-    P(j, j) = o.p0 * scale * scale;
-  }
-  // Column scales of F keep the prior sensible when θ0 is zero: P0 ∝ 1/‖F_j‖² per row.
-  if (o.theta0.size() != p) {
-    for (int j = 0; j < p; ++j) {
-      const double n2 = F.col(j).squaredNorm() / std::max(1, static_cast<int>(F.rows()));
-      P(j, j) = n2 > 0 ? o.p0 / n2 : o.p0;
-    }
-  }
+  Eigen::MatrixXd P = InitialP(F, o, theta);
   out.theta.resize(steps, p);
   out.sigma.resize(steps, p);
   out.t.resize(steps);
-  // Running s² with the same forgetting: s² = Σ λ^{k−i} e_i² / Σ λ^{k−i}.
-  double se = 0.0, sw = 0.0;
+  CovarianceSums sums{Eigen::MatrixXd::Zero(p, p), Eigen::MatrixXd::Zero(p, p), {}};
   const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(p, p);
   for (int k = 0; k < steps; ++k) {
     const Eigen::MatrixXd Fk = F.middleRows(k * q, q);
     const Eigen::VectorXd Yk = Y.segment(k * q, q);
-    const Eigen::VectorXd e = Yk - Fk * theta;  // a-priori error
     const Eigen::MatrixXd S = o.lambda * Eigen::MatrixXd::Identity(q, q) + Fk * P * Fk.transpose();
     const Eigen::MatrixXd Gamma = P * Fk.transpose() * S.inverse();
-    theta += Gamma * e;
+    theta += Gamma * (Yk - Fk * theta);  // a-priori error
     P = (I - Gamma * Fk) * P / o.lambda;
     P = 0.5 * (P + P.transpose());
-    const Eigen::VectorXd post = Yk - Fk * theta;
-    se = o.lambda * se + post.squaredNorm();
-    sw = o.lambda * sw + q;
-    const double s2 = sw > p ? se / std::max(1.0, sw - p) : 1.0;
+    const bool continues = q == 1 && runs && k > 0 && (*runs)[k] == (*runs)[k - 1];
+    sums.Add(Fk, Yk - Fk * theta, continues, o.lambda);
+    // Fewer than 2p weighted rows say little of the residual variance: no σ yet.
+    const Eigen::MatrixXd cov = sums.sw > 2.0 * p
+                                    ? sums.Covariance(P, p)
+                                    : Eigen::MatrixXd::Constant(p, p, std::nan(""));
     out.theta.row(k) = theta.transpose();
-    out.sigma.row(k) = (P.diagonal().cwiseMax(0.0) * s2).cwiseSqrt().transpose();
+    out.sigma.row(k) = cov.diagonal().cwiseMax(0.0).cwiseSqrt().transpose();
     out.t[k] = k * q < static_cast<int>(t.size()) ? t[k * q] : 0.0;
+    if (o.keep_covariance) out.covariance.push_back(cov);
+    if (k + 1 == steps) out.final_covariance = cov;
   }
   out.P = P;
+  out.gamma0 = sums.Gamma0(p);
+  out.gamma1 = sums.Gamma1(p);
   return out;
 }
 
-RlsDofResult RecursiveOneStep(const model::DofModel& model,
-                              const std::vector<const TrialData*>& trials,
-                              const Eigen::VectorXd& theta, const std::vector<int>& free_in,
-                              const OneStepOptions& ro, const RlsOptions& o) {
-  RlsDofResult r;
-  const std::vector<int> free = free_in.empty() ? LinearParameters(model) : free_in;
-  const OneStepRows rows = BuildOneStepRows(model, trials, theta, free, ro);
-  r.coefficient_names.push_back("gamma");
-  for (int j : free) r.coefficient_names.push_back(model.parameter_names()[j] + "/m");
-  // Times on the campaign clock so that several trials form one history.
+namespace {
+
+// The rows' times on the campaign clock (trial start + knot time), so that several trials
+// form one history.
+std::vector<double> CampaignTimes(const OneStepRows& rows, const std::vector<const TrialData*>& trials) {
   std::vector<double> t(rows.t.size());
   for (std::size_t k = 0; k < rows.t.size(); ++k) {
     double start = 0.0;
@@ -80,17 +125,69 @@ RlsDofResult RecursiveOneStep(const model::DofModel& model,
     }
     t[k] = start + rows.t[k];
   }
-  r.psi = RecursiveLeastSquares(rows.F, rows.Y, t, o);
+  return t;
+}
+
+// Rows scaled by √ of their relative noise weight (Λ_k, seed 004 eq. 16; mean weight 1).
+void WeightRows(OneStepRows* rows) {
+  if (rows->weight.empty()) return;
+  double mean = 0.0;
+  for (double w : rows->weight) mean += w;
+  mean /= static_cast<double>(rows->weight.size());
+  if (!(mean > 0)) return;
+  for (int k = 0; k < rows->Y.size(); ++k) {
+    const double s = std::sqrt(rows->weight[k] / mean);
+    rows->F.row(k) *= s;
+    rows->Y[k] *= s;
+  }
+}
+
+}  // namespace
+
+RlsDofResult RecursiveOneStep(const model::DofModel& model,
+                              const std::vector<const TrialData*>& trials,
+                              const Eigen::VectorXd& theta, const std::vector<int>& free,
+                              const OneStepOptions& ro, const RlsOptions& o) {
+  RlsDofResult r;
+  r.lambda = o.lambda;
   r.names = model.parameter_names();
+  OneStepRows rows = ExcitedOneStepRows(model, trials, theta, free, ro, &r.not_excited);
+  r.free = rows.free;
+  r.coefficient_names.push_back("gamma");
+  for (int j : r.free) r.coefficient_names.push_back(r.names[j] + "/m");
+  const int p = static_cast<int>(r.free.size()) + 1;
+  if (rows.Y.size() <= 2 * p) {
+    r.status = rows.Y.size() == 0 ? FitStatus::kNoData : FitStatus::kTooFewData;
+    r.message = "RLS: " + std::to_string(rows.Y.size()) + " one-step rows for " +
+                std::to_string(p) + " unknowns (more than twice as many needed for the residual "
+                "variance; longer trials)";
+    return r;
+  }
+  WeightRows(&rows);
+  RlsOptions with_covariance = o;
+  with_covariance.keep_covariance = true;
+  r.psi = RecursiveLeastSquares(rows.F, rows.Y, CampaignTimes(rows, trials), with_covariance, 1, &rows.run);
   const int steps = static_cast<int>(r.psi.theta.rows());
   r.theta.resize(steps, model.num_parameters());
+  r.sigma.resize(steps, model.num_parameters());
   for (int k = 0; k < steps; ++k) {
-    Eigen::VectorXd phys = theta;
-    const double g = r.psi.theta(k, 0);
-    phys[0] = 1.0 / g;
-    for (std::size_t c = 0; c < free.size(); ++c) phys[free[c]] = r.psi.theta(k, 1 + c) / g;
+    Eigen::VectorXd phys;
+    Eigen::MatrixXd cov;
+    PsiToPhysical(model, theta, r.free, r.psi.theta.row(k).transpose(), r.psi.covariance[k], &phys, &cov);
     r.theta.row(k) = phys.transpose();
+    r.sigma.row(k) = cov.diagonal().cwiseMax(0.0).cwiseSqrt().transpose();
+    if (k + 1 == steps) {
+      r.final_theta = phys;
+      r.covariance = cov;
+    }
   }
+  r.psi.covariance.clear();
+  r.state.assign(model.num_parameters(), ParameterState::kFixed);
+  r.state[0] = ParameterState::kEstimated;
+  for (int j : r.free) r.state[j] = ParameterState::kEstimated;
+  r.status = FitStatus::kOk;
+  r.message = "RLS (seed 004 eq. 15, λ = " + Fmt(o.lambda, 6) + ") on " +
+              std::to_string(steps) + " one-step rows";
   return r;
 }
 

@@ -1,6 +1,7 @@
 // `uuvplan identify CAMPAIGN [--json F] [--dof D]... [--steady TRIAL:T0:T1]... [--no-refine]
-// [--no-prune] [--closed-loop yes|no|auto] [--accept-units]`: parameter estimates with standard
-// deviations and the fit of the identified model (ident/identify.h, docs/identification.md).
+// [--no-prune] [--closed-loop yes|no|auto] [--method M [--forgetting λ]] [--accept-units]`:
+// parameter estimates with standard deviations and the fit of the identified model
+// (ident/identify.h, docs/identification.md); --method runs one of the seeds' estimators alone.
 // Exit status 0 when every DOF was identified, 1 when some DOF failed (its FAILED line says
 // why), 2 on bad input — units or signs that look wrong among it (ident/input_sanity.h) unless
 // --accept-units. On a terminal, the summary's Brief() line follows on stderr.
@@ -14,6 +15,7 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::tool {
 namespace {
@@ -33,6 +35,8 @@ struct IdentifyCommandOptions {
   std::vector<std::string> dofs;
   std::vector<std::string> steady;
   std::string closed_loop{kClosedLoopNames.Name(ident::IdentifyOptions{}.closed_loop)};
+  std::string method{ident::MethodName(ident::IdentifyOptions{}.method)};
+  bool forgetting_given = false;  ///< --forgetting (bound to identify.rls.lambda)
   bool accept_units = false;
   ident::IdentifyOptions identify;  ///< --no-refine, --no-prune bound here
 };
@@ -83,11 +87,18 @@ int RunIdentify(const IdentifyCommandOptions& co) {
     throw InputError("--closed-loop " + co.closed_loop, "expected yes, no or auto");
   }
   o.closed_loop = *closed_loop;
+  const auto method = ident::ParseMethod(co.method);
+  if (!method) throw InputError("--method " + co.method, "expected one of " + ident::MethodNames());
+  o.method = *method;
+  if (co.forgetting_given && o.method != ident::Method::kRls) {
+    throw InputError("--forgetting", "the forgetting factor belongs to --method rls (seed 004 "
+                                     "eq. 15), not to method " + co.method);
+  }
   const ident::IdentifyResult result = ident::Identify(campaign, o);
 
   std::ostream& out = ReportStream(co.json);
   out << "Identification of " << co.campaign << " (vehicle '" << campaign.vehicle.name << "', "
-      << campaign.trials.size() << " trials)\n\n";
+      << campaign.trials.size() << " trials; method " << ident::MethodName(result.method) << ")\n\n";
   PrintIdentifyTable(result, out);
   if (!co.json.empty()) WriteJson(co.json, io::IdentifyJson(result));
   PrintBriefOnTerminal(result.Summary().Brief());
@@ -112,6 +123,20 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
   sub->add_option("--closed-loop", o->closed_loop,
                   "whether the logs were recorded in closed loop: auto (detect), yes, no")
       ->capture_default_str();
+  sub->add_option("--method", o->method,
+                  "estimator: chain (the best chain: steady state + integral or one-step LS, "
+                  "then output error), ls (steady-state LS, seed 000 eqs. 7-12; m a priori), "
+                  "integral (+ m by seed 000 eqs. 16-19), one-step (seeds 002/004), rls "
+                  "(seed 004 eq. 15), output-error (from the a priori values)")
+      ->capture_default_str();
+  sub->add_option_function<double>(
+         "--forgetting",
+         [o](double lambda) {
+           o->identify.rls.lambda = lambda;
+           o->forgetting_given = true;
+         },
+         "RLS forgetting factor λ in (0.9, 1] (--method rls; default " +
+             model::Significant(ident::RlsOptions{}.lambda, 3) + ", memory ≈ 1/(1 − λ) rows)");
   AddAcceptUnitsFlag(sub, &o->accept_units);
   AddThreadsOption(sub, {&o->identify.threads}, "preparing the trials and fitting the DOFs");
 }

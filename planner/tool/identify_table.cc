@@ -80,6 +80,57 @@ void PrintFit(const ident::DofIdentification& d, std::ostream& out) {
   table.Print(out);
 }
 
+// The seeds' one-step integral LS beside the reported estimate, when that is another's.
+void PrintOneStep(const ident::DofIdentification& d, std::ostream& out) {
+  if (!d.one_step || !d.one_step->ok()) return;
+  if (d.estimator != ident::FinalEstimator::kOneStep) {
+    out << "  one-step LS (seed 002 eqs. 20-36, seed 004 eqs. 8-14"
+        << (d.one_step->instrumental ? "; instrumental variables" : "") << "):";
+    const char* sep = " ";
+    for (const auto& e : d.one_step->estimates) {
+      const std::string unit = model::Unit(e.name, d.dof);
+      out << sep << e.name << " = " << Cell(e.value, 4) << " ± " << Cell(e.sigma, 3)
+          << (unit == "1" ? "" : " " + unit);
+      sep = ", ";
+    }
+    out << "\n";
+  }
+  if (d.one_step->standard) {
+    const auto& c = d.one_step->seed;
+    out << "  one-step LS coefficients (seed 002 eq. 4): alpha " << Cell(c.alpha) << ", beta "
+        << Cell(c.beta) << ", gamma " << Cell(c.gamma) << ", delta " << Cell(c.delta) << "\n";
+  }
+}
+
+// Seed 004 Fig. 11 as a table: the estimated parameters ± σ after the updates at about 10%,
+// 25%, 50%, 75% and 100% of the rows (the whole trace is in the JSON).
+void PrintRlsConvergence(const ident::DofIdentification& d, std::ostream& out) {
+  if (!d.rls || !d.rls->ok()) return;
+  const ident::RlsDofResult& r = *d.rls;
+  const int steps = static_cast<int>(r.theta.rows());
+  std::vector<int> columns;
+  std::vector<std::string> titles = {"DOF", "t (s)"};
+  for (std::size_t j = 0; j < r.names.size(); ++j) {
+    if (r.state[j] != ident::ParameterState::kEstimated) continue;
+    columns.push_back(static_cast<int>(j));
+    titles.push_back(r.names[j] + " (" + model::Unit(r.names[j], d.dof) + ")");
+  }
+  out << "  RLS convergence (seed 004 eq. 15, forgetting λ = " << Cell(r.lambda, 6) << ", memory ≈ "
+      << (r.lambda < 1 ? Cell(1.0 / (1.0 - r.lambda), 3) : std::string("all")) << " rows), θ ± σ "
+      << "after about 10%, 25%, 50%, 75% and all of the " << steps << " rows:\n";
+  TextTable table(titles);
+  int last = -1;
+  for (const double fraction : {0.1, 0.25, 0.5, 0.75, 1.0}) {
+    const int k = std::max(0, static_cast<int>(std::ceil(fraction * steps)) - 1);
+    if (k == last) continue;
+    last = k;
+    std::vector<std::string> row = {std::string(model::DofName(d.dof)), Cell(r.psi.t[k], 4)};
+    for (int j : columns) row.push_back(Cell(r.theta(k, j), 4) + " ± " + Cell(r.sigma(k, j), 2));
+    table.AddRow(row);
+  }
+  table.Print(out, "    ");
+}
+
 void PrintDof(const ident::DofIdentification& d, std::ostream& out) {
   const std::string dof(model::DofName(d.dof));
   out << dof << " (" << ident::IdentifyStatusName(d.status) << ", estimator "
@@ -88,11 +139,8 @@ void PrintDof(const ident::DofIdentification& d, std::ostream& out) {
   if (d.status == ident::IdentifyStatus::kFailed) out << "  FAILED: " << d.message << "\n";
   PrintParameters(d, out);
   PrintFit(d, out);
-  if (d.one_step && d.one_step->ok() && d.one_step->standard) {
-    const auto& c = d.one_step->seed;
-    out << "  one-step LS coefficients (seed 002 eq. 4): alpha " << Cell(c.alpha) << ", beta "
-        << Cell(c.beta) << ", gamma " << Cell(c.gamma) << ", delta " << Cell(c.delta) << "\n";
-  }
+  PrintOneStep(d, out);
+  PrintRlsConvergence(d, out);
   for (const auto& w : d.warnings) out << "  WARNING: " << w << "\n";
   for (const auto& n : d.notes) out << "  note: " << n << "\n";
   out << "\n";

@@ -5,10 +5,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -175,6 +177,124 @@ TEST(IdentifyCliTest, RealTartanFailuresAndOutliersAreSaidSo) {
   const RunResult text = RunUuvplan("identify " + RealDataPath("tartan-pool-2022/campaign.yaml"));
   EXPECT_THAT(text.out, ::testing::HasSubstr("  FAILED: "));
   EXPECT_THAT(text.out, ::testing::HasSubstr("excluded as outliers, more than 5%"));
+}
+
+// Seed 004 Table 4 in its own convention (dx/dt = −α·x + β·x|x| + γ·τ + δ, cases/uris/truth.yaml):
+// α = k/m, γ = 1/m, δ = bias/m, with σ by the delta method from identify's JSON covariance.
+struct Table4Row {
+  const char* dof;
+  double alpha, gamma, delta;
+};
+constexpr Table4Row kUrisTable4[] = {{"surge", 0.3302, 0.0169, -0.0070},
+                                     {"pitch", 0.6514, 0.8052, 0.0},
+                                     {"yaw", 1.1006, 0.5236, -0.0435}};
+
+struct Coefficient {
+  double value, sigma;
+};
+
+// value/m (numerator "" : 1/m) and its σ from the covariance of (m, numerator).
+Coefficient OverMass(const json& d, const std::string& numerator) {
+  const auto names = d.at("parameter_names").get<std::vector<std::string>>();
+  const auto index = [&](const std::string& n) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), n) - names.begin());
+  };
+  const json& cov = d.at("covariance");
+  const std::size_t im = index("m");
+  const double m = d.at("params").at("m").at("value").get<double>();
+  const double vmm = cov[im][im].get<double>();
+  if (numerator.empty()) return {1.0 / m, std::sqrt(vmm) / (m * m)};
+  const std::size_t in = index(numerator);
+  const double x = d.at("params").at(numerator).at("value").get<double>();
+  const double vxx = cov[in][in].is_number() ? cov[in][in].get<double>() : 0.0;
+  const double vmx = cov[im][in].is_number() ? cov[im][in].get<double>() : 0.0;
+  const double gm = -x / (m * m), gx = 1.0 / m;  // ∂(x/m)/∂m, ∂(x/m)/∂x
+  return {x / m, std::sqrt(std::max(0.0, gm * gm * vmm + 2 * gm * gx * vmx + gx * gx * vxx))};
+}
+
+// Runs `identify --method rls` on a URIS campaign simulated with `truth` and checks each
+// Table 4 coefficient against the published value within max(half a unit of its last printed
+// digit, 3σ); β must be dropped as insignificant (Table 4: β = 0, "no significant improvement").
+void CheckTable4(const model::Truth& truth, const std::string& name) {
+  const fs::path dir = TempDir(name);
+  model::VirtualCampaignOptions vo;
+  vo.seed = 4;
+  io::SimulateCampaign(truth, testing::UrisDesigns(), dir.string(), vo);
+  const RunResult r = RunUuvplan("identify " + (dir / "campaign.yaml").string() +
+                                 " --method rls --json " + (dir / "rls.json").string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("method rls"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("RLS convergence (seed 004 eq. 15, forgetting λ = 0.99"));
+  std::ifstream f(dir / "rls.json");
+  const json j = json::parse(f);
+  EXPECT_EQ(j.at("method"), "rls");
+  constexpr double kHalfUnit = 5e-5;  // Table 4 prints four decimals
+  for (const Table4Row& row : kUrisTable4) {
+    SCOPED_TRACE(row.dof);
+    const json& d = j.at("dofs").at(row.dof);
+    EXPECT_EQ(d.at("estimator"), "rls");
+    EXPECT_EQ(d.at("params").at("kq").at("state"), "dropped");
+    const Coefficient alpha = OverMass(d, "k"), gamma = OverMass(d, "");
+    std::cout << name << " " << row.dof << ": alpha " << alpha.value << " ± " << alpha.sigma
+              << " (Table 4 " << row.alpha << "), gamma " << gamma.value << " ± " << gamma.sigma
+              << " (" << row.gamma << ")\n";
+    EXPECT_NEAR(alpha.value, row.alpha, std::max(kHalfUnit, 3 * alpha.sigma)) << alpha.sigma;
+    EXPECT_NEAR(gamma.value, row.gamma, std::max(kHalfUnit, 3 * gamma.sigma)) << gamma.sigma;
+    if (row.delta != 0.0) {
+      const Coefficient delta = OverMass(d, "bias");
+      std::cout << name << " " << row.dof << ": delta " << delta.value << " ± " << delta.sigma
+                << " (Table 4 " << row.delta << ")\n";
+      EXPECT_NEAR(delta.value, row.delta, std::max(kHalfUnit, 3 * delta.sigma)) << delta.sigma;
+    } else {
+      EXPECT_EQ(d.at("params").at("bias").at("state"), "dropped");  // pitch δ = 0
+    }
+    const json& trace = d.at("stages").at("rls").at("trace");
+    EXPECT_EQ(trace.at("t").size(), trace.at("theta").size());
+    EXPECT_EQ(trace.at("theta").size(), trace.at("sigma").size());
+  }
+  fs::remove_all(dir);
+}
+
+TEST(IdentifyCliTest, MethodRlsOnUrisReproducesSeed004Table4) {
+  // `identify --method rls` (seed 004 eq. 15, default forgetting 0.99) on the virtual URIS
+  // (cases/uris: Table 4's parameters; steps and PRBS per DOF, §5.2), once with the case's
+  // camera (1 cm / 0.01 rad: σ of α 1–2%, so 3σ rules) and once with it 100 times finer
+  // (σ near the paper's rounding; seed 004 §5.4 ran its RLS on "simulated data, obtained from
+  // the model identified off-line", noise not given).
+  model::Truth truth = testing::CaseTruth("uris");
+  CheckTable4(truth, "uris_rls");
+  for (auto& [dof, sensors] : truth.vehicle.sensors) {
+    if (sensors.position) sensors.position->sigma /= 100.0;
+  }
+  CheckTable4(truth, "uris_rls_fine");
+}
+
+TEST(IdentifyCliTest, MethodOptionsAreCheckedAndNamed) {
+  const fs::path dir = TempDir("method");
+  model::VirtualCampaignOptions vo;
+  io::SimulateCampaign(testing::CaseTruth("uris"), {testing::UrisDesigns()[2]}, dir.string(), vo);
+  const std::string campaign = (dir / "campaign.yaml").string();
+  const RunResult unknown = RunUuvplan("identify " + campaign + " --method kalman");
+  EXPECT_EQ(unknown.status, 2) << unknown.out;
+  EXPECT_THAT(unknown.out, ::testing::HasSubstr("chain, ls, integral, one-step, rls, output-error"));
+  const RunResult forgetting = RunUuvplan("identify " + campaign + " --method one-step --forgetting 0.95");
+  EXPECT_EQ(forgetting.status, 2) << forgetting.out;
+  EXPECT_THAT(forgetting.out, ::testing::HasSubstr("--forgetting"));
+  const RunResult bad_lambda = RunUuvplan("identify " + campaign + " --method rls --forgetting 0.5");
+  EXPECT_EQ(bad_lambda.status, 2) << bad_lambda.out;
+  EXPECT_THAT(bad_lambda.out, ::testing::HasSubstr("0.9 < lambda <= 1"));
+  const RunResult no_refine = RunUuvplan("identify " + campaign + " --method rls --no-refine");
+  EXPECT_EQ(no_refine.status, 2) << no_refine.out;
+  const RunResult ok = RunUuvplan("identify " + campaign + " --method integral");
+  EXPECT_EQ(ok.status, 0) << ok.out;
+  EXPECT_THAT(ok.out, ::testing::HasSubstr("method integral"));
+  EXPECT_THAT(ok.out, ::testing::HasSubstr("estimator steady_state+integral"));
+  // The default chain reports the seeds' one-step LS beside the output error.
+  const RunResult chain = RunUuvplan("identify " + campaign);
+  EXPECT_EQ(chain.status, 0) << chain.out;
+  EXPECT_THAT(chain.out, ::testing::HasSubstr("method chain"));
+  EXPECT_THAT(chain.out, ::testing::HasSubstr("one-step LS (seed 002 eqs. 20-36"));
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -192,12 +192,34 @@ json OutputErrorStageJson(const ident::OutputErrorResult& oe) {
           {"params", EstimatesJson(oe.estimates)}};
 }
 
+// Seed 004 eq. 15 with its whole trace: the physical parameters and their σ after every
+// update (rows in campaign time), the final estimate with its covariance.
+json RlsStageJson(const ident::RlsDofResult& r) {
+  json estimated = json::array();
+  for (std::size_t j = 0; j < r.names.size(); ++j) {
+    if (r.state.size() == r.names.size() && r.state[j] == ident::ParameterState::kEstimated) {
+      estimated.push_back(r.names[j]);
+    }
+  }
+  return {{"status", std::string(ident::FitStatusName(r.status))},
+          {"message", r.message},
+          {"forgetting", r.lambda},
+          {"rows", r.psi.t.size()},
+          {"parameter_names", r.names},
+          {"estimated", estimated},
+          {"not_excited", r.not_excited},
+          {"residual_autocovariance", {JsonNumber(r.psi.gamma0), JsonNumber(r.psi.gamma1)}},
+          {"covariance", MatrixJson(r.covariance)},
+          {"trace", {{"t", r.psi.t}, {"theta", MatrixJson(r.theta)}, {"sigma", MatrixJson(r.sigma)}}}};
+}
+
 json StagesJson(const ident::DofIdentification& d) {
   json s = json::object();
   if (d.steady) s["steady_state"] = SteadyStageJson(*d.steady);
   if (d.inertia) s["integral_inertia"] = InertiaStageJson(*d.inertia);
   if (d.one_step) s["one_step_ls"] = OneStepStageJson(*d.one_step);
   if (d.output_error) s["output_error"] = OutputErrorStageJson(*d.output_error);
+  if (d.rls) s["rls"] = RlsStageJson(*d.rls);
   return s;
 }
 
@@ -277,6 +299,7 @@ json IdentifyJson(const ident::IdentifyResult& r) {
   for (const auto& t : r.trials) trials.push_back(TrialReportJson(t));
   return {{"status", std::string(ident::IdentifyStatusName(r.status))},
           {"message", r.message},
+          {"method", std::string(ident::MethodName(r.method))},
           {"dofs", dofs},
           {"trials", trials},
           {"notes", r.notes}};

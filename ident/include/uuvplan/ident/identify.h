@@ -31,6 +31,7 @@
 #include "uuvplan/ident/integral_inertia.h"
 #include "uuvplan/ident/one_step_ls.h"
 #include "uuvplan/ident/output_error.h"
+#include "uuvplan/ident/rls.h"
 #include "uuvplan/ident/steady_state.h"
 #include "uuvplan/ident/summary.h"
 #include "uuvplan/ident/trial_data.h"
@@ -41,6 +42,26 @@
 namespace uuvplan::ident {
 
 enum class ClosedLoop { kAuto, kYes, kNo };
+
+/// The estimator run on each DOF (`identify --method`, docs/identification.md "Methods"), so
+/// that the seeds' methods can be compared on one campaign, each with its σ and its free-run
+/// validation.
+enum class Method {
+  kChain,         ///< "chain": the best chain — steady state + integral method or one-step LS,
+                  ///< then the output error (closed-loop IV under feedback)
+  kLeastSquares,  ///< "ls": steady-state least squares (seed 000 eqs. 7–12, 20); m held a priori
+  kIntegral,      ///< "integral": steady state, then m by the integral method (000 eqs. 16–19)
+  kOneStep,       ///< "one-step": one-step integral LS (seed 002 eqs. 20–36, 004 eqs. 8–14)
+  kRls,           ///< "rls": recursive LS with forgetting on the one-step rows (004 eq. 15)
+  kOutputError,   ///< "output-error": output error (maximum likelihood) from the a priori values
+};
+std::string_view MethodName(Method m);
+/// The method of a name ("ls", "one-step", …), or nothing.
+std::optional<Method> ParseMethod(std::string_view name);
+/// "chain, ls, integral, one-step, rls, output-error".
+std::string MethodNames();
+/// Whether the method uses steady-state segments (and so `steady_windows`).
+bool UsesSteadyState(Method m);
 
 struct IdentifyOptions {
   /// DOFs to identify; empty: every DOF with at least one `fit` trial.
@@ -60,7 +81,9 @@ struct IdentifyOptions {
   ClosedLoopIvOptions closed_loop_iv;
   OutputErrorOptions output_error;
   ValidationOptions validation;
-  bool refine = true;                ///< run the output-error stage
+  RlsOptions rls;                    ///< Method::kRls (λ: `--forgetting`)
+  Method method = Method::kChain;
+  bool refine = true;                ///< run the output-error stage (Method::kChain only)
   bool prune_insignificant = true;   ///< seed 000 §IV-D model selection (both stages)
   ClosedLoop closed_loop = ClosedLoop::kAuto;
   /// Threads for preparing the trials and fitting the DOFs (0: one per core); each job fills
@@ -78,7 +101,15 @@ enum class IdentifyStatus {
 std::string_view IdentifyStatusName(IdentifyStatus s);
 
 /// Which estimator produced a DOF's reported parameters.
-enum class FinalEstimator { kOutputError, kSteadyStateIntegral, kOneStep, kClosedLoopIv, kNone };
+enum class FinalEstimator {
+  kOutputError,
+  kSteadyStateIntegral,
+  kOneStep,
+  kClosedLoopIv,
+  kSteadyState,  ///< Method::kLeastSquares: drag, bias, η; m a priori
+  kRls,          ///< Method::kRls: the recursive estimate after the last row
+  kNone,
+};
 std::string_view FinalEstimatorName(FinalEstimator e);
 
 struct DofIdentification {
@@ -101,6 +132,8 @@ struct DofIdentification {
   std::optional<SteadyStateResult> steady;
   std::optional<IntegralInertiaResult> inertia;
   std::optional<OneStepDofResult> one_step;
+  /// Method::kRls: the parameter trajectory (seed 004 Fig. 11) and the final estimate.
+  std::optional<RlsDofResult> rls;
   std::optional<OutputErrorResult> output_error;
   /// Under feedback (closed_loop_suspected): the instrumental-variable estimate, reported
   /// instead of the output error (closed_loop_iv.h).
@@ -158,6 +191,7 @@ struct IdentifySummary {
 
 struct IdentifyResult {
   IdentifyStatus status = IdentifyStatus::kFailed;
+  Method method = Method::kChain;  ///< the estimator asked for
   std::string message;
   std::vector<DofIdentification> dofs;
   std::vector<TrialReport> trials;

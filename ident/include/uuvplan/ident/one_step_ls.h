@@ -107,6 +107,13 @@ OneStepRows BuildOneStepRows(const model::DofModel& model, const std::vector<con
                              const OneStepOptions& options,
                              const std::vector<SmoothedSignal>* instrument = nullptr);
 
+/// BuildOneStepRows without the `free` parameters no row excites (their names appended to
+/// `not_excited`; they keep their value in `theta`); empty `free`: every regressor-linear one.
+OneStepRows ExcitedOneStepRows(const model::DofModel& model,
+                               const std::vector<const TrialData*>& trials,
+                               const Eigen::VectorXd& theta, std::vector<int> free,
+                               const OneStepOptions& options, std::vector<std::string>* not_excited);
+
 struct OneStepDofInput {
   const model::DofModel* model = nullptr;
   std::vector<const TrialData*> trials;
