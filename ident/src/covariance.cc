@@ -108,6 +108,32 @@ double Ar1FromFittedResiduals(const std::vector<FittedResiduals>& fits) {
   return 0.5 * (lo + hi);
 }
 
+double Ar1FromResidualVariance(const std::vector<FittedResiduals>& fits, double sigma) {
+  double observed = 0.0;
+  std::vector<Eigen::MatrixXd> bases;
+  for (const FittedResiduals& f : fits) {
+    if (f.X.rows() <= f.X.cols() + 2) continue;
+    Eigen::HouseholderQR<Eigen::MatrixXd> qr(f.X);
+    bases.push_back(qr.householderQ() * Eigen::MatrixXd::Identity(f.X.rows(), f.X.cols()));
+    observed += f.sum_sq;
+  }
+  if (bases.empty() || !(sigma > 0)) return 0.0;
+  // h(ρ) = σ²·Σ E Σr²(ρ) − Σr² falls with ρ (the fitted columns take more of slower noise).
+  auto h = [&](double rho) {
+    double sq = 0.0;
+    for (const Eigen::MatrixXd& Q : bases) sq += ExpectedResidualMoments(Q, rho).first;
+    return sigma * sigma * sq - observed;
+  };
+  double lo = 0.0, hi = 0.99;
+  if (h(lo) <= 0) return 0.0;
+  if (h(hi) >= 0) return hi;
+  for (int it = 0; it < 40; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (h(mid) > 0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 int CorrelationLength(const Eigen::VectorXd& u, const std::vector<int>& groups) {
   return RunCorrelationLength(u, GroupRuns(groups));
 }

@@ -65,8 +65,17 @@ void CheckAdmissible(DofIdentification* r) {
               "or the model misses an effect — thrust map, lag, coupling; try `uuvplan diagnose`)"
             : "";
     r->unreliable.push_back(e.name);
+    // The least-squares answer stands in for an output error that did not converge: outside
+    // the range even within 3σ there is then no physical answer at all (bluerov yaw: the
+    // output error drops kq = −0.56 ± 0.35 as insignificant and does not converge without it;
+    // the least squares keep kq = −0.32 ± 0.33).
+    const bool fallback = r->output_error && r->output_error->status != OutputErrorStatus::kConverged &&
+                          r->estimator != FinalEstimator::kOutputError;
     if (!std::isfinite(e.value) || !(outside <= kMargin * e.sigma)) {
       Fail("non-physical fit: " + what + ", by more than 3σ" + why, r, /*non_physical=*/true);
+    } else if (fallback) {
+      Fail("non-physical fit: " + what + ", and the output-error refinement did not converge: "
+           "no physical estimate" + why, r, /*non_physical=*/true);
     } else {
       r->warnings.push_back(what + ", within 3σ of it: not to be trusted" + why);
     }

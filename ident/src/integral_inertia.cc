@@ -34,6 +34,11 @@ struct Run {
   bool white = false;
   std::vector<double> D;
   double rho = 0.0;  // AR(1) coefficient of the raw samples' noise (covariance.h)
+  // Position-derived velocity: each sample's Savitzky–Golay derivative weights on the raw
+  // positions, and its noise variance σ²·wᵀΩw (empty: noise_var for every sample).
+  std::vector<SampleWeights> weights;
+  std::vector<double> sample_var;
+  double position_var = 0.0;
 };
 
 // One row of the regression y_i = m·ξ_i − c_run − (t_i − t_s)·b_trial (seed 000 eqs. 16–19).
@@ -61,6 +66,22 @@ std::vector<double> WhiteNoiseSensitivity(const model::DofModel& model, const Tr
   const IntegratedRegressors im = IntegrateRegressors(model, trial, run.t, theta_known, max_step_s, &minus);
   const Eigen::VectorXd d = ((ip.H - im.H) * theta_known + (ip.h0 - im.h0)) / (2.0 * dv);
   return std::vector<double>(d.data(), d.data() + d.size());
+}
+
+// A position-derived run's noise, sample by sample: the derivative weights the filter applied
+// at each sample (the window shrinks at a short run, shifts at its ends and follows the actual
+// times around a dropped sample), and the derivative's variance σ²·wᵀΩw under the position
+// noise's AR(1) ρ (covariance.h). One gain for the whole trial (the first run's) gave a
+// 12-fold variance when that run was short, and an errors-in-variables correction that put
+// m̂ at 1461 kg for 890.
+void PositionSampleNoise(const TrialData& trial, std::size_t begin, std::size_t end, Run* run) {
+  run->weights = SavitzkyGolayDerivativeWeights(trial.position, trial.sg_options, begin, end);
+  run->rho = trial.position_noise_ar1;
+  const double var = trial.position_sigma * trial.position_sigma;
+  run->position_var = var;
+  for (const SampleWeights& w : run->weights) {
+    run->sample_var.push_back(var * std::max(0.0, Ar1QuadraticForm(w.w, run->rho)));
+  }
 }
 
 // The runs of one trial. Measured velocities: the regression uses the samples themselves, not
@@ -111,6 +132,10 @@ void AddRuns(const model::DofModel& model, const TrialData& trial, const Eigen::
       run.D = WhiteNoiseSensitivity(model, trial, run, raw_signal, theta_known, o.max_step_s);
       run.white = true;
       run.rho = rho;
+    } else if (!raw && stride == 1 && input_sigma > 0) {
+      PositionSampleNoise(trial, begin, end, &run);
+      run.D = WhiteNoiseSensitivity(model, trial, run, v, theta_known, o.max_step_s);
+      run.white = true;
     }
     runs->push_back(std::move(run));
   }
@@ -136,7 +161,7 @@ std::vector<Row> BuildRows(const std::vector<Run>& runs, const std::vector<int>&
       row.y = yk;
       row.xi = run.xi[s];
       row.dt = run.t[s] - run.t[0];
-      row.noise_var = run.noise_var;
+      row.noise_var = run.sample_var.empty() ? run.noise_var : run.sample_var[s];
       row.c = 1 + q;
       row.b = tb;
       row.group = q;
@@ -204,6 +229,23 @@ double KnownParameterVariance(const std::vector<Row>& rows, const Eigen::VectorX
   return J.dot(Sk * J);
 }
 
+// Σ_s c_s·ξ̃_s's noise for a position-derived run: ξ̃_s = Σ_j w_sj·χ_j, so the sensitivity to
+// the raw positions is u_j = Σ_s c_s·w_sj and the variance σ_χ²·uᵀΩu (AR(1) ρ of the positions).
+double PositionNoiseVariance(const Run& run, const std::vector<double>& c) {
+  std::size_t lo = std::numeric_limits<std::size_t>::max(), hi = 0;
+  for (const SampleWeights& w : run.weights) {
+    lo = std::min(lo, w.first);
+    hi = std::max(hi, w.first + w.w.size());
+  }
+  if (hi <= lo) return 0.0;
+  std::vector<double> u(hi - lo, 0.0);
+  for (std::size_t s = 0; s < run.weights.size() && s < c.size(); ++s) {
+    const SampleWeights& w = run.weights[s];
+    for (std::size_t j = 0; j < w.w.size(); ++j) u[w.first - lo + j] += c[s] * w.w[j];
+  }
+  return run.position_var * Ar1QuadraticForm(u, run.rho);
+}
+
 // Known-noise propagation for runs of raw measured samples (white, declared σ): sample s's
 // error e_s enters H_s (−m̂·e_s after moving it to the residual) and, through the drag terms,
 // every later y_i: by half of each adjacent interval's sensitivity D (the interpolation's
@@ -228,7 +270,8 @@ double WhiteNoiseVariance(const std::vector<Run>& runs, const std::vector<Row>& 
       if (s2 > 0) c[s2] += 0.5 * run.D[s2 - 1] * tail[s2];
       if (s2 + 1 < k) c[s2] += 0.5 * run.D[s2] * tail[s2 + 1];
     }
-    var_white += run.noise_var * Ar1QuadraticForm(c, run.rho);
+    var_white += run.weights.empty() ? run.noise_var * Ar1QuadraticForm(c, run.rho)
+                                     : PositionNoiseVariance(run, c);
     i0 += k;
   }
   return var_white;

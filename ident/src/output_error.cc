@@ -585,10 +585,18 @@ Eigen::MatrixXd RobustCovariance(const Problem& p, const LmOutcome& lm, double s
     }
   }
   const Eigen::MatrixXd hac = PrewhitenedSandwich(lm.J, lm.r, groups, &crb_z).covariance;
+  // Each σ at least its white-noise value, the sandwich's correlations kept: D·HAC·D with
+  // D_jj = max(1, √(s²·crb_jj / HAC_jj)). Replacing the whole matrix by the white one when any
+  // entry (an initial state) fell below it threw away the colour of every other entry: VSOR
+  // under ρ = 0.9 covered 83–87%, now 94.5–97%; bluerov yaw's kq −0.56 ± 0.07 (white σ on
+  // residuals of lag-1 0.93) is ± 0.35.
+  Eigen::VectorXd d(hac.rows());
   for (int j = 0; j < hac.rows(); ++j) {
-    if (hac(j, j) < sigma2 * crb_z(j, j)) return sigma2 * crb_z;
+    const double white = sigma2 * crb_z(j, j);
+    d[j] = hac(j, j) > 0 ? std::max(1.0, std::sqrt(white / hac(j, j))) : 1.0;
+    if (!(hac(j, j) > 0)) return sigma2 * crb_z;  // a degenerate sandwich: the white matrix
   }
-  return hac;
+  return d.asDiagonal() * hac * d.asDiagonal();
 }
 
 // Cov(z) = s²·(JᵀJ)⁻¹ (HAC when the residuals are coloured) and the CRB (JᵀJ)⁻¹, in the model

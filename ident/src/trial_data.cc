@@ -301,13 +301,14 @@ void EstimateVelocity(const TrialDataOptions& o, TrialData* d) {
     SmoothedSignal s = SavitzkyGolay(d->position, sg);
     d->initial_position = s.value.front();
     d->initial_velocity = std::isfinite(s.derivative.front()) ? s.derivative.front() : 0.0;
-    d->position_noise_ar1 = NoiseAr1FromDifferences(d->position.y, s.value);
+    d->position_noise_ar1 = PositionNoiseAr1(d->position, sg, d->position_sigma);
     d->velocity_estimate = s;
     d->velocity_estimate.value = s.derivative;  // velocity
     d->velocity_estimate.derivative = s.second_derivative;  // acceleration
     d->velocity_from_position = true;
   }
   d->sg_window = sg.window;
+  d->sg_options = sg;
   d->starts_at_rest = StartsAtRest(*d);
   if (d->starts_at_rest) d->initial_velocity = 0.0;
 }

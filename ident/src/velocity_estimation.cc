@@ -99,6 +99,48 @@ void StoreLocalFit(const Eigen::VectorXd& wv, const Eigen::VectorXd& wd, const E
   out->edge[at] = edge;
 }
 
+// The local fit of one run [b, e) of samples: window, order and step as SmoothRun uses them.
+struct RunFit {
+  std::size_t b = 0;
+  int n = 0, w = 0, q = 0, hw = 0;
+  double h = 0.0;
+  bool uniform = true;  ///< every step within 1% of the median step: one set of weights
+};
+
+RunFit FitOfRun(const Signal& s, std::size_t b, std::size_t e, int order, int window) {
+  RunFit f;
+  f.b = b;
+  f.n = static_cast<int>(e - b);
+  f.w = std::min(window, f.n % 2 == 1 ? f.n : f.n - 1);
+  f.q = std::min(order, f.w - 2);
+  f.hw = f.w / 2;
+  f.h = MedianStep(s.t, b, e);
+  for (std::size_t i = b + 1; i < e; ++i) {
+    if (std::abs(s.t[i] - s.t[i - 1] - f.h) > 0.01 * f.h) {
+      f.uniform = false;
+      break;
+    }
+  }
+  return f;
+}
+
+// The weights of sample b + i's local fit (value, slope, curvature per unit u) and the first
+// sample of its window: the centred window inside a uniform run, the first/last window's
+// polynomial at its edge points, the window on the actual times for irregular steps.
+int LocalWeights(const Signal& s, const RunFit& f, int i, Eigen::VectorXd* wv, Eigen::VectorXd* wd,
+                 Eigen::VectorXd* w2) {
+  std::vector<double> u(f.w);
+  const int first = std::clamp(i - f.hw, 0, f.n - f.w);
+  if (f.uniform) {
+    for (int j = 0; j < f.w; ++j) u[j] = j - f.hw;
+    PolynomialWeights(u, f.q, static_cast<double>(i - first - f.hw), wv, wd, w2);
+    return first;
+  }
+  for (int j = 0; j < f.w; ++j) u[j] = (s.t[f.b + first + j] - s.t[f.b + i]) / f.h;
+  PolynomialWeights(u, f.q, 0.0, wv, wd, w2);
+  return first;
+}
+
 // Smooths one run [b, e) of samples into out at the same indices.
 void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order, int window,
                SmoothedSignal* out, bool* gains_set) {
@@ -113,54 +155,19 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
     }
     return;
   }
-  int w = std::min(window, n % 2 == 1 ? n : n - 1);
-  const int q = std::min(order, w - 2);
-  const int hw = w / 2;
-  const double h = MedianStep(s.t, b, e);
-  // Uniform when every step is within 1% of the median step: one set of convolution weights.
-  bool uniform = true;
-  for (std::size_t i = b + 1; i < e; ++i) {
-    if (std::abs(s.t[i] - s.t[i - 1] - h) > 0.01 * h) {
-      uniform = false;
-      break;
-    }
-  }
-  std::vector<double> u(w);
+  const RunFit f = FitOfRun(s, b, e, order, window);
   Eigen::VectorXd wv, wd, w2;
-  if (uniform) {
-    for (int j = 0; j < w; ++j) u[j] = j - hw;
-    PolynomialWeights(u, q, 0.0, &wv, &wd, &w2);
-    if (!*gains_set) {
-      out->value_gain = wv.norm();
-      out->derivative_gain = wd.norm() / h;
-      out->derivative_weights.assign(wd.data(), wd.data() + wd.size());
-      for (double& x : out->derivative_weights) x /= h;
-      *gains_set = true;
-    }
-    for (int i = hw; i < n - hw; ++i) {
-      StoreLocalFit(wv, wd, w2, &s.y[b + i - hw], w, h, b + i, false, out);
-    }
-    // End polynomials: the first/last window's fit evaluated at each edge point.
-    for (int side = 0; side < 2; ++side) {
-      const int first = side == 0 ? 0 : n - w;
-      for (int i = side == 0 ? 0 : n - hw; i < (side == 0 ? hw : n); ++i) {
-        PolynomialWeights(u, q, static_cast<double>(i - first - hw), &wv, &wd, &w2);
-        StoreLocalFit(wv, wd, w2, &s.y[b + first], w, h, b + i, true, out);
-      }
-    }
-    return;
-  }
-  // Irregular steps: a local fit on the actual times (u in units of the median step).
   for (int i = 0; i < n; ++i) {
-    const int first = std::clamp(i - hw, 0, n - w);
-    for (int j = 0; j < w; ++j) u[j] = (s.t[b + first + j] - s.t[b + i]) / h;
-    PolynomialWeights(u, q, 0.0, &wv, &wd, &w2);
-    StoreLocalFit(wv, wd, w2, &s.y[b + first], w, h, b + i, i < hw || i >= n - hw, out);
-    if (!*gains_set && !out->edge[b + i]) {
+    const bool edge = i < f.hw || i >= n - f.hw;
+    // A uniform run's interior shares the centred weights (computed once).
+    if (!(f.uniform && !edge && i > f.hw)) LocalWeights(s, f, i, &wv, &wd, &w2);
+    const int first = std::clamp(i - f.hw, 0, n - f.w);
+    StoreLocalFit(wv, wd, w2, &s.y[b + first], f.w, f.h, b + i, edge, out);
+    if (!*gains_set && !edge) {
       out->value_gain = wv.norm();
-      out->derivative_gain = wd.norm() / h;
+      out->derivative_gain = wd.norm() / f.h;
       out->derivative_weights.assign(wd.data(), wd.data() + wd.size());
-      for (double& x : out->derivative_weights) x /= h;
+      for (double& x : out->derivative_weights) x /= f.h;
       *gains_set = true;
     }
   }
@@ -278,6 +285,59 @@ SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& option
     SmoothRun(s, b, e, run++, options.order, options.window, &out, &gains_set);
   }
   return out;
+}
+
+std::vector<SampleWeights> SavitzkyGolayDerivativeWeights(const Signal& s,
+                                                         const SavitzkyGolayOptions& options,
+                                                         std::size_t begin, std::size_t end) {
+  std::vector<SampleWeights> out;
+  Eigen::VectorXd wv, wd, w2;
+  for (const auto& [b, e] : Runs(s.t, options.gap_factor)) {
+    if (e <= begin || b >= end) continue;
+    const RunFit f = FitOfRun(s, b, e, options.order, options.window);
+    for (std::size_t i = std::max(b, begin); i < std::min(e, end); ++i) {
+      SampleWeights sw;
+      sw.first = i;
+      if (f.n >= 3) {
+        sw.first = b + LocalWeights(s, f, static_cast<int>(i - b), &wv, &wd, &w2);
+        sw.w.resize(wd.size());
+        for (Eigen::Index j = 0; j < wd.size(); ++j) sw.w[j] = wd[j] / f.h;
+      }
+      out.push_back(std::move(sw));
+    }
+  }
+  return out;
+}
+
+double PositionNoiseAr1(const Signal& position, const SavitzkyGolayOptions& options,
+                        double sigma) {
+  const int w = options.window, q = std::min(options.order, options.window - 3) + 1;
+  std::vector<std::pair<std::size_t, std::size_t>> blocks;
+  for (const auto& [b, e] : Runs(position.t, options.gap_factor)) {
+    for (std::size_t a = b; a + w <= e; a += w) blocks.push_back({a, a + w});
+  }
+  // At most ~200 blocks evenly spread: ρ to ~0.01 on ρ = 0.9 noise, bounded work on long logs.
+  const std::size_t stride = std::max<std::size_t>(1, blocks.size() / 200);
+  std::vector<FittedResiduals> sets;
+  for (std::size_t k = 0; k < blocks.size(); k += stride) {
+    const auto [a, e] = blocks[k];
+    const double mid = 0.5 * (position.t[a] + position.t[e - 1]);
+    const double span = std::max(position.t[e - 1] - position.t[a], 1e-12);
+    FittedResiduals f;
+    f.X.resize(w, q);
+    Eigen::VectorXd y(w);
+    for (int i = 0; i < w; ++i) {
+      const double u = (position.t[a + i] - mid) / span;
+      double p = 1.0;
+      for (int j = 0; j < q; ++j, p *= u) f.X(i, j) = p;
+      y[i] = position.y[a + i];
+    }
+    const Eigen::VectorXd r = y - f.X * f.X.colPivHouseholderQr().solve(y);
+    f.sum_sq = r.squaredNorm();
+    f.sum_lag1 = r.head(w - 1).dot(r.tail(w - 1));
+    sets.push_back(std::move(f));
+  }
+  return sigma > 0 ? Ar1FromResidualVariance(sets, sigma) : Ar1FromFittedResiduals(sets);
 }
 
 std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rate_hz,

@@ -123,9 +123,12 @@ TEST(IdentifyCliTest, RealBlueRovYawIsANonPhysicalFit) {
   // shared/data/bluerov-yaw-2016 (README "Sanity fit"): the output-error fit of yaw_1..3
   // gives I ≈ 1.04 kg·m², k ≈ 4.5 N·m·s and a validate MAE of 0.15–0.18 rad/s. The identified
   // inertia must land in the README's 0.9–1.4 range (every fit there). The standard model's
-  // kq comes out negative (−0.56 ± 0.07 N·m·s²/rad², 8σ below 0: the thrust map is wrong in
-  // shape, docs/diagnosis.md): a non-physical fit, so the DOF is failed and identify exits 1,
-  // with the reason on the terminal (it exited 0 with a warning before issue #14).
+  // kq comes out negative, −0.56 ± 0.35 N·m·s²/rad² with the prewhitened sandwich (residual
+  // lag-1 0.93: the thrust map is wrong in shape, docs/diagnosis.md; the white σ 0.07 made it
+  // "8σ below 0"): not significant, so the output error drops it and does not converge
+  // without it, and the least squares that stand in keep kq = −0.32 ± 0.33. No physical
+  // estimate: the DOF is failed and identify exits 1 with the reason on the terminal (it
+  // exited 0 with a warning before issue #14).
   const RunResult r = RunUuvplan(
       "identify " + RealDataPath("bluerov-yaw-2016/campaign.yaml") + " --json -", false);
   ASSERT_EQ(r.status, 1) << r.out;

@@ -10,7 +10,15 @@
 //     (offset 35 N, amplitude 25 N, period 26 s, 260 s) must lie within 25% of the bound at the
 //     truth.
 //
+//  3. A mild unmodelled effect (issue #14 item 1): with a fifth argument "lag=T" every DOF of
+//     the truth gets a first-order thrust lag of time constant T s (model/effects.h
+//     thruster_lag), which the fitted standard model does not contain. T = 0.05 s is mild:
+//     the force error T·dφ/dt is 0.05·ω·A, under 1% of the force on the seeds' sines
+//     (ROMEO surge: 0.05·0.24·25 N = 0.3 N on 35 ± 25 N) and a 0.05 s rounding of each
+//     command step. The coverage of the standard parameters must stay in the band.
+//
 // Run: build/tests/identify_validation [repetitions = 200] [case = all] [AR(1) ρ = 0]
+//                                      [unmodelled effect: none or lag=T]
 //      (case: romeo_surge, romeo_heave, romeo_yaw, vsor, uris, crb)
 // Exit status 1 when a claim fails. Model selection is off (fixed structures): coverage is a
 // property of an estimator of a given model. The CI subset is tests/ident/ident_coverage_test.cc.
@@ -23,6 +31,7 @@
 
 #include "ident/ident_cases.h"
 #include "uuvplan/ident/monte_carlo.h"
+#include "uuvplan/model/parameter.h"
 
 using namespace uuvplan;
 using model::Dof;
@@ -44,6 +53,8 @@ int main(int argc, char** argv) {
   const int reps = argc > 1 ? std::atoi(argv[1]) : 200;
   const std::string only = argc > 2 && std::string(argv[2]) != "all" ? argv[2] : "";
   const double ar1 = argc > 3 ? std::atof(argv[3]) : 0.0;
+  const std::string effect = argc > 4 ? argv[4] : "none";
+  const double lag = effect.rfind("lag=", 0) == 0 ? std::atof(effect.c_str() + 4) : 0.0;
   namespace t = ident::testing;
   const std::vector<Case> cases = {{"romeo_surge", "romeo", t::RomeoSurgeDesigns()},
                                    {"romeo_heave", "romeo", t::RomeoHeaveDesigns()},
@@ -52,11 +63,12 @@ int main(int argc, char** argv) {
                                    {"uris", "uris", t::UrisDesigns()}};
   bool known = only.empty() || only == "crb";
   for (const Case& c : cases) known = known || only == c.name;
-  if (reps <= 1 || !known || argc > 4 || !(std::abs(ar1) < 1)) {
+  if (reps <= 1 || !known || argc > 5 || !(std::abs(ar1) < 1) ||
+      !(effect == "none" || lag > 0)) {
     std::fprintf(stderr,
                  "usage: identify_validation [repetitions > 1, default 200] [case: romeo_surge, "
                  "romeo_heave, romeo_yaw, vsor, uris, crb or all] [sensor noise AR(1) ρ in "
-                 "(-1, 1), default 0]\n");
+                 "(-1, 1), default 0] [unmodelled effect: none or lag=T with T > 0 s]\n");
     return 2;
   }
   int exit_code = 0;
@@ -71,6 +83,11 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     model::Truth truth = t::CaseTruth(c.truth);
     truth.defects.noise_ar1 = ar1;
+    // Identification fits the standard structure of the data (identify_prepare.cc
+    // ChooseStructure): the lag in the truth is unmodelled.
+    for (const model::TrialDesign& d : c.designs) {
+      if (lag > 0) truth.dofs[d.dof].params[model::param::kLag] = lag;
+    }
     const ident::MonteCarloReport r = ident::RunMonteCarlo(truth, c.designs, o);
     std::printf("== %s: %d repetitions, %d failures, %.0f s\n%s", c.name.c_str(), r.repetitions,
                 r.failures, Seconds(t0), r.Table().c_str());
@@ -99,7 +116,7 @@ int main(int argc, char** argv) {
     }
     std::fflush(stdout);
   }
-  if (only.empty() || only == "crb") {
+  if ((only.empty() && lag == 0) || only == "crb") {
     const model::Truth truth = t::CaseTruth("romeo");
     ident::MonteCarloOptions o;
     o.repetitions = reps;

@@ -68,6 +68,14 @@ struct FittedResiduals {
 /// Clamped to [0, 0.99]; 0 when the pooled ρ̂ is not above 2/√N (N the samples).
 double Ar1FromFittedResiduals(const std::vector<FittedResiduals>& fits);
 
+/// The AR(1) coefficient of errors of known marginal sd σ behind several fits' residuals:
+/// ρ solves σ²·Σ_k E Σr²(ρ) = Σ_k sum_sq, E Σr² = n − tr(QᵀΩQ) as above (bisection; it falls
+/// monotonically with ρ as the fitted columns take more of slower noise). On short fits (the
+/// 21-sample windows of a 4th-order filter) the lag-1 ratio is nearly flat near ρ = 0.9 and
+/// scatters to the clamp; the residual variance still moves steeply with ρ. 0 when the
+/// residuals are at or above white noise's, 0.99 at most.
+double Ar1FromResidualVariance(const std::vector<FittedResiduals>& fits, double sigma);
+
 /// Σ_s Σ_t c_s c_t ρ^|s−t| = cᵀΩc/σ² of a stationary AR(1) (O(n): q_s = c_s + ρ·q_{s−1},
 /// the sum is 2·Σ c_s q_s − Σ c_s²).
 double Ar1QuadraticForm(const std::vector<double>& c, double rho);

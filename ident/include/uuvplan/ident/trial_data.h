@@ -82,10 +82,11 @@ struct TrialData {
   /// `derivative` is the acceleration of the same local polynomials.
   SmoothedSignal velocity_estimate;
   bool velocity_from_position = true;
-  /// AR(1) coefficient of the position noise (NoiseAr1FromDifferences of the raw and smoothed
-  /// positions; 0 when the velocity is measured).
+  /// AR(1) coefficient of the position noise (PositionNoiseAr1 of the positions with the
+  /// filter's window and order; 0 when the velocity is measured).
   double position_noise_ar1 = 0.0;
   int sg_window = 21;
+  SavitzkyGolayOptions sg_options;  ///< the filter that made velocity_estimate (window = sg_window)
   /// Initial state from the data: Savitzky–Golay end polynomial at the first sample (position
   /// NaN without position samples).
   double initial_position = 0.0;

@@ -64,6 +64,30 @@ struct SmoothedSignal {
 /// Savitzky–Golay smoothing and differentiation of irregularly sampled data.
 SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options);
 
+/// The weights of one sample's Savitzky–Golay derivative: derivative_i = Σ_j w[j]·y[first + j]
+/// (per second; empty where the run is too short for a derivative).
+struct SampleWeights {
+  std::size_t first = 0;
+  std::vector<double> w;
+};
+/// The derivative weights SavitzkyGolay applied at samples [begin, end) of s (the same runs,
+/// window, end polynomials and actual times): the linear map from the samples' noise to the
+/// derivative's, for its exact variance σ²·wᵀΩw (covariance.h, Ar1QuadraticForm).
+std::vector<SampleWeights> SavitzkyGolayDerivativeWeights(const Signal& s,
+                                                         const SavitzkyGolayOptions& options,
+                                                         std::size_t begin, std::size_t end);
+
+/// The AR(1) coefficient of a position sensor's noise: the residuals of the filter's own local
+/// polynomial (options.order) fitted to consecutive, non-overlapping windows of
+/// options.window samples (the span over which the filter takes the motion to be a
+/// polynomial), pooled and freed of the fits' bias: with the sensor's σ (> 0) from their
+/// variance (Ar1FromResidualVariance), else from their lag-1 (Ar1FromFittedResiduals).
+/// Unlike the differences of raw − smoothed (NoiseAr1FromDifferences), whose smoother follows
+/// the slow part of the noise (0.5–0.66 read for 0.9), the bias of the fitted columns is
+/// accounted for exactly.
+double PositionNoiseAr1(const Signal& position, const SavitzkyGolayOptions& options,
+                        double sigma);
+
 /// Second-order Butterworth low-pass (cutoff_hz) applied forwards and backwards (zero phase) to
 /// uniformly sampled data at rate_hz; odd reflection at both ends.
 std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rate_hz,
