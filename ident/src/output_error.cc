@@ -126,8 +126,8 @@ class Problem {
       const bool use_pos = o.use_position && d->has_position();
       const bool use_vel = o.use_velocity && d->has_velocity();
       if (!use_pos && !use_vel) continue;
-      const Binned pos = use_pos ? Bin(d->position, d->position_sigma, o.bin_s, d->breakpoints) : Binned{};
-      const Binned vel = use_vel ? Bin(d->velocity, d->velocity_sigma, o.bin_s, d->breakpoints) : Binned{};
+      Binned pos = use_pos ? Bin(d->position, d->position_sigma, o.bin_s, d->breakpoints) : Binned{};
+      Binned vel = use_vel ? Bin(d->velocity, d->velocity_sigma, o.bin_s, d->breakpoints) : Binned{};
       std::vector<double> times;
       times.insert(times.end(), pos.t.begin(), pos.t.end());
       times.insert(times.end(), vel.t.begin(), vel.t.end());
@@ -135,20 +135,18 @@ class Problem {
       times.erase(std::unique(times.begin(), times.end()), times.end());
       // Simulation starts at t = 0; samples before it (none after PrepareTrial) are dropped.
       times.erase(times.begin(), std::lower_bound(times.begin(), times.end(), 0.0));
-      tp.times = times;
       auto index_of = [&](double t) {
         return static_cast<int>(std::lower_bound(times.begin(), times.end(), t) - times.begin());
       };
-      for (std::size_t k = 0; k < pos.t.size(); ++k) {
-        tp.pos_at.push_back(index_of(pos.t[k]));
-        tp.pos_y.push_back(pos.y[k]);
-        tp.pos_w.push_back(pos.w[k]);
-      }
-      for (std::size_t k = 0; k < vel.t.size(); ++k) {
-        tp.vel_at.push_back(index_of(vel.t[k]));
-        tp.vel_y.push_back(vel.y[k]);
-        tp.vel_w.push_back(vel.w[k]);
-      }
+      tp.pos_at.reserve(pos.t.size());
+      for (double t : pos.t) tp.pos_at.push_back(index_of(t));
+      tp.vel_at.reserve(vel.t.size());
+      for (double t : vel.t) tp.vel_at.push_back(index_of(t));
+      tp.times = std::move(times);
+      tp.pos_y = std::move(pos.y);
+      tp.pos_w = std::move(pos.w);
+      tp.vel_y = std::move(vel.y);
+      tp.vel_w = std::move(vel.w);
       // Initial state: given, or guessed from the smoothed data.
       const TrialInitialState* given = nullptr;
       if (initial) {
@@ -172,7 +170,7 @@ class Problem {
           // sample is a fine start for a parameter that enters linearly.
         }
       }
-      if (o.grid_s > 0 && model.sensor_delay_index() < 0 && !times.empty()) {
+      if (o.grid_s > 0 && model.sensor_delay_index() < 0 && !tp.times.empty()) {
         // Grid: every breakpoint, and points at most grid_s apart in between.
         std::vector<double> grid = {0.0};
         auto extend_to = [&](double t) {
@@ -183,13 +181,14 @@ class Problem {
           if (t > last) grid.push_back(t);
         };
         for (double b : d->breakpoints) {
-          if (b > 0 && b < times.back()) extend_to(b);
+          if (b > 0 && b < tp.times.back()) extend_to(b);
         }
-        extend_to(times.back());
-        if (grid.size() < times.size()) {
+        extend_to(tp.times.back());
+        if (grid.size() < tp.times.size()) {
           tp.grid = std::move(grid);
           std::size_t g = 0;
-          for (double t : times) {
+          tp.interval.reserve(tp.times.size());
+          for (double t : tp.times) {
             while (g + 2 < tp.grid.size() && tp.grid[g + 1] < t) ++g;
             tp.interval.push_back(static_cast<int>(g));
           }

@@ -74,7 +74,7 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
 }
 
 int RunIdentify(const IdentifyCommandOptions& co) {
-  const model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
+  model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
   ident::IdentifyOptions o = co.identify;
   o.dofs = ParseDofFlags(co.dofs);
   for (const std::string& s : co.steady) AddSteadyWindow(s, campaign, &o);
@@ -83,7 +83,7 @@ int RunIdentify(const IdentifyCommandOptions& co) {
     throw InputError("--closed-loop " + co.closed_loop, "expected yes, no or auto");
   }
   o.closed_loop = *closed_loop;
-  const ident::IdentifyResult result = ident::Identify(campaign, o);
+  const ident::IdentifyResult result = ident::IdentifyReleasingLogs(&campaign, o);
 
   std::ostream& out = ReportStream(co.json);
   out << "Identification of " << co.campaign << " (vehicle '" << campaign.vehicle.name << "', "
