@@ -177,36 +177,92 @@ double Ar1QuadraticForm(const std::vector<double>& c, double rho) {
   return 2.0 * sum - sq;
 }
 
-PrewhitenedCovariance PrewhitenedSandwich(const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
-                                          const std::vector<int>& groups,
-                                          const Eigen::MatrixXd* bread_inverse) {
-  const Eigen::Index n = J.rows(), p = J.cols();
-  PrewhitenedCovariance out;
-  const auto runs = GroupRuns(groups);
-  // Innovations û and the filtered rows Z, group by group.
-  Eigen::VectorXd u(n);
-  Eigen::MatrixXd Z(n, p);
+Prewhitening PlanPrewhitening(const Eigen::VectorXd& r, const std::vector<int>& groups) {
+  Prewhitening p;
+  p.runs = GroupRuns(groups);
+  const Eigen::Index n = r.size();
+  Eigen::VectorXd u(n);  // the innovations û, to choose the batch length
   double rho_sum = 0.0;
-  for (const auto& [a, b] : runs) {
+  for (const auto& [a, b] : p.runs) {
     const double rho = Ar1Coefficient(r.segment(a, b - a));
+    p.rho.push_back(rho);
     rho_sum += rho * (b - a);
     u[a] = r[a];
     for (int i = a + 1; i < b; ++i) u[i] = r[i] - rho * r[i - 1];
-    Z.row(b - 1) = J.row(b - 1);
-    for (int i = b - 2; i >= a; --i) Z.row(i) = J.row(i) + rho * Z.row(i + 1);
   }
-  out.mean_rho = n > 0 ? rho_sum / n : 0.0;
-  // Batch means of the whitened scores Z_jᵀ û_j within groups.
-  out.block = std::max(1, 2 * RunCorrelationLength(u, runs) - 1);
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(p, p);
-  for (const auto& [a, b] : runs) {
-    for (int s = a; s < b; s += out.block) {
-      const int e = std::min(b, s + out.block);
-      const Eigen::VectorXd g = Z.middleRows(s, e - s).transpose() * u.segment(s, e - s);
-      S.noalias() += g * g.transpose();
-      ++out.blocks;
-    }
+  p.mean_rho = n > 0 ? rho_sum / n : 0.0;
+  p.block = std::max(1, 2 * RunCorrelationLength(u, p.runs) - 1);
+  return p;
+}
+
+WhitenedScoreSum::WhitenedScoreSum(int columns, int block)
+    : block_(std::max(1, block)),
+      a_(Eigen::VectorXd::Zero(columns)),
+      w_(Eigen::VectorXd::Zero(columns)),
+      m_(Eigen::VectorXd::Zero(columns)),
+      v_(Eigen::VectorXd::Zero(columns)),
+      s_(Eigen::MatrixXd::Zero(columns, columns)) {}
+
+void WhitenedScoreSum::StartGroup(double rho) {
+  CloseBatch();
+  rho_ = rho;
+  first_row_ = true;
+  m_.setZero();
+  v_.setZero();
+  mu_ = 0.0;
+}
+
+void WhitenedScoreSum::Add(const double* jacobian_row, double residual) {
+  const Eigen::Map<const Eigen::VectorXd> j(jacobian_row, a_.size());
+  const double u = first_row_ ? residual : residual - rho_ * previous_r_;
+  first_row_ = false;
+  previous_r_ = residual;
+  q_ = rho_ * q_ + u;
+  a_.noalias() += q_ * j;
+  w_.noalias() += power_ * j;
+  power_ *= rho_;
+  if (++in_batch_ == block_) CloseBatch();
+}
+
+void WhitenedScoreSum::CloseBatch() {
+  if (in_batch_ == 0) return;
+  const double c = rho_ * q_;
+  const Eigen::VectorXd mv = m_ + v_;
+  s_.noalias() += a_ * a_.transpose() + mu_ * w_ * w_.transpose();
+  s_.noalias() += mv * w_.transpose();
+  s_.noalias() += w_ * mv.transpose();
+  m_ = power_ * m_ + c * a_;
+  v_ = power_ * (v_ + mu_ * w_);
+  mu_ = power_ * power_ * mu_ + c * c;
+  a_.setZero();
+  w_.setZero();
+  q_ = 0.0;
+  power_ = 1.0;
+  in_batch_ = 0;
+  ++batches_;
+}
+
+const Eigen::MatrixXd& WhitenedScoreSum::Sum() {
+  CloseBatch();
+  return s_;
+}
+
+PrewhitenedCovariance PrewhitenedSandwich(const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
+                                          const std::vector<int>& groups,
+                                          const Eigen::MatrixXd* bread_inverse) {
+  const Eigen::Index p = J.cols();
+  PrewhitenedCovariance out;
+  const Prewhitening plan = PlanPrewhitening(r, groups);
+  out.mean_rho = plan.mean_rho;
+  out.block = plan.block;
+  WhitenedScoreSum sum(static_cast<int>(p), plan.block);
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = J;
+  for (std::size_t g = 0; g < plan.runs.size(); ++g) {
+    sum.StartGroup(plan.rho[g]);
+    for (int i = plan.runs[g].first; i < plan.runs[g].second; ++i) sum.Add(rows.row(i).data(), r[i]);
   }
+  const Eigen::MatrixXd& S = sum.Sum();
+  out.blocks = sum.batches();
   // The scores sum to zero at the solution (p constraints): B/(B − p) as HC1's n/(n − p).
   const double correction =
       out.blocks > p ? static_cast<double>(out.blocks) / (out.blocks - p) : 1.0;

@@ -159,7 +159,10 @@ const DofIdentification* IdentifyResult::Find(Dof dof) const {
   return nullptr;
 }
 
-IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& o) {
+namespace {
+
+IdentifyResult IdentifyCampaign(const model::Campaign& campaign, model::Campaign* release,
+                                const IdentifyOptions& o) {
   std::string error;
   if (!o.IsValid(&error)) throw model::InputError("identify options", error);
   IdentifyResult result;
@@ -170,6 +173,7 @@ IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& 
   diagnosis::ParallelFor(trials.size(), o.threads, [&](std::size_t i) {
     Stopwatch watch;
     trials[i] = PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.data);
+    if (release) release->trials[i].log = model::TrialLog{};
     prepare_s[i] = watch.Lap();
   });
   for (const TrialData& t : trials) result.trials.push_back(ReportOf(t));
@@ -200,6 +204,16 @@ IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& 
                    std::to_string(trials.size()) + " trial(s)" +
                    (failed.empty() ? "" : "; failed: " + failed + " (the reason on each DOF's FAILED line)");
   return result;
+}
+
+}  // namespace
+
+IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& o) {
+  return IdentifyCampaign(campaign, nullptr, o);
+}
+
+IdentifyResult IdentifyReleasingLogs(model::Campaign* campaign, const IdentifyOptions& o) {
+  return IdentifyCampaign(*campaign, campaign, o);
 }
 
 }  // namespace uuvplan::ident

@@ -166,6 +166,34 @@ Eigen::MatrixXd Ma1VarianceModelCovariance(const Eigen::MatrixXd& H, const Eigen
   return Ainv * S * Ainv.transpose();
 }
 
+ScaledFactor AnalyseScaledFactor(const Eigen::MatrixXd& R, const LeastSquaresOptions& options) {
+  ScaledFactor f;
+  const Eigen::Index p = R.cols();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  f.singular_values = svd.singularValues();
+  const double smax = f.singular_values[0];
+  const double smin = f.singular_values[p - 1];
+  f.condition_number = smin > 0 ? smax / smin : std::numeric_limits<double>::infinity();
+  // Truncated pseudo-inverse of R: directions with s < smax/max_condition are left out.
+  const double cut = smax / options.max_condition;
+  f.pseudo_inverse = Eigen::MatrixXd::Zero(p, p);
+  for (Eigen::Index k = 0; k < p; ++k) {
+    const double s = f.singular_values[k];
+    if (s > cut && s > 0) {
+      f.pseudo_inverse.noalias() += svd.matrixV().col(k) * svd.matrixU().col(k).transpose() / s;
+      continue;
+    }
+    for (Eigen::Index j = 0; j < p; ++j) {
+      if (std::abs(svd.matrixV()(j, k)) > options.null_component &&
+          std::find(f.not_identifiable.begin(), f.not_identifiable.end(), j) == f.not_identifiable.end()) {
+        f.not_identifiable.push_back(static_cast<int>(j));
+      }
+    }
+  }
+  std::sort(f.not_identifiable.begin(), f.not_identifiable.end());
+  return f;
+}
+
 LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
                             const Eigen::VectorXd* weights, const LeastSquaresOptions& options,
                             const std::vector<int>* groups) {
@@ -194,32 +222,13 @@ LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
   }
   // QR, then the SVD of the small R gives the singular values of B.
   Eigen::HouseholderQR<Eigen::MatrixXd> qr(B);
-  Eigen::MatrixXd R = qr.matrixQR().topRows(p).triangularView<Eigen::Upper>();
-  Eigen::VectorXd qtc = (qr.householderQ().transpose() * c).head(p);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  fit.singular_values = svd.singularValues();
-  const double smax = fit.singular_values[0];
-  const double smin = fit.singular_values[p - 1];
-  fit.condition_number = smin > 0 ? smax / smin : std::numeric_limits<double>::infinity();
-  // Truncated pseudo-inverse of R: directions with s < smax/max_condition are left out.
-  const double cut = smax / options.max_condition;
-  Eigen::MatrixXd Rpinv = Eigen::MatrixXd::Zero(p, p);
-  for (Eigen::Index k = 0; k < p; ++k) {
-    const double s = fit.singular_values[k];
-    if (s > cut && s > 0) {
-      Rpinv.noalias() += svd.matrixV().col(k) * svd.matrixU().col(k).transpose() / s;
-    } else {
-      for (Eigen::Index j = 0; j < p; ++j) {
-        if (std::abs(svd.matrixV()(j, k)) > options.null_component) {
-          if (std::find(fit.not_identifiable.begin(), fit.not_identifiable.end(), j) ==
-              fit.not_identifiable.end()) {
-            fit.not_identifiable.push_back(static_cast<int>(j));
-          }
-        }
-      }
-    }
-  }
-  std::sort(fit.not_identifiable.begin(), fit.not_identifiable.end());
+  const Eigen::MatrixXd R = qr.matrixQR().topRows(p).triangularView<Eigen::Upper>();
+  const Eigen::VectorXd qtc = (qr.householderQ().transpose() * c).head(p);
+  const ScaledFactor f = AnalyseScaledFactor(R, options);
+  fit.singular_values = f.singular_values;
+  fit.condition_number = f.condition_number;
+  fit.not_identifiable = f.not_identifiable;
+  const Eigen::MatrixXd& Rpinv = f.pseudo_inverse;
   const Eigen::VectorXd z = Rpinv * qtc;
   fit.theta = D.cwiseProduct(z);
   fit.residuals = y - H * fit.theta;

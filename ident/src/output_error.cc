@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
+#include "uuvplan/ident/block_least_squares.h"
 #include "model_selection.h"
 #include "number_text.h"
 #include "options_check.h"
@@ -124,8 +126,8 @@ class Problem {
       const bool use_pos = o.use_position && d->has_position();
       const bool use_vel = o.use_velocity && d->has_velocity();
       if (!use_pos && !use_vel) continue;
-      const Binned pos = use_pos ? Bin(d->position, d->position_sigma, o.bin_s, d->breakpoints) : Binned{};
-      const Binned vel = use_vel ? Bin(d->velocity, d->velocity_sigma, o.bin_s, d->breakpoints) : Binned{};
+      Binned pos = use_pos ? Bin(d->position, d->position_sigma, o.bin_s, d->breakpoints) : Binned{};
+      Binned vel = use_vel ? Bin(d->velocity, d->velocity_sigma, o.bin_s, d->breakpoints) : Binned{};
       std::vector<double> times;
       times.insert(times.end(), pos.t.begin(), pos.t.end());
       times.insert(times.end(), vel.t.begin(), vel.t.end());
@@ -133,20 +135,18 @@ class Problem {
       times.erase(std::unique(times.begin(), times.end()), times.end());
       // Simulation starts at t = 0; samples before it (none after PrepareTrial) are dropped.
       times.erase(times.begin(), std::lower_bound(times.begin(), times.end(), 0.0));
-      tp.times = times;
       auto index_of = [&](double t) {
         return static_cast<int>(std::lower_bound(times.begin(), times.end(), t) - times.begin());
       };
-      for (std::size_t k = 0; k < pos.t.size(); ++k) {
-        tp.pos_at.push_back(index_of(pos.t[k]));
-        tp.pos_y.push_back(pos.y[k]);
-        tp.pos_w.push_back(pos.w[k]);
-      }
-      for (std::size_t k = 0; k < vel.t.size(); ++k) {
-        tp.vel_at.push_back(index_of(vel.t[k]));
-        tp.vel_y.push_back(vel.y[k]);
-        tp.vel_w.push_back(vel.w[k]);
-      }
+      tp.pos_at.reserve(pos.t.size());
+      for (double t : pos.t) tp.pos_at.push_back(index_of(t));
+      tp.vel_at.reserve(vel.t.size());
+      for (double t : vel.t) tp.vel_at.push_back(index_of(t));
+      tp.times = std::move(times);
+      tp.pos_y = std::move(pos.y);
+      tp.pos_w = std::move(pos.w);
+      tp.vel_y = std::move(vel.y);
+      tp.vel_w = std::move(vel.w);
       // Initial state: given, or guessed from the smoothed data.
       const TrialInitialState* given = nullptr;
       if (initial) {
@@ -170,7 +170,7 @@ class Problem {
           // sample is a fine start for a parameter that enters linearly.
         }
       }
-      if (o.grid_s > 0 && model.sensor_delay_index() < 0 && !times.empty()) {
+      if (o.grid_s > 0 && model.sensor_delay_index() < 0 && !tp.times.empty()) {
         // Grid: every breakpoint, and points at most grid_s apart in between.
         std::vector<double> grid = {0.0};
         auto extend_to = [&](double t) {
@@ -181,13 +181,14 @@ class Problem {
           if (t > last) grid.push_back(t);
         };
         for (double b : d->breakpoints) {
-          if (b > 0 && b < times.back()) extend_to(b);
+          if (b > 0 && b < tp.times.back()) extend_to(b);
         }
-        extend_to(times.back());
-        if (grid.size() < times.size()) {
+        extend_to(tp.times.back());
+        if (grid.size() < tp.times.size()) {
           tp.grid = std::move(grid);
           std::size_t g = 0;
-          for (double t : times) {
+          tp.interval.reserve(tp.times.size());
+          for (double t : tp.times) {
             while (g + 2 < tp.grid.size() && tp.grid[g + 1] < t) ++g;
             tp.interval.push_back(static_cast<int>(g));
           }
@@ -204,6 +205,7 @@ class Problem {
   }
 
   int num_z() const { return num_z_; }
+  int num_free() const { return static_cast<int>(free_.size()); }
   int num_r() const { return num_r_; }
   /// Measurements left out (gross errors found after a first fit): residual and Jacobian 0.
   void Exclude(const std::vector<char>& mask) { excluded_ = mask; }
@@ -239,15 +241,17 @@ class Problem {
     return out;
   }
 
-  /// Residuals r = w·(y − ŷ) and, when J is given, J = ∂r/∂z. False if a simulation fails.
-  bool Evaluate(const Eigen::VectorXd& z, Eigen::VectorXd* r, Eigen::MatrixXd* J) const {
+  /// Residuals r = w·(y − ŷ) and, when `rows` is given, the rows of J = ∂r/∂z, trial by trial
+  /// (a block of its own initial-state columns and the free parameters', block_least_squares.h):
+  /// the Jacobian of the campaign is never stored. False if a simulation fails.
+  bool Evaluate(const Eigen::VectorXd& z, Eigen::VectorXd* r, BlockRowSink* rows) const {
     const Eigen::VectorXd theta = Theta(z);
     if (!Admissible(model_, theta)) return false;
     r->resize(num_r_);
-    if (J) J->setZero(num_r_, num_z_);
     model::SimulationOptions so;
     so.step_s = o_.step_s;
-    so.sensitivities = J != nullptr;
+    so.sensitivities = rows != nullptr;
+    bool finite = true;
     for (const TrialProblem& tp : trials_) {
       Eigen::VectorXd x0 = Eigen::VectorXd::Zero(model_.num_states());
       x0[0] = tp.z_chi0 >= 0 ? z[tp.z_chi0] : tp.init.chi0;
@@ -259,7 +263,7 @@ class Problem {
       const View tr(tp, sim, model_, theta, c);
       model::Trajectory sim_xi;
       double h_xi = 0.0;
-      if (J && tp.z_xi0 >= 0) {
+      if (rows && tp.z_xi0 >= 0) {
         h_xi = 1e-6 * std::max(1e-3, std::abs(x0[1]));
         Eigen::VectorXd x1 = x0;
         x1[1] += h_xi;
@@ -268,6 +272,8 @@ class Problem {
         sim_xi = model::SimulateMeasured(model_, theta, c, at, plain, &x1);
       }
       const View tr_xi(tp, sim_xi, model_, theta, c);
+      const int own = (tp.z_chi0 >= 0 ? 1 : 0) + (tp.z_xi0 >= 0 ? 1 : 0);
+      if (rows) rows->StartBlock(tp.z_chi0 >= 0 ? tp.z_chi0 : std::max(tp.z_xi0, 0), own);
       int row = tp.r_offset;
       auto fill = [&](const std::vector<int>& at, const std::vector<double>& y,
                       const std::vector<double>& wv, int s) {
@@ -275,22 +281,30 @@ class Problem {
           const int i = at[k];
           const double w = wv[k];
           const double x = tr.x(i, s);
-          (*r)[row] = w * (y[k] - x);
-          if (!J) continue;
-          for (std::size_t c2 = 0; c2 < free_.size(); ++c2) (*J)(row, c2) = -w * tr.S(i, s, free_[c2]);
-          if (tp.z_chi0 >= 0 && s == 0) (*J)(row, tp.z_chi0) = -w;
-          if (tp.z_xi0 >= 0) (*J)(row, tp.z_xi0) = -w * (tr_xi.x(i, s) - x) / h_xi;
+          const bool excluded = row < static_cast<int>(excluded_.size()) && excluded_[row];
+          const double res = excluded ? 0.0 : w * (y[k] - x);  // left out: residual and row 0
+          (*r)[row] = res;
+          finite = finite && std::isfinite(res);
+          if (!rows) continue;
+          double* out = rows->Row();
+          int col = 0;
+          if (tp.z_chi0 >= 0) out[col++] = s == 0 ? -w : 0.0;
+          if (tp.z_xi0 >= 0) out[col++] = -w * (tr_xi.x(i, s) - x) / h_xi;
+          for (int j : free_) out[col++] = -w * tr.S(i, s, j);
+          out[col] = res;
+          for (int c2 = 0; c2 < col; ++c2) {
+            if (excluded) out[c2] = 0.0;
+            finite = finite && std::isfinite(out[c2]);
+          }
+          rows->Commit();
         }
       };
       fill(tp.pos_at, tp.pos_y, tp.pos_w, 0);
       fill(tp.vel_at, tp.vel_y, tp.vel_w, 1);
+      if (rows) rows->EndBlock();
     }
-    for (std::size_t i = 0; i < excluded_.size(); ++i) {
-      if (!excluded_[i]) continue;
-      (*r)[i] = 0.0;
-      if (J) J->row(i).setZero();
-    }
-    return r->allFinite() && (!J || J->allFinite());
+    if (rows) rows->Finish();
+    return finite;
   }
 
  private:
@@ -399,7 +413,7 @@ namespace {
 struct LmOutcome {
   Eigen::VectorXd z;
   Eigen::VectorXd r;
-  Eigen::MatrixXd J;
+  BlockLeastSquares rows;  // J at z, as its block-angular factor
   int iterations = 0;
   bool converged = false;
   bool failed = false;
@@ -415,13 +429,15 @@ struct LmOutcome {
 // i.e. under a hundredth of a standard deviation. A tiny step taken under heavy damping is
 // not convergence (the classic false stop of LM far from the minimum), nor is a point where no
 // step lowers the cost while the Gauss–Newton step is still long: both are reported as not
-// converged and the caller falls back.
+// converged and the caller falls back. JᵀJ and Jᵀr come trial by trial from the block factor
+// (block_least_squares.h), and the steps from its Schur complement.
 constexpr double kNegligibleStep = 0.1;
 
 LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputErrorOptions& o) {
   LmOutcome out;
+  const int shared = p.num_free();
   Eigen::VectorXd r;
-  Eigen::MatrixXd J;
+  BlockLeastSquares J(shared);
   if (!p.Evaluate(z, &r, &J)) {
     out.failed = true;
     out.message = "the simulation fails at the starting parameters";
@@ -430,35 +446,24 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
   }
   double cost = 0.5 * r.squaredNorm();
   double lambda = 1e-3;
-  const int P = p.num_z();
   Eigen::VectorXd r_trial;
-  Eigen::MatrixXd J_trial;
-  const int dof = std::max(1, p.num_r() - p.num_excluded() - P);
+  const int dof = std::max(1, p.num_r() - p.num_excluded() - p.num_z());
   // Gauss–Newton decrement in units of the estimate's standard deviations (squared).
-  auto decrement = [&](const Eigen::MatrixXd& A, const Eigen::VectorXd& g) {
-    const Eigen::VectorXd d = A.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
-    const Eigen::MatrixXd As = d.asDiagonal() * A * d.asDiagonal();  // unit diagonal
-    const Eigen::VectorXd gs = d.asDiagonal() * g;
-    const Eigen::VectorXd step = As.ldlt().solve(gs);
+  auto decrement = [&](const BlockLeastSquares& a) {
     const double s2 = std::max(2.0 * cost / dof, 1e-300);
-    const double dec = gs.dot(step) / s2;
+    const double dec = a.Gradient().dot(a.Solve(a.Gradient(), 0.0)) / s2;
     return std::isfinite(dec) ? std::abs(dec) : std::numeric_limits<double>::infinity();
   };
   for (int it = 0; it < o.max_iterations; ++it) {
-    const Eigen::MatrixXd A = J.transpose() * J;
-    const Eigen::VectorXd g = J.transpose() * r;
-    if (decrement(A, g) < kNegligibleStep * kNegligibleStep) {
+    if (decrement(J) < kNegligibleStep * kNegligibleStep) {
       out.converged = true;
       break;
     }
     out.iterations = it + 1;
-    const Eigen::VectorXd d = A.diagonal().cwiseMax(1e-300);
     bool accepted = false;
     double rel_decrease = 0.0;
     for (int tries = 0; tries < 30; ++tries) {
-      Eigen::MatrixXd M = A;
-      M.diagonal() += lambda * d;
-      const Eigen::VectorXd step = -M.ldlt().solve(g);
+      const Eigen::VectorXd step = -J.Solve(J.Gradient(), lambda);
       if (!step.allFinite()) {
         lambda *= 10;
         continue;
@@ -466,6 +471,7 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
       const Eigen::VectorXd z_new = z + step;
       // The trial point is simulated with its sensitivities: most steps are accepted, and an
       // accepted step then needs no second simulation for its Jacobian.
+      BlockLeastSquares J_trial(shared);
       if (!p.Evaluate(z_new, &r_trial, &J_trial)) {
         lambda *= 10;
         continue;
@@ -485,22 +491,20 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
     }
     if (!accepted) {
       // No step lowers the cost. At the minimum to rounding when the Gauss–Newton step is
-      // tiny in σ units (checked by the caller's final test below); otherwise stalled.
-      out.converged = decrement(A, g) < 1.0;
+      // tiny in σ units (checked by the caller's final test below); otherwise stalled. (The
+      // decrement of the point the last iteration started from: J is unchanged.)
+      const double dec = decrement(J);
+      out.converged = dec < 1.0;
       if (!out.converged) {
         out.message = "Levenberg–Marquardt stalled (no step lowers the cost, the Gauss–Newton "
-                      "step is still " + Fmt(std::sqrt(decrement(A, g)), 3) + " σ long)";
+                      "step is still " + Fmt(std::sqrt(dec), 3) + " σ long)";
       }
       break;
     }
     // The cost no longer changes at all (to the tolerance) with an undamped step: done.
-    if (rel_decrease < o.tolerance && lambda < 1e-2) {
-      const Eigen::MatrixXd A1 = J.transpose() * J;
-      const Eigen::VectorXd g1 = J.transpose() * r;
-      if (decrement(A1, g1) < 1.0) {
-        out.converged = true;
-        break;
-      }
+    if (rel_decrease < o.tolerance && lambda < 1e-2 && decrement(J) < 1.0) {
+      out.converged = true;
+      break;
     }
   }
   if (!out.converged && !out.failed && out.message.empty()) {
@@ -509,7 +513,7 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
   }
   out.z = z;
   out.r = std::move(r);
-  out.J = std::move(J);
+  out.rows = std::move(J);
   return out;
 }
 
@@ -570,13 +574,46 @@ int RefitWithoutGrossErrors(Problem* p, const OutputErrorOptions& o, LmOutcome* 
   return gross;
 }
 
+// The whitened score sums of the trials (covariance.h's WhitenedScoreSum over each trial's
+// groups, in its local columns [own, θ]), fed by a second evaluation at the solution.
+class TrialScoreSums : public BlockRowSink {
+ public:
+  TrialScoreSums(const Prewhitening& plan, int shared) : plan_(plan), shared_(shared) {}
+  void StartBlock(int first_own, int own) override {
+    sum_.emplace(own + shared_, plan_.block);
+    row_.resize(own + shared_ + 1);
+    blocks_.push_back({first_own, own, {}});
+  }
+  double* Row() override { return row_.data(); }
+  void Commit() override {
+    if (run_ < plan_.runs.size() && next_ == plan_.runs[run_].first) sum_->StartGroup(plan_.rho[run_++]);
+    sum_->Add(row_.data(), row_.back());
+    ++next_;
+  }
+  void EndBlock() override {
+    blocks_.back().top = sum_->Sum();
+    batches_ += sum_->batches();
+  }
+  /// Per trial: its first own column, own count and S_t (in `top`).
+  const std::vector<BlockLeastSquares::Block>& sums() const { return blocks_; }
+  int batches() const { return batches_; }
+
+ private:
+  const Prewhitening& plan_;
+  int shared_;
+  std::optional<WhitenedScoreSum> sum_;
+  std::vector<double> row_;
+  std::vector<BlockLeastSquares::Block> blocks_;
+  std::size_t run_ = 0;
+  int next_ = 0, batches_ = 0;
+};
+
 // Residuals correlated over the record (model error or coloured noise): the AR(1)-prewhitened
-// sandwich of z (covariance.h; ρ per trial and sensor), never less than the white-noise one
-// s²·crb_z. (Flooring each σ instead, D·HAC·D with D_jj = max(1, √(s²crb_jj/HAC_jj)), takes
-// VSOR under ρ = 0.9 noise from 83–87% to 94.5–97% coverage but moves bluerov yaw's kq from
-// −0.56 ± 0.07 to ± 0.35: held back, docs/validation.md "Coloured noise".)
+// sandwich of z (covariance.h; ρ per trial and sensor), each σ floored at its white-noise value
+// (below). The scores are summed trial by trial (C·S·C = Σ_t C_t·S_t·C_tᵀ, S_t in the trial's
+// columns); with the analysis' θ block only (many trials), C_t = SharedResponse.
 Eigen::MatrixXd RobustCovariance(const Problem& p, const LmOutcome& lm, double sigma2,
-                                 const Eigen::MatrixXd& crb_z) {
+                                 const BlockAnalysis& fa) {
   std::vector<int> groups(p.num_r());
   for (const TrialProblem& tp : p.trials()) {
     const int npos = static_cast<int>(tp.pos_y.size());
@@ -584,7 +621,25 @@ Eigen::MatrixXd RobustCovariance(const Problem& p, const LmOutcome& lm, double s
       groups[tp.r_offset + k] = 2 * tp.trial->index + (k < npos ? 0 : 1);
     }
   }
-  const Eigen::MatrixXd hac = PrewhitenedSandwich(lm.J, lm.r, groups, &crb_z).covariance;
+  const Prewhitening plan = PlanPrewhitening(lm.r, groups);
+  const int shared = p.num_free(), P = p.num_z();
+  TrialScoreSums sums(plan, shared);
+  Eigen::VectorXd r;
+  if (!p.Evaluate(lm.z, &r, &sums)) return sigma2 * fa.unit_covariance;
+  const double correction = sums.batches() > P ? double(sums.batches()) / (sums.batches() - P) : 1.0;
+  const Eigen::MatrixXd& crb = fa.unit_covariance;
+  Eigen::MatrixXd hac = Eigen::MatrixXd::Zero(crb.rows(), crb.cols());
+  for (std::size_t t = 0; t < sums.sums().size(); ++t) {
+    const BlockLeastSquares::Block& st = sums.sums()[t];
+    Eigen::MatrixXd K(crb.rows(), st.own + shared);  // C_t: crb's columns [own, θ]
+    if (fa.dense) {
+      K << crb.middleCols(st.first, st.own), crb.leftCols(shared);
+    } else {
+      K = SharedResponse(lm.rows.blocks()[t], crb, shared);
+    }
+    hac.noalias() += K * st.top * K.transpose();
+  }
+  hac *= correction;
   // Each σ at least its white-noise value, the sandwich's correlations kept: D·HAC·D with
   // D_jj = max(1, √(s²·crb_jj / HAC_jj)). Replacing the whole matrix by the white one when any
   // entry (an initial state) fell below it threw away the colour of every other entry: VSOR
@@ -592,9 +647,8 @@ Eigen::MatrixXd RobustCovariance(const Problem& p, const LmOutcome& lm, double s
   // residuals of lag-1 0.93) is ± 0.35.
   Eigen::VectorXd d(hac.rows());
   for (int j = 0; j < hac.rows(); ++j) {
-    const double white = sigma2 * crb_z(j, j);
-    d[j] = hac(j, j) > 0 ? std::max(1.0, std::sqrt(white / hac(j, j))) : 1.0;
-    if (!(hac(j, j) > 0)) return sigma2 * crb_z;  // a degenerate sandwich: the white matrix
+    if (!(hac(j, j) > 0)) return sigma2 * crb;  // a degenerate sandwich: the white matrix
+    d[j] = std::max(1.0, std::sqrt(sigma2 * crb(j, j) / hac(j, j)));
   }
   return d.asDiagonal() * hac * d.asDiagonal();
 }
@@ -607,20 +661,19 @@ void StoreCovariance(const Problem& p, const LmOutcome& lm, const std::vector<in
   res->cost = 0.5 * lm.r.squaredNorm();
   res->sigma2 = lm.r.squaredNorm() / (res->num_residuals - p.num_z());
   LeastSquaresOptions lso;
-  lso.covariance = CovarianceKind::kKnownNoise;
   lso.max_condition = o.max_condition;
-  const LinearFit lin = SolveLeastSquares(lm.J, lm.r, nullptr, lso);
-  res->condition_number = lin.condition_number;
+  const BlockAnalysis fa = AnalyseBlocks(lm.rows, lso);
+  res->condition_number = fa.condition_number;
   res->not_identifiable.clear();
-  for (int c : lin.not_identifiable) {
+  for (int c : fa.not_identifiable) {
     res->not_identifiable.push_back(c < static_cast<int>(free.size()) ? res->names[free[c]]
                                                                        : "initial state");
   }
-  const Eigen::MatrixXd& crb_z = lin.covariance;
+  const Eigen::MatrixXd& crb_z = fa.unit_covariance;
   res->residual_lag1 = ResidualLag1(p, lm.r);
   res->hac_covariance = res->residual_lag1 > o.whiteness_threshold;
   const Eigen::MatrixXd cov_z =
-      res->hac_covariance ? RobustCovariance(p, lm, res->sigma2, crb_z) : res->sigma2 * crb_z;
+      res->hac_covariance ? RobustCovariance(p, lm, res->sigma2, fa) : res->sigma2 * crb_z;
   res->covariance.setZero();
   res->crb.setZero();
   for (std::size_t a = 0; a < free.size(); ++a) {
@@ -629,9 +682,10 @@ void StoreCovariance(const Problem& p, const LmOutcome& lm, const std::vector<in
       res->crb(free[a], free[b]) = crb_z(a, b);
     }
   }
-  res->status = lin.status != FitStatus::kOk ? OutputErrorStatus::kIllConditioned
-                : lm.converged               ? OutputErrorStatus::kConverged
-                                             : OutputErrorStatus::kMaxIterations;
+  const bool ill = fa.condition_number > o.max_condition || !fa.not_identifiable.empty();
+  res->status = ill            ? OutputErrorStatus::kIllConditioned
+                : lm.converged ? OutputErrorStatus::kConverged
+                               : OutputErrorStatus::kMaxIterations;
   if (!lm.converged) res->notes.push_back(lm.message);
 }
 
@@ -752,13 +806,13 @@ Eigen::MatrixXd CramerRaoBound(const model::DofModel& model,
   }
   const Problem p(model, trials, theta, free, initial.empty() ? nullptr : &initial, o);
   Eigen::VectorXd r;
-  Eigen::MatrixXd J;
+  BlockLeastSquares J(p.num_free());
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(np, np);
   if (!p.Evaluate(p.InitialZ(), &r, &J)) return out;
-  const Eigen::MatrixXd M = J.transpose() * J;  // Fisher information with r scaled by 1/σ
-  const Eigen::MatrixXd C = M.ldlt().solve(Eigen::MatrixXd::Identity(M.rows(), M.cols()));
+  // The θ block of M⁻¹, M = JᵀJ the Fisher information with r scaled by 1/σ.
   for (std::size_t a = 0; a < free.size(); ++a) {
-    for (std::size_t b = 0; b < free.size(); ++b) out(free[a], free[b]) = C(a, b);
+    const Eigen::VectorXd column = J.Solve(Eigen::VectorXd::Unit(p.num_z(), a), 0.0);
+    for (std::size_t b = 0; b < free.size(); ++b) out(free[b], free[a]) = column[b];
   }
   return out;
 }

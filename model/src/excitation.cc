@@ -155,14 +155,18 @@ std::unique_ptr<Excitation> MakeSegmentsExcitation(std::vector<Segment> segments
 
 std::unique_ptr<Excitation> MakeHeldExcitation(std::vector<double> t, std::vector<double> force,
                                                std::vector<int> mapping, double duration) {
-  // Drop samples without a force value: the previous command holds (zero-order hold).
+  // Drop samples without a force value: the previous command holds (zero-order hold). A row
+  // that repeats the previous command changes nothing and is not kept (a log at 100 Hz of
+  // legs of 10–40 s holds 1,000–4,000 rows per command; issue #16).
   std::vector<double> tt, ff;
   std::vector<int> mm;
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (std::isnan(force[i])) continue;
+    const int m = i < mapping.size() ? mapping[i] : -1;
+    if (!ff.empty() && force[i] == ff.back() && m == mm.back()) continue;
     tt.push_back(t[i]);
     ff.push_back(force[i]);
-    mm.push_back(i < mapping.size() ? mapping[i] : -1);
+    mm.push_back(m);
   }
   if (!tt.empty()) tt.front() = std::min(tt.front(), 0.0);
   return std::make_unique<HeldExcitation>(std::move(tt), std::move(ff), std::move(mm), duration);

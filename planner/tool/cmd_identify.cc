@@ -78,7 +78,7 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
 }
 
 int RunIdentify(const IdentifyCommandOptions& co) {
-  const model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
+  model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
   ident::IdentifyOptions o = co.identify;
   o.dofs = ParseDofFlags(co.dofs);
   for (const std::string& s : co.steady) AddSteadyWindow(s, campaign, &o);
@@ -94,7 +94,7 @@ int RunIdentify(const IdentifyCommandOptions& co) {
     throw InputError("--forgetting", "the forgetting factor belongs to --method rls (seed 004 "
                                      "eq. 15), not to method " + co.method);
   }
-  const ident::IdentifyResult result = ident::Identify(campaign, o);
+  const ident::IdentifyResult result = ident::IdentifyReleasingLogs(&campaign, o);
 
   std::ostream& out = ReportStream(co.json);
   out << "Identification of " << co.campaign << " (vehicle '" << campaign.vehicle.name << "', "

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <map>
 #include <string>
 
 #include "uuvplan/io/plausibility.h"
@@ -117,25 +116,11 @@ void CheckCampaignTrial(const model::Campaign& campaign, std::size_t index, cons
 
 void CheckCampaignWork(const model::Campaign& campaign, const Value& trials) {
   double rows = 0;
-  std::map<model::Dof, std::pair<double, double>> fit;  // DOF -> (fit rows, fit trials)
-  for (const model::TrialEntry& trial : campaign.trials) {
-    rows += static_cast<double>(trial.log.size());
-    if (trial.use != model::TrialUse::kFit) continue;
-    fit[trial.dof].first += static_cast<double>(trial.log.size());
-    fit[trial.dof].second += 1;
-  }
+  for (const model::TrialEntry& trial : campaign.trials) rows += static_cast<double>(trial.log.size());
   if (rows > model::limits::kMaxCampaignRows) {
     trials.Fail(std::to_string(campaign.trials.size()) + " trials hold " + Significant(rows, 3) +
                 " rows, more than the " + Significant(model::limits::kMaxCampaignRows, 3) +
                 " a campaign may hold in memory: split it into campaigns");
-  }
-  for (const auto& [dof, size] : fit) {
-    if (size.first * size.second <= model::limits::kMaxRowsTimesTrials) continue;
-    trials.Fail(Significant(size.second, 4) + " " + std::string(model::DofName(dof)) +
-                " fit trials of " + Significant(size.first, 3) + " rows in all: the output " +
-                "error would hold rows × trials = " + Significant(size.first * size.second, 3) +
-                " numbers (at most " + Significant(model::limits::kMaxRowsTimesTrials, 3) +
-                "): fewer, longer trials, or some as 'use: validate'");
   }
 }
 

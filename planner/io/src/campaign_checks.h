@@ -1,7 +1,7 @@
 // Cross-checks of a campaign's trials (issue #15), beyond each file's own format: what makes
 // identification silently meaningless. Run by ReadCampaign on each trial as it is read.
-//  - work: all rows of the campaign, and for each DOF (fit rows) × (fit trials), within the
-//    work limits (model/work_limits.h; refused whatever the user accepts);
+//  - work: all rows of the campaign within the work limits (model/work_limits.h; refused
+//    whatever the user accepts);
 //  - plausibility (io/plausibility.h, --accept-implausible): the same log listed twice (a trial
 //    fit and validated on the same data validates nothing), a time column whose sampling
 //    interval does not fit the sensor's declared rate (×1000: a time column in ms), a trial

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <utility>
 #include <vector>
 
 namespace uuvplan::ident {
@@ -34,6 +35,45 @@ struct PrewhitenedCovariance {
 PrewhitenedCovariance PrewhitenedSandwich(const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
                                           const std::vector<int>& groups,
                                           const Eigen::MatrixXd* bread_inverse = nullptr);
+
+/// The AR(1) prewhitening of residuals r grouped by `groups` (consecutive equal labels form a
+/// run): ρ of each run (Ar1Coefficient), the innovations' batch length, the runs themselves.
+struct Prewhitening {
+  std::vector<std::pair<int, int>> runs;  ///< [begin, end) rows of each run
+  std::vector<double> rho;                ///< of each run
+  double mean_rho = 0.0;
+  int block = 1;
+};
+Prewhitening PlanPrewhitening(const Eigen::VectorXd& r, const std::vector<int>& groups);
+
+/// The sandwich's middle matrix S = Σ_b g_b g_bᵀ, g_b = Σ_{j∈b} Z_jᵀ û_j (the batch scores of
+/// covariance.h's file comment), accumulated row by row in time order, never holding Z or J.
+/// Z_j = Σ_{i≥j} ρ^{i−j} J_i is a backward recursion; forward, with q_i = Σ_{j∈b, j≤i} ρ^{i−j} û_j,
+///   g_b = A_b + c_b·Z_{e_b},   A_b = Σ_{i∈b} q_i J_i,   c_b = ρ·q_{e_b−1},
+///   Z_{e_b} = Σ_{b'>b} ρ^{s_b' − e_b} W_b',   W_b = Σ_{i∈b} ρ^{i−s_b} J_i,
+/// and S = Σ_b [A_bA_bᵀ + μ_b W_bW_bᵀ + (m_b + v_b)W_bᵀ + W_b(m_b + v_b)ᵀ] with the forward sums
+///   m_{b+1} = ρ^{L_b}·m_b + c_b·A_b,   μ_{b+1} = ρ^{2L_b}·μ_b + c_b²,   v_{b+1} = ρ^{L_b}·(v_b + μ_b·W_b)
+/// (L_b the batch length; all zero at the start of a group). Memory O(columns²), whatever the rows.
+class WhitenedScoreSum {
+ public:
+  WhitenedScoreSum(int columns, int block);
+  /// A new group (run) of rows with AR(1) coefficient ρ.
+  void StartGroup(double rho);
+  /// The next row of the group: its derivatives J_i and residual r_i.
+  void Add(const double* jacobian_row, double residual);
+  /// S so far (closes the open batch), and the number of batches (closed ones).
+  const Eigen::MatrixXd& Sum();
+  int batches() const { return batches_; }
+
+ private:
+  void CloseBatch();
+  int block_;
+  double rho_ = 0.0, previous_r_ = 0.0, q_ = 0.0, power_ = 1.0, mu_ = 0.0;
+  int in_batch_ = 0, batches_ = 0;
+  bool first_row_ = true;
+  Eigen::VectorXd a_, w_, m_, v_;
+  Eigen::MatrixXd s_;
+};
 
 /// The first lag at which the autocorrelation of u, pooled within runs of equal `groups`
 /// labels, falls below 2/√n (searched up to a twentieth of the longest run; 1 for short u).

@@ -205,6 +205,9 @@ struct IdentifyResult {
 /// force or measurement columns, unknown mappings, invalid options); numerical trouble is
 /// reported in the result.
 IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& options);
+/// The same, releasing each trial's log as soon as it is prepared (its columns are not needed
+/// after: a million-row log is 24 MB; issue #16). `campaign` keeps everything else.
+IdentifyResult IdentifyReleasingLogs(model::Campaign* campaign, const IdentifyOptions& options);
 
 /// A priori parameter values of a DOF model (vehicle inertia bounds' midpoint, drag prior,
 /// η = 1, …) overridden by `guess`: the nominal-θ policy of identification (the starting

@@ -80,6 +80,17 @@ struct LinearFit {
   bool ok() const { return status == FitStatus::kOk; }
 };
 
+/// The square upper-triangular factor R of a column-scaled regression matrix B = QR, analysed as
+/// SolveLeastSquares does: singular values, condition number, the columns in near-null
+/// combinations and the truncated pseudo-inverse R⁺ ((BᵀB)⁺ = R⁺R⁺ᵀ).
+struct ScaledFactor {
+  Eigen::VectorXd singular_values;  ///< descending
+  double condition_number = 0.0;
+  std::vector<int> not_identifiable;
+  Eigen::MatrixXd pseudo_inverse;
+};
+ScaledFactor AnalyseScaledFactor(const Eigen::MatrixXd& R, const LeastSquaresOptions& options);
+
 /// Solves y = H·theta (+ e) in the weighted least-squares sense. `weights` (may be null: all 1)
 /// are the w_i of the rows; `groups` (may be null) labels rows so that Newey–West lags stay
 /// within a group (e.g. a trial).

@@ -17,10 +17,8 @@ inline constexpr double kMaxSimulationSteps = 1e8;
 /// Rows of all the trials of one campaign, read or simulated (the campaign is held in memory).
 inline constexpr double kMaxCampaignRows = 2e7;
 
-/// For one DOF, (fitted rows) × (fit trials): the output error's Jacobian is dense, one column
-/// per fit trial's initial velocity beside the parameters' (ident/src/output_error.cc), so its
-/// memory is 8 B × rows × trials — 400 MB here. 200 trials of 2,934 rows (half of them fit)
-/// are 2.9e7 (395 MB peak, 48 s); 2,000 such trials would need 35 GB.
-inline constexpr double kMaxRowsTimesTrials = 5e7;
+// No limit on (fit rows) × (fit trials) any more: the output error accumulates its normal
+// equations trial by trial (ident/block_least_squares.h), so its memory is O(rows + trials), not
+// rows × trials (issue #15: 2,000 trials of 2,934 rows, docs/performance.md).
 
 }  // namespace uuvplan::model::limits
