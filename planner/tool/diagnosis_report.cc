@@ -59,8 +59,9 @@ void PrintStaticMaps(const ident::Finding& f, std::ostream& out) {
   for (const auto& c : f.static_maps) {
     out << "       " << std::setw(11) << c.shape << "  AIC " << model::Significant(c.aic, 6);
     for (const auto& p : c.params) {
-      out << ", " << p.name << " = " << Cell(p.value) << " ± " << Cell(p.sigma)
-          << UnitText(model::Unit(p.name, f.dof));
+      const bool held = p.state == ident::ParameterState::kFixed;
+      out << ", " << p.name << " = " << Cell(p.value) << (held ? "" : " ± " + Cell(p.sigma))
+          << UnitText(model::Unit(p.name, f.dof)) << (held ? " (held at its bound)" : "");
     }
     if (c.scored) {
       out << "; validate MAE " << model::Significant(c.validate_mae, 4)

@@ -187,6 +187,12 @@ void ChooseStaticMap(const model::Campaign& campaign, const TrialDataOptions& da
     for (const ParameterEstimate& e : f.oe.estimates) {
       if (!linear.Has(e.name) && e.name != "m") c.params.push_back(e);
     }
+    for (const std::string& name : f.held_at_bound) {  // the data wants it outside its range
+      if (linear.Has(name)) continue;
+      c.params.push_back({name, f.held.at(name), 0.0, ParameterState::kFixed});
+      c.physical = false;
+      c.why = name + " held at its admissible bound " + Fmt(f.held.at(name));
+    }
     const double n = f.oe.num_residuals;
     c.aic = n * std::log(2.0 * f.oe.cost / n) + 2.0 * f.free_parameters;
     c.validate_mae = PooledVelocityMae(*f.model, f.oe.theta, validate_p, oe.step_s, &c.why);
