@@ -71,7 +71,7 @@ void PrintStaticMaps(const ident::Finding& f, std::ostream& out) {
     } else {
       out << "; not scored on held-out data" << (c.why.empty() ? "" : ": " + c.why);
     }
-    if (!c.physical) out << " (non-physical" << (c.why.empty() ? "" : ": " + c.why) << ")";
+    if (!c.physical) out << " (not chosen" << (c.why.empty() ? "" : ": " + c.why) << ")";
     out << "\n";
   }
 }

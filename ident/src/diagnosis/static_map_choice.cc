@@ -177,6 +177,7 @@ void ChooseStaticMap(const model::Campaign& campaign, const TrialDataOptions& da
   }
   const auto power_law = PerTrialMae(current, validate, oe.step_s);
   std::vector<std::vector<std::pair<double, int>>> held_out;
+  double linear_cost = 1e300;
   for (const auto& [shape, structure] : shapes) {
     StaticMapCandidate c;
     c.shape = shape;
@@ -184,6 +185,11 @@ void ChooseStaticMap(const model::Campaign& campaign, const TrialDataOptions& da
         FitPhysical(vehicle, structure, fit_p, current.values, current.dropped, oe, current.values);
     c.why = NonPhysical(current, f);
     c.physical = c.why.empty() && f.oe.num_residuals > f.free_parameters && f.oe.cost > 0;
+    if (shape == "linear") linear_cost = f.oe.cost;
+    if (c.physical && f.oe.cost > linear_cost * (1 + 1e-6)) {  // it nests linear (d = 0, η = 1)
+      c.physical = false;
+      c.why = "its fit did not reach the linear map's cost, which it contains: not converged";
+    }
     for (const ParameterEstimate& e : f.oe.estimates) {
       if (!linear.Has(e.name) && e.name != "m") c.params.push_back(e);
     }

@@ -126,7 +126,10 @@ struct StaticMapCandidate {
   /// Validate-trial velocity MAE, and its difference from the power law's, paired by trial
   /// (positive: worse), with σ = √(T/(T−1)·Σ w_t²(d_t − δ)²), w_t the trial's share of samples.
   double validate_mae = 0.0, vs_power_law = 0.0, vs_power_law_sigma = 0.0;
-  bool scored = false, physical = true;
+  bool scored = false;
+  /// Within the admissible ranges and converged (a map that contains linear fits at least as
+  /// well); only these are chosen.
+  bool physical = true;
   std::string why;  ///< why not scored or not physical
 };
 
