@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "model_selection.h"
@@ -72,6 +73,43 @@ Eigen::MatrixXd Projected(const LaggedSystem& s) {
   return s.Z * zz.solve(s.F);
 }
 
+// ψ of the two-stage least squares, ψ = (X̂ᵀF)⁻¹X̂ᵀY.
+Eigen::VectorXd TwoStageSolution(const LaggedSystem& s) {
+  const Eigen::MatrixXd X = Projected(s);
+  return (X.transpose() * s.F).fullPivLu().solve(X.transpose() * s.Y);
+}
+
+// Feasible weights (two-step GLS): each trial's rows weighted by 1/(mean squared residual of
+// its rows at the first-pass ψ) instead of 1/(its sensor's noise). On tartan the rows'
+// residual variance is 10–500× the sensor's, by a ratio that varies 300× between chunks
+// (model error and disturbances the controller fights, not sensor noise): weighted by the
+// sensor, a quiet chunk outweighs the informative ones and the halves of the campaign
+// disagree. With sensor noise alone (the virtual twin) both weightings agree.
+void WeightTrialsByResiduals(const Eigen::VectorXd& psi, OneStepRows* R) {
+  std::map<int, std::pair<double, int>> sum;  // trial → (Σ e², rows)
+  for (Eigen::Index k = 0; k < R->Y.size(); ++k) {
+    const double e = R->Y[k] - R->F.row(k).dot(psi);
+    sum[R->group[k]].first += e * e;
+    sum[R->group[k]].second += 1;
+  }
+  for (Eigen::Index k = 0; k < R->Y.size(); ++k) {
+    const auto& [sq, n] = sum[R->group[k]];
+    if (sq > 0) R->weight[k] = n / sq;
+  }
+}
+
+// Condition number of A = X̂ᵀF with its rows and columns scaled to unit norm of X̂ and F: the
+// columns' units (N·s against s) and the rows' weights do not enter it.
+double EquilibratedCondition(const Eigen::MatrixXd& A, const Eigen::MatrixXd& X,
+                             const Eigen::MatrixXd& F) {
+  Eigen::MatrixXd B = A;
+  for (Eigen::Index j = 0; j < B.rows(); ++j) B.row(j) /= std::max(1e-300, X.col(j).norm());
+  for (Eigen::Index j = 0; j < B.cols(); ++j) B.col(j) /= std::max(1e-300, F.col(j).norm());
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(B);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  return sv[0] / std::max(1e-300, sv[sv.size() - 1]);
+}
+
 // d: the correlation length (in knots) of the least-squares residuals + 1, within the bounds.
 int InstrumentLag(const OneStepRows& R, const ClosedLoopIvOptions& o) {
   const Eigen::VectorXd sw =
@@ -101,7 +139,8 @@ void Finish(const model::DofModel& model, const Eigen::VectorXd& theta, const On
   os << "closed-loop instrumental variables (two-stage least squares) on " << f.num_rows
      << " one-step rows, instruments the rows " << out->lag_knots << "–"
      << out->lag_knots + out->instrument_lags - 1 << " knots (from "
-     << model::Significant(out->lag_s, 3) << " s) earlier, σ from an MA(1) sandwich";
+     << model::Significant(out->lag_s, 3) << " s) earlier, rows weighted per trial by "
+     << (out->residual_weights ? "its residuals" : "its sensor noise") << ", σ from an MA(1) sandwich";
   f.message = os.str();
 }
 
@@ -121,12 +160,20 @@ ClosedLoopIvResult SolveIv(const model::DofModel& model, const std::vector<const
   OneStepOptions rows = one_step;
   rows.window_s = o.knot_s;
   rows.split_at_force_jumps = false;
-  const OneStepRows R = ExcitedRows(model, trials, theta, free, rows, &f);
+  OneStepRows R = ExcitedRows(model, trials, theta, free, rows, &f);
   const int p = static_cast<int>(R.F.cols());
   out.lag_knots = InstrumentLag(R, o);
   out.instrument_lags = o.instrument_lags;
-  const LaggedSystem s = Lagged(R, out.lag_knots, o.instrument_lags);
+  LaggedSystem s = Lagged(R, out.lag_knots, o.instrument_lags);
   f.num_rows = static_cast<int>(s.Y.size());
+  if (o.weight_by_residuals && f.num_rows >= 3 * p) {
+    const Eigen::VectorXd first = TwoStageSolution(s);
+    if (first.allFinite()) {
+      WeightTrialsByResiduals(first, &R);
+      s = Lagged(R, out.lag_knots, o.instrument_lags);
+      out.residual_weights = true;
+    }
+  }
   if (f.num_rows < 3 * p) {
     f.status = FitStatus::kTooFewData;
     f.message = "closed-loop instrumental variables: " + std::to_string(f.num_rows) +
@@ -137,8 +184,7 @@ ClosedLoopIvResult SolveIv(const model::DofModel& model, const std::vector<const
   const Eigen::MatrixXd X = Projected(s);
   const Eigen::MatrixXd A = X.transpose() * s.F;
   Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A);
-  f.condition_number = svd.singularValues()[0] / std::max(1e-300, svd.singularValues()[p - 1]);
+  f.condition_number = EquilibratedCondition(A, X, s.F);
   if (!lu.isInvertible() || !(f.condition_number < one_step.max_condition)) {
     f.status = FitStatus::kIllConditioned;
     f.message = "closed-loop instrumental variables: the lagged rows do not determine the "

@@ -170,7 +170,7 @@ void Accept(Significant* sig, const DiagnosisGain& g, std::set<std::string>* use
             DofDiagnosis* d, DiagnosisResult* result) {
   CandidateTest& test = result->tests[sig->test];
   test.accepted = true;
-  Finding f{test.effect, d->dof, "", {}, test.statistic, test.added_parameters, test.p_value, g, {}};
+  Finding f{test.effect, d->dof, "", {}, test.statistic, test.added_parameters, test.p_value, g, {}, {}, ""};
   std::vector<model::ParameterValue> values;
   for (const std::string& name : sig->candidate.added) {
     const int k = FindEstimate(sig->fit.oe.estimates, name);
@@ -241,7 +241,9 @@ void AddInputNoise(const model::Campaign& campaign, const DiagnoseOptions& optio
 // from those values. A finding accepted early was fitted without the effects found after it,
 // whose part of the error it absorbs (ROMEO surge: the backward η fitted before the
 // asymmetric drag take up the backward drag, 0.741 and 0.808 for the true 0.80 and 0.89).
-void FinalParameters(const model::Vehicle& vehicle, DofDiagnosis* d) {
+void FinalParameters(const model::Campaign& campaign, const DiagnoseOptions& options,
+                     DofDiagnosis* d) {
+  const model::Vehicle& vehicle = campaign.vehicle;
   for (std::size_t i = 0; i < d->found.size(); ++i) {
     Finding& f = d->found[i];
     const Candidate& c = d->accepted[i];
@@ -262,6 +264,8 @@ void FinalParameters(const model::Vehicle& vehicle, DofDiagnosis* d) {
     if (c.effect->describe) f.what = c.effect->describe({values, d->breakdown, c.proposal.detail});
     if (f.effect == "thrust_map") {
       f.thrust_maps = diagnosis::CorrectedThrustMaps(vehicle, d->current, d->fit);
+      diagnosis::ChooseStaticMap(campaign, options.identify.data, d->current, d->fit, d->validate,
+                                 options.output_error, &f);
       for (const CorrectedThrustMap& m : f.thrust_maps) {
         f.what += "; " + m.mapping + ": the delivered thrust is " + m.shape + " (|command|^" +
                   Fmt(m.command_exponent, 3) + " ± " + Fmt(m.command_exponent_sigma, 2) + ")";
@@ -367,7 +371,7 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
     }
   }
   AddInputNoise(campaign, options, &d, result);
-  FinalParameters(campaign.vehicle, &d);
+  FinalParameters(campaign, options, &d);
   for (const std::string& p : d.current.held_at_bound) {
     result->notes.push_back(name + ": the extended model holds " + p + " at its admissible bound " +
                             Fmt(d.current.held.at(p)) + " " + model::Unit(p, d.dof) +

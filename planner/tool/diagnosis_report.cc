@@ -50,6 +50,32 @@ void PrintBreakdown(const ident::ErrorBreakdown& b, std::ostream& out) {
   }
 }
 
+// The static maps compared in place of the power law (diagnosis.md §5), and the one chosen.
+void PrintStaticMaps(const ident::Finding& f, std::ostream& out) {
+  if (f.static_maps.empty()) return;
+  out << "     static maps in place of the power law (linear unless another predicts the validate "
+         "trials better by > 2σ, then by AIC on the fit trials): chosen "
+      << (f.chosen_map.empty() ? "none (no physical fit)" : f.chosen_map) << "\n";
+  for (const auto& c : f.static_maps) {
+    out << "       " << std::setw(11) << c.shape << "  AIC " << model::Significant(c.aic, 6);
+    for (const auto& p : c.params) {
+      const bool held = p.state == ident::ParameterState::kFixed;
+      out << ", " << p.name << " = " << Cell(p.value) << (held ? "" : " ± " + Cell(p.sigma))
+          << UnitText(model::Unit(p.name, f.dof)) << (held ? " (held at its bound)" : "");
+    }
+    if (c.scored) {
+      out << "; validate MAE " << model::Significant(c.validate_mae, 4)
+          << UnitText(std::string(model::VelocityUnit(f.dof))) << ", vs the power law "
+          << (c.vs_power_law >= 0 ? "+" : "") << model::Significant(c.vs_power_law, 3) << " ± "
+          << model::Significant(c.vs_power_law_sigma, 2) << UnitText(std::string(model::VelocityUnit(f.dof)));
+    } else {
+      out << "; not scored on held-out data" << (c.why.empty() ? "" : ": " + c.why);
+    }
+    if (!c.physical) out << " (not chosen" << (c.why.empty() ? "" : ": " + c.why) << ")";
+    out << "\n";
+  }
+}
+
 // The corrected static thrust map of a thrust_map finding, per thruster command.
 void PrintThrustMap(const ident::CorrectedThrustMap& m, std::ostream& out) {
   out << "     corrected thrust map of " << m.mapping << " (thruster " << m.thruster
@@ -58,11 +84,14 @@ void PrintThrustMap(const ident::CorrectedThrustMap& m, std::ostream& out) {
       << m.shape << "\n       for the vehicle file: thrust: {model: poly2, a: "
       << model::Significant(m.poly2_a, 4) << ", b: " << model::Significant(m.poly2_b, 4) << "}\n"
       << "       " << std::setw(10) << "command" << std::setw(16) << "nominal (N)" << std::setw(24)
-      << "delivered (N)" << "\n";
-  for (const auto& r : m.rows) {
+      << "power law (N)" << std::setw(16) << "chosen map (N)" << "\n";
+  for (std::size_t i = 0; i < m.rows.size(); ++i) {
+    const auto& r = m.rows[i];
+    const double chosen = i < m.chosen_force.size() ? m.chosen_force[i] : std::nan("");
     out << "       " << std::setw(10) << model::Significant(r.command, 3) << std::setw(16)
         << model::Significant(r.nominal, 4) << std::setw(24)
-        << (model::Significant(r.delivered, 4) + " ± " + model::Significant(r.sigma, 2)) << "\n";
+        << (model::Significant(r.delivered, 4) + " ± " + model::Significant(r.sigma, 2))
+        << std::setw(16) << (std::isfinite(chosen) ? model::Significant(chosen, 4) : "-") << "\n";
   }
 }
 
@@ -83,6 +112,7 @@ void PrintFindings(const ident::DiagnosisResult& r, std::ostream& out) {
         << f.gain.before << " -> " << f.gain.after << " (" << std::setprecision(0)
         << 100.0 * f.gain.relative << "% better) on " << f.gain.on << "\n";
     for (const auto& m : f.thrust_maps) PrintThrustMap(m, out);
+    PrintStaticMaps(f, out);
   }
 }
 

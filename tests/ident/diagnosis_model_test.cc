@@ -93,6 +93,25 @@ const Finding* Named(const DiagnosisResult& r, const std::string& effect) {
   return nullptr;
 }
 
+// A thrust_map finding compares the three static maps, each physical and scored on the
+// validate trials with a σ, and tabulates the chosen one at every command of its tables.
+void ExpectStaticMapChosen(const Finding& f) {
+  ASSERT_EQ(f.static_maps.size(), 3u);
+  for (const StaticMapCandidate& c : f.static_maps) {
+    EXPECT_TRUE(c.scored) << c.shape << ": " << c.why;
+    EXPECT_TRUE(std::isfinite(c.vs_power_law_sigma)) << c.shape;
+    EXPECT_TRUE(c.physical) << c.shape << ": " << c.why;
+  }
+  ASSERT_FALSE(f.chosen_map.empty());
+  for (const CorrectedThrustMap& m : f.thrust_maps) {
+    ASSERT_EQ(m.chosen_force.size(), m.rows.size());
+    for (std::size_t i = 0; i < m.rows.size(); ++i) {
+      EXPECT_TRUE(std::isfinite(m.chosen_force[i])) << m.mapping << " row " << i;
+      EXPECT_GE(m.chosen_force[i] * m.rows[i].command, 0.0);  // thrust follows the command's sign
+    }
+  }
+}
+
 // Virtual twin of the BlueROV test below: a thrust map wrong in shape (hidden-effect draw 1)
 // plus a thruster lag of 0.25 time constants (the middle of the draws' 0.15–0.35). Diagnosis
 // must name both with a gain on the validate trials, give the corrected map and σ for the
@@ -116,6 +135,7 @@ TEST(DiagnosisModelTest, ThrustMapAndLagWrittenOutAndScored) {
   }
   ASSERT_EQ(Named(r, "thrust_map")->thrust_maps.size(), 2u);  // mappings A and B
   EXPECT_FALSE(Named(r, "thrust_map")->thrust_maps[0].shape.empty());
+  ExpectStaticMapChosen(*Named(r, "thrust_map"));
   ASSERT_EQ(r.breakdowns.size(), 1u);
   EXPECT_GT(r.breakdowns[0].lag_sigma_s, 0.0);
   EXPECT_GT(r.breakdowns[0].drift_sigma_per_hour, 0.0);
@@ -150,6 +170,10 @@ TEST(DiagnosisModelTest, RealBluerovThrustMapShapeAndLagScored) {
   EXPECT_LT(r.findings[0].params[0].value, -0.3);
   ASSERT_EQ(r.findings[0].thrust_maps.size(), 1u);
   EXPECT_EQ(r.findings[0].thrust_maps[0].shape, "linear in the command");
+  // The static map in place of the power law: linear (README defect 1). The dead band and the
+  // reverse gain fit better by AIC but predict the validate runs no better than 2σ.
+  ExpectStaticMapChosen(r.findings[0]);
+  EXPECT_EQ(r.findings[0].chosen_map, "linear");
   ExpectPhysical(r);
   ExpectScoreReproducesGains(campaign, r, "bluerov-all", o.output_error.step_s);
 }

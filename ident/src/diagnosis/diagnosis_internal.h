@@ -87,6 +87,16 @@ void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
 std::vector<CorrectedThrustMap> CorrectedThrustMaps(const model::Vehicle& vehicle,
                                                     const StructureFit& f, const Trials& trials);
 
+/// The static map (linear, dead-band, asymmetric) that replaces `current`'s power law, each
+/// fitted on `fit` and scored on `validate`; the lowest AIC of the physical ones is chosen
+/// (static_map_choice.cc). Fills finding->static_maps, chosen_map and each table's chosen_force.
+void ChooseStaticMap(const model::Campaign& campaign, const TrialDataOptions& data,
+                     const StructureFit& current, const Trials& fit, const Trials& validate,
+                     const OutputErrorOptions& oe, Finding* finding);
+
+/// "" when every parameter of `ext` lies in its family's admissible range, else which does not.
+std::string NonPhysical(const StructureFit& base, const StructureFit& ext);
+
 /// Largest |φⁿ| over the trials.
 double MaxForce(const Trials& trials);
 

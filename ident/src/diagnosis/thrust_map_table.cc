@@ -106,7 +106,7 @@ std::vector<CorrectedThrustMap> CorrectedThrustMaps(const model::Vehicle& vehicl
         [](const auto& a, const auto& b) { return std::abs(a.second) < std::abs(b.second); });
     const model::Thruster& thruster = vehicle.thrusters[ref_share.first];
     const double share = ref_share.second;
-    CorrectedThrustMap map{mapping.name, thruster.name, {}, 0, 0, 0, 0, 0, 0, ""};
+    CorrectedThrustMap map{mapping.name, thruster.name, {}, 0, 0, 0, 0, 0, 0, {}, ""};
     CommandRange(vehicle, m, ref_share.first, share, trials, &map.smallest_command,
                  &map.largest_command);
     if (!(map.largest_command > map.smallest_command && map.smallest_command > 0)) continue;

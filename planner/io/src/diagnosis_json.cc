@@ -29,6 +29,9 @@ json ThrustMapJson(const ident::CorrectedThrustMap& m) {
                     {"delivered", r.delivered},
                     {"sigma", r.sigma}});
   }
+  for (std::size_t i = 0; i < m.chosen_force.size() && i < rows.size(); ++i) {
+    rows[i]["chosen"] = JsonNumber(m.chosen_force[i]);
+  }
   return {{"mapping", m.mapping},
           {"thruster", m.thruster},
           {"shape", m.shape},
@@ -55,6 +58,24 @@ json ModelJson(const ident::DofIdentification& d) {
             {"validate", JsonNumber(d.fit.velocity_mae_validate)}}}};
 }
 
+// The static maps compared in place of a thrust_map's power law (SI; NaN as null).
+json StaticMapsJson(const ident::Finding& f) {
+  json out = json::array();
+  for (const auto& c : f.static_maps) {
+    json params = json::object();
+    for (const auto& p : c.params) params[p.name] = {{"value", p.value}, {"sigma", p.sigma}};
+    out.push_back({{"shape", c.shape},
+                   {"params", params},
+                   {"aic", JsonNumber(c.aic)},
+                   {"validate_mae", JsonNumber(c.validate_mae)},
+                   {"vs_power_law", JsonNumber(c.vs_power_law)},
+                   {"vs_power_law_sigma", JsonNumber(c.vs_power_law_sigma)},
+                   {"scored", c.scored},
+                   {"physical", c.physical}});
+  }
+  return out;
+}
+
 json FindingJson(const ident::Finding& f) {
   json params = json::object();
   for (const auto& p : f.params) params[p.name] = {{"value", p.value}, {"sigma", p.sigma}};
@@ -71,6 +92,8 @@ json FindingJson(const ident::Finding& f) {
             {"relative", JsonNumber(f.gain.relative)},
             {"on", f.gain.on}}},
           {"thrust_maps", maps},
+          {"static_maps", StaticMapsJson(f)},
+          {"chosen_map", f.chosen_map},
           {"statistic", f.statistic},
           {"p_value", f.p_value},
           {"added_parameters", f.added_parameters}};

@@ -17,7 +17,9 @@
 // is a moving average shorter than the lag) and its covariance the sandwich A⁻¹·X̂ᵀΩX̂·A⁻ᵀ,
 // A = X̂ᵀF, Ω the MA(1) of the rows' residuals (consecutive rows share a knot), as the one-step
 // least squares (least_squares.h Ma1VarianceModelCovariance). The same lag removes the errors-in-variables bias of the
-// noisy ξ̃ in F.
+// noisy ξ̃ in F. The rows are weighted per trial by the inverse of the trial's residual
+// variance at a first pass weighted by the sensor (feasible GLS, two steps), since on real logs
+// model error and disturbances, not the sensor, set the rows' error.
 #pragma once
 
 #include <Eigen/Dense>
@@ -40,6 +42,9 @@ struct ClosedLoopIvOptions {
   /// L > 1: two-stage least squares, whose projected regressors are the instruments). One lag
   /// alone is weak where ξ and ξ|ξ| move together (tartan: correlation 0.9).
   int instrument_lags = 4;
+  /// Two-step weights: each trial's rows by 1/(its mean squared first-pass residual), not by
+  /// its sensor's noise (closed_loop_iv.cc WeightTrialsByResiduals; docs/identification.md).
+  bool weight_by_residuals = true;
   /// Seed 000 §IV-D model selection among `prunable` (identify's prune switch applies).
   bool prune_insignificant = true;
   std::vector<std::string> prunable = {"k", "kq", "bias", "bias_step"};
@@ -51,6 +56,7 @@ struct ClosedLoopIvResult {
   int lag_knots = 0;       ///< d
   int instrument_lags = 1; ///< L
   double lag_s = 0.0;      ///< d in seconds (mean knot spacing × d)
+  bool residual_weights = false;  ///< the rows weighted by their trial's residuals
   bool ok() const { return fit.ok(); }
 };
 

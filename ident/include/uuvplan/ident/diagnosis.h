@@ -106,9 +106,31 @@ struct CorrectedThrustMap {
   /// Least-squares fit of the delivered force by the vehicle file's poly2 thrust model
   /// f = sign(V)·(a·V² + b·|V|), a, b ≥ 0: the map to put in the vehicle file.
   double poly2_a = 0.0, poly2_b = 0.0;
+  /// The chosen static map (Finding::chosen_map) at each row's command, N (NaN: none chosen).
+  std::vector<double> chosen_force;
   /// "linear in the command", "square in the command" (each when that power law stays within
   /// 20% of the fitted one over the commands of the data) or "a power of the command, |command|^n".
   std::string shape;
+};
+
+/// A static thrust map fitted in place of a thrust_map finding's power law (diagnosis.md §5):
+/// each sample's force re-mapped through the reference thruster's command V,
+/// linear f = g·V (g = Thrust(V_ref)/V_ref, V_ref the largest |V| of the data: the map agrees
+/// with the vehicle file's at the largest command), "dead-band" the same after a dead zone
+/// (parameter `deadzone`, in N of DOF force), "asymmetric" with the reverse gain a free η
+/// (eta.<mapping>.neg); the rest of the extended model refitted on the fit trials.
+struct StaticMapCandidate {
+  std::string shape;                      ///< "linear", "dead-band" or "asymmetric"
+  std::vector<ParameterEstimate> params;  ///< its own parameters (none for linear)
+  double aic = 0.0;                       ///< N·ln(2C/N) + 2P on the fit trials (C: ½‖r‖²)
+  /// Validate-trial velocity MAE, and its difference from the power law's, paired by trial
+  /// (positive: worse), with σ = √(T/(T−1)·Σ w_t²(d_t − δ)²), w_t the trial's share of samples.
+  double validate_mae = 0.0, vs_power_law = 0.0, vs_power_law_sigma = 0.0;
+  bool scored = false;
+  /// Within the admissible ranges and converged (a map that contains linear fits at least as
+  /// well); only these are chosen.
+  bool physical = true;
+  std::string why;  ///< why not scored or not physical
 };
 
 struct Finding {
@@ -122,6 +144,12 @@ struct Finding {
   DiagnosisGain gain;
   /// thrust_map findings: the corrected static map of each mapping of the fit trials.
   std::vector<CorrectedThrustMap> thrust_maps;
+  /// thrust_map findings: the static maps compared and the one chosen: linear unless a map
+  /// with a parameter predicts the validate trials better by more than 2σ (paired by trial),
+  /// then the lowest AIC of those; without validate trials the lowest AIC; physical fits only
+  /// (empty when none).
+  std::vector<StaticMapCandidate> static_maps;
+  std::string chosen_map;
 };
 
 /// One candidate's test (also those not retained), for the report.
