@@ -21,28 +21,7 @@
 namespace uuvplan::planner {
 namespace {
 
-// Seed 000 §IV-D: 35 ± 25 N, 26 s, two periods in surge-front.
-model::TrialDesign PaperSurgeSine() {
-  model::TrialDesign d;
-  d.id = "paper";
-  d.dof = model::Dof::kSurge;
-  d.kind = model::TrialKind::kSine;
-  d.mapping = "surge-front";
-  d.offset = 35.0;
-  d.amplitude = 25.0;
-  d.omega = 2 * M_PI / 26.0;
-  d.duration = 52.0;
-  return d;
-}
-
-double WorstRelativeSigmaM(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& M) {
-  double worst = 0.0;
-  for (std::size_t j = 0; j < M.size(); ++j) {
-    const double m = ctx.design_thetas()[j][0];
-    worst = std::max(worst, PredictedSigma(M[j], ctx.design_thetas()[j])[0] / m);
-  }
-  return worst;
-}
+using testing::PaperSurgeSine;
 
 // The trial as its schedule entry gives it to another tool: the sampled profile, held between
 // samples (the profile is ≤ 0.1 s apart and samples both sides of every jump).
@@ -112,8 +91,8 @@ TEST_F(RomeoSurgeFamilies, ScheduleAt52sBeatsThePaperThreeTimesOverAndReplaysFea
   const ScheduleResult r = PlanSchedule(v_, pool_, o);
   ASSERT_FALSE(r.schedule.trials.empty()) << r.message;
   const PlannedTrial& t = r.schedule.trials.front();
-  const double planned = WorstRelativeSigmaM(*ctx_, ctx_->Information(t.design));
-  const double paper = WorstRelativeSigmaM(*ctx_, ctx_->Information(PaperSurgeSine()));
+  const double planned = testing::WorstSigmaM(*ctx_, ctx_->Information(t.design));
+  const double paper = testing::WorstSigmaM(*ctx_, ctx_->Information(PaperSurgeSine()));
   std::cout << "[ romeo surge ] " << t.design.id << " (" << model::InputFamilyName(t.design.family)
             << "): worst sigma(m)/m " << planned << ", paper " << paper << ", ratio "
             << planned / paper << "\n";
@@ -174,8 +153,8 @@ TEST_P(FamiliesAgainstTheSine, HalveTheWorstSigmaOfTheMass) {
   o.fixed_duration_s = sine.trial.design.duration;
   const SineDesignResult best = DesignInertiaTrial(*ctx, o, {}, "best");
   ASSERT_EQ(best.status, DesignStatus::kOk) << best.message;
-  const double s = WorstRelativeSigmaM(*ctx, sine.information);
-  const double b = WorstRelativeSigmaM(*ctx, best.information);
+  const double s = testing::WorstSigmaM(*ctx, sine.information);
+  const double b = testing::WorstSigmaM(*ctx, best.information);
   std::cout << "[ " << GetParam().vehicle << " " << model::DofName(GetParam().dof) << " ] "
             << sine.trial.design.duration << " s: single sine " << s << ", "
             << model::InputFamilyName(best.trial.design.family) << " " << b << ", ratio " << b / s
