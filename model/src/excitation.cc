@@ -129,7 +129,78 @@ class HeldExcitation final : public Excitation {
   mutable std::size_t last_ = 0;
 };
 
+class SwitchedExcitation final : public Excitation {
+ public:
+  SwitchedExcitation(SwitchedWave wave, double duration)
+      : wave_(std::move(wave)), duration_(duration), switches_(wave_.Switches(duration)) {}
+  double Force(double t) const override {
+    int mapping = -1;
+    return wave_.Force(t, &mapping);
+  }
+  int Mapping(double t) const override {
+    int mapping = -1;
+    wave_.Force(t, &mapping);
+    return mapping;
+  }
+  void Sample(double t, double* force, int* mapping) const override {
+    *force = wave_.Force(t, mapping);
+  }
+  std::vector<double> Breakpoints() const override { return switches_; }
+  double duration() const override { return duration_; }
+
+ private:
+  SwitchedWave wave_;
+  double duration_;
+  std::vector<double> switches_;
+};
+
 }  // namespace
+
+double SwitchedWave::Wave(double t) const {
+  double w = offset;
+  for (const SineComponent& c : components) w += c.amplitude * std::sin(c.omega * t + c.phase);
+  return w;
+}
+
+double SwitchedWave::Force(double t, int* mapping) const {
+  const double w = Wave(t);
+  if (w >= 0) {
+    *mapping = mapping_pos;
+    return std::max(w, floor_pos);
+  }
+  *mapping = mapping_neg;
+  return std::min(w, -floor_neg);
+}
+
+std::vector<double> SwitchedWave::Switches(double duration) const {
+  // Sampled at 1/100 of the shortest period (at most 0.05 s), each sign change bisected.
+  double h = 0.05;
+  for (const SineComponent& c : components) {
+    if (c.omega > 0 && c.amplitude != 0) h = std::min(h, 2 * M_PI / c.omega / 100.0);
+  }
+  std::vector<double> out;
+  if (!(duration > 0)) return out;
+  const std::size_t n = static_cast<std::size_t>(std::ceil(duration / h));
+  double t0 = 0.0, w0 = Wave(0.0);
+  for (std::size_t i = 1; i <= n; ++i) {
+    const double t1 = std::min(duration, i * h), w1 = Wave(t1);
+    if ((w0 >= 0) != (w1 >= 0)) {
+      double a = t0, b = t1;
+      while (b - a > 1e-9) {
+        const double c = 0.5 * (a + b);
+        ((Wave(c) >= 0) == (w0 >= 0) ? a : b) = c;
+      }
+      if (b > 0 && b < duration) out.push_back(b);
+    }
+    t0 = t1;
+    w0 = w1;
+  }
+  return out;
+}
+
+std::unique_ptr<Excitation> MakeSwitchedExcitation(SwitchedWave wave, double duration) {
+  return std::make_unique<SwitchedExcitation>(std::move(wave), duration);
+}
 
 std::unique_ptr<Excitation> MakeSteadyExcitation(double force, int mapping, double duration) {
   return std::make_unique<SteadyExcitation>(force, mapping, duration);

@@ -33,6 +33,27 @@ int MappingOf(const Vehicle& v, const std::string& name, const TrialDesign& d) {
 }  // namespace
 
 std::string_view TrialKindName(TrialKind kind) { return kTrialKindNames.Name(kind); }
+std::string_view InputFamilyName(InputFamily family) { return kInputFamilyNames.Name(family); }
+
+namespace {
+// The wave with mapping indices left unresolved (-1 / -2 stand for mapping / mapping_neg).
+SwitchedWave WaveOf(const TrialDesign& d) {
+  SwitchedWave w;
+  w.offset = d.offset;
+  w.components = d.components;
+  w.floor_pos = d.floor_pos;
+  w.floor_neg = d.floor_neg;
+  w.mapping_pos = 0;
+  w.mapping_neg = 1;
+  return w;
+}
+// Bound of |w - offset|: Σ|a_i|.
+double WaveSwing(const TrialDesign& d) {
+  double s = 0.0;
+  for (const auto& c : d.components) s += std::abs(c.amplitude);
+  return s;
+}
+}  // namespace
 
 double TrialDesign::NominalForce(double t) const {
   switch (kind) {
@@ -42,11 +63,20 @@ double TrialDesign::NominalForce(double t) const {
       const SegmentDesign* s = SegmentAt(*this, t);
       return s != nullptr ? s->force : 0.0;
     }
+    case TrialKind::kSwitched: {
+      int which = 0;
+      return WaveOf(*this).Force(t, &which);
+    }
   }
   return 0.0;
 }
 
 const std::string& TrialDesign::MappingAt(double t) const {
+  if (kind == TrialKind::kSwitched) {
+    int which = 0;
+    WaveOf(*this).Force(t, &which);
+    return which == 0 ? mapping : mapping_neg;
+  }
   if (kind != TrialKind::kSegments) return mapping;
   const SegmentDesign* s = SegmentAt(*this, t);
   return s != nullptr && !s->mapping.empty() ? s->mapping : mapping;
@@ -61,6 +91,15 @@ std::vector<ForceDemand> TrialDesign::Demands() const {
       std::vector<ForceDemand> out;
       for (const auto& s : segments) {
         out.push_back({s.mapping.empty() ? mapping : s.mapping, s.force, s.force});
+      }
+      return out;
+    }
+    case TrialKind::kSwitched: {
+      std::vector<ForceDemand> out;
+      const double swing = WaveSwing(*this);
+      if (offset + swing >= 0) out.push_back({mapping, floor_pos, std::max(floor_pos, offset + swing)});
+      if (offset - swing < 0) {
+        out.push_back({mapping_neg, std::min(-floor_neg, offset - swing), -floor_neg});
       }
       return out;
     }
@@ -88,8 +127,16 @@ std::unique_ptr<Excitation> MakeExcitation(const Vehicle& vehicle, const TrialDe
       }
       return MakeSegmentsExcitation(std::move(segs));
     }
+    case TrialKind::kSwitched: return MakeSwitchedExcitation(SwitchedWaveOf(vehicle, d), d.duration);
   }
   return nullptr;
+}
+
+SwitchedWave SwitchedWaveOf(const Vehicle& vehicle, const TrialDesign& d) {
+  SwitchedWave w = WaveOf(d);
+  w.mapping_pos = MappingOf(vehicle, d.mapping, d);
+  w.mapping_neg = MappingOf(vehicle, d.mapping_neg, d);
+  return w;
 }
 
 }  // namespace uuvplan::model

@@ -13,6 +13,8 @@
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/determinacy.h"
+#include "uuvplan/planner/switched_design.h"
+#include "uuvplan/planner/trial_envelope.h"
 
 namespace uuvplan::planner {
 
@@ -182,7 +184,7 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
     }
   }
   if (o.sine_trial) {
-    SineDesignResult sn = DesignSine(*ctx, o.sine, info, name + "-sine");
+    SineDesignResult sn = DesignInertiaTrial(*ctx, o.sine, info, name + "-sine");
     for (auto& n : sn.notes) plan.notes.push_back(std::move(n));
     if (sn.status == DesignStatus::kOk) {
       for (std::size_t j = 0; j < info.size(); ++j) info[j] += sn.information[j];
@@ -235,6 +237,7 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
     }
   }
   plan.predicted = PredictPrecision(*ctx, info, &plan.notes);
+  for (auto& t : plan.trials) AddReplayFields(vehicle, pool, &t);
   return plan;
 }
 
@@ -365,7 +368,7 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
   SineDesignOptions so = o.schedule.sine;
   so.criterion = o.criterion;
   so.interest.clear();
-  const SineDesignResult sn = DesignSine(ctx, so, M0, o.id);
+  const SineDesignResult sn = DesignInertiaTrial(ctx, so, M0, o.id);
   for (const auto& n : sn.notes) result.notes.push_back(n);
   if (sn.status == DesignStatus::kOk) ranking.TakeSine(sn, &result);
   const SteadyCandidates cands = MakeSteadyCandidates(ctx, o.schedule.steady);
@@ -381,6 +384,7 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
   std::vector<Eigen::MatrixXd> total = best_info;
   for (std::size_t j = 0; j < total.size(); ++j) total[j] += M0[j];
   result.criterion_after = best;
+  AddReplayFields(vehicle, pool, &result.trial);
   result.predicted = PredictPrecision(ctx, total, &result.notes);
   result.predicted.criterion = std::string(CriterionName(o.criterion));
   result.predicted.criterion_value = best;

@@ -1,6 +1,7 @@
 #include "uuvplan/planner/trial_envelope.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "uuvplan/model/excitation.h"
@@ -76,6 +77,51 @@ ThrusterForces ThrusterForcesOf(const model::Vehicle& vehicle, const model::Tria
     }
   }
   return f;
+}
+
+TrialProfile SampleProfile(const model::Vehicle& vehicle, const model::TrialDesign& design,
+                           double max_spacing_s) {
+  TrialProfile p;
+  if (!(design.duration > 0) || !(max_spacing_s > 0)) return p;
+  const auto input = model::MakeExcitation(vehicle, design);
+  const int points = static_cast<int>(std::ceil(design.duration / max_spacing_s - 1e-9)) + 1;
+  p.t = SampleTimes(*input, design.duration, std::max(points, 2));
+  p.t.erase(std::unique(p.t.begin(), p.t.end()), p.t.end());
+  for (double t : p.t) {
+    double phi = 0.0;
+    int mapping = -1;
+    input->Sample(t, &phi, &mapping);
+    p.force.push_back(phi);
+    p.mapping.push_back(mapping >= 0 ? vehicle.mappings[mapping].name : "");
+  }
+  return p;
+}
+
+StartPosition StartOf(const model::Pool& pool, model::Dof dof, const std::array<double, 2>& travel) {
+  StartPosition s;
+  const double free = pool.FreeTravel(dof), span = travel[1] - travel[0];
+  // Centred: the slack (free - span) split between both ends, the start -travel[0] above it.
+  const double from_end = (std::isfinite(free) ? std::max(0.0, free - span) / 2 : 0.0) - travel[0];
+  if (model::IsRotational(dof)) {
+    s.value = from_end * 180.0 / M_PI;
+    s.unit = "deg";
+    s.from = std::isfinite(free) ? "the heading at the tether's counter-clockwise end of its " +
+                                       std::string(model::DofName(dof)) + " travel"
+                                 : "the heading the trial starts at";
+    return s;
+  }
+  static const char* const kFrom[3] = {"the rear wall (negative surge)",
+                                       "the port wall (negative sway)",
+                                       "the surface (negative heave, z down)"};
+  s.value = pool.margin + from_end;
+  s.unit = "m";
+  s.from = kFrom[model::Index(dof) % 3];
+  return s;
+}
+
+void AddReplayFields(const model::Vehicle& vehicle, const model::Pool& pool, PlannedTrial* trial) {
+  trial->profile = SampleProfile(vehicle, trial->design);
+  trial->start = StartOf(pool, trial->design.dof, trial->travel);
 }
 
 }  // namespace uuvplan::planner

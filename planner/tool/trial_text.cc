@@ -19,6 +19,16 @@ void SegmentsText(const model::TrialDesign& d, const ForceTextStyle& style,
   }
 }
 
+// "switched-sine 10.0 + 120.0·sin(0.21t + 0.00) N, surge-front / surge-rear".
+void SwitchedText(const model::TrialDesign& d, const std::string& unit, std::ostream& s) {
+  s << model::InputFamilyName(d.family) << " " << d.offset;
+  for (const auto& c : d.components) {
+    s << " + " << std::abs(c.amplitude) << "·sin(" << std::setprecision(3) << c.omega << "t + "
+      << std::setprecision(2) << c.phase << ")" << std::setprecision(1);
+  }
+  s << unit << ", " << d.mapping << " / " << d.mapping_neg;
+}
+
 }  // namespace
 
 std::string ForceText(const model::TrialDesign& d, const ForceTextStyle& style) {
@@ -40,6 +50,9 @@ std::string ForceText(const model::TrialDesign& d, const ForceTextStyle& style) 
       break;
     case model::TrialKind::kSegments:
       SegmentsText(d, style, unit, s);
+      break;
+    case model::TrialKind::kSwitched:
+      SwitchedText(d, unit, s);
       break;
   }
   return s.str();

@@ -338,6 +338,10 @@ TEST(StopRulesTest, SmallPoolStopsStuckNamingThePool) {
   LoopOptions o;
   o.step.dofs = {Dof::kSurge};
   o.step.identify.prune_insignificant = true;
+  // The issue's families (single-mapping sines and legs): a mapping-switched trial (issue #17)
+  // oscillates in place and determines surge in 3 m (the loop converges), so the pool limit this
+  // test exercises exists only without them.
+  o.step.schedule.sine.families.clear();
   const LoopResult r = RunLoop(RomeoTruth(), small, o);
   ASSERT_EQ(r.status, LoopStatus::kStuck) << r.message;
   EXPECT_FALSE(r.converged);

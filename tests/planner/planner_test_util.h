@@ -2,11 +2,16 @@
 // with one open-water mapping for analytic oracles.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "uuvplan/io/io.h"
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
+#include "uuvplan/planner/criteria.h"
+#include "uuvplan/planner/dof_context.h"
 
 namespace uuvplan::planner::testing {
 
@@ -53,6 +58,31 @@ inline model::Pool BigPool() {
   p.depth = 1e6;
   p.margin = 0.0;
   return p;
+}
+
+// Seed 000 §IV-D: 35 N offset, 25 N amplitude, 26 s period in surge-front; "a couple of
+// sinusoidal periods in a maneuvering space of about 20 m": two periods, 52 s.
+inline model::TrialDesign PaperSurgeSine() {
+  model::TrialDesign d;
+  d.id = "paper";
+  d.dof = model::Dof::kSurge;
+  d.kind = model::TrialKind::kSine;
+  d.mapping = "surge-front";
+  d.offset = 35.0;
+  d.amplitude = 25.0;
+  d.omega = 2 * M_PI / 26.0;
+  d.duration = 52.0;
+  return d;
+}
+
+/// Worst relative σ(m) over the design points of ctx's box for information M (per point).
+inline double WorstSigmaM(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& M) {
+  double worst = 0.0;
+  for (std::size_t j = 0; j < M.size(); ++j) {
+    const double rel = PredictedSigma(M[j], ctx.design_thetas()[j])[0] / ctx.design_thetas()[j][0];
+    worst = std::max(worst, rel);
+  }
+  return worst;
 }
 
 }  // namespace uuvplan::planner::testing

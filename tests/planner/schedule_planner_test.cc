@@ -53,8 +53,12 @@ TEST_F(RomeoSchedule, SurgeScheduleIsCompleteOrderedAndTimed) {
   const ScheduleResult& r = *surge_;
   ASSERT_EQ(r.status, PlanStatus::kOk) << r.message;
   ASSERT_GE(r.schedule.trials.size(), 2u);
-  // Steady runs first, the sine for the inertia last (seed 000 §III: drag, then inertia).
-  EXPECT_EQ(r.schedule.trials.back().design.kind, model::TrialKind::kSine);
+  // Steady runs first, the inertia trial last (seed 000 §III: drag, then inertia): the sine or
+  // a mapping-switched family (issue #17).
+  const model::TrialDesign& inertia = r.schedule.trials.back().design;
+  EXPECT_TRUE(inertia.kind == model::TrialKind::kSine ||
+              inertia.family != model::InputFamily::kPlain)
+      << inertia.id;
   double total = 0.0;
   for (const auto& t : r.schedule.trials) total += t.design.duration;
   total += 60.0 * (r.schedule.trials.size() - 1);  // PlannerOptions::pause_s
@@ -105,14 +109,16 @@ TEST_F(RomeoSchedule, SurgeScheduleFitsItsPoolAndA6mPoolIsRefused) {
 }
 
 TEST_F(RomeoSchedule, PriorInformationReducesThePredictedSigma) {
-  // An earlier trial that measured m to 1% (σ = 8 kg at ~700 kg) adds to every design.
+  // An earlier trial that measured m as well as the planned one does (σ = 1 kg: the switched
+  // design alone reaches ~1.2 kg, issue #17; a 1% prior, 8 kg, adds 2% information, below the
+  // optimiser's reproducibility) adds to every design.
   ScheduleOptions o = SurgeOnly();
   o.steady_runs = false;
   o.max_completion_trials = 0;  // the sine alone leaves the η undetermined: partial, planned
   ScheduleResult without = PlanSchedule(*vehicle_, *pool_, o);
   PriorInformation prior;
   prior.names = {"m"};
-  prior.M = Eigen::MatrixXd::Constant(1, 1, 1.0 / 64.0);
+  prior.M = Eigen::MatrixXd::Constant(1, 1, 1.0);
   o.prior[model::Dof::kSurge] = prior;
   ScheduleResult with = PlanSchedule(*vehicle_, *pool_, o);
   ASSERT_NE(without.status, PlanStatus::kInfeasible) << without.message;

@@ -20,29 +20,8 @@
 namespace uuvplan::planner {
 namespace {
 
-// Seed 000 §IV-D: 35 N offset, 25 N amplitude, 26 s period in surge-front; "a couple of
-// sinusoidal periods in a maneuvering space of about 20 m": two periods, 52 s.
-model::TrialDesign PaperSurgeSine() {
-  model::TrialDesign d;
-  d.id = "paper";
-  d.dof = model::Dof::kSurge;
-  d.kind = model::TrialKind::kSine;
-  d.mapping = "surge-front";
-  d.offset = 35.0;
-  d.amplitude = 25.0;
-  d.omega = 2 * M_PI / 26.0;
-  d.duration = 52.0;
-  return d;
-}
-
-double WorstSigmaM(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& M) {
-  double worst = 0.0;
-  for (std::size_t j = 0; j < M.size(); ++j) {
-    const double rel = PredictedSigma(M[j], ctx.design_thetas()[j])[0] / ctx.design_thetas()[j][0];
-    worst = std::max(worst, rel);
-  }
-  return worst;
-}
+using testing::PaperSurgeSine;
+using testing::WorstSigmaM;
 
 // Every mass of the a priori box (11 values from 495 to 900 kg) at the drag's low, nominal and
 // high values: the trial stays in the pool, and no working thruster reverses or drops below

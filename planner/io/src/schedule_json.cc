@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -51,6 +52,31 @@ void KindFieldsToJson(const model::TrialDesign& d, json* j) {
     case model::TrialKind::kSegments:
       (*j)["segments"] = SegmentsToJson(d);
       break;
+    case model::TrialKind::kSwitched: {
+      (*j)["offset"] = d.offset;
+      json components = json::array();
+      for (const auto& c : d.components) {
+        components.push_back({{"amplitude", c.amplitude}, {"omega", c.omega}, {"phase", c.phase}});
+      }
+      (*j)["components"] = components;
+      (*j)["mapping_neg"] = d.mapping_neg;
+      (*j)["floor"] = {d.floor_pos, d.floor_neg};
+      break;
+    }
+  }
+}
+
+// The sampled nominal profile (issue #17: any tool can replay it) and the start position.
+void ProfileToJson(const PlannedTrial& trial, json* j) {
+  if (!trial.profile.t.empty()) {
+    (*j)["profile"] = {{"t", trial.profile.t},
+                       {"force", trial.profile.force},
+                       {"mapping", trial.profile.mapping}};
+  }
+  if (!trial.start.from.empty()) {
+    (*j)["start"] = {{"value", trial.start.value},
+                     {"unit", trial.start.unit},
+                     {"from", trial.start.from}};
   }
 }
 
@@ -127,6 +153,33 @@ void CheckSegmentsDuration(const JsonValue& trial, const model::TrialDesign& d) 
   }
 }
 
+// A switched trial's wave: offset, components [{amplitude, omega, phase}], mapping_neg and the
+// floors [pos, neg] (>= 0).
+void SwitchedFieldsOf(const JsonValue& j, model::TrialDesign* d) {
+  d->offset = Number(j.Required("offset", "a switched trial's mean force"), "a number (N or N·m)");
+  const JsonValue list = j.Required("components", "a switched trial's sinusoids");
+  if (!list.json().is_array()) list.Expected("an array of {amplitude, omega, phase}");
+  for (std::size_t i = 0; i < list.json().size(); ++i) {
+    const JsonValue c = list.Item(i);
+    if (!c.json().is_object()) c.Expected("an object {amplitude, omega, phase}");
+    model::SineComponent s;
+    s.amplitude = Number(c.Required("amplitude", "N or N·m"));
+    s.omega = NonNegativeNumber(c.Required("omega", "rad/s"), "a number >= 0 (rad/s)");
+    s.phase = Number(c.Required("phase", "rad"));
+    d->components.push_back(s);
+  }
+  d->mapping_neg = String(j.Required("mapping_neg", "the mapping of the negative half"),
+                          "a mapping name");
+  const JsonValue floor = j.Required("floor", "[pos, neg] smallest |force| of each mapping");
+  const json& f = floor.json();
+  if (!f.is_array() || f.size() != 2 || !f[0].is_number() || !f[1].is_number() ||
+      !(f[0].get<double>() >= 0) || !(f[1].get<double>() >= 0)) {
+    floor.Expected("[pos, neg], two numbers >= 0 (N or N·m)");
+  }
+  d->floor_pos = f[0].get<double>();
+  d->floor_neg = f[1].get<double>();
+}
+
 // The fields of the trial's kind.
 void KindFieldsOf(const JsonValue& j, model::TrialDesign* d) {
   switch (d->kind) {
@@ -145,7 +198,20 @@ void KindFieldsOf(const JsonValue& j, model::TrialDesign* d) {
       d->segments = SegmentsOf(j.Required("segments", "a segments trial's legs"), d->mapping);
       CheckSegmentsDuration(j, *d);
       break;
+    case model::TrialKind::kSwitched:
+      SwitchedFieldsOf(j, d);
+      break;
   }
+}
+
+// start: {value, unit, from} (the profile is written for other tools; the design replays).
+planner::StartPosition StartOf(const JsonValue& v) {
+  if (!v.json().is_object()) v.Expected("an object {value, unit, from}");
+  planner::StartPosition s;
+  s.value = Number(v.Required("value", "m or deg"));
+  s.unit = String(v.Required("unit", "m or deg"), "a unit (m or deg)");
+  s.from = String(v.Required("from", "what the value is measured from"), "a named wall or heading");
+  return s;
 }
 
 // travel: [min, max] with min <= max (m or rad).
@@ -224,9 +290,11 @@ json TrialToJson(const PlannedTrial& trial) {
   j["duration"] = d.duration;
   j["mapping"] = d.mapping;
   KindFieldsToJson(d, &j);
+  if (d.family != model::InputFamily::kPlain) j["family"] = std::string(model::InputFamilyName(d.family));
   j["travel"] = {trial.travel[0], trial.travel[1]};
   j["thrust_min"] = trial.thrust_min;
   if (d.ballast_steps != 0) j["ballast_steps"] = d.ballast_steps;
+  ProfileToJson(trial, &j);
   return j;
 }
 
@@ -249,7 +317,7 @@ PlannedTrial TrialFromJson(const JsonValue& j) {
   model::TrialDesign& d = trial.design;
   d.id = TrialId(j.Required("id", "the trial's name"));
   d.dof = DofOf(j.Required("dof", "surge, sway, heave, roll, pitch or yaw"));
-  d.kind = KindOf(j.Required("kind", "steady, sine or segments"));
+  d.kind = KindOf(j.Required("kind", "steady, sine, segments or switched"));
   d.duration = PlausibleDuration(j.Required("duration", "s"));
   d.mapping = String(j.Required("mapping", "the thrust mapping of the trial"), "a mapping name");
   KindFieldsOf(j, &d);
@@ -258,6 +326,14 @@ PlannedTrial TrialFromJson(const JsonValue& j) {
     trial.thrust_min = NonNegativeNumber(*t, "a number >= 0 (N)");
   }
   if (const auto b = j.Optional("ballast_steps")) d.ballast_steps = WholeNonNegative(*b);
+  if (const auto f = j.Optional("family")) {
+    const auto family = f->json().is_string()
+                            ? model::kInputFamilyNames.Parse(f->json().get<std::string>())
+                            : std::nullopt;
+    if (!family) f->Expected("an input family (" + model::kInputFamilyNames.List() + ")");
+    d.family = *family;
+  }
+  if (const auto s = j.Optional("start")) trial.start = StartOf(*s);
   return trial;
 }
 

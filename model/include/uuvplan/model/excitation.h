@@ -50,6 +50,33 @@ std::unique_ptr<Excitation> MakeSegmentsExcitation(std::vector<Segment> segments
 std::unique_ptr<Excitation> MakeHeldExcitation(std::vector<double> t, std::vector<double> force,
                                                std::vector<int> mapping, double duration);
 
+/// One sinusoid of a waveform: amplitude·sin(omega·t + phase).
+struct SineComponent {
+  double amplitude = 0.0;  ///< N or N·m
+  double omega = 0.0;      ///< rad/s
+  double phase = 0.0;      ///< rad
+};
+
+/// A mapping-switched waveform (issue #17): w(t) = offset + Σ_i a_i·sin(ω_i·t + p_i). Where
+/// w >= 0 the force is max(w, floor_pos) in mapping_pos, where w < 0 it is min(w, -floor_neg)
+/// in mapping_neg: each sign in the mapping that pushes that way in open water (seed 000 Table
+/// I), so no thruster reverses, and |phi_n| never drops below the floors (min_thrust / share:
+/// at a zero crossing the force jumps from one mapping's floor to the other's).
+struct SwitchedWave {
+  double offset = 0.0;
+  std::vector<SineComponent> components;
+  double floor_pos = 0.0, floor_neg = 0.0;  ///< >= 0 (N or N·m)
+  int mapping_pos = -1, mapping_neg = -1;
+
+  double Wave(double t) const;
+  /// phi_n(t) and the mapping in force.
+  double Force(double t, int* mapping) const;
+  /// Zero crossings of w in (0, duration) (where the mapping switches), to 1e-9 s.
+  std::vector<double> Switches(double duration) const;
+};
+/// The switched waveform as an excitation; its switches are breakpoints.
+std::unique_ptr<Excitation> MakeSwitchedExcitation(SwitchedWave wave, double duration);
+
 /// Velocities of the other DOFs during a trial (for coupling terms): at time t, fills
 /// v[Index(dof)] for every DOF other than the trial's own.
 class AuxVelocities {

@@ -12,12 +12,30 @@
 
 namespace uuvplan::planner {
 
+/// The nominal input sampled for replay (issue #17): phi_n (N or N·m) and the mapping in force
+/// at times at most 0.1 s apart, plus both sides of every jump.
+struct TrialProfile {
+  std::vector<double> t;  ///< s from the trial start
+  std::vector<double> force;
+  std::vector<std::string> mapping;
+};
+
+/// Where the trial starts: `value` in `unit` (m, or deg for a rotation) from `from` (a named
+/// wall, or for a rotation the heading at the tether's counter-clockwise end of its travel).
+struct StartPosition {
+  double value = 0.0;
+  std::string unit;
+  std::string from;  ///< empty: not planned
+};
+
 struct PlannedTrial {
   model::TrialDesign design;
   /// Predicted excursion from the start over the whole a priori box (m or rad): [min, max].
   std::array<double, 2> travel = {0.0, 0.0};
   /// Smallest |tau| of a working thruster over the trial and the box (N).
   double thrust_min = 0.0;
+  TrialProfile profile;  ///< empty until the planner samples it (SampleProfile)
+  StartPosition start;   ///< where the travel over the box is centred in the pool
 };
 
 struct PredictedPrecision {

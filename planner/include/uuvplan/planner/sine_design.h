@@ -54,6 +54,12 @@ struct SineDesignOptions {
   std::vector<std::string> mappings;  ///< restrict to these mappings (empty: all of the DOF)
   /// Direction of phi: +1 or -1 only, 0 both.
   int sign = 0;
+  /// The mapping-switched families the inertia trial may also take (switched_design.h); the
+  /// single sine above is always designed (the seed's design, the fallback). Empty: the sine
+  /// alone.
+  std::vector<model::InputFamily> families = {model::InputFamily::kSwitchedSquare,
+                                              model::InputFamily::kSwitchedSine,
+                                              model::InputFamily::kMultisine};
 
   bool IsValid(std::string* error) const;
 };

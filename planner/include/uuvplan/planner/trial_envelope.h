@@ -7,8 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "uuvplan/model/pool.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/planner/dof_context.h"
+#include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::planner {
 
@@ -35,5 +37,21 @@ struct ThrusterForces {
 /// every breakpoint of the input (so a step is drawn as a step).
 ThrusterForces ThrusterForcesOf(const model::Vehicle& vehicle, const model::TrialDesign& design,
                                 int points);
+
+/// The nominal input phi_n(t) and the mapping in force, sampled for replay (issue #17): a
+/// uniform grid at most `max_spacing_s` apart from 0 to the duration, plus both sides of every
+/// jump (1e-9·duration before it and at it), so that a zero-order hold or a linear
+/// interpolation of the samples reproduces the design.
+TrialProfile SampleProfile(const model::Vehicle& vehicle, const model::TrialDesign& design,
+                           double max_spacing_s = 0.1);
+
+/// Where a trial whose travel over the box is [travel[0], travel[1]] (from its start) starts so
+/// that the travel is centred in the pool's free length, width or depth (or in the tether's
+/// turns): metres from the rear wall (surge), the port wall (sway) or the surface (heave), or
+/// degrees clockwise from the heading at the tether's counter-clockwise end for a rotation.
+StartPosition StartOf(const model::Pool& pool, model::Dof dof, const std::array<double, 2>& travel);
+
+/// The schedule's replay fields of a planned trial: its sampled profile and its start.
+void AddReplayFields(const model::Vehicle& vehicle, const model::Pool& pool, PlannedTrial* trial);
 
 }  // namespace uuvplan::planner
