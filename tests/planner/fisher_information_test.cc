@@ -67,14 +67,7 @@ TEST(FisherInformation, ConvergesWithTheChosenStep) {
   const model::Vehicle v = testing::Romeo();
   std::vector<std::string> notes;
   const auto ctx = DofContext::APriori(v, testing::RomeoPool(), model::Dof::kSurge, {}, &notes);
-  model::TrialDesign d;
-  d.dof = model::Dof::kSurge;
-  d.kind = model::TrialKind::kSine;
-  d.mapping = "surge-front";
-  d.offset = 35.0;
-  d.amplitude = 25.0;
-  d.omega = 2 * M_PI / 26.0;
-  d.duration = 52.0;
+  const model::TrialDesign d = testing::PaperSurgeSine();  // seed 000 §IV-D
   const auto& tm = ctx->ModelFor(d);
   const auto input = model::MakeExcitation(v, d);
   for (const auto& theta : tm.design_thetas) {
