@@ -8,18 +8,17 @@
 set -euo pipefail
 if [ "${1:-}" = "--time-one" ]; then  # the launcher: times one compiler call
   shift
-  start=$(date +%s.%N)
-  status=0
-  "$@" || status=$?
-  end=$(date +%s.%N)
   src="?"
   prev=""
   for a in "$@"; do  # the source is the argument after -c
     if [ "$prev" = "-c" ]; then src="$a"; fi
     prev="$a"
   done
-  echo "$start $end $src" >>"$UUVPLAN_TIMES_LOG"
-  exit "$status"
+  # wall, user and system seconds (bash's `time`; the compiler's own messages go to stderr)
+  TIMEFORMAT="%R %U %S $src"
+  exec 3>&2
+  { time "$@" 2>&3; } 2>>"$UUVPLAN_TIMES_LOG"
+  exit
 fi
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 n="${1:-15}"
@@ -40,11 +39,12 @@ cmake --build "$build" -j"$jobs" --target "$target" >/dev/null
 end=$(date +%s.%N)
 awk -v root="$root/" -v n="$n" -v start="$start" -v configured="$configured" -v end="$end" \
     -v jobs="$jobs" -v target="$target" '
-  { t = $2 - $1; sum += t; count++; name = $3; sub(root, "", name); line[count] = sprintf("%7.1f s  %s", t, name) ; time[count] = t }
+  { t = $2 + $3; sum += t; wall += $1; count++; name = $4; sub(root, "", name)
+    line[count] = sprintf("%7.1f s  %s", t, name); time[count] = t }
   END {
-    printf "compile_times: %s from nothing (no ccache, -j%d): %.0f s wall (configure %.0f s); %d translation units, %.0f s of compiler time\n", target, jobs, end - start, configured - start, count, sum
+    printf "compile_times: %s from nothing (no ccache, -j%d): %.0f s wall (configure %.0f s); %d translation units, %.0f s of compiler CPU time (user + system; %.0f s wall summed)\n", target, jobs, end - start, configured - start, count, sum, wall
     for (i = 1; i <= count; i++) order[i] = i
     for (i = 2; i <= count; i++) { k = order[i]; j = i - 1; while (j > 0 && time[order[j]] < time[k]) { order[j + 1] = order[j]; j-- } order[j + 1] = k }
-    printf "slowest %d:\n", n
+    printf "slowest %d (CPU seconds: what the machine's load does not change):\n", n
     for (i = 1; i <= n && i <= count; i++) print line[order[i]]
   }' "$UUVPLAN_TIMES_LOG"
