@@ -45,6 +45,6 @@ awk -v root="$root/" -v n="$n" -v start="$start" -v configured="$configured" -v 
     printf "compile_times: %s from nothing (no ccache, -j%d): %.0f s wall (configure %.0f s); %d translation units, %.0f s of compiler CPU time (user + system; %.0f s wall summed)\n", target, jobs, end - start, configured - start, count, sum, wall
     for (i = 1; i <= count; i++) order[i] = i
     for (i = 2; i <= count; i++) { k = order[i]; j = i - 1; while (j > 0 && time[order[j]] < time[k]) { order[j + 1] = order[j]; j-- } order[j + 1] = k }
-    printf "slowest %d (CPU seconds: what the machine's load does not change):\n", n
+    printf "slowest %d (CPU seconds: unchanged by the load of the machine):\n", n
     for (i = 1; i <= n && i <= count; i++) print line[order[i]]
   }' "$UUVPLAN_TIMES_LOG"
