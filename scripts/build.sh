@@ -16,7 +16,11 @@ while [ $# -gt 0 ]; do
   esac
 done
 launcher=()
-if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # ccache caches the files that include a precompiled header (UUVPLAN_PCH) only with these
+  export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}"
+fi
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DUUVPLAN_WERROR=ON "${launcher[@]}" \
   "${options[@]}" >/dev/null
 cmake --build "$build" -j"$(nproc)" "${targets[@]}" >&2

@@ -16,6 +16,11 @@ ctest --output-on-failure -j"$(nproc)" 2>&1 | tee "$log" || status=$?
 echo "Slowest tests:"
 grep -E '^ *[0-9]+/[0-9]+ Test +#' "$log" | sed -E 's/^.*Test +#[0-9]+: ([^ ]+) .* ([0-9.]+) sec$/\2 s  \1/' |
   sort -rn | awk 'NR <= 10 { print "  " $0 }'  # reads to the end: no SIGPIPE under pipefail
+# Each skipped test with its reason (GTEST_SKIP's message, the line after "Skipped" in ctest's
+# log), one line each: without ../shared the real-data tests (docs/validation.md, twins).
+awk '/^[0-9]+\/[0-9]+ Test: / { name = $3 }
+     skip { print "  skipped: " name ": " $0; skip = 0 }
+     /: Skipped$/ { skip = 1 }' "$UUVPLAN_BUILD_DIR/Testing/Temporary/LastTest.log" 2>/dev/null || true
 echo "test.sh: build and tests took $((SECONDS - start)) s"
 grep -E 'tests passed|tests failed' "$log" | tail -1  # ctest's summary, last
 # The sanitizer stage (issue #15): io tests under ASan + UBSan and 60 s of each fuzz target in

@@ -410,6 +410,7 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
   virtual_pool.pool = pool;
   model::VirtualCampaignBuilder builder(truth, virtual_pool);
   internal::Planner planner{truth.vehicle, pool, options.step, {}};
+  planner.Prepare(dofs);  // every DOF starts with its a priori schedule: plan them at once
   internal::LoopMemory memory;
   std::map<Dof, int> inconsistent;
   std::map<Dof, std::vector<model::TrialDesign>> per_dof;

@@ -49,8 +49,15 @@ bool PlannerOptions::IsValid(std::string* error) const {
       .Require(pause_s >= 0, "pause_s", pause_s, ">= 0")
       .Require(max_step_s > 0, "max_step_s", max_step_s, "> 0")
       .Require(check_grid >= 2, "check_grid", check_grid, ">= 2")
-      .Require(box.drag_sigmas >= 0, "box.drag_sigmas", box.drag_sigmas, ">= 0");
+      .Require(box.drag_sigmas >= 0, "box.drag_sigmas", box.drag_sigmas, ">= 0")
+      .Require(threads >= 0, "threads", threads, ">= 0 (0: one per core)");
   return check.ok() && solver.IsValid(error);
+}
+
+int PlannerOptions::Threads() const {
+  const bool ipopt =
+      sine_backend == SolverBackend::kIpopt || steady_backend == SolverBackend::kIpopt;
+  return ipopt ? 1 : threads;
 }
 
 namespace {

@@ -13,6 +13,7 @@
 #include "loop_trust.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/thrust_limits.h"
 
@@ -465,10 +466,25 @@ std::pair<std::string, int> EtaDirection(const std::string& name) {
 const ScheduleResult& Planner::APriori(Dof dof) {
   auto it = schedules.find(dof);
   if (it != schedules.end()) return it->second;
-  ScheduleOptions so = options.ScheduleAtTarget();
-  so.dofs = {dof};
-  so.prior.clear();
-  return schedules.emplace(dof, PlanSchedule(vehicle, pool, so)).first->second;
+  Prepare({dof});
+  return schedules.at(dof);
+}
+
+void Planner::Prepare(const std::vector<Dof>& dofs) {
+  std::vector<Dof> missing;
+  for (Dof dof : dofs) {
+    if (!schedules.count(dof)) missing.push_back(dof);
+  }
+  std::vector<ScheduleResult> planned(missing.size());
+  model::ParallelFor(missing.size(), Threads(), [&](std::size_t i) {
+    ScheduleOptions so = options.ScheduleAtTarget();
+    so.dofs = {missing[i]};
+    so.prior.clear();
+    planned[i] = PlanSchedule(vehicle, pool, so);
+  });
+  for (std::size_t i = 0; i < missing.size(); ++i) {
+    schedules.emplace(missing[i], std::move(planned[i]));
+  }
 }
 
 std::vector<Dof> DofsOrTruths(const model::Truth& truth, const std::vector<Dof>& asked) {
@@ -505,6 +521,50 @@ bool PlanCandidate(Planner& planner, const model::Campaign& campaign, const DofP
   return true;
 }
 
+namespace {
+
+// One DOF's candidate trial, planned on its own (PlanCandidate into an empty Decision): the
+// candidates of several DOFs can be planned at once and taken in Decide's order after.
+struct Candidate {
+  bool planned = false;
+  Decision part;  ///< what the policy decided (trial, predictions, notes)
+  CandidateGain gain;
+  std::string why;  ///< why there is none, when not planned
+};
+
+// `d` with the candidate's trial and notes, as PlanCandidate on `d` itself leaves it.
+Decision WithCandidate(const Decision& d, const Candidate& c) {
+  Decision tried = d;
+  for (const auto& n : c.part.notes) tried.notes.push_back(n);
+  tried.dof = c.part.dof;
+  tried.source = c.part.source;
+  tried.trial = c.part.trial;
+  tried.predicted = c.part.predicted;
+  tried.at_estimates = c.part.at_estimates;
+  return tried;
+}
+
+// Plans the candidates open[from..] of the next Threads() DOFs at once (their a priori
+// schedules first): one batch of the candidates Decide may need. Returns the batch's end.
+std::size_t PlanBatch(Planner& planner, const model::Campaign& campaign,
+                      const ident::IdentifyResult& estimates,
+                      const std::vector<const DofProgress*>& open, std::size_t from,
+                      std::vector<Candidate>* out) {
+  const std::size_t to = std::min(open.size(), from + model::Workers(planner.Threads()));
+  std::vector<Dof> dofs;
+  for (std::size_t i = from; i < to; ++i) dofs.push_back(open[i]->dof);
+  planner.Prepare(dofs);
+  model::ParallelFor(to - from, planner.Threads(), [&](std::size_t k) {
+    Candidate& c = (*out)[from + k];
+    const DofProgress& p = *open[from + k];
+    c.planned = PlanCandidate(planner, campaign, p, estimates.Find(p.dof), &c.part, &c.gain,
+                              &c.why);
+  });
+  return to;
+}
+
+}  // namespace
+
 Decision Decide(Planner& planner, const model::Campaign& campaign, const std::vector<Dof>& dofs,
                 const ident::IdentifyResult& estimates, const LoopMemory& memory) {
   Decision d;
@@ -527,6 +587,13 @@ Decision Decide(Planner& planner, const model::Campaign& campaign, const std::ve
   std::stable_sort(order.begin(), order.end(), [](const DofProgress* a, const DofProgress* b) {
     return a->worst_percent > b->worst_percent;
   });
+  // The DOFs that get a candidate (not stopped, not refused), planned in batches of Threads().
+  std::vector<const DofProgress*> open;
+  for (const DofProgress* p : order) {
+    if (!memory.stopped.count(p->dof) && p->refusal.empty()) open.push_back(p);
+  }
+  std::vector<Candidate> candidates(open.size());
+  std::size_t next = 0;  // the next entry of `open`; those before it are planned
   for (const DofProgress* p : order) {
     const std::string name(model::DofName(p->dof));
     if (const auto s = memory.stopped.find(p->dof); s != memory.stopped.end()) {
@@ -537,24 +604,26 @@ Decision Decide(Planner& planner, const model::Campaign& campaign, const std::ve
       AddStop(p->dof, NextStatus::kRefused, name + ": " + p->refusal, &d);
       continue;
     }
-    std::string why;
-    CandidateGain gain;
-    Decision tried = d;
-    if (!PlanCandidate(planner, campaign, *p, estimates.Find(p->dof), &tried, &gain, &why)) {
+    const std::size_t i = std::find(open.begin(), open.end(), p) - open.begin();
+    if (i >= next) next = PlanBatch(planner, campaign, estimates, open, i, &candidates);
+    const Candidate& c = candidates[i];
+    Decision tried = WithCandidate(d, c);
+    if (!c.planned) {
       d.notes = tried.notes;
       // Infeasible is the pool verdict's answer: no trial for a DOF that has none yet. A DOF
       // whose trials ran in this pool and that no further trial fits (at its estimates ± 2σ)
       // is held by a limit of this pool: stuck, with what stops the next trial.
       if (p->trials > 0) {
         AddStop(p->dof, NextStatus::kStuck,
-                why + " (after " + std::to_string(p->trials) + " trial(s) of " + name +
+                c.why + " (after " + std::to_string(p->trials) + " trial(s) of " + name +
                     " in this pool; a larger pool or a wider thrust range lifts it)",
                 &d);
       } else {
-        AddStop(p->dof, NextStatus::kInfeasible, why, &d);
+        AddStop(p->dof, NextStatus::kInfeasible, c.why, &d);
       }
       continue;
     }
+    const CandidateGain& gain = c.gain;
     tried.candidates.push_back(gain);
     if (gain.negligible && !p->precise) {
       d.notes = tried.notes;

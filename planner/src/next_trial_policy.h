@@ -34,6 +34,10 @@ struct Planner {
   std::map<model::Dof, ScheduleResult> schedules;
 
   const ScheduleResult& APriori(model::Dof dof);
+  /// Plans the a priori schedules of `dofs` not planned yet, on Threads() threads.
+  void Prepare(const std::vector<model::Dof>& dofs);
+  /// PlannerOptions::Threads of the loop's schedule options.
+  int Threads() const { return options.schedule.planner.Threads(); }
 };
 
 /// Why a DOF gets no further trial: infeasible (the pool cannot host what it needs), stuck (no

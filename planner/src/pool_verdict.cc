@@ -8,6 +8,7 @@
 
 #include "format.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::planner {
@@ -91,10 +92,15 @@ void JudgePoints(const model::Vehicle& vehicle, const model::Pool& pool,
                  const ScheduleOptions& options, DofVerdict* v) {
   ScheduleOptions so = options;
   so.dofs = {v->dof};
-  for (const BoxPoint& point : VerdictPoints(vehicle, v->dof, options.planner.box)) {
-    const ScheduleResult r = PlanSchedule(VehicleAt(vehicle, v->dof, point), pool, so);
-    v->points.push_back({point, r.status == PlanStatus::kOk});
-    if (v->points.back().hosted) v->hostability = Hostability::kPart;
+  const std::vector<BoxPoint> points = VerdictPoints(vehicle, v->dof, options.planner.box);
+  std::vector<char> hosted(points.size(), 0);  // each point on its own (PlannerOptions::threads)
+  model::ParallelFor(points.size(), options.planner.Threads(), [&](std::size_t i) {
+    hosted[i] = PlanSchedule(VehicleAt(vehicle, v->dof, points[i]), pool, so).status ==
+                PlanStatus::kOk;
+  });
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    v->points.push_back({points[i], hosted[i] != 0});
+    if (hosted[i]) v->hostability = Hostability::kPart;
   }
 }
 

@@ -11,6 +11,7 @@
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/determinacy.h"
 #include "uuvplan/planner/switched_design.h"
@@ -305,11 +306,14 @@ ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& po
                      "' has no DOF with both a thrust mapping and a sensor: nothing to plan";
     return result;
   }
+  // Each DOF is planned on its own (DofContext per DOF), on PlannerOptions::Threads threads.
+  std::vector<DofPlan> plans(dofs.size());
+  model::ParallelFor(dofs.size(), o.planner.Threads(),
+                     [&](std::size_t i) { plans[i] = PlanDof(vehicle, pool, dofs[i], o); });
   int planned = 0, complete = 0;
-  for (model::Dof dof : dofs) {
-    DofPlan plan = PlanDof(vehicle, pool, dof, o);
+  for (DofPlan& plan : plans) {
     if (plan.status == DesignStatus::kOk) {
-      result.schedule.predicted[dof] = plan.predicted;
+      result.schedule.predicted[plan.dof] = plan.predicted;
       for (const auto& t : plan.trials) result.schedule.trials.push_back(t);
       ++planned;
       if (plan.complete) ++complete;

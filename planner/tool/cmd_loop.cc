@@ -239,7 +239,8 @@ void BindLoop(CLI::App* sub, LoopCliOptions* o) {
                   "for)");
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_flag("--verbose", o->verbose, "print each iteration's design and identification notes");
-  AddThreadsOption(sub, {&o->loop.step.identify.threads}, "each iteration's identification (trials and DOFs)");
+  AddThreadsOption(sub, {&o->loop.step.schedule.planner.threads, &o->loop.step.identify.threads},
+                   "planning the DOFs' candidate trials and each iteration's identification");
 }
 
 const CommandRegistration kRegistration(MakeCommand<LoopCliOptions>(

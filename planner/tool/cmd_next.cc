@@ -166,7 +166,8 @@ void BindNext(CLI::App* sub, NextCliOptions* o) {
   AddTargetOption(sub, &o->design.target_percent);
   AddJsonOption(sub, &o->json, "also write the result");
   AddAcceptUnitsFlag(sub, &o->accept_units);
-  AddThreadsOption(sub, {&o->design.identify.threads}, "identifying (trials and DOFs)");
+  AddThreadsOption(sub, {&o->design.schedule.planner.threads, &o->design.identify.threads},
+                   "identifying (trials and DOFs) and planning the DOFs' candidate trials");
 }
 
 const CommandRegistration kRegistration(MakeCommand<NextCliOptions>(

@@ -5,6 +5,7 @@
 // Virtual: ROMEO surge (m 890 kg, k 46.9 N·s/m, kq 306.2 N·s²/m², a constant force of −5 N),
 // a P controller u = 400·(v_ref − v_meas) at 20 Hz on a DVL-like sensor (10 Hz, σ 0.01 m/s,
 // AR(1) ρ = 0.5), v_ref a seeded random staircase in ±0.5 m/s; four 120 s trials.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,6 +19,7 @@
 
 #include "ident/ident_cases.h"
 #include "support/real_data.h"
+#include "uuvplan/ident/diagnosis.h"
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/model/util/seed.h"
@@ -159,6 +161,24 @@ TEST(ClosedLoopTest, TrialsDisturbedByAnUnmodelledForceAreWeightedByTheirResidua
               << " ± " << sigma_k[by_residuals] << "\n";
   }
   EXPECT_LT(sigma_k[true], 0.5 * sigma_k[false]);
+}
+
+// The virtual twin of DiagnosisTest.RealClosedLoopLogsWithoutClockAreQualified (tartan: closed
+// loop, no trial start times): the diagnosis puts the closed-loop caveat beside its findings and
+// neither tests nor quotes a drift over a campaign clock the campaign does not give.
+TEST(ClosedLoopTest, VirtualClosedLoopWithoutClockIsQualifiedByDiagnosis) {
+  model::Campaign c = ClosedLoopCampaign(3, false);
+  for (auto& e : c.trials) e.has_start = false;
+  DiagnoseOptions o;
+  o.dofs = {Dof::kSurge};
+  o.identify = SurgeOptions(c.vehicle);
+  const DiagnosisResult r = Diagnose(c, o);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_THAT(r.warnings[0], ::testing::HasSubstr("surge: closed-loop data suspected"));
+  ASSERT_EQ(r.breakdowns.size(), 1u);
+  EXPECT_TRUE(std::isnan(r.breakdowns[0].drift_per_hour));
+  for (const CandidateTest& t : r.tests) EXPECT_NE(t.effect, "parameter_drift");
+  EXPECT_THAT(r.notes, ::testing::Contains(::testing::HasSubstr("parameter_drift not tested")));
 }
 
 TEST(ClosedLoopTest, InstrumentalIntervalsCoverTheTruth) {

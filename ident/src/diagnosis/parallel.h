@@ -1,44 +1,10 @@
-// Runs independent jobs on a few threads. Each job writes only its own slot of the caller's
-// output, so the result does not depend on the number of threads or their timing.
+// ParallelFor (model/util/parallel.h) under the name identification and diagnosis use.
 #pragma once
 
-#include <algorithm>
-#include <atomic>
-#include <cstddef>
-#include <exception>
-#include <thread>
-#include <vector>
+#include "uuvplan/model/util/parallel.h"
 
 namespace uuvplan::ident::diagnosis {
 
-/// Calls job(i) for every i in [0, n) on up to `threads` threads (0: one per hardware core).
-template <typename Job>
-void ParallelFor(std::size_t n, int threads, const Job& job) {
-  std::size_t workers = threads > 0 ? static_cast<std::size_t>(threads)
-                                    : std::max(1u, std::thread::hardware_concurrency());
-  workers = std::min(workers, n);
-  if (workers <= 1) {
-    for (std::size_t i = 0; i < n; ++i) job(i);
-    return;
-  }
-  std::atomic<std::size_t> next{0};
-  std::vector<std::exception_ptr> errors(n);  // rethrown in job order, as a serial loop would
-  auto work = [&] {
-    for (std::size_t i = next++; i < n; i = next++) {
-      try {
-        job(i);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
-}
+using model::ParallelFor;
 
 }  // namespace uuvplan::ident::diagnosis

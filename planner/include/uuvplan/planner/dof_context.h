@@ -69,8 +69,15 @@ struct PlannerOptions {
   /// only where they were measured. CHOSEN 0.35 rad/s: seed 000 Fig. 11 spans ±20 °/s.
   double max_translation_speed = 0.0;
   double max_rotation_rate = 0.35;
+  /// Threads that plan independent designs at once (0: one per core; issue #16): the DOFs of a
+  /// schedule, the verdict's box points, the loop's a priori schedules and candidate trials of
+  /// several DOFs. The results do not depend on it: each design is planned on its own and
+  /// taken in the serial order.
+  int threads = 0;
 
   bool IsValid(std::string* error) const;
+  /// `threads`, or 1 when a backend is Ipopt: its linear solver (MUMPS) is not thread-safe.
+  int Threads() const;
 };
 
 /// Outcome of the hard-constraint check of one trial (contract §check-pool).

@@ -1,0 +1,12 @@
+// The one instantiation of each decomposition util/eigen_decompositions.h declares extern.
+#include <Eigen/Dense>
+
+template class Eigen::JacobiSVD<Eigen::MatrixXd>;
+template class Eigen::HouseholderQR<Eigen::MatrixXd>;
+template class Eigen::ColPivHouseholderQR<Eigen::MatrixXd>;
+template class Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>;
+template class Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>;
+template class Eigen::LDLT<Eigen::MatrixXd>;
+template class Eigen::LLT<Eigen::MatrixXd>;
+template class Eigen::FullPivLU<Eigen::MatrixXd>;
+template class Eigen::PartialPivLU<Eigen::MatrixXd>;
