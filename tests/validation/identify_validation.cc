@@ -16,9 +16,12 @@
 //     the force error T·dφ/dt is 0.05·ω·A, under 1% of the force on the seeds' sines
 //     (ROMEO surge: 0.05·0.24·25 N = 0.3 N on 35 ± 25 N) and a 0.05 s rounding of each
 //     command step. The coverage of the standard parameters must stay in the band.
+//     "asym=A" instead makes the quadratic drag asymmetric, kq_neg = (1 + A)·kq (asymmetric_drag),
+//     fitted symmetric: a shape error of the drag that shows in the residuals of the legs of
+//     each sign (A = 0.1: a hull a little blunter astern).
 //
 // Run: build/tests/identify_validation [repetitions = 200] [case = all] [AR(1) ρ = 0]
-//                                      [unmodelled effect: none or lag=T]
+//                                      [unmodelled effect: none, lag=T or asym=A]
 //      (case: romeo_surge, romeo_heave, romeo_yaw, vsor, uris, crb)
 // Exit status 1 when a claim fails. Model selection is off (fixed structures): coverage is a
 // property of an estimator of a given model. The CI subset is tests/ident/ident_coverage_test.cc.
@@ -55,6 +58,7 @@ int main(int argc, char** argv) {
   const double ar1 = argc > 3 ? std::atof(argv[3]) : 0.0;
   const std::string effect = argc > 4 ? argv[4] : "none";
   const double lag = effect.rfind("lag=", 0) == 0 ? std::atof(effect.c_str() + 4) : 0.0;
+  const double asym = effect.rfind("asym=", 0) == 0 ? std::atof(effect.c_str() + 5) : 0.0;
   namespace t = ident::testing;
   const std::vector<Case> cases = {{"romeo_surge", "romeo", t::RomeoSurgeDesigns()},
                                    {"romeo_heave", "romeo", t::RomeoHeaveDesigns()},
@@ -64,11 +68,12 @@ int main(int argc, char** argv) {
   bool known = only.empty() || only == "crb";
   for (const Case& c : cases) known = known || only == c.name;
   if (reps <= 1 || !known || argc > 5 || !(std::abs(ar1) < 1) ||
-      !(effect == "none" || lag > 0)) {
+      !(effect == "none" || lag > 0 || asym != 0)) {
     std::fprintf(stderr,
                  "usage: identify_validation [repetitions > 1, default 200] [case: romeo_surge, "
                  "romeo_heave, romeo_yaw, vsor, uris, crb or all] [sensor noise AR(1) ρ in "
-                 "(-1, 1), default 0] [unmodelled effect: none or lag=T with T > 0 s]\n");
+                 "(-1, 1), default 0] [unmodelled effect: none, lag=T with T > 0 s, or asym=A: "
+                 "kq_neg = (1 + A)·kq]\n");
     return 2;
   }
   int exit_code = 0;
@@ -87,6 +92,11 @@ int main(int argc, char** argv) {
     // ChooseStructure): the lag in the truth is unmodelled.
     for (const model::TrialDesign& d : c.designs) {
       if (lag > 0) truth.dofs[d.dof].params[model::param::kLag] = lag;
+      if (asym != 0) {
+        auto& params = truth.dofs[d.dof].params;
+        params[model::param::kLinearDragNeg] = params[model::param::kLinearDrag];
+        params[model::param::kQuadraticDragNeg] = (1.0 + asym) * params[model::param::kQuadraticDrag];
+      }
     }
     const ident::MonteCarloReport r = ident::RunMonteCarlo(truth, c.designs, o);
     std::printf("== %s: %d repetitions, %d failures, %.0f s\n%s", c.name.c_str(), r.repetitions,
@@ -116,7 +126,7 @@ int main(int argc, char** argv) {
     }
     std::fflush(stdout);
   }
-  if ((only.empty() && lag == 0) || only == "crb") {
+  if ((only.empty() && lag == 0 && asym == 0) || only == "crb") {
     const model::Truth truth = t::CaseTruth("romeo");
     ident::MonteCarloOptions o;
     o.repetitions = reps;

@@ -112,8 +112,9 @@ double Ar1FromFittedResiduals(const std::vector<FittedResiduals>& fits);
 /// ρ solves σ²·Σ_k E Σr²(ρ) = Σ_k sum_sq, E Σr² = n − tr(QᵀΩQ) as above (bisection; it falls
 /// monotonically with ρ as the fitted columns take more of slower noise). On short fits (the
 /// 21-sample windows of a 4th-order filter) the lag-1 ratio is nearly flat near ρ = 0.9 and
-/// scatters to the clamp; the residual variance still moves steeply with ρ. 0 when the
-/// residuals are at or above white noise's, 0.99 at most.
+/// scatters to the clamp; the residual variance still moves steeply with ρ. 0 unless Σ sum_sq
+/// is significantly below white noise's (χ² of Σ(n − q) degrees: more than 2 sd below σ²·dof),
+/// 0.99 at most: a ρ̂ clamped at 0 from a symmetric scatter is biased up on white noise.
 double Ar1FromResidualVariance(const std::vector<FittedResiduals>& fits, double sigma);
 
 /// Σ_s Σ_t c_s c_t ρ^|s−t| = cᵀΩc/σ² of a stationary AR(1) (O(n): q_s = c_s + ρ·q_{s−1},

@@ -10,13 +10,15 @@
 // Runs are split at gaps and at large command steps (the filtered velocity is distorted
 // across the kink of the acceleration); each run has its own c, each trial its own b.
 // The filtered ξ̃ in H is noisy: corrected least squares removes the errors-in-variables
-// bias, θ = (HᵀH − Σ var(e_i)·e₀e₀ᵀ)⁻¹Hᵀy, var(e) from the sensor σ and the filter's gain.
+// bias, θ = (HᵀH − tr(MΣ)·e₀e₀ᵀ)⁻¹Hᵀy, Σ the velocity noise's covariance (sensor σ, the
+// filter's weights, the noise's AR(1)) and M the projection off the nuisance columns c and b.
 //
 // Uncertainty: the residuals are correlated over the Savitzky–Golay window (ξ is filtered),
-// so the textbook eqs. 11–12 σ is too small (notes/pitfalls.md). The reported σ_m combines a
-// Newey–West σ (lags spanning two filter windows) with the propagated uncertainty of the
-// known drag: m̂ is linear in the known parameters, ∂m̂/∂θ_j = g_mᵀ·Y_j with Y_j = ∫h_j, so
-// σ_m² = σ_HAC² + Jᵀ·Σ_known·J. The eqs. 11–12 σ is reported alongside.
+// so the textbook eqs. 11–12 σ is too small (notes/pitfalls.md). The reported σ_m combines the
+// exact propagation of the sensor noise (first order, plus the errors-in-variables term's
+// second order m²·tr(Σ²)/b²; a Newey–West σ when rows are thinned) with the propagated
+// uncertainty of the known drag: m̂ is linear in the known parameters, ∂m̂/∂θ_j = g_mᵀ·Y_j with
+// Y_j = ∫h_j, so σ_m² = σ_noise² + Jᵀ·Σ_known·J. The eqs. 11–12 σ is reported alongside.
 #pragma once
 
 #include <Eigen/Dense>
@@ -56,6 +58,8 @@ struct IntegralInertiaResult {
   double sigma_eq11 = 0.0;        ///< seed 000 eqs. 11–12
   double sigma_hac = 0.0;         ///< Newey–West only
   double sigma_white = 0.0;       ///< known white sensor noise propagated (raw measured velocity; 0 otherwise)
+  /// Second-order errors in variables, √tr(Σ²)·|m̂|/b (part of sigma_white).
+  double sigma_quadratic = 0.0;
   double sigma_known = 0.0;       ///< from the known parameters' covariance
   std::vector<double> run_c, run_b;  ///< per run of samples
   std::vector<int> run_trial;        ///< trial index of each run
