@@ -6,7 +6,7 @@
 //  - seed 000 §IV-D measured phase lags (time lag → phase at the sine's period), the a priori
 //    yaw inertia and added-mass fractions;
 //  - seed 002 eq. 12: the PD autopilot's voltage for a torque Y;
-//  - seed 004 Table 2: the "Mean" row.
+//  - seed 004 Table 2: the "Mean" row; Table 4 against Tables 1–3 (not an average of them).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -209,6 +209,26 @@ TEST(SeedTablesTest, UrisTable2MeanRowIsTheMeanOfItsExperiments) {
   EXPECT_NEAR(mean({0.0178, 0.0201, 0.0173}), 0.0184, 5e-5);        // γ
   EXPECT_NEAR(mean({-0.0018, 0.0041, 0.0013}), 0.0012, 5e-5);       // δ
   EXPECT_NEAR(mean({1.630e-4, 1.895e-4, 1.892e-4}), 1.805e-4, 1e-7);  // J
+}
+
+TEST(SeedTablesTest, UrisTable4IsNoAverageOfTables1To3) {
+  // Seed 004 §5.3 calls Table 4 "the chosen model after averaging the validated experiments",
+  // yet several of its coefficients lie outside the range of the experiments of Tables 1–3,
+  // where no average (weighted or not) can fall: Table 4 comes from data the paper does not
+  // give (docs/seeds.md), and uuvplan uses it only as the truth of §5.4's simulated data.
+  const auto range = [](std::vector<double> v) { return std::minmax_element(v.begin(), v.end()); };
+  const auto yaw_alpha = range({1.1865, 1.3449, 1.1635, 1.2326});  // Table 1
+  EXPECT_LT(1.1006, *yaw_alpha.first);                              // Table 4 yaw α below all
+  const auto surge_alpha = range({0.3243, 0.3185, 0.3237});         // Table 2
+  EXPECT_GT(0.3302, *surge_alpha.second);                           // surge α above all
+  const auto surge_gamma = range({0.0178, 0.0201, 0.0173});
+  EXPECT_LT(0.0169, *surge_gamma.first);                            // surge γ below all
+  // Table 4's yaw J, 1.038e-4, has the four digits of the mean of Table 1's J as printed
+  // (1.0383e-3; half a unit of the 4th digit, 5e-7), a decade lower, while Table 1's own Mean
+  // row prints 8.38e-4.
+  const double mean_j = (5.7759e-4 + 6.9684e-4 + 8.7854e-4 + 0.0020) / 4;
+  EXPECT_NEAR(mean_j, 1.038e-3, 5e-7);
+  EXPECT_NEAR(mean_j / 10, 1.038e-4, 5e-8);
 }
 
 }  // namespace
