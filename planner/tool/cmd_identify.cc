@@ -10,6 +10,7 @@
 
 #include "command.h"
 #include "identify_table.h"
+#include "method_flags.h"
 #include "uuvplan/io/identify_json.h"
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/model/input_error.h"
@@ -35,8 +36,7 @@ struct IdentifyCommandOptions {
   std::vector<std::string> dofs;
   std::vector<std::string> steady;
   std::string closed_loop{kClosedLoopNames.Name(ident::IdentifyOptions{}.closed_loop)};
-  std::string method{ident::MethodName(ident::IdentifyOptions{}.method)};
-  bool forgetting_given = false;  ///< --forgetting (bound to identify.rls.lambda)
+  MethodFlags method;  ///< --method, --forgetting
   bool accept_units = false;
   ident::IdentifyOptions identify;  ///< --no-refine, --no-prune bound here
 };
@@ -87,13 +87,7 @@ int RunIdentify(const IdentifyCommandOptions& co) {
     throw InputError("--closed-loop " + co.closed_loop, "expected yes, no or auto");
   }
   o.closed_loop = *closed_loop;
-  const auto method = ident::ParseMethod(co.method);
-  if (!method) throw InputError("--method " + co.method, "expected one of " + ident::MethodNames());
-  o.method = *method;
-  if (co.forgetting_given && o.method != ident::Method::kRls) {
-    throw InputError("--forgetting", "the forgetting factor belongs to --method rls (seed 004 "
-                                     "eq. 15), not to method " + co.method);
-  }
+  ApplyMethodFlags(co.method, &o);
   const ident::IdentifyResult result = ident::IdentifyReleasingLogs(&campaign, o);
 
   std::ostream& out = ReportStream(co.json);
@@ -123,20 +117,7 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
   sub->add_option("--closed-loop", o->closed_loop,
                   "whether the logs were recorded in closed loop: auto (detect), yes, no")
       ->capture_default_str();
-  sub->add_option("--method", o->method,
-                  "estimator: chain (the best chain: steady state + integral or one-step LS, "
-                  "then output error), ls (steady-state LS, seed 000 eqs. 7-12; m a priori), "
-                  "integral (+ m by seed 000 eqs. 16-19), one-step (seeds 002/004), rls "
-                  "(seed 004 eq. 15), output-error (from the a priori values)")
-      ->capture_default_str();
-  sub->add_option_function<double>(
-         "--forgetting",
-         [o](double lambda) {
-           o->identify.rls.lambda = lambda;
-           o->forgetting_given = true;
-         },
-         "RLS forgetting factor λ in (0.9, 1] (--method rls; default " +
-             model::Significant(ident::RlsOptions{}.lambda, 3) + ", memory ≈ 1/(1 − λ) rows)");
+  AddMethodOptions(sub, &o->method);
   AddAcceptUnitsFlag(sub, &o->accept_units);
   AddThreadsOption(sub, {&o->identify.threads}, "preparing the trials and fitting the DOFs");
 }

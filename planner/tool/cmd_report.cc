@@ -1,8 +1,9 @@
-// `uuvplan report INPUT -o DIR [--vehicle V] [--pool P] [--loop LOOP.json] [--no-diagnosis]
-// [--accept-units]`: one self-contained HTML file (figures embedded, no network) and the
-// figures as PNG and SVG files (planner/report, docs/report.md). INPUT is a schedule
-// (`schedule --json`, with --vehicle and --pool), a loop's JSON (`loop --json`), or a campaign
-// (identified and diagnosed here). DIR is written whole or not at all. Exit status: 0 written;
+// `uuvplan report INPUT -o DIR [--vehicle V] [--pool P] [--loop LOOP.json] [--no-diagnosis
+// [--method M [--forgetting λ]]] [--accept-units]`: one self-contained HTML file (figures
+// embedded, no network) and the figures as PNG and SVG files (planner/report, docs/report.md).
+// INPUT is a schedule (`schedule --json`, with --vehicle and --pool), a loop's JSON (`loop
+// --json`), or a campaign (identified and diagnosed here; with --method rls also the RLS
+// convergence, seed 004 Fig. 11). DIR is written whole or not at all. Exit status: 0 written;
 // 1 written, but a DOF could not be diagnosed (with --no-diagnosis: could not be identified),
 // as `diagnose` (`identify`) would say; 2 bad input.
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "command.h"
+#include "method_flags.h"
 #include "uuvplan/ident/diagnosis.h"
 #include "uuvplan/ident/score.h"
 #include "uuvplan/io/campaign_yaml.h"
@@ -34,6 +36,7 @@ struct ReportCommandOptions {
   std::string pool;
   std::string loop;
   bool no_diagnosis = false;
+  MethodFlags method;  ///< --method, --forgetting (with --no-diagnosis)
   bool accept_units = false;
 };
 
@@ -94,6 +97,12 @@ void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
   if (!in->pool && campaign.pool) in->pool = *campaign.pool, in->pool_source = campaign.path;
   ident::IdentifyOptions identify;
   identify.validation.curve_points = kCurvePoints;
+  ApplyMethodFlags(o.method, &identify);
+  if (identify.method != ident::Method::kChain && !o.no_diagnosis) {
+    throw InputError("--method " + o.method.method,
+                     "the diagnosis identifies with the default chain; give --no-diagnosis to "
+                     "report the estimates of method " + o.method.method);
+  }
   if (o.no_diagnosis) {
     in->identification = ident::Identify(campaign, identify);
     return;
@@ -144,6 +153,7 @@ void BindReport(CLI::App* sub, ReportCommandOptions* o) {
                   "pool file (required with a schedule; default: the campaign's)");
   sub->add_option("--loop", o->loop, "also report this loop's history (loop --json)");
   sub->add_flag("--no-diagnosis", o->no_diagnosis, "identify the campaign without diagnosing it");
+  AddMethodOptions(sub, &o->method);
   AddAcceptUnitsFlag(sub, &o->accept_units);
 }
 

@@ -184,13 +184,23 @@ TEST(IdentifyCliTest, RealTartanFailuresAndOutliersAreSaidSo) {
 
 // Seed 004 Table 4 in its own convention (dx/dt = −α·x + β·x|x| + γ·τ + δ, cases/uris/truth.yaml):
 // α = k/m, γ = 1/m, δ = bias/m, with σ by the delta method from identify's JSON covariance.
+// Seed 004 Table 4 with the Monte Carlo σ of each RLS coefficient (α = k/m, γ = 1/m,
+// δ = bias/m) on the virtual URIS: build/tests/uris_table4_validation 400 [camera scale],
+// docs/validation.md "URIS Table 4 by RLS" (400 seeds; pitch δ is not estimated: 0).
 struct Table4Row {
   const char* dof;
-  double alpha, gamma, delta;
+  double alpha, gamma, delta;           // Table 4
+  double sd_alpha, sd_gamma, sd_delta;  // σ_MC
 };
-constexpr Table4Row kUrisTable4[] = {{"surge", 0.3302, 0.0169, -0.0070},
-                                     {"pitch", 0.6514, 0.8052, 0.0},
-                                     {"yaw", 1.1006, 0.5236, -0.0435}};
+// The case's camera, 1 cm / 0.01 rad at 12.5 Hz.
+constexpr Table4Row kUrisTable4[] = {{"surge", 0.3302, 0.0169, -0.0070, 6.07e-3, 2.62e-4, 1.96e-4},
+                                     {"pitch", 0.6514, 0.8052, 0.0, 2.91e-2, 2.79e-2, 0.0},
+                                     {"yaw", 1.1006, 0.5236, -0.0435, 7.69e-2, 3.37e-2, 2.91e-3}};
+// A camera 100 times finer (0.1 mm / 1e-4 rad).
+constexpr Table4Row kUrisTable4Fine[] = {
+    {"surge", 0.3302, 0.0169, -0.0070, 5.92e-5, 2.61e-6, 1.98e-6},
+    {"pitch", 0.6514, 0.8052, 0.0, 2.95e-4, 2.82e-4, 0.0},
+    {"yaw", 1.1006, 0.5236, -0.0435, 8.34e-4, 3.76e-4, 3.25e-5}};
 
 struct Coefficient {
   double value, sigma;
@@ -216,9 +226,12 @@ Coefficient OverMass(const json& d, const std::string& numerator) {
 }
 
 // Runs `identify --method rls` on a URIS campaign simulated with `truth` and checks each
-// Table 4 coefficient against the published value within max(half a unit of its last printed
-// digit, 3σ); β must be dropped as insignificant (Table 4: β = 0, "no significant improvement").
-void CheckTable4(const model::Truth& truth, const std::string& name) {
+// Table 4 coefficient against the published value within the paper's rounding (half a unit
+// of the 4th decimal) + 3σ_MC of the estimate (`table`); β must be dropped as insignificant
+// (Table 4: β = 0, "no significant improvement", §5.2), and pitch δ, which Table 3 and the
+// §5.4 parameter vector leave out, too.
+template <std::size_t N>
+void CheckTable4(const model::Truth& truth, const Table4Row (&table)[N], const std::string& name) {
   const fs::path dir = TempDir(name);
   model::VirtualCampaignOptions vo;
   vo.seed = 4;
@@ -232,7 +245,7 @@ void CheckTable4(const model::Truth& truth, const std::string& name) {
   const json j = json::parse(f);
   EXPECT_EQ(j.at("method"), "rls");
   constexpr double kHalfUnit = 5e-5;  // Table 4 prints four decimals
-  for (const Table4Row& row : kUrisTable4) {
+  for (const Table4Row& row : table) {
     SCOPED_TRACE(row.dof);
     const json& d = j.at("dofs").at(row.dof);
     EXPECT_EQ(d.at("estimator"), "rls");
@@ -241,13 +254,13 @@ void CheckTable4(const model::Truth& truth, const std::string& name) {
     std::cout << name << " " << row.dof << ": alpha " << alpha.value << " ± " << alpha.sigma
               << " (Table 4 " << row.alpha << "), gamma " << gamma.value << " ± " << gamma.sigma
               << " (" << row.gamma << ")\n";
-    EXPECT_NEAR(alpha.value, row.alpha, std::max(kHalfUnit, 3 * alpha.sigma)) << alpha.sigma;
-    EXPECT_NEAR(gamma.value, row.gamma, std::max(kHalfUnit, 3 * gamma.sigma)) << gamma.sigma;
+    EXPECT_NEAR(alpha.value, row.alpha, kHalfUnit + 3 * row.sd_alpha) << alpha.sigma;
+    EXPECT_NEAR(gamma.value, row.gamma, kHalfUnit + 3 * row.sd_gamma) << gamma.sigma;
     if (row.delta != 0.0) {
       const Coefficient delta = OverMass(d, "bias");
       std::cout << name << " " << row.dof << ": delta " << delta.value << " ± " << delta.sigma
                 << " (Table 4 " << row.delta << ")\n";
-      EXPECT_NEAR(delta.value, row.delta, std::max(kHalfUnit, 3 * delta.sigma)) << delta.sigma;
+      EXPECT_NEAR(delta.value, row.delta, kHalfUnit + 3 * row.sd_delta) << delta.sigma;
     } else {
       EXPECT_EQ(d.at("params").at("bias").at("state"), "dropped");  // pitch δ = 0
     }
@@ -259,17 +272,19 @@ void CheckTable4(const model::Truth& truth, const std::string& name) {
 }
 
 TEST(IdentifyCliTest, MethodRlsOnUrisReproducesSeed004Table4) {
-  // `identify --method rls` (seed 004 eq. 15, default forgetting 0.99) on the virtual URIS
-  // (cases/uris: Table 4's parameters; steps and PRBS per DOF, §5.2), once with the case's
-  // camera (1 cm / 0.01 rad: σ of α 1–2%, so 3σ rules) and once with it 100 times finer
-  // (σ near the paper's rounding; seed 004 §5.4 ran its RLS on "simulated data, obtained from
-  // the model identified off-line", noise not given).
+  // Seed 004 §5.4: RLS (eq. 15) "on the basis of simulated data, obtained from the model
+  // identified off-line" (Table 4), final estimates against the truth. `identify --method
+  // rls` (default forgetting 0.99) on the virtual URIS (cases/uris: Table 4's parameters;
+  // steps and PRBS per DOF, §5.2, seed 4), once with the case's camera (σ_MC of α 1.8–7%:
+  // the paper's four decimals are far below what these records determine) and once with it
+  // 100 times finer (seed 004 gives no noise for its simulated data; σ_MC 0.02–0.08%,
+  // still above the rounding for pitch and yaw α, γ).
   model::Truth truth = testing::CaseTruth("uris");
-  CheckTable4(truth, "uris_rls");
+  CheckTable4(truth, kUrisTable4, "uris_rls");
   for (auto& [dof, sensors] : truth.vehicle.sensors) {
     if (sensors.position) sensors.position->sigma /= 100.0;
   }
-  CheckTable4(truth, "uris_rls_fine");
+  CheckTable4(truth, kUrisTable4Fine, "uris_rls_fine");
 }
 
 TEST(IdentifyCliTest, MethodOptionsAreCheckedAndNamed) {

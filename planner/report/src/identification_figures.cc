@@ -126,6 +126,50 @@ Figure ParameterFigure(const ident::DofIdentification& dof, const std::string& s
   return f;
 }
 
+namespace {
+
+// The unit of an RLS coefficient (rls.h): γ = 1/m, "<name>/m" = θ_name/m.
+std::string CoefficientUnit(const std::string& coefficient, model::Dof dof) {
+  const std::string m = model::Unit("m", dof);
+  if (coefficient == "gamma") return "1/" + m;
+  const std::string name = coefficient.substr(0, coefficient.size() - 2);
+  return "(" + model::Unit(name, dof) + ")/" + m;
+}
+
+}  // namespace
+
+Figure RlsConvergenceFigure(const ident::DofIdentification& dof, const std::string& stem) {
+  Figure f = StartFigure(
+      stem + "-rls", DofText(dof.dof) + ": RLS convergence (seed 004 Fig. 11)",
+      "Each coefficient of the recursive least squares of " + DofText(dof.dof) +
+          " (seed 004 eq. 15; γ = 1/m, θ/m of each other parameter, α = k/m and δ = bias/m "
+          "in the seed's eq. 2) after every update against the campaign time, with its ±1σ "
+          "band (rls.h) once the rows say enough of the residual variance; the dotted line "
+          "is the final estimate.");
+  const ident::RlsDofResult& r = *dof.rls;
+  for (std::size_t j = 0; j < r.coefficient_names.size(); ++j) {
+    Panel p;
+    p.title = r.coefficient_names[j] + (r.coefficient_names[j] == "gamma" ? " = 1/m" : "");
+    p.x_label = "campaign time (s)";
+    p.y_label = r.coefficient_names[j] + " (" + CoefficientUnit(r.coefficient_names[j], dof.dof) + ")";
+    Series band{"±1σ", Style::kBand, Colour::kSky, {}, {}, {}, {}};
+    Series line{"estimate", Style::kLine, Colour::kBlue, {}, {}, {}, {}};
+    const int col = static_cast<int>(j);
+    for (int k = 0; k < r.psi.theta.rows(); ++k) {
+      const double theta = r.psi.theta(k, col), sigma = r.psi.sigma(k, col);
+      if (!std::isfinite(sigma)) continue;  // before 2p rows: no residual variance yet
+      line.x.push_back(r.psi.t[k]), line.y.push_back(theta);
+      band.x.push_back(r.psi.t[k]), band.y.push_back(theta);
+      band.y_low.push_back(theta - sigma), band.y_high.push_back(theta + sigma);
+    }
+    const double final_value = r.psi.theta(r.psi.theta.rows() - 1, col);
+    p.series = {band, line};
+    p.levels.push_back({final_value, "final", Colour::kGrey, Style::kDotted});
+    f.panels.push_back(std::move(p));
+  }
+  return f;
+}
+
 std::vector<Figure> IdentificationFigures(const ident::IdentifyResult& result) {
   std::vector<Figure> figures;
   for (const ident::DofIdentification& d : result.dofs) {
@@ -134,6 +178,7 @@ std::vector<Figure> IdentificationFigures(const ident::IdentifyResult& result) {
     figures.push_back(FreeRunFigure(d, stem));
     figures.push_back(ResidualFigure(d, stem));
     figures.push_back(ParameterFigure(d, stem));
+    if (d.rls && d.rls->ok()) figures.push_back(RlsConvergenceFigure(d, stem));
   }
   return figures;
 }

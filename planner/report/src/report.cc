@@ -29,6 +29,7 @@ void AddIdentification(const ReportInputs& in, Document* doc, ReportFiles* out) 
     if (d.fit.trials.empty()) continue;
     const std::string stem = "identification-" + std::string(model::DofName(d.dof));
     AddFigures({ParameterFigure(d, stem)}, &estimates, out);
+    if (d.rls && d.rls->ok()) AddFigures({RlsConvergenceFigure(d, stem)}, &estimates, out);
     AddFigures({FreeRunFigure(d, stem), ResidualFigure(d, stem)}, &validation, out);
   }
   doc->sections.push_back(std::move(estimates));
