@@ -1,6 +1,7 @@
-// Mapping-switched inertia trials (issue #17) on ROMEO (cases/romeo, seed 000): the planned
-// family against the paper's design at the same duration and pool, every planned profile
-// replayed over the box's corners, and the switched trial identified.
+// Mapping-switched and one-way inertia trials (issue #17): ROMEO's planned family against the
+// paper's design at the same duration and pool, the best family against the single sine on
+// ROMEO, URIS and VSOR, every case's planned profiles replayed from the schedule JSON over the
+// box, and the switched trial identified.
 #include "uuvplan/planner/switched_design.h"
 
 #include <gtest/gtest.h>
