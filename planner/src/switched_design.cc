@@ -56,6 +56,14 @@ class SwitchedProblem {
                   double duration)
       : ctx_(ctx), family_(family), o_(o), prior_(prior), pair_(pair), duration_(duration) {
     interest_ = ctx.Indices(o.interest);
+    if (pair.one_way == 0) {
+      up_ = {pair.pos_range.min_abs, pair.pos_range.max_abs};
+      down_ = {-pair.neg_range.min_abs, -pair.neg_range.max_abs};
+    } else {  // both levels in the one mapping's one direction
+      up_ = down_ = {pair.one_way * pair.pos_range.min_abs, pair.one_way * pair.pos_range.max_abs};
+    }
+    top_ = std::max({up_[0], up_[1], down_[0], down_[1]});
+    bottom_ = std::min({up_[0], up_[1], down_[0], down_[1]});
     const double mid = 0.5 * (pair.pos_range.max_abs + pair.neg_range.max_abs);
     w_ = SineFrequencyRange(ctx, mid);
     if (o.min_periods > 0) w_[0] = std::max(w_[0], 2 * M_PI * o.min_periods / duration);
@@ -78,6 +86,7 @@ class SwitchedProblem {
     d.mapping = ctx_.vehicle().mappings[pair_.pos].name;
     if (family_ == model::InputFamily::kSwitchedSquare) {
       DecodeSquare(x, &d);
+      if (pair_.one_way != 0) d.family = model::InputFamily::kPiecewise;
     } else {
       DecodeWave(x, &d);
     }
@@ -109,9 +118,20 @@ class SwitchedProblem {
 
   // Starting points: the largest swing at the seed rule's frequency, centred (the crude
   // search: ±140 N, 30 s, from mid-pool), and at the lowest and highest frequencies allowed.
+  // One way, the pool binds the mean force: the least one, and short pulses of the largest.
   std::vector<std::vector<double>> Starts() const {
     std::vector<std::vector<double>> out;
+    const double low = pair_.one_way < 0 ? 1.0 : 0.0;  // the offset of the least |force|
     for (double v : {0.3, 0.5, 0.7}) {
+      if (pair_.one_way != 0) {
+        if (family_ == model::InputFamily::kSwitchedSquare) {
+          out.push_back({1.0, 0.0, v, 0.0, 0.0});
+          out.push_back({0.3, 0.0, v + 0.2, 0.2, 0.0});
+        } else {
+          out.push_back({v, 1.0, 0.3, 0.1, 0.0, 0.5, 0.5, 0.5, low});
+        }
+        continue;
+      }
       switch (family_) {
         case model::InputFamily::kSwitchedSquare: out.push_back({1.0, 1.0, v, 0.5, 0.75}); break;
         case model::InputFamily::kSwitchedSine: out.push_back({1.0, 0.5, v, 0.0}); break;
@@ -128,10 +148,11 @@ class SwitchedProblem {
   // Square wave: positive during the first δ of each period, the period's share ψ elapsed at 0.
   void DecodeSquare(const double* x, model::TrialDesign* d) const {
     d->kind = model::TrialKind::kSegments;
-    const double up = Lerp(pair_.pos_range.min_abs, pair_.pos_range.max_abs, x[0]);
-    const double down = -Lerp(pair_.neg_range.min_abs, pair_.neg_range.max_abs, x[1]);
+    const double up = Lerp(up_[0], up_[1], x[0]);
+    const double down = Lerp(down_[0], down_[1], x[1]);
     const double period = 2 * M_PI / Omega(x[2]);
-    const double duty = Lerp(0.1, 0.9, x[3]), psi = std::clamp(x[4], 0.0, 1.0) * period;
+    const double duty = pair_.one_way != 0 ? Lerp(0.02, 0.98, x[3]) : Lerp(0.1, 0.9, x[3]);
+    const double psi = std::clamp(x[4], 0.0, 1.0) * period;
     const std::string& neg = ctx_.vehicle().mappings[pair_.neg].name;
     // Switching instants k·P - ψ and k·P - ψ + δ·P within (0, T); each piece's sign at its middle.
     std::vector<double> cuts = {0.0, duration_};
@@ -163,7 +184,7 @@ class SwitchedProblem {
     d->mapping_neg = ctx_.vehicle().mappings[pair_.neg].name;
     d->floor_pos = pair_.pos_range.min_abs;
     d->floor_neg = pair_.neg_range.min_abs;
-    const double top = pair_.pos_range.max_abs, bottom = -pair_.neg_range.max_abs;
+    const double top = top_, bottom = bottom_;
     if (family_ == model::InputFamily::kSwitchedSine) {
       const double a = Lerp(0.0, 0.5 * (top - bottom), x[0]);
       d->offset = Lerp(bottom + a, top - a, x[1]);
@@ -192,6 +213,10 @@ class SwitchedProblem {
   double duration_;
   std::vector<int> interest_;
   std::array<double, 2> w_;
+  // Signed level ranges of the square's two halves (x = 0 → [0], x = 1 → [1]) and the
+  // waves' crest bounds.
+  std::array<double, 2> up_, down_;
+  double top_ = 0.0, bottom_ = 0.0;
 };
 
 // The trial's information (real sensors), criterion per point, check and status.
@@ -242,16 +267,41 @@ std::vector<SwitchPair> SwitchPairs(const DofContext& ctx) {
   return pairs;
 }
 
+std::vector<SwitchPair> OneWayPairs(const DofContext& ctx) {
+  const model::Vehicle& v = ctx.vehicle();
+  std::vector<SwitchPair> out;
+  for (int mi : v.MappingsOf(ctx.dof())) {
+    for (int sign : {+1, -1}) {
+      const model::Direction dir = sign > 0 ? model::Direction::kPos : model::Direction::kNeg;
+      if (!v.mappings[mi].IsOpenWater(dir)) continue;  // eta unknown: m confounded with it
+      const ForceRange r = ctx.ForceRangeFor(mi, sign);
+      if (r.feasible) out.push_back({mi, mi, r, r, sign});
+    }
+  }
+  return out;
+}
+
 SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family,
                                 const SineDesignOptions& o,
-                                const std::vector<Eigen::MatrixXd>& prior, const std::string& id) {
+                                const std::vector<Eigen::MatrixXd>& prior, const std::string& id,
+                                double one_way_duration_s) {
   SineDesignResult result;
-  const double duration = o.fixed_duration_s > 0
-                              ? o.fixed_duration_s
-                              : std::min(o.max_duration_s > 0 ? o.max_duration_s : 1e300,
-                                         ctx.options().max_trial_duration_s);
+  const double longest = o.fixed_duration_s > 0
+                             ? o.fixed_duration_s
+                             : std::min(o.max_duration_s > 0 ? o.max_duration_s : 1e300,
+                                        ctx.options().max_trial_duration_s);
+  std::vector<SwitchPair> pairs = SwitchPairs(ctx);
+  // No pair alternates (one mapping per direction, both reversing the same propellers: URIS
+  // surge, VSOR yaw, heave): the square and the multisine one way, within one direction's range.
+  if (pairs.empty() && o.one_way_families && family != model::InputFamily::kSwitchedSine) {
+    pairs = OneWayPairs(ctx);
+  }
   double best = -std::numeric_limits<double>::infinity();
-  for (const SwitchPair& pair : SwitchPairs(ctx)) {
+  for (const SwitchPair& pair : pairs) {
+    // One way the vehicle drifts: the longest trial is not the best; the sine's duration is.
+    const double duration = pair.one_way != 0 && o.fixed_duration_s <= 0 && one_way_duration_s > 0
+                                ? one_way_duration_s
+                                : longest;
     SwitchedProblem sp(ctx, family, o, prior, pair, duration);
     DesignProblem p;
     p.num_variables = sp.num_variables();
@@ -290,14 +340,15 @@ SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptio
                                     const std::vector<Eigen::MatrixXd>& prior,
                                     const std::string& id) {
   SineDesignResult best = DesignSine(ctx, o, prior, id);
+  const double sine_duration = best.status == DesignStatus::kOk ? best.trial.design.duration : 0.0;
   best.notes.push_back("single sine: " + (best.status == DesignStatus::kOk
                                               ? "robust criterion " + model::Significant(best.criterion, 4)
                                               : best.message));
   for (model::InputFamily family : o.families) {
-    SineDesignResult r = DesignSwitched(ctx, family, o, prior, id);
+    SineDesignResult r = DesignSwitched(ctx, family, o, prior, id, sine_duration);
     std::ostringstream s;
-    s << model::InputFamilyName(family) << ": "
-      << (r.status == DesignStatus::kOk ? "robust criterion " + model::Significant(r.criterion, 4)
+    s << model::InputFamilyName(r.status == DesignStatus::kOk ? r.trial.design.family : family)
+      << ": " << (r.status == DesignStatus::kOk ? "robust criterion " + model::Significant(r.criterion, 4)
                                         : r.message);
     best.notes.push_back(s.str());
     if (r.status != DesignStatus::kOk) continue;
@@ -306,7 +357,7 @@ SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptio
       const std::string suffix = "-sine";
       if (model::EndsWith(id, suffix)) {
         r.trial.design.id = id.substr(0, id.size() - suffix.size()) + "-" +
-                            std::string(model::InputFamilyName(family));
+                            std::string(model::InputFamilyName(r.trial.design.family));
       }
       best = std::move(r);
     }

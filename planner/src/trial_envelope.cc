@@ -120,7 +120,14 @@ StartPosition StartOf(const model::Pool& pool, model::Dof dof, const std::array<
 }
 
 void AddReplayFields(const model::Vehicle& vehicle, const model::Pool& pool, PlannedTrial* trial) {
-  trial->profile = SampleProfile(vehicle, trial->design);
+  // A fast wave sampled 0.1 s apart does not replay it (VSOR heave: 7.7 mm of travel off):
+  // at least 40 samples per period of its fastest component, linear interpolation then within
+  // (2π/40)²/8 = 0.3% of its amplitude.
+  const model::TrialDesign& d = trial->design;
+  double omega = d.kind == model::TrialKind::kSine ? d.omega : 0.0;
+  for (const auto& c : d.components) omega = std::max(omega, c.omega);
+  const double spacing = omega > 0 ? std::min(0.1, 2 * M_PI / omega / 40) : 0.1;
+  trial->profile = SampleProfile(vehicle, d, spacing);
   trial->start = StartOf(pool, trial->design.dof, trial->travel);
 }
 

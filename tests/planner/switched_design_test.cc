@@ -1,15 +1,18 @@
-// Mapping-switched inertia trials (issue #17) on ROMEO (cases/romeo, seed 000): the planned
-// family against the paper's design at the same duration and pool, every planned profile
-// replayed over the box's corners, and the switched trial identified.
+// Mapping-switched and one-way inertia trials (issue #17): ROMEO's planned family against the
+// paper's design at the same duration and pool, the best family against the single sine on
+// ROMEO, URIS and VSOR, every case's planned profiles replayed from the schedule JSON over the
+// box, and the switched trial identified.
 #include "uuvplan/planner/switched_design.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
 #include "planner_test_util.h"
 #include "uuvplan/ident/identify.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/planner/criteria.h"
@@ -23,42 +26,80 @@ namespace {
 
 using testing::PaperSurgeSine;
 
-// The trial as its schedule entry gives it to another tool: the sampled profile, held between
-// samples (the profile is ≤ 0.1 s apart and samples both sides of every jump).
-std::unique_ptr<model::Excitation> Replay(const model::Vehicle& v, const PlannedTrial& t) {
-  std::vector<int> mapping;
-  for (const auto& name : t.profile.mapping) mapping.push_back(v.MappingIndex(name));
-  return model::MakeHeldExcitation(t.profile.t, t.profile.force, mapping, t.design.duration);
-}
-
-// Every box corner (m at its bounds × drag at 1 ± rel_sigma) and the centre: the replayed
-// profile, simulated by model::Simulate at 0.02 s from the planned start, stays within the
-// free length (margins kept), and no working thruster reverses, drops below min_thrust or
-// exceeds its range.
-void ExpectReplayFeasible(const model::Vehicle& v, const model::Pool& pool, const DofContext& ctx,
-                          const PlannedTrial& t) {
-  ASSERT_FALSE(t.profile.t.empty()) << t.design.id;
-  for (std::size_t i = 1; i < t.profile.t.size(); ++i) {
-    ASSERT_LE(t.profile.t[i] - t.profile.t[i - 1], 0.1 + 1e-9) << t.design.id;  // issue: ≤ 0.1 s
+// The trial as its schedule JSON gives it to another tool: the sampled profile {t, force,
+// mapping}, linear between samples; a jump is sampled on both sides (1e-9·t apart), held
+// between them, and both are integration breakpoints (so that no RK4 stage of the step before
+// a jump sees the value after it). Independent of the planner's excitations.
+class ProfileReplay : public model::Excitation {
+ public:
+  static constexpr double kJump = 1e-6;  // s: samples closer than this are the two sides of a jump
+  ProfileReplay(const model::Vehicle& v, const nlohmann::json& profile, double duration)
+      : t_(profile.at("t").get<std::vector<double>>()),
+        f_(profile.at("force").get<std::vector<double>>()),
+        duration_(duration) {
+    for (const auto& name : profile.at("mapping")) {
+      mapping_.push_back(v.MappingIndex(name.get<std::string>()));
+    }
+    for (std::size_t i = 1; i < t_.size(); ++i) {
+      if (t_[i] - t_[i - 1] < kJump) jumps_.insert(jumps_.end(), {t_[i - 1], t_[i]});
+    }
   }
-  const auto input = Replay(v, t);
-  const auto& tm = ctx.ModelFor(t.design);
-  const ThrustCheck tc = CheckThrust(v, *input, t.design.duration);
-  EXPECT_TRUE(tc.ok()) << t.design.id << ": " << (tc.reasons.empty() ? "" : tc.reasons.front());
-  const auto mb = v.InertiaBounds(t.design.dof);
-  const auto& drag = *v.priors.at(t.design.dof).drag;
-  ASSERT_EQ(t.start.unit, "m");
-  for (double m : {mb[0], 0.5 * (mb[0] + mb[1]), mb[1]}) {
-    for (double f : {1 - drag.rel_sigma, 1.0, 1 + drag.rel_sigma}) {
-      Eigen::VectorXd th = tm.design_thetas.front();
-      th[0] = m;
-      th[1] = drag.k * f;
-      th[2] = drag.kq * f;
-      const TrialResponse r = SimulateExcursion(*tm.model, th, *input, t.design.duration, 0.02);
-      // 1 mm: the planner keeps 5 mm inside; the two integrations differ by far less.
-      EXPECT_GE(t.start.value + r.position_min, pool.margin - 1e-3) << t.design.id << " m " << m;
-      EXPECT_LE(t.start.value + r.position_max, pool.length - pool.margin + 1e-3)
-          << t.design.id << " m " << m << " drag ×" << f;
+  double Force(double t) const override {
+    const std::size_t i = Interval(t);
+    if (i + 1 >= t_.size()) return f_.back();
+    if (t_[i + 1] - t_[i] < kJump) return f_[i];  // the jump itself: the earlier value holds
+    const double u = std::clamp((t - t_[i]) / (t_[i + 1] - t_[i]), 0.0, 1.0);
+    return f_[i] + u * (f_[i + 1] - f_[i]);
+  }
+  int Mapping(double t) const override { return mapping_[Interval(t)]; }
+  std::vector<double> Breakpoints() const override { return jumps_; }
+  double duration() const override { return duration_; }
+  double sample_spacing() const {
+    double h = 0.0;
+    for (std::size_t i = 1; i < t_.size(); ++i) h = std::max(h, t_[i] - t_[i - 1]);
+    return h;
+  }
+
+ private:
+  std::size_t Interval(double t) const {  // the last sample at or before t
+    const auto it = std::upper_bound(t_.begin(), t_.end(), t);
+    return it == t_.begin() ? 0 : static_cast<std::size_t>(it - t_.begin()) - 1;
+  }
+  std::vector<double> t_, f_;
+  std::vector<int> mapping_;
+  std::vector<double> jumps_;
+  double duration_;
+};
+
+// One trial of a schedule JSON, replayed from its profile and start: simulated by
+// SimulateExcursion at 0.02 s over the whole check grid of the a priori box (every corner and
+// the centre of m × drag × eta, 3 values per axis), its travel from the planned start stays
+// within the pool's free length/width/depth or the tether's turns, and no working thruster
+// reverses, drops below min_thrust or exceeds its range (CheckThrust).
+void ExpectReplayFeasible(const model::Vehicle& v, const model::Pool& pool,
+                          const nlohmann::json& trial) {
+  const std::string id = trial.at("id").get<std::string>();
+  ASSERT_TRUE(trial.contains("profile") && trial.contains("start")) << id;
+  const double duration = trial.at("duration").get<double>();
+  const ProfileReplay input(v, trial.at("profile"), duration);
+  EXPECT_LE(input.sample_spacing(), 0.1 + 1e-9) << id;  // issue #17: at most 0.1 s apart
+  const ThrustCheck tc = CheckThrust(v, input, duration);
+  EXPECT_TRUE(tc.ok()) << id << ": " << (tc.reasons.empty() ? "" : tc.reasons.front());
+  const model::Dof dof = *model::ParseDof(trial.at("dof").get<std::string>());
+  const auto ctx = DofContext::APriori(v, pool, dof, PlannerOptions{}, nullptr);
+  const PlannedTrial planned = io::TrialFromJson(io::JsonValue(trial, "schedule", id));
+  const auto& tm = ctx->ModelFor(planned.design);
+  const double free = pool.FreeTravel(dof);
+  const auto& start = trial.at("start");
+  // Metres from a wall (its margin included), or degrees from the tether's end.
+  const double from_end = start.at("unit") == "deg" ? start.at("value").get<double>() * M_PI / 180
+                                                    : start.at("value").get<double>() - pool.margin;
+  for (const Eigen::VectorXd& theta : tm.check_thetas) {
+    const TrialResponse r = SimulateExcursion(*tm.model, theta, input, duration, 0.02);
+    // 1 mm (1e-3 rad): the planner keeps 5 mm inside; the two integrations differ by far less.
+    EXPECT_GE(from_end + r.position_min, -1e-3) << id << " at theta " << theta.transpose();
+    if (std::isfinite(free)) {
+      EXPECT_LE(from_end + r.position_max, free + 1e-3) << id << " at theta " << theta.transpose();
     }
   }
 }
@@ -99,7 +140,9 @@ TEST_F(RomeoSurgeFamilies, ScheduleAt52sBeatsThePaperThreeTimesOverAndReplaysFea
   RecordProperty("sigma_m_ratio_family_over_paper", std::to_string(planned / paper));
   EXPECT_LE(planned / paper, 0.3);  // issue #17's requirement
   EXPECT_NEAR(t.design.duration, 52.0, 1e-9);
-  for (const PlannedTrial& trial : r.schedule.trials) ExpectReplayFeasible(v_, pool_, *ctx_, trial);
+  for (const auto& trial : io::ScheduleToJson(r.schedule).at("trials")) {
+    ExpectReplayFeasible(v_, pool_, trial);
+  }
 }
 
 TEST_F(RomeoSurgeFamilies, SwitchedTrialIsIdentifiedWithinThreeSigma) {
@@ -140,34 +183,105 @@ struct FamilyCase {
 };
 class FamiliesAgainstTheSine : public ::testing::TestWithParam<FamilyCase> {};
 
-TEST_P(FamiliesAgainstTheSine, HalveTheWorstSigmaOfTheMass) {
-  const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + GetParam().vehicle + "/";
+// The best family's worst σ(m)/m over the single sine's at the sine's duration (printed).
+double FamilyOverSine(const FamilyCase& c) {
+  const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + c.vehicle + "/";
   const model::Vehicle v = io::ReadVehicle(dir + "vehicle.yaml");
   const model::Pool pool = io::ReadPool(dir + "pool.yaml");
-  const auto ctx = DofContext::APriori(v, pool, GetParam().dof, PlannerOptions{}, nullptr);
+  const auto ctx = DofContext::APriori(v, pool, c.dof, PlannerOptions{}, nullptr);
   SineDesignOptions o;
   o.families.clear();
   const SineDesignResult sine = DesignInertiaTrial(*ctx, o, {}, "sine");
-  ASSERT_EQ(sine.status, DesignStatus::kOk) << sine.message;
+  EXPECT_EQ(sine.status, DesignStatus::kOk) << sine.message;
   o = SineDesignOptions{};
+  o.one_way_families = true;  // URIS surge, VSOR yaw: no switch pair
   o.fixed_duration_s = sine.trial.design.duration;
   const SineDesignResult best = DesignInertiaTrial(*ctx, o, {}, "best");
-  ASSERT_EQ(best.status, DesignStatus::kOk) << best.message;
+  EXPECT_EQ(best.status, DesignStatus::kOk) << best.message;
   const double s = testing::WorstSigmaM(*ctx, sine.information);
   const double b = testing::WorstSigmaM(*ctx, best.information);
-  std::cout << "[ " << GetParam().vehicle << " " << model::DofName(GetParam().dof) << " ] "
+  std::cout << "[ " << c.vehicle << " " << model::DofName(c.dof) << " ] "
             << sine.trial.design.duration << " s: single sine " << s << ", "
             << model::InputFamilyName(best.trial.design.family) << " " << b << ", ratio " << b / s
             << "\n";
-  EXPECT_LE(b / s, 0.5);  // issue #17
+  // The chosen trial as its schedule entry would give it, replayed over the box.
+  PlannedTrial planned;
+  planned.design = best.trial.design;
+  planned.travel = best.check.travel;
+  AddReplayFields(v, pool, &planned);
+  ExpectReplayFeasible(v, pool, io::TrialToJson(planned));
+  return b / s;
 }
+
+TEST_P(FamiliesAgainstTheSine, HalveTheWorstSigmaOfTheMass) {
+  EXPECT_LE(FamilyOverSine(GetParam()), 0.5);  // issue #17
+}
+
+// VSOR yaw (seed 002 Table 3): one mapping, HT1 + HT7 for clockwise torque; counter-clockwise
+// torque reverses both, so no pair switches and the families run one way, within
+// [min_thrust, rate limit] = [3.11, 27.4] N·m. A one-way square swings that range at most:
+// twice the sine's power, σ ×1/√2 at best — measured 0.76, the issue's 0.5 is out of reach
+// (docs/planning.md §1b). Slow (~15 s): run with --gtest_also_run_disabled_tests.
+TEST(DISABLED_FamiliesVsorYaw, OneWayOnlyAndNoWorseThanTheSine) {
+  const FamilyCase vsor{"vsor", model::Dof::kYaw};
+  const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/vsor/";
+  const model::Vehicle v = io::ReadVehicle(dir + "vehicle.yaml");
+  const auto ctx = DofContext::APriori(v, io::ReadPool(dir + "pool.yaml"), model::Dof::kYaw,
+                                       PlannerOptions{}, nullptr);
+  EXPECT_TRUE(SwitchPairs(*ctx).empty());
+  EXPECT_LT(FamilyOverSine(vsor), 1.0);
+}
+
+// The DOFs of issue #17's table that have no switch pair: their only mapping reverses every
+// thruster it uses for the other sign (URIS surge-x: XL + XR; VSOR yaw-ht1-ht7: HT1 + HT7).
+TEST(FamiliesOneWay, UrisSurgeAndVsorYawHaveNoSwitchPairButOneWayRanges) {
+  for (const FamilyCase c : {FamilyCase{"uris", model::Dof::kSurge}, FamilyCase{"vsor", model::Dof::kYaw}}) {
+    const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + c.vehicle + "/";
+    const model::Vehicle v = io::ReadVehicle(dir + "vehicle.yaml");
+    const auto ctx =
+        DofContext::APriori(v, io::ReadPool(dir + "pool.yaml"), c.dof, PlannerOptions{}, nullptr);
+    EXPECT_TRUE(SwitchPairs(*ctx).empty()) << c.vehicle;
+    const auto one_way = OneWayPairs(*ctx);
+    ASSERT_FALSE(one_way.empty()) << c.vehicle;
+    for (const SwitchPair& p : one_way) {
+      EXPECT_EQ(p.pos, p.neg);
+      EXPECT_NE(p.one_way, 0);
+      EXPECT_TRUE(v.mappings[p.pos].IsOpenWater(p.one_way > 0 ? model::Direction::kPos
+                                                              : model::Direction::kNeg));
+    }
+  }
+}
+
+// Every case with a pool: the inertia trial of every DOF its schedule plans, in whichever family
+// won, written to the schedule JSON and replayed from there (ExpectReplayFeasible). The steady
+// runs are left out for CI time (their legs are `steady`/`segments`, held exactly by the
+// profile and checked by the same DofContext::Check); the switched families are what issue #17
+// added (the one-way ones, off by default, are replayed by FamiliesAgainstTheSine).
+class ReplayEveryCase : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ReplayEveryCase, EveryPlannedProfileHoldsOverTheBox) {
+  const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + GetParam() + "/";
+  const model::Vehicle v = io::ReadVehicle(dir + "vehicle.yaml");
+  const model::Pool pool = io::ReadPool(dir + "pool.yaml");
+  ScheduleOptions o;
+  o.steady_runs = false;
+  o.max_completion_trials = 0;
+  const ScheduleResult r = PlanSchedule(v, pool, o);
+  const nlohmann::json j = io::ScheduleToJson(r.schedule);
+  ASSERT_FALSE(j.at("trials").empty()) << r.message;
+  for (const auto& trial : j.at("trials")) {
+    std::cout << "[ " << GetParam() << " ] replayed " << trial.at("id").get<std::string>() << "\n";
+    ExpectReplayFeasible(v, pool, trial);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, ReplayEveryCase,
+                         ::testing::Values("romeo", "vsor", "uris", "payload60"));
 
 INSTANTIATE_TEST_SUITE_P(Cases, FamiliesAgainstTheSine,
                          ::testing::Values(FamilyCase{"romeo", model::Dof::kYaw},
-                                           FamilyCase{"romeo", model::Dof::kSway}));
-// Not met (docs/planning.md §1b): VSOR yaw (no sine of any kind at a fixed duration: the force
-// range between min_thrust and the rate limit is too narrow) and URIS surge (no switched design
-// beats the single sine in its pool).
+                                           FamilyCase{"romeo", model::Dof::kSway},
+                                           FamilyCase{"uris", model::Dof::kSurge}));
 
 }  // namespace
 }  // namespace uuvplan::planner

@@ -60,6 +60,11 @@ struct SineDesignOptions {
   std::vector<model::InputFamily> families = {model::InputFamily::kSwitchedSquare,
                                               model::InputFamily::kSwitchedSine,
                                               model::InputFamily::kMultisine};
+  /// A DOF without a switch pair (URIS surge, VSOR yaw, every heave of the cases) may also take
+  /// the square (family `piecewise`) and the multisine one way (switched_design.h OneWayPairs).
+  /// Off by default: on, ROMEO's loop plans heave one way and then misses its heave m by 6σ and
+  /// eta.vertical-all.neg (DesignLoopTest, not investigated; docs/planning.md §1b).
+  bool one_way_families = false;
 
   bool IsValid(std::string* error) const;
 };

@@ -39,14 +39,24 @@ namespace uuvplan::planner {
 struct SwitchPair {
   int pos = -1, neg = -1;
   ForceRange pos_range, neg_range;
+  /// 0: a switched pair. ±1: no switch — mapping pos (== neg) in this direction only, both
+  /// halves of the square (and the whole wave) within its force range.
+  int one_way = 0;
 };
 std::vector<SwitchPair> SwitchPairs(const DofContext& ctx);
+/// Every mapping and direction of ctx's DOF in open water (eta known) whose force range is
+/// feasible, as one-way "pairs": the families of a DOF that has no switch pair.
+std::vector<SwitchPair> OneWayPairs(const DofContext& ctx);
 
 /// The best trial of one switched family over every switch pair of ctx's DOF (status kFailed
-/// with a message when the DOF has no pair or no feasible design).
+/// with a message when the DOF has no pair or no feasible design). A DOF without a switch pair
+/// gets, when options.one_way_families, the square (family `piecewise`: two levels in one direction) and the multisine one way
+/// over OneWayPairs, at the fixed duration, else at one_way_duration_s (> 0; the single sine's,
+/// which fits the drift to the pool), else the longest allowed.
 SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family,
                                 const SineDesignOptions& options,
-                                const std::vector<Eigen::MatrixXd>& prior, const std::string& id);
+                                const std::vector<Eigen::MatrixXd>& prior, const std::string& id,
+                                double one_way_duration_s = 0.0);
 
 /// The inertia trial: the single-mapping sine (seed 000, the fallback) and every family of
 /// options.families, the one with the largest robust criterion that passes its checks. The

@@ -38,7 +38,8 @@ struct ThrusterForces {
 ThrusterForces ThrusterForcesOf(const model::Vehicle& vehicle, const model::TrialDesign& design,
                                 int points);
 
-/// The nominal input phi_n(t) and the mapping in force, sampled for replay (issue #17): a
+/// The nominal input phi_n(t) and the mapping in force, sampled for replay (issue #17; the
+/// schedule's trials at 0.1 s or 40 samples per period of a wave's fastest component): a
 /// uniform grid at most `max_spacing_s` apart from 0 to the duration, plus both sides of every
 /// jump (1e-9·duration before it and at it), so that a zero-order hold or a linear
 /// interpolation of the samples reproduces the design.
