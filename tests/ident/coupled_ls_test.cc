@@ -1,0 +1,96 @@
+// The one-step integral least squares of the coupled horizontal model (ident/coupled_ls.h) on
+// virtual combined-mode campaigns of the ASV (cases/asv, seed 003).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/coupled_campaign.h"
+#include "uuvplan/ident/coupled_ls.h"
+#include "uuvplan/io/truth_yaml.h"
+#include "uuvplan/model/coupled_model.h"
+
+namespace uuvplan::ident {
+namespace {
+
+model::Truth AsvTruth() {
+  return io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/truth.yaml");
+}
+
+std::vector<const model::TrialLog*> Pointers(const std::vector<model::TrialLog>& logs) {
+  std::vector<const model::TrialLog*> p;
+  for (const auto& l : logs) p.push_back(&l);
+  return p;
+}
+
+// The case's own truth: every parameter within 3σ, and the σ small enough to mean something
+// (the coupling's inertias to better than 10%).
+TEST(CoupledLeastSquares, RecoversTheAsvCase) {
+  const model::Truth truth = AsvTruth();
+  const auto logs = testing::RunCoupledCampaign(truth, testing::CombinedModeDesigns(120.0), 11);
+  const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_TRUE(r.instrumental);
+  const model::CoupledHorizontalModel want = model::CoupledModelOfTruth(truth);
+  for (int j = 0; j < model::kCoupledParameterCount; ++j) {
+    EXPECT_LT(std::abs(r.theta[j] - want.theta[j]), 3 * r.Sigma(j))
+        << r.names[j] << " = " << r.theta[j] << " ± " << r.Sigma(j) << ", true " << want.theta[j];
+  }
+  for (int i = 0; i < 3; ++i) {
+    const int m = model::CoupledIndex(i, "m");
+    EXPECT_LT(r.Sigma(m), 0.1 * want.theta[m]) << r.names[m];
+  }
+}
+
+// Issue #19 Done when: random coupling truths (seeded), 10 seeds, every coupled parameter within
+// 3σ of the truth for >= 90% of the 120 parameter estimates. With a σ that Monte Carlo confirms,
+// 99.7% fall within 3σ; a 90% floor fails when σ is too small by a third or more (then about
+// 87% or fewer fall within 3σ) or when an estimate is biased by a σ or more.
+TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
+  const model::Truth base = AsvTruth();
+  const auto designs = testing::CombinedModeDesigns(120.0);
+  int within = 0, total = 0;
+  std::string outside;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const model::Truth truth = testing::RandomCoupledTruth(base, seed);
+    const auto logs = testing::RunCoupledCampaign(truth, designs, 1000 + seed);
+    const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
+    ASSERT_TRUE(r.ok()) << "seed " << seed << ": " << r.message;
+    const model::CoupledHorizontalModel want = model::CoupledModelOfTruth(truth);
+    for (int j = 0; j < model::kCoupledParameterCount; ++j, ++total) {
+      const double z = (r.theta[j] - want.theta[j]) / r.Sigma(j);
+      if (std::abs(z) < 3) {
+        ++within;
+      } else {
+        outside += " seed " + std::to_string(seed) + " " + r.names[j] + " z = " +
+                   std::to_string(z) + ";";
+      }
+    }
+  }
+  EXPECT_GE(within, 0.9 * total) << within << " of " << total << " within 3σ; outside:" << outside;
+}
+
+TEST(CoupledLeastSquares, NamesTheMissingColumn) {
+  auto logs = testing::RunCoupledCampaign(AsvTruth(), testing::CombinedModeDesigns(60.0), 3);
+  logs[1].velocity[model::Index(model::Dof::kSway)].clear();
+  const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.message.find("trial 2: no vel_sway column"), std::string::npos) << r.message;
+}
+
+// One combined mode (surge+yaw) never moves sway on its own: sway's drag is only seen through
+// the side-slip the turn drives, and the regression says which parameters it cannot tell.
+TEST(CoupledLeastSquares, OneModeAloneIsReportedNotGuessed) {
+  auto designs = testing::CombinedModeDesigns(60.0);
+  designs.resize(1);
+  const auto logs = testing::RunCoupledCampaign(AsvTruth(), designs, 5);
+  const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
+  if (r.ok()) {
+    // Accepted only with honest σ: the sway parameters are then poorly determined.
+    EXPECT_GT(r.Sigma(model::CoupledIndex(1, "kq")), 0.3 * 260.0);
+  } else {
+    EXPECT_FALSE(r.message.empty());
+  }
+}
+
+}  // namespace
+}  // namespace uuvplan::ident
