@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "support/coupled_campaign.h"
 #include "uuvplan/ident/coupled_ls.h"
@@ -66,6 +67,7 @@ TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
       }
     }
   }
+  std::printf("%d of %d within 3σ;%s\n", within, total, outside.c_str());
   EXPECT_GE(within, 0.9 * total) << within << " of " << total << " within 3σ; outside:" << outside;
 }
 
