@@ -51,6 +51,7 @@ TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
   const auto designs = testing::CombinedModeDesigns(120.0);
   int within = 0, total = 0;
   std::string outside;
+  double inertia_z = 0.0;  // Σ z of m_u and m_v, the inertias the coupling is made of
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const model::Truth truth = testing::RandomCoupledTruth(base, seed);
     const auto logs = testing::RunCoupledCampaign(truth, designs, 1000 + seed);
@@ -59,6 +60,7 @@ TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
     const model::CoupledHorizontalModel want = model::CoupledModelOfTruth(truth);
     for (int j = 0; j < model::kCoupledParameterCount; ++j, ++total) {
       const double z = (r.theta[j] - want.theta[j]) / r.Sigma(j);
+      if (j == model::CoupledIndex(0, "m") || j == model::CoupledIndex(1, "m")) inertia_z += z;
       if (std::abs(z) < 3) {
         ++within;
       } else {
@@ -69,6 +71,10 @@ TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
   }
   std::printf("%d of %d within 3σ;%s\n", within, total, outside.c_str());
   EXPECT_GE(within, 0.9 * total) << within << " of " << total << " within 3σ; outside:" << outside;
+  // No bias in the coupling's inertias: the mean of 20 unbiased z has σ 1/√20 = 0.22, so it
+  // stays within ±3/√20 = ±0.67 (99.7%). The plain least squares (no instruments) is biased low
+  // by errors in variables (mean z −0.89 at these trial lengths, docs/validation.md) and fails.
+  EXPECT_LT(std::abs(inertia_z / 20), 3 / std::sqrt(20.0)) << "mean z of surge.m, sway.m";
 }
 
 TEST(CoupledLeastSquares, NamesTheMissingColumn) {
@@ -77,21 +83,6 @@ TEST(CoupledLeastSquares, NamesTheMissingColumn) {
   const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
   EXPECT_FALSE(r.ok());
   EXPECT_NE(r.message.find("trial 2: no vel_sway column"), std::string::npos) << r.message;
-}
-
-// One combined mode (surge+yaw) never moves sway on its own: sway's drag is only seen through
-// the side-slip the turn drives, and the regression says which parameters it cannot tell.
-TEST(CoupledLeastSquares, OneModeAloneIsReportedNotGuessed) {
-  auto designs = testing::CombinedModeDesigns(60.0);
-  designs.resize(1);
-  const auto logs = testing::RunCoupledCampaign(AsvTruth(), designs, 5);
-  const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
-  if (r.ok()) {
-    // Accepted only with honest σ: the sway parameters are then poorly determined.
-    EXPECT_GT(r.Sigma(model::CoupledIndex(1, "kq")), 0.3 * 260.0);
-  } else {
-    EXPECT_FALSE(r.message.empty());
-  }
 }
 
 }  // namespace

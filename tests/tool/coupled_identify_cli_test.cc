@@ -12,7 +12,7 @@
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/coupled_model.h"
 
-namespace uuvplan::tool {
+namespace uuvplan::tool_test {
 namespace {
 
 TEST(CoupledIdentifyCli, IdentifiesACombinedModeCampaign) {
@@ -56,4 +56,4 @@ TEST(CoupledIdentifyCli, IdentifiesACombinedModeCampaign) {
 }
 
 }  // namespace
-}  // namespace uuvplan::tool
+}  // namespace uuvplan::tool_test

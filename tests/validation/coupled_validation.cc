@@ -4,6 +4,7 @@
 // share of estimates within 1σ, 2σ and 3σ of the truth (Gaussian: 68.3%, 95.4%, 99.7%), the
 // mean z = (θ̂ − θ)/σ (bias, in σ) and the standard deviation of z (1 when σ is right).
 // Run: build/coupled_validation [draws = 200] [first seed = 1] [trial duration s = 120]
+//      [instrumental-variable iterations = 2; 0: the seeds' plain least squares]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,8 +22,11 @@ int main(int argc, char** argv) {
   const int draws = argc > 1 ? std::atoi(argv[1]) : 200;
   const std::uint64_t first = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 1;
   const double duration = argc > 3 ? std::atof(argv[3]) : 120.0;
-  if (draws <= 0 || first == 0 || !(duration > 0) || argc > 4) {
-    std::fprintf(stderr, "usage: coupled_validation [draws > 0] [first seed > 0] [duration s]\n");
+  ident::CoupledLsOptions options;
+  if (argc > 4) options.iv_iterations = std::atoi(argv[4]);
+  if (draws <= 0 || first == 0 || !(duration > 0) || argc > 5 || !options.IsValid(nullptr)) {
+    std::fprintf(stderr, "usage: coupled_validation [draws > 0] [first seed > 0] [duration s] "
+                         "[iv iterations 0..20]\n");
     return 2;
   }
   const model::Truth base =
@@ -37,7 +41,7 @@ int main(int argc, char** argv) {
     const auto logs = testing::RunCoupledCampaign(truth, designs, 1000 + seed);
     std::vector<const model::TrialLog*> p;
     for (const auto& l : logs) p.push_back(&l);
-    const ident::CoupledLsResult r = ident::CoupledOneStepLeastSquares(p, ident::CoupledLsOptions{});
+    const ident::CoupledLsResult r = ident::CoupledOneStepLeastSquares(p, options);
     if (!r.ok()) {
       std::printf("seed %llu: %s\n", static_cast<unsigned long long>(seed), r.message.c_str());
       ++failed;
@@ -47,8 +51,9 @@ int main(int argc, char** argv) {
     for (int j = 0; j < P; ++j) z[j].push_back((r.theta[j] - want.theta[j]) / r.Sigma(j));
   }
   const std::vector<std::string> names = model::CoupledParameterNames();
-  std::printf("%d draws from seed %llu, trials of %g s, %d failed fits\n", draws,
-              static_cast<unsigned long long>(first), duration, failed);
+  std::printf("%d draws from seed %llu, trials of %g s, %d IV iterations, %d failed fits\n",
+              draws, static_cast<unsigned long long>(first), duration, options.iv_iterations,
+              failed);
   std::printf("%-12s %7s %7s %7s %8s %7s\n", "parameter", "1σ %", "2σ %", "3σ %", "mean z",
               "sd z");
   int within3 = 0, total = 0;
