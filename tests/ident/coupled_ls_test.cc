@@ -71,10 +71,11 @@ TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
   }
   std::printf("%d of %d within 3σ;%s\n", within, total, outside.c_str());
   EXPECT_GE(within, 0.9 * total) << within << " of " << total << " within 3σ; outside:" << outside;
-  // No bias in the coupling's inertias: the mean of 20 unbiased z has σ 1/√20 = 0.22, so it
-  // stays within ±3/√20 = ±0.67 (99.7%). The plain least squares (no instruments) is biased low
-  // by errors in variables (mean z −0.89 at these trial lengths, docs/validation.md) and fails.
-  EXPECT_LT(std::abs(inertia_z / 20), 3 / std::sqrt(20.0)) << "mean z of surge.m, sway.m";
+  // No bias in the coupling's inertias: the mean of 20 unbiased z has σ 1/√20 = 0.22; the bound
+  // is 2σ of it, ±0.45 (seeded, so the draw is fixed: +0.22 today). The plain least squares (no
+  // instruments) is biased low by errors in variables: −0.64 on these seeds, and −0.9 over 200
+  // draws (docs/validation.md); it fails here.
+  EXPECT_LT(std::abs(inertia_z / 20), 2 / std::sqrt(20.0)) << "mean z of surge.m, sway.m";
 }
 
 TEST(CoupledLeastSquares, NamesTheMissingColumn) {
