@@ -1,5 +1,6 @@
 // `uuvplan identify CAMPAIGN [--json F] [--dof D]... [--steady TRIAL:T0:T1]... [--no-refine]
-// [--no-prune] [--closed-loop yes|no|auto] [--method M [--forgetting λ]] [--accept-units]`:
+// [--no-prune] [--closed-loop yes|no|auto] [--method M [--forgetting λ]] [--model dof|coupled]
+// [--accept-units]`:
 // parameter estimates with standard deviations and the fit of the identified model
 // (ident/identify.h, docs/identification.md); --method runs one of the seeds' estimators alone.
 // Exit status 0 when every DOF was identified, 1 when some DOF failed (its FAILED line says
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "command.h"
+#include "coupled_identify.h"
 #include "identify_table.h"
 #include "method_flags.h"
 #include "uuvplan/io/identify_json.h"
@@ -38,6 +40,7 @@ struct IdentifyCommandOptions {
   std::string closed_loop{kClosedLoopNames.Name(ident::IdentifyOptions{}.closed_loop)};
   MethodFlags method;  ///< --method, --forgetting
   bool accept_units = false;
+  std::string model_kind = "dof";  ///< --model: dof (one model per DOF) or coupled (seed 003)
   ident::IdentifyOptions identify;  ///< --no-refine, --no-prune bound here
 };
 
@@ -79,6 +82,7 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
 
 int RunIdentify(const IdentifyCommandOptions& co) {
   model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
+  if (co.model_kind == "coupled") return RunCoupledIdentify(campaign, co.campaign, co.json);
   ident::IdentifyOptions o = co.identify;
   o.dofs = ParseDofFlags(co.dofs);
   for (const std::string& s : co.steady) AddSteadyWindow(s, campaign, &o);
@@ -118,6 +122,11 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
                   "whether the logs were recorded in closed loop: auto (detect), yes, no")
       ->capture_default_str();
   AddMethodOptions(sub, &o->method);
+  sub->add_option("--model", o->model_kind,
+                  "dof (a model per DOF) or coupled (seed 003's surge-sway-yaw model from "
+                  "combined-mode trials, docs/identification.md)")
+      ->check(CLI::IsMember({"dof", "coupled"}))
+      ->capture_default_str();
   AddAcceptUnitsFlag(sub, &o->accept_units);
   AddThreadsOption(sub, {&o->identify.threads}, "preparing the trials and fitting the DOFs");
 }

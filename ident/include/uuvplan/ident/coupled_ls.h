@@ -1,0 +1,73 @@
+// One-step integral least squares of the coupled horizontal model (model/coupled_model.h,
+// seed 003 3-DOF equations) from combined-mode trials (seed 003 Table I).
+//
+// Every equation of the model is linear in θ = [m, k, kq, bias] of surge, sway and yaw once the
+// velocities are measured: the Coriolis terms are products of measured velocities times the
+// inertias m_u, m_v (coupled_model.h CoupledRegressor). Integrating equation i between knots
+// t_a, t_b of the smoothed velocities ν̃ (Savitzky–Golay, seed 000 §IV-D) removes the
+// derivative (seed 002 eqs. 20–26, seed 004 eqs. 2–14):
+//
+//   m_i·(ν̃_i(t_b) − ν̃_i(t_a)) + [∫ h_i(ν̃) ds]·θ = ∫ τ_i ds          (one row)
+//
+// The rows of the three equations of every trial are stacked into y = H·θ + ε, each equation
+// weighted by 1/σ² of its own residuals (N·s and N·m·s rows differ in scale), and solved:
+//  1. weighted least squares (the seeds' estimator);
+//  2. instrumental variables: ν̃ is noisy and sits in H (errors in variables, which bias the
+//     least squares), so the instruments Z are the same rows along the velocities the current
+//     estimate simulates under the logged thrust (uncorrelated with the sensor noise),
+//     θ = (ZᵀWH)⁻¹ZᵀWy, iterated `iv_iterations` times.
+// Knots are one Savitzky–Golay window apart, so the endpoint errors of consecutive rows are
+// nearly independent but shared: the residuals are MA(1) within an equation of a trial, and the
+// covariance is the sandwich A⁻¹·ZᵀΩZ·A⁻ᵀ over that MA(1) (least_squares.h Ma1Covariance),
+// not the white-residual s²·(HᵀH)⁻¹. τ_ξ = φ_ξ: the combined modes use their mappings in
+// open-water directions (η = 1, seed 003 practical model).
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "uuvplan/model/trial_log.h"
+#include "uuvplan/model/util/enum_names.h"
+
+namespace uuvplan::ident {
+
+struct CoupledLsOptions {
+  int sg_order = 4;
+  /// Savitzky–Golay window (points, odd); 0: SavitzkyGolayWindow of the sensor rate and the
+  /// input's time scale.
+  int sg_window = 0;
+  int iv_iterations = 2;  ///< 0: the seeds' plain (weighted) least squares
+  double step_s = 0.02;   ///< sub-step of the rows' integrals and the instruments' simulation
+  bool IsValid(std::string* error) const;
+};
+
+enum class CoupledStatus { kOk, kNoData, kTooFewData, kIllConditioned, kNonPhysical };
+inline constexpr model::EnumNames<CoupledStatus, 5> kCoupledStatusNames{{{
+    {CoupledStatus::kOk, "ok"},
+    {CoupledStatus::kNoData, "no data"},
+    {CoupledStatus::kTooFewData, "too few data"},
+    {CoupledStatus::kIllConditioned, "ill-conditioned"},
+    {CoupledStatus::kNonPhysical, "non-physical"},
+}}};
+
+struct CoupledLsResult {
+  CoupledStatus status = CoupledStatus::kNoData;
+  std::string message;
+  std::vector<std::string> names;  ///< model::CoupledParameterNames()
+  std::vector<std::string> units;
+  Eigen::VectorXd theta;
+  Eigen::MatrixXd covariance;
+  int num_rows = 0;
+  double condition_number = 0.0;  ///< of the column-scaled weighted H
+  bool instrumental = false;      ///< θ is the instrumental-variable estimate
+  std::vector<std::string> notes;
+  bool ok() const { return status == CoupledStatus::kOk; }
+  double Sigma(int j) const { return std::sqrt(covariance(j, j)); }
+};
+
+/// The estimate from combined-mode trial logs (force_, vel_ columns of surge, sway and yaw).
+CoupledLsResult CoupledOneStepLeastSquares(const std::vector<const model::TrialLog*>& trials,
+                                           const CoupledLsOptions& options);
+
+}  // namespace uuvplan::ident

@@ -1,0 +1,31 @@
+#include "uuvplan/io/coupled_json.h"
+
+namespace uuvplan::io {
+
+nlohmann::json CoupledIdentifyJson(const ident::CoupledLsResult& r) {
+  nlohmann::json j;
+  j["model"] = "coupled-horizontal";
+  j["method"] = "one-step";
+  j["status"] = std::string(ident::kCoupledStatusNames.Name(r.status));
+  j["message"] = r.message;
+  j["instrumental"] = r.instrumental;
+  j["rows"] = r.num_rows;
+  j["condition_number"] = r.condition_number;
+  j["notes"] = r.notes;
+  if (r.theta.size() != static_cast<Eigen::Index>(r.names.size())) return j;
+  nlohmann::json params = nlohmann::json::object();
+  nlohmann::json cov = nlohmann::json::array();
+  for (std::size_t k = 0; k < r.names.size(); ++k) {
+    const auto i = static_cast<Eigen::Index>(k);
+    params[r.names[k]] = {{"value", r.theta[i]}, {"sigma", r.Sigma(static_cast<int>(k))},
+                          {"unit", r.units[k]}};
+    nlohmann::json row = nlohmann::json::array();
+    for (Eigen::Index c = 0; c < r.covariance.cols(); ++c) row.push_back(r.covariance(i, c));
+    cov.push_back(row);
+  }
+  j["params"] = params;
+  j["covariance"] = cov;
+  return j;
+}
+
+}  // namespace uuvplan::io
