@@ -24,7 +24,7 @@ Signal Column(const std::vector<double>& t, const std::vector<double>& col, doub
   s.t.reserve(col.size());
   s.y.reserve(col.size());
   for (std::size_t i = 0; i < col.size(); ++i) {
-    if (std::isnan(col[i])) continue;
+    if (std::isnan(col[i]) || t[i] < offset) continue;  // before t = 0 (the first force row)
     s.t.push_back(t[i] - offset);
     s.y.push_back(col[i]);
   }
@@ -325,6 +325,22 @@ void ReadAuxVelocities(const model::TrialLog& log, TrialData* d) {
   if (any_aux) d->aux = std::make_unique<LogAuxVelocities>(d->dof, std::move(aux));
 }
 
+// The log time of the trial's t = 0: its first row with a force value. The zero-order hold
+// starts there; measurements logged before it (tartan chunk_00: 4.6 s of navigation before
+// the first wrench row, a recorder backlog) had no logged force, and holding the first
+// command back over them would invent it: they are not used, and a note says so. A log
+// without a force value starts at its first row (ReadForce then names the empty column).
+double FirstForceTime(const model::TrialLog& log, Dof dof, TrialData* d) {
+  const auto& f = log.force[Index(dof)];
+  std::size_t i = 0;
+  while (i < f.size() && std::isnan(f[i])) ++i;
+  if (i == 0 || i >= f.size()) return log.t.front();
+  d->notes.push_back("the first " + Fmt(log.t[i] - log.t.front()) +
+                     " s of the log precede its first force row (t = " + Fmt(log.t[i]) +
+                     " s): their measurements are not used (the force there was not logged)");
+  return log.t[i];
+}
+
 }  // namespace
 
 TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehicle& vehicle,
@@ -339,9 +355,9 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
   d.use = e.use;
   d.ballast_steps = e.ballast_steps;
   if (log.t.empty()) throw model::InputError(where, "no data rows");
-  d.time_offset = log.t.front();
+  d.time_offset = FirstForceTime(log, e.dof, &d);
   d.start_time = e.start + d.time_offset;
-  d.duration = log.t.back() - log.t.front();
+  d.duration = log.t.back() - d.time_offset;
   ReadForce(e, vehicle, where, &d);
   ReadMeasurements(log, vehicle, where, o, &d);
   EstimateVelocity(o, &d);

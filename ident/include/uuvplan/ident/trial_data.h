@@ -4,8 +4,9 @@
 // mapping in force on each row as a vehicle mapping index, the other DOFs' measured velocities
 // for coupling terms, and a smoothed velocity estimate (Savitzky–Golay, seed 000 §IV-D).
 //
-// Times are shifted so that the trial starts at t = 0 (its first row); `start_time` is that
-// instant on the campaign clock.
+// Times are shifted so that the trial starts at t = 0: its first row with a force value (the
+// zero-order hold starts there; measurements logged before it are not used, with a note);
+// `start_time` is that instant on the campaign clock.
 #pragma once
 
 #include <array>
@@ -56,7 +57,7 @@ struct TrialData {
   model::TrialUse use = model::TrialUse::kFit;
   int ballast_steps = 0;
   double start_time = 0.0;   ///< campaign clock at t = 0 (s)
-  double time_offset = 0.0;  ///< log time of t = 0 (s)
+  double time_offset = 0.0;  ///< log time of t = 0, the first force row (s)
   double duration = 0.0;     ///< s
 
   Signal position;  ///< measured positions of the DOF, outliers removed
