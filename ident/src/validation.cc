@@ -106,7 +106,6 @@ struct SampleTimes {
 SampleTimes MergedTimes(const std::vector<double>& a, const std::vector<double>& b,
                         std::vector<double>* out) {
   SampleTimes s;
-  if (out) out->reserve(a.size() + b.size());
   auto i = static_cast<std::size_t>(std::lower_bound(a.begin(), a.end(), 0.0) - a.begin());
   auto j = static_cast<std::size_t>(std::lower_bound(b.begin(), b.end(), 0.0) - b.begin());
   while (i < a.size() || j < b.size()) {
@@ -120,23 +119,28 @@ SampleTimes MergedTimes(const std::vector<double>& a, const std::vector<double>&
   return s;
 }
 
-// The velocity the free run is compared with: the measured one, else the Savitzky–Golay
-// estimate away from the edges (copied into `estimated`); `label` says which.
-const Signal& VelocityReference(const TrialData& trial, std::string* label, Signal* estimated) {
+// The velocity the free run is compared with, visit(t, ν) at each of its samples: the measured
+// one, else the Savitzky–Golay estimate away from the edges.
+template <class Visit>
+void ForEachVelocityReference(const TrialData& trial, const Visit& visit) {
   if (trial.has_velocity()) {
-    *label = "measured";
-    return trial.velocity;  // no copy: a gyro log may hold millions of samples
+    for (std::size_t i = 0; i < trial.velocity.size(); ++i) visit(trial.velocity.t[i], trial.velocity.y[i]);
+    return;
   }
-  *label = "estimated";
   const SmoothedSignal& v = trial.velocity_estimate;
-  estimated->t.reserve(v.size());
-  estimated->y.reserve(v.size());
   for (std::size_t i = 0; i < v.size(); ++i) {
-    if (!v.edge[i] && std::isfinite(v.value[i])) {
-      estimated->t.push_back(v.t[i]);
-      estimated->y.push_back(v.value[i]);
-    }
+    if (!v.edge[i] && std::isfinite(v.value[i])) visit(v.t[i], v.value[i]);
   }
+}
+
+// The samples of the velocity reference (ForEachVelocityReference), as a signal: the measured
+// one itself, else the estimate's copied into `estimated`.
+const Signal& VelocityReference(const TrialData& trial, Signal* estimated) {
+  if (trial.has_velocity()) return trial.velocity;  // no copy: a gyro log may hold millions
+  ForEachVelocityReference(trial, [&](double t, double v) {
+    estimated->t.push_back(t);
+    estimated->y.push_back(v);
+  });
   return *estimated;
 }
 
@@ -162,6 +166,7 @@ class FreeRun {
       std::sort(grid_.begin(), grid_.end());
       grid_.erase(std::unique(grid_.begin(), grid_.end()), grid_.end());
     } else {
+      grid_.reserve(span.count);
       MergedTimes(velocity_times, trial.position.t, &grid_);
     }
     model::SimulationOptions so;
@@ -210,26 +215,27 @@ TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& thet
   }
   f.initial_position = x0[0];
   f.initial_velocity = x0[1];
-  Signal estimated;
-  const Signal& vref = VelocityReference(trial, &f.velocity_reference, &estimated);
-  FreeRun run(model, theta, trial, vref.t, o.step_s, x0);
-  if (run.empty()) return f;
-  auto model_at = [&run](double t, int c) { return run.At(t, c); };
-  double sum_abs = 0.0, sum_abs_zero = 0.0;
   // The residuals analysed are the position's when there are positions (perr non-empty):
-  // the velocity's are then summed, not kept.
+  // the velocity's are then summed, not kept, and an estimated velocity not copied.
   const bool use_pos = trial.has_position() && trial.position.t.back() >= 0;
+  // The union of the velocity reference's and the positions' times: an estimated velocity's
+  // times are a subset of the positions' (its samples are theirs), so the positions' alone.
+  const std::vector<double>& vtimes = trial.has_velocity() ? trial.velocity.t : trial.position.t;
+  f.velocity_reference = trial.has_velocity() ? "measured" : "estimated";
+  FreeRun run(model, theta, trial, vtimes, o.step_s, x0);
+  if (run.empty()) return f;
+  double sum_abs = 0.0, sum_abs_zero = 0.0;
   std::vector<double> verr;
-  if (!use_pos) verr.reserve(vref.size());
+  if (!use_pos) verr.reserve(trial.has_velocity() ? trial.velocity.size() : trial.velocity_estimate.size());
   int velocity_samples = 0;
-  for (std::size_t k = 0; k < vref.size(); ++k) {
-    if (vref.t[k] < 0) continue;
-    const double e = model_at(vref.t[k], 1) - vref.y[k];  // ν_model − ν_measured (eq. 37)
+  ForEachVelocityReference(trial, [&](double t, double v) {
+    if (t < 0) return;
+    const double e = run.At(t, 1) - v;  // ν_model − ν_measured (eq. 37)
     sum_abs += std::abs(e);
-    sum_abs_zero += std::abs(vref.y[k]);
+    sum_abs_zero += std::abs(v);
     ++velocity_samples;
     if (!use_pos) verr.push_back(-e);
-  }
+  });
   f.velocity_samples = velocity_samples;
   f.velocity_mae = f.velocity_samples > 0 ? sum_abs / f.velocity_samples : kNaN;
   f.zero_velocity_mae = f.velocity_samples > 0 ? sum_abs_zero / f.velocity_samples : kNaN;
@@ -240,7 +246,7 @@ TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& thet
     perr.reserve(trial.position.size());
     for (std::size_t k = 0; k < trial.position.size(); ++k) {
       if (trial.position.t[k] < 0) continue;
-      const double e = trial.position.y[k] - model_at(trial.position.t[k], 0);
+      const double e = trial.position.y[k] - run.At(trial.position.t[k], 0);
       ss += e * e;
       perr.push_back(e);
     }
@@ -248,7 +254,8 @@ TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& thet
     f.position_rms = f.position_samples > 0 ? std::sqrt(ss / f.position_samples) : kNaN;
   }
   const std::vector<double>& r = use_pos ? perr : verr;
-  const Signal& s = use_pos ? trial.position : vref;
+  Signal estimated;
+  const Signal& s = use_pos ? trial.position : VelocityReference(trial, &estimated);
   const double step = s.size() > 1 ? (s.t.back() - s.t.front()) / (s.size() - 1) : 0.0;
   f.residuals = AnalyzeResiduals(r, o.max_lag, o.bins, step);
   f.residual_signal = use_pos ? "position" : "velocity";
