@@ -37,7 +37,7 @@ for ((i = 0; i < runs; i++)); do
 done
 for b in "${binaries[@]}"; do
   echo "$b identify, best of $runs: $(printf '%s' "${times[$b]}" | best)"
-  "$b" identify "$dir/campaign" 2>/dev/null | grep -E '^  (m|k|kq|bias) |note|WARNING' || true
+  "$b" identify "$dir/campaign" 2>/dev/null | grep -E '^  [a-z]+ +(m|k|kq|bias) |note|WARNING' || true
 done
 echo "plain_identify.py, best of $runs: $(printf '%s' "${times[py]}" | best)"
 cat "$dir/py"

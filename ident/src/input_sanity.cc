@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <optional>
 
+#include "centred_moments.h"
 #include "number_text.h"
 #include "options_check.h"
 #include "uuvplan/ident/velocity_estimation.h"
@@ -24,7 +25,12 @@ constexpr std::size_t kMinSamples = 30;  // fewer aligned samples: no verdict
 // The finite samples of a log column.
 Signal Finite(const std::vector<double>& t, const std::vector<double>& y) {
   Signal s;
-  for (std::size_t i = 0; i < y.size() && i < t.size(); ++i) {
+  const std::size_t n = std::min(t.size(), y.size());
+  const auto finite = static_cast<std::size_t>(
+      std::count_if(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(n), [](double v) { return std::isfinite(v); }));
+  s.t.reserve(finite);
+  s.y.reserve(finite);
+  for (std::size_t i = 0; i < n; ++i) {
     if (std::isfinite(y[i])) {
       s.t.push_back(t[i]);
       s.y.push_back(y[i]);
@@ -33,15 +39,23 @@ Signal Finite(const std::vector<double>& t, const std::vector<double>& y) {
   return s;
 }
 
-// The signal smoothed and differentiated (twice) at the window seed 000 would use; nullopt when
-// too short to smooth.
-std::optional<SmoothedSignal> Smooth(const Signal& s, double input_time_scale) {
+// A log column's finite samples with the Savitzky–Golay filter seed 000 would smooth them with
+// (window at the log's rate). The smoothed signal is computed when a check needs it, stored
+// (Smoothed) or streamed (ForEachSmoothed): a long log's check holds no per-sample copy.
+struct Smoothable {
+  Signal raw;
+  SavitzkyGolayOptions sg;
+  SmoothedSignal Smoothed() const { return SavitzkyGolay(raw, sg); }
+};
+
+// nullopt when too short to smooth.
+std::optional<Smoothable> SmoothableOf(Signal s, double input_time_scale) {
   if (s.size() < 2 * kMinSamples) return std::nullopt;
   const double step = MedianStep(s.t, 0, s.size());
   if (!(step > 0)) return std::nullopt;
   SavitzkyGolayOptions o;
   o.window = SavitzkyGolayWindow(1.0 / step, input_time_scale);
-  return SavitzkyGolay(s, o);
+  return Smoothable{std::move(s), o};
 }
 
 // Aligned samples of up to four quantities, with the least-squares tools the checks need.
@@ -71,46 +85,40 @@ double Correlation(const std::vector<double>& a, const std::vector<double>& b) {
   return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
 }
 
-// y = Σ θ_j x_j + b by least squares: θ (without b) and R².
+// y = Σ θ_j x_j + b by least squares over the samples summed in `m` (quantity y against the
+// quantities x): θ (without b) and R². Centred, the constant drops out: θ = S_xx⁻¹ S_xy,
+// SS_res = S_yy − θᵀ S_xy, SS_tot = S_yy.
 struct LinearFit {
-  Eigen::VectorXd theta;
+  Eigen::Vector2d theta = Eigen::Vector2d::Zero();
   double r2 = 0.0;
 };
-LinearFit FitWithConstant(const std::vector<double>& y, const std::vector<const std::vector<double>*>& x) {
-  const Eigen::Index n = static_cast<Eigen::Index>(y.size()), p = static_cast<Eigen::Index>(x.size());
-  Eigen::MatrixXd a(n, p + 1);
-  Eigen::VectorXd b(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    for (Eigen::Index j = 0; j < p; ++j) a(i, j) = (*x[j])[i];
-    a(i, p) = 1.0;
-    b[i] = y[i];
-  }
-  const Eigen::VectorXd theta = a.colPivHouseholderQr().solve(b);
-  const double ss_res = (a * theta - b).squaredNorm();
-  const double ss_tot = (b.array() - b.mean()).square().sum();
-  return {theta.head(p), ss_tot > 0 ? 1.0 - ss_res / ss_tot : 0.0};
+LinearFit FitWithConstant(const CentredMoments<4>& m, int y, int x0, int x1) {
+  const Eigen::Matrix4d s = m.scatter();
+  Eigen::Matrix2d sxx;
+  sxx << s(x0, x0), s(x0, x1), s(x1, x0), s(x1, x1);
+  const Eigen::Vector2d sxy(s(x0, y), s(x1, y));
+  const Eigen::Vector2d theta = sxx.colPivHouseholderQr().solve(sxy);
+  const double ss_tot = s(y, y);
+  const double ss_res = std::max(0.0, ss_tot - theta.dot(sxy));
+  return {theta, ss_tot > 0 ? 1.0 - ss_res / ss_tot : 0.0};
 }
 
-// Whether y varies beyond rounding: its standard deviation above 1% of its RMS (a logged
-// constant's printed digits give ~1e-10 of it; the smallest planned change of thrust, a sine's
-// or a segment's, is tens of percent).
-bool Varies(const std::vector<double>& y) {
-  if (y.size() < 2) return false;
-  double mean = 0, mean_square = 0;
-  for (double v : y) mean += v, mean_square += v * v;
-  mean /= static_cast<double>(y.size());
-  mean_square /= static_cast<double>(y.size());
-  const double variance = std::max(0.0, mean_square - mean * mean);
+// Whether quantity k varies beyond rounding: its standard deviation above 1% of its RMS (a
+// logged constant's printed digits give ~1e-10 of it; the smallest planned change of thrust, a
+// sine's or a segment's, is tens of percent).
+bool Varies(const CentredMoments<4>& m, int k) {
+  if (m.count() < 2) return false;
+  const double variance = m.scatter()(k, k) / static_cast<double>(m.count());
+  const double mean_square = variance + m.mean()[k] * m.mean()[k];
   return variance > 1e-4 * mean_square;
 }
 
-// 99th percentile of |y|.
-double AbsQuantile99(const std::vector<double>& y) {
-  std::vector<double> a(y.size());
-  std::transform(y.begin(), y.end(), a.begin(), [](double v) { return std::abs(v); });
-  const std::size_t k = static_cast<std::size_t>(0.99 * (a.size() - 1));
-  std::nth_element(a.begin(), a.begin() + k, a.end());
-  return a[k];
+// 99th percentile of |y| (y reordered in place).
+double AbsQuantile99(std::vector<double> y) {
+  for (double& v : y) v = std::abs(v);
+  const std::size_t k = static_cast<std::size_t>(0.99 * (y.size() - 1));
+  std::nth_element(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(k), y.end());
+  return y[k];
 }
 
 bool Near(double ratio, double target, double tolerance) {
@@ -123,7 +131,7 @@ struct TrialCheck {
   const InputSanityOptions& o;
   Dof dof;
   std::string pos_name, vel_name, force_name;
-  std::optional<SmoothedSignal> pos, vel;
+  std::optional<Smoothable> pos, vel;
   Signal force;
   std::vector<InputProblem>* out;
 
@@ -136,11 +144,6 @@ struct TrialCheck {
   void Report(const std::string& column, const std::string& finding, const std::string& fix) {
     if (!Flagged(column)) out->push_back({File(), column, finding, fix});
   }
-  // The logged force in effect at t (zero-order hold of its rows, notes/pitfalls.md).
-  double ForceAt(double t) const {
-    const auto it = std::upper_bound(force.t.begin(), force.t.end(), t);
-    return it == force.t.begin() ? std::nan("") : force.y[static_cast<std::size_t>(it - force.t.begin()) - 1];
-  }
 };
 
 std::string RateUnitOf(Dof d) { return std::string(model::VelocityUnit(d)); }
@@ -149,11 +152,11 @@ std::string PositionUnitOf(Dof d) { return std::string(model::PositionUnit(d)); 
 // The logged rate against the derivative of the logged position (both smoothed).
 void CheckRateAgainstPosition(TrialCheck& c) {
   if (!c.pos || !c.vel) return;
+  const SmoothedSignal vel = c.vel->Smoothed();
   Samples s(3);  // d pos/dt, vel, pos
-  for (std::size_t i = 0; i < c.pos->size(); ++i) {
-    if (c.pos->edge[i]) continue;
-    s.Add({c.pos->derivative[i], Interpolate(c.vel->t, c.vel->value, c.pos->t[i]), c.pos->value[i]});
-  }
+  ForEachSmoothed(c.pos->raw, c.pos->sg, [&](const SmoothedSample& p) {
+    if (!p.edge) s.Add({p.derivative, Interpolate(vel.t, vel.value, c.pos->raw.t[p.i]), p.value});
+  });
   if (s.size() < kMinSamples) return;
   const auto& dx = s.columns[0];
   const auto& v = s.columns[1];
@@ -195,15 +198,15 @@ void CheckRateAgainstPosition(TrialCheck& c) {
 void CheckRotationRate(TrialCheck& c) {
   if (!model::IsRotational(c.dof)) return;
   const bool measured = c.vel.has_value();
-  const SmoothedSignal* s = measured ? &*c.vel : c.pos ? &*c.pos : nullptr;
+  const Smoothable* s = measured ? &*c.vel : c.pos ? &*c.pos : nullptr;
   if (!s) return;
   std::vector<double> rate;
-  for (std::size_t i = 0; i < s->size(); ++i) {
-    const double r = measured ? s->value[i] : s->derivative[i];
-    if (!s->edge[i] && std::isfinite(r)) rate.push_back(r);
-  }
+  ForEachSmoothed(s->raw, s->sg, [&](const SmoothedSample& p) {
+    const double r = measured ? p.value : p.derivative;
+    if (!p.edge && std::isfinite(r)) rate.push_back(r);
+  });
   if (rate.size() < kMinSamples) return;
-  const double q = AbsQuantile99(rate);
+  const double q = AbsQuantile99(std::move(rate));
   if (!(q > c.o.max_rate)) return;
   const std::string column = measured ? c.vel_name : c.pos_name;
   c.Report(column,
@@ -213,34 +216,41 @@ void CheckRotationRate(TrialCheck& c) {
                     : "likely in degrees: expected rad (multiply by π/180)");
 }
 
-// Velocity and acceleration of the DOF at the motion's sample times, with the logged force.
-Samples ForceAndMotion(const TrialCheck& c) {
-  Samples s(4);  // force, acceleration, velocity, position
+// Sums of (force, acceleration, velocity, position) over the finite non-edge samples of the
+// DOF's smoothed motion (the measured velocity, else the position; position 0 with a measured
+// velocity), the force held from its last row at or before each sample (zero-order hold,
+// notes/pitfalls.md; a forward cursor, the samples are in time order).
+CentredMoments<4> ForceAndMotion(const TrialCheck& c) {
+  CentredMoments<4> sums;
   const bool measured = c.vel.has_value();
-  const SmoothedSignal& m = measured ? *c.vel : *c.pos;
-  for (std::size_t i = 0; i < m.size(); ++i) {
-    if (m.edge[i]) continue;
-    const double v = measured ? m.value[i] : m.derivative[i];
-    const double a = measured ? m.derivative[i] : m.second_derivative[i];
-    s.Add({c.ForceAt(m.t[i]), a, v, measured ? 0.0 : m.value[i]});
-  }
-  return s;
+  const Smoothable& m = measured ? *c.vel : *c.pos;
+  std::size_t rows = 0;  // force rows at or before the sample's time
+  ForEachSmoothed(m.raw, m.sg, [&](const SmoothedSample& p) {
+    if (p.edge) return;
+    const double t = m.raw.t[p.i];
+    while (rows < c.force.size() && c.force.t[rows] <= t) ++rows;
+    const double f = rows == 0 ? std::nan("") : c.force.y[rows - 1];
+    const double v = measured ? p.value : p.derivative;
+    const double a = measured ? p.derivative : p.second_derivative;
+    const Eigen::Vector4d x(f, a, v, measured ? 0.0 : p.value);
+    if (x.allFinite()) sums.Add(x);
+  });
+  return sums;
 }
 
 // F = m·a + c·ν + b with m < 0 and c < 0: the force and the motion have opposite signs. Without
 // a vel_ column, a position column that is a velocity is told by its force balance.
 void CheckForceAgainstMotion(TrialCheck& c) {
   if (c.force.size() < 2 || (!c.pos && !c.vel)) return;
-  const Samples s = ForceAndMotion(c);
-  if (s.size() < kMinSamples) return;
-  const auto& f = s.columns[0];
+  const CentredMoments<4> s = ForceAndMotion(c);  // 0 force, 1 acceleration, 2 velocity, 3 position
+  if (s.count() < kMinSamples) return;
   // A force that does not vary (a steady trial's one step from rest) has no variance for a
   // balance to explain: its R² is 0/0, and neither the column's kind nor the sign can be read.
-  if (!Varies(f)) return;
-  const LinearFit as_position = FitWithConstant(f, {&s.columns[1], &s.columns[2]});
+  if (!Varies(s, 0)) return;
+  const LinearFit as_position = FitWithConstant(s, 0, 1, 2);
   if (!c.vel) {
     // The column read as a velocity: F = m·dx/dt + k·x + b.
-    const LinearFit as_velocity = FitWithConstant(f, {&s.columns[2], &s.columns[3]});
+    const LinearFit as_velocity = FitWithConstant(s, 0, 2, 3);
     if (as_velocity.r2 >= c.o.min_fit && as_velocity.r2 >= as_position.r2 + c.o.fit_margin &&
         as_velocity.theta[0] > 0 && as_velocity.theta[1] > 0) {
       c.Report(c.pos_name,
@@ -268,8 +278,8 @@ void CheckTrial(const model::TrialEntry& e, const InputSanityOptions& o, std::ve
   TrialCheck c{e, o, dof, "pos_" + name, "vel_" + name, "force_" + name, {}, {}, {}, out};
   c.force = Finite(log.t, log.HasForce(dof) ? log.force[model::Index(dof)] : std::vector<double>{});
   const double time_scale = InputTimeScale(c.force.t, c.force.y);
-  if (log.HasPosition(dof)) c.pos = Smooth(Finite(log.t, log.position[model::Index(dof)]), time_scale);
-  if (log.HasVelocity(dof)) c.vel = Smooth(Finite(log.t, log.velocity[model::Index(dof)]), time_scale);
+  if (log.HasPosition(dof)) c.pos = SmoothableOf(Finite(log.t, log.position[model::Index(dof)]), time_scale);
+  if (log.HasVelocity(dof)) c.vel = SmoothableOf(Finite(log.t, log.velocity[model::Index(dof)]), time_scale);
   CheckRateAgainstPosition(c);
   CheckRotationRate(c);
   CheckForceAgainstMotion(c);

@@ -27,9 +27,19 @@ namespace {
 struct TrialProblem {
   const TrialData* trial = nullptr;
   std::vector<double> times;         // sorted union of the used sample times
-  std::vector<int> pos_at, vel_at;   // measurement k is at times[pos_at[k]]
-  std::vector<double> pos_y, vel_y;
-  std::vector<double> pos_w, vel_w;  // 1/σ of each (binned) measurement
+  // One sensor's measurements: measurement k is at times[at(k)], value y[k], weight w(k)
+  // (1/σ, √n/σ for a bin). The index is not stored when it is k itself (one sensor), nor the
+  // weights when they are all equal (unbinned): 12 of the 20 bytes a measurement.
+  struct Measurements {
+    std::vector<int> at_index;  // empty: measurement k is at times[k]
+    std::vector<double> y;
+    std::vector<double> w;      // empty: every weight is w_all
+    double w_all = 1.0;
+    std::size_t size() const { return y.size(); }
+    int at(std::size_t k) const { return at_index.empty() ? static_cast<int>(k) : at_index[k]; }
+    double weight(std::size_t k) const { return w.empty() ? w_all : w[k]; }
+  };
+  Measurements pos, vel;
   TrialInitialState init;
   int z_chi0 = -1, z_xi0 = -1;       // indices in z
   int r_offset = 0;                  // first residual of this trial
@@ -53,7 +63,7 @@ struct TrialProblem {
     return {(1 + 2 * u) * (1 - u) * (1 - u), h * u * (1 - u) * (1 - u), u * u * (3 - 2 * u),
             h * u * u * (u - 1), u};
   }
-  int num_residuals() const { return static_cast<int>(pos_y.size() + vel_y.size()); }
+  int num_residuals() const { return static_cast<int>(pos.size() + vel.size()); }
 };
 
 // Samples faster than the RK4 step are averaged into bins about one step long (never across a
@@ -69,6 +79,11 @@ Binned Bin(const Signal& s, double sigma, double step, const std::vector<double>
   const std::size_t n = s.size();
   double h = n > 1 ? (s.t.back() - s.t.front()) / (n - 1) : step;
   if (h >= 0.5 * step) {
+    // One measurement a sample: sized once (grown by doubling, a 10⁶-sample trial held 25%
+    // more for the whole fit).
+    b.t.reserve(n);
+    b.y.reserve(n);
+    b.w.reserve(n);
     for (std::size_t k = 0; k < n; ++k) {
       if (s.t[k] < 0) continue;
       b.t.push_back(s.t[k]);
@@ -100,6 +115,28 @@ Binned Bin(const Signal& s, double sigma, double step, const std::vector<double>
     b.w.push_back(w1 * std::sqrt(static_cast<double>(c)));
   }
   return b;
+}
+
+// A sensor's binned samples as a trial's measurements at `times` (sorted, unique, holding
+// every sample time >= 0 of the sensor; TrialProblem::Measurements: the identity index and
+// equal weights not stored).
+TrialProblem::Measurements Measured(Binned b, const std::vector<double>& times) {
+  TrialProblem::Measurements m;
+  const bool identity = b.t.size() <= times.size() && std::equal(b.t.begin(), b.t.end(), times.begin());
+  if (!identity) {
+    m.at_index.reserve(b.t.size());
+    for (double t : b.t) {
+      m.at_index.push_back(static_cast<int>(std::lower_bound(times.begin(), times.end(), t) - times.begin()));
+    }
+  }
+  const bool equal = std::all_of(b.w.begin(), b.w.end(), [&](double w) { return w == b.w.front(); });
+  if (equal && !b.w.empty()) {
+    m.w_all = b.w.front();
+  } else {
+    m.w = std::move(b.w);
+  }
+  m.y = std::move(b.y);
+  return m;
 }
 
 // Every parameter within the range its family allows a fit (model/parameter.h).
@@ -135,18 +172,9 @@ class Problem {
       times.erase(std::unique(times.begin(), times.end()), times.end());
       // Simulation starts at t = 0; samples before it (none after PrepareTrial) are dropped.
       times.erase(times.begin(), std::lower_bound(times.begin(), times.end(), 0.0));
-      auto index_of = [&](double t) {
-        return static_cast<int>(std::lower_bound(times.begin(), times.end(), t) - times.begin());
-      };
-      tp.pos_at.reserve(pos.t.size());
-      for (double t : pos.t) tp.pos_at.push_back(index_of(t));
-      tp.vel_at.reserve(vel.t.size());
-      for (double t : vel.t) tp.vel_at.push_back(index_of(t));
+      tp.pos = Measured(std::move(pos), times);
+      tp.vel = Measured(std::move(vel), times);
       tp.times = std::move(times);
-      tp.pos_y = std::move(pos.y);
-      tp.pos_w = std::move(pos.w);
-      tp.vel_y = std::move(vel.y);
-      tp.vel_w = std::move(vel.w);
       // Initial state: given, or guessed from the smoothed data.
       const TrialInitialState* given = nullptr;
       if (initial) {
@@ -275,14 +303,13 @@ class Problem {
       const int own = (tp.z_chi0 >= 0 ? 1 : 0) + (tp.z_xi0 >= 0 ? 1 : 0);
       if (rows) rows->StartBlock(tp.z_chi0 >= 0 ? tp.z_chi0 : std::max(tp.z_xi0, 0), own);
       int row = tp.r_offset;
-      auto fill = [&](const std::vector<int>& at, const std::vector<double>& y,
-                      const std::vector<double>& wv, int s) {
-        for (std::size_t k = 0; k < y.size(); ++k, ++row) {
-          const int i = at[k];
-          const double w = wv[k];
+      auto fill = [&](const TrialProblem::Measurements& m, int s) {
+        for (std::size_t k = 0; k < m.size(); ++k, ++row) {
+          const int i = m.at(k);
+          const double w = m.weight(k);
           const double x = tr.x(i, s);
           const bool excluded = row < static_cast<int>(excluded_.size()) && excluded_[row];
-          const double res = excluded ? 0.0 : w * (y[k] - x);  // left out: residual and row 0
+          const double res = excluded ? 0.0 : w * (m.y[k] - x);  // left out: residual and row 0
           (*r)[row] = res;
           finite = finite && std::isfinite(res);
           if (!rows) continue;
@@ -299,8 +326,8 @@ class Problem {
           rows->Commit();
         }
       };
-      fill(tp.pos_at, tp.pos_y, tp.pos_w, 0);
-      fill(tp.vel_at, tp.vel_y, tp.vel_w, 1);
+      fill(tp.pos, 0);
+      fill(tp.vel, 1);
       if (rows) rows->EndBlock();
     }
     if (rows) rows->Finish();
@@ -370,7 +397,7 @@ double ResidualLag1(const Problem& p, const Eigen::VectorXd& r) {
   int count = 0;
   for (const TrialProblem& tp : p.trials()) {
     int off = tp.r_offset;
-    for (std::size_t len : {tp.pos_y.size(), tp.vel_y.size()}) {
+    for (std::size_t len : {tp.pos.size(), tp.vel.size()}) {
       if (len >= 10) {
         const Eigen::VectorXd seg = r.segment(off, len);
         const Eigen::VectorXd c = seg.array() - seg.mean();
@@ -616,7 +643,7 @@ Eigen::MatrixXd RobustCovariance(const Problem& p, const LmOutcome& lm, double s
                                  const BlockAnalysis& fa) {
   std::vector<int> groups(p.num_r());
   for (const TrialProblem& tp : p.trials()) {
-    const int npos = static_cast<int>(tp.pos_y.size());
+    const int npos = static_cast<int>(tp.pos.size());
     for (int k = 0; k < tp.num_residuals(); ++k) {
       groups[tp.r_offset + k] = 2 * tp.trial->index + (k < npos ? 0 : 1);
     }

@@ -1,7 +1,6 @@
 #include "uuvplan/ident/validation.h"
 
 #include <algorithm>
-#include <iterator>
 #include <cmath>
 #include <limits>
 
@@ -98,6 +97,104 @@ FreeRunCurve Decimate(const Signal& s, const std::vector<double>& r, int points)
   return c;
 }
 
+// The union of two sorted sample-time lists, duplicates and negative times left out: its
+// size and ends, and (when `out` is not null) the times themselves.
+struct SampleTimes {
+  std::size_t count = 0;
+  double first = 0.0, last = 0.0;
+};
+SampleTimes MergedTimes(const std::vector<double>& a, const std::vector<double>& b,
+                        std::vector<double>* out) {
+  SampleTimes s;
+  auto i = static_cast<std::size_t>(std::lower_bound(a.begin(), a.end(), 0.0) - a.begin());
+  auto j = static_cast<std::size_t>(std::lower_bound(b.begin(), b.end(), 0.0) - b.begin());
+  while (i < a.size() || j < b.size()) {
+    const bool from_a = j == b.size() || (i < a.size() && a[i] <= b[j]);
+    const double t = from_a ? a[i++] : b[j++];
+    if (s.count > 0 && t == s.last) continue;
+    if (s.count++ == 0) s.first = t;
+    s.last = t;
+    if (out) out->push_back(t);
+  }
+  return s;
+}
+
+// The velocity the free run is compared with, visit(t, ν) at each of its samples: the measured
+// one, else the Savitzky–Golay estimate away from the edges.
+template <class Visit>
+void ForEachVelocityReference(const TrialData& trial, const Visit& visit) {
+  if (trial.has_velocity()) {
+    for (std::size_t i = 0; i < trial.velocity.size(); ++i) visit(trial.velocity.t[i], trial.velocity.y[i]);
+    return;
+  }
+  const SmoothedSignal& v = trial.velocity_estimate;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!v.edge[i] && std::isfinite(v.value[i])) visit(v.t[i], v.value[i]);
+  }
+}
+
+// The samples of the velocity reference (ForEachVelocityReference), as a signal: the measured
+// one itself, else the estimate's copied into `estimated`.
+const Signal& VelocityReference(const TrialData& trial, Signal* estimated) {
+  if (trial.has_velocity()) return trial.velocity;  // no copy: a gyro log may hold millions
+  ForEachVelocityReference(trial, [&](double t, double v) {
+    estimated->t.push_back(t);
+    estimated->y.push_back(v);
+  });
+  return *estimated;
+}
+
+// The model's free run over a trial's sample times (the velocity reference's and the
+// positions'), and its state c at a sample time t: the simulation at t, or, for sensors much
+// faster than the RK4 step, on a grid of about one step (and the input's breakpoints)
+// interpolated linearly (error ~ step²/8·|ξ''|, far below any MAE) — the union of the sample
+// times is then not materialised (8–16 bytes a sample). Queries come in increasing t within
+// one signal (Rewind between signals).
+class FreeRun {
+ public:
+  FreeRun(const model::DofModel& model, const Eigen::VectorXd& theta, const TrialData& trial,
+          const std::vector<double>& velocity_times, double step_s, Eigen::VectorXd x0) {
+    const SampleTimes span = MergedTimes(velocity_times, trial.position.t, nullptr);
+    if (span.count == 0) return;
+    dense_ = span.count > 4 * ((span.last - span.first) / step_s + 1);
+    if (dense_) {
+      for (double t = 0.0; t < span.last; t += step_s) grid_.push_back(t);
+      grid_.push_back(span.last);
+      for (double b : trial.breakpoints) {
+        if (b < span.last) grid_.push_back(b);
+      }
+      std::sort(grid_.begin(), grid_.end());
+      grid_.erase(std::unique(grid_.begin(), grid_.end()), grid_.end());
+    } else {
+      grid_.reserve(span.count);
+      MergedTimes(velocity_times, trial.position.t, &grid_);
+    }
+    model::SimulationOptions so;
+    so.step_s = step_s;
+    sim_ = model::SimulateMeasured(model, theta, trial.conditions(), grid_, so, &x0);
+  }
+  bool empty() const { return grid_.empty(); }
+  void Rewind() { g_ = 0; }
+  double At(double t, int c) {
+    if (!dense_) {  // every sample time is a simulated time
+      if (g_ >= grid_.size() || grid_[g_] > t) g_ = 0;
+      while (g_ < grid_.size() && grid_[g_] < t) ++g_;
+      return sim_.x(static_cast<Eigen::Index>(g_), c);
+    }
+    if (g_ >= grid_.size() || grid_[g_] > t) g_ = 0;
+    while (g_ + 2 < grid_.size() && grid_[g_ + 1] < t) ++g_;
+    const double w = grid_[g_ + 1] > grid_[g_] ? (t - grid_[g_]) / (grid_[g_ + 1] - grid_[g_]) : 0.0;
+    const auto g = static_cast<Eigen::Index>(g_);
+    return sim_.x(g, c) + w * (sim_.x(g + 1, c) - sim_.x(g, c));
+  }
+
+ private:
+  bool dense_ = false;
+  std::vector<double> grid_;  ///< the simulated times: the sample times, or the dense grid
+  model::Trajectory sim_;
+  std::size_t g_ = 0;
+};
+
 }  // namespace
 
 TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& theta,
@@ -118,93 +215,47 @@ TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& thet
   }
   f.initial_position = x0[0];
   f.initial_velocity = x0[1];
-  // Velocity reference: measured, else the Savitzky–Golay estimate away from the edges.
-  Signal vref_estimated;
-  const Signal* vref_ptr = &vref_estimated;
-  if (trial.has_velocity()) {
-    vref_ptr = &trial.velocity;  // no copy: a gyro log may hold millions of samples
-    f.velocity_reference = "measured";
-  } else {
-    Signal& vref = vref_estimated;
-    const SmoothedSignal& v = trial.velocity_estimate;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      if (!v.edge[i] && std::isfinite(v.value[i])) {
-        vref.t.push_back(v.t[i]);
-        vref.y.push_back(v.value[i]);
-      }
-    }
-    f.velocity_reference = "estimated";
-  }
-  const Signal& vref = *vref_ptr;
-  std::vector<double> times;
-  times.reserve(vref.size() + trial.position.size());
-  std::merge(vref.t.begin(), vref.t.end(), trial.position.t.begin(), trial.position.t.end(),
-             std::back_inserter(times));
-  times.erase(std::unique(times.begin(), times.end()), times.end());
-  times.erase(times.begin(), std::lower_bound(times.begin(), times.end(), 0.0));
-  if (times.empty()) return f;
-  model::SimulationOptions so;
-  so.step_s = o.step_s;
-  // Sensors much faster than the RK4 step: simulate on a grid of about one step (and the
-  // input's breakpoints) and interpolate linearly (error ~ step²/8·|ξ''|, far below any MAE).
-  const double span = times.back() - times.front();
-  const bool dense = times.size() > 4 * (span / o.step_s + 1);
-  std::vector<double> grid;
-  if (dense) {
-    for (double t = 0.0; t < times.back(); t += o.step_s) grid.push_back(t);
-    grid.push_back(times.back());
-    for (double b : trial.breakpoints) {
-      if (b < times.back()) grid.push_back(b);
-    }
-    std::sort(grid.begin(), grid.end());
-    grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
-  }
-  const model::Trajectory sim =
-      model::SimulateMeasured(model, theta, trial.conditions(), dense ? grid : times, so, &x0);
-  // The model's state c at a sample time t (every sample time is in `times`; the queries of
-  // each signal come in increasing order): the simulation at t, or on the dense grid
-  // interpolated linearly — nothing is materialised at millions of sample times.
-  std::size_t cursor = 0, g = 0;
-  auto model_at = [&](double t, int c) {
-    if (!dense) {
-      if (cursor >= times.size() || times[cursor] > t) cursor = 0;
-      while (cursor < times.size() && times[cursor] < t) ++cursor;
-      return sim.x(cursor, c);
-    }
-    if (g >= grid.size() || grid[g] > t) g = 0;
-    while (g + 2 < grid.size() && grid[g + 1] < t) ++g;
-    const double w = grid[g + 1] > grid[g] ? (t - grid[g]) / (grid[g + 1] - grid[g]) : 0.0;
-    return sim.x(g, c) + w * (sim.x(g + 1, c) - sim.x(g, c));
-  };
+  // The residuals analysed are the position's when there are positions (perr non-empty):
+  // the velocity's are then summed, not kept, and an estimated velocity not copied.
+  const bool use_pos = trial.has_position() && trial.position.t.back() >= 0;
+  // The union of the velocity reference's and the positions' times: an estimated velocity's
+  // times are a subset of the positions' (its samples are theirs), so the positions' alone.
+  const std::vector<double>& vtimes = trial.has_velocity() ? trial.velocity.t : trial.position.t;
+  f.velocity_reference = trial.has_velocity() ? "measured" : "estimated";
+  FreeRun run(model, theta, trial, vtimes, o.step_s, x0);
+  if (run.empty()) return f;
   double sum_abs = 0.0, sum_abs_zero = 0.0;
   std::vector<double> verr;
-  for (std::size_t k = 0; k < vref.size(); ++k) {
-    if (vref.t[k] < 0) continue;
-    const double e = model_at(vref.t[k], 1) - vref.y[k];  // ν_model − ν_measured (eq. 37)
+  if (!use_pos) verr.reserve(trial.has_velocity() ? trial.velocity.size() : trial.velocity_estimate.size());
+  int velocity_samples = 0;
+  ForEachVelocityReference(trial, [&](double t, double v) {
+    if (t < 0) return;
+    const double e = run.At(t, 1) - v;  // ν_model − ν_measured (eq. 37)
     sum_abs += std::abs(e);
-    sum_abs_zero += std::abs(vref.y[k]);
-    verr.push_back(-e);
-  }
-  f.velocity_samples = static_cast<int>(verr.size());
+    sum_abs_zero += std::abs(v);
+    ++velocity_samples;
+    if (!use_pos) verr.push_back(-e);
+  });
+  f.velocity_samples = velocity_samples;
   f.velocity_mae = f.velocity_samples > 0 ? sum_abs / f.velocity_samples : kNaN;
   f.zero_velocity_mae = f.velocity_samples > 0 ? sum_abs_zero / f.velocity_samples : kNaN;
   std::vector<double> perr;
-  cursor = 0;
-  g = 0;
+  run.Rewind();
   if (trial.has_position()) {
     double ss = 0.0;
+    perr.reserve(trial.position.size());
     for (std::size_t k = 0; k < trial.position.size(); ++k) {
       if (trial.position.t[k] < 0) continue;
-      const double e = trial.position.y[k] - model_at(trial.position.t[k], 0);
+      const double e = trial.position.y[k] - run.At(trial.position.t[k], 0);
       ss += e * e;
       perr.push_back(e);
     }
     f.position_samples = static_cast<int>(perr.size());
     f.position_rms = f.position_samples > 0 ? std::sqrt(ss / f.position_samples) : kNaN;
   }
-  const bool use_pos = !perr.empty();
   const std::vector<double>& r = use_pos ? perr : verr;
-  const Signal& s = use_pos ? trial.position : vref;
+  Signal estimated;
+  const Signal& s = use_pos ? trial.position : VelocityReference(trial, &estimated);
   const double step = s.size() > 1 ? (s.t.back() - s.t.front()) / (s.size() - 1) : 0.0;
   f.residuals = AnalyzeResiduals(r, o.max_lag, o.bins, step);
   f.residual_signal = use_pos ? "position" : "velocity";

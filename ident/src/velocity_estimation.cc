@@ -85,18 +85,15 @@ void PolynomialWeights(const std::vector<double>& u, int order, double at, Eigen
 
 // The local polynomial's value, slope and curvature at sample `at`: the weights applied to
 // the w samples from `y` (u in units of the step h).
-void StoreLocalFit(const Eigen::VectorXd& wv, const Eigen::VectorXd& wd, const Eigen::VectorXd& w2,
-                   const double* y, int w, double h, std::size_t at, bool edge, SmoothedSignal* out) {
+SmoothedSample LocalFit(const Eigen::VectorXd& wv, const Eigen::VectorXd& wd, const Eigen::VectorXd& w2,
+                        const double* y, int w, double h, std::size_t at, bool edge, int run) {
   double v = 0.0, d = 0.0, a = 0.0;
   for (int j = 0; j < w; ++j) {
     v += wv[j] * y[j];
     d += wd[j] * y[j];
     a += w2[j] * y[j];
   }
-  out->value[at] = v;
-  out->derivative[at] = d / h;
-  out->second_derivative[at] = a / (h * h);
-  out->edge[at] = edge;
+  return {at, v, d / h, a / (h * h), edge, run};
 }
 
 // The local fit of one run [b, e) of samples: window, order and step as SmoothRun uses them.
@@ -141,18 +138,22 @@ int LocalWeights(const Signal& s, const RunFit& f, int i, Eigen::VectorXd* wv, E
   return first;
 }
 
-// Smooths one run [b, e) of samples into out at the same indices.
+// The centred filter's noise gains, from the first interior sample's weights.
+void SetGains(const Eigen::VectorXd& wv, const Eigen::VectorXd& wd, double h, SmoothedSignal* out) {
+  out->value_gain = wv.norm();
+  out->derivative_gain = wd.norm() / h;
+  out->derivative_weights.assign(wd.data(), wd.data() + wd.size());
+  for (double& x : out->derivative_weights) x /= h;
+}
+
+// Smooths one run [b, e) of samples, handing each sample in order to sink(SmoothedSample);
+// the first interior sample's gains go to `gains` (when not null and not yet set).
+template <class Sink>
 void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order, int window,
-               SmoothedSignal* out, bool* gains_set) {
+               const Sink& sink, SmoothedSignal* gains, bool* gains_set) {
   const int n = static_cast<int>(e - b);
-  for (std::size_t i = b; i < e; ++i) out->run[i] = run;
   if (n < 3) {
-    for (std::size_t i = b; i < e; ++i) {
-      out->value[i] = s.y[i];
-      out->derivative[i] = kNaN;
-      out->second_derivative[i] = kNaN;
-      out->edge[i] = true;
-    }
+    for (std::size_t i = b; i < e; ++i) sink(SmoothedSample{i, s.y[i], kNaN, kNaN, true, run});
     return;
   }
   const RunFit f = FitOfRun(s, b, e, order, window);
@@ -162,14 +163,22 @@ void SmoothRun(const Signal& s, std::size_t b, std::size_t e, int run, int order
     // A uniform run's interior shares the centred weights (computed once).
     if (!(f.uniform && !edge && i > f.hw)) LocalWeights(s, f, i, &wv, &wd, &w2);
     const int first = std::clamp(i - f.hw, 0, n - f.w);
-    StoreLocalFit(wv, wd, w2, &s.y[b + first], f.w, f.h, b + i, edge, out);
-    if (!*gains_set && !edge) {
-      out->value_gain = wv.norm();
-      out->derivative_gain = wd.norm() / f.h;
-      out->derivative_weights.assign(wd.data(), wd.data() + wd.size());
-      for (double& x : out->derivative_weights) x /= f.h;
+    sink(LocalFit(wv, wd, w2, &s.y[b + first], f.w, f.h, b + i, edge, run));
+    if (gains && !*gains_set && !edge) {
+      SetGains(wv, wd, f.h, gains);
       *gains_set = true;
     }
+  }
+}
+
+// Every run of s smoothed in order (SmoothRun).
+template <class Sink>
+void SmoothRuns(const Signal& s, const SavitzkyGolayOptions& options, const Sink& sink,
+                SmoothedSignal* gains) {
+  bool gains_set = false;
+  int run = 0;
+  for (const auto& [b, e] : Runs(s.t, options.gap_factor)) {
+    SmoothRun(s, b, e, run++, options.order, options.window, sink, gains, &gains_set);
   }
 }
 
@@ -279,12 +288,19 @@ SmoothedSignal Unsmoothed(const std::vector<double>& t) {
 
 SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
   SmoothedSignal out = Unsmoothed(s.t);
-  bool gains_set = false;
-  int run = 0;
-  for (const auto& [b, e] : Runs(s.t, options.gap_factor)) {
-    SmoothRun(s, b, e, run++, options.order, options.window, &out, &gains_set);
-  }
+  SmoothRuns(s, options, [&out](const SmoothedSample& p) {
+    out.value[p.i] = p.value;
+    out.derivative[p.i] = p.derivative;
+    out.second_derivative[p.i] = p.second_derivative;
+    out.edge[p.i] = p.edge;
+    out.run[p.i] = p.run;
+  }, &out);
   return out;
+}
+
+void ForEachSmoothed(const Signal& s, const SavitzkyGolayOptions& options,
+                     const std::function<void(const SmoothedSample&)>& visit) {
+  SmoothRuns(s, options, visit, nullptr);
 }
 
 std::vector<SampleWeights> SavitzkyGolayDerivativeWeights(const Signal& s,

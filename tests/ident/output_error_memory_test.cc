@@ -3,46 +3,17 @@
 // the streaming prewhitened sandwich (covariance.h WhitenedScoreSum) — against their dense
 // definitions, and the live heap of a 420-trial fit against its number of measurements.
 #include <gtest/gtest.h>
-#include <malloc.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
-#include <new>
 #include <random>
 
 #include "ident_cases.h"
+#include "support/live_heap.h"
 #include "uuvplan/ident/block_least_squares.h"
 #include "uuvplan/ident/covariance.h"
 #include "uuvplan/ident/monte_carlo.h"
 #include "uuvplan/ident/output_error.h"
 #include "uuvplan/ident/trial_data.h"
-
-// Live heap bytes while `g_counting` (malloc_usable_size of every block this program's new and
-// delete see); the peak since the last reset.
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long long> g_live{0}, g_peak{0};
-void Count(void* p, int sign) {
-  if (!p || !g_counting.load(std::memory_order_relaxed)) return;
-  const long long now = g_live += sign * static_cast<long long>(malloc_usable_size(p));
-  long long peak = g_peak.load();
-  while (now > peak && !g_peak.compare_exchange_weak(peak, now)) {
-  }
-}
-}  // namespace
-
-void* operator new(std::size_t n) {
-  void* p = std::malloc(n ? n : 1);
-  if (!p) throw std::bad_alloc();
-  Count(p, +1);
-  return p;
-}
-void operator delete(void* p) noexcept {
-  Count(p, -1);
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
 
 namespace uuvplan::ident {
 namespace {
@@ -194,16 +165,14 @@ TEST(OutputErrorMemoryTest, LiveHeapOfAManyTrialFitGrowsWithItsMeasurementsNotTr
   const std::vector<ParameterState> state(m.num_parameters(), ParameterState::kEstimated);
   OutputErrorOptions o;
   o.prune_insignificant = false;
-  g_live = 0;
-  g_peak = 0;
-  g_counting = true;
+  uuvplan::testing::StartCountingHeap();
   const OutputErrorResult r = OutputErrorFit(m, trials, theta, state, o);
-  g_counting = false;
+  const long long peak = uuvplan::testing::StopCountingHeap();
   ASSERT_TRUE(r.ok()) << r.message;
   ASSERT_GT(static_cast<int>(r.initial.size()) + m.num_parameters(), BlockAnalysis::kDenseColumns);
-  EXPECT_LT(g_peak.load(), 400LL * r.num_residuals)
-      << r.num_residuals << " measurements, peak live heap " << g_peak.load() << " B";
-  std::cout << r.num_residuals << " measurements, peak live heap " << g_peak.load() / 1e6 << " MB\n";
+  EXPECT_LT(peak, 400LL * r.num_residuals)
+      << r.num_residuals << " measurements, peak live heap " << peak << " B";
+  std::cout << r.num_residuals << " measurements, peak live heap " << peak / 1e6 << " MB\n";
 }
 
 }  // namespace

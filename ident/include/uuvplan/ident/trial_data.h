@@ -80,7 +80,8 @@ struct TrialData {
 
   /// Velocity estimate: smoothed measured velocity if the DOF has a velocity column, else the
   /// Savitzky–Golay derivative of the positions (`velocity_from_position` says which); its
-  /// `derivative` is the acceleration of the same local polynomials.
+  /// `derivative` is the acceleration of the same local polynomials (`second_derivative` is
+  /// not kept: empty).
   SmoothedSignal velocity_estimate;
   bool velocity_from_position = true;
   /// AR(1) coefficient of the position noise (PositionNoiseAr1 of the positions with the

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,19 @@ struct SmoothedSignal {
 
 /// Savitzky–Golay smoothing and differentiation of irregularly sampled data.
 SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options);
+
+/// One sample of SavitzkyGolay's output (index i into s).
+struct SmoothedSample {
+  std::size_t i = 0;
+  double value = 0.0, derivative = 0.0, second_derivative = 0.0;
+  bool edge = true;
+  int run = 0;
+};
+/// The samples SavitzkyGolay(s, options) computes, the same numbers, handed to `visit` in
+/// order of i without storing them (a streaming check of a long log needs O(1) memory, not
+/// the 36 bytes a sample of a SmoothedSignal).
+void ForEachSmoothed(const Signal& s, const SavitzkyGolayOptions& options,
+                     const std::function<void(const SmoothedSample&)>& visit);
 
 /// The weights of one sample's Savitzky–Golay derivative: derivative_i = Σ_j w[j]·y[first + j]
 /// (per second; empty where the run is too short for a derivative).
