@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Issue #15's load test: a campaign of N trials, each a copy of one real 2,934-row BlueROV yaw
+# Issue #15's load test: a campaign of N trials, each a copy of one real 2,926-row BlueROV yaw
 # log (../shared/data/bluerov-yaw-2016/trials/yaw_1.csv, 125 Hz gyro), half of them fit and half
 # validate, identified by `uuvplan identify`; prints wall, CPU and peak RSS (/usr/bin/time -v).
-# Memory must grow with the rows (N × 2,934), not with N².
+# Memory must grow with the rows (N × 2,926), not with N².
 #   bench/many_trials.sh [N]... [--binary UUVPLAN]       (default N: 200 2000; build/uuvplan)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -17,6 +17,7 @@ done
 [ ${#counts[@]} -gt 0 ] || counts=(200 2000)
 data="$root/../shared/data/bluerov-yaw-2016"
 [ -f "$data/trials/yaw_1.csv" ] || { echo "many_trials.sh: needs ../shared (real data)" >&2; exit 77; }
+rows_per_log=$(($(grep -vc '^#' "$data/trials/yaw_1.csv") - 1))  # data rows: no comments, no header
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 for n in "${counts[@]}"; do
@@ -37,6 +38,6 @@ for n in "${counts[@]}"; do
   rss=$(awk -F': ' '/Maximum resident/ {print $2}' "$dir/time")
   wall=$(awk -F': ' '/Elapsed \(wall/ {print $2}' "$dir/time")
   cpu=$(awk -F': ' '/User time/ {u=$2} /System time/ {s=$2} END {printf "%.2f", u + s}' "$dir/time")
-  echo "$n trials ($((n * 2933)) rows, $((n / 2 + n % 2)) fit): exit $rc, wall $wall, CPU $cpu s, peak RSS $((rss / 1024)) MB"
+  echo "$n trials ($((n * rows_per_log)) rows, $((n / 2 + n % 2)) fit): exit $rc, wall $wall, CPU $cpu s, peak RSS $((rss / 1024)) MB"
   grep -E '^  yaw  |status' "$dir/out" | head -8 || true
 done
