@@ -267,11 +267,13 @@ std::vector<SwitchPair> SwitchPairs(const DofContext& ctx) {
   return pairs;
 }
 
-std::vector<SwitchPair> OneWayPairs(const DofContext& ctx) {
+std::vector<SwitchPair> OneWayPairs(const DofContext& ctx, const OneWayHint& hint) {
   const model::Vehicle& v = ctx.vehicle();
   std::vector<SwitchPair> out;
   for (int mi : v.MappingsOf(ctx.dof())) {
+    if (!hint.mapping.empty() && v.mappings[mi].name != hint.mapping) continue;
     for (int sign : {+1, -1}) {
+      if (hint.sign != 0 && sign != hint.sign) continue;
       const model::Direction dir = sign > 0 ? model::Direction::kPos : model::Direction::kNeg;
       if (!v.mappings[mi].IsOpenWater(dir)) continue;  // eta unknown: m confounded with it
       const ForceRange r = ctx.ForceRangeFor(mi, sign);
@@ -284,7 +286,7 @@ std::vector<SwitchPair> OneWayPairs(const DofContext& ctx) {
 SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family,
                                 const SineDesignOptions& o,
                                 const std::vector<Eigen::MatrixXd>& prior, const std::string& id,
-                                double one_way_duration_s) {
+                                const OneWayHint& hint) {
   SineDesignResult result;
   const double longest = o.fixed_duration_s > 0
                              ? o.fixed_duration_s
@@ -292,15 +294,19 @@ SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family
                                         ctx.options().max_trial_duration_s);
   std::vector<SwitchPair> pairs = SwitchPairs(ctx);
   // No pair alternates (one mapping per direction, both reversing the same propellers: URIS
-  // surge, VSOR yaw, heave): the square and the multisine one way, within one direction's range.
-  if (pairs.empty() && o.one_way_families && family != model::InputFamily::kSwitchedSine) {
-    pairs = OneWayPairs(ctx);
+  // surge, VSOR yaw, heave): the square one way, within one direction's force range. With the
+  // input bounded in amplitude, optimal inputs are bang-bang (the classic result of input
+  // design, e.g. Goodwin & Payne 1977), so the two-level square stands for the one-way
+  // multisine too: the multisine took 2.3× the square's time on URIS yaw (13.1 s against
+  // 5.7 s) and the square won every one-way row of docs/planning.md §1b.
+  if (pairs.empty() && o.one_way_families && family == model::InputFamily::kSwitchedSquare) {
+    pairs = OneWayPairs(ctx, hint);
   }
   double best = -std::numeric_limits<double>::infinity();
   for (const SwitchPair& pair : pairs) {
     // One way the vehicle drifts: the longest trial is not the best; the sine's duration is.
-    const double duration = pair.one_way != 0 && o.fixed_duration_s <= 0 && one_way_duration_s > 0
-                                ? one_way_duration_s
+    const double duration = pair.one_way != 0 && o.fixed_duration_s <= 0 && hint.duration_s > 0
+                                ? hint.duration_s
                                 : longest;
     SwitchedProblem sp(ctx, family, o, prior, pair, duration);
     DesignProblem p;
@@ -340,12 +346,19 @@ SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptio
                                     const std::vector<Eigen::MatrixXd>& prior,
                                     const std::string& id) {
   SineDesignResult best = DesignSine(ctx, o, prior, id);
-  const double sine_duration = best.status == DesignStatus::kOk ? best.trial.design.duration : 0.0;
+  // One way, the single sine's duration (it fits the drift to the pool), mapping and direction
+  // (the better of the two; they mirror each other on a symmetric vehicle): half the cost of
+  // trying both, measured on URIS yaw (docs/planning.md §1b).
+  OneWayHint hint;
+  if (best.status == DesignStatus::kOk) {
+    const model::TrialDesign& d = best.trial.design;
+    hint = {d.duration, d.mapping, d.offset >= 0 ? +1 : -1};
+  }
   best.notes.push_back("single sine: " + (best.status == DesignStatus::kOk
                                               ? "robust criterion " + model::Significant(best.criterion, 4)
                                               : best.message));
   for (model::InputFamily family : o.families) {
-    SineDesignResult r = DesignSwitched(ctx, family, o, prior, id, sine_duration);
+    SineDesignResult r = DesignSwitched(ctx, family, o, prior, id, hint);
     std::ostringstream s;
     s << model::InputFamilyName(r.status == DesignStatus::kOk ? r.trial.design.family : family)
       << ": " << (r.status == DesignStatus::kOk ? "robust criterion " + model::Significant(r.criterion, 4)

@@ -61,10 +61,9 @@ struct SineDesignOptions {
                                               model::InputFamily::kSwitchedSine,
                                               model::InputFamily::kMultisine};
   /// A DOF without a switch pair (URIS surge, VSOR yaw, every heave of the cases) may also take
-  /// the square (family `piecewise`) and the multisine one way (switched_design.h OneWayPairs).
-  /// Off by default: on, ROMEO's loop plans heave one way and then misses its heave m by 6σ and
-  /// eta.vertical-all.neg (DesignLoopTest, not investigated; docs/planning.md §1b).
-  bool one_way_families = false;
+  /// the square one way (family `piecewise`, in the single sine's mapping and direction:
+  /// switched_design.h OneWayPairs); the robust criterion chooses (docs/planning.md §1b).
+  bool one_way_families = true;
 
   bool IsValid(std::string* error) const;
 };

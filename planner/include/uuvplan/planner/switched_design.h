@@ -44,19 +44,29 @@ struct SwitchPair {
   int one_way = 0;
 };
 std::vector<SwitchPair> SwitchPairs(const DofContext& ctx);
+
+/// What the one-way families take from the single sine (DesignInertiaTrial): its duration
+/// (s; it fits the vehicle's drift to the pool), mapping and direction. Empty: every
+/// open-water direction of every mapping, at the longest duration allowed.
+struct OneWayHint {
+  double duration_s = 0.0;
+  std::string mapping;
+  int sign = 0;  ///< +1, -1, or 0 for both
+};
 /// Every mapping and direction of ctx's DOF in open water (eta known) whose force range is
-/// feasible, as one-way "pairs": the families of a DOF that has no switch pair.
-std::vector<SwitchPair> OneWayPairs(const DofContext& ctx);
+/// feasible, as one-way "pairs" (restricted to the hint's mapping and direction where it gives
+/// them): the families of a DOF that has no switch pair.
+std::vector<SwitchPair> OneWayPairs(const DofContext& ctx, const OneWayHint& hint = {});
 
 /// The best trial of one switched family over every switch pair of ctx's DOF (status kFailed
 /// with a message when the DOF has no pair or no feasible design). A DOF without a switch pair
-/// gets, when options.one_way_families, the square (family `piecewise`: two levels in one direction) and the multisine one way
-/// over OneWayPairs, at the fixed duration, else at one_way_duration_s (> 0; the single sine's,
-/// which fits the drift to the pool), else the longest allowed.
+/// gets, when options.one_way_families, the square one way (family `piecewise`: two levels in
+/// one direction) over OneWayPairs(ctx, hint), at the fixed duration, else at the hint's, else
+/// the longest allowed.
 SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family,
                                 const SineDesignOptions& options,
                                 const std::vector<Eigen::MatrixXd>& prior, const std::string& id,
-                                double one_way_duration_s = 0.0);
+                                const OneWayHint& hint = {});
 
 /// The inertia trial: the single-mapping sine (seed 000, the fallback) and every family of
 /// options.families, the one with the largest robust criterion that passes its checks. The
