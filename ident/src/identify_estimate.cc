@@ -94,32 +94,9 @@ LeastSquaresAnswer SteadyAndInertia(const DofContext& c, const IdentifyOptions& 
   return ls;
 }
 
-// Whether the fit trials excite parameter `name` at all: its regressor h_j integrated over
-// one-second pieces of some trial is non-zero. The one-step rows answer a narrower question —
-// they keep only windows one Savitzky–Golay span apart, so a trial shorter than that gives no
-// row — while the output error fits every sample: a direction pushed only in a short trial
-// (the loop's 5 s upward heave sine) is still determined by the data and must be estimated,
-// not held at its a priori value (held, η = 1 against a true 0.56 biased m by 6σ).
-bool ExcitedByFitTrials(const DofContext& c, const Eigen::VectorXd& theta, double max_step_s,
-                        const std::string& name) {
-  const int j = c.model.ParameterIndex(name);
-  if (j < 0) return false;
-  for (const TrialData* d : c.trials.fit) {
-    const std::vector<double>& t = d->velocity_estimate.t;
-    if (t.size() < 2 || !(t.back() > t.front())) continue;
-    const int pieces = static_cast<int>(std::clamp(std::ceil(t.back() - t.front()), 1.0, 1000.0));
-    std::vector<double> b(pieces + 1);
-    for (int k = 0; k <= pieces; ++k) b[k] = t.front() + (t.back() - t.front()) * k / pieces;
-    b.back() = t.back();
-    const IntegratedRegressors ir = IntegrateRegressors(c.model, *d, b, theta, max_step_s);
-    if (ir.H.col(j).cwiseAbs().maxCoeff() > 0) return true;
-  }
-  return false;
-}
-
 // Seeds 002/004: one-step integral least squares on every regressor-linear parameter the
 // steady state did not drop; its unexcited parameters (those the steady state did not excite
-// either, when it answered, and that no fit trial excites: ExcitedByFitTrials).
+// either, when it answered).
 void OneStep(const DofContext& c, const IdentifyOptions& o, LeastSquaresAnswer* ls,
              DofIdentification* r) {
   OneStepDofInput in;
@@ -133,10 +110,7 @@ void OneStep(const DofContext& c, const IdentifyOptions& o, LeastSquaresAnswer* 
   r->one_step = std::move(res[0]);
   if (!r->one_step->ok()) r->notes.push_back(r->one_step->message);
   for (const auto& n : r->one_step->not_excited) {
-    if ((!ls->steady_ok || ls->not_excited_steady.count(n)) &&
-        !ExcitedByFitTrials(c, in.theta, o.one_step.max_step_s, n)) {
-      ls->not_excited.insert(n);
-    }
+    if (!ls->steady_ok || ls->not_excited_steady.count(n)) ls->not_excited.insert(n);
   }
 }
 

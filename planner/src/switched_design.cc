@@ -351,8 +351,9 @@ SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptio
   // trying both, measured on URIS yaw (docs/planning.md §1b).
   OneWayHint hint;
   if (best.status == DesignStatus::kOk) {
-    const model::TrialDesign& d = best.trial.design;
-    hint = {d.duration, d.mapping, d.offset >= 0 ? +1 : -1};
+    const model::TrialDesign& d = best.trial.design;  // a sine, or the steady run that won
+    const bool pos = d.Pushes(d.mapping, +1), neg = d.Pushes(d.mapping, -1);
+    hint = {d.duration, d.mapping, pos == neg ? 0 : pos ? +1 : -1};
   }
   best.notes.push_back("single sine: " + (best.status == DesignStatus::kOk
                                               ? "robust criterion " + model::Significant(best.criterion, 4)

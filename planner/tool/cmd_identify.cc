@@ -80,7 +80,28 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
   o->steady_windows[index].push_back({t0, t1});
 }
 
+// `--model coupled` fits seed 003's model by its own estimator (coupled_ls.h) on every DOF
+// at once: the options of the per-DOF chain do not apply, and one given would be ignored.
+void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
+  const ident::IdentifyOptions chain;
+  std::vector<std::string> given;
+  if (!co.dofs.empty()) given.push_back("--dof");
+  if (!co.steady.empty()) given.push_back("--steady");
+  if (co.identify.refine != chain.refine) given.push_back("--no-refine");
+  if (co.identify.prune_insignificant != chain.prune_insignificant) given.push_back("--no-prune");
+  if (co.closed_loop != kClosedLoopNames.Name(chain.closed_loop)) given.push_back("--closed-loop");
+  if (co.method.method != ident::MethodName(chain.method)) given.push_back("--method");
+  if (co.method.forgetting_given) given.push_back("--forgetting");
+  if (!given.empty()) {
+    throw InputError("--model coupled", "no " + model::Join(given) +
+                                            ": the coupled model is fitted by its own estimator "
+                                            "(one-step LS with instruments) on surge, sway and "
+                                            "yaw together; drop them, or use --model dof");
+  }
+}
+
 int RunIdentify(const IdentifyCommandOptions& co) {
+  if (co.model_kind == "coupled") RefuseChainOptionsWithCoupled(co);
   model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
   if (co.model_kind == "coupled") return RunCoupledIdentify(campaign, co.campaign, co.json);
   ident::IdentifyOptions o = co.identify;

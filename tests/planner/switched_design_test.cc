@@ -193,7 +193,8 @@ double FamilyOverSine(const FamilyCase& c) {
   o.families.clear();
   const SineDesignResult sine = DesignInertiaTrial(*ctx, o, {}, "sine");
   EXPECT_EQ(sine.status, DesignStatus::kOk) << sine.message;
-  o = SineDesignOptions{};  // every family, one-way ones too (URIS surge, VSOR yaw: no switch pair)
+  o = SineDesignOptions{};
+  o.one_way_families = true;  // URIS surge, VSOR yaw: no switch pair
   o.fixed_duration_s = sine.trial.design.duration;
   const SineDesignResult best = DesignInertiaTrial(*ctx, o, {}, "best");
   EXPECT_EQ(best.status, DesignStatus::kOk) << best.message;
@@ -255,7 +256,7 @@ TEST(FamiliesOneWay, UrisSurgeAndVsorYawHaveNoSwitchPairButOneWayRanges) {
 // won, written to the schedule JSON and replayed from there (ExpectReplayFeasible). The steady
 // runs are left out for CI time (their legs are `steady`/`segments`, held exactly by the
 // profile and checked by the same DofContext::Check); the switched families are what issue #17
-// added (the one-way square too, where a DOF has no switch pair).
+// added (the one-way square, off by default, is replayed by FamiliesAgainstTheSine).
 class ReplayEveryCase : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ReplayEveryCase, EveryPlannedProfileHoldsOverTheBox) {

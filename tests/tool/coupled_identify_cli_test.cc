@@ -55,5 +55,18 @@ TEST(CoupledIdentifyCli, IdentifiesACombinedModeCampaign) {
   }
 }
 
+TEST(CoupledIdentifyCli, OptionsOfThePerDofChainAreRefusedNotIgnored) {
+  // Before, `--model coupled --method rls` ran the coupled estimator and ignored --method.
+  // Refused before any file is read (exit 2, naming every option given).
+  TempDir scratch;
+  const ToolRun run = RunTool("identify '" + (scratch / "none.yaml") +
+                                  "' --model coupled --method rls --dof surge --no-prune",
+                              scratch);
+  EXPECT_EQ(run.status, 2) << run.out << run.err;
+  const std::string text = run.out + run.err;
+  EXPECT_NE(text.find("--model coupled"), std::string::npos) << text;
+  EXPECT_NE(text.find("no --dof, --no-prune, --method"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace uuvplan::tool_test

@@ -63,7 +63,9 @@ struct SineDesignOptions {
   /// A DOF without a switch pair (URIS surge, VSOR yaw, every heave of the cases) may also take
   /// the square one way (family `piecewise`, in the single sine's mapping and direction:
   /// switched_design.h OneWayPairs); the robust criterion chooses (docs/planning.md §1b).
-  bool one_way_families = true;
+  /// Off by default: on, ROMEO's heave loop misses m by 6σ — its short one-way trials leave an
+  /// installation coefficient held at 1 by identification (docs/planning.md §1b, issue #17).
+  bool one_way_families = false;
 
   bool IsValid(std::string* error) const;
 };
