@@ -41,6 +41,15 @@ Horizontal CoupledHorizontalModel::Coriolis(const Horizontal& nu) const {
   return {m_v * v * r, -m_u * u * r, (m_u - m_v) * u * v};
 }
 
+CoriolisTerm CoriolisTermOf(Dof dof) {
+  switch (dof) {
+    case Dof::kSurge: return {"vr", "m_v"};
+    case Dof::kSway: return {"ur", "−m_u"};
+    case Dof::kYaw: return {"uv", "m_u − m_v"};
+    default: return {};
+  }
+}
+
 Horizontal CoupledHorizontalModel::DragAndBias(const Horizontal& nu) const {
   Horizontal f;
   for (int i = 0; i < 3; ++i) {

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "uuvplan/model/coupled_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/force_term.h"
 #include "uuvplan/model/util/text.h"
@@ -262,18 +263,10 @@ EffectEntry Coupling() {
   e.describe = [](const FindingContext& f) {
     std::string s = "errors follow the motion of other degrees of freedom (" +
                     f.detail.substr(0, 1) + "·" + f.detail.substr(1, 1) + ")";
-    // Seed 003's coupled horizontal model has exactly this product in this DOF: its Coriolis
-    // and centripetal term (surge m_v·v·r, sway −m_u·u·r, yaw (m_u − m_v)·u·v).
-    const Dof dof = f.breakdown.dof;
-    const bool coriolis = (dof == Dof::kSurge && f.detail == "vr") ||
-                          (dof == Dof::kSway && f.detail == "ur") ||
-                          (dof == Dof::kYaw && f.detail == "uv");
-    if (coriolis) {
-      const char* coefficient = dof == Dof::kSurge  ? "m_v"
-                                : dof == Dof::kSway ? "−m_u"
-                                                    : "m_u − m_v";
+    const CoriolisTerm coriolis = CoriolisTermOf(f.breakdown.dof);
+    if (!coriolis.pair.empty() && f.detail == coriolis.pair) {
       s += ": the Coriolis term of seed 003's coupled surge–sway–yaw model (its coefficient is " +
-           std::string(coefficient) +
+           coriolis.coefficient +
            "); identify the three DOFs together with `uuvplan identify --model coupled`";
     }
     return s;

@@ -134,14 +134,10 @@ class TrialLogParser {
       : path_(path), allowed_mappings_(allowed_mappings) {}
 
   TrialLog Parse() {
-    // A log is part of a campaign held in memory: it may not hold more rows than a campaign
-    // may (refused here, before the rows are read, not after).
-    const double limit =
-        std::min(model::limits::kMaxTrialRows, model::limits::kMaxCampaignRows);
     const std::size_t max_rows = CountNewlines(path_) + 1;
-    if (static_cast<double>(max_rows) > limit) {
+    if (static_cast<double>(max_rows) > model::limits::kMaxLogRows) {
       Place(path_, 0, "").Fail(std::to_string(max_rows) + " lines, more than the " +
-                               Significant(limit, 3) +
+                               Significant(model::limits::kMaxLogRows, 3) +
                                " rows a trial log may have: split the trial");
     }
     LineReader reader(path_);

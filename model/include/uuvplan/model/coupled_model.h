@@ -69,6 +69,16 @@ struct CoupledHorizontalModel {
   bool Admissible(std::string* why) const;
 };
 
+/// DOF `dof`'s Coriolis term (Coriolis() above) as a 1-DOF model sees it: a coefficient times
+/// the product of two measured velocities, named as the coupling effect names its pair
+/// ("vr": surge m_v·v·r, "ur": sway −m_u·u·r, "uv": yaw (m_u − m_v)·u·v); empty strings for a
+/// DOF outside the horizontal model.
+struct CoriolisTerm {
+  std::string pair;         ///< the velocity letters, e.g. "vr"
+  std::string coefficient;  ///< in the model's inertias, e.g. "m_v"
+};
+CoriolisTerm CoriolisTermOf(Dof dof);
+
 /// The force balance of equation `i` written linear in θ (seed 003 H matrix, generalised):
 ///   h_acc·ν̇_i + h(ν)·θ = τ_i,
 /// where h_acc multiplies the DOF's own inertia and `h` (12 entries, zero on that inertia)

@@ -19,6 +19,11 @@ inline constexpr double kMaxSimulationSteps = 1e8;
 /// peak RSS, docs/performance.md), so 6e6 rows keep a campaign under issue #15's 2 GB.
 inline constexpr double kMaxCampaignRows = 6e6;
 
+/// Rows of one logged trial (a CSV's line count, checked before it is read): no more than
+/// its campaign may hold.
+inline constexpr double kMaxLogRows =
+    kMaxCampaignRows < kMaxTrialRows ? kMaxCampaignRows : kMaxTrialRows;
+
 // No limit on (fit rows) × (fit trials) any more: the output error accumulates its normal
 // equations trial by trial (ident/block_least_squares.h), so its memory is O(rows + trials), not
 // rows × trials (issue #15: 2,000 trials of 2,934 rows, docs/performance.md).
