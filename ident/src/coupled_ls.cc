@@ -1,8 +1,10 @@
 #include "uuvplan/ident/coupled_ls.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "coupled_rows.h"
+#include "model_selection.h"
 #include "options_check.h"
 #include "uuvplan/ident/least_squares.h"
 #include "uuvplan/model/coupled_model.h"
@@ -39,6 +41,30 @@ Eigen::VectorXd InstrumentalSolve(const Eigen::MatrixXd& H, const Eigen::MatrixX
   return scale.asDiagonal() * A.colPivHouseholderQr().solve(b);
 }
 
+// The columns `cols` of H (the parameters still in the model).
+Eigen::MatrixXd Columns(const Eigen::MatrixXd& H, const std::vector<int>& cols) {
+  Eigen::MatrixXd out(H.rows(), static_cast<Eigen::Index>(cols.size()));
+  for (std::size_t c = 0; c < cols.size(); ++c) out.col(static_cast<Eigen::Index>(c)) = H.col(cols[c]);
+  return out;
+}
+
+// θ of all 12 parameters from the estimate of `cols` (the dropped ones 0).
+Eigen::VectorXd Expand(const Eigen::VectorXd& x, const std::vector<int>& cols) {
+  Eigen::VectorXd theta = Eigen::VectorXd::Zero(model::kCoupledParameterCount);
+  for (std::size_t c = 0; c < cols.size(); ++c) theta[cols[c]] = x[static_cast<Eigen::Index>(c)];
+  return theta;
+}
+
+Eigen::MatrixXd Expand(const Eigen::MatrixXd& x, const std::vector<int>& cols) {
+  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(model::kCoupledParameterCount, model::kCoupledParameterCount);
+  for (std::size_t a = 0; a < cols.size(); ++a) {
+    for (std::size_t b = 0; b < cols.size(); ++b) {
+      cov(cols[a], cols[b]) = x(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+    }
+  }
+  return cov;
+}
+
 model::CoupledHorizontalModel ModelOf(const Eigen::VectorXd& theta) {
   model::CoupledHorizontalModel m;
   m.theta = theta;
@@ -46,7 +72,8 @@ model::CoupledHorizontalModel ModelOf(const Eigen::VectorXd& theta) {
 }
 
 struct Fit {
-  Eigen::VectorXd theta, w;
+  std::vector<int> cols;                              // the parameters in the model
+  Eigen::VectorXd theta, w;                           // θ of all 12 (dropped ones 0)
   CoupledRows rows;                                   // along the measured velocities
   Eigen::MatrixXd Z;                                  // instruments (= H without them)
 };
@@ -59,11 +86,11 @@ LinearFit LeastSquares(Fit* fit) {
   for (int pass = 0; pass < 2; ++pass) {
     LeastSquaresOptions ls;
     ls.covariance = CovarianceKind::kResidual;
-    lf = SolveLeastSquares(rows.H, rows.y, &fit->w, ls);
+    lf = SolveLeastSquares(Columns(rows.H, fit->cols), rows.y, &fit->w, ls);
     if (!lf.ok()) return lf;
     fit->w = EquationWeights(rows, lf.residuals);
   }
-  fit->theta = lf.theta;
+  fit->theta = Expand(lf.theta, fit->cols);
   fit->Z = rows.H;
   return lf;
 }
@@ -85,10 +112,45 @@ void Instrumental(const std::vector<CoupledTrialData>& trials, const CoupledLsOp
       simulated.push_back(internal::SimulatedVelocities(d, current, options.step_s));
     }
     fit->Z = internal::BuildCoupledRows(trials, simulated).H;
-    fit->theta = InstrumentalSolve(fit->rows.H, fit->Z, fit->rows.y, fit->w);
+    fit->theta = Expand(InstrumentalSolve(Columns(fit->rows.H, fit->cols), Columns(fit->Z, fit->cols),
+                                          fit->rows.y, fit->w),
+                        fit->cols);
     fit->w = EquationWeights(fit->rows, fit->rows.y - fit->rows.H * fit->theta);
     result->instrumental = true;
   }
+}
+
+// Seed 000 §IV-D on each DOF's equation, where the fit is non-physical: the negative drag term
+// with the largest percentile error above 51.02% over the three DOFs (never a DOF's last drag
+// term), as its θ index; -1 when no drag term is both negative and insignificant. Terms that
+// are physical stay: dropping one of two collinear terms moves the other by many of its σ
+// (yaw k, kq and bias under a spin that keeps one sign), a model-selection error σ does not
+// carry.
+int NegativeInsignificantDrag(const CoupledLsResult& r, const std::vector<int>& cols) {
+  static const std::vector<std::string> kDrag = {"k", "kq"};
+  int worst = -1;
+  double worst_pe = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    std::vector<int> index;
+    std::vector<PruneCandidate> candidates;
+    for (const std::string& name : kDrag) {
+      const int j = model::CoupledIndex(i, name.c_str());
+      if (std::find(cols.begin(), cols.end(), j) == cols.end()) continue;
+      index.push_back(j);
+      candidates.push_back({name, r.theta[j], r.Sigma(j)});
+    }
+    std::vector<std::string> negative;
+    for (const PruneCandidate& c : candidates) {
+      if (c.value < 0) negative.push_back(c.name);
+    }
+    double pe = 0.0;
+    const int c = WorstInsignificant(candidates, negative, &pe);
+    if (c >= 0 && pe > worst_pe) {
+      worst_pe = pe;
+      worst = index[c];
+    }
+  }
+  return worst;
 }
 
 }  // namespace
@@ -125,21 +187,33 @@ CoupledLsResult CoupledOneStepLeastSquares(const std::vector<const model::TrialL
   Fit fit;
   fit.rows = internal::BuildCoupledRows(data, measured);
   result.num_rows = static_cast<int>(fit.rows.y.size());
-  const LinearFit lf = LeastSquares(&fit);
-  result.condition_number = lf.condition_number;
-  if (!lf.ok()) {
-    result.status = lf.status == FitStatus::kTooFewData ? CoupledStatus::kTooFewData
-                                                        : CoupledStatus::kIllConditioned;
-    result.message = lf.message;
-    return result;
+  for (int j = 0; j < model::kCoupledParameterCount; ++j) fit.cols.push_back(j);
+  for (;;) {
+    result.notes.clear();
+    result.instrumental = false;
+    const LinearFit lf = LeastSquares(&fit);
+    result.condition_number = lf.condition_number;
+    if (!lf.ok()) {
+      result.status = lf.status == FitStatus::kTooFewData ? CoupledStatus::kTooFewData
+                                                          : CoupledStatus::kIllConditioned;
+      result.message = lf.message;
+      return result;
+    }
+    Instrumental(data, options, &fit, &result);
+    result.theta = fit.theta;
+    // The MA(1) sandwich of the √W-scaled rows (coupled_ls.h).
+    const Eigen::VectorXd sw = fit.w.cwiseSqrt();
+    const Eigen::VectorXd r = fit.rows.y - fit.rows.H * fit.theta;
+    result.covariance = Expand(Ma1Covariance(sw.asDiagonal() * Columns(fit.rows.H, fit.cols),
+                                             sw.asDiagonal() * Columns(fit.Z, fit.cols),
+                                             sw.cwiseProduct(r), fit.rows.group),
+                               fit.cols);
+    const int drop = options.prune ? NegativeInsignificantDrag(result, fit.cols) : -1;
+    if (drop < 0) break;
+    result.dropped.push_back({drop, result.theta[drop], result.Sigma(drop)});
+    fit.cols.erase(std::find(fit.cols.begin(), fit.cols.end(), drop));
+    fit.theta[drop] = 0.0;
   }
-  Instrumental(data, options, &fit, &result);
-  result.theta = fit.theta;
-  // The MA(1) sandwich of the √W-scaled rows (coupled_ls.h).
-  const Eigen::VectorXd sw = fit.w.cwiseSqrt();
-  const Eigen::VectorXd r = fit.rows.y - fit.rows.H * fit.theta;
-  result.covariance = Ma1Covariance(sw.asDiagonal() * fit.rows.H, sw.asDiagonal() * fit.Z,
-                                    sw.cwiseProduct(r), fit.rows.group);
   std::string why;
   if (!ModelOf(fit.theta).Admissible(&why)) {
     result.status = CoupledStatus::kNonPhysical;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "command.h"
+#include "coupled_schedule.h"
 #include "text_table.h"
 #include "trial_text.h"
 #include "uuvplan/model/input_error.h"
@@ -40,7 +41,10 @@ struct ScheduleCliOptions {
   std::string commands;  ///< --commands DIR: per-thruster command files and the run sheet
   std::string robust{planner::RobustnessName(planner::ScheduleOptions{}.planner.robustness)};
   planner::ScheduleOptions schedule;  ///< --max-duration, --no-steady, --no-sine bound here
+  std::string model_kind = "dof";     ///< --model: dof (per DOF) or coupled (seed 003)
+  bool duration_given = false;        ///< --max-duration on the command line
 };
+
 
 planner::Robustness ParseRobustness(const std::string& s) {
   for (const auto r : {planner::Robustness::kMaximin, planner::Robustness::kAverage,
@@ -48,6 +52,31 @@ planner::Robustness ParseRobustness(const std::string& s) {
     if (planner::RobustnessName(r) == s) return r;
   }
   throw model::InputError("--robust", "expected maximin, average or nominal, got '" + s + "'");
+}
+
+// `--model coupled` plans one combined trial of seed 003's model (coupled_design.h): the
+// per-DOF planner's options do not apply, and one given would be ignored.
+void RefusePerDofOptionsWithCoupled(const ScheduleCliOptions& o) {
+  const planner::ScheduleOptions per_dof;
+  std::vector<std::string> given;
+  if (!o.dofs.empty()) given.push_back("--dof");
+  if (!o.commands.empty()) given.push_back("--commands");
+  if (o.schedule.precision.target_percent != per_dof.precision.target_percent) given.push_back("--target");
+  if (o.schedule.steady_runs != per_dof.steady_runs) given.push_back("--no-steady");
+  if (o.schedule.sine_trial != per_dof.sine_trial) given.push_back("--no-sine");
+  if (!given.empty()) {
+    throw model::InputError("--model coupled",
+                            "no " + model::Join(given) +
+                                ": the coupled model gets one combined surge+sway+yaw trial; "
+                                "drop them, or use --model dof");
+  }
+}
+
+int RunCoupled(const ScheduleCliOptions& o, const model::Vehicle& vehicle, const model::Pool& pool) {
+  planner::CoupledDesignOptions co;
+  co.solver.robustness = ParseRobustness(o.robust);
+  if (o.duration_given) co.duration_s = o.schedule.planner.max_trial_duration_s;
+  return RunCoupledSchedule(vehicle, pool, co, o.json);
 }
 
 void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
@@ -115,8 +144,10 @@ nlohmann::json ScheduleResultJson(const planner::ScheduleResult& r,
 }
 
 int RunSchedule(const ScheduleCliOptions& o) {
+  if (o.model_kind == "coupled") RefusePerDofOptionsWithCoupled(o);
   const model::Vehicle vehicle = io::ReadVehicle(o.vehicle);
   const model::Pool pool = io::ReadPool(o.pool);
+  if (o.model_kind == "coupled") return RunCoupled(o, vehicle, pool);
   planner::ScheduleOptions so = o.schedule;
   so.planner.robustness = ParseRobustness(o.robust);
   so.dofs = ParseDofFlags(o.dofs);
@@ -154,9 +185,17 @@ void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {
   sub->add_option("--robust", o->robust, "maximin (default), average or nominal")
       ->capture_default_str();
   AddTargetOption(sub, &o->schedule.precision.target_percent);
-  sub->add_option("--max-duration", o->schedule.planner.max_trial_duration_s, "longest trial (s)")
+  sub->add_option("--max-duration", o->schedule.planner.max_trial_duration_s,
+                  "longest trial (s); with --model coupled the combined trial's duration "
+                  "(default 120 s)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::PositiveNumber)
+      ->each([o](const std::string&) { o->duration_given = true; });
+  sub->add_option("--model", o->model_kind,
+                  "dof (a schedule per DOF) or coupled (one combined surge+sway+yaw sine trial "
+                  "for seed 003's coupled model)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"dof", "coupled"}));
   sub->add_flag_callback(
       "--no-steady", [o] { o->schedule.steady_runs = false; }, "plan no steady runs");
   sub->add_flag_callback(

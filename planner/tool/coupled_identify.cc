@@ -23,17 +23,24 @@ int RunCoupledIdentify(const model::Campaign& campaign, const std::string& campa
       << logs.size() << " combined-mode trials; coupled horizontal model, seed 003; one-step "
       << (r.instrumental ? "instrumental-variable" : "least-squares") << " estimate)\n\n";
   if (r.ok() || r.status == ident::CoupledStatus::kNonPhysical) {
-    TextTable table({"DOF", "parameter", "value", "σ"});
+    TextTable table({"DOF", "parameter", "value", "σ", "state"});
     for (std::size_t j = 0; j < r.names.size(); ++j) {
       const std::string& name = r.names[j];
       const auto dot = name.find('.');
       table.AddRow({name.substr(0, dot), name.substr(dot + 1),
                     Quantity(r.theta[static_cast<Eigen::Index>(j)], r.units[j], 4),
-                    Quantity(r.Sigma(static_cast<int>(j)), r.units[j], 3)});
+                    Quantity(r.Sigma(static_cast<int>(j)), r.units[j], 3),
+                    r.IsDropped(static_cast<int>(j)) ? "dropped" : "estimated"});
     }
     table.Print(out);
     out << "\n  " << r.num_rows << " integral rows; coupling from the inertias: surge m_v·v·r, "
         << "sway −m_u·u·r, yaw (m_u − m_v)·u·v\n";
+    for (const auto& d : r.dropped) {
+      out << "  dropped " << r.names[d.index] << " = " << Quantity(d.value, r.units[d.index], 4)
+          << " ± " << Quantity(d.sigma, r.units[d.index], 3)
+          << ": negative and insignificant (seed 000 §IV-D, 51.02%); the other drag term of its "
+             "DOF takes its part, so that term assumes the trials' speeds\n";
+    }
   }
   for (const std::string& note : r.notes) out << "  note: " << note << "\n";
   if (!r.ok()) out << "  FAILED (" << ident::kCoupledStatusNames.Name(r.status) << "): " << r.message << "\n";

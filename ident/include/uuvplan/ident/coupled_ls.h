@@ -15,7 +15,12 @@
 //  2. instrumental variables: ν̃ is noisy and sits in H (errors in variables, which bias the
 //     least squares), so the instruments Z are the same rows along the velocities the current
 //     estimate simulates under the logged thrust (uncorrelated with the sensor noise),
-//     θ = (ZᵀWH)⁻¹ZᵀWy, iterated `iv_iterations` times.
+//     θ = (ZᵀWH)⁻¹ZᵀWy, iterated `iv_iterations` times;
+//  3. where the fit is non-physical, model selection (seed 000 §IV-D): the negative drag term
+//     with the largest percentile error above 51.02% is dropped and 1–2 redone, until no drag
+//     is both negative and insignificant. A quadratic drag the trials' speeds cannot tell from
+//     the linear one is dropped rather than reported negative; a physical fit keeps every
+//     term (dropping one of two collinear terms moves the other by many of its σ).
 // Knots are one Savitzky–Golay window apart, so the endpoint errors of consecutive rows are
 // nearly independent but shared: the residuals are MA(1) within an equation of a trial, and the
 // covariance is the sandwich A⁻¹·ZᵀΩZ·A⁻ᵀ over that MA(1) (least_squares.h Ma1Covariance),
@@ -24,6 +29,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -39,6 +45,9 @@ struct CoupledLsOptions {
   int sg_window = 0;
   int iv_iterations = 2;  ///< 0: the seeds' plain (weighted) least squares
   double step_s = 0.02;   ///< sub-step of the rows' integrals and the instruments' simulation
+  /// Step 3: drop a negative, insignificant drag term (percentile error above 51.02%, seed 000
+  /// §IV-D; never a DOF's last drag term) and refit, until none is left.
+  bool prune = true;
   bool IsValid(std::string* error) const;
 };
 
@@ -61,6 +70,16 @@ struct CoupledLsResult {
   int num_rows = 0;
   double condition_number = 0.0;  ///< of the column-scaled weighted H
   bool instrumental = false;      ///< θ is the instrumental-variable estimate
+  /// Terms dropped as insignificant (θ and covariance 0 there), with the estimate and σ they
+  /// had in the last fit that kept them.
+  struct Dropped {
+    int index = -1;
+    double value = 0.0, sigma = 0.0;
+  };
+  std::vector<Dropped> dropped;
+  bool IsDropped(int j) const {
+    return std::any_of(dropped.begin(), dropped.end(), [j](const Dropped& d) { return d.index == j; });
+  }
   std::vector<std::string> notes;
   bool ok() const { return status == CoupledStatus::kOk; }
   double Sigma(int j) const { return std::sqrt(covariance(j, j)); }

@@ -1,0 +1,20 @@
+// A combined-mode design of the coupled horizontal model (`schedule --model coupled`,
+// planner/coupled_design.h) as JSON (docs/formats.md): {"model": "coupled-horizontal", "fits",
+// "reasons", "notes", "trial": {"id", "mode", "duration", "inputs": [{"dof", "mapping", "kind":
+// "sine", "offset", "amplitude", "omega"}], "start": {"x", "y", "heading"}, "profile": {"t",
+// "force": {"surge": […], …}, "thrusters": {"HFL": […], …}}}, "envelope", "cramer_rao":
+// {"surge.m": {"sigma", "relative"}, …}, "criterion", "solver"}. SI; the profile every 0.1 s.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "uuvplan/model/pool.h"
+#include "uuvplan/model/vehicle.h"
+#include "uuvplan/planner/coupled_design.h"
+
+namespace uuvplan::io {
+
+nlohmann::json CoupledDesignJson(const planner::CoupledDesign& design,
+                                 const model::Vehicle& vehicle, const model::Pool& pool);
+
+}  // namespace uuvplan::io
