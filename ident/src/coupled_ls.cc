@@ -1,6 +1,7 @@
 #include "uuvplan/ident/coupled_ls.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "coupled_rows.h"
@@ -8,6 +9,7 @@
 #include "options_check.h"
 #include "uuvplan/ident/least_squares.h"
 #include "uuvplan/model/coupled_model.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -111,13 +113,34 @@ void Instrumental(const std::vector<CoupledTrialData>& trials, const CoupledLsOp
     for (const CoupledTrialData& d : trials) {
       simulated.push_back(internal::SimulatedVelocities(d, current, options.step_s));
     }
-    fit->Z = internal::BuildCoupledRows(trials, simulated).H;
-    fit->theta = Expand(InstrumentalSolve(Columns(fit->rows.H, fit->cols), Columns(fit->Z, fit->cols),
-                                          fit->rows.y, fit->w),
-                        fit->cols);
+    const Eigen::MatrixXd Z = internal::BuildCoupledRows(trials, simulated).H;
+    const Eigen::VectorXd theta = Expand(
+        InstrumentalSolve(Columns(fit->rows.H, fit->cols), Columns(Z, fit->cols), fit->rows.y, fit->w),
+        fit->cols);
+    if (!Z.allFinite() || !theta.allFinite()) {
+      result->notes.push_back(
+          "instrumental variables skipped: the current estimate's simulation or the "
+          "instrumental solve is not finite (least-squares estimate kept)");
+      return;
+    }
+    fit->Z = Z;
+    fit->theta = theta;
     fit->w = EquationWeights(fit->rows, fit->rows.y - fit->rows.H * fit->theta);
     result->instrumental = true;
   }
+}
+
+// The horizontal DOFs whose equation has no thrust in any row ("sway", "surge and yaw"), or "".
+std::string UnpushedDofs(const CoupledRows& rows) {
+  std::array<bool, 3> pushed = {false, false, false};
+  for (Eigen::Index k = 0; k < rows.y.size(); ++k) {
+    pushed[rows.equation[k]] = pushed[rows.equation[k]] || rows.y[k] != 0.0;
+  }
+  std::vector<std::string> names;
+  for (int i = 0; i < 3; ++i) {
+    if (!pushed[i]) names.emplace_back(model::DofName(model::kHorizontalDofs[i]));
+  }
+  return model::Join(names, " and ");
 }
 
 // Seed 000 §IV-D on each DOF's equation, where the fit is non-physical: the negative drag term
@@ -187,6 +210,14 @@ CoupledLsResult CoupledOneStepLeastSquares(const std::vector<const model::TrialL
   Fit fit;
   fit.rows = internal::BuildCoupledRows(data, measured);
   result.num_rows = static_cast<int>(fit.rows.y.size());
+  if (const std::string unpushed = UnpushedDofs(fit.rows); !unpushed.empty()) {
+    result.status = CoupledStatus::kTooFewData;
+    result.message = "no fit trial pushes " + unpushed +
+                     " (its force is 0 throughout): an equation without thrust fixes none of its "
+                     "terms' scale, and seed 003's coupled model needs every horizontal DOF "
+                     "pushed — a surge+sway+yaw trial, or the surge+yaw and sway+yaw modes together";
+    return result;
+  }
   for (int j = 0; j < model::kCoupledParameterCount; ++j) fit.cols.push_back(j);
   for (;;) {
     result.notes.clear();
@@ -213,6 +244,11 @@ CoupledLsResult CoupledOneStepLeastSquares(const std::vector<const model::TrialL
     result.dropped.push_back({drop, result.theta[drop], result.Sigma(drop)});
     fit.cols.erase(std::find(fit.cols.begin(), fit.cols.end(), drop));
     fit.theta[drop] = 0.0;
+  }
+  if (!result.theta.allFinite() || !result.covariance.allFinite()) {
+    result.status = CoupledStatus::kIllConditioned;
+    result.message = "the coupled fit is not finite: the trials do not determine the model";
+    return result;
   }
   std::string why;
   if (!ModelOf(fit.theta).Admissible(&why)) {

@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <sstream>
 
 #include "uuvplan/model/coupled_simulator.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/seed.h"
 #include "uuvplan/planner/thrust_limits.h"
 
 namespace uuvplan::planner {
@@ -314,6 +316,21 @@ std::vector<CoupledHorizontalModel> CoupledBox::CheckPoints() const {
   return out;
 }
 
+std::vector<CoupledHorizontalModel> CoupledBox::Sample(int n, std::uint64_t seed) const {
+  std::mt19937_64 rng(model::SplitMix64(seed));
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<CoupledHorizontalModel> out;
+  for (int k = 0; k < n; ++k) {
+    std::array<double, 3> fi, fd;
+    for (int i = 0; i < 3; ++i) {
+      fi[i] = inertia_factor[i][0] + unit(rng) * (inertia_factor[i][1] - inertia_factor[i][0]);
+      fd[i] = drag_factor[i][0] + unit(rng) * (drag_factor[i][1] - drag_factor[i][0]);
+    }
+    out.push_back(At(fi, fd));
+  }
+  return out;
+}
+
 CoupledBox CoupledAPrioriBox(const model::Vehicle& vehicle, const BoxOptions& options,
                              std::vector<std::string>* notes) {
   CoupledBox box;
@@ -533,20 +550,66 @@ void AddCramerRao(const Setup& s, CoupledDesign* d) {
   }
 }
 
+// Exchange step of semi-infinite programming (the constraints hold for every θ of the box, a
+// continuum): the check set's vertices and sweep miss interior extremes of the track (a
+// spin-rate resonance peaks inside the box), so the probes that reach farther than the check
+// set in x, y or turns join it. Returns how many joined.
+std::size_t AddExtremes(const model::CoupledTrialDesign& trial,
+                        const std::vector<CoupledHorizontalModel>& probes,
+                        const CoupledDesignOptions& o,
+                        std::vector<CoupledHorizontalModel>* check_points) {
+  const CoupledEnvelope have = TrackEnvelope(trial, *check_points, o.start_heading_rad, o);
+  std::array<double, 5> reach = {-have.x[0], have.x[1], -have.y[0], have.y[1], have.turns};
+  std::array<int, 5> best = {-1, -1, -1, -1, -1};
+  for (std::size_t k = 0; k < probes.size(); ++k) {
+    const CoupledEnvelope e = TrackEnvelope(trial, {probes[k]}, o.start_heading_rad, o);
+    const std::array<double, 5> r = {-e.x[0], e.x[1], -e.y[0], e.y[1], e.turns};
+    for (int c = 0; c < 5; ++c) {
+      if (r[c] > reach[c] + 1e-3) {
+        reach[c] = r[c];
+        best[c] = static_cast<int>(k);
+      }
+    }
+  }
+  std::vector<int> add(best.begin(), best.end());
+  std::sort(add.begin(), add.end());
+  add.erase(std::unique(add.begin(), add.end()), add.end());
+  std::size_t added = 0;
+  for (int k : add) {
+    if (k < 0) continue;
+    check_points->push_back(probes[k]);
+    ++added;
+  }
+  return added;
+}
+
 }  // namespace
 
 CoupledDesign PlanCoupledDesign(const model::Vehicle& vehicle, const model::Pool& pool,
                                 const CoupledDesignOptions& o) {
   CoupledDesign out;
-  const Setup s = MakeSetup(vehicle, pool, o, CoupledAPrioriBox(vehicle, o.box, &out.notes));
-  out.solver = Solve(SolverBackend::kNlopt, ProblemOf(s), o.solver);
-  if (out.solver.x.empty()) {
-    out.reasons.push_back("the optimiser found no design: " + out.solver.message);
-    return out;
+  const CoupledBox box = CoupledAPrioriBox(vehicle, o.box, &out.notes);
+  Setup s = MakeSetup(vehicle, pool, o, box);
+  const std::vector<CoupledHorizontalModel> probes = box.Sample(o.probe_points, o.probe_seed);
+  DesignProblem problem = ProblemOf(s);
+  SolverOptions solver = o.solver;
+  for (int round = 0; round <= o.exchange_rounds; ++round) {
+    out.solver = Solve(SolverBackend::kNlopt, problem, solver);
+    if (out.solver.x.empty()) {
+      out.reasons.push_back("the optimiser found no design: " + out.solver.message);
+      return out;
+    }
+    const std::size_t added = AddExtremes(s.Trial(out.solver.x.data()), probes, o, &s.check_points);
+    if (added == 0) break;
+    problem.x0 = out.solver.x;  // warm start on the larger check set: a polish
+    solver.max_local_evaluations = o.exchange_evaluations;
   }
   out.trial = s.Trial(out.solver.x.data());
   out.criterion = out.solver.objective;
-  out.envelope = EnvelopeOf(vehicle, out.trial, s.check_points, o.start_heading_rad, o);
+  // The verdict over the check set and every probe.
+  std::vector<CoupledHorizontalModel> verdict_points = s.check_points;
+  verdict_points.insert(verdict_points.end(), probes.begin(), probes.end());
+  out.envelope = EnvelopeOf(vehicle, out.trial, verdict_points, o.start_heading_rad, o);
   out.reasons = Reasons(out.envelope, vehicle, pool);
   out.fits = out.reasons.empty();
   PlaceStart(pool, o.start_heading_rad, &out);

@@ -42,6 +42,7 @@ struct ScheduleCliOptions {
   std::string robust{planner::RobustnessName(planner::ScheduleOptions{}.planner.robustness)};
   planner::ScheduleOptions schedule;  ///< --max-duration, --no-steady, --no-sine bound here
   std::string model_kind = "dof";     ///< --model: dof (per DOF) or coupled (seed 003)
+  std::string mode;                   ///< --mode: a combined mode (coupled only)
   bool duration_given = false;        ///< --max-duration on the command line
 };
 
@@ -75,6 +76,7 @@ void RefusePerDofOptionsWithCoupled(const ScheduleCliOptions& o) {
 int RunCoupled(const ScheduleCliOptions& o, const model::Vehicle& vehicle, const model::Pool& pool) {
   planner::CoupledDesignOptions co;
   co.solver.robustness = ParseRobustness(o.robust);
+  if (!o.mode.empty()) co.mode = *model::kCombinedModeNames.Parse(o.mode);  // checked by CLI11
   if (o.duration_given) co.duration_s = o.schedule.planner.max_trial_duration_s;
   return RunCoupledSchedule(vehicle, pool, co, o.json);
 }
@@ -145,6 +147,9 @@ nlohmann::json ScheduleResultJson(const planner::ScheduleResult& r,
 
 int RunSchedule(const ScheduleCliOptions& o) {
   if (o.model_kind == "coupled") RefusePerDofOptionsWithCoupled(o);
+  if (o.model_kind != "coupled" && !o.mode.empty()) {
+    throw model::InputError("--mode " + o.mode, "a combined mode is planned with --model coupled");
+  }
   const model::Vehicle vehicle = io::ReadVehicle(o.vehicle);
   const model::Pool pool = io::ReadPool(o.pool);
   if (o.model_kind == "coupled") return RunCoupled(o, vehicle, pool);
@@ -196,6 +201,10 @@ void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {
                   "for seed 003's coupled model)")
       ->capture_default_str()
       ->check(CLI::IsMember({"dof", "coupled"}));
+  sub->add_option("--mode", o->mode,
+                  "with --model coupled: the combined mode, surge+yaw, sway+yaw or "
+                  "surge+sway+yaw (default)")
+      ->check(CLI::IsMember({"surge+yaw", "sway+yaw", "surge+sway+yaw"}));
   sub->add_flag_callback(
       "--no-steady", [o] { o->schedule.steady_runs = false; }, "plan no steady runs");
   sub->add_flag_callback(

@@ -87,6 +87,18 @@ TEST(CoupledLeastSquares, NamesTheMissingColumn) {
   EXPECT_NE(r.message.find("trial 2: no vel_sway column"), std::string::npos) << r.message;
 }
 
+// A surge+yaw trial alone pushes no sway: the sway equation has no thrust, so nothing fixes the
+// scale of its terms (m_u among them), and the residual-weighted least squares drove every
+// inertia towards 0 (surge.m 0.31 ± 0.05 kg, status ok) or, through the instruments, to NaN.
+// Now a failure naming the DOF.
+TEST(CoupledLeastSquares, ATrialSetThatPushesNoSwayFailsNamingIt) {
+  const auto designs = testing::CombinedModeDesigns(120.0);
+  const auto logs = testing::RunCoupledCampaign(AsvTruth(), {designs[0]}, 5);  // surge+yaw
+  const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
+  EXPECT_EQ(r.status, CoupledStatus::kTooFewData);
+  EXPECT_NE(r.message.find("no fit trial pushes sway"), std::string::npos) << r.message;
+}
+
 // A campaign of the ASV's combined-mode trials read as 1-DOF trials (each trial once per DOF
 // it pushes, as a user's campaign would list it): the first run fitted, a second run (other
 // noise) held out.

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,8 @@ struct CoupledBox {
   /// The centre, the 64 vertices of all six axes, then the yaw drag swept at 15 inner values
   /// (the others at the centre): where the constraints are evaluated.
   std::vector<model::CoupledHorizontalModel> CheckPoints() const;
+  /// `n` points drawn uniformly from the box (seeded).
+  std::vector<model::CoupledHorizontalModel> Sample(int n, std::uint64_t seed) const;
   /// The model at the given factors on each DOF's inertia and drag.
   model::CoupledHorizontalModel At(const std::array<double, 3>& inertia,
                                    const std::array<double, 3>& drag) const;
@@ -55,8 +58,17 @@ struct CoupledDesignOptions {
   double duration_s = 120.0;
   double start_heading_rad = 0.0;  ///< surge axis along the pool's length
   double omega_min = 0.1, omega_max = 1.5;  ///< rad/s, CHOSEN: periods 4–60 s
-  double step_s = 0.1;                      ///< RK4 step of the planner's simulations
+  /// RK4 step of the planner's simulations (s): ω·h <= 0.3 at the fastest sine and spin.
+  double step_s = 0.2;
   double profile_step_s = 0.05;             ///< thruster forces checked this often
+  /// Exchange rounds: after a solve, `probe_points` points of the box (seeded) are simulated
+  /// and those reaching farther than the check points join them; solved again from there
+  /// (`exchange_evaluations` at most), at most `exchange_rounds` times. The verdict (`fits`)
+  /// is over the check points and every probe.
+  int exchange_rounds = 3;
+  int exchange_evaluations = 80;
+  int probe_points = 256;
+  std::uint64_t probe_seed = 2003;
   BoxOptions box;
   SolverOptions solver;
   CoupledDesignOptions();
