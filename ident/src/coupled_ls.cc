@@ -210,7 +210,7 @@ CoupledLsResult CoupledOneStepLeastSquares(const std::vector<const model::TrialL
   Fit fit;
   fit.rows = internal::BuildCoupledRows(data, measured);
   result.num_rows = static_cast<int>(fit.rows.y.size());
-  if (const std::string unpushed = UnpushedDofs(fit.rows); !unpushed.empty()) {
+  if (const std::string unpushed = UnpushedDofs(fit.rows); fit.rows.y.size() > 0 && !unpushed.empty()) {
     result.status = CoupledStatus::kTooFewData;
     result.message = "no fit trial pushes " + unpushed +
                      " (its force is 0 throughout): an equation without thrust fixes none of its "

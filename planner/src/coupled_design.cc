@@ -20,6 +20,9 @@ using model::CoupledHorizontalModel;
 using model::Horizontal;
 
 constexpr double kTwoPi = 2.0 * M_PI;
+// m kept free beyond the track at each wall: the planner's 0.2 s RK4 track differs from a
+// 0.01 s one by < 1 cm (ASV sway+yaw design, 2026-11-27).
+constexpr double kTrackSlack = 0.05;
 
 // τ = [X, Y, N] of a combined trial: each moved DOF's nominal force, η = 1 (the mappings a
 // combined design uses work in open water both ways, CombinedMappingOf).
@@ -166,7 +169,8 @@ model::CoupledTrialDesign TrialOf(const double* x, const std::vector<int>& moved
 void ThrustEnvelope(const model::Vehicle& vehicle, const model::CoupledTrialDesign& trial,
                     double step_s, CoupledEnvelope* e) {
   const std::size_t n = vehicle.thrusters.size();
-  std::vector<double> lo(n, std::numeric_limits<double>::infinity()), hi(n, -lo[0]);
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> lo(n, inf), hi(n, -inf);
   std::vector<bool> works(n, false);
   for (const model::TrialDesign& in : trial.inputs) {
     for (const auto& [ti, share] : vehicle.mappings[vehicle.MappingIndex(in.mapping)].shares) {
@@ -245,9 +249,9 @@ void ThrustBound(const model::Vehicle& vehicle, const model::CoupledTrialDesign&
 
 CoupledDesignOptions::CoupledDesignOptions() {
   solver.robustness = Robustness::kMaximin;
-  // Local search from a start that keeps every thruster one way (PlanCoupledDesign): a global
-  // search over 9 variables at ~0.1 s an evaluation costs minutes and found no feasible point
-  // in 200 evaluations on the ASV (measured 2026-11-27).
+  // Local search from a start that keeps every thruster one way (ProblemOf): a global search
+  // (DIRECT-L, 200 evaluations) over the 9 variables took 58 s and found no feasible point on
+  // the ASV (measured 2026-11-27).
   solver.global = GlobalMethod::kNone;
   solver.max_local_evaluations = 300;
 }
@@ -392,7 +396,8 @@ std::vector<double> Constraints(const CoupledEnvelope& e, const model::Vehicle& 
   const double free_x = pool.FreeTravel(model::Dof::kSurge);
   const double free_y = pool.FreeTravel(model::Dof::kSway);
   return {-e.thrust_margin / std::max(vehicle.min_thrust, 1.0), e.thrust_load - 1.0,
-          (e.x[1] - e.x[0]) / free_x - 1.0, (e.y[1] - e.y[0]) / free_y - 1.0,
+          (e.x[1] - e.x[0] + 2 * kTrackSlack) / free_x - 1.0,
+          (e.y[1] - e.y[0] + 2 * kTrackSlack) / free_y - 1.0,
           e.turns / pool.max_turns - 1.0,
           e.closed_water_force / std::max(vehicle.min_thrust, 1.0)};
 }
@@ -480,6 +485,11 @@ Setup MakeSetup(const model::Vehicle& vehicle, const model::Pool& pool,
   s.covered = CoveredParameters(o.mode);
   s.scale = Scales(box.nominal, s.covered, s.force_max);
   s.outputs = Outputs(vehicle, o.step_s);
+  if (s.outputs.empty()) {
+    throw model::InputError("vehicle '" + vehicle.name + "' declares no sensor of surge, sway or "
+                            "yaw: a combined design has nothing to measure (sensors.<dof> in the "
+                            "vehicle file)");
+  }
   s.t = Grid(o.duration_s, o.step_s);
   s.design_points = box.DesignPoints();
   s.check_points = box.CheckPoints();
@@ -530,7 +540,8 @@ void PlaceStart(const model::Pool& pool, double heading, CoupledDesign* d) {
   d->start_heading = heading;
 }
 
-// Cramér–Rao bounds over the design points: σ_j = √(F⁻¹)_jj (in θ's units).
+// Cramér–Rao bounds over the design points: σ_j = √(F⁻¹)_jj (in θ's units); infinite, with a
+// reason, where F is singular (the trial does not determine every parameter).
 void AddCramerRao(const Setup& s, CoupledDesign* d) {
   const std::vector<std::string> names = model::CoupledParameterNames();
   for (int c : s.covered) d->parameters.push_back(names[c]);
@@ -538,7 +549,16 @@ void AddCramerRao(const Setup& s, CoupledDesign* d) {
   d->worst_relative_sigma.assign(s.covered.size(), 0.0);
   for (const CoupledHorizontalModel& m : s.design_points) {
     const Eigen::MatrixXd F = s.InformationAt(m, d->trial);
-    const Eigen::MatrixXd cov = F.ldlt().solve(Eigen::MatrixXd::Identity(F.rows(), F.cols()));
+    const Eigen::LLT<Eigen::MatrixXd> llt(F);
+    if (llt.info() != Eigen::Success) {
+      const double inf = std::numeric_limits<double>::infinity();
+      d->worst_sigma.assign(s.covered.size(), inf);
+      d->worst_relative_sigma.assign(s.covered.size(), inf);
+      d->reasons.push_back("the trial does not determine every parameter of the DOFs it moves "
+                           "(singular Fisher information at a point of the box)");
+      return;
+    }
+    const Eigen::MatrixXd cov = llt.solve(Eigen::MatrixXd::Identity(F.rows(), F.cols()));
     for (std::size_t c = 0; c < s.covered.size(); ++c) {
       const double sigma = std::sqrt(std::max(cov(c, c), 0.0)) * s.scale[c];
       const double value = std::abs(m.theta[s.covered[c]]);
@@ -611,9 +631,9 @@ CoupledDesign PlanCoupledDesign(const model::Vehicle& vehicle, const model::Pool
   verdict_points.insert(verdict_points.end(), probes.begin(), probes.end());
   out.envelope = EnvelopeOf(vehicle, out.trial, verdict_points, o.start_heading_rad, o);
   out.reasons = Reasons(out.envelope, vehicle, pool);
-  out.fits = out.reasons.empty();
   PlaceStart(pool, o.start_heading_rad, &out);
   AddCramerRao(s, &out);
+  out.fits = out.reasons.empty();
   return out;
 }
 

@@ -68,7 +68,7 @@ void RefusePerDofOptionsWithCoupled(const ScheduleCliOptions& o) {
   if (!given.empty()) {
     throw model::InputError("--model coupled",
                             "no " + model::Join(given) +
-                                ": the coupled model gets one combined surge+sway+yaw trial; "
+                                ": the coupled model gets one combined-mode trial (--mode); "
                                 "drop them, or use --model dof");
   }
 }
@@ -192,7 +192,7 @@ void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {
   AddTargetOption(sub, &o->schedule.precision.target_percent);
   sub->add_option("--max-duration", o->schedule.planner.max_trial_duration_s,
                   "longest trial (s); with --model coupled the combined trial's duration "
-                  "(default 120 s)")
+                  "(then 120 s when not given)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber)
       ->each([o](const std::string&) { o->duration_given = true; });

@@ -54,10 +54,11 @@ int RunCoupledSchedule(const model::Vehicle& vehicle, const model::Pool& pool,
       << model::Significant(pool.FreeTravel(model::Dof::kSurge), 3) << " m × "
       << model::Significant(pool.FreeTravel(model::Dof::kSway), 3) << " m; heading "
       << model::Significant(d.envelope.turns, 3) << " turns (tether " << model::Significant(pool.max_turns, 3)
-      << "); thrusters one way, " << model::Significant(d.envelope.thrust_margin, 3)
-      << " N clear of min_thrust, at most " << model::Significant(100 * d.envelope.thrust_load, 3)
-      << "% of their limit\n\nCramér–Rao σ (velocity and heading sensors of the vehicle file; "
-         "an efficient estimator):\n";
+      << "); thrusters " << model::Significant(d.envelope.thrust_margin, 3)
+      << " N above min_thrust at their weakest (negative: one comes too near zero or reverses), at most "
+      << model::Significant(100 * d.envelope.thrust_load, 3)
+      << "% of their limit\n\nCramér–Rao σ (the vehicle file's surge, sway and yaw sensors; an "
+         "efficient estimator):\n";
   PrintCramerRao(d, out);
   for (const std::string& note : d.notes) out << "  note: " << note << "\n";
   if (d.envelope.turns > 1.0) {

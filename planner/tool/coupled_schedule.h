@@ -1,5 +1,5 @@
-// `uuvplan schedule VEHICLE --pool POOL --model coupled [--max-duration S] [--json F]`: the
-// combined surge+sway+yaw sine trial of seed 003's coupled model (planner/coupled_design.h),
+// `uuvplan schedule VEHICLE --pool POOL --model coupled [--mode M] [--max-duration S] [--json F]`:
+// the combined-mode sine trial of seed 003's coupled model (planner/coupled_design.h),
 // robust over the a priori box, with its start pose in the pool and the Cramér–Rao σ it
 // promises. Exit 0 when every constraint holds over the box, 1 when not (the reasons printed).
 #pragma once

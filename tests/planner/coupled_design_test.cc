@@ -40,7 +40,7 @@ struct Replay {
   double x_min = 1e9, x_max = -1e9, y_min = 1e9, y_max = -1e9, turns = 0.0;
 };
 
-// RK4 on [x, y, ψ, u, v, r] with a 0.01 s step (the planner's is 0.05 s), the pose in the
+// RK4 on [x, y, ψ, u, v, r] with a 0.01 s step (the planner's is 0.2 s), the pose in the
 // pool frame from the planned start pose.
 Replay ReplayTrack(const std::array<double, 12>& th, const model::CoupledTrialDesign& trial,
            const CoupledDesign& d) {
@@ -107,10 +107,10 @@ CoupledDesign PlannedAsvDesign(model::CombinedMode mode) {
 // quadratic drags lie below the prior box's, which only moves the track) and identified by the
 // coupled least squares (ident/coupled_ls.h): the inertias — the coupling's coefficients —
 // within 3σ of the truth (a 0.3% chance each to miss) and determined to better than 3% (the
-// plan promises 0.5–0.8% at the box's worst for an efficient estimator; the one-step rows,
-// one Savitzky–Golay window apart, give 0.3–1.3%). The drag terms are not asserted: under the
+// plan promises 0.4–1.6% at the box's worst for an efficient estimator; the one-step rows,
+// one Savitzky–Golay window apart, give 0.6–1.1%). The drag terms are not asserted: under the
 // spin a quadratic drag may be negative and insignificant and is then dropped, the linear one
-// taking its part (6 seeds, 2026-11-27: every inertia within 2.1σ).
+// taking its part (6 seeds, 2026-11-27: every inertia within 1.7σ).
 void ExpectPlannedTrialIdentifiesTheCoupledModel(const CoupledDesign& d) {
   const model::Truth truth = io::ReadTruth(Case("truth.yaml"));
   model::VirtualPoolOptions pool;
@@ -152,6 +152,12 @@ TEST_P(CoupledDesignModes, AsvCombinedDesignStaysInThePoolOverThePriorBox) {
               << in.omega << " t) in " << in.mapping << "\n";
   }
   const CoupledBox box = CoupledAPrioriBox(vehicle, options.box, nullptr);
+  for (int i = 0; i < 3; ++i) {  // the box the replay spans is the vehicle file's inertia bounds
+    const auto bounds = vehicle.InertiaBounds(model::kHorizontalDofs[i]);
+    const double m = box.nominal.theta[model::CoupledIndex(i, "m")];
+    EXPECT_NEAR(m * box.inertia_factor[i][0], bounds[0], 1e-9 * bounds[1]);
+    EXPECT_NEAR(m * box.inertia_factor[i][1], bounds[1], 1e-9 * bounds[1]);
+  }
   std::vector<model::CoupledHorizontalModel> points = box.CheckPoints();
   const auto interior = box.Sample(30, 19);  // not the planner's probes (options.probe_seed)
   points.insert(points.end(), interior.begin(), interior.end());
@@ -190,7 +196,7 @@ TEST_P(CoupledDesignModes, AsvCombinedDesignStaysInThePoolOverThePriorBox) {
   if (GetParam() == model::CombinedMode::kSurgeSwayYaw) ExpectPlannedTrialIdentifiesTheCoupledModel(d);
 }
 
-// Seed 003 Table I's combined modes (4–8 s a plan).
+// Seed 003 Table I's combined modes (5–16 s a plan).
 INSTANTIATE_TEST_SUITE_P(Modes, CoupledDesignModes,
                          ::testing::Values(model::CombinedMode::kSurgeYaw,
                                            model::CombinedMode::kSwayYaw,

@@ -1,6 +1,6 @@
 // `uuvplan schedule VEHICLE --pool POOL --model coupled` (issue #19): the per-DOF planner's
 // options are refused, not ignored. The plan itself is tested in
-// tests/planner/coupled_design_test.cc (13 s a plan; not repeated here).
+// tests/planner/coupled_design_test.cc (5–16 s a plan; not repeated here).
 #include <gtest/gtest.h>
 
 #include "tool_test_util.h"

@@ -35,8 +35,8 @@ namespace uuvplan::planner {
 /// (parameter_box.h, APrioriBox of each horizontal DOF).
 struct CoupledBox {
   model::CoupledHorizontalModel nominal;
-  std::array<std::array<double, 2>, 3> inertia_factor;  ///< [lo, hi] on each DOF's m
-  std::array<std::array<double, 2>, 3> drag_factor;     ///< [lo, hi] on each DOF's k and kq
+  std::array<std::array<double, 2>, 3> inertia_factor{};  ///< [lo, hi] on each DOF's m
+  std::array<std::array<double, 2>, 3> drag_factor{};     ///< [lo, hi] on each DOF's k and kq
   /// The centre, then the 8 vertices of the inertia axes (drags nominal): where the criterion
   /// is evaluated.
   std::vector<model::CoupledHorizontalModel> DesignPoints() const;
@@ -96,14 +96,17 @@ struct CoupledDesign {
   /// Worst case over the design points of the Cramér–Rao σ(θ_j) (θ's units), and of
   /// σ(θ_j)/|θ_j| at that point (NaN for a parameter whose nominal is 0: the biases).
   std::vector<double> worst_sigma, worst_relative_sigma;
-  double criterion = 0.0;  ///< worst-case φ_j
-  bool fits = false;       ///< every constraint holds at every check point
+  double criterion = 0.0;  ///< the robust aggregate of φ_j (maximin by default: the worst case)
+  /// Every constraint holds at every check point and probe, and the trial determines every
+  /// parameter it covers.
+  bool fits = false;
   std::vector<std::string> reasons;  ///< why it does not fit, with figures
   std::vector<std::string> notes;    ///< the assumptions behind the box
   SolverSummary solver;
 };
 
 /// The best combined sine design of `options.mode` for `vehicle` in `pool` (see above).
+/// InputError when the vehicle has no mapping of a DOF the mode moves or no horizontal sensor.
 CoupledDesign PlanCoupledDesign(const model::Vehicle& vehicle, const model::Pool& pool,
                                 const CoupledDesignOptions& options);
 
