@@ -12,7 +12,11 @@
 
 #include "command.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/io/coupled_design_json.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/io/json_value.h"
+#include "uuvplan/model/coupled_virtual_trial.h"
+#include "uuvplan/model/util/seed.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/io/virtual_campaign.h"
 #include "uuvplan/model/campaign_builder.h"
@@ -190,6 +194,55 @@ nlohmann::json SimulationJson(const model::Campaign& campaign,
           {"pool_time", totals.clock}};
 }
 
+// A coupled schedule (`schedule --model coupled --json`): its combined trial flown by the
+// coupled virtual pool (model/coupled_virtual_trial.h, seed StreamSeed(seed, 0) as trial 0 of a
+// campaign), written as a one-trial campaign listed under its first DOF, as `identify --model
+// coupled` reads it.
+int RunCoupledSimulate(const SimulateOptions& o, const model::Truth& truth,
+                       const nlohmann::json& root) {
+  const model::CoupledTrialDesign trial = io::CoupledTrialOfJson(root, o.plan);
+  for (const model::TrialDesign& in : trial.inputs) {
+    const int m = truth.vehicle.MappingIndex(in.mapping);
+    if (m < 0 || truth.vehicle.mappings[m].dof != in.dof) {
+      throw InputError(o.plan + ": trial.inputs", "mapping '" + in.mapping + "' is not a " +
+                                                      std::string(model::DofName(in.dof)) +
+                                                      " mapping of the truth's vehicle (" +
+                                                      MappingNames(truth.vehicle, in.dof) + ")");
+    }
+  }
+  model::VirtualPoolOptions pool;
+  pool.seed = model::StreamSeed(o.campaign.seed, 0);
+  pool.command_rate_hz = o.campaign.command_rate_hz;
+  model::Campaign campaign;
+  campaign.vehicle = truth.vehicle;
+  model::TrialEntry e;
+  e.file = "trials/" + trial.id + ".csv";
+  e.dof = trial.inputs.front().dof;
+  e.mapping = trial.inputs.front().mapping;
+  e.start = 0.0;
+  e.has_start = true;
+  e.log = model::RunCoupledVirtualTrial(truth, trial, pool);
+  const std::size_t rows = e.log.t.size();
+  campaign.trials.push_back(std::move(e));
+  io::WriteCampaign(o.out, std::move(campaign), truth.vehicle,
+                    {"uuvplan virtual pool: truth vehicle '" + truth.vehicle.name +
+                     "', combined trial '" + trial.id + "', seed " + std::to_string(o.campaign.seed)});
+  const std::string campaign_path = (fs::path(o.out) / "campaign.yaml").string();
+  std::ostream& out = ReportStream(o.json);
+  out << "Simulated the combined " << model::kCombinedModeNames.Name(trial.mode) << " trial '"
+      << trial.id << "' of plan " << o.plan << " on the virtual '" << truth.vehicle.name
+      << "' of " << o.truth << " (coupled horizontal model, seed 003)\n(seed " << o.campaign.seed
+      << ", RK4 step " << truth.integration_step_s << " s): " << trial.duration << " s, " << rows
+      << " rows\nCampaign: " << campaign_path << "  (identify it with --model coupled)\n";
+  if (!o.json.empty()) {
+    WriteJson(o.json, {{"campaign", campaign_path}, {"seed", o.campaign.seed},
+                       {"step", truth.integration_step_s}, {"model", "coupled-horizontal"},
+                       {"trials", {{{"id", trial.id}, {"mode", std::string(model::kCombinedModeNames.Name(trial.mode))},
+                                    {"duration", trial.duration}, {"rows", rows}}}}});
+  }
+  return kExitOk;
+}
+
 int RunSimulate(const SimulateOptions& options) {
   SimulateOptions o = options;
   o.out = DirectoryName(o.out);
@@ -199,9 +252,12 @@ int RunSimulate(const SimulateOptions& options) {
   }
   CheckNewOrEmpty(o.out);
   model::Truth truth = io::ReadTruth(o.truth);
+  if (!std::isnan(o.step_s)) truth.integration_step_s = o.step_s;
+  if (const nlohmann::json root = io::LoadJson(o.plan); io::IsCoupledScheduleJson(root)) {
+    return RunCoupledSimulate(o, truth, root);
+  }
   const planner::Schedule plan = io::ReadScheduleJson(o.plan);
   CheckPlanAgainstTruth(plan, truth, o.plan, o.truth);
-  if (!std::isnan(o.step_s)) truth.integration_step_s = o.step_s;
 
   std::vector<model::TrialDesign> designs;
   for (const auto& t : plan.trials) designs.push_back(t.design);
@@ -230,7 +286,8 @@ int RunSimulate(const SimulateOptions& options) {
 void BindSimulate(CLI::App* sub, SimulateOptions* o) {
   sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")->required();
   sub->add_option("--plan", o->plan,
-                  "plan JSON: a `schedule --json` result, or a `next --json` result (its trial)")
+                  "plan JSON: a `schedule --json` result (also `--model coupled`), or a `next "
+                  "--json` result (its trial)")
       ->required();
   sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
       ->required();

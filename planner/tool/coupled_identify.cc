@@ -20,7 +20,7 @@ int RunCoupledIdentify(const model::Campaign& campaign, const std::string& campa
       ident::CoupledOneStepLeastSquares(logs, ident::CoupledLsOptions{});
   std::ostream& out = ReportStream(json_path);
   out << "Identification of " << campaign_path << " (vehicle '" << campaign.vehicle.name << "', "
-      << logs.size() << " combined-mode trials; coupled horizontal model, seed 003; one-step "
+      << logs.size() << " combined-mode trial(s); coupled horizontal model, seed 003; one-step "
       << (r.instrumental ? "instrumental-variable" : "least-squares") << " estimate)\n\n";
   if (r.ok() || r.status == ident::CoupledStatus::kNonPhysical) {
     TextTable table({"DOF", "parameter", "value", "σ", "state"});

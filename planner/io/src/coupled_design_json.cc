@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "uuvplan/io/json_value.h"
+#include "uuvplan/model/input_error.h"
+
 namespace uuvplan::io {
 namespace {
 
@@ -62,6 +65,52 @@ nlohmann::json CoupledDesignJson(const planner::CoupledDesign& d, const model::V
   j["criterion"] = d.criterion;
   j["solver"] = d.solver.BriefReport();
   return j;
+}
+
+bool IsCoupledScheduleJson(const nlohmann::json& root) {
+  return root.is_object() && root.contains("model") && root.at("model") == "coupled-horizontal";
+}
+
+namespace {
+
+model::TrialDesign InputOfJson(const JsonValue& v) {
+  model::TrialDesign in;
+  const JsonValue dof = v.Required("dof");
+  const auto parsed = model::ParseDof(String(dof, "surge, sway or yaw"));
+  if (!parsed || model::HorizontalIndex(*parsed) < 0) dof.Expected("surge, sway or yaw");
+  in.dof = *parsed;
+  in.kind = model::TrialKind::kSine;
+  if (const JsonValue kind = v.Required("kind"); String(kind, "\"sine\"") != "sine") {
+    kind.Expected("\"sine\" (the only kind of a combined design)");
+  }
+  in.mapping = String(v.Required("mapping"), "a mapping name");
+  in.offset = Number(v.Required("offset"), "a number (N or N·m)");
+  in.amplitude = NonNegativeNumber(v.Required("amplitude"), "a number >= 0 (N or N·m)");
+  in.omega = PositiveNumber(v.Required("omega"), "rad/s");
+  return in;
+}
+
+}  // namespace
+
+model::CoupledTrialDesign CoupledTrialOfJson(const nlohmann::json& root, const std::string& path) {
+  const JsonValue trial = JsonValue(root, path, "").Required("trial");
+  model::CoupledTrialDesign d;
+  d.id = String(trial.Required("id"), "a trial id");
+  const JsonValue mode = trial.Required("mode");
+  const auto parsed = model::kCombinedModeNames.Parse(String(mode, "a combined mode"));
+  if (!parsed) mode.Expected("surge+yaw, sway+yaw or surge+sway+yaw");
+  d.mode = *parsed;
+  d.duration = PositiveNumber(trial.Required("duration"), "s");
+  const JsonValue inputs = trial.Required("inputs");
+  if (!inputs.json().is_array()) inputs.Expected("an array of inputs, one per DOF the mode moves");
+  for (std::size_t i = 0; i < inputs.json().size(); ++i) {
+    d.inputs.push_back(InputOfJson(inputs.Item(i)));
+    d.inputs.back().duration = d.duration;
+  }
+  if (const std::string error = d.Check(); !error.empty()) {
+    inputs.Expected("one input per DOF the mode moves", error);
+  }
+  return d;
 }
 
 }  // namespace uuvplan::io

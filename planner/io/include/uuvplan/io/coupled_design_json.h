@@ -17,4 +17,12 @@ namespace uuvplan::io {
 nlohmann::json CoupledDesignJson(const planner::CoupledDesign& design,
                                  const model::Vehicle& vehicle, const model::Pool& pool);
 
+/// Whether the JSON file's top level is a coupled schedule ({"model": "coupled-horizontal"}).
+bool IsCoupledScheduleJson(const nlohmann::json& root);
+
+/// The trial of a coupled schedule JSON (its "trial": id, mode, duration, inputs); InputError
+/// naming the file and key when a value is missing or wrong, or the inputs do not match the
+/// mode.
+model::CoupledTrialDesign CoupledTrialOfJson(const nlohmann::json& root, const std::string& path);
+
 }  // namespace uuvplan::io
