@@ -2,7 +2,7 @@
 # The sanitizer stage of CI (issue #15): builds uuvplan and the test programs with clang 14,
 # AddressSanitizer and UBSan (float-cast-overflow too; any finding aborts) in build-fuzz/ (the
 # fuzz targets share it), runs the io-layer tests there, then FUZZ_SECONDS (default 60; CI's
-# test.sh gives 45) of each fuzz target (scripts/fuzz.sh). Which tests, and why not all:
+# test.sh gives 20) of each fuzz target (scripts/fuzz.sh). Which tests, and why not all:
 # docs/validation.md, "Sanitizers".
 # Usage: scripts/sanitize.sh [--configure-only] [FUZZ_SECONDS]
 set -euo pipefail
