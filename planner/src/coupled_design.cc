@@ -164,6 +164,18 @@ model::CoupledTrialDesign TrialOf(const double* x, const std::vector<int>& moved
   return trial;
 }
 
+// The thrusters with a non-zero share in a mapping the trial uses (the others are idle).
+std::vector<bool> WorkingThrusters(const model::Vehicle& vehicle,
+                                   const model::CoupledTrialDesign& trial) {
+  std::vector<bool> works(vehicle.thrusters.size(), false);
+  for (const model::TrialDesign& in : trial.inputs) {
+    for (const auto& [ti, share] : vehicle.mappings[vehicle.MappingIndex(in.mapping)].shares) {
+      works[ti] = works[ti] || share != 0.0;
+    }
+  }
+  return works;
+}
+
 // Thruster side of the envelope: the sign-kept margin over min_thrust and the load, from the
 // nominal force profile (the forces do not depend on the vehicle's parameters).
 void ThrustEnvelope(const model::Vehicle& vehicle, const model::CoupledTrialDesign& trial,
@@ -171,12 +183,7 @@ void ThrustEnvelope(const model::Vehicle& vehicle, const model::CoupledTrialDesi
   const std::size_t n = vehicle.thrusters.size();
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> lo(n, inf), hi(n, -inf);
-  std::vector<bool> works(n, false);
-  for (const model::TrialDesign& in : trial.inputs) {
-    for (const auto& [ti, share] : vehicle.mappings[vehicle.MappingIndex(in.mapping)].shares) {
-      works[ti] = works[ti] || share != 0.0;
-    }
-  }
+  const std::vector<bool> works = WorkingThrusters(vehicle, trial);
   e->thrust_margin = std::numeric_limits<double>::infinity();
   e->thrust_load = 0.0;
   e->closed_water_force = 0.0;
@@ -215,10 +222,9 @@ void ThrustBound(const model::Vehicle& vehicle, const model::CoupledTrialDesign&
                  CoupledEnvelope* e) {
   const std::size_t n = vehicle.thrusters.size();
   std::vector<double> c(n, 0.0), w(n, 0.0);
-  std::vector<bool> works(n, false);
+  const std::vector<bool> works = WorkingThrusters(vehicle, trial);
   for (const model::TrialDesign& in : trial.inputs) {
     for (const auto& [ti, share] : vehicle.mappings[vehicle.MappingIndex(in.mapping)].shares) {
-      works[ti] = works[ti] || share != 0.0;
       c[ti] += share * in.offset;
       w[ti] += std::abs(share * in.amplitude);
     }
@@ -257,13 +263,11 @@ CoupledDesignOptions::CoupledDesignOptions() {
 }
 
 int CombinedMappingOf(const model::Vehicle& vehicle, model::Dof dof) {
-  int first = -1;
-  for (std::size_t m = 0; m < vehicle.mappings.size(); ++m) {
-    if (vehicle.mappings[m].dof != dof) continue;
-    if (vehicle.mappings[m].open_water == model::OpenWater::kBoth) return static_cast<int>(m);
-    if (first < 0) first = static_cast<int>(m);
+  const std::vector<int> of_dof = vehicle.MappingsOf(dof);
+  for (int m : of_dof) {
+    if (vehicle.mappings[m].open_water == model::OpenWater::kBoth) return m;
   }
-  return first;
+  return of_dof.empty() ? -1 : of_dof.front();
 }
 
 std::vector<double> ThrusterForces(const model::Vehicle& vehicle,
