@@ -205,15 +205,20 @@ Signal Clean(Signal s, double declared, const char* what, const TrialDataOptions
   if (s.size() < 3) return Signal{};
   if (o.remove_outliers) {
     // Command steps (and the start, where the trial's force is switched on) put a kink in
-    // the motion that no local quadratic predicts: those samples are not tested.
-    // Positions are smooth through such kinks (the acceleration jumps, the position does
-    // not): only velocities are protected.
-    std::vector<double> kinks = d->force_jumps;
-    kinks.push_back(0.0);
+    // the motion: predictions do not reach across them, and velocities, whose slope jumps
+    // there (a lagged thruster rounds the kink over its lag), are not tested next to them.
+    CommandSteps steps{d->force_jumps, 0.0};
+    steps.t.push_back(0.0);
+    std::sort(steps.t.begin(), steps.t.end());
     const double h = (s.t.back() - s.t.front()) / std::max<std::size_t>(1, s.size() - 1);
-    const bool protect = std::string(what) == "velocity";
-    *out.outliers = DetectOutliers(s, o.outliers, declared, protect ? &kinks : nullptr,
-                                   (o.outliers.half_window + 1) * h);
+    OutlierOptions test = o.outliers;
+    if (std::string(what) == "velocity") {
+      steps.protect_radius = (o.outliers.half_window + 1) * h;
+      // Velocity sensors are noisy against their signal's curvature: the plain quadratic test
+      // (a DVL's held staircase, tartan-pool-2022, is otherwise read as motion: docs/identification.md).
+      test.truncation_allowance = 0.0;
+    }
+    *out.outliers = DetectOutliers(s, test, declared, &steps);
     if (!out.outliers->empty()) {
       d->notes.push_back(std::to_string(out.outliers->size()) + " " + what + " outlier(s) excluded (first at t = " +
                          Fmt(out.outliers->front().t + d->time_offset) + " s, residual " +

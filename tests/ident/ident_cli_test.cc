@@ -152,9 +152,10 @@ TEST(IdentifyCliTest, RealTartanFailuresAndOutliersAreSaidSo) {
   // must be flagged closed loop, identified by the closed-loop estimator (named in the JSON)
   // and its inertia reported unreliable. Yaw either fits with a free run better than ν ≡ 0 or
   // is failed with its reason (issue #14); sway ("not usable", the data's README) has no
-  // significant closed-loop estimate: failed, exit 1. 67 of 468 yaw position samples of
-  // chunk_12 (14%) are outliers: a warning naming the trial (468: its first two navigation
-  // rows precede its first force row and are not used).
+  // significant closed-loop estimate: failed, exit 1. 39 of 468 yaw position samples of
+  // chunk_12 (8.3%) are outliers: a warning naming the trial (468: its first two navigation
+  // rows precede its first force row and are not used). The quadratic test alone took 67
+  // (14%), among them turns on the irregular 5–8 Hz samples that a quartic follows.
   const RunResult r = RunUuvplan(
       "identify " + RealDataPath("tartan-pool-2022/campaign.yaml") + " --json -", false);
   const json j = json::parse(r.out);
@@ -177,7 +178,8 @@ TEST(IdentifyCliTest, RealTartanFailuresAndOutliersAreSaidSo) {
   EXPECT_EQ(j.at("dofs").at("sway").at("status"), "failed");
   EXPECT_EQ(r.status, 1) << r.out.substr(0, 300);
   EXPECT_THAT(yaw.at("warnings").dump(),
-              ::testing::HasSubstr("trials/chunk_12.csv: 67 of 468 position samples"));
+              ::testing::HasSubstr("trials/chunk_12.csv: 39 of 468 position samples"));
+
   const RunResult text = RunUuvplan("identify " + RealDataPath("tartan-pool-2022/campaign.yaml"));
   EXPECT_THAT(text.out, ::testing::HasSubstr("  FAILED: "));
   EXPECT_THAT(text.out, ::testing::HasSubstr("excluded as outliers, more than 5%"));
@@ -240,6 +242,7 @@ void CheckTable4(const model::Truth& truth, const Table4Row (&table)[N], const s
   const RunResult r = RunUuvplan("identify " + (dir / "campaign.yaml").string() +
                                  " --method rls --json " + (dir / "rls.json").string());
   ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, ::testing::Not(::testing::HasSubstr("excluded as outliers, more than 5%")));
   EXPECT_THAT(r.out, ::testing::HasSubstr("method rls"));
   EXPECT_THAT(r.out, ::testing::HasSubstr("RLS convergence (seed 004 eq. 15, forgetting λ = 0.99"));
   std::ifstream f(dir / "rls.json");
@@ -286,6 +289,15 @@ TEST(IdentifyCliTest, MethodRlsOnUrisReproducesSeed004Table4) {
     if (sensors.position) sensors.position->sigma /= 100.0;
   }
   CheckTable4(truth, kUrisTable4Fine, "uris_rls_fine");
+  // A camera 10⁴ times finer (1 µm): the motion after each step is then far beyond what a
+  // local quadratic predicts within the noise; the outlier test allows for that truncation
+  // (outliers.h) instead of excluding 27–60% of every trial and failing pitch. The estimates
+  // stay within the fine camera's tolerances (the velocity filter's truncation, not the noise,
+  // limits them: yaw α −6.7e-4).
+  for (auto& [dof, sensors] : truth.vehicle.sensors) {
+    if (sensors.position) sensors.position->sigma /= 100.0;
+  }
+  CheckTable4(truth, kUrisTable4Fine, "uris_rls_finest");
 }
 
 TEST(IdentifyCliTest, MethodOptionsAreCheckedAndNamed) {
