@@ -1,6 +1,6 @@
 // `uuvplan identify CAMPAIGN [--json F] [--dof D]... [--steady TRIAL:T0:T1]... [--no-refine]
-// [--no-prune] [--closed-loop yes|no|auto] [--method M [--forgetting λ]] [--model dof|coupled]
-// [--accept-units]`:
+// [--no-prune] [--closed-loop yes|no|auto] [--method M [--forgetting λ]] [--sg-window N]
+// [--model dof|coupled] [--accept-units]`:
 // parameter estimates with standard deviations and the fit of the identified model
 // (ident/identify.h, docs/identification.md); --method runs one of the seeds' estimators alone.
 // Exit status 0 when every DOF was identified, 1 when some DOF failed (its FAILED line says
@@ -92,6 +92,7 @@ void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
   if (co.closed_loop != kClosedLoopNames.Name(chain.closed_loop)) given.push_back("--closed-loop");
   if (co.method.method != ident::MethodName(chain.method)) given.push_back("--method");
   if (co.method.forgetting_given) given.push_back("--forgetting");
+  if (co.identify.data.sg_window != chain.data.sg_window) given.push_back("--sg-window");
   if (!given.empty()) {
     throw InputError("--model coupled", "no " + model::Join(given) +
                                             ": the coupled model is fitted by its own estimator "
@@ -100,8 +101,21 @@ void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
   }
 }
 
+// --sg-window: the seeds' filter is 4th order, so an odd window of at least order + 2 points.
+void CheckSgWindow(const ident::TrialDataOptions& data) {
+  const int w = data.sg_window;
+  if (w != 0 && (w % 2 == 0 || w < data.sg_order + 2)) {
+    throw InputError("--sg-window " + std::to_string(w),
+                     "expected an odd number of points, at least " +
+                         std::to_string(data.sg_order + 3 - data.sg_order % 2) +
+                         " (the filter fits a polynomial of order " +
+                         std::to_string(data.sg_order) + ")");
+  }
+}
+
 int RunIdentify(const IdentifyCommandOptions& co) {
   if (co.model_kind == "coupled") RefuseChainOptionsWithCoupled(co);
+  CheckSgWindow(co.identify.data);
   model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
   if (co.model_kind == "coupled") return RunCoupledIdentify(campaign, co.campaign, co.json);
   ident::IdentifyOptions o = co.identify;
@@ -143,6 +157,10 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
                   "whether the logs were recorded in closed loop: auto (detect), yes, no")
       ->capture_default_str();
   AddMethodOptions(sub, &o->method);
+  sub->add_option("--sg-window", o->identify.data.sg_window,
+                  "points of the Savitzky-Golay velocity filter, odd (default: the seeds' "
+                  "21-41 for the sampling rate, fewer for fast inputs; a precise sensor on fast "
+                  "transients wants fewer, docs/identification.md)");
   sub->add_option("--model", o->model_kind,
                   "dof (a model per DOF) or coupled (seed 003's surge-sway-yaw model from "
                   "combined-mode trials, docs/identification.md)")
