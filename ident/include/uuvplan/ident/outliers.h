@@ -1,10 +1,13 @@
 // Outliers (sonar multipath, seed 000 Fig. 14) and gaps (drop-outs, seed 000 Fig. 14 "missing
-// sonar measurements") in a sampled signal. Each sample is predicted by local polynomials of degree
-// 2 and 4 fitted to its neighbours (itself left out) and between the same command steps; a
-// sample whose smaller prediction residual exceeds `threshold` robust standard deviations
-// (1.4826·MAD of all residuals) is an outlier: a spike shows in both residuals, the
-// truncation error of a quadratic on fast, precisely measured motion only in one. Two passes, so that
-// an outlier does not hide its neighbour. Excluded samples are reported, never dropped silently.
+// sonar measurements") in a sampled signal. Each sample is predicted by a local quadratic fitted
+// to its neighbours (itself left out) between the same command steps; a sample whose residual
+// exceeds `threshold` robust standard deviations (1.4826·MAD of all residuals, at least
+// `noise_floor` known σ) by more than the allowed truncation is an outlier. The truncation is
+// |quadratic − quartic| through the same neighbours (and through them without the worst one)
+// beyond that limit: neither prediction sees the sample, so a spike shows, while fast motion
+// measured by a precise sensor is followed by the quartic. The neighbourhoods of flagged
+// samples are re-tested, so an outlier does not hide its neighbour. Excluded samples are
+// reported, never dropped silently.
 #pragma once
 
 #include <string>
@@ -19,10 +22,10 @@ struct OutlierOptions {
   double threshold = 6.0;  ///< robust standard deviations
   /// Residuals smaller than this many known noise σ are never outliers (0: no floor).
   double noise_floor = 4.0;
-  /// Residuals within this many times the quadratic's truncation error (|quadratic − quartic|
-  /// predictions) are never outliers (0: the plain quadratic test). Positions of a precise
-  /// sensor need it: after a command step their truncation error exceeds the noise a
-  /// hundredfold, and a clean record of a 0.1 mm camera lost 30–60% of its samples.
+  /// A residual beyond the noise limit is allowed this many times the quadratic's truncation
+  /// error beyond that limit, (|quadratic − quartic| − limit)₊ (0: the plain quadratic test).
+  /// Positions of a precise sensor need it: after a command step their truncation error
+  /// exceeds the noise a hundredfold, and a 1 µm camera on URIS lost 27–60% of its samples.
   double truncation_allowance = 2.0;
   /// More than this fraction of a signal's samples excluded is itself a finding (a sensor
   /// fault, a unit or timing mistake, or motion the test takes for noise): reported as a
