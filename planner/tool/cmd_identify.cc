@@ -101,11 +101,11 @@ void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
   }
 }
 
-// --sg-window: the seeds' filter is 4th order, so an odd window of at least order + 2 points.
+// --sg-window, by the rule of TrialDataOptions::IsValid (the only one of its fields a user
+// sets here): an odd window of at least order + 2 points.
 void CheckSgWindow(const ident::TrialDataOptions& data) {
-  const int w = data.sg_window;
-  if (w != 0 && (w % 2 == 0 || w < data.sg_order + 2)) {
-    throw InputError("--sg-window " + std::to_string(w),
+  if (!data.IsValid(nullptr)) {
+    throw InputError("--sg-window " + std::to_string(data.sg_window),
                      "expected an odd number of points, at least " +
                          std::to_string(data.sg_order + 3 - data.sg_order % 2) +
                          " (the filter fits a polynomial of order " +
