@@ -278,18 +278,47 @@ void ReadMeasurements(const model::TrialLog& log, const model::Vehicle& vehicle,
   }
 }
 
+// Samples in the longest stretch of `t` without a gap (the filter does not cross gaps).
+int LongestRun(const std::vector<double>& t, const std::vector<Gap>& gaps) {
+  std::ptrdiff_t longest = 0;
+  auto begin = t.begin();
+  for (const Gap& g : gaps) {  // in time order (FindGaps)
+    const auto next = std::lower_bound(begin, t.end(), g.t1);
+    longest = std::max(longest, next - begin);
+    begin = next;
+  }
+  return static_cast<int>(std::max(longest, t.end() - begin));
+}
+
+// The filter's window: the option's, else the rate's (SavitzkyGolayWindow) shortened to the
+// longest stretch without a gap where that holds the filter's order + 2 points. A window set
+// longer than every stretch would leave every velocity NaN: an input error. (A stretch too
+// short for any window leaves the fits without rows: a failed fit that says so.)
+int FilterWindow(const TrialDataOptions& o, const Signal& main, const std::string& what,
+                 double time_scale, const std::string& where, const TrialData& d) {
+  const int run = LongestRun(main.t, d.gaps);
+  const int fits = run % 2 == 1 ? run : run - 1;  // the longest odd window the data holds
+  if (o.sg_window > run) {
+    throw model::InputError(where, "velocity filter window (--sg-window) of " +
+                                       std::to_string(o.sg_window) +
+                                       " points, but the longest stretch of " + what +
+                                       " samples without a gap has " + std::to_string(run) +
+                                       ": expected at most " + std::to_string(fits));
+  }
+  if (o.sg_window > 0) return o.sg_window;
+  const int rate_window = SavitzkyGolayWindow(MedianRate(main), time_scale);
+  return fits >= o.sg_order + 2 ? std::min(rate_window, fits) : rate_window;
+}
+
 // Velocity estimate (seed 000 §IV-D: Savitzky–Golay, 4th order, 21–41 points): the smoothed
 // measured velocity, or the derivative of the smoothed position.
-void EstimateVelocity(const TrialDataOptions& o, TrialData* d) {
+void EstimateVelocity(const TrialDataOptions& o, const std::string& where, TrialData* d) {
   const double time_scale = InputTimeScale(d->force_t, d->force);
-  auto window = [&](const Signal& s) {
-    return o.sg_window > 0 ? o.sg_window : SavitzkyGolayWindow(MedianRate(s), time_scale);
-  };
   SavitzkyGolayOptions sg;
   sg.order = o.sg_order;
   sg.gap_factor = o.gap_factor;
   if (d->has_velocity()) {
-    sg.window = window(d->velocity);
+    sg.window = FilterWindow(o, d->velocity, "velocity", time_scale, where, *d);
     d->velocity_estimate = SavitzkyGolay(d->velocity, sg);
     // The smoothed velocity is the estimate (derivative = acceleration, unused here).
     d->velocity_estimate.second_derivative = {};
@@ -297,13 +326,14 @@ void EstimateVelocity(const TrialDataOptions& o, TrialData* d) {
     d->initial_velocity = d->velocity_estimate.value.front();
     if (d->has_position()) {
       SavitzkyGolayOptions sp = sg;
-      sp.window = window(d->position);
+      sp.window = o.sg_window > 0 ? o.sg_window
+                                  : SavitzkyGolayWindow(MedianRate(d->position), time_scale);
       d->initial_position = SavitzkyGolay(d->position, sp).value.front();
     } else {
       d->initial_position = std::nan("");
     }
   } else {
-    sg.window = window(d->position);
+    sg.window = FilterWindow(o, d->position, "position", time_scale, where, *d);
     SmoothedSignal s = SavitzkyGolay(d->position, sg);
     d->initial_position = s.value.front();
     d->initial_velocity = std::isfinite(s.derivative.front()) ? s.derivative.front() : 0.0;
@@ -369,7 +399,7 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
   d.duration = log.t.back() - d.time_offset;
   ReadForce(e, vehicle, where, &d);
   ReadMeasurements(log, vehicle, where, o, &d);
-  EstimateVelocity(o, &d);
+  EstimateVelocity(o, where, &d);
   ReadAuxVelocities(log, &d);
   for (const std::string& n : log.notes) d.notes.push_back(n);
   return d;

@@ -63,14 +63,13 @@ void CheckPlanMappings(const planner::Schedule& plan, const model::Vehicle& vehi
 TrialsToCheck ChooseTrials(const CheckPoolCliOptions& o, const model::Vehicle& vehicle,
                            const model::Pool& pool, const planner::ScheduleOptions& so) {
   TrialsToCheck t;
-  t.own = planner::PlanSchedule(vehicle, pool, so);
   t.plan_given = !o.plan.empty();
-  if (t.plan_given) {
+  if (t.plan_given) {  // read and checked before planning: a bad file fails at once
     t.plan = io::ReadScheduleJson(o.plan);
     CheckPlanMappings(t.plan, vehicle, o.plan);
-  } else {
-    t.plan = t.own.schedule;
   }
+  t.own = planner::PlanSchedule(vehicle, pool, so);
+  if (!t.plan_given) t.plan = t.own.schedule;
   return t;
 }
 

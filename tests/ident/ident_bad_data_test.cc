@@ -10,6 +10,7 @@
 #include "ident_cases.h"
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/monte_carlo.h"
+#include "uuvplan/ident/trial_data.h"
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::ident {
@@ -121,6 +122,48 @@ TEST(BadDataTest, InvalidOptionsAreRefusedWithTheViolatedConstraint) {
   o = IdentifyOptions{};
   o.output_error.step_s = -1;
   EXPECT_NE(ErrorOf(c, o).find("step_s > 0"), std::string::npos);
+}
+
+// A log stopped early: its rows up to the `samples`-th surge position sample.
+model::TrialLog FirstPositions(model::TrialLog log, int samples) {
+  const std::vector<double>& pos = log.position[model::Index(Dof::kSurge)];
+  std::size_t rows = 0;
+  for (int seen = 0; rows < pos.size() && seen < samples; ++rows) seen += std::isfinite(pos[rows]);
+  auto keep = [rows](auto& v) { if (v.size() > rows) v.resize(rows); };
+  keep(log.t);
+  keep(log.mapping);
+  for (int i = 0; i < model::kNumDofs; ++i) {
+    keep(log.force[i]);
+    keep(log.position[i]);
+    keep(log.velocity[i]);
+  }
+  return log;
+}
+
+TEST(BadDataTest, AFilterWindowLongerThanTheRecordIsAnInputErrorAndTheDefaultOneShortens) {
+  // Savitzky–Golay leaves every sample NaN where no stretch of the record holds its window:
+  // a window set longer than the record is refused naming the file and the longest allowed;
+  // the default window (21–41 points, seed 000 §IV-D) shortens to a short record.
+  const model::Truth truth = testing::CaseTruth("romeo");
+  model::Campaign c = VirtualCampaign(truth, {testing::RomeoSurgeDesigns()[3]}, 3);
+  c.trials[0].path = "trials/short.csv";
+  IdentifyOptions o;
+  o.data.sg_window = 100001;
+  const std::string too_long = ErrorOf(c, o);
+  EXPECT_NE(too_long.find("trials/short.csv"), std::string::npos) << too_long;
+  EXPECT_NE(too_long.find("window (--sg-window) of 100001 points"), std::string::npos) << too_long;
+  EXPECT_NE(too_long.find("expected at most"), std::string::npos) << too_long;
+  o.data.sg_window = 21;
+  EXPECT_EQ(ErrorOf(c, o), "");
+
+  const TrialDataOptions defaults;
+  // 7 positions at one force: 21 points for the rate, 9 for the input's time scale, 7 for
+  // the record (and none before: every velocity NaN, a fit without rows).
+  c.trials[0].log = FirstPositions(c.trials[0].log, 7);
+  const TrialData d = PrepareTrial(c.trials[0], 0, c.vehicle, defaults);
+  EXPECT_EQ(d.sg_window, 7);
+  const auto& v = d.velocity_estimate.value;
+  EXPECT_TRUE(std::any_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }));
 }
 
 TEST(BadDataTest, GapsAreFoundAndReported) {
