@@ -193,6 +193,20 @@ void UnwrapHeading(Signal* pos, TrialData* d) {
 }
 
 // One measurement with its outliers excluded (reported in `outliers`), and its noise σ:
+// The share of a record's samples in motion (not exactly 0) that repeat the previous value
+// exactly: a sensor logged faster than it updates. tartan-pool-2022's DVL: 22–78% per chunk;
+// its gyro and bluerov-yaw-2016's: 0% and 2–10% (float32 rates); a simulated sensor: 0%.
+double HeldFraction(const Signal& s) {
+  std::size_t moving = 0, repeats = 0;
+  for (std::size_t i = 1; i < s.size(); ++i) {
+    if (s.y[i] == 0.0) continue;
+    ++moving;
+    repeats += s.y[i] == s.y[i - 1];
+  }
+  return moving == 0 ? 0.0 : static_cast<double>(repeats) / static_cast<double>(moving);
+}
+constexpr double kHeldRecord = 0.15;  // between the gyros' ≤ 10% and the DVL's ≥ 22%
+
 // `declared` when positive, else estimated from the differences (`estimated`).
 struct CleanOutput {
   std::vector<Outlier>* outliers;
@@ -214,9 +228,10 @@ Signal Clean(Signal s, double declared, const char* what, const TrialDataOptions
     OutlierOptions test = o.outliers;
     if (std::string(what) == "velocity") {
       steps.protect_radius = (o.outliers.half_window + 1) * h;
-      // Velocity sensors are noisy against their signal's curvature: the plain quadratic test
-      // (a DVL's held staircase, tartan-pool-2022, is otherwise read as motion: docs/identification.md).
-      test.truncation_allowance = 0.0;
+      // A held record is a staircase whose edges no polynomial predicts: the plain quadratic
+      // test, which excludes them (tartan's DVL; docs/identification.md §7). A smooth record
+      // keeps the truncation allowance, as positions do.
+      if (HeldFraction(s) > kHeldRecord) test.truncation_allowance = 0.0;
     }
     *out.outliers = DetectOutliers(s, test, declared, &steps);
     if (!out.outliers->empty()) {
