@@ -1,4 +1,4 @@
-// `uuvplan diagnose CAMPAIGN [--json F] [--dof D]... [--write-vehicle OUT.yaml]`: what the standard model's simulation
+// `uuvplan diagnose CAMPAIGN [--json F] [--dof D]... [--write-vehicle OUT.yaml] [--sg-window N]`: what the standard model's simulation
 // gets wrong, the physical effect that causes it, the extended model and its gain
 // (ident/diagnosis.h, docs/diagnosis.md). Exit 0 (findings are results, not errors), 1 when a
 // DOF could not be diagnosed (its standard model's identification or fit failed: the report
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "command.h"
+#include "filter_window_flag.h"
 #include "uuvplan/model/effects.h"
 #include "diagnosis_report.h"
 #include "uuvplan/io/diagnosis_json.h"
@@ -64,6 +65,7 @@ bool WriteExtendedVehicle(const std::string& path, const std::string& campaign_p
 }
 
 int RunDiagnose(const DiagnoseCommandOptions& co) {
+  CheckFilterWindow(co.diagnose.identify.data);
   const model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
   ident::DiagnoseOptions o = co.diagnose;
   o.dofs = ParseDofFlags(co.dofs);
@@ -89,6 +91,7 @@ void BindDiagnose(CLI::App* sub, DiagnoseCommandOptions* o) {
   sub->add_option("--write-vehicle", o->write_vehicle,
                   "write the extended model (every parameter with sigma, the effects found) "
                   "into this vehicle file, for `uuvplan score` and every command");
+  AddFilterWindowOption(sub, &o->diagnose.identify.data);
   sub->add_option("--max-effects", o->diagnose.max_effects, "effects added per DOF at most")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "command.h"
+#include "filter_window_flag.h"
 #include "coupled_identify.h"
 #include "identify_table.h"
 #include "method_flags.h"
@@ -101,21 +102,9 @@ void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
   }
 }
 
-// --sg-window, by the rule of TrialDataOptions::IsValid (the only one of its fields a user
-// sets here): an odd window of at least order + 2 points.
-void CheckSgWindow(const ident::TrialDataOptions& data) {
-  if (!data.IsValid(nullptr)) {
-    throw InputError("--sg-window " + std::to_string(data.sg_window),
-                     "expected an odd number of points, at least " +
-                         std::to_string(data.sg_order + 3 - data.sg_order % 2) +
-                         " (the filter fits a polynomial of order " +
-                         std::to_string(data.sg_order) + ")");
-  }
-}
-
 int RunIdentify(const IdentifyCommandOptions& co) {
   if (co.model_kind == "coupled") RefuseChainOptionsWithCoupled(co);
-  CheckSgWindow(co.identify.data);
+  CheckFilterWindow(co.identify.data);
   model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
   if (co.model_kind == "coupled") return RunCoupledIdentify(campaign, co.campaign, co.json);
   ident::IdentifyOptions o = co.identify;
@@ -157,10 +146,7 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
                   "whether the logs were recorded in closed loop: auto (detect), yes, no")
       ->capture_default_str();
   AddMethodOptions(sub, &o->method);
-  sub->add_option("--sg-window", o->identify.data.sg_window,
-                  "points of the Savitzky-Golay velocity filter, odd (default: the seeds' "
-                  "21-41 for the sampling rate, fewer for fast inputs; a precise sensor on fast "
-                  "transients wants fewer, docs/identification.md)");
+  AddFilterWindowOption(sub, &o->identify.data);
   sub->add_option("--model", o->model_kind,
                   "dof (a model per DOF) or coupled (seed 003's surge-sway-yaw model from "
                   "combined-mode trials, docs/identification.md)")

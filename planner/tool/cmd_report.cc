@@ -1,5 +1,5 @@
 // `uuvplan report INPUT -o DIR [--vehicle V] [--pool P] [--loop LOOP.json] [--no-diagnosis
-// [--method M [--forgetting λ]]] [--accept-units]`: one self-contained HTML file (figures
+// [--method M [--forgetting λ]]] [--sg-window N] [--accept-units]`: one self-contained HTML file (figures
 // embedded, no network) and the figures as PNG and SVG files (planner/report, docs/report.md).
 // INPUT is a schedule (`schedule --json`, with --vehicle and --pool), a loop's JSON (`loop
 // --json`), or a campaign (identified and diagnosed here; with --method rls also the RLS
@@ -11,6 +11,7 @@
 #include <string>
 
 #include "command.h"
+#include "filter_window_flag.h"
 #include "method_flags.h"
 #include "uuvplan/ident/diagnosis.h"
 #include "uuvplan/ident/score.h"
@@ -37,6 +38,7 @@ struct ReportCommandOptions {
   std::string loop;
   bool no_diagnosis = false;
   MethodFlags method;  ///< --method, --forgetting (with --no-diagnosis)
+  ident::TrialDataOptions data;  ///< --sg-window (a campaign)
   bool accept_units = false;
 };
 
@@ -96,6 +98,7 @@ void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
   if (!in->vehicle) in->vehicle = campaign.vehicle, in->vehicle_source = campaign.path;
   if (!in->pool && campaign.pool) in->pool = *campaign.pool, in->pool_source = campaign.path;
   ident::IdentifyOptions identify;
+  identify.data = o.data;
   identify.validation.curve_points = kCurvePoints;
   ApplyMethodFlags(o.method, &identify);
   if (identify.method != ident::Method::kChain && !o.no_diagnosis) {
@@ -115,6 +118,7 @@ void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
 }
 
 int RunReport(const ReportCommandOptions& o) {
+  CheckFilterWindow(o.data);
   io::CheckNewDirectory(o.out, "-o");
   report::ReportInputs in;
   in.source = o.input;
@@ -154,6 +158,7 @@ void BindReport(CLI::App* sub, ReportCommandOptions* o) {
   sub->add_option("--loop", o->loop, "also report this loop's history (loop --json)");
   sub->add_flag("--no-diagnosis", o->no_diagnosis, "identify the campaign without diagnosing it");
   AddMethodOptions(sub, &o->method);
+  AddFilterWindowOption(sub, &o->data);
   AddAcceptUnitsFlag(sub, &o->accept_units);
 }
 

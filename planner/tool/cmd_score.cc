@@ -1,4 +1,4 @@
-// `uuvplan score VEHICLE CAMPAIGN [--json F] [--dof D]...`: the free-run error of each trial
+// `uuvplan score VEHICLE CAMPAIGN [--json F] [--dof D]... [--sg-window N]`: the free-run error of each trial
 // for the parameter set a vehicle file gives (dofs.<dof>.params and effects, as
 // `diagnose --write-vehicle` writes it, or a truth file), without fitting: two models of one
 // vehicle compared on the same data (ident/score.h, docs/cli.md). Exit 0; 1 when a DOF cannot
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "command.h"
+#include "filter_window_flag.h"
 #include "uuvplan/ident/score.h"
 #include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/io/io.h"
@@ -24,6 +25,7 @@ struct ScoreCommandOptions {
   std::string campaign;
   std::string json;
   std::vector<std::string> dofs;
+  ident::TrialDataOptions data;  ///< --sg-window
 };
 
 std::string Number(double x, const std::string& unit) {
@@ -55,9 +57,11 @@ void PrintScores(const ident::ScoreResult& r, const ScoreCommandOptions& co, std
 }
 
 int RunScore(const ScoreCommandOptions& co) {
+  CheckFilterWindow(co.data);
   const model::Truth given = io::ReadTruth(co.vehicle);
   const model::Campaign campaign = io::ReadCampaign(co.campaign);
   ident::ScoreOptions o;
+  o.data = co.data;
   o.dofs = ParseDofFlags(co.dofs);
   const ident::ScoreResult result = ident::ScoreCampaign(campaign, given, o);
   PrintScores(result, co, ReportStream(co.json));
@@ -76,6 +80,7 @@ void BindScore(CLI::App* sub, ScoreCommandOptions* o) {
       ->required();
   AddJsonOption(sub, &o->json, "also write the scores");
   sub->add_option("--dof", o->dofs, "score only this DOF (repeatable)");
+  AddFilterWindowOption(sub, &o->data);
 }
 
 const CommandRegistration kRegistration(MakeCommand<ScoreCommandOptions>(

@@ -13,6 +13,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -313,6 +314,46 @@ TEST(IdentifyCliTest, MethodRlsOnUrisReproducesSeed004Table4) {
     if (sensors.position) sensors.position->sigma /= 100.0;
   }
   CheckTable4(truth, kUrisTable4NoiseFree, "uris_rls_noise_free", " --sg-window 9");
+}
+
+// The line of `dof`'s parameter `name` in a printed estimate table ("  yaw  m  …"), or "".
+std::string EstimateLine(const std::string& out, const std::string& dof, const std::string& name) {
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string d, n;
+    if (words >> d >> n && d == dof && n == name) return line;
+  }
+  return "";
+}
+
+TEST(IdentifyCliTest, EveryCommandThatPreparesTrialsTakesTheSameFilterWindow) {
+  // One question, one answer: --sg-window sets the velocity filter of identify, diagnose,
+  // score and report alike, so diagnose's standard model is identify's (the same table line)
+  // for the same window, and a bad window is exit 2 from each.
+  const fs::path dir = TempDir("window");
+  model::VirtualCampaignOptions vo;
+  io::SimulateCampaign(testing::CaseTruth("uris"), {testing::UrisDesigns()[2]}, dir.string(), vo);
+  const std::string campaign = (dir / "campaign.yaml").string();
+  const std::string truth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/uris/truth.yaml";
+  for (const std::string& command : {"identify " + campaign, "diagnose " + campaign,
+                                     "score " + truth + " " + campaign,
+                                     "report " + campaign + " -o " + (dir / "report").string()}) {
+    const RunResult bad = RunUuvplan(command + " --sg-window 8");
+    EXPECT_EQ(bad.status, 2) << command << "\n" << bad.out;
+    EXPECT_THAT(bad.out, ::testing::HasSubstr("--sg-window 8: expected an odd number of points"));
+  }
+  EXPECT_FALSE(fs::exists(dir / "report"));
+  const RunResult identified = RunUuvplan("identify " + campaign + " --sg-window 9");
+  const RunResult diagnosed = RunUuvplan("diagnose " + campaign + " --sg-window 9");
+  const RunResult seeds_window = RunUuvplan("identify " + campaign);
+  ASSERT_EQ(identified.status, 0) << identified.out;
+  const std::string m9 = EstimateLine(identified.out, "yaw", "m");
+  ASSERT_NE(m9, "") << identified.out;
+  EXPECT_EQ(EstimateLine(diagnosed.out, "yaw", "m"), m9) << diagnosed.out;
+  EXPECT_NE(EstimateLine(seeds_window.out, "yaw", "m"), m9) << "the window changes the estimate";
+  const RunResult scored = RunUuvplan("score " + truth + " " + campaign + " --sg-window 9");
+  EXPECT_EQ(scored.status, 0) << scored.out;
 }
 
 TEST(IdentifyCliTest, MethodOptionsAreCheckedAndNamed) {
