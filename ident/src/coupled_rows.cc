@@ -81,8 +81,7 @@ std::string PrepareCoupledTrial(const model::TrialLog& log, int index,
     const double step = MedianStep(s.t, 0, s.size());
     SavitzkyGolayOptions sg;
     sg.order = options.sg_order;
-    sg.window = options.sg_window > 0 ? options.sg_window
-                                      : SavitzkyGolayWindow(1.0 / step, input_scale);
+    sg.window = ChosenWindow(options.sg_window, 1.0 / step, input_scale);
     out->velocity[i] = SavitzkyGolay(s, sg);
     out->window = std::max(out->window, sg.window);
     span = std::max(span, (sg.window - 1) * step);

@@ -192,7 +192,6 @@ void UnwrapHeading(Signal* pos, TrialData* d) {
   if (jumps > 0) d->notes.push_back("heading unwrapped (" + std::to_string(jumps) + " jumps of 2π)");
 }
 
-// One measurement with its outliers excluded (reported in `outliers`), and its noise σ:
 // The share of a record's samples in motion (not exactly 0) that repeat the previous value
 // exactly: a sensor logged faster than it updates. tartan-pool-2022's DVL: 22–78% per chunk;
 // its gyro and bluerov-yaw-2016's: 0% and 2–10% (float32 rates); a simulated sensor: 0%.
@@ -206,6 +205,8 @@ double HeldFraction(const Signal& s) {
   return moving == 0 ? 0.0 : static_cast<double>(repeats) / static_cast<double>(moving);
 }
 constexpr double kHeldRecord = 0.15;  // between the gyros' ≤ 10% and the DVL's ≥ 22%
+
+// One measurement with its outliers excluded (reported in `outliers`), and its noise σ:
 
 // `declared` when positive, else estimated from the differences (`estimated`).
 struct CleanOutput {
@@ -306,9 +307,12 @@ int LongestRun(const std::vector<double>& t, const std::vector<Gap>& gaps) {
 }
 
 // The filter's window: the option's, else the rate's (SavitzkyGolayWindow) shortened to the
-// longest stretch without a gap where that holds the filter's order + 2 points. A window set
-// longer than every stretch would leave every velocity NaN: an input error. (A stretch too
-// short for any window leaves the fits without rows: a failed fit that says so.)
+// longest stretch without a gap where that holds the filter's order + 2 points, so that the
+// window recorded (TrialData::sg_window, whose half span sets the rows the estimators keep)
+// is the one the filter used. A window set longer than every stretch cannot be honoured (the
+// filter would fit one polynomial to the whole stretch, and the estimators would drop every
+// row as too near its ends): an input error. (A stretch too short for any window leaves the
+// fits without rows: a failed fit that says so.)
 int FilterWindow(const TrialDataOptions& o, const Signal& main, const std::string& what,
                  double time_scale, const std::string& where, const TrialData& d) {
   const int run = LongestRun(main.t, d.gaps);
@@ -321,7 +325,7 @@ int FilterWindow(const TrialDataOptions& o, const Signal& main, const std::strin
                                        ": expected at most " + std::to_string(fits));
   }
   if (o.sg_window > 0) return o.sg_window;
-  const int rate_window = SavitzkyGolayWindow(MedianRate(main), time_scale);
+  const int rate_window = ChosenWindow(0, MedianRate(main), time_scale);
   return fits >= o.sg_order + 2 ? std::min(rate_window, fits) : rate_window;
 }
 
@@ -341,8 +345,7 @@ void EstimateVelocity(const TrialDataOptions& o, const std::string& where, Trial
     d->initial_velocity = d->velocity_estimate.value.front();
     if (d->has_position()) {
       SavitzkyGolayOptions sp = sg;
-      sp.window = o.sg_window > 0 ? o.sg_window
-                                  : SavitzkyGolayWindow(MedianRate(d->position), time_scale);
+      sp.window = ChosenWindow(o.sg_window, MedianRate(d->position), time_scale);
       d->initial_position = SavitzkyGolay(d->position, sp).value.front();
     } else {
       d->initial_position = std::nan("");

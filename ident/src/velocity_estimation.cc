@@ -232,6 +232,10 @@ int SavitzkyGolayWindow(double rate_hz, double input_time_scale_s) {
   return std::min(n, 41);
 }
 
+int ChosenWindow(int given, double rate_hz, double input_time_scale_s) {
+  return given > 0 ? given : SavitzkyGolayWindow(rate_hz, input_time_scale_s);
+}
+
 double InputTimeScale(const std::vector<double>& t, const std::vector<double>& f) {
   if (f.size() < 3) return 0.0;
   double lo = f[0], hi = f[0], mean = 0.0;

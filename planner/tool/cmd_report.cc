@@ -71,8 +71,10 @@ void AddSchedule(const ReportCommandOptions& o, report::ReportInputs* in) {
   in->schedule = io::ReadScheduleJson(o.input);
 }
 
-// The free runs of the standard and the extended model of each diagnosed DOF.
-void AddBeforeAfter(const model::Campaign& campaign, report::ReportInputs* in) {
+// The free runs of the standard and the extended model of each diagnosed DOF, on the trials
+// prepared as the diagnosis prepared them (`data`).
+void AddBeforeAfter(const model::Campaign& campaign, const ident::TrialDataOptions& data,
+                    report::ReportInputs* in) {
   for (const ident::DofIdentification& ext : in->diagnosis->extended) {
     const ident::DofIdentification* std_model = nullptr;
     for (const auto& s : in->diagnosis->standard) {
@@ -80,6 +82,7 @@ void AddBeforeAfter(const model::Campaign& campaign, report::ReportInputs* in) {
     }
     if (!std_model) continue;
     ident::ScoreOptions so;
+    so.data = data;
     so.dofs = {ext.dof};
     so.curve_points = kCurvePoints;
     report::BeforeAfter ba;
@@ -114,7 +117,7 @@ void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
   d.identify = identify;
   in->diagnosis = ident::Diagnose(campaign, d);
   in->identification = in->diagnosis->nominal;
-  AddBeforeAfter(campaign, in);
+  AddBeforeAfter(campaign, identify.data, in);
 }
 
 int RunReport(const ReportCommandOptions& o) {
@@ -123,6 +126,10 @@ int RunReport(const ReportCommandOptions& o) {
   report::ReportInputs in;
   in.source = o.input;
   AddVehicleAndPool(o, &in);
+  if (IsJsonFile(o.input) && o.data.sg_window > 0) {
+    throw InputError("--sg-window", "the velocity filter of a campaign's trials: a schedule or "
+                                    "a loop's JSON has no trials to filter; drop it");
+  }
   if (IsJsonFile(o.input) && io::IsLoopJson(o.input)) {
     in.title = "Loop report";
     in.loop = io::ReadLoopJson(o.input);

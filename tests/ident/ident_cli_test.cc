@@ -344,6 +344,12 @@ TEST(IdentifyCliTest, EveryCommandThatPreparesTrialsTakesTheSameFilterWindow) {
     EXPECT_THAT(bad.out, ::testing::HasSubstr("--sg-window 8: expected an odd number of points"));
   }
   EXPECT_FALSE(fs::exists(dir / "report"));
+  // A schedule has no trials to filter: refused, not ignored.
+  const RunResult schedule_report = RunUuvplan(
+      "report " + std::string(UUVPLAN_SOURCE_DIR) + "/tests/data/bad/cases/plan_good.json -o " +
+      (dir / "report").string() + " --sg-window 9");
+  EXPECT_EQ(schedule_report.status, 2) << schedule_report.out;
+  EXPECT_THAT(schedule_report.out, ::testing::HasSubstr("--sg-window: the velocity filter of a campaign"));
   const RunResult identified = RunUuvplan("identify " + campaign + " --sg-window 9");
   const RunResult diagnosed = RunUuvplan("diagnose " + campaign + " --sg-window 9");
   const RunResult seeds_window = RunUuvplan("identify " + campaign);
@@ -353,7 +359,9 @@ TEST(IdentifyCliTest, EveryCommandThatPreparesTrialsTakesTheSameFilterWindow) {
   EXPECT_EQ(EstimateLine(diagnosed.out, "yaw", "m"), m9) << diagnosed.out;
   EXPECT_NE(EstimateLine(seeds_window.out, "yaw", "m"), m9) << "the window changes the estimate";
   const RunResult scored = RunUuvplan("score " + truth + " " + campaign + " --sg-window 9");
+  const RunResult scored_seeds = RunUuvplan("score " + truth + " " + campaign);
   EXPECT_EQ(scored.status, 0) << scored.out;
+  EXPECT_NE(scored.out, scored_seeds.out) << "score's velocity estimate takes the window too";
 }
 
 TEST(IdentifyCliTest, MethodOptionsAreCheckedAndNamed) {

@@ -270,7 +270,7 @@ TEST(OutliersTest, APreciseRecordOfStepResponsesKeepsItsSamplesAndItsSpikes) {
 TEST(OutliersTest, APreciseGyroKeepsItsSamples) {
   // VSOR's yaw trials (seed 002 Table 4) with a gyro 10⁴ times finer than the case's
   // (1e-7 rad/s): the quadratic's truncation on the yaw rate's transients is far above the
-  // noise, and the plain test excluded 20–42% of such records. A record that is not held
+  // noise, and the plain test excluded 6–50% of these records. A record that is not held
   // (no value repeated: HeldFraction) gets the truncation allowance, as positions do: at most
   // 1% excluded. (A held one, tartan's DVL, keeps the plain test: the real-data tests
   // ClosedLoopTest.RealTartan*, docs/identification.md §7.)

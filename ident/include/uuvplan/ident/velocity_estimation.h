@@ -42,6 +42,9 @@ struct SavitzkyGolayOptions {
 /// motion (down to 9 points, the fewest a 4th-order fit can smooth with).
 int SavitzkyGolayWindow(double rate_hz, double input_time_scale_s = 0.0);
 
+/// The window a user gave (`given` > 0: `--sg-window`), else SavitzkyGolayWindow's.
+int ChosenWindow(int given, double rate_hz, double input_time_scale_s);
+
 /// The time scale of a logged input: the median duration of its constant pieces when it is
 /// piecewise constant, else twice the median time between sign changes of its deviation from
 /// the mean (the period of a sine). 0 when it cannot be told (constant input).
