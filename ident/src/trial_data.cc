@@ -207,7 +207,6 @@ double HeldFraction(const Signal& s) {
 constexpr double kHeldRecord = 0.15;  // between the gyros' ≤ 10% and the DVL's ≥ 22%
 
 // One measurement with its outliers excluded (reported in `outliers`), and its noise σ:
-
 // `declared` when positive, else estimated from the differences (`estimated`).
 struct CleanOutput {
   std::vector<Outlier>* outliers;
@@ -314,8 +313,8 @@ int LongestRun(const std::vector<double>& t, const std::vector<Gap>& gaps) {
 // row as too near its ends): an input error. (A stretch too short for any window leaves the
 // fits without rows: a failed fit that says so.)
 int FilterWindow(const TrialDataOptions& o, const Signal& main, const std::string& what,
-                 double time_scale, const std::string& where, const TrialData& d) {
-  const int run = LongestRun(main.t, d.gaps);
+                 double time_scale, const std::string& where, const std::vector<Gap>& gaps) {
+  const int run = LongestRun(main.t, gaps);
   const int fits = run % 2 == 1 ? run : run - 1;  // the longest odd window the data holds
   if (o.sg_window > run) {
     throw model::InputError(where, "velocity filter window (--sg-window) of " +
@@ -325,7 +324,7 @@ int FilterWindow(const TrialDataOptions& o, const Signal& main, const std::strin
                                        ": expected at most " + std::to_string(fits));
   }
   if (o.sg_window > 0) return o.sg_window;
-  const int rate_window = ChosenWindow(0, MedianRate(main), time_scale);
+  const int rate_window = SavitzkyGolayWindow(MedianRate(main), time_scale);
   return fits >= o.sg_order + 2 ? std::min(rate_window, fits) : rate_window;
 }
 
@@ -337,7 +336,7 @@ void EstimateVelocity(const TrialDataOptions& o, const std::string& where, Trial
   sg.order = o.sg_order;
   sg.gap_factor = o.gap_factor;
   if (d->has_velocity()) {
-    sg.window = FilterWindow(o, d->velocity, "velocity", time_scale, where, *d);
+    sg.window = FilterWindow(o, d->velocity, "velocity", time_scale, where, d->gaps);
     d->velocity_estimate = SavitzkyGolay(d->velocity, sg);
     // The smoothed velocity is the estimate (derivative = acceleration, unused here).
     d->velocity_estimate.second_derivative = {};
@@ -351,7 +350,7 @@ void EstimateVelocity(const TrialDataOptions& o, const std::string& where, Trial
       d->initial_position = std::nan("");
     }
   } else {
-    sg.window = FilterWindow(o, d->position, "position", time_scale, where, *d);
+    sg.window = FilterWindow(o, d->position, "position", time_scale, where, d->gaps);
     SmoothedSignal s = SavitzkyGolay(d->position, sg);
     d->initial_position = s.value.front();
     d->initial_velocity = std::isfinite(s.derivative.front()) ? s.derivative.front() : 0.0;
