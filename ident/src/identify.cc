@@ -2,6 +2,8 @@
 // of identify_stages.h (prepare → estimate → refine → validate), timed.
 #include "uuvplan/ident/identify.h"
 
+#include <algorithm>
+
 #include "diagnosis/parallel.h"
 #include "identify_stages.h"
 #include "options_check.h"
@@ -40,6 +42,18 @@ constexpr model::EnumNames<Method, 6> kMethodNames{{{
     {Method::kOutputError, "output-error"},
 }}};
 
+// A vehicle file that gives a DOF's parameters (a model written by `diagnose
+// --write-vehicle`) is read by `score` and `simulate`; estimation does not start from it.
+void NoteParametersNotUsed(const model::Vehicle& vehicle, Dof dof, DofIdentification* r) {
+  const auto& given = vehicle.dofs_with_parameters;
+  if (std::find(given.begin(), given.end(), dof) == given.end()) return;
+  const std::string name(model::DofName(dof));
+  r->notes.push_back("the vehicle file gives " + name + " parameters (dofs." + name +
+                     ".params and any effects): not used — identification starts from the a priori "
+                     "values and fits the parameters listed; `uuvplan score` scores the file's "
+                     "model on this campaign");
+}
+
 // One DOF through the four stages; `prepare_s` is the time its trials took to prepare.
 DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
                               const std::vector<TrialData>& all, double prepare_s,
@@ -62,6 +76,7 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
   c.steady.prune_insignificant = o.prune_insignificant && c.steady.prune_insignificant;
   c.output_error.prune_insignificant = o.prune_insignificant && c.output_error.prune_insignificant;
   r.closed_loop_suspected = stages::SuspectClosedLoop(trials.fit, o.closed_loop);
+  NoteParametersNotUsed(campaign.vehicle, dof, &r);
   r.timing.push_back({"prepare", prepare_s + watch.Lap()});
 
   if (o.method != Method::kChain) {

@@ -119,6 +119,62 @@ void FailWithoutEstimate(DofIdentification* r) {
   }
 }
 
+// Whether some fit trial applies a force of known size: a non-zero command through a mapping
+// and direction whose η is not a parameter of the model (open water, or 1 by contract).
+bool AppliesKnownForce(const DofContext& c) {
+  for (const TrialData* d : c.trials.fit) {
+    for (std::size_t i = 0; i < d->force.size(); ++i) {
+      if (d->force[i] == 0 || d->mapping[i] < 0) continue;
+      const auto dir = d->force[i] > 0 ? model::Direction::kPos : model::Direction::kNeg;
+      const std::string& mapping = c.vehicle.mappings[d->mapping[i]].name;
+      if (c.model.ParameterIndex(model::EtaName(mapping, dir)) < 0) return true;
+    }
+  }
+  return false;
+}
+
+// Without a force of known size the model is homogeneous in its parameters: (m, k, kq, bias,
+// η) and c·(m, k, kq, bias, η) give the same motion, so no estimate is determined, whatever
+// values are held (seed 000 §II-A: η must be known for at least one mapping and direction).
+void FailWithoutKnownForce(const DofContext& c, DofIdentification* r) {
+  if (AppliesKnownForce(c)) return;
+  Fail("no force of known size: every fit trial's force goes through a mapping and direction "
+       "whose installation coefficient η is unknown (not open water), so the parameters are "
+       "determined only up to a common scale (seed 000 §II-A) and the values printed rest on the "
+       "η held at 1 — add legs in a mapping and direction declared open water", r);
+}
+
+// An inertia ten times below the vehicle's a priori range is no vehicle's: most often a unit
+// mistake in the log, which scales every estimate — angles in degrees (m, k by 1/57.3), positions
+// in cm or mm (1/100, 1/1000) — too slow a motion for the input check's rate-vs-angle test to
+// see (ReadCampaignForIdentification); else a vehicle file that is wrong.
+void FailBelowPriorInertia(const DofContext& c, DofIdentification* r) {
+  const ParameterEstimate* m = r->Param(model::param::kMass);
+  if (!m || m->state != ParameterState::kEstimated || !(m->value > 0)) return;
+  const auto [lo, hi] = c.vehicle.InertiaBounds(r->dof);
+  if (!(m->value < lo / 10)) return;
+  const bool rotation = model::IsRotational(r->dof);
+  const std::vector<std::pair<double, std::string>> units =
+      rotation ? std::vector<std::pair<double, std::string>>{{180 / M_PI, "degrees"}}
+               : std::vector<std::pair<double, std::string>>{{100, "cm"}, {1000, "mm"}};
+  std::string likely;
+  for (const auto& [factor, unit] : units) {
+    if (m->value * factor >= lo / 2 && m->value * factor <= 2 * hi) {
+      likely = ": × " + Fmt(factor, 3) + " puts it in the range, so the log's " +
+               std::string(model::DofName(r->dof)) +
+               " positions and velocities are most likely in " + unit +
+               " — convert them to " + (rotation ? "rad" : "m");
+    }
+  }
+  const std::string unit = model::Unit(model::param::kMass, r->dof);
+  Fail("m = " + Fmt(m->value) + " ± " + Fmt(m->sigma) + " " + unit + " is " +
+           Fmt(lo / m->value, 3) + "× below the vehicle's a priori range [" + Fmt(lo) + ", " +
+           Fmt(hi) + "] " + unit +
+           (likely.empty() ? ": check the log's units and the vehicle file's mass and inertia"
+                           : likely),
+       r);
+}
+
 // A usable model's free run beats ν ≡ 0 (the velocity MAE of seed 002 eq. 37) on its fit
 // trials and on its validate trials; a free run that diverges is no model at all.
 void CheckFreeRun(DofIdentification* r) {
@@ -158,6 +214,8 @@ void ReportEstimates(const DofContext& c, const LeastSquaresAnswer& ls,
   CheckAdmissible(r);
   WarnClosedLoop(r);
   FailWithoutEstimate(r);
+  FailWithoutKnownForce(c, r);
+  FailBelowPriorInertia(c, r);
 }
 
 void ValidateStage(const DofContext& c, const ValidationOptions& o, DofIdentification* r) {

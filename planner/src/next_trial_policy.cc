@@ -231,8 +231,15 @@ class DofTrialPolicy {
       const int i = static_cast<int>(known - names_.begin());
       g.sigma_now = known != names_.end() ? std::sqrt(covariance_(i, i))
                                           : std::numeric_limits<double>::infinity();
-      g.trials_to_target = TrialsToTarget(g.sigma_now, g.sigma_after,
-                                          planner_.options.target_percent / 100 * std::abs(q.value));
+      // A parameter not determined yet (σ_now = ∞) that this trial determines is one trial from
+      // usable: the next is planned from its estimate, so the rate of identical trials does not
+      // apply; one it leaves undetermined counts at that rate (TrialsToTarget's limit).
+      const bool determines = std::isinf(g.sigma_now) &&
+                              g.sigma_after < planner_.options.usable_percent / 100 * std::abs(q.value);
+      g.trials_to_target = determines ? 1.0
+                                      : TrialsToTarget(g.sigma_now, g.sigma_after,
+                                                       planner_.options.target_percent / 100 *
+                                                           std::abs(q.value));
       g.gain = std::isinf(g.sigma_now) ? (std::isfinite(g.sigma_after) ? 1.0 : 0.0)
                                        : 1.0 - g.sigma_after / g.sigma_now;
       if (!(g.trials_to_target >= best.trials_to_target)) best = g;
@@ -502,14 +509,6 @@ int FitTrials(const model::Campaign& campaign, Dof dof) {
     if (e.dof == dof && e.use == model::TrialUse::kFit) ++trials;
   }
   return trials;
-}
-
-double TrialsToTarget(double sigma_now, double sigma_after, double sigma_target) {
-  if (!(sigma_after < sigma_now)) return std::numeric_limits<double>::infinity();
-  if (std::isinf(sigma_now) || !(sigma_now > sigma_target)) return 0.0;
-  // Information adds: after n such trials 1/σ² = 1/σ_now² + n·(1/σ_after² − 1/σ_now²).
-  const double ratio = std::pow(sigma_now / sigma_after, 2) - 1.0;
-  return (std::pow(sigma_now / sigma_target, 2) - 1.0) / ratio;
 }
 
 bool PlanCandidate(Planner& planner, const model::Campaign& campaign, const DofProgress& progress,

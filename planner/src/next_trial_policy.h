@@ -83,10 +83,6 @@ bool PlanCandidate(Planner& planner, const model::Campaign& campaign, const DofP
                    const ident::DofIdentification* id, Decision* d, CandidateGain* gain,
                    std::string* why);
 
-/// Number of trials like one that takes σ_now to σ_after needed to reach σ_target (the
-/// information of independent trials adds); +inf when the trial adds nothing.
-double TrialsToTarget(double sigma_now, double sigma_after, double sigma_target);
-
 /// The sentence of a stuck DOF (stuck_limit.cc): its bottleneck, the candidate's gain, the
 /// limit that binds (pool size, thrust range, rotation-rate limit, no reversal within a trial)
 /// and what would lift it, checked by planning the DOF again with the limit relaxed.

@@ -166,7 +166,7 @@ void BindCheckPool(CLI::App* sub, CheckPoolCliOptions* o) {
   sub->add_option("--max-duration", o->check.schedule.planner.max_trial_duration_s,
                   "longest trial (s)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(PositiveNumber("a duration in s"));
 }
 
 const CommandRegistration kRegistration(MakeCommand<CheckPoolCliOptions>(

@@ -90,7 +90,8 @@ void BindDiagnose(CLI::App* sub, DiagnoseCommandOptions* o) {
                    "the candidate fits and the nominal identification");
   sub->add_option("--write-vehicle", o->write_vehicle,
                   "write the extended model (every parameter with sigma, the effects found) "
-                  "into this vehicle file, for `uuvplan score` and every command");
+                  "into this vehicle file, for `uuvplan score` and every command")
+      ->check(OutputFile());
   AddFilterWindowOption(sub, &o->diagnose.identify.data);
   sub->add_option("--max-effects", o->diagnose.max_effects, "effects added per DOF at most")
       ->capture_default_str()

@@ -11,6 +11,7 @@
 // whole box is stuck (outside the hostable part); 2 bad input;
 // 5 stuck (no trial the pool allows adds information); 6 convergence refused (precise but
 // non-physical or invalid).
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -92,8 +93,9 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
   for (const auto& c : r.candidates) {
     const std::string unit = model::Unit(c.parameter, c.dof);
     out << "Candidate " << c.trial << " (" << model::DofName(c.dof) << "): σ(" << c.parameter
-        << ") " << Quantity(c.sigma_now, unit) << " → " << Quantity(c.sigma_after, unit)
-        << ", about " << model::Significant(c.trials_to_target, 3) << " such trials to the target"
+        << ") " << (std::isinf(c.sigma_now) ? "not determined yet" : Quantity(c.sigma_now, unit))
+        << " → " << Quantity(c.sigma_after, unit) << ", about "
+        << model::Significant(c.trials_to_target, 3) << " such trials to the target"
         << (c.negligible ? " — negligible" : "") << "\n";
   }
   if (!r.notes.empty()) {

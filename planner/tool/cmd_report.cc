@@ -4,8 +4,8 @@
 // INPUT is a schedule (`schedule --json`, with --vehicle and --pool), a loop's JSON (`loop
 // --json`), or a campaign (identified and diagnosed here; with --method rls also the RLS
 // convergence, seed 004 Fig. 11). DIR is written whole or not at all. Exit status: 0 written;
-// 1 written, but a DOF could not be diagnosed (with --no-diagnosis: could not be identified),
-// as `diagnose` (`identify`) would say; 2 bad input.
+// 1 written, but a DOF could not be identified or diagnosed, or the pool cannot host a
+// schedule's DOF, as `identify`, `diagnose` or `schedule` would say; 2 bad input.
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -23,6 +23,7 @@
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/planner/pool_verdict.h"
 #include "uuvplan/report/report.h"
 
 namespace uuvplan::tool {
@@ -69,6 +70,11 @@ void AddSchedule(const ReportCommandOptions& o, report::ReportInputs* in) {
   }
   in->title = "Schedule report";
   in->schedule = io::ReadScheduleJson(o.input);
+  // The verdict `check-pool VEHICLE --pool POOL --plan SCHEDULE --dof <its DOFs>` gives, with
+  // the default target and longest trial (as `schedule` without options).
+  planner::ScheduleOptions so;
+  so.dofs = io::ScheduleDofs(o.input);
+  in->verdict = planner::JudgePool(*in->vehicle, *in->pool, so, &*in->schedule);
 }
 
 // The free runs of the standard and the extended model of each diagnosed DOF, on the trials
@@ -109,14 +115,13 @@ void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
                      "the diagnosis identifies with the default chain; give --no-diagnosis to "
                      "report the estimates of method " + o.method.method);
   }
-  if (o.no_diagnosis) {
-    in->identification = ident::Identify(campaign, identify);
-    return;
-  }
+  // The estimates are `identify`'s (one campaign, one answer); the diagnosis's standard model
+  // (every η = 1: the contract's baseline) stays in its own section.
+  in->identification = ident::Identify(campaign, identify);
+  if (o.no_diagnosis) return;
   ident::DiagnoseOptions d;
   d.identify = identify;
   in->diagnosis = ident::Diagnose(campaign, d);
-  in->identification = in->diagnosis->nominal;
   AddBeforeAfter(campaign, identify.data, in);
 }
 
@@ -145,11 +150,12 @@ int RunReport(const ReportCommandOptions& o) {
             << (std::filesystem::path(io::DirectoryPath(o.out)) / "report.html").string() << " ("
             << files.figures << " figures, also as PNG and SVG in "
             << (std::filesystem::path(io::DirectoryPath(o.out)) / "figures").string() << ")\n";
-  // The verdict of the command whose result is reported: diagnose's (a DOF it could not
-  // diagnose), or with --no-diagnosis identify's (a DOF that failed).
-  const bool failed = in.diagnosis ? !in.diagnosis->not_diagnosed.empty()
-                                   : in.identification && in.identification->status ==
-                                                              ident::IdentifyStatus::kFailed;
+  // The verdicts of the commands whose results are reported: identify's (a DOF that failed),
+  // diagnose's (a DOF it could not diagnose), the schedule's (a DOF the pool cannot host).
+  const bool failed =
+      (in.identification && in.identification->status == ident::IdentifyStatus::kFailed) ||
+      (in.diagnosis && !in.diagnosis->not_diagnosed.empty()) ||
+      (in.verdict && !in.verdict->hosted);
   return failed ? kExitActionNeeded : kExitOk;
 }
 

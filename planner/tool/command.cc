@@ -2,6 +2,8 @@
 #include "command.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <unistd.h>
@@ -18,8 +20,36 @@ std::vector<Command>& Registry() {
   return commands;
 }
 
+CLI::Validator PositiveNumber(const std::string& what) {
+  return CLI::Validator(
+      [what](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double x = std::strtod(text.c_str(), &end);
+        const bool number = !text.empty() && end == text.c_str() + text.size();
+        return number && std::isfinite(x) && x > 0 ? ""
+                                                   : "expected " + what + " > 0, got '" + text + "'";
+      },
+      "NUMBER > 0");
+}
+
+CLI::Validator OutputFile() {
+  return CLI::Validator(
+      [](std::string& path) -> std::string {
+        if (path == "-") return "";
+        const std::filesystem::path dir = std::filesystem::absolute(path).parent_path();
+        if (!std::filesystem::is_directory(dir)) {
+          return "expected a file in an existing directory: " + dir.string() + " does not exist";
+        }
+        if (access(dir.c_str(), W_OK) != 0) return "the directory " + dir.string() + " is not writable";
+        if (std::filesystem::is_directory(path)) return "expected a file, " + path + " is a directory";
+        return "";
+      },
+      "FILE");
+}
+
 CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& what) {
-  return sub->add_option("--json", *path, what + " as JSON to this file ('-' = stdout)");
+  return sub->add_option("--json", *path, what + " as JSON to this file ('-' = stdout)")
+      ->check(OutputFile());
 }
 
 CLI::Option* AddTargetOption(CLI::App* sub, double* target_percent) {
@@ -28,7 +58,7 @@ CLI::Option* AddTargetOption(CLI::App* sub, double* target_percent) {
                    "percentile error 100·σ/|θ| (%) every parameter of interest must reach; the "
                    "pool verdict judges whether the loop can reach it in this pool")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(PositiveNumber("a percentage"));
 }
 
 void PrintBriefOnTerminal(const std::string& brief) {

@@ -53,6 +53,12 @@ Command MakeCommand(std::string name, int order, std::string description,
 }
 
 /// `--json F`: "<what> as JSON to this file ('-' = stdout)".
+/// A finite number > 0 (`what`: "a percentage", "a duration in s"), in the option's message.
+CLI::Validator PositiveNumber(const std::string& what);
+/// An output file's check, at parse time so that nothing is computed for an output that cannot
+/// be written and a command with two outputs writes both or neither: its directory exists and
+/// is writable ('-' = stdout passes).
+CLI::Validator OutputFile();
 CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& what);
 
 /// `--target PCT`: the loop's target percentile error 100·σ/|θ| (%), the precision the pool

@@ -1,6 +1,8 @@
 // uuvplan <command> [options]: see docs/cli.md.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <charconv>
+#include <cstdint>
 #include <exception>
 #include <iostream>
 
@@ -11,16 +13,21 @@
 
 namespace {
 
-// CLI11 reads "-1" for an unsigned option as 2^64 − 1: every unsigned option (--seed, --budget)
-// takes only numbers >= 0 (exit 2 otherwise).
+// CLI11 reads "-1" for an unsigned option as 2^64 − 1, and a number past 2^64 − 1 as 2^64 − 1:
+// every unsigned option (--seed, --budget) takes only numbers from 0 to 2^64 − 1 (exit 2
+// otherwise), so that two different seeds never give the same draws.
 void RefuseNegativeCounts(CLI::App& app) {
   for (CLI::App* sub : app.get_subcommands({})) {
     for (CLI::Option* option : sub->get_options()) {
       if (option->get_type_name() != "UINT") continue;
       option->check(CLI::Validator(
           [](std::string& text) {
-            return text.find('-') == std::string::npos ? std::string()
-                                                        : "expected a whole number >= 0, got " + text;
+            std::uint64_t value = 0;
+            const bool too_large = std::from_chars(text.data(), text.data() + text.size(), value)
+                                       .ec == std::errc::result_out_of_range;
+            return text.find('-') == std::string::npos && !too_large
+                       ? std::string()
+                       : "expected a whole number from 0 to 18446744073709551615, got " + text;
           },
           "UINT >= 0"));
     }

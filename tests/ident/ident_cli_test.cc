@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -116,6 +118,90 @@ TEST(IdentifyCliTest, ThreeSamplesIdentifyNothingAndExitOne) {
   EXPECT_EQ(r.status, 1) << r.out;
   EXPECT_NE(r.out.find("no parameter is identified: every estimate is insignificant"), std::string::npos)
       << r.out;
+  fs::remove_all(dir);
+}
+
+TEST(IdentifyCliTest, NoForceOfKnownSizeIsAFailureNotAnEstimate) {
+  // ROMEO's horizontal-all-surge is not open water (its η is unknown): with only its force the
+  // model is homogeneous — c·(m, k, kq, bias, η) fits as well for every c (seed 000 §II-A) — so
+  // an m "estimated" with η held at 1 is no estimate (it read 5788 ± 1422 kg for a true 890,
+  // "significant", exit 0). With a surge-front leg (open water forward) the scale is known.
+  const fs::path dir = TempDir("unknown-eta");
+  fs::create_directories(dir);
+  const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
+  std::ofstream(dir / "plan.json") << R"({"trials": [
+    {"id": "all", "dof": "surge", "kind": "steady", "duration": 40,
+     "mapping": "horizontal-all-surge", "force": 60},
+    {"id": "front", "dof": "surge", "kind": "steady", "duration": 40, "mapping": "surge-front",
+     "force": 60}]})";
+  ASSERT_EQ(RunUuvplan("simulate --truth " + romeo + "truth.yaml --plan " +
+                       (dir / "plan.json").string() + " --out " + (dir / "c").string() +
+                       " --seed 5").status,
+            0);
+  std::ofstream(dir / "c" / "unknown.yaml")
+      << "vehicle: vehicle.yaml\ntrials:\n  - file: trials/all.csv\n    dof: surge\n"
+         "    mapping: horizontal-all-surge\n";
+  const RunResult unknown = RunUuvplan("identify " + (dir / "c" / "unknown.yaml").string());
+  EXPECT_EQ(unknown.status, 1) << unknown.out;
+  EXPECT_NE(unknown.out.find("FAILED: no force of known size"), std::string::npos) << unknown.out;
+  const RunResult both = RunUuvplan("identify " + (dir / "c").string());
+  EXPECT_EQ(both.out.find("no force of known size"), std::string::npos) << both.out;
+  fs::remove_all(dir);
+}
+
+// Writes the CSV `from` to `to` with its column `column` multiplied by `factor`: the log a
+// logger in another unit would have written.
+void ScaleColumn(const fs::path& from, const fs::path& to, const std::string& column,
+                 double factor) {
+  std::ifstream in(from);
+  std::ofstream out(to);
+  std::string line;
+  int index = -1;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    if (!line.empty() && line[0] != '#' && index < 0) {  // the header
+      index = static_cast<int>(std::find(cells.begin(), cells.end(), column) - cells.begin());
+    } else if (index >= 0 && index < static_cast<int>(cells.size()) && !cells[index].empty() &&
+               line[0] != '#') {
+      std::ostringstream v;
+      v << std::setprecision(12) << factor * std::stod(cells[index]);
+      cells[index] = v.str();
+    }
+    for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << cells[i];
+    if (!line.empty() && line.back() == ',') out << ",";
+    out << "\n";
+  }
+}
+
+TEST(IdentifyCliTest, SlowYawInDegreesIsNamedByItsInertia) {
+  // Turns at 5°/s are too slow for the input check's rate-vs-angle test (one turn per second),
+  // but a heading in degrees scales m and k by 1/57.3: ROMEO's yaw m came out 1.64 kg·m², 63×
+  // below its a priori range [103, 188], "significant", exit 0. The same logs in rad: ok.
+  const fs::path dir = TempDir("slow-degrees");
+  fs::create_directories(dir);
+  const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
+  std::ofstream(dir / "plan.json") << R"({"trials": [
+    {"id": "a", "dof": "yaw", "kind": "steady", "duration": 40, "mapping": "yaw-fl-rr",
+     "force": 2.6},
+    {"id": "b", "dof": "yaw", "kind": "segments", "duration": 60, "mapping": "yaw-fl-rr",
+     "segments": [{"force": 2.6, "duration": 30},
+                  {"force": -2.6, "duration": 30, "mapping": "yaw-fr-rl"}]}]})";
+  ASSERT_EQ(RunUuvplan("simulate --truth " + romeo + "truth.yaml --plan " +
+                       (dir / "plan.json").string() + " --out " + (dir / "rad").string() +
+                       " --seed 3").status,
+            0);
+  const RunResult rad = RunUuvplan("identify " + (dir / "rad").string());
+  EXPECT_EQ(rad.status, 0) << rad.out;
+  fs::copy(dir / "rad", dir / "deg", fs::copy_options::recursive);
+  for (const char* t : {"a", "b"}) {
+    ScaleColumn(dir / "rad" / "trials" / (std::string(t) + ".csv"),
+                dir / "deg" / "trials" / (std::string(t) + ".csv"), "pos_yaw", 180 / M_PI);
+  }
+  const RunResult deg = RunUuvplan("identify " + (dir / "deg").string());
+  EXPECT_EQ(deg.status, 1) << deg.out;
+  EXPECT_NE(deg.out.find("most likely in degrees"), std::string::npos) << deg.out;
   fs::remove_all(dir);
 }
 

@@ -30,6 +30,8 @@ TEST(VehicleModelIo, WrittenModelReadsBackWithSigmaEffectsAndSettings) {
   const Vehicle v = io::ReadVehicle(path);  // every command reads it as a vehicle
   EXPECT_EQ(v.name, truth.vehicle.name);
   EXPECT_EQ(v.priors.count(Dof::kSurge), truth.vehicle.priors.count(Dof::kSurge));
+  // identification notes that it does not start from the written model
+  EXPECT_EQ(v.dofs_with_parameters, std::vector<Dof>{Dof::kSurge});
   const Truth read = io::ReadTruth(path);
   ASSERT_EQ(read.dofs.count(Dof::kSurge), 1u);
   std::map<std::string, double> expected = m.params;

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -28,6 +29,7 @@
 #include "uuvplan/ident/monte_carlo.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/planner/design_loop.h"
+#include "uuvplan/planner/determinacy.h"
 #include "uuvplan/planner/paper_procedure.h"
 #include "uuvplan/planner/thrust_limits.h"
 
@@ -82,6 +84,19 @@ const DofProgress* Find(const std::vector<DofProgress>& progress, Dof dof) {
     if (p.dof == dof) return &p;
   }
   return nullptr;
+}
+
+// The information of independent trials adds: 1/σ² = 1/σ_now² + n·(1/σ_after² − 1/σ_now²).
+// With nothing known yet (σ_now = ∞; `next` on an insignificant η once said "σ - → 28, about
+// 0 such trials to the target") it takes n = (σ_after/σ_target)² of them, not 0.
+TEST(TrialsToTargetTest, InformationAddsAndNothingKnownIsItsLimit) {
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_DOUBLE_EQ(TrialsToTarget(2.0, 1.0, 1.0), 1.0);  // one trial takes 2 to 1
+  EXPECT_DOUBLE_EQ(TrialsToTarget(2.0, 1.0, 0.5), 5.0);  // (4/0.25 − 1)/(4 − 1)
+  EXPECT_DOUBLE_EQ(TrialsToTarget(inf, 28.0, 0.016), std::pow(28.0 / 0.016, 2));
+  EXPECT_DOUBLE_EQ(TrialsToTarget(inf, 0.01, 0.02), 0.25);  // one trial is more than enough
+  EXPECT_EQ(TrialsToTarget(0.5, 0.5, 0.1), inf);  // adds nothing
+  EXPECT_EQ(TrialsToTarget(0.05, 0.04, 0.1), 0.0);  // already there
 }
 
 TEST(DesignLoopTest, RomeoReachesFivePercentInLessPoolTimeThanSeedProcedure) {

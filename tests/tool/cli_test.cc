@@ -173,6 +173,26 @@ TEST(Cli, SimulateIsDeterministicPerSeedAndHonoursStep) {
                               dir);
   EXPECT_EQ(bad.status, 2);
   EXPECT_THAT(bad.err, HasSubstr("--step"));
+  // A seed past 2^64 − 1 is refused, not read as 2^64 − 1 (two seeds, one set of draws).
+  const ToolRun huge = RunTool("simulate --truth '" + kRomeoTruth + "' --plan '" + plan +
+                                   "' --out '" + (dir / "f") + "' --seed 18446744073709551616",
+                               dir);
+  EXPECT_EQ(huge.status, 2);
+  EXPECT_THAT(huge.err, HasSubstr("--seed: expected a whole number from 0 to 18446744073709551615"));
+}
+
+// --target is a percentage > 0: 0, NaN and words are refused with the option's name and what it
+// expects (not CLI11's range to 1.8e308, nor an options struct's field).
+TEST(Cli, TargetOtherThanAPositivePercentageIsRefusedByName) {
+  const TempDir dir;
+  const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
+  for (const std::string target : {"0", "nan", "-5", "five"}) {
+    const ToolRun r = RunTool("check-pool '" + romeo + "vehicle.yaml' --pool '" + romeo +
+                                  "pool.yaml' --target " + target,
+                              dir);
+    EXPECT_EQ(r.status, 2) << target;
+    EXPECT_THAT(r.err, HasSubstr("--target: expected a percentage > 0, got '" + target + "'"));
+  }
 }
 
 TEST(Cli, SimulateOutWithTrailingSlashAndJsonOnStdout) {
@@ -255,9 +275,30 @@ TEST(Cli, DiagnoseWritesTheModelAndScoreScoresIt) {
   const auto json = nlohmann::json::parse(ReadText(dir / "score.json"));
   const double fit_mae = json["dofs"]["surge"]["velocity_mae_fit"];
   EXPECT_THAT(d.out, HasSubstr("-> " + model::Significant(fit_mae, 4) + " m/s"));
+  // The baseline every gain starts from is printed with its parameters, and its MAE is the one
+  // the comparison line starts from (one page, one standard model).
+  const std::string from = "standard (the baseline) -> extended: fit ";
+  const std::size_t at = d.out.find(from);
+  ASSERT_NE(at, std::string::npos) << d.out;
+  const std::string before = d.out.substr(at + from.size(), d.out.find(' ', at + from.size()) - at - from.size());
+  EXPECT_THAT(d.out, HasSubstr("Baseline of the comparisons"));
+  EXPECT_THAT(d.out, HasSubstr("; velocity MAE fit " + before));
   const ToolRun bad = RunTool("score '" + (dir / "c/vehicle.yaml") + "' '" + (dir / "c") + "'", dir);
   EXPECT_EQ(bad.status, 2);
   EXPECT_THAT(bad.err, HasSubstr("dofs.<dof>.params"));
+  // The campaign identified with the model as its vehicle: the file's parameters are not
+  // where the estimation starts, and identify says so.
+  fs::copy_file(model, dir / "c/vehicle.yaml", fs::copy_options::overwrite_existing);
+  const ToolRun i = RunTool("identify '" + (dir / "c") + "'", dir);
+  EXPECT_EQ(i.status, 0) << i.err;
+  EXPECT_THAT(i.out, HasSubstr("note: the vehicle file gives surge parameters"));
+  // An output that cannot be written is refused before any work: neither output is written.
+  const ToolRun nodir = RunTool("diagnose '" + (dir / "c") + "' --json '" + (dir / "d.json") +
+                                    "' --write-vehicle '" + (dir / "no/such/v.yaml") + "'",
+                                dir);
+  EXPECT_EQ(nodir.status, 2);
+  EXPECT_THAT(nodir.err, HasSubstr("--write-vehicle"));
+  EXPECT_FALSE(fs::exists(dir / "d.json"));
 }
 
 TEST(Cli, SimulateMalformedPlanExitsTwoNamingFileTrialAndKey) {

@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "support/real_data.h"
 #include "tool/tool_test_util.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::tool_test {
 namespace {
@@ -99,6 +101,11 @@ TEST(ReportTool, RomeoScheduleReportRendersInChromium) {
               tmp);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string html = ReadText(tmp / "report/report.html");
+  // The pool's verdict on the schedule, the sentence `schedule` printed.
+  const std::size_t at = s.out.find("Verdict: ");
+  ASSERT_NE(at, std::string::npos) << s.out;
+  const std::string sentence = s.out.substr(at + 9, s.out.find('\n', at) - at - 9);
+  EXPECT_THAT(html, HasSubstr("<td class=\"t\">pool verdict</td><td class=\"t\">" + sentence));
   const int trials = Count(ReadText(plan), "\"id\"");  // only trials have ids
   ASSERT_GT(trials, 1);
   EXPECT_EQ(CheckReportFiles(tmp / "report"), trials);  // one figure per trial
@@ -109,6 +116,25 @@ TEST(ReportTool, RomeoScheduleReportRendersInChromium) {
   }
   ExpectRenders(tmp / "report", {"summary", "vehicle", "pool", "schedule"},
                 CheckReportFiles(tmp / "report"), "report-romeo-schedule.png", tmp);
+}
+
+// A schedule the pool cannot host (URIS heave: the tank's 0.4 m of free depth) is reported
+// with the verdict and exit status `schedule` gives it (1), not as a plain trial list.
+TEST(ReportTool, ScheduleReportCarriesThePoolVerdictAndItsExitStatus) {
+  TempDir tmp;
+  const std::string uris = std::string(UUVPLAN_SOURCE_DIR) + "/cases/uris/";
+  const std::string plan = tmp / "schedule.json";
+  const ToolRun s = RunTool("schedule '" + uris + "vehicle.yaml' --pool '" + uris +
+                                "pool.yaml' --dof heave --json '" + plan + "'",
+                            tmp);
+  ASSERT_EQ(s.status, 1) << s.out << s.err;  // not hosted
+  const ToolRun r = RunTool("report '" + plan + "' --vehicle '" + uris + "vehicle.yaml' --pool '" +
+                                uris + "pool.yaml' -o '" + (tmp / "report") + "'",
+                            tmp);
+  EXPECT_EQ(r.status, 1) << r.err;
+  const std::string html = ReadText(tmp / "report/report.html");
+  EXPECT_THAT(html, HasSubstr("CANNOT host the identification of heave"));
+  EXPECT_THAT(html, HasSubstr("heave: NOT hosted"));
 }
 
 // A virtual ROMEO heave campaign (the planned heave trials run on truth-effects.yaml) after a
@@ -136,6 +162,14 @@ TEST(ReportTool, VirtualRomeoCampaignAfterLoopReport) {
       tmp);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string html = ReadText(tmp / "report/report.html");
+  // The estimates are `identify`'s (its η free where the mapping is not open water), not the
+  // diagnosis's all-η-1 baseline: one campaign, one answer.
+  ASSERT_EQ(RunTool("identify '" + (tmp / "campaign") + "' --json '" + (tmp / "id.json") + "'", tmp)
+                .status,
+            0);
+  const auto id = nlohmann::json::parse(ReadText(tmp / "id.json"));
+  const double m = id["dofs"]["heave"]["params"]["m"]["value"];
+  EXPECT_THAT(html, HasSubstr("<td class=\"t\">m</td><td>" + model::Significant(m, 4) + "</td>"));
   EXPECT_THAT(html, HasSubstr("<td class=\"t\">installation_loss</td>"));  // a candidate tested
   EXPECT_THAT(html, HasSubstr("<td class=\"t\">identification of heave</td>"));  // the summary
   for (const char* fig : {"identification-heave-free-run", "identification-heave-residuals",
@@ -154,9 +188,12 @@ TEST(ReportTool, RealBlueRovYawReport) {
   const ToolRun r = RunTool(
       "report '" + testing::RealDataPath("bluerov-yaw-2016") + "' -o '" + (tmp / "report") + "'",
       tmp);
-  ASSERT_EQ(r.status, 0) << r.err;  // diagnose's verdict on these logs: every DOF diagnosed
+  // identify's verdict on these logs (exit 1: yaw's kq = −0.36 ± 0.32 is non-physical and the
+  // output error does not converge), shown as such; diagnose then names the missing effects.
+  ASSERT_EQ(r.status, 1) << r.err;
   EXPECT_GE(CheckReportFiles(tmp / "report"), 5);
   const std::string html = ReadText(tmp / "report/report.html");
+  EXPECT_THAT(html, HasSubstr("yaw: failed — non-physical fit: kq"));
   EXPECT_THAT(html, HasSubstr("<section id=\"diagnosis\">"));
   EXPECT_THAT(html, HasSubstr("trials/yaw_4.csv"));  // a held-out trial in the validation
 }

@@ -356,4 +356,20 @@ Schedule ReadScheduleJson(const std::string& path) {
   return schedule;
 }
 
+std::vector<model::Dof> ScheduleDofs(const std::string& path) {
+  std::set<model::Dof> dofs;
+  for (const PlannedTrial& t : ReadScheduleJson(path).trials) dofs.insert(t.design.dof);
+  const json root_json = LoadJson(path);
+  const JsonValue root(root_json, path, "");
+  if (const auto np = root.Optional("not_planned")) {
+    if (!np->json().is_object()) np->Expected("an object {<dof>: {message}}");
+    for (const auto& [name, why] : np->json().items()) {
+      const auto dof = model::ParseDof(name);
+      if (!dof) np->Fail("key '" + name + "': expected a DOF (surge, sway, heave, roll, pitch, yaw)");
+      dofs.insert(*dof);
+    }
+  }
+  return {dofs.begin(), dofs.end()};
+}
+
 }  // namespace uuvplan::io

@@ -264,7 +264,9 @@ Vehicle ReadVehicle(const std::string& path) {
     if (const Value v = root.Optional("dofs"); !v.absent()) {
       const MapValue dofs(v, "a map of DOFs");
       for (const MapValue::Entry& e : dofs.entries()) {
-        ParseTruthDof(e.value, DofKey(e), vehicle);
+        if (ParseTruthDof(e.value, DofKey(e), vehicle)) {
+          vehicle.dofs_with_parameters.push_back(DofKey(e));
+        }
       }
     }
     return vehicle;

@@ -53,7 +53,13 @@ ReportFiles BuildReport(const ReportInputs& in) {
   if (in.vehicle) doc.sections.push_back(VehicleSection(*in.vehicle, in.vehicle_source));
   if (in.pool) doc.sections.push_back(PoolSection(*in.pool, in.pool_source));
   if (in.schedule) {
-    Section s = ScheduleSection(*in.schedule);
+    std::vector<std::string> verdict;
+    if (in.verdict && in.pool) {
+      verdict = planner::VerdictLines(*in.verdict, *in.pool);
+      verdict.push_back("(The verdict `check-pool VEHICLE --pool POOL --plan SCHEDULE` gives for "
+                        "this schedule's DOFs, with its default target and longest trial.)");
+    }
+    Section s = ScheduleSection(*in.schedule, verdict);
     if (in.vehicle && in.pool) {
       AddFigures(ScheduleFigures(*in.vehicle, *in.pool, *in.schedule, in.planner, &out.notes), &s,
                  &out);
@@ -70,7 +76,7 @@ ReportFiles BuildReport(const ReportInputs& in) {
   if (!out.notes.empty()) doc.sections.push_back({"notes", "Notes", out.notes, {}, {}});
   doc.sections.insert(
       doc.sections.begin(),
-      SummarySection(in.schedule ? &*in.schedule : nullptr,
+      SummarySection(in.schedule ? &*in.schedule : nullptr, in.verdict ? &*in.verdict : nullptr,
                      in.identification ? &*in.identification : nullptr,
                      in.diagnosis ? &*in.diagnosis : nullptr, in.loop ? &*in.loop : nullptr));
   out.files["report.html"] = Html(doc);

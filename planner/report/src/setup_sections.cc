@@ -82,8 +82,9 @@ Section PoolSection(const model::Pool& p, const std::string& source) {
   return s;
 }
 
-Section ScheduleSection(const planner::Schedule& schedule) {
-  Section s{"schedule", "Schedule", {}, {}, {}};
+Section ScheduleSection(const planner::Schedule& schedule,
+                        const std::vector<std::string>& verdict_lines) {
+  Section s{"schedule", "Schedule", verdict_lines, {}, {}};
   s.paragraphs.push_back(std::to_string(schedule.trials.size()) + " trials, pool time " +
                          Number(schedule.pool_time) + " s (" + Number(schedule.pool_time / 60) +
                          " min) with the pauses between trials.");

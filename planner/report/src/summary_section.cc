@@ -35,7 +35,7 @@ void AddDiagnosis(const ident::DiagnosisResult& r, Table* t) {
 
 }  // namespace
 
-Section SummarySection(const planner::Schedule* schedule,
+Section SummarySection(const planner::Schedule* schedule, const planner::PoolVerdict* verdict,
                        const ident::IdentifyResult* identification,
                        const ident::DiagnosisResult* diagnosis, const io::LoopHistory* loop) {
   Section s{"summary", "Summary", {}, {}, {}};
@@ -46,6 +46,7 @@ Section SummarySection(const planner::Schedule* schedule,
                           Number(schedule->pool_time / 60) + " min",
                       "Schedule"});
   }
+  if (verdict) t.rows.push_back({"pool verdict", verdict->sentence, "Schedule"});
   if (identification) AddIdentification(*identification, &t);
   if (diagnosis) AddDiagnosis(*diagnosis, &t);
   if (loop) {

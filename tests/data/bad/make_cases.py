@@ -295,7 +295,7 @@ csv_case("nul_cell", with_row(3, "0.6,1\x000,0.04"), ":4: column 'force_surge': 
 
 # --- command-line values ---------------------------------------------------------------------
 case("seed_negative", "simulate --truth {data}/io/truth.yaml --plan {cases}/plan_good.json "
-     "--out {out} --seed -1", ["--seed: expected a whole number >= 0, got -1"])
+     "--out {out} --seed -1", ["--seed: expected a whole number from 0 to 18446744073709551615, got -1"])
 case("step_flag_negative", "simulate --truth {data}/io/truth.yaml --plan {cases}/plan_good.json "
      "--out {out} --step -0.01", ["--step"])
 

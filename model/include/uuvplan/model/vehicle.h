@@ -48,6 +48,10 @@ struct Vehicle {
   std::vector<ThrustMapping> mappings;
   std::map<Dof, DofPrior> priors;
   std::map<Dof, DofSensors> sensors;
+  /// DOFs whose parameter values the file also gives (`dofs.<dof>.params` and effects, as
+  /// `diagnose --write-vehicle` writes them). `score` and `simulate` use those values;
+  /// identification starts from the a priori values and fits the standard model.
+  std::vector<Dof> dofs_with_parameters;
 
   /// Rigid-body inertia of a DOF: the mass for translations; for rotations the given
   /// inertia or that of a uniform box of `size` (seed 000 §IV-D: I_z = m(l² + w²)/12).

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "uuvplan/io/json_value.h"
 #include "uuvplan/planner/schedule.h"
@@ -21,5 +22,8 @@ planner::PlannedTrial TrialFromJson(const JsonValue& trial);
 /// Reads a schedule JSON file (as written by `uuvplan schedule --json`), or a `next` result
 /// (its single "trial"). Throws model::InputError on malformed input.
 planner::Schedule ReadScheduleJson(const std::string& path);
+/// The DOFs a schedule file was planned for: those of its trials and those `schedule` could
+/// not plan (its "not_planned" keys), in DOF order. Throws model::InputError as above.
+std::vector<model::Dof> ScheduleDofs(const std::string& path);
 
 }  // namespace uuvplan::io
