@@ -159,11 +159,12 @@ DofVerdict JudgeOwn(const DofPlan* p, model::Dof dof, const model::Pool& pool) {
   return v;
 }
 
-// "9.66 m of free depth (12.66 m wall to wall)" or "18.85 rad (3 turns of the tether)".
+// "9.66 m of free depth (12.66 m wall to wall)" or "1080° (3 turns)" (angles for people in
+// degrees, docs/cli.md).
 std::string Travel(const model::Pool& pool, model::Dof dof, double free) {
   std::ostringstream s;
   if (model::IsRotational(dof)) {
-    s << Fmt(free, 4) << " rad (" << Fmt(pool.ExtentFor(dof, free), 4) << " turns)";
+    s << model::AngleText(free);
   } else {
     s << Fmt(free, 4) << " m of free " << model::Pool::SideName(dof) << " ("
       << Fmt(pool.WallToWallFor(free), 4) << " m wall to wall)";
@@ -319,7 +320,8 @@ std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
   s << "  " << model::DofName(v.dof) << ": ";
   if (v.hosted) {
     const double free = pool.FreeTravel(v.dof);
-    s << "hosted; its trials span " << Fmt(v.extent, 4) << " of the "
+    s << "hosted; its trials span "
+      << (model::IsRotational(v.dof) ? model::AngleText(v.extent) : Fmt(v.extent, 4)) << " of the "
       << Travel(pool, v.dof, free)
       << (model::IsRotational(v.dof) ? " the tether allows" : "");
     return s.str();

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "command.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/io/coupled_design_json.h"
 #include "uuvplan/io/io.h"
@@ -274,8 +275,9 @@ int RunSimulate(const SimulateOptions& options) {
   PrintCampaignTable(campaign, designs, out);
   const CampaignTotals totals = Totals(campaign, designs);
   out << "\n"
-      << campaign.trials.size() << " trials, " << totals.rows << " rows, " << totals.trial_time
-      << " s of trials, " << totals.clock << " s of pool time with pauses\n"
+      << campaign.trials.size() << " trials, " << totals.rows << " rows, "
+      << model::DurationText(totals.trial_time) << " of trials, "
+      << model::DurationText(totals.clock) << " of pool time with pauses\n"
       << "Campaign: " << (fs::path(o.out) / "campaign.yaml").string() << "\n";
   if (!o.json.empty()) {
     WriteJson(o.json, SimulationJson(campaign, designs, o, truth.integration_step_s));

@@ -109,7 +109,8 @@ void PrintFindings(const ident::DiagnosisResult& r, std::ostream& out) {
     out << "\n     evidence: likelihood ratio D = " << std::setprecision(1) << f.statistic << " on "
         << f.added_parameters << " parameter(s), p = " << std::scientific << std::setprecision(1)
         << f.p_value << std::fixed << "\n     gain: velocity MAE " << std::setprecision(4)
-        << f.gain.before << " -> " << f.gain.after << " (" << std::setprecision(0)
+        << f.gain.before << " -> " << f.gain.after << " " << model::VelocityUnit(f.dof) << " ("
+        << std::setprecision(0)
         << 100.0 * f.gain.relative << "% better) on " << f.gain.on << "\n";
     for (const auto& m : f.thrust_maps) PrintThrustMap(m, out);
     PrintStaticMaps(f, out);

@@ -71,6 +71,28 @@ TEST(ReadCampaignTest, ADirectoryStandsForItsCampaignYaml) {
   EXPECT_EQ(by_dir.trials[0].log.t, by_file.trials[0].log.t);
 }
 
+// A log copied under another name (`uuvplan log` twice with new ids) is the same data counted
+// twice, however it is named: refused as the same path is (exit 2 in the tool), a warning
+// with --accept-implausible.
+TEST(ReadCampaignTest, ACopyOfALogIsRefusedAsTheSameLog) {
+  ScratchDir dir;
+  std::filesystem::copy_file(dir.Path("trials/surge_0.csv"), dir.Path("trials/surge_copy.csv"));
+  const std::string path = dir.Write(
+      "copies.yaml",
+      "vehicle: vehicle.yaml\ntrials:\n  - file: trials/surge_0.csv\n    dof: surge\n"
+      "  - file: trials/surge_copy.csv\n    dof: surge\n");
+  try {
+    ReadCampaign(path);
+    ADD_FAILURE() << "a copied log was read";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("copies.yaml:5: trials[1].file: implausible: a copy of the "
+                                    "log of trials[0] ('trials/surge_0.csv')"));
+  }
+  // One changed digit is another log.
+  dir.Edit("trials/surge_copy.csv", "\n0,", "\n0.0,");
+  EXPECT_EQ(ReadCampaign(path).trials.size(), 2u);
+}
+
 TEST(ReadCampaignTest, PoolIsOptionalAndTrialsMayBeNone) {
   ScratchDir dir;
   const std::string path = dir.Write("empty_campaign.yaml", "vehicle: vehicle.yaml\ntrials: []\n");

@@ -95,6 +95,15 @@ TEST(Log, RefusesTheWrongTrialAndATakenIdLeavingTheCampaignAsItWas) {
                                 day.scratch);
   EXPECT_EQ(again.status, 2);
   EXPECT_THAT(again.err, HasSubstr("already logged"));
+  // The same log under a new id is the same data counted twice (a copy, however named).
+  const ToolRun copy = RunTool("log " + campaign_dir + " " + day.Csv("surge_steady") +
+                                   " --trial surge_copy --dof surge --mapping surge-front",
+                               day.scratch);
+  EXPECT_EQ(copy.status, 2);
+  EXPECT_THAT(copy.err, HasSubstr("not logged (" + day.campaign + " is unchanged)"));
+  EXPECT_THAT(copy.err, HasSubstr(day.campaign + ":"));  // the place in campaign.yaml
+  EXPECT_THAT(copy.err, HasSubstr("a copy of the log of trials[0] ('trials/surge_steady.csv')"));
+  EXPECT_FALSE(std::filesystem::exists(day.scratch / "campaign/trials/surge_copy.csv"));
   EXPECT_EQ(ReadText(day.campaign), yaml);
   EXPECT_FALSE(std::filesystem::exists(day.scratch / "campaign/trials/surge_sine.csv"));
 }

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <vector>
 
 #include "uuvplan/io/plausibility.h"
 #include "uuvplan/model/util/text.h"
@@ -22,12 +24,33 @@ std::string Identity(const std::string& path) {
   return ec ? path : canonical.string();
 }
 
+// Whether two files hold the same bytes (a log copied under another name).
+bool SameContent(const std::string& a, const std::string& b) {
+  std::error_code ea, eb;
+  if (std::filesystem::file_size(a, ea) != std::filesystem::file_size(b, eb) || ea || eb) {
+    return false;
+  }
+  std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+  std::vector<char> ba(1 << 16), bb(1 << 16);
+  while (fa && fb) {
+    fa.read(ba.data(), ba.size());
+    fb.read(bb.data(), bb.size());
+    if (fa.gcount() != fb.gcount() ||
+        !std::equal(ba.begin(), ba.begin() + fa.gcount(), bb.begin())) {
+      return false;
+    }
+  }
+  return fa.eof() && fb.eof();
+}
+
 void CheckNotRepeated(const model::Campaign& campaign, std::size_t index, const Value& item) {
   const std::string self = Identity(campaign.trials[index].path);
   for (std::size_t j = 0; j < index; ++j) {
-    if (Identity(campaign.trials[j].path) != self) continue;
+    const bool same_file = Identity(campaign.trials[j].path) == self;
+    if (!same_file && !SameContent(campaign.trials[j].path, campaign.trials[index].path)) continue;
     Implausible(Place(item.file(), item.line(), item.KeyPath("file")),
-                "the same log as trials[" + std::to_string(j) + "] ('" + campaign.trials[j].file +
+                std::string(same_file ? "the same log as" : "a copy of the log of") + " trials[" +
+                    std::to_string(j) + "] ('" + campaign.trials[j].file +
                     "'): a trial fitted and validated on the same data, or counted twice, "
                     "makes the σ and the validation meaningless");
     return;

@@ -90,6 +90,16 @@ model::Campaign AppendLoggedTrial(const std::string& campaign_path, const Logged
   try {
     WriteCampaignYaml(next.string(), campaign);
     ReadCampaign(next.string());
+  } catch (const model::InputError& e) {
+    fs::remove(next, ec);
+    fs::remove(dir / file, ec);
+    // The fault as it would read in campaign.yaml with the trial logged (not the scratch file).
+    std::string message = e.what();
+    for (std::size_t at; (at = message.find(next.string())) != std::string::npos;) {
+      message.replace(at, next.string().size(), yaml.string());
+    }
+    throw model::InputError(trial.csv, "not logged (" + yaml.string() +
+                                           " is unchanged): with it, " + message);
   } catch (...) {
     fs::remove(next, ec);
     fs::remove(dir / file, ec);
