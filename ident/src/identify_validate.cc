@@ -119,52 +119,72 @@ void FailWithoutEstimate(DofIdentification* r) {
   }
 }
 
-// Whether some fit trial applies a force of known size: a non-zero command through a mapping
-// and direction whose η is not a parameter of the model (open water, or 1 by contract).
-bool AppliesKnownForce(const DofContext& c) {
+// The fit trials' thrust: whether any row commands a force, and whether one of known size — a
+// non-zero command through a mapping and direction whose η is not a parameter of the model
+// (open water, 1 by contract, or no mapping: the thrust term's η = 1).
+struct ForceKinds {
+  bool any = false, known = false;
+};
+ForceKinds FitForces(const DofContext& c) {
+  ForceKinds k;
   for (const TrialData* d : c.trials.fit) {
-    for (std::size_t i = 0; i < d->force.size(); ++i) {
-      if (d->force[i] == 0 || d->mapping[i] < 0) continue;
+    for (std::size_t i = 0; i < d->force.size() && !k.known; ++i) {
+      if (d->force[i] == 0) continue;
+      k.any = true;
+      if (d->mapping[i] < 0) {
+        k.known = true;
+        continue;
+      }
       const auto dir = d->force[i] > 0 ? model::Direction::kPos : model::Direction::kNeg;
       const std::string& mapping = c.vehicle.mappings[d->mapping[i]].name;
-      if (c.model.ParameterIndex(model::EtaName(mapping, dir)) < 0) return true;
+      k.known = c.model.ParameterIndex(model::EtaName(mapping, dir)) < 0;
     }
   }
-  return false;
+  return k;
 }
 
 // Without a force of known size the model is homogeneous in its parameters: (m, k, kq, bias,
 // η) and c·(m, k, kq, bias, η) give the same motion, so no estimate is determined, whatever
 // values are held (seed 000 §II-A: η must be known for at least one mapping and direction).
+// (No thrust at all, or no estimate, fails for its own reason.)
 void FailWithoutKnownForce(const DofContext& c, DofIdentification* r) {
-  if (AppliesKnownForce(c)) return;
+  const ForceKinds k = FitForces(c);
+  if (k.known || !k.any || r->estimator == FinalEstimator::kNone) return;
   Fail("no force of known size: every fit trial's force goes through a mapping and direction "
        "whose installation coefficient η is unknown (not open water), so the parameters are "
        "determined only up to a common scale (seed 000 §II-A) and the values printed rest on the "
-       "η held at 1 — add legs in a mapping and direction declared open water", r);
+       "η held at 1 — add fit legs in a mapping and direction declared open water", r);
 }
 
 // An inertia ten times below the vehicle's a priori range is no vehicle's: most often a unit
 // mistake in the log, which scales every estimate — angles in degrees (m, k by 1/57.3), positions
 // in cm or mm (1/100, 1/1000) — too slow a motion for the input check's rate-vs-angle test to
 // see (ReadCampaignForIdentification); else a vehicle file that is wrong.
+struct UnitSlip {
+  double factor;
+  const char* unit;
+  bool rotation;
+};
+constexpr UnitSlip kUnitSlips[] = {{180 / M_PI, "degrees", true}, {100, "cm", false},
+                                   {1000, "mm", false}};
+
 void FailBelowPriorInertia(const DofContext& c, DofIdentification* r) {
   const ParameterEstimate* m = r->Param(model::param::kMass);
-  if (!m || m->state != ParameterState::kEstimated || !(m->value > 0)) return;
+  if (!m || m->state != ParameterState::kEstimated || !m->significant || !(m->value > 0)) return;
   const auto [lo, hi] = c.vehicle.InertiaBounds(r->dof);
-  if (!(m->value < lo / 10)) return;
+  if (!(m->value + 3 * m->sigma < lo / 10) || !FitForces(c).known) return;  // 3σ: clearly below
   const bool rotation = model::IsRotational(r->dof);
-  const std::vector<std::pair<double, std::string>> units =
-      rotation ? std::vector<std::pair<double, std::string>>{{180 / M_PI, "degrees"}}
-               : std::vector<std::pair<double, std::string>>{{100, "cm"}, {1000, "mm"}};
+  // The slip that puts m nearest the range's geometric centre, if within a factor 2 of it.
   std::string likely;
-  for (const auto& [factor, unit] : units) {
-    if (m->value * factor >= lo / 2 && m->value * factor <= 2 * hi) {
-      likely = ": × " + Fmt(factor, 3) + " puts it in the range, so the log's " +
-               std::string(model::DofName(r->dof)) +
-               " positions and velocities are most likely in " + unit +
-               " — convert them to " + (rotation ? "rad" : "m");
-    }
+  double best = std::log(2.0);
+  for (const UnitSlip& s : kUnitSlips) {
+    if (s.rotation != rotation) continue;
+    const double miss = std::abs(std::log(m->value * s.factor / std::sqrt(lo * hi)));
+    if (miss > best) continue;
+    best = miss;
+    likely = ": × " + Fmt(s.factor, 3) + " puts it in the range, so the log's " +
+             std::string(model::DofName(r->dof)) + " positions and velocities are most likely in " +
+             s.unit + " — convert them to " + (rotation ? "rad" : "m");
   }
   const std::string unit = model::Unit(model::param::kMass, r->dof);
   Fail("m = " + Fmt(m->value) + " ± " + Fmt(m->sigma) + " " + unit + " is " +

@@ -275,7 +275,9 @@ CompletionResult CompleteWithLoopFamilies(const DofContext& ctx, const SineDesig
 }
 
 double TrialsToTarget(double sigma_now, double sigma_after, double sigma_target) {
-  if (!(sigma_after < sigma_now)) return std::numeric_limits<double>::infinity();
+  if (!(sigma_after < sigma_now) || !(sigma_target > 0) || !std::isfinite(sigma_target)) {
+    return std::numeric_limits<double>::infinity();
+  }
   if (!(sigma_now > sigma_target)) return 0.0;
   if (std::isinf(sigma_now)) return std::pow(sigma_after / sigma_target, 2);
   // Information adds: after n such trials 1/σ² = 1/σ_now² + n·(1/σ_after² − 1/σ_now²).

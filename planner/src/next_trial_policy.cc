@@ -213,6 +213,21 @@ class DofTrialPolicy {
         ctx, TrialsInformation(ctx, {d_->trial}, names.empty() ? nullptr : &prior));
   }
 
+  // Trials like this one to bring a parameter of value `value` to the target. One not determined
+  // yet (σ_now = ∞) that this trial determines — a first estimate, or one below the usable
+  // percentile error — counts as one trial: the next is planned from that estimate, so the rate
+  // of identical trials does not apply. Otherwise that rate (TrialsToTarget, whose limit for
+  // σ_now = ∞ is (σ_after/σ_target)²).
+  void SetTrialsToTarget(double value, CandidateGain* g) const {
+    const auto& o = planner_.options;
+    g->first_estimate = std::isinf(g->sigma_now) && std::isfinite(g->sigma_after) &&
+                        (!std::isfinite(value) || g->sigma_after < o.usable_percent / 100 * std::abs(value));
+    g->trials_to_target = g->first_estimate
+                              ? 1.0
+                              : TrialsToTarget(g->sigma_now, g->sigma_after,
+                                               o.target_percent / 100 * std::abs(value));
+  }
+
   // The planned trial's predicted gain (CandidateGain): the parameter of interest above the
   // target it brings nearest to the target, at the current estimates.
   CandidateGain Gain() {
@@ -223,23 +238,19 @@ class DofTrialPolicy {
     best.trials_to_target = std::numeric_limits<double>::infinity();
     for (const auto& q : progress_.interest) {
       if (q.percent <= planner_.options.target_percent) continue;
-      CandidateGain g = best;
+      CandidateGain g;
+      g.dof = dof_;
+      g.trial = best.trial;
       g.parameter = q.name;
       const auto after = d_->at_estimates.sigma.find(q.name);
-      g.sigma_after = after != d_->at_estimates.sigma.end() ? after->second : g.sigma_after;
+      g.sigma_after = after != d_->at_estimates.sigma.end()
+                          ? after->second
+                          : std::numeric_limits<double>::infinity();  // the trial does not reach it
       const auto known = std::find(names_.begin(), names_.end(), q.name);
       const int i = static_cast<int>(known - names_.begin());
       g.sigma_now = known != names_.end() ? std::sqrt(covariance_(i, i))
                                           : std::numeric_limits<double>::infinity();
-      // A parameter not determined yet (σ_now = ∞) that this trial determines is one trial from
-      // usable: the next is planned from its estimate, so the rate of identical trials does not
-      // apply; one it leaves undetermined counts at that rate (TrialsToTarget's limit).
-      const bool determines = std::isinf(g.sigma_now) &&
-                              g.sigma_after < planner_.options.usable_percent / 100 * std::abs(q.value);
-      g.trials_to_target = determines ? 1.0
-                                      : TrialsToTarget(g.sigma_now, g.sigma_after,
-                                                       planner_.options.target_percent / 100 *
-                                                           std::abs(q.value));
+      SetTrialsToTarget(q.value, &g);
       g.gain = std::isinf(g.sigma_now) ? (std::isfinite(g.sigma_after) ? 1.0 : 0.0)
                                        : 1.0 - g.sigma_after / g.sigma_now;
       if (!(g.trials_to_target >= best.trials_to_target)) best = g;

@@ -114,13 +114,8 @@ json IterationJson(const planner::LoopIteration& it) {
           {"notes", it.notes}};
 }
 
-// Before any file is read: a target and a budget the loop can reach.
+// Before any file is read: a budget the loop can spend (--target is checked by its option).
 void CheckLoopFlags(const planner::LoopOptions& lo) {
-  const double target = lo.step.target_percent;
-  if (!(target > 0) || !std::isfinite(target)) {
-    throw InputError("--target",
-                     "expected a percentile error > 0 (%), got " + model::ShortestNumber(target));
-  }
   if (lo.budget < 1) {
     throw InputError("--budget",
                      "expected a number of trials >= 1, got " + std::to_string(lo.budget));

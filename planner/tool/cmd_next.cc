@@ -94,8 +94,10 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
     const std::string unit = model::Unit(c.parameter, c.dof);
     out << "Candidate " << c.trial << " (" << model::DofName(c.dof) << "): σ(" << c.parameter
         << ") " << (std::isinf(c.sigma_now) ? "not determined yet" : Quantity(c.sigma_now, unit))
-        << " → " << Quantity(c.sigma_after, unit) << ", about "
-        << model::Significant(c.trials_to_target, 3) << " such trials to the target"
+        << " → " << Quantity(c.sigma_after, unit)
+        << (c.first_estimate ? ": this trial determines it (the next is planned from its estimate)"
+                             : ", about " + model::Significant(c.trials_to_target, 3) +
+                                   " such trials to the target")
         << (c.negligible ? " — negligible" : "") << "\n";
   }
   if (!r.notes.empty()) {
@@ -124,10 +126,6 @@ nlohmann::json NextStepJson(const planner::NextStepResult& r, double target) {
 }
 
 int RunNext(const NextCliOptions& o) {
-  if (!(o.design.target_percent > 0)) {
-    throw model::InputError("--target", "expected a percentile error > 0 (%), got " +
-                                            model::ShortestNumber(o.design.target_percent));
-  }
   const model::Campaign campaign = ReadCampaignForIdentification(o.campaign, o.accept_units);
   const model::Pool pool = io::ReadPool(o.pool);
   planner::DesignLoopOptions options = o.design;

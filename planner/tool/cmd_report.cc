@@ -70,11 +70,21 @@ void AddSchedule(const ReportCommandOptions& o, report::ReportInputs* in) {
   }
   in->title = "Schedule report";
   in->schedule = io::ReadScheduleJson(o.input);
-  // The verdict `check-pool VEHICLE --pool POOL --plan SCHEDULE --dof <its DOFs>` gives, with
-  // the default target and longest trial (as `schedule` without options).
+  // The verdict `schedule` stored with the file (its --target, --max-duration and DOFs), when
+  // it is this pool's; else judged here as check-pool would judge the file.
+  const auto stored = io::ReadScheduleVerdict(o.input);
+  if (stored && stored->sentence.rfind("Pool " + in->pool->name + " ", 0) == 0) {
+    in->verdict = {stored->hosted, stored->lines,
+                   "the verdict `schedule` gave when it planned this file"};
+    return;
+  }
   planner::ScheduleOptions so;
   so.dofs = io::ScheduleDofs(o.input);
-  in->verdict = planner::JudgePool(*in->vehicle, *in->pool, so, &*in->schedule);
+  const planner::PoolVerdict v = planner::JudgePool(*in->vehicle, *in->pool, so, &*in->schedule);
+  in->verdict = {v.hosted, planner::VerdictLines(v, *in->pool),
+                 "judged here as `check-pool VEHICLE --pool POOL --plan SCHEDULE --dof <its DOFs>` "
+                 "would, with the default target and longest trial: the file holds no verdict "
+                 "for pool '" + in->pool->name + "'"};
 }
 
 // The free runs of the standard and the extended model of each diagnosed DOF, on the trials

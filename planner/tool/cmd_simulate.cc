@@ -298,7 +298,7 @@ void BindSimulate(CLI::App* sub, SimulateOptions* o) {
       ->capture_default_str();
   sub->add_option("--step", o->step_s,
                   "RK4 integration step in s (default: the truth's virtual_pool.step, else 0.01)");
-  AddJsonOption(sub, &o->json, "also write a summary");
+  AddJsonOption(sub, &o->json, "also write a summary", /*check_now=*/false);
 }
 
 const CommandRegistration kRegistration(MakeCommand<SimulateOptions>(

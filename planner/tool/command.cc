@@ -42,14 +42,19 @@ CLI::Validator OutputFile() {
         }
         if (access(dir.c_str(), W_OK) != 0) return "the directory " + dir.string() + " is not writable";
         if (std::filesystem::is_directory(path)) return "expected a file, " + path + " is a directory";
+        if (std::filesystem::exists(path) && access(path.c_str(), W_OK) != 0) {
+          return path + " exists and is not writable";
+        }
         return "";
       },
       "FILE");
 }
 
-CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& what) {
-  return sub->add_option("--json", *path, what + " as JSON to this file ('-' = stdout)")
-      ->check(OutputFile());
+CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& what,
+                           bool check_now) {
+  CLI::Option* option =
+      sub->add_option("--json", *path, what + " as JSON to this file ('-' = stdout)");
+  return check_now ? option->check(OutputFile()) : option;
 }
 
 CLI::Option* AddTargetOption(CLI::App* sub, double* target_percent) {

@@ -59,7 +59,9 @@ CLI::Validator PositiveNumber(const std::string& what);
 /// be written and a command with two outputs writes both or neither: its directory exists and
 /// is writable ('-' = stdout passes).
 CLI::Validator OutputFile();
-CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& what);
+/// `check_now` false: the file may go into a directory the command creates (simulate --out).
+CLI::Option* AddJsonOption(CLI::App* sub, std::string* path, const std::string& what,
+                           bool check_now = true);
 
 /// `--target PCT`: the loop's target percentile error 100·σ/|θ| (%), the precision the pool
 /// verdict judges at (schedule, check-pool, next, loop; one default, planner::

@@ -184,8 +184,8 @@ void PrintCandidateTests(const ident::DiagnosisResult& r, std::ostream& out) {
 }  // namespace
 
 void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
-  out << "Standard model (contract: all eta = 1, symmetric drag, no extra terms), identified as "
-         "`identify` does (model selection by the 51.02% rule):\n";
+  out << "Standard model (contract: all eta = 1, symmetric drag, no extra terms), identified by "
+         "identify's chain with every eta held at 1 (model selection by the 51.02% rule):\n";
   PrintIdentifyTable(r.nominal, out);
   PrintBaseline(r, out);
   out << std::fixed;

@@ -85,6 +85,7 @@ json CandidatesJson(const std::vector<planner::CandidateGain>& candidates) {
                  {"sigma_after", Num(c.sigma_after)},
                  {"gain", Num(c.gain)},
                  {"trials_to_target", Num(c.trials_to_target)},
+                 {"first_estimate", c.first_estimate},
                  {"negligible", c.negligible}});
   }
   return j;

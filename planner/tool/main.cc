@@ -1,6 +1,7 @@
 // uuvplan <command> [options]: see docs/cli.md.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <exception>
@@ -13,19 +14,21 @@
 
 namespace {
 
-// CLI11 reads "-1" for an unsigned option as 2^64 − 1, and a number past 2^64 − 1 as 2^64 − 1:
-// every unsigned option (--seed, --budget) takes only numbers from 0 to 2^64 − 1 (exit 2
-// otherwise), so that two different seeds never give the same draws.
-void RefuseNegativeCounts(CLI::App& app) {
+// CLI11 reads "-1" for an unsigned option as 2^64 − 1, and a number past 2^64 − 1 (or in hex)
+// as 2^64 − 1: every unsigned option (--seed, --budget) takes only decimal digits that make a
+// number from 0 to 2^64 − 1 (exit 2 otherwise), so that two different seeds never give the
+// same draws.
+void RefuseCountsOutOfRange(CLI::App& app) {
   for (CLI::App* sub : app.get_subcommands({})) {
     for (CLI::Option* option : sub->get_options()) {
       if (option->get_type_name() != "UINT") continue;
       option->check(CLI::Validator(
           [](std::string& text) {
             std::uint64_t value = 0;
-            const bool too_large = std::from_chars(text.data(), text.data() + text.size(), value)
-                                       .ec == std::errc::result_out_of_range;
-            return text.find('-') == std::string::npos && !too_large
+            const char* end = text.data() + text.size();
+            const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+            const bool digits = !text.empty() && std::isdigit(static_cast<unsigned char>(text[0]));
+            return digits && ec == std::errc() && ptr == end
                        ? std::string()
                        : "expected a whole number from 0 to 18446744073709551615, got " + text;
           },
@@ -55,7 +58,7 @@ int main(int argc, char** argv) {
   app.add_flag("--accept-implausible", accept_implausible,
                "read values outside the plausible ranges of a pool trial (docs/formats.md, "
                "\"Plausibility\") as given, with a warning, instead of refusing the file");
-  RefuseNegativeCounts(app);
+  RefuseCountsOutOfRange(app);
   if (const auto unknown = UnknownNameMessage(app, argc, argv)) {
     std::cerr << *unknown << "\n";
     return kExitBadInput;

@@ -145,6 +145,7 @@ TEST(IdentifyCliTest, NoForceOfKnownSizeIsAFailureNotAnEstimate) {
   EXPECT_EQ(unknown.status, 1) << unknown.out;
   EXPECT_NE(unknown.out.find("FAILED: no force of known size"), std::string::npos) << unknown.out;
   const RunResult both = RunUuvplan("identify " + (dir / "c").string());
+  EXPECT_EQ(both.status, 0) << both.out;
   EXPECT_EQ(both.out.find("no force of known size"), std::string::npos) << both.out;
   fs::remove_all(dir);
 }

@@ -16,6 +16,7 @@ namespace uuvplan::tool_test {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::StartsWith;
 
 const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
@@ -72,6 +73,12 @@ TEST(Log, CampaignGrownOneTrialAtATimeFeedsNext) {
     const nlohmann::json j = nlohmann::json::parse(ReadText(json));
     EXPECT_TRUE(j.contains("status")) << j.dump();
     EXPECT_TRUE(j["estimates"]["dofs"].contains("surge")) << j.dump();
+    // A candidate is for a parameter above the target: some trials, never "about 0" (a
+    // parameter not determined yet once read so, the trial not even reaching it).
+    for (const auto& c : j["candidates"]) {
+      if (c["trials_to_target"].is_number()) EXPECT_GT(c["trials_to_target"].get<double>(), 0.0);
+    }
+    EXPECT_THAT(next.out, Not(HasSubstr("about 0 such trials"))) << next.out;
   }
 }
 

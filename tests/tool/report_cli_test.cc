@@ -137,6 +137,35 @@ TEST(ReportTool, ScheduleReportCarriesThePoolVerdictAndItsExitStatus) {
   EXPECT_THAT(html, HasSubstr("heave: NOT hosted"));
 }
 
+// The verdict a schedule was planned under (`--max-duration 10`: not hosted) is the one its report
+// gives, not the default target's; a plan without a stored verdict is judged as check-pool
+// would, and the report says so.
+TEST(ReportTool, ScheduleReportKeepsTheVerdictOfTheScheduleOptions) {
+  TempDir tmp;
+  const std::string plan = tmp / "schedule.json";
+  const ToolRun s = RunTool("schedule '" + kCases + "vehicle.yaml' --pool '" + kCases +
+                                "pool.yaml' --dof surge --max-duration 10 --json '" + plan + "'",
+                            tmp);
+  ASSERT_EQ(s.status, 1) << s.out << s.err;
+  const auto report = [&](const std::string& file, const std::string& dir) {
+    return RunTool("report '" + file + "' --vehicle '" + kCases + "vehicle.yaml' --pool '" +
+                       kCases + "pool.yaml' -o '" + (tmp / dir) + "'",
+                   tmp);
+  };
+  const ToolRun r = report(plan, "stored");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_THAT(ReadText(tmp / "stored/report.html"),
+              HasSubstr("CANNOT host the identification of surge"));
+  auto j = nlohmann::json::parse(ReadText(plan));
+  j.erase("verdict");  // a hand-made plan
+  const std::string bare = tmp.Write("bare.json", j.dump());
+  const ToolRun b = report(bare, "bare");
+  EXPECT_EQ(b.status, 0) << b.err;  // the default longest trial: hosted
+  const std::string html = ReadText(tmp / "bare/report.html");
+  EXPECT_THAT(html, HasSubstr("CAN host the identification of surge to 5%"));
+  EXPECT_THAT(html, HasSubstr("the file holds no verdict for pool"));
+}
+
 // A virtual ROMEO heave campaign (the planned heave trials run on truth-effects.yaml) after a
 // heave loop: estimates, validation, diagnosis (every candidate tested, in its table) and the
 // loop history. The virtual twin of the real-data report below.

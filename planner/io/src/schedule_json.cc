@@ -356,6 +356,29 @@ Schedule ReadScheduleJson(const std::string& path) {
   return schedule;
 }
 
+std::optional<StoredVerdict> ReadScheduleVerdict(const std::string& path) {
+  const json root_json = LoadJson(path);
+  const JsonValue root(root_json, path, "");
+  const auto v = root.Optional("verdict");
+  if (!v) return std::nullopt;
+  if (!v->json().is_object()) v->Expected("an object {hosted, sentence, lines}");
+  StoredVerdict out;
+  const auto hosted = v->Optional("hosted");
+  const auto sentence = v->Optional("sentence");
+  const auto lines = v->Optional("lines");
+  if (!hosted || !hosted->json().is_boolean()) v->Expected("an object with \"hosted\": true|false");
+  if (!sentence || !sentence->json().is_string()) v->Expected("an object with a \"sentence\"");
+  if (!lines || !lines->json().is_array()) v->Expected("an object with \"lines\": [...]");
+  out.hosted = hosted->json().get<bool>();
+  out.sentence = sentence->json().get<std::string>();
+  for (std::size_t i = 0; i < lines->json().size(); ++i) {
+    const JsonValue line = lines->Item(i);
+    if (!line.json().is_string()) line.Expected("a line of text");
+    out.lines.push_back(line.json().get<std::string>());
+  }
+  return out;
+}
+
 std::vector<model::Dof> ScheduleDofs(const std::string& path) {
   std::set<model::Dof> dofs;
   for (const PlannedTrial& t : ReadScheduleJson(path).trials) dofs.insert(t.design.dof);

@@ -54,10 +54,9 @@ ReportFiles BuildReport(const ReportInputs& in) {
   if (in.pool) doc.sections.push_back(PoolSection(*in.pool, in.pool_source));
   if (in.schedule) {
     std::vector<std::string> verdict;
-    if (in.verdict && in.pool) {
-      verdict = planner::VerdictLines(*in.verdict, *in.pool);
-      verdict.push_back("(The verdict `check-pool VEHICLE --pool POOL --plan SCHEDULE` gives for "
-                        "this schedule's DOFs, with its default target and longest trial.)");
+    if (in.verdict) {
+      verdict = in.verdict->lines;
+      verdict.push_back("(" + in.verdict->source + ".)");
     }
     Section s = ScheduleSection(*in.schedule, verdict);
     if (in.vehicle && in.pool) {
@@ -76,7 +75,8 @@ ReportFiles BuildReport(const ReportInputs& in) {
   if (!out.notes.empty()) doc.sections.push_back({"notes", "Notes", out.notes, {}, {}});
   doc.sections.insert(
       doc.sections.begin(),
-      SummarySection(in.schedule ? &*in.schedule : nullptr, in.verdict ? &*in.verdict : nullptr,
+      SummarySection(in.schedule ? &*in.schedule : nullptr,
+                     in.verdict && !in.verdict->lines.empty() ? &in.verdict->lines.front() : nullptr,
                      in.identification ? &*in.identification : nullptr,
                      in.diagnosis ? &*in.diagnosis : nullptr, in.loop ? &*in.loop : nullptr));
   out.files["report.html"] = Html(doc);

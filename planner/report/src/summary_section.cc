@@ -35,7 +35,7 @@ void AddDiagnosis(const ident::DiagnosisResult& r, Table* t) {
 
 }  // namespace
 
-Section SummarySection(const planner::Schedule* schedule, const planner::PoolVerdict* verdict,
+Section SummarySection(const planner::Schedule* schedule, const std::string* verdict_sentence,
                        const ident::IdentifyResult* identification,
                        const ident::DiagnosisResult* diagnosis, const io::LoopHistory* loop) {
   Section s{"summary", "Summary", {}, {}, {}};
@@ -46,7 +46,7 @@ Section SummarySection(const planner::Schedule* schedule, const planner::PoolVer
                           Number(schedule->pool_time / 60) + " min",
                       "Schedule"});
   }
-  if (verdict) t.rows.push_back({"pool verdict", verdict->sentence, "Schedule"});
+  if (verdict_sentence) t.rows.push_back({"pool verdict", *verdict_sentence, "Schedule"});
   if (identification) AddIdentification(*identification, &t);
   if (diagnosis) AddDiagnosis(*diagnosis, &t);
   if (loop) {

@@ -182,6 +182,9 @@ struct CandidateGain {
   double sigma_after = std::numeric_limits<double>::quiet_NaN();  ///< predicted
   double gain = 0.0;  ///< 1 − σ_after/σ_now of the bottleneck (1 when σ_now is +inf)
   double trials_to_target = 0.0;
+  /// σ_now is +inf (not determined yet) and this trial determines it: one trial, then planned
+  /// from its estimate (trials_to_target 1).
+  bool first_estimate = false;
   bool negligible = false;
 };
 

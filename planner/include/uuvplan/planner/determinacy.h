@@ -36,8 +36,8 @@ struct PrecisionGoal {
 
 /// Number of trials like one that takes σ_now to σ_after needed to reach σ_target (the
 /// information of independent trials adds: 1/σ² = 1/σ_now² + n·(1/σ_after² − 1/σ_now²));
-/// +inf when the trial adds nothing, 0 when σ_now is already there. σ_now = +inf (nothing
-/// known yet): the limit, n = (σ_after/σ_target)².
+/// +inf when the trial adds nothing (checked first) or the target is not a number > 0, 0 when
+/// σ_now is already there. σ_now = +inf (nothing known yet): the limit, n = (σ_after/σ_target)².
 double TrialsToTarget(double sigma_now, double sigma_after, double sigma_target);
 
 struct Determinacy {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,15 @@ planner::PlannedTrial TrialFromJson(const JsonValue& trial);
 /// Reads a schedule JSON file (as written by `uuvplan schedule --json`), or a `next` result
 /// (its single "trial"). Throws model::InputError on malformed input.
 planner::Schedule ReadScheduleJson(const std::string& path);
+/// The pool verdict `schedule` stored in its JSON ("verdict": hosted, sentence, lines).
+struct StoredVerdict {
+  bool hosted = false;
+  std::string sentence;            ///< "Pool <name> CAN host …"
+  std::vector<std::string> lines;  ///< planner::VerdictLines, the sentence first
+};
+/// The stored verdict, or nullopt when the file has none (a `next` result, a hand-made plan).
+/// Throws model::InputError when it is there but malformed.
+std::optional<StoredVerdict> ReadScheduleVerdict(const std::string& path);
 /// The DOFs a schedule file was planned for: those of its trials and those `schedule` could
 /// not plan (its "not_planned" keys), in DOF order. Throws model::InputError as above.
 std::vector<model::Dof> ScheduleDofs(const std::string& path);

@@ -14,7 +14,6 @@
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
 #include "uuvplan/planner/dof_context.h"
-#include "uuvplan/planner/pool_verdict.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/report/diagnosis_figures.h"
 
@@ -28,8 +27,14 @@ struct ReportInputs {
   std::optional<model::Pool> pool;
   std::string pool_source;
   std::optional<planner::Schedule> schedule;            ///< needs vehicle and pool for its figures
-  /// The pool verdict on the schedule (planner/pool_verdict.h), as `check-pool --plan` gives it.
-  std::optional<planner::PoolVerdict> verdict;
+  /// The pool verdict on the schedule (planner::VerdictLines, the sentence first) and where it
+  /// comes from.
+  struct Verdict {
+    bool hosted = false;
+    std::vector<std::string> lines;
+    std::string source;
+  };
+  std::optional<Verdict> verdict;
   planner::PlannerOptions planner;                      ///< the box the schedule's figures simulate
   std::optional<ident::IdentifyResult> identification;  ///< with free-run curves
   std::optional<ident::DiagnosisResult> diagnosis;

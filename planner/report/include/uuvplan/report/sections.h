@@ -11,7 +11,6 @@
 #include "uuvplan/io/loop_json.h"
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
-#include "uuvplan/planner/pool_verdict.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/report/html.h"
 
@@ -31,7 +30,7 @@ Section DiagnosisSection(const ident::DiagnosisResult& diagnosis);
 Section LoopSection(const io::LoopHistory& history);
 /// The verdicts first, so the first screen answers: schedule size and the pool's verdict on it,
 /// each DOF's identification status, the effects found, the loop's outcome (whichever are given).
-Section SummarySection(const planner::Schedule* schedule, const planner::PoolVerdict* verdict,
+Section SummarySection(const planner::Schedule* schedule, const std::string* verdict_sentence,
                        const ident::IdentifyResult* identification,
                        const ident::DiagnosisResult* diagnosis, const io::LoopHistory* loop);
 
