@@ -199,6 +199,9 @@ TEST(ReportTool, VirtualRomeoCampaignAfterLoopReport) {
   const auto id = nlohmann::json::parse(ReadText(tmp / "id.json"));
   const double m = id["dofs"]["heave"]["params"]["m"]["value"];
   EXPECT_THAT(html, HasSubstr("<td class=\"t\">m</td><td>" + model::Significant(m, 4) + "</td>"));
+  // And it is the truth's (720 kg, truth-effects.yaml) within 3σ — which the all-η-1 baseline,
+  // with η.vertical-all.neg = 0.56 absorbed into the weight, is not (seed 000 Fig. 6).
+  EXPECT_NEAR(m, 720.0, 3 * id["dofs"]["heave"]["params"]["m"]["sigma"].get<double>());
   EXPECT_THAT(html, HasSubstr("<td class=\"t\">installation_loss</td>"));  // a candidate tested
   EXPECT_THAT(html, HasSubstr("<td class=\"t\">identification of heave</td>"));  // the summary
   for (const char* fig : {"identification-heave-free-run", "identification-heave-residuals",
