@@ -174,6 +174,7 @@ void FailBelowPriorInertia(const DofContext& c, DofIdentification* r) {
   const auto [lo, hi] = c.vehicle.InertiaBounds(r->dof);
   if (!(m->value + 3 * m->sigma < lo / 10) || !FitForces(c).known) return;  // 3σ: clearly below
   const bool rotation = model::IsRotational(r->dof);
+  const std::string unit = model::Unit(model::param::kMass, r->dof);
   // The slip that puts m nearest the range's geometric centre, if within a factor 2 of it.
   std::string likely;
   double best = std::log(2.0);
@@ -182,11 +183,11 @@ void FailBelowPriorInertia(const DofContext& c, DofIdentification* r) {
     const double miss = std::abs(std::log(m->value * s.factor / std::sqrt(lo * hi)));
     if (miss > best) continue;
     best = miss;
-    likely = ": × " + Fmt(s.factor, 3) + " puts it in the range, so the log's " +
-             std::string(model::DofName(r->dof)) + " positions and velocities are most likely in " +
-             s.unit + " — convert them to " + (rotation ? "rad" : "m");
+    likely = ": × " + Fmt(s.factor, 3) + " gives " + Fmt(m->value * s.factor, 3) + " " + unit +
+             ", near the range, so the log's " + std::string(model::DofName(r->dof)) +
+             " positions and velocities are most likely in " + s.unit + " — convert them to " +
+             (rotation ? "rad" : "m");
   }
-  const std::string unit = model::Unit(model::param::kMass, r->dof);
   Fail("m = " + Fmt(m->value) + " ± " + Fmt(m->sigma) + " " + unit + " is " +
            Fmt(lo / m->value, 3) + "× below the vehicle's a priori range [" + Fmt(lo) + ", " +
            Fmt(hi) + "] " + unit +
