@@ -24,20 +24,11 @@ bool ClosedLoopIvOptions::IsValid(std::string* error) const {
 
 namespace {
 
-// The one-step rows with the columns no row excites left out (reported as not excited).
+// The one-step rows with the columns nothing excites left out (reported as not excited).
 OneStepRows ExcitedRows(const model::DofModel& model, const std::vector<const TrialData*>& trials,
                         const Eigen::VectorXd& theta, const std::vector<int>& linear,
                         const OneStepOptions& o, OneStepDofResult* res) {
-  OneStepRows all = BuildOneStepRows(model, trials, theta, linear, o);
-  std::vector<int> free;
-  for (std::size_t c = 0; c < linear.size(); ++c) {
-    if (all.F.rows() > 0 && all.F.col(1 + c).cwiseAbs().maxCoeff() > 0) {
-      free.push_back(linear[c]);
-    } else {
-      res->not_excited.push_back(model.parameter_names()[linear[c]]);
-    }
-  }
-  return free.size() == linear.size() ? all : BuildOneStepRows(model, trials, theta, free, o);
+  return ExcitedOneStepRows(model, trials, theta, linear, o, &res->not_excited);
 }
 
 // Rows k with rows k − d … k − d − L + 1 in the same run: F, Y, the instruments

@@ -19,18 +19,19 @@ double CommandRoughness(const TrialData& d) {
   std::sort(levels.begin(), levels.end());
   levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
   if (levels.size() <= std::max<std::size_t>(10, v.size() / 10)) return 0.0;
-  // Many levels: smooth (a sampled sine) or irregular (a controller reacting to noise).
-  std::vector<double> d1, d2;
+  // Many levels: smooth (a sampled sine) or irregular (a controller reacting to noise). The
+  // third difference of a sine sampled at ω·Δt is (ω·Δt)² times its first; of noise, ≥ 1.
+  std::vector<double> d1, d3;
   for (std::size_t i = 1; i < v.size(); ++i) {
     d1.push_back(std::abs(v[i] - v[i - 1]));
-    if (i >= 2) d2.push_back(std::abs(v[i] - 2 * v[i - 1] + v[i - 2]));
+    if (i >= 3) d3.push_back(std::abs(v[i] - 3 * v[i - 1] + 3 * v[i - 2] - v[i - 3]));
   }
   auto median = [](std::vector<double> x) {
     std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
     return x[x.size() / 2];
   };
   const double m1 = median(d1);
-  return m1 > 0 ? median(d2) / m1 : 0.0;
+  return m1 > 0 ? median(d3) / m1 : 0.0;
 }
 
 namespace stages {
@@ -91,11 +92,12 @@ model::ModelStructure ChooseStructure(const model::Vehicle& vehicle, model::Dof 
 }
 
 // Closed loop when told so, or (kAuto) when most fit trials' commands are rough
-// (CommandRoughness > 0.3).
+// (CommandRoughness > 0.4: a sine sampled at ≥ 10 points a period is below it, tartan's
+// controller commands 0.79–50).
 bool SuspectClosedLoop(const std::vector<const TrialData*>& fit, ClosedLoop setting) {
   int rough = 0;
   for (const TrialData* d : fit) {
-    if (CommandRoughness(*d) > 0.3) ++rough;
+    if (CommandRoughness(*d) > 0.4) ++rough;
   }
   return setting == ClosedLoop::kYes ||
          (setting == ClosedLoop::kAuto && 2 * rough > static_cast<int>(fit.size()));

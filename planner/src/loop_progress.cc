@@ -88,8 +88,10 @@ void JudgeTrust(const ident::DofIdentification* id, const ident::DofIdentificati
     p->consistency = internal::TestConsistency(*previous, *id, options.consistency_level);
   }
   if (!p->consistency.tested) {
-    p->doubts.push_back("not confirmed: " + p->consistency.text +
-                        (previous == nullptr ? " (one more trial confirms or refutes it)" : ""));
+    p->doubts.push_back(previous == nullptr
+                            ? "not confirmed: one estimate so far (one more trial confirms or "
+                              "refutes it)"
+                            : "not confirmed: " + p->consistency.text);
   } else if (!p->consistency.consistent) {
     p->doubts.push_back(p->consistency.text);
   }

@@ -257,7 +257,9 @@ class DofTrialPolicy {
     }
     // The a priori schedule's trials are designed as a set (seed 000: steady runs at several
     // levels, then the sine): one alone may inform nothing, and each runs once.
-    best.negligible = d_->source != kAPrioriSource &&
+    // A trial with no parameter above the target to bring down (every one below it but not
+    // confirmed, or nothing estimated yet) is not judged by a gain it cannot have.
+    best.negligible = d_->source != kAPrioriSource && !best.parameter.empty() &&
                       !(best.trials_to_target <= planner_.options.max_trials_to_target);
     return best;
   }
@@ -643,9 +645,9 @@ Decision Decide(Planner& planner, const model::Campaign& campaign, const std::ve
       continue;
     }
     std::ostringstream m;  // before `d` is replaced: `p` points into d.progress
-    m << name << " is furthest from the target (" << p->worst << " at "
-      << (std::isfinite(p->worst_percent) ? Fmt(p->worst_percent) + "%"
-                                          : std::string("not estimated yet"))
+    m << name << " is furthest from the target (" << p->worst
+      << (std::isfinite(p->worst_percent) ? " at " + Fmt(p->worst_percent) + "%"
+                                          : std::string(" not estimated yet"))
       << (p->precise && !p->doubts.empty() ? ", not trusted yet: " + p->doubts.front() : "")
       << "): " << tried.source << " trial '" << tried.trial.design.id << "'";
     d = std::move(tried);

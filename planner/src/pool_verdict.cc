@@ -68,22 +68,48 @@ model::Pool Offering(const model::Pool& pool, model::Dof dof, double free) {
   return p;
 }
 
-// The need of a DOF the pool's space limits, confirmed by planning it in a pool offering it.
+// The largest travel span of a schedule's trials (m or rad).
+double SpanOf(const ScheduleResult& r) {
+  double span = 0.0;
+  for (const auto& t : r.schedule.trials) span = std::max(span, t.travel[1] - t.travel[0]);
+  return span;
+}
+
+// The need of a DOF the pool's space limits, confirmed by planning it in a pool offering it,
+// then the smallest such pool by bisection between this pool's free travel (not hosted) and
+// the confirmed one: the planner fills the room it is given, so the first pool that hosts it
+// is no minimum (a 1.8 m pool was told 5.6 m where 3 m hosts). Each probe is a PlanSchedule;
+// the answer is always a pool that was planned and hosts the DOF.
 void ConfirmNeed(const model::Vehicle& vehicle, const model::Pool& pool,
                  const ScheduleOptions& options, const VerdictOptions& vo, DofVerdict* v) {
   ScheduleOptions so = options;
   so.dofs = {v->dof};
-  for (int i = 0; i <= vo.need_checks; ++i) {
-    const ScheduleResult r = PlanSchedule(vehicle, Offering(pool, v->dof, v->need), so);
+  const auto hosts = [&](double free) {
+    return PlanSchedule(vehicle, Offering(pool, v->dof, free), so);
+  };
+  double hi = kInf;
+  for (int i = 0; i <= vo.need_checks && !std::isfinite(hi); ++i) {
+    const ScheduleResult r = hosts(v->need);
     if (r.status == PlanStatus::kOk) {
-      v->need_verified = true;
-      for (const auto& t : r.schedule.trials) {
-        v->need = std::max(v->need, t.travel[1] - t.travel[0]);
-      }
-      return;
+      hi = std::max(v->need, SpanOf(r));
+    } else if (i < vo.need_checks) {
+      v->need *= 1.5;
     }
-    if (i < vo.need_checks) v->need *= 1.5;
   }
+  if (!std::isfinite(hi)) return;
+  v->need_verified = true;
+  double lo = std::isfinite(pool.FreeTravel(v->dof)) ? pool.FreeTravel(v->dof) : 0.0;
+  for (int i = 0; i < vo.need_bisections && hi - lo > vo.need_tolerance * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const ScheduleResult r = hosts(mid);
+    if (r.status == PlanStatus::kOk) {
+      hi = std::max(mid, SpanOf(r));
+    } else {
+      lo = mid;
+    }
+  }
+  v->need = hi;
+  v->need_refuted = lo;
 }
 
 // A DOF not hosted over the whole box, planned again at the box's centre and corners
@@ -288,18 +314,23 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
   out.plan_given = plan_checks != nullptr;
   if (plan_checks != nullptr) out.plan_checks = *plan_checks;
   out.hosted = !own.dofs.empty();
+  std::vector<char> plan_fits;
   for (const auto& p : own.dofs) {
-    DofVerdict v = JudgeOwn(&p, p.dof, pool);
-    const bool plan_fits = JudgePlanTrials(out.plan_checks, &v);
+    out.dofs.push_back(JudgeOwn(&p, p.dof, pool));
+    plan_fits.push_back(JudgePlanTrials(out.plan_checks, &out.dofs.back()));
+  }
+  // The DOFs not hosted, each searched on its own (PlannerOptions::threads; each writes only
+  // its verdict, so the answer does not depend on the threads).
+  model::ParallelFor(out.dofs.size(), options.planner.Threads(), [&](std::size_t i) {
+    DofVerdict& v = out.dofs[i];
     if (!v.hosted && std::isfinite(v.need) && vo.need_checks >= 0) {
       ConfirmNeed(vehicle, pool, options, vo, &v);
       BelowTargetUnlifted(pool, &v);
     }
     // A given plan that fails its own checks is judged as given: no other point rescues it.
-    if (!v.hosted && vo.judge_points && plan_fits) JudgePoints(vehicle, pool, options, &v);
-    out.hosted = out.hosted && v.hosted;
-    out.dofs.push_back(std::move(v));
-  }
+    if (!v.hosted && vo.judge_points && plan_fits[i]) JudgePoints(vehicle, pool, options, &v);
+  });
+  for (const DofVerdict& v : out.dofs) out.hosted = out.hosted && v.hosted;
   out.required = Required(pool, out.dofs);
   out.hostability = Overall(out.dofs);
   out.sentence = Sentence(out, pool);
@@ -331,7 +362,13 @@ std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
     << PoolLimitName(v.limit) << "): ";
   if (std::isfinite(v.need)) {
     s << (v.need_verified ? "needs " : "needs at least ") << Travel(pool, v.dof, v.need)
-      << (v.need_verified ? ", confirmed by planning it there" : "") << ". ";
+      << (v.need_verified ? ", confirmed by planning it there" : "");
+    if (v.need_verified && v.need_refuted > pool.FreeTravel(v.dof)) {
+      s << " (planned with " << (model::IsRotational(v.dof) ? model::AngleText(v.need_refuted)
+                                                           : Fmt(v.need_refuted, 4) + " m free")
+        << ", not hosted)";
+    }
+    s << ". ";
   } else {
     s << "no pool size lifts this limit. ";
   }
@@ -342,7 +379,46 @@ std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
   s << " Planned at the box's centre and corners: hosted "
     << (at.empty() ? "at none" : "at " + model::Join(at, "; "))
     << (not_at.empty() ? "" : "; not at " + model::Join(not_at, "; ")) << ".";
+  if (not_at.empty()) {
+    s << " Each is hosted when planned as a known vehicle; no one schedule hosts the whole box "
+         "(the robust design above), so the first trials decide which to run.";
+  }
   return s.str();
+}
+
+// The pool to book instead: along each DOF not hosted whose limit a larger pool lifts, the
+// smallest found (ConfirmNeed); the other sides as this pool. A hosted pool gets no such line
+// (its trials fill the room they are given: not a minimum).
+std::string RequiredLine(const PoolVerdict& v, const model::Pool& pool) {
+  std::ostringstream r;
+  const RequiredPool& q = v.required;
+  std::vector<std::string> sides;
+  bool rotation = false;
+  double bracket = 0.0;  // the widest (need − refuted) / need of the sides searched
+  for (const auto& d : v.dofs) {
+    if (d.hosted || !std::isfinite(d.need)) continue;
+    if (d.need_verified && d.need > 0) {
+      bracket = std::max(bracket, (d.need - std::max(d.need_refuted, pool.FreeTravel(d.dof))) / d.need);
+    }
+    if (model::IsRotational(d.dof)) {
+      rotation = true;
+      continue;
+    }
+    const double wall = d.dof == model::Dof::kSurge ? q.length
+                        : d.dof == model::Dof::kSway ? q.width : q.depth;
+    sides.push_back(std::string(model::Pool::SideName(d.dof)) + (d.need_verified ? " " : " at least ") + Fmt(wall, 4) +
+                    " m wall to wall (" + Fmt(wall - 2 * pool.margin, 4) + " m free)");
+  }
+  if (rotation) sides.push_back("tether " + Fmt(q.turns, 4) + " turns");
+  if (sides.empty()) return "  no pool size lifts the limits above";
+  r << "  smallest pool found that hosts every DOF asked for";
+  if (bracket > 0) {
+    r << " (each side planned there; " << Fmt(100 * bracket, 2)
+      << "% less free travel, or less, was planned and does not host)";
+  }
+  r << ": " << model::Join(sides, "; ")
+    << (q.exists ? "; the rest as this pool" : "; but some DOF is limited by what no pool size lifts");
+  return r.str();
 }
 
 }  // namespace
@@ -358,21 +434,7 @@ std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& p
     << " turns";
   out.push_back(p.str());
   for (const auto& d : v.dofs) out.push_back(DofLine(d, pool));
-  std::ostringstream r;
-  const RequiredPool& q = v.required;
-  r << "  smallest pool that hosts every DOF asked for:";
-  bool rotation = false;
-  for (const auto& d : v.dofs) {
-    const double wall = d.dof == model::Dof::kSurge ? q.length
-                        : d.dof == model::Dof::kSway ? q.width : q.depth;
-    rotation = rotation || model::IsRotational(d.dof);
-    if (model::IsRotational(d.dof)) continue;
-    r << " " << model::Pool::SideName(d.dof) << " " << Fmt(wall, 4) << " m wall to wall ("
-      << Fmt(wall - 2 * pool.margin, 4) << " m free);";
-  }
-  if (rotation) r << " tether " << Fmt(q.turns, 4) << " turns;";
-  r << (q.exists ? " the rest as this pool" : " but some DOF is limited by what no pool size lifts");
-  out.push_back(r.str());
+  if (!v.hosted) out.push_back(RequiredLine(v, pool));
   if (v.hostability == Hostability::kPart) {
     out.push_back(
         "  assumption: judged over the whole a priori box (the vehicle file's inertia bounds and "

@@ -328,10 +328,12 @@ void PlanFlatSineAsSteady(const DofContext& ctx, SineDesignResult* result) {
   const ForceRange range =
       ctx.ForceRangeFor(ctx.vehicle().MappingIndex(d.mapping), d.offset > 0 ? 1 : -1);
   std::ostringstream s;
+  const std::string unit(model::ForceUnit(d.dof));
   s << d.mapping << ": the best sine has no amplitude — a steady run from rest at "
-    << d.offset << " for " << d.duration << " s carries more information than any swing within "
-    << "the force range [" << range.min_abs << ", " << range.max_abs
-    << "] that min_thrust and the speed limit leave; planned as that steady run (a wider "
+    << model::Significant(d.offset, 4) << " " << unit << " for " << model::Significant(d.duration, 4)
+    << " s carries more information than any swing within the force range ["
+    << model::Significant(range.min_abs, 4) << ", " << model::Significant(range.max_abs, 4) << "] "
+    << unit << " that min_thrust and the speed limit leave; planned as that steady run (a wider "
        "range — lower min_thrust, a larger max_rotation_rate / max_translation_speed — would "
        "allow a true sine)";
   result->notes.push_back(s.str());

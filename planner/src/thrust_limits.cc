@@ -6,6 +6,8 @@
 #include <limits>
 #include <sstream>
 
+#include "uuvplan/model/util/text.h"
+
 namespace uuvplan::planner {
 
 ForceRange DirectionForceRange(const model::Vehicle& v, int mapping, int sign) {
@@ -36,8 +38,9 @@ ForceRange DirectionForceRange(const model::Vehicle& v, int mapping, int sign) {
   if (!r.feasible) {
     std::ostringstream s;
     s << "mapping '" << m.name << "' " << (sign > 0 ? "positive" : "negative")
-      << ": the thrusters give at most |phi| = " << r.max_abs << " but min_thrust needs "
-      << r.min_abs;
+      << ": the thrusters give at most |phi| = " << model::Significant(r.max_abs, 4) << " "
+      << model::ForceUnit(m.dof) << " but min_thrust needs " << model::Significant(r.min_abs, 4)
+      << " " << model::ForceUnit(m.dof);
     r.reason = s.str();
   }
   return r;

@@ -132,6 +132,17 @@ nlohmann::json CheckPoolJson(const planner::PoolCheckResult& r,
   return j;
 }
 
+// The headline in the verdict's own words (one question, one answer): a pool hosting part of
+// the a priori box is not "CANNOT".
+std::string HeadlineWord(planner::Hostability h) {
+  switch (h) {
+    case planner::Hostability::kAll: return "CAN host it";
+    case planner::Hostability::kPart: return "can host it for PART of the a priori box only";
+    case planner::Hostability::kNone: break;
+  }
+  return "CANNOT host it";
+}
+
 int RunCheckPool(const CheckPoolCliOptions& o) {
   const model::Vehicle vehicle = io::ReadVehicle(o.vehicle);
   const model::Pool pool = io::ReadPool(o.pool);
@@ -146,7 +157,7 @@ int RunCheckPool(const CheckPoolCliOptions& o) {
   std::ostream& out = ReportStream(o.json);
   out << "Pool " << pool.name << " for " << vehicle.name << ", "
       << (o.plan.empty() ? "the planner's own schedule" : "plan " + o.plan) << ": "
-      << (verdict.hosted ? "CAN host it" : "CANNOT host it") << "\n\n";
+      << HeadlineWord(verdict.hostability) << "\n\n";
   PrintTrialChecks(r, out);
   PrintVerdict(verdict, pool, out);
   if (r.has_alternative) PrintAlternative(r, out);

@@ -6,11 +6,13 @@
 // (planner/log_check.h), which also gives the DOF and mapping.
 // Exit status (docs/cli.md): 0 logged; 2 bad input (nothing changed), including a log that is
 // not the planned trial.
+#include <algorithm>
 #include <iostream>
 #include <optional>
 #include <string>
 
 #include "command.h"
+#include "uuvplan/ident/outliers.h"
 #include "uuvplan/io/campaign_log.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
@@ -63,6 +65,20 @@ io::LoggedTrial TrialOf(const LogCliOptions& o, const model::TrialDesign* design
   return t;
 }
 
+// Drop-outs said when the trial is logged, not first by identify (seed 000 Fig. 14: a step
+// longer than 3× the median step is a gap; filters and integrals never cross one).
+void PrintGaps(const model::TrialEntry& e) {
+  const std::vector<ident::Gap> gaps = ident::FindGaps(e.log.t);
+  if (gaps.empty()) return;
+  const auto longest = std::max_element(gaps.begin(), gaps.end(), [](const auto& a, const auto& b) {
+    return a.t1 - a.t0 < b.t1 - b.t0;
+  });
+  std::cout << "note: " << gaps.size() << " gap(s) in the log (steps over 3× the median), the "
+            << "longest " << model::DurationText(longest->t1 - longest->t0) << " from t = "
+            << model::Significant(longest->t0, 6) << " s: identification neither filters nor "
+            << "integrates across a gap, so the trial counts as shorter pieces\n";
+}
+
 int RunLog(const LogCliOptions& o) {
   std::optional<model::TrialDesign> design;
   if (!o.plan.empty()) design = PlannedDesign(o.plan, o.id);
@@ -83,6 +99,7 @@ int RunLog(const LogCliOptions& o) {
             << (e.mapping.empty() ? "-" : e.mapping) << ", " << e.log.size() << " rows, "
             << model::DurationText(span) << (design ? ", as planned" : "") << ") as " << e.file
             << " of " << c.path << ": " << c.trials.size() << " trial(s)\n";
+  PrintGaps(e);
   return kExitOk;
 }
 

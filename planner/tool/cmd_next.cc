@@ -61,6 +61,21 @@ void PrintNextTrial(const planner::NextStepResult& r, std::ostream& out) {
   }
 }
 
+// Why a candidate has no bottleneck parameter (CandidateGain::parameter empty).
+std::string NoBottleneck(const std::vector<planner::DofProgress>& progress, model::Dof dof) {
+  for (const auto& p : progress) {
+    if (p.dof != dof) continue;
+    if (p.precise) {
+      return "every parameter of interest is below the target; this trial tests the estimate "
+             "(trusted once a second estimate agrees)";
+    }
+    if (!std::isfinite(p.worst_percent)) {
+      return "nothing is estimated yet; this trial starts the estimate";
+    }
+  }
+  return "no parameter of interest above the target is reached by this trial";
+}
+
 void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& campaign,
                    const model::Pool& pool, const NextCliOptions& o, std::ostream& out) {
   const double target = o.design.target_percent;
@@ -91,6 +106,11 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
       break;
   }
   for (const auto& c : r.candidates) {
+    if (c.parameter.empty()) {
+      out << "Candidate " << c.trial << " (" << model::DofName(c.dof)
+          << "): no σ to predict: " << NoBottleneck(r.progress, c.dof) << "\n";
+      continue;
+    }
     const std::string unit = model::Unit(c.parameter, c.dof);
     out << "Candidate " << c.trial << " (" << model::DofName(c.dof) << "): σ(" << c.parameter
         << ") " << (std::isinf(c.sigma_now) ? "not determined yet" : Quantity(c.sigma_now, unit))

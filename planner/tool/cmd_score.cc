@@ -39,11 +39,14 @@ void PrintScores(const ident::ScoreResult& r, const ScoreCommandOptions& co, std
       << "use" << std::right << std::setw(18) << "velocity MAE" << std::setw(16) << "position RMS"
       << std::setw(10) << "samples" << "\n";
   for (const ident::TrialScore& s : r.trials) {
-    const std::string unit(model::VelocityUnit(s.dof)), pos(model::PositionUnit(s.dof));
+    // Angles in degrees, as identify and diagnose print them (docs/cli.md); the JSON keeps rad.
+    const bool rotation = model::IsRotational(s.dof);
+    const std::string unit(model::VelocityUnit(s.dof)), pos(rotation ? "°" : "m");
     out << "  " << std::left << std::setw(32) << s.fit.name << std::setw(7)
         << model::DofName(s.dof) << std::setw(10) << io::TrialUseName(s.fit.use) << std::right
         << std::setw(18) << Number(s.fit.velocity_mae, unit) << std::setw(16)
-        << Number(s.fit.position_rms, pos) << std::setw(10) << s.fit.velocity_samples << "\n";
+        << Number((rotation ? 180.0 / M_PI : 1.0) * s.fit.position_rms, pos) << std::setw(10)
+        << s.fit.velocity_samples << "\n";
   }
   for (const ident::DofScore& d : r.dofs) {
     const std::string unit(model::VelocityUnit(d.dof));

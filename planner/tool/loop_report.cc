@@ -27,6 +27,19 @@ std::string Percent(double p) {
   return s.str();
 }
 
+// "5.00%" at or below the target, "12.3%*" above it; a value above it that rounds to it gets
+// six significant digits that show it ("5.0012%*", not "5.00%*").
+std::string PercentAgainst(double p, double target) {
+  if (p <= target) return Percent(p);
+  std::string text = Percent(p);
+  if (text == Percent(target)) {
+    std::ostringstream s;
+    s << std::setprecision(6) << p << "%";
+    text = s.str();
+  }
+  return text + "*";
+}
+
 }  // namespace
 
 std::string TrialLine(const model::TrialDesign& d) {
@@ -69,7 +82,7 @@ std::string InterestText(model::Dof dof, const planner::InterestParameter& q, do
   s << model::Significant(q.value, 4) << u;
   if (std::isfinite(q.sigma)) s << " ± " << model::Significant(q.sigma, 3);
   else s << " (no σ: not estimated)";
-  if (q.estimated) s << " (" << Percent(q.percent) << (q.percent <= target ? "" : "*") << ")";
+  if (q.estimated) s << " (" << PercentAgainst(q.percent, target) << ")";
   if (q.held) s << " [HELD: no information]";
   if (!q.physical) s << " [NON-PHYSICAL]";
   return s.str();
@@ -97,6 +110,9 @@ std::string DofHeadline(const planner::DofProgress& p, double target) {
   if (p.converged) return "converged: every parameter of interest below " + Percent(target);
   if (p.precise) {
     return "every parameter of interest below " + Percent(target) + " but NOT trusted";
+  }
+  if (!std::isfinite(p.worst_percent)) {
+    return "worst " + p.worst + ": not estimated yet (target " + Percent(target) + ")";
   }
   return "worst " + p.worst + " at " + Percent(p.worst_percent) + " (target " + Percent(target) +
          ")";

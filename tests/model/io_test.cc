@@ -569,6 +569,23 @@ TEST(ReadPoolTest, MarginLeavesNoRoom) {
                         "width and depth), got '2'"));
 }
 
+// The explorer's case: a 25 × 12 × 5 m pool with a 1.5 m margin, written in cm. Each number is
+// a valid length, but no pool is 500 m deep and no margin 150 m: the depth is refused first,
+// and the message names the likely unit (docs/formats.md, "Plausibility").
+TEST(ReadPoolTest, APoolInCentimetresIsRefusedNamingTheUnit) {
+  ScratchDir dir;
+  const std::string cm = dir.Write("p_cm.yaml", "name: p\nlength: 2500\nwidth: 1200\ndepth: 500\nmargin: 150\n");
+  EXPECT_THAT(ErrorOf([&] { ReadPool(cm); }),
+              HasSubstr(At("p_cm.yaml", 4) + " depth: implausible: expected a pool depth in [0.1, 100] m, "
+                        "got 500: is it in cm? 5 m would be plausible"));
+  const std::string margin = dir.Write("m.yaml", "length: 25\nwidth: 12\ndepth: 5\nmargin: 150\n");
+  EXPECT_THAT(ErrorOf([&] { ReadPool(margin); }),
+              HasSubstr("margin: implausible: expected a pool margin in [0, 20] m, got 150: is it in "
+                        "cm? 1.5 m would be plausible"));
+  // The cases' pools (4.5 m tank to a 25 m pool, margins 0.4–2 m) stay well inside.
+  EXPECT_EQ(ReadPool(dir.Write("ok.yaml", "length: 25\nwidth: 12\ndepth: 5\nmargin: 2\n")).depth, 5);
+}
+
 TEST(ReadPoolTest, UnknownKey) {
   ScratchDir dir;
   dir.Edit("pool.yaml", "width: 12", "breadth: 12");

@@ -118,12 +118,16 @@ void CheckForces(const model::Vehicle& vehicle, const model::TrialEntry& trial,
       if (model::plausible::kForceRatio.Holds(std::abs(force[i]) / scale) || std::isnan(force[i])) {
         continue;
       }
+      const std::string unit(model::ForceUnit(dof));
       Implausible(Place(item.file(), item.line(), item.KeyPath("file")),
                   trial.file + ": column 'force_" + std::string(model::DofName(dof)) +
                       "' at t = " + model::ShortestNumber(trial.log.t[i]) + " s (data row " +
-                      std::to_string(i + 1) + "): expected " +
-                      model::plausible::kForceRatio.Expected() + " (" + Significant(scale, 3) +
-                      "), got " + model::ShortestNumber(force[i]));
+                      std::to_string(i + 1) + "): expected at most " +
+                      Significant(model::plausible::kForceRatio.upper * scale, 3) + " " + unit +
+                      " (" + Significant(model::plausible::kForceRatio.upper, 4) +
+                      " × the vehicle's weight, " + Significant(scale, 3) + " " + unit +
+                      (model::IsRotational(dof) ? " × its largest size" : "") + "), got " +
+                      model::ShortestNumber(force[i]) + " " + unit);
       break;
     }
   }

@@ -40,6 +40,18 @@ void CheckPlausible(const Place& where, double x, const InputQuantity& quantity)
   if (!quantity.Holds(x)) Implausible(where, "expected " + quantity.Expected() + ", got " + Got(x));
 }
 
+void CheckPlausibleLength(const Place& where, double x, const InputQuantity& quantity) {
+  if (quantity.Holds(x)) return;
+  std::string hint;
+  for (const auto& [unit, per_metre] : {std::pair{"cm", 100.0}, std::pair{"mm", 1000.0}}) {
+    if (x > quantity.upper && quantity.Holds(x / per_metre)) {
+      hint = ": is it in " + std::string(unit) + "? " + Got(x / per_metre) + " m would be plausible";
+      break;
+    }
+  }
+  Implausible(where, "expected " + quantity.Expected() + ", got " + Got(x) + hint);
+}
+
 void CheckPlausibleParameter(const Place& where, double x, const model::ParameterFamily& family,
                              model::Dof dof, const model::Vehicle& vehicle) {
   const double scale = model::PlausibleScale(family, dof, vehicle);

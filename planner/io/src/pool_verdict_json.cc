@@ -43,6 +43,7 @@ nlohmann::json PoolVerdictJson(const planner::PoolVerdict& v, const model::Pool&
         {"extent", TravelJson(pool, d.dof, d.extent)},
         {"need", TravelJson(pool, d.dof, d.need)},
         {"need_verified", d.need_verified},
+        {"need_refuted", d.need_verified ? TravelJson(pool, d.dof, d.need_refuted) : nlohmann::json()},
         {"undetermined", d.determinacy.undetermined},
         {"hostability", std::string(planner::HostabilityName(d.hostability))},
         {"points", PointsJson(d)}};

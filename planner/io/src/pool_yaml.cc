@@ -20,17 +20,18 @@ Pool ReadPool(const std::string& path) {
     Pool pool;
     const Value name = m.Optional("name");
     pool.name = name.absent() ? fs::path(path).stem().string() : Name(name, "a pool name");
-    const auto dimension = [&m](const char* key) {
+    const auto dimension = [&m](const char* key, const InputQuantity& plausible) {
       const Value v = m.Required(key);
       const double x = Positive(v);
-      CheckPlausible(v, x, plausible::kPoolDimension);
+      CheckPlausibleLength(v, x, plausible);
       return x;
     };
-    pool.length = dimension("length");
-    pool.width = dimension("width");
-    pool.depth = dimension("depth");
+    pool.length = dimension("length", plausible::kPoolDimension);
+    pool.width = dimension("width", plausible::kPoolDimension);
+    pool.depth = dimension("depth", plausible::kPoolDepth);
     if (const Value margin = m.Optional("margin"); !margin.absent()) {
       pool.margin = NonNegative(margin);
+      CheckPlausibleLength(margin, pool.margin, plausible::kPoolMargin);
       if (!(2 * pool.margin < std::min({pool.length, pool.width, pool.depth}))) {
         margin.Expected("a margin that leaves room to move (2·margin < length, width and depth)");
       }

@@ -39,19 +39,29 @@ std::vector<Level> PoolLevels(const model::Pool& pool, Dof dof, double lo, doubl
 
 Panel PositionPanel(const planner::DofContext& ctx, const planner::PlannedTrial& trial) {
   const model::TrialDesign& d = trial.design;
-  const planner::PositionEnvelope e = planner::EnvelopeOf(ctx, d, kPoints);
-  Panel p;
-  p.title = "position over the a priori box";
-  p.x_label = "t (s)";
-  p.y_label =
-      std::string(model::DofName(d.dof)) + " position (" + Unit(model::PositionUnit(d.dof)) + ")";
-  p.series.push_back(
-      {"envelope of the box", Style::kBand, Colour::kBandBlue, e.t, {}, e.low, e.high});
-  p.series.push_back({"centre vehicle", Style::kLine, Colour::kBlue, e.t, e.nominal, {}, {}});
+  planner::PositionEnvelope e = planner::EnvelopeOf(ctx, d, kPoints);
   const double lo = *std::min_element(e.low.begin(), e.low.end());
   const double hi = *std::max_element(e.high.begin(), e.high.end());
   const bool bounded = std::isfinite(ctx.pool().FreeTravel(d.dof));
-  if (bounded) p.levels = PoolLevels(ctx.pool(), d.dof, lo, hi);
+  std::vector<Level> levels;
+  if (bounded) levels = PoolLevels(ctx.pool(), d.dof, lo, hi);
+  // Headings in degrees, as people read them and as the verdict lines give them.
+  const bool turn = model::IsRotational(d.dof);
+  if (turn) {
+    for (auto* v : {&e.low, &e.high, &e.nominal}) {
+      for (double& x : *v) x *= 180.0 / M_PI;
+    }
+    for (Level& l : levels) l.y *= 180.0 / M_PI;
+  }
+  Panel p;
+  p.title = "position over the a priori box";
+  p.x_label = "t (s)";
+  p.y_label = std::string(model::DofName(d.dof)) + " position (" +
+              (turn ? std::string("°") : Unit(model::PositionUnit(d.dof))) + ")";
+  p.series.push_back(
+      {"envelope of the box", Style::kBand, Colour::kBandBlue, e.t, {}, e.low, e.high});
+  p.series.push_back({"centre vehicle", Style::kLine, Colour::kBlue, e.t, e.nominal, {}, {}});
+  p.levels = std::move(levels);
   p.levels.push_back({0.0, "start", Colour::kGrey, Style::kDotted});
   return p;
 }

@@ -95,10 +95,13 @@ Section ScheduleSection(const planner::Schedule& schedule,
   for (std::size_t i = 0; i < schedule.trials.size(); ++i) {
     const auto& t = schedule.trials[i];
     const auto& d = t.design;
+    // Rotations in degrees, as the terminal's verdict lines give them (the JSON stays in rad).
+    const bool turn = model::IsRotational(d.dof);
+    const double scale = turn ? 180.0 / M_PI : 1.0;
     trials.rows.push_back({std::to_string(i + 1), d.id, std::string(model::DofName(d.dof)),
                            std::string(model::TrialKindName(d.kind)), d.mapping, Number(d.duration),
-                           Number(t.travel[0]), Number(t.travel[1]),
-                           std::string(model::PositionUnit(d.dof)), Number(t.thrust_min)});
+                           Number(t.travel[0] * scale), Number(t.travel[1] * scale),
+                           turn ? "°" : std::string(model::PositionUnit(d.dof)), Number(t.thrust_min)});
   }
   s.tables.push_back(std::move(trials));
   Table predicted{

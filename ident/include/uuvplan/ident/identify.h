@@ -218,8 +218,10 @@ Eigen::VectorXd PriorTheta(const model::Vehicle& vehicle, const model::DofModel&
 /// Heuristic closed-loop check of a trial's logged force. Over the sequence of distinct
 /// consecutive command values: a designed piecewise-constant input (legs, steps, telegraph,
 /// PRBS) takes few levels (at most max(10, 10%) of its changes) → 0; otherwise the roughness
-/// median |Δ²φ| / median |Δφ| tells a smooth designed input (a sampled sine, ≪ 0.3) from a
-/// controller reacting to measurement noise (≳ 0.3: closed loop suspected).
+/// median |Δ³φ| / median |Δφ| tells a smooth designed input (a sine sampled at ω·Δt:
+/// (ω·Δt)², 0.1 for VSOR's 1 s heave sine at 20 Hz) from a controller reacting to measurement
+/// noise (≥ 1 for white noise; tartan 0.79–50): closed loop suspected above 0.4. The second
+/// difference (ω·Δt against ~1.4) took that sine for a controller (0.33 > 0.3).
 double CommandRoughness(const TrialData& trial);
 
 }  // namespace uuvplan::ident

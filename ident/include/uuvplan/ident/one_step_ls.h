@@ -109,6 +109,8 @@ OneStepRows BuildOneStepRows(const model::DofModel& model, const std::vector<con
 
 /// BuildOneStepRows without the `free` parameters no row excites (their names appended to
 /// `not_excited`; they keep their value in `theta`); empty `free`: every regressor-linear one.
+/// Without any row (trials too short for the knots) the regressors between consecutive samples
+/// decide: a parameter a trial moves is excited, and the output error fits it.
 OneStepRows ExcitedOneStepRows(const model::DofModel& model,
                                const std::vector<const TrialData*>& trials,
                                const Eigen::VectorXd& theta, std::vector<int> free,

@@ -136,6 +136,12 @@ inline constexpr InputQuantity kSensorRate{"a sensor rate", "Hz", 0.01, 1e5};
 inline constexpr InputQuantity kSensorSigmaRatio{"a sensor σ / vehicle size (1 rad for angles)", "1",
                                                  0, 100};
 inline constexpr InputQuantity kPoolDimension{"a pool dimension", "m", 0.1, 1e5};
+/// The deepest pool built is 60 m (Deep Dive Dubai); a depth above 100 m is a unit slip
+/// (a 5 m pool written in cm) more likely than a pool.
+inline constexpr InputQuantity kPoolDepth{"a pool depth", "m", 0.1, 100};
+/// The clearance kept from the walls, floor and surface is about a vehicle length (cases/):
+/// more than 20 m is a unit slip (1.5 m written in cm) more likely than a margin.
+inline constexpr InputQuantity kPoolMargin{"a pool margin", "m", 0, 20};
 /// A trial or leg from 1 ms to a day.
 inline constexpr InputQuantity kDuration{"a duration", "s", 1e-3, 86400};
 inline constexpr InputQuantity kIntegrationStep{"an integration step", "s", 1e-6, 1};

@@ -70,6 +70,9 @@ struct DofVerdict {
   /// pool size lifts the limit (thrust range, no reversal, duration).
   double need = 0.0;
   bool need_verified = false;  ///< a pool offering `need` was planned and hosts the DOF
+  /// The largest free travel planned that does not host it (ConfirmNeed's bisection; at
+  /// least this pool's).
+  double need_refuted = 0.0;
   Determinacy determinacy;     ///< of the planner's own schedule in this pool
   /// Determined, but the loop's target is out of reach of its trials in this pool
   /// (TargetReach of the schedule: the loop would end stuck).
@@ -80,7 +83,10 @@ struct DofVerdict {
   std::vector<PointVerdict> points;  ///< centre and corners checked when not hosted
 };
 
-/// Smallest pool that hosts every DOF asked for (wall to wall, m) and the tether turns.
+/// The pool that hosts every DOF asked for (wall to wall, m) and the tether turns: along a
+/// DOF not hosted, the smallest found (ConfirmNeed's bisection, to VerdictOptions::
+/// need_tolerance); along a hosted DOF, the room its trials use in this pool (the planner
+/// fills the room it is given: a smaller pool may host it too, not searched).
 struct RequiredPool {
   double length = 0.0, width = 0.0, depth = 0.0;  ///< m, wall to wall (free + 2·margin)
   double turns = 0.0;                              ///< full turns about roll, pitch or yaw
@@ -104,6 +110,14 @@ struct VerdictOptions {
   /// enlargements by 1.5×). CHOSEN 2: the first guess (the largest failing run) usually holds.
   /// Negative: no confirmation (`need` stays the first guess, need_verified false).
   int need_checks = 2;
+  /// Then the smallest pool between this one and the confirmed one, by bisection of the free
+  /// travel to `need_tolerance` of it (at most `need_bisections` plannings): the answer is
+  /// the smallest pool found that hosts, with the largest planned that does not
+  /// (DofVerdict::need_refuted). CHOSEN 5% and 6: the bracket shrinks up to 64×, to 5% for a
+  /// first guess up to 4× this pool's free travel, for 6 plannings of the DOF at most
+  /// (0.1–2.5 s each, the DOFs on PlannerOptions::threads).
+  int need_bisections = 6;
+  double need_tolerance = 0.05;
   /// Plan a DOF not hosted over the box again at the box's centre and corners (Hostability).
   /// false: a DOF not hosted is kNone without checking.
   bool judge_points = true;

@@ -28,6 +28,10 @@ void Implausible(const Place& where, const std::string& what);
 /// `x` must hold `quantity`.
 void CheckPlausible(const Place& where, double x, const model::InputQuantity& quantity);
 
+/// CheckPlausible for a length in m whose most likely slip is a smaller unit: the message
+/// names cm or mm when x/100 or x/1000 m would be plausible ("is it in cm? 5 m would be").
+void CheckPlausibleLength(const Place& where, double x, const model::InputQuantity& quantity);
+
 /// A parameter value of `family` on `dof` of `vehicle`, against the family's plausible ratio to
 /// the vehicle's scale (model::PlausibleScale).
 void CheckPlausibleParameter(const Place& where, double x, const model::ParameterFamily& family,
