@@ -25,7 +25,15 @@ std::string Percent(double r) {
   return s.str();
 }
 
-std::string Over(double r) { return r >= 0 ? "overpredicts" : "underpredicts"; }
+// A group's relative speed error exactly as the breakdown table prints it (signed, one decimal:
+// "+6.3%", "-0.1%"), so that a finding's sentence quotes the table's number, not a rounding of
+// it that can read "0%" or turn -0.6% into "1%".
+std::string SignedPercent(double r) {
+  std::ostringstream s;
+  s.precision(1);
+  s << std::fixed << std::showpos << 100.0 * r << "%";
+  return s.str();
+}
 
 // "0.082 ± 0.003 s" from the cross-correlation's lag and its σ (σ unknown: the value alone).
 std::string LagText(const ErrorBreakdown& b) {
@@ -73,11 +81,14 @@ std::vector<Proposal> SingleIfAbsent(const ProposalContext& c, const char* name,
   return {p};
 }
 
-// "simulation overpredicts speed by 38% <where>: <cause>", or the cause alone without a group.
+// "<cause> (the standard simulation's speed error <where>: +38.0%)", or the cause alone without
+// a group. The group's error is quoted as evidence beside the cause, not as its symptom: the
+// standard model's m, drag and bias are fitted to the data and absorb part of an effect, so
+// the error there can be small or even of the other sign (docs/diagnosis.md §2).
 std::string GroupSentence(const ErrorGroup* g, const std::string& where, const std::string& cause) {
   if (!g) return cause;
-  return "simulation " + Over(g->relative) + " speed by " + Percent(g->relative) + " " + where +
-         ": " + cause;
+  return cause + " (the standard simulation's speed error " + where + ": " +
+         SignedPercent(g->relative) + ")";
 }
 
 // η < 1 (seed 000 eq. 3, Table I): the thrust of a mapping and direction that is not in open
@@ -119,13 +130,14 @@ EffectEntry InstallationLoss() {
     const std::string mapping = name.substr(0, name.rfind('.'));
     const std::string sign = name.substr(name.rfind('.') + 1) == "neg" ? "negative" : "positive";
     std::string s = "thrust " + sign + " in mapping " + mapping + " delivers " +
-                    Percent(1 - worst->value) + " ± " + Significant(100 * worst->sigma, 2) + "%" +
+                    Significant(std::abs(100 * (1 - worst->value)), 3) + " ± " +
+                    Significant(100 * worst->sigma, 2) + "%" +
                     (worst->value <= 1 ? " less" : " more") +
                     " than the open-water model";
     if (const ErrorGroup* g =
             Labeled(f.breakdown.by_thrust, "thrust " + sign + " in " + mapping)) {
-      s += " (with eta = 1 the standard model's simulation " + Over(g->relative) +
-           " speed there by " + Percent(g->relative) + ")";
+      s += " (with eta = 1 the standard simulation's speed error there: " +
+           SignedPercent(g->relative) + ", its m, drag and bias absorbing part of the loss)";
     }
     return s;
   };
@@ -362,8 +374,8 @@ EffectEntry ThrustMap() {
                     Percent(fifth) + (fifth >= 0 ? " above" : " below") +
                     " what the thrust map says";
     if (const ErrorGroup* g = Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands)) {
-      s += " (the standard simulation " + Over(g->relative) + " speed by " +
-           Percent(g->relative) + " for small commands)";
+      s += " (the standard simulation's speed error for small commands: " +
+           SignedPercent(g->relative) + ")";
     }
     return s + ": the thrust map is wrong in shape";
   };

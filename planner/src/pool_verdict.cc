@@ -110,6 +110,7 @@ void ConfirmNeed(const model::Vehicle& vehicle, const model::Pool& pool,
   }
   v->need = hi;
   v->need_refuted = lo;
+  v->need_searched = vo.need_bisections > 0;
 }
 
 // A DOF not hosted over the whole box, planned again at the box's centre and corners
@@ -363,10 +364,14 @@ std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
   if (std::isfinite(v.need)) {
     s << (v.need_verified ? "needs " : "needs at least ") << Travel(pool, v.dof, v.need)
       << (v.need_verified ? ", confirmed by planning it there" : "");
-    if (v.need_verified && v.need_refuted > pool.FreeTravel(v.dof)) {
-      s << " (planned with " << (model::IsRotational(v.dof) ? model::AngleText(v.need_refuted)
-                                                           : Fmt(v.need_refuted, 4) + " m free")
-        << ", not hosted)";
+    if (v.need_verified && v.need_searched) {
+      if (v.need_refuted > pool.FreeTravel(v.dof)) {
+        s << " (planned with " << (model::IsRotational(v.dof) ? model::AngleText(v.need_refuted)
+                                                             : Fmt(v.need_refuted, 4) + " m free")
+          << ", not hosted)";
+      }
+    } else if (v.need_verified) {
+      s << " (not searched for the smallest: `uuvplan check-pool` does)";
     }
     s << ". ";
   } else {
@@ -411,10 +416,17 @@ std::string RequiredLine(const PoolVerdict& v, const model::Pool& pool) {
   }
   if (rotation) sides.push_back("tether " + Fmt(q.turns, 4) + " turns");
   if (sides.empty()) return "  no pool size lifts the limits above";
-  r << "  smallest pool found that hosts every DOF asked for";
-  if (bracket > 0) {
-    r << " (each side planned there; " << Fmt(100 * bracket, 2)
-      << "% less free travel, or less, was planned and does not host)";
+  bool searched = false;
+  for (const auto& d : v.dofs) searched = searched || d.need_searched;
+  if (searched) {
+    r << "  smallest pool found that hosts every DOF asked for";
+    if (bracket > 0) {
+      r << " (each side planned there; " << Fmt(100 * bracket, 2)
+        << "% less free travel, or less, was planned and does not host)";
+    }
+  } else {
+    r << "  a pool that hosts every DOF asked for (planned there; not the smallest: `uuvplan "
+         "check-pool` searches for it)";
   }
   r << ": " << model::Join(sides, "; ")
     << (q.exists ? "; the rest as this pool" : "; but some DOF is limited by what no pool size lifts");

@@ -152,8 +152,11 @@ int RunCheckPool(const CheckPoolCliOptions& o) {
   const TrialsToCheck checked = ChooseTrials(o, vehicle, pool, check.schedule);
   const planner::PoolCheckResult r = planner::CheckPool(vehicle, pool, checked.plan, check);
   // The plan's trials are checked once (CheckPool, same options) and judged on those checks.
+  // The command that answers "and if not, what would": it searches for the smallest pool.
+  planner::VerdictOptions search;
+  search.need_bisections = planner::kSmallestPoolBisections;
   const planner::PoolVerdict verdict = planner::JudgePoolOnChecks(
-      vehicle, pool, check.schedule, checked.own, checked.plan_given ? &r.trials : nullptr);
+      vehicle, pool, check.schedule, checked.own, checked.plan_given ? &r.trials : nullptr, search);
   std::ostream& out = ReportStream(o.json);
   out << "Pool " << pool.name << " for " << vehicle.name << ", "
       << (o.plan.empty() ? "the planner's own schedule" : "plan " + o.plan) << ": "

@@ -168,14 +168,19 @@ void PrintCandidateTests(const ident::DiagnosisResult& r, std::ostream& out) {
                    "verdict"});
   for (const auto& t : r.tests) {
     std::string verdict = t.significant ? "significant" : "not significant";
-    if (std::isfinite(t.gain)) verdict += t.accepted ? ", ACCEPTED" : ", not enough gain";
+    if (std::isfinite(t.gain)) {
+      verdict += t.accepted             ? ", ACCEPTED"
+                 : !t.removed.empty()   ? ", accepted, then removed: " + t.removed
+                 : t.not_chosen.empty() ? ", not enough gain"
+                                        : ", not chosen: " + t.not_chosen;
+    }
     if (!std::isfinite(t.gain) && !t.unscored.empty()) {
       verdict += ", held-out gain cannot be scored: " + t.unscored;
     }
     if (!t.non_physical.empty()) verdict += ", non-physical: " + t.non_physical;
     table.AddRow({std::string(model::DofName(t.dof)), std::to_string(t.round), t.effect,
                   t.detail.empty() ? "-" : t.detail, model::Significant(t.statistic, 3),
-                  model::Significant(t.max_z, 3),
+                  std::isfinite(t.max_z) ? model::Significant(t.max_z, 3) : "-",
                   std::isfinite(t.gain) ? model::Significant(100.0 * t.gain, 3) : "-", verdict});
   }
   table.Print(out);

@@ -226,16 +226,18 @@ TEST(PoolVerdict, TheProposedPoolIsTheSmallestFoundThatHosts) {
   so.dofs = {Dof::kSurge};
   VerdictOptions no_points;
   no_points.judge_points = false;
+  VerdictOptions search = no_points;  // as check-pool searches
+  search.need_bisections = kSmallestPoolBisections;
   const auto pool_of_free = [](double free) {  // as ConfirmNeed offers it (1 cm of safety)
     return model::Pool{"probe", 1.2 + free + 0.01, 8.0, 6.0, 0.6};
   };
   std::vector<double> found;
   for (double length : {1.8, 2.5}) {
     const PoolVerdict verdict =
-        JudgePool(v, model::Pool{"small", length, 8.0, 6.0, 0.6}, so, nullptr, no_points);
+        JudgePool(v, model::Pool{"small", length, 8.0, 6.0, 0.6}, so, nullptr, search);
     ASSERT_FALSE(verdict.hosted) << length;
     const DofVerdict& surge = verdict.dofs.at(0);
-    ASSERT_TRUE(surge.need_verified) << surge.reason;
+    ASSERT_TRUE(surge.need_verified && surge.need_searched) << surge.reason;
     EXPECT_TRUE(JudgePool(v, pool_of_free(surge.need), so, nullptr, no_points).hosted);
     EXPECT_FALSE(JudgePool(v, pool_of_free(surge.need_refuted), so, nullptr, no_points).hosted);
     EXPECT_LE(surge.need - surge.need_refuted, 0.05 * surge.need) << length;

@@ -2,6 +2,7 @@
 // what the data show (its time constant, force range, thrust directions, measured DOFs).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "../number_text.h"
 #include "diagnosis_internal.h"
@@ -138,7 +139,8 @@ std::string NonPhysical(const StructureFit& base, const StructureFit& ext) {
 }
 
 // Likelihood ratio D = 2·(C₀ − C₁)/s₁², s₁² = 2·C₁/(N − P₁), ~ χ²(Δp) under "no effect"
-// (diagnosis.h); max_z: the new parameter farthest from its null value, in σ.
+// (diagnosis.h); max_z: the new parameter farthest from its null value, in σ (a Wald z, from
+// the curvature of the cost where the fit ended).
 CandidateTest Test(const Candidate& c, const StructureFit& base, const StructureFit& ext,
                    int round) {
   CandidateTest t;
@@ -153,7 +155,22 @@ CandidateTest Test(const Candidate& c, const StructureFit& base, const Structure
   }
   const int n = ext.oe.num_residuals;
   const double s2 = 2.0 * ext.oe.cost / std::max(1, n - ext.free_parameters);
-  t.statistic = std::max(0.0, 2.0 * (base.oe.cost - ext.oe.cost) / s2);
+  const double d = 2.0 * (base.oe.cost - ext.oe.cost) / s2;
+  t.statistic = std::max(0.0, d);
+  // The extension contains the current model (its new parameters at their null values), so at
+  // its optimum C₁ ≤ C₀. A fit that ends above C₀ by more than its own convergence tolerance
+  // (a Gauss–Newton step of 0.1σ: 0.01 in D) stopped elsewhere: payload60 yaw's thruster lag
+  // went from 0.062 s to T = 0.0072 s = h/2.79, the RK4 step's stability limit, where the
+  // simulation is hypersensitive to T (σ = 4e-6 s, "z = 1865") and C₁ − C₀ = +0.27. The σ of
+  // such a point says nothing about the effect: no z, and the test says why.
+  if (d < -0.01) {
+    t.max_z = std::numeric_limits<double>::quiet_NaN();
+    t.detail += (t.detail.empty() ? "" : "; ") +
+                std::string("the extension's fit ends worse than the model it extends (D = ") +
+                Fmt(d, 3) + " < 0: not at its optimum), no z";
+    t.non_physical = NonPhysical(base, ext);
+    return t;
+  }
   // A parameter held at its bound in `base` may be free again in `ext` (FitPhysical decides
   // per fit): the test counts every parameter `ext` frees.
   const int freed = std::max(t.added_parameters, ext.free_parameters - base.free_parameters);

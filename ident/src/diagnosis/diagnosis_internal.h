@@ -76,6 +76,12 @@ DiagnosisGain HeldOutGain(const model::Vehicle& vehicle, const StructureFit& bef
                           const StructureFit& after, const Trials& fit, const Trials& validate,
                           const OutputErrorOptions& oe, int threads);
 
+/// The held-out MAE of `a` minus that of `b`, paired by held-out unit (both scored on the same
+/// validate trials or folds): δ = Σ w_t (a_t − b_t) and σ = √(T/(T−1)·Σ w_t²(d_t − δ)²), w_t the
+/// unit's share of samples (as the static maps are compared); σ NaN with fewer than 2 units.
+void PairedAfterDifference(const DiagnosisGain& a, const DiagnosisGain& b, double* delta,
+                           double* sigma);
+
 /// Adds the errors-in-variables covariance of coupling terms to `f` (input_noise.cc).
 void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
                              const TrialDataOptions& data, const OutputErrorOptions& oe,

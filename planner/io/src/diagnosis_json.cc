@@ -107,12 +107,14 @@ json CandidateTestJson(const ident::CandidateTest& t) {
           {"statistic", t.statistic},
           {"added_parameters", t.added_parameters},
           {"p_value", t.p_value},
-          {"max_z", t.max_z},
+          {"max_z", JsonNumber(t.max_z)},
           {"significant", t.significant},
           {"gain", JsonNumber(t.gain)},
           {"unscored", t.unscored},
           {"non_physical", t.non_physical},
-          {"accepted", t.accepted}};
+          {"accepted", t.accepted},
+          {"not_chosen", t.not_chosen},
+          {"removed", t.removed}};
 }
 
 json BreakdownJson(const ident::ErrorBreakdown& b) {

@@ -86,6 +86,9 @@ struct DiagnosisGain {
   /// without trials, a free run that cannot be simulated): `unscored` says why.
   bool scored = false;
   std::string unscored;
+  /// `after` per held-out unit (validate trial, or cross-validation fold) with its velocity
+  /// samples: two extensions scored on the same units are compared by their paired difference.
+  std::vector<std::pair<double, int>> after_by_unit;
 };
 
 /// The static thrust map a thrust_map (and dead zone) finding implies, in the units of the
@@ -160,6 +163,8 @@ struct CandidateTest {
   double statistic = 0.0;
   int added_parameters = 0;
   double p_value = 1.0;
+  /// The new parameter farthest from its null value, in σ; NaN when the extension's fit ended
+  /// worse than the model it extends (C₁ > C₀: not at its optimum, `detail` says so).
   double max_z = 0.0;
   bool significant = false;  ///< p < significance and a new parameter ≥ min_z σ from null
   /// Held-out gain (relative velocity-MAE reduction) of a significant candidate, when
@@ -172,6 +177,12 @@ struct CandidateTest {
   /// candidate is never significant.
   std::string non_physical;
   bool accepted = false;  ///< significant, held-out gain ≥ min_gain, and chosen in its round
+  /// A significant candidate with enough held-out gain that was not chosen: which one was, and
+  /// whether the held-out data can tell the two apart (paired difference of their MAE > 2σ).
+  std::string not_chosen;
+  /// Accepted, then removed by the final model's backward test: its new parameters no longer
+  /// min_z σ from their null values once the effects found after it are in (which, and why).
+  std::string removed;
   int round = 0;  ///< greedy round (0 = against the standard model)
 };
 

@@ -73,6 +73,7 @@ struct DofVerdict {
   /// The largest free travel planned that does not host it (ConfirmNeed's bisection; at
   /// least this pool's).
   double need_refuted = 0.0;
+  bool need_searched = false;  ///< `need` is the smallest found (VerdictOptions::need_bisections)
   Determinacy determinacy;     ///< of the planner's own schedule in this pool
   /// Determined, but the loop's target is out of reach of its trials in this pool
   /// (TargetReach of the schedule: the loop would end stuck).
@@ -105,6 +106,10 @@ struct PoolVerdict {
   std::string sentence;                     ///< one line: hosted or not, and why
 };
 
+/// CHOSEN 6 with a 5% tolerance: the bracket shrinks up to 64×, to 5% for a first guess up to
+/// 4× this pool's free travel.
+inline constexpr int kSmallestPoolBisections = 6;
+
 struct VerdictOptions {
   /// Re-plan a non-hosted DOF in a pool offering its need to confirm it (up to this many
   /// enlargements by 1.5×). CHOSEN 2: the first guess (the largest failing run) usually holds.
@@ -113,10 +118,11 @@ struct VerdictOptions {
   /// Then the smallest pool between this one and the confirmed one, by bisection of the free
   /// travel to `need_tolerance` of it (at most `need_bisections` plannings): the answer is
   /// the smallest pool found that hosts, with the largest planned that does not
-  /// (DofVerdict::need_refuted). CHOSEN 5% and 6: the bracket shrinks up to 64×, to 5% for a
-  /// first guess up to 4× this pool's free travel, for 6 plannings of the DOF at most
-  /// (0.1–2.5 s each, the DOFs on PlannerOptions::threads).
-  int need_bisections = 6;
+  /// (DofVerdict::need_refuted). 0: no search (the confirmed pool, said to be no minimum).
+  /// `check-pool`, the command that answers "what would host it", searches with
+  /// kSmallestPoolBisections; the others print the confirmed pool and point to it (the search
+  /// costs up to 6 plannings of each DOF not hosted, 0.1–2.5 s each).
+  int need_bisections = 0;
   double need_tolerance = 0.05;
   /// Plan a DOF not hosted over the box again at the box's centre and corners (Hostability).
   /// false: a DOF not hosted is kNone without checking.
