@@ -447,6 +447,20 @@ std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& p
   out.push_back(p.str());
   for (const auto& d : v.dofs) out.push_back(DofLine(d, pool));
   if (!v.hosted) out.push_back(RequiredLine(v, pool));
+  std::vector<std::string> tilts;
+  for (const auto& d : v.dofs) {
+    if (d.dof == model::Dof::kRoll || d.dof == model::Dof::kPitch) {
+      tilts.emplace_back(model::DofName(d.dof));
+    }
+  }
+  if (!tilts.empty()) {
+    out.push_back("  assumption: " + model::Join(tilts) +
+                  " planned as a free rotation, like yaw: the decoupled model (seed 004 eq. 2) "
+                  "has no hydrostatic restoring moment (its bias is a constant moment), so a "
+                  "vehicle stable in " + model::Join(tilts) +
+                  " (metacentric height > 0) cannot make these turns; plan them only for a "
+                  "vehicle without one");
+  }
   if (v.hostability == Hostability::kPart) {
     out.push_back(
         "  assumption: judged over the whole a priori box (the vehicle file's inertia bounds and "

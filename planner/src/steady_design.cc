@@ -634,6 +634,25 @@ void PackTrials(const DofContext& ctx, const SteadyDesignOptions& o, const std::
   }
 }
 
+// A leg the exact design runs more than once is a replicate, not a slip: the D-optimal
+// weights put that share of the N legs on it (efficient rounding of N·w, Pukelsheim & Rieder
+// 1992), so a schedule may list the same run twice.
+void NoteReplicates(const DofContext& ctx, const std::vector<SteadyLeg>& legs, int N,
+                    SteadyDesignResult* result) {
+  std::map<std::pair<std::string, double>, int> count;
+  for (const SteadyLeg& l : legs) ++count[{l.mapping, l.force}];
+  for (const auto& [leg, n] : count) {
+    if (n < 2) continue;
+    result->notes.push_back(std::string(model::DofName(ctx.dof())) + ": the steady run " +
+                            DirName(leg.first, leg.second > 0 ? 1 : -1) + " at " +
+                            model::Significant(leg.second, 3) + " " +
+                            std::string(model::ForceUnit(ctx.dof())) + " runs " +
+                            std::to_string(n) + " times: the D-optimal design puts " +
+                            std::to_string(n) + " of its " + std::to_string(N) +
+                            " legs there (replicates, not a repeated entry)");
+  }
+}
+
 // The criterion of the packed trials with the prior, and the status and notes.
 void Summarise(const DofContext& ctx, const SteadyDesignOptions& o,
                const std::vector<Eigen::MatrixXd>& prior, const std::string& infeasible,
@@ -705,6 +724,7 @@ SteadyDesignResult DesignSteady(const DofContext& ctx, const SteadyDesignOptions
   // 4. Pack legs into trials: alternate directions, compatible thrusters, within the pool.
   PackTrials(ctx, o, id_prefix, &result);
   Summarise(ctx, o, prior, cands.infeasible, &result);
+  NoteReplicates(ctx, result.legs, N, &result);
   return result;
 }
 

@@ -54,11 +54,12 @@ struct Range {
     lo = std::min(lo, v);
     hi = std::max(hi, v);
   }
-  // A range that shows everything with a 5% margin; a single value gets ±1 (or ±10%).
+  // A range that shows everything with a 10% margin (a steady trial's constant thrust at 5%
+  // sat on the frame, unreadable); a single value gets ±1 (or ±10%).
   void Pad() {
     if (!(lo <= hi)) lo = 0, hi = 1;
     const double span = hi - lo;
-    const double pad = span > 0 ? 0.05 * span : std::max(std::abs(lo) * 0.1, 1.0);
+    const double pad = span > 0 ? 0.1 * span : std::max(std::abs(lo) * 0.1, 1.0);
     lo -= pad;
     hi += pad;
   }
