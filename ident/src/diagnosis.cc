@@ -211,6 +211,38 @@ std::string CandidateName(const CandidateTest& t) {
 // A candidate's AIC gain over the current model on the fit trials: D − 2·Δp.
 double AicGain(const CandidateTest& t) { return t.statistic - 2.0 * t.added_parameters; }
 
+// Why each other scored candidate of a round was not chosen: within 2 of the chosen one's AIC
+// and not separated by the held-out data either (paired difference within 2σ, or no σ: a
+// single held-out unit), it "cannot be told from" it, and is returned for the warning; else,
+// with enough gain of its own, the chosen one fits the fit trials better.
+std::vector<std::string> LabelRivals(const std::vector<Significant>& significant,
+                                     const std::vector<DiagnosisGain>& gains, int best,
+                                     model::Dof dof, double min_gain, DiagnosisResult* result) {
+  const CandidateTest& chosen = result->tests[significant[best].test];
+  const std::string unit(model::VelocityUnit(dof));
+  std::vector<std::string> alike;
+  for (std::size_t i = 0; i < significant.size(); ++i) {
+    if (static_cast<int>(i) == best || !gains[i].scored) continue;
+    CandidateTest& t = result->tests[significant[i].test];
+    double delta = 0.0, sigma = 0.0;
+    diagnosis::PairedDifference(gains[i].after_by_unit, gains[best].after_by_unit, &delta, &sigma);
+    const std::string paired = "held-out MAE " + Fmt(delta, 2) + " ± " + Fmt(sigma, 2) + " " +
+                               unit + " against " + CandidateName(chosen) + "'s";
+    if (std::abs(AicGain(chosen) - AicGain(t)) <= 2 && !(delta > 2 * sigma)) {
+      alike.push_back(CandidateName(t) + " (held-out gain " + Fmt(100 * t.gain, 3) + "%, D = " +
+                      Fmt(t.statistic, 4) + ")");
+      t.not_chosen = "cannot be told from " + CandidateName(chosen) + " (D " +
+                     Fmt(t.statistic, 4) + " against " + Fmt(chosen.statistic, 4) + "; " + paired +
+                     ")";
+    } else if (gains[i].relative >= min_gain) {
+      t.not_chosen = CandidateName(chosen) + " fits the fit trials better (D " +
+                     Fmt(chosen.statistic, 4) + " against " + Fmt(t.statistic, 4) + "; " + paired +
+                     ")";
+    }
+  }
+  return alike;
+}
+
 // One greedy round (test, then measure and extend). The significant candidates are scored on
 // held-out data in order of their AIC gain on the fit trials (D − 2·Δp), and the first that
 // gains at least min_gain is taken: among effects that generalise, the likelihood on every fit
@@ -250,28 +282,8 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
   clock->Lap("measure");
   if (best < 0) return false;
   const CandidateTest& chosen = result->tests[significant[best].test];
-  std::vector<std::string> alike;
-  for (std::size_t i = 0; i < significant.size(); ++i) {
-    if (static_cast<int>(i) == best || !gains[i].scored) continue;
-    CandidateTest& t = result->tests[significant[i].test];
-    double delta = 0.0, sigma = 0.0;
-    diagnosis::PairedAfterDifference(gains[i], gains[best], &delta, &sigma);
-    const std::string unit(model::VelocityUnit(d->dof));
-    const std::string paired = "held-out MAE " + Fmt(delta, 2) + " ± " + Fmt(sigma, 2) + " " +
-                               unit + " against " + CandidateName(chosen) + "'s";
-    // Within 2σ, or no σ (a single held-out unit): the held-out data do not separate them.
-    if (std::abs(AicGain(chosen) - AicGain(t)) <= 2 && !(delta > 2 * sigma)) {
-      alike.push_back(CandidateName(t) + " (held-out gain " + Fmt(100 * t.gain, 3) + "%, D = " +
-                      Fmt(t.statistic, 4) + ")");
-      t.not_chosen = "cannot be told from " + CandidateName(chosen) + " (D " +
-                     Fmt(t.statistic, 4) + " against " + Fmt(chosen.statistic, 4) + "; " + paired +
-                     ")";
-    } else if (gains[i].relative >= options.min_gain) {
-      t.not_chosen = CandidateName(chosen) + " fits the fit trials better (D " +
-                     Fmt(chosen.statistic, 4) + " against " + Fmt(t.statistic, 4) + "; " + paired +
-                     ")";
-    }
-  }
+  const std::vector<std::string> alike =
+      LabelRivals(significant, gains, best, d->dof, options.min_gain, result);
   if (!alike.empty()) {
     result->warnings.push_back(
         dof + ": these trials cannot tell " + CandidateName(chosen) + " (held-out gain " +

@@ -138,28 +138,28 @@ void PsiToPhysical(const model::DofModel& model, const Eigen::VectorXd& theta_gi
 
 namespace {
 
-// [0, regressors of `free`] integrated between consecutive velocity samples of every trial (the
-// one-step rows' columns without the knots), for the excitation test of trials too short for
-// the knots.
-Eigen::MatrixXd SampleRegressors(const model::DofModel& model,
-                                 const std::vector<const TrialData*>& trials,
-                                 const Eigen::VectorXd& theta, const std::vector<int>& free,
-                                 const OneStepOptions& o) {
-  std::vector<Eigen::MatrixXd> blocks;
-  Eigen::Index rows = 0;
+// Whether any column 1 + c of the one-step rows F moves: parameter free[c] is excited.
+std::vector<bool> MovedColumns(const Eigen::MatrixXd& F, std::size_t n) {
+  std::vector<bool> moved(n, false);
+  for (std::size_t c = 0; c < n && F.rows() > 0; ++c) moved[c] = F.col(1 + c).cwiseAbs().maxCoeff() > 0;
+  return moved;
+}
+
+// The same test on the regressors integrated between consecutive velocity samples (the rows'
+// columns without the knots), for trials too short for the knots.
+std::vector<bool> MovedBetweenSamples(const model::DofModel& model,
+                                      const std::vector<const TrialData*>& trials,
+                                      const Eigen::VectorXd& theta, const std::vector<int>& free,
+                                      const OneStepOptions& o) {
+  std::vector<bool> moved(free.size(), false);
   for (const TrialData* d : trials) {
-    const IntegratedRegressors ir =
-        IntegrateRegressors(model, *d, d->velocity_estimate.t, theta, o.max_step_s, nullptr);
-    blocks.push_back(ir.H);
-    rows += ir.H.rows();
+    const Eigen::MatrixXd H =
+        IntegrateRegressors(model, *d, d->velocity_estimate.t, theta, o.max_step_s, nullptr).H;
+    for (std::size_t c = 0; c < free.size() && H.rows() > 0; ++c) {
+      moved[c] = moved[c] || H.col(free[c]).cwiseAbs().maxCoeff() > 0;
+    }
   }
-  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(rows, 1 + free.size());
-  Eigen::Index r0 = 0;
-  for (const Eigen::MatrixXd& H : blocks) {
-    for (std::size_t c = 0; c < free.size(); ++c) F.block(r0, 1 + c, H.rows(), 1) = H.col(free[c]);
-    r0 += H.rows();
-  }
-  return F;
+  return moved;
 }
 
 }  // namespace
@@ -173,10 +173,12 @@ OneStepRows ExcitedOneStepRows(const model::DofModel& model,
   // Without rows (trials too short for the knots) excitation is read from the regressors
   // between consecutive samples: a direction never pushed is not excited, a trial too short for
   // the least squares still excites what it moves (the output error fits it).
-  const Eigen::MatrixXd excitation = rows.F.rows() > 0 ? rows.F : SampleRegressors(model, trials, theta, free, o);
+  const std::vector<bool> moved = rows.F.rows() > 0
+                                      ? MovedColumns(rows.F, free.size())
+                                      : MovedBetweenSamples(model, trials, theta, free, o);
   std::vector<int> keep;
   for (std::size_t c = 0; c < free.size(); ++c) {
-    if (excitation.rows() > 0 && excitation.col(1 + c).cwiseAbs().maxCoeff() > 0) {
+    if (moved[c]) {
       keep.push_back(static_cast<int>(c));
     } else {
       not_excited->push_back(model.parameter_names()[free[c]]);

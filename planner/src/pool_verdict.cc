@@ -84,12 +84,12 @@ void ConfirmNeed(const model::Vehicle& vehicle, const model::Pool& pool,
                  const ScheduleOptions& options, const VerdictOptions& vo, DofVerdict* v) {
   ScheduleOptions so = options;
   so.dofs = {v->dof};
-  const auto hosts = [&](double free) {
+  const auto plan_offering = [&](double free) {
     return PlanSchedule(vehicle, Offering(pool, v->dof, free), so);
   };
   double hi = kInf;
   for (int i = 0; i <= vo.need_checks && !std::isfinite(hi); ++i) {
-    const ScheduleResult r = hosts(v->need);
+    const ScheduleResult r = plan_offering(v->need);
     if (r.status == PlanStatus::kOk) {
       hi = std::max(v->need, SpanOf(r));
     } else if (i < vo.need_checks) {
@@ -101,7 +101,7 @@ void ConfirmNeed(const model::Vehicle& vehicle, const model::Pool& pool,
   double lo = std::isfinite(pool.FreeTravel(v->dof)) ? pool.FreeTravel(v->dof) : 0.0;
   for (int i = 0; i < vo.need_bisections && hi - lo > vo.need_tolerance * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
-    const ScheduleResult r = hosts(mid);
+    const ScheduleResult r = plan_offering(mid);
     if (r.status == PlanStatus::kOk) {
       hi = std::max(mid, SpanOf(r));
     } else {
@@ -398,12 +398,13 @@ std::string RequiredLine(const PoolVerdict& v, const model::Pool& pool) {
   std::ostringstream r;
   const RequiredPool& q = v.required;
   std::vector<std::string> sides;
-  bool rotation = false;
+  bool rotation = false, searched = false;
   double bracket = 0.0;  // the widest (need − refuted) / need of the sides searched
   for (const auto& d : v.dofs) {
     if (d.hosted || !std::isfinite(d.need)) continue;
-    if (d.need_verified && d.need > 0) {
-      bracket = std::max(bracket, (d.need - std::max(d.need_refuted, pool.FreeTravel(d.dof))) / d.need);
+    if (d.need_searched && d.need > 0) {
+      searched = true;
+      bracket = std::max(bracket, (d.need - d.need_refuted) / d.need);
     }
     if (model::IsRotational(d.dof)) {
       rotation = true;
@@ -411,13 +412,12 @@ std::string RequiredLine(const PoolVerdict& v, const model::Pool& pool) {
     }
     const double wall = d.dof == model::Dof::kSurge ? q.length
                         : d.dof == model::Dof::kSway ? q.width : q.depth;
-    sides.push_back(std::string(model::Pool::SideName(d.dof)) + (d.need_verified ? " " : " at least ") + Fmt(wall, 4) +
-                    " m wall to wall (" + Fmt(wall - 2 * pool.margin, 4) + " m free)");
+    sides.push_back(std::string(model::Pool::SideName(d.dof)) +
+                    (d.need_verified ? " " : " at least ") + Fmt(wall, 4) + " m wall to wall (" +
+                    Fmt(wall - 2 * pool.margin, 4) + " m free)");
   }
   if (rotation) sides.push_back("tether " + Fmt(q.turns, 4) + " turns");
   if (sides.empty()) return "  no pool size lifts the limits above";
-  bool searched = false;
-  for (const auto& d : v.dofs) searched = searched || d.need_searched;
   if (searched) {
     r << "  smallest pool found that hosts every DOF asked for";
     if (bracket > 0) {

@@ -76,11 +76,15 @@ DiagnosisGain HeldOutGain(const model::Vehicle& vehicle, const StructureFit& bef
                           const StructureFit& after, const Trials& fit, const Trials& validate,
                           const OutputErrorOptions& oe, int threads);
 
-/// The held-out MAE of `a` minus that of `b`, paired by held-out unit (both scored on the same
-/// validate trials or folds): δ = Σ w_t (a_t − b_t) and σ = √(T/(T−1)·Σ w_t²(d_t − δ)²), w_t the
-/// unit's share of samples (as the static maps are compared); σ NaN with fewer than 2 units.
-void PairedAfterDifference(const DiagnosisGain& a, const DiagnosisGain& b, double* delta,
-                           double* sigma);
+/// Per-trial free-run velocity MAE of `f` on `trials` (NaN when not simulated) and its samples.
+std::vector<std::pair<double, int>> PerTrialMae(const StructureFit& f, const Trials& trials,
+                                                double step_s);
+
+/// The MAE `a` minus `b`, paired by held-out unit (validate trial or fold; (MAE, samples) each,
+/// both on the same units): δ = Σ w_t (a_t − b_t) and σ = √(T/(T−1)·Σ w_t²(d_t − δ)²), w_t the
+/// unit's share of samples. δ NaN when the units do not match; σ NaN with fewer than 2.
+void PairedDifference(const std::vector<std::pair<double, int>>& a,
+                      const std::vector<std::pair<double, int>>& b, double* delta, double* sigma);
 
 /// Adds the errors-in-variables covariance of coupling terms to `f` (input_noise.cc).
 void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,

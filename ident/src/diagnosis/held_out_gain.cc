@@ -174,12 +174,7 @@ DiagnosisGain HeldOutGain(const model::Vehicle& vehicle, const StructureFit& bef
     std::string why;
     g.scored = ScorePair(before, after, validate, oe.step_s, &g.before, &g.after, &why);
     if (!g.scored) g.unscored = "validate trials: " + why;
-    for (const TrialData* t : g.scored ? validate : Trials{}) {
-      int n = 0;
-      std::string unused;
-      g.after_by_unit.push_back(
-          {PooledVelocityMae(*after.model, after.oe.theta, {t}, oe.step_s, &unused, &n), n});
-    }
+    if (g.scored) g.after_by_unit = PerTrialMae(after, validate, oe.step_s);
   } else {
     g.on = "cross-validation";
     CrossValidate(vehicle, before, after, fit, oe, threads, &g);
@@ -192,22 +187,31 @@ DiagnosisGain HeldOutGain(const model::Vehicle& vehicle, const StructureFit& bef
   return g;
 }
 
-void PairedAfterDifference(const DiagnosisGain& a, const DiagnosisGain& b, double* delta,
-                           double* sigma) {
-  *delta = *sigma = std::nan("");
-  const std::size_t units = a.after_by_unit.size();
-  if (units == 0 || units != b.after_by_unit.size()) return;
-  double n = 0.0;
-  for (const auto& [mae, samples] : a.after_by_unit) n += samples;
-  if (!(n > 0)) return;
-  double d = 0.0;
-  for (std::size_t t = 0; t < units; ++t) {
-    d += a.after_by_unit[t].second / n * (a.after_by_unit[t].first - b.after_by_unit[t].first);
+std::vector<std::pair<double, int>> PerTrialMae(const StructureFit& f, const Trials& trials,
+                                                double step_s) {
+  std::vector<std::pair<double, int>> out;
+  for (const TrialData* t : trials) {
+    std::string why;
+    int n = 0;
+    const double mae = PooledVelocityMae(*f.model, f.oe.theta, {t}, step_s, &why, &n);
+    out.push_back({mae, n});
   }
+  return out;
+}
+
+void PairedDifference(const std::vector<std::pair<double, int>>& a,
+                      const std::vector<std::pair<double, int>>& b, double* delta, double* sigma) {
+  *delta = *sigma = std::nan("");
+  const std::size_t units = a.size();
+  double n = 0.0;
+  for (const auto& x : a) n += x.second;
+  if (units == 0 || units != b.size() || !(n > 0)) return;
+  double d = 0.0;
+  for (std::size_t t = 0; t < units; ++t) d += a[t].second / n * (a[t].first - b[t].first);
   double ss = 0.0;
   for (std::size_t t = 0; t < units; ++t) {
-    const double w = a.after_by_unit[t].second / n;
-    ss += w * w * std::pow(a.after_by_unit[t].first - b.after_by_unit[t].first - d, 2);
+    const double w = a[t].second / n;
+    ss += w * w * std::pow(a[t].first - b[t].first - d, 2);
   }
   *delta = d;
   if (units > 1) *sigma = std::sqrt(units / (units - 1.0) * ss);

@@ -70,35 +70,6 @@ Trials Pointers(const std::vector<std::unique_ptr<TrialData>>& trials) {
   return p;
 }
 
-// Per-trial validate MAE of `f` (NaN when not simulated) and its samples.
-std::vector<std::pair<double, int>> PerTrialMae(const StructureFit& f, const Trials& trials,
-                                                double step_s) {
-  std::vector<std::pair<double, int>> out;
-  for (const TrialData* t : trials) {
-    std::string why;
-    int n = 0;
-    const double mae = PooledVelocityMae(*f.model, f.oe.theta, {t}, step_s, &why, &n);
-    out.push_back({mae, n});
-  }
-  return out;
-}
-
-// δ = Σ w_t (a_t − b_t) and its σ over trials (paired, w_t the trial's share of samples).
-void PairedDifference(const std::vector<std::pair<double, int>>& a,
-                      const std::vector<std::pair<double, int>>& b, StaticMapCandidate* c) {
-  double n = 0.0, delta = 0.0;
-  for (const auto& x : a) n += x.second;
-  for (std::size_t t = 0; t < a.size(); ++t) delta += a[t].second / n * (a[t].first - b[t].first);
-  double ss = 0.0;
-  for (std::size_t t = 0; t < a.size(); ++t) {
-    const double w = a[t].second / n;
-    ss += w * w * std::pow(a[t].first - b[t].first - delta, 2);
-  }
-  const double trials = static_cast<double>(a.size());
-  c->vs_power_law = delta;
-  c->vs_power_law_sigma = trials > 1 ? std::sqrt(trials / (trials - 1) * ss) : std::nan("");
-}
-
 // The chosen map's force at each row's command of each table: f = g·V, after a dead band of d
 // (N of DOF force: f = share·sign·max(|g·V/share| − d, 0)), or times η for V < 0.
 void ChosenForces(const std::map<int, LinearMap>& maps, const model::Vehicle& vehicle,
@@ -140,9 +111,9 @@ std::string Choose(const std::vector<StaticMapCandidate>& c,
     if (!c[i].physical) continue;
     bool better = true;
     if (scored) {
-      StaticMapCandidate vs_linear;
-      PairedDifference(held_out[i], held_out[0], &vs_linear);
-      better = vs_linear.vs_power_law < -2 * vs_linear.vs_power_law_sigma;
+      double delta = 0.0, sigma = 0.0;
+      PairedDifference(held_out[i], held_out[0], &delta, &sigma);
+      better = delta < -2 * sigma;
     }
     if (better && (best <= 0 || c[i].aic < c[best].aic)) best = static_cast<int>(i);
   }
@@ -204,7 +175,7 @@ void ChooseStaticMap(const model::Campaign& campaign, const TrialDataOptions& da
     c.validate_mae = PooledVelocityMae(*f.model, f.oe.theta, validate_p, oe.step_s, &c.why);
     c.scored = std::isfinite(c.validate_mae) && !validate.empty();
     held_out.push_back(PerTrialMae(f, validate_p, oe.step_s));
-    if (c.scored) PairedDifference(held_out.back(), power_law, &c);
+    if (c.scored) PairedDifference(held_out.back(), power_law, &c.vs_power_law, &c.vs_power_law_sigma);
     finding->static_maps.push_back(std::move(c));
   }
   finding->chosen_map = Choose(finding->static_maps, held_out);
