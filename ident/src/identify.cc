@@ -187,8 +187,10 @@ IdentifyResult IdentifyCampaign(const model::Campaign& campaign, model::Campaign
   std::vector<double> prepare_s(trials.size());  // per trial
   diagnosis::ParallelFor(trials.size(), o.threads, [&](std::size_t i) {
     Stopwatch watch;
-    trials[i] = PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.data);
-    if (release) release->trials[i].log = model::TrialLog{};
+    trials[i] =
+        PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.data, [&] {
+          if (release) release->trials[i].log = model::TrialLog{};
+        });
     prepare_s[i] = watch.Lap();
   });
   for (const TrialData& t : trials) result.trials.push_back(ReportOf(t));

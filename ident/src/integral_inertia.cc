@@ -45,8 +45,7 @@ struct Run {
 // Each row has three non-zeros: H_i = ξ_i·e_0 − e_{c(run)} − (t_i − t_s)·e_{b(trial)}.
 struct Row {
   double xi, dt, y, noise_var;
-  int c, b, group;
-  std::vector<double> yk;  // cumulative integrals of the known parameters' regressors
+  int c, b, group;  // rows are the runs' samples in order: run `group`, its samples
 };
 
 double RowDot(const Row& w, const Eigen::VectorXd& v) { return w.xi * v[0] - v[w.c] - w.dt * v[w.b]; }
@@ -152,12 +151,8 @@ std::vector<Row> BuildRows(const std::vector<Run>& runs, const std::vector<int>&
     const int tb = 1 + R + static_cast<int>(std::find(trial_ids.begin(), trial_ids.end(), run.trial) - trial_ids.begin());
     for (std::size_t s = 0; s < run.t.size(); ++s) {
       Row row;
-      row.yk.resize(known.size());
       double yk = run.Y0[s];
-      for (std::size_t c = 0; c < known.size(); ++c) {
-        row.yk[c] = run.Y(s, known[c]);
-        yk += theta_known[known[c]] * run.Y(s, known[c]);
-      }
+      for (int j : known) yk += theta_known[j] * run.Y(s, j);
       row.y = yk;
       row.xi = run.xi[s];
       row.dt = run.t[s] - run.t[0];
@@ -214,13 +209,18 @@ double NeweyWestVariance(const std::vector<Row>& rows, const std::vector<double>
 }
 
 // ∂m̂/∂θ_j = e₀ᵀ Nc⁻¹ Hᵀ Y_j (m̂ is linear in the known parameters through y): the variance
-// the known parameters' covariance adds to m̂.
-double KnownParameterVariance(const std::vector<Row>& rows, const Eigen::VectorXd& a0,
-                              const std::vector<int>& known, const Eigen::MatrixXd& known_cov) {
+// the known parameters' covariance adds to m̂. Y_j of a row: its run's cumulative integral
+// (BuildRows: the rows are the runs' samples in order).
+double KnownParameterVariance(const std::vector<Run>& runs, const std::vector<Row>& rows,
+                              const Eigen::VectorXd& a0, const std::vector<int>& known,
+                              const Eigen::MatrixXd& known_cov) {
   Eigen::VectorXd J = Eigen::VectorXd::Zero(known.size());
-  for (const Row& w : rows) {
-    const double g = RowDot(w, a0);
-    for (std::size_t c = 0; c < known.size(); ++c) J[c] += g * w.yk[c];
+  std::size_t i = 0;
+  for (const Run& run : runs) {
+    for (std::size_t s = 0; s < run.t.size(); ++s, ++i) {
+      const double g = RowDot(rows[i], a0);
+      for (std::size_t c = 0; c < known.size(); ++c) J[c] += g * run.Y(s, known[c]);
+    }
   }
   Eigen::MatrixXd Sk(known.size(), known.size());
   for (std::size_t a1 = 0; a1 < known.size(); ++a1) {
@@ -428,7 +428,7 @@ void Uncertainty(const std::vector<Run>& runs, const std::vector<Row>& rows,
   r->sigma_hac = std::sqrt(std::max(0.0, NeweyWestVariance(rows, psi, lags, p)));
   double var_known = 0.0;
   if (o.propagate_known_uncertainty && known_cov && !known.empty()) {
-    var_known = KnownParameterVariance(rows, a0, known, *known_cov);
+    var_known = KnownParameterVariance(runs, rows, a0, known, *known_cov);
   }
   r->sigma_known = std::sqrt(std::max(0.0, var_known));
   bool all_white = !runs.empty();

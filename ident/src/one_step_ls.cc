@@ -46,8 +46,8 @@ bool OneStepOptions::IsValid(std::string* error) const {
 OneStepRows BuildOneStepRows(const model::DofModel& model,
                              const std::vector<const TrialData*>& trials,
                              const Eigen::VectorXd& theta, const std::vector<int>& free,
-                             const OneStepOptions& o,
-                             const std::vector<SmoothedSignal>* instrument) {
+                             const OneStepOptions& o, const std::vector<SmoothedSignal>* instrument,
+                             double velocity_shift) {
   OneStepRows rows;
   rows.free = free;
   const int np = model.num_parameters();
@@ -83,8 +83,9 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
         kx.push_back(v.value[i]);
       }
       if (kt.size() < 2) continue;
-      const IntegratedRegressors ir = IntegrateRegressors(
-          model, *trial, kt, theta, o.max_step_s, instrument ? &(*instrument)[ti] : nullptr);
+      const IntegratedRegressors ir =
+          IntegrateRegressors(model, *trial, kt, theta, o.max_step_s,
+                              instrument ? &(*instrument)[ti] : nullptr, velocity_shift);
       for (std::size_t k = 0; k + 1 < kt.size(); ++k) {
         Eigen::RowVectorXd row(1 + free.size());
         double known = ir.h0[k];
@@ -254,12 +255,14 @@ bool SimulatedVelocities(const model::DofModel& model, const std::vector<const T
     const SmoothedSignal& v = trial->velocity_estimate;
     std::vector<double> grid;
     const double t_end = v.t.empty() ? 0.0 : v.t.back();
+    const double spacing = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
+    const bool dense = spacing <= o.simulation_step_s;
+    grid.reserve(static_cast<std::size_t>(t_end / o.simulation_step_s) + 2 +
+                 trial->breakpoints.size() + (dense ? 0 : v.size()));
     for (double t = 0.0; t < t_end; t += o.simulation_step_s) grid.push_back(t);
     for (double b : trial->breakpoints) {
       if (b < t_end) grid.push_back(b);
     }
-    const double spacing = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
-    const bool dense = spacing <= o.simulation_step_s;
     if (!dense) {
       for (double t : v.t) grid.push_back(std::max(0.0, t));
     }
@@ -269,16 +272,16 @@ bool SimulatedVelocities(const model::DofModel& model, const std::vector<const T
     so.step_s = o.simulation_step_s;
     Eigen::VectorXd x0 = Eigen::VectorXd::Zero(model.num_states());
     x0[1] = trial->initial_velocity;
-    const model::Trajectory tr = model::Simulate(model, theta, trial->conditions(), grid, so, &x0);
-    if (!tr.x.allFinite()) return false;
     SmoothedSignal f, s2;
-    f.t = grid;
-    f.value.assign(tr.x.col(1).data(), tr.x.col(1).data() + tr.x.rows());
     // Measured velocities are interpolated as the simulated samples are; velocities derived
     // from positions are smooth local polynomials whose error is the filter's, not the
     // interpolation's; and samples denser than the fine grid leave no defect: no correction
-    // for those.
+    // for those (and only the velocity is kept: a trajectory is 24–32 bytes a point).
     if (!trial->velocity_from_position && !dense) {
+      const model::Trajectory tr =
+          model::Simulate(model, theta, trial->conditions(), grid, so, &x0);
+      if (!tr.x.allFinite()) return false;
+      f.value.assign(tr.x.col(1).data(), tr.x.col(1).data() + tr.x.rows());
       s2.t = v.t;
       std::size_t i = 0;
       for (double t : v.t) {
@@ -289,7 +292,18 @@ bool SimulatedVelocities(const model::DofModel& model, const std::vector<const T
         s2.value.push_back(tr.x(i, 1));
         s2.derivative.push_back(dx[1]);
       }
+    } else {
+      f.value.resize(grid.size());
+      bool finite = true;
+      model::SimulateVisiting(model, theta, trial->conditions(), grid, so, &x0, model::Seen::kState,
+                              [&](std::size_t i, const double* x, const double*) {
+                                f.value[i] = x[1];
+                                finite = finite && std::isfinite(x[0]) && std::isfinite(x[1]) &&
+                                         (model.num_states() < 3 || std::isfinite(x[2]));
+                              });
+      if (!finite) return false;
     }
+    f.t = std::move(grid);
     fine->push_back(std::move(f));
     sampled->push_back(std::move(s2));
   }
@@ -309,16 +323,10 @@ Eigen::VectorXd RowSensitivity(const OneStepDofInput& in, const OneStepRows& R,
     for (double x : trial->velocity_estimate.value) vmax = std::max(vmax, std::abs(x));
   }
   const double dv = 1e-3 * std::max(vmax, 1e-6);
-  // The velocities shifted by ±dv, one side at a time (each is a copy of every trial's
-  // estimate: 24 MB for a million samples).
+  // The regressors along the velocities shifted by ±dv (not copied: a copy of every trial's
+  // estimate was 24 MB for a million samples).
   auto rows_shifted = [&](double shift) {
-    std::vector<SmoothedSignal> shifted;
-    shifted.reserve(in.trials.size());
-    for (const TrialData* trial : in.trials) {
-      shifted.push_back(trial->velocity_estimate);
-      for (double& x : shifted.back().value) x += shift;
-    }
-    return BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &shifted);
+    return BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, nullptr, shift);
   };
   const OneStepRows Fp = rows_shifted(dv);
   const OneStepRows Fm = rows_shifted(-dv);
@@ -339,10 +347,10 @@ bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const One
   if (!SimulatedVelocities(*in.model, in.trials, theta_now, o, &fine, &sampled)) return false;
   const OneStepRows Z = BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &fine);
   // The interpolation defect Z − Zs is zero where the samples are the fine grid (empty).
-  bool defect = false;
-  for (std::size_t i = 0; i < sampled.size(); ++i) {
+  const bool defect = std::any_of(sampled.begin(), sampled.end(),
+                                  [](const SmoothedSignal& s) { return !s.t.empty(); });
+  for (std::size_t i = 0; defect && i < sampled.size(); ++i) {
     if (sampled[i].t.empty()) sampled[i] = fine[i];
-    else defect = true;
   }
   const OneStepRows Zs =
       defect ? BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &sampled) : Z;

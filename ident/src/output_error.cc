@@ -2,22 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <sstream>
 
-#include "uuvplan/ident/block_least_squares.h"
 #include "model_selection.h"
 #include "number_text.h"
 #include "options_check.h"
+#include "uuvplan/ident/block_least_squares.h"
 #include "uuvplan/ident/covariance.h"
 #include "uuvplan/ident/least_squares.h"
-#include "uuvplan/model/parameter.h"
 #include "uuvplan/ident/significance.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/parameter.h"
 #include "uuvplan/model/simulator.h"
-#include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/checked_count.h"
+#include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
@@ -26,16 +27,23 @@ namespace {
 // One trial's measurements on a common time grid.
 struct TrialProblem {
   const TrialData* trial = nullptr;
-  std::vector<double> times;         // sorted union of the used sample times
-  // One sensor's measurements: measurement k is at times[at(k)], value y[k], weight w(k)
+  // The sorted union of the used sample times: owned, or the trial's own sample times when one
+  // sensor is used sample by sample (not copied: 8 bytes a sample).
+  std::vector<double> times_owned;
+  const std::vector<double>* times_ref = nullptr;
+  const std::vector<double>& times() const { return times_ref ? *times_ref : times_owned; }
+  // One sensor's measurements: measurement k is at times[at(k)], value y(k), weight w(k)
   // (1/σ, √n/σ for a bin). The index is not stored when it is k itself (one sensor), nor the
-  // weights when they are all equal (unbinned): 12 of the 20 bytes a measurement.
+  // weights when they are all equal (unbinned), nor the values when they are the trial's own
+  // samples: 20 bytes a measurement.
   struct Measurements {
     std::vector<int> at_index;  // empty: measurement k is at times[k]
-    std::vector<double> y;
+    std::vector<double> y_owned;
+    const std::vector<double>* y_ref = nullptr;  // the trial's samples, when not binned
     std::vector<double> w;      // empty: every weight is w_all
     double w_all = 1.0;
-    std::size_t size() const { return y.size(); }
+    std::size_t size() const { return y_ref ? y_ref->size() : y_owned.size(); }
+    double y(std::size_t k) const { return y_ref ? (*y_ref)[k] : y_owned[k]; }
     int at(std::size_t k) const { return at_index.empty() ? static_cast<int>(k) : at_index[k]; }
     double weight(std::size_t k) const { return w.empty() ? w_all : w[k]; }
   };
@@ -43,27 +51,42 @@ struct TrialProblem {
   TrialInitialState init;
   int z_chi0 = -1, z_xi0 = -1;       // indices in z
   int r_offset = 0;                  // first residual of this trial
-  // Dense samples: the simulation's output grid, and for each time its interval g
-  // (grid[g] <= t <= grid[g + 1]); empty grid: simulate at `times`.
+  // Dense samples: the simulation's output grid (empty: simulate at `times`). Sample time t
+  // lies in interval g, grid[g] <= t <= grid[g + 1], the first such g (IntervalCursor).
   std::vector<double> grid;
-  std::vector<int> interval;
   struct Hermite {
     double h00, h10, h01, h11, u;  // cubic Hermite basis at the time (h10, h11 times h)
   };
-  // The basis of times[i] in its interval, computed when read (stored, it was 40 bytes a
+  // The basis of time t in grid interval g, computed when read (stored, it was 40 bytes a
   // sample: 40 MB of a 10⁶-sample trial).
-  double U(int i) const {
-    const int g = interval[i];
+  double U(double t, int g) const {
     const double h = grid[g + 1] - grid[g];
-    return h > 0 ? std::clamp((times[i] - grid[g]) / h, 0.0, 1.0) : 0.0;
+    return h > 0 ? std::clamp((t - grid[g]) / h, 0.0, 1.0) : 0.0;
   }
-  Hermite Weights(int i) const {
-    const double h = grid[interval[i] + 1] - grid[interval[i]];
-    const double u = U(i);
+  Hermite Weights(double t, int g) const {
+    const double h = grid[g + 1] - grid[g];
+    const double u = U(t, g);
     return {(1 + 2 * u) * (1 - u) * (1 - u), h * u * (1 - u) * (1 - u), u * u * (3 - 2 * u),
             h * u * u * (u - 1), u};
   }
   int num_residuals() const { return static_cast<int>(pos.size() + vel.size()); }
+  // One sensor on the grid: its rows can be made while the simulation runs (Problem::Stream).
+  bool streamable() const { return !grid.empty() && (pos.size() == 0 || vel.size() == 0); }
+};
+
+// The grid interval of increasing sample times, found by a forward cursor (the first g with
+// t <= grid[g + 1], the last interval for times beyond it).
+class IntervalCursor {
+ public:
+  explicit IntervalCursor(const std::vector<double>& grid) : grid_(grid) {}
+  int operator()(double t) {
+    while (g_ + 2 < grid_.size() && grid_[g_ + 1] < t) ++g_;
+    return static_cast<int>(g_);
+  }
+
+ private:
+  const std::vector<double>& grid_;
+  std::size_t g_ = 0;
 };
 
 // Samples faster than the RK4 step are averaged into bins about one step long (never across a
@@ -135,8 +158,18 @@ TrialProblem::Measurements Measured(Binned b, const std::vector<double>& times) 
   } else {
     m.w = std::move(b.w);
   }
-  m.y = std::move(b.y);
+  m.y_owned = std::move(b.y);
   return m;
+}
+
+// A sensor fitted sample by sample, as logged (one measurement a sample: not binned, every
+// time >= 0 and strictly increasing): its times and values are read in place.
+bool UsedAsLogged(const Signal& s, double step) {
+  const std::size_t n = s.size();
+  if (n < 2 || s.t.front() < 0) return false;
+  const double h = (s.t.back() - s.t.front()) / (n - 1);
+  return h >= 0.5 * step &&
+         std::adjacent_find(s.t.begin(), s.t.end(), std::greater_equal<double>()) == s.t.end();
 }
 
 // Every parameter within the range its family allows a fit (model/parameter.h).
@@ -163,18 +196,30 @@ class Problem {
       const bool use_pos = o.use_position && d->has_position();
       const bool use_vel = o.use_velocity && d->has_velocity();
       if (!use_pos && !use_vel) continue;
-      Binned pos = use_pos ? Bin(d->position, d->position_sigma, o.bin_s, d->breakpoints) : Binned{};
-      Binned vel = use_vel ? Bin(d->velocity, d->velocity_sigma, o.bin_s, d->breakpoints) : Binned{};
-      std::vector<double> times;
-      times.insert(times.end(), pos.t.begin(), pos.t.end());
-      times.insert(times.end(), vel.t.begin(), vel.t.end());
-      std::sort(times.begin(), times.end());
-      times.erase(std::unique(times.begin(), times.end()), times.end());
-      // Simulation starts at t = 0; samples before it (none after PrepareTrial) are dropped.
-      times.erase(times.begin(), std::lower_bound(times.begin(), times.end(), 0.0));
-      tp.pos = Measured(std::move(pos), times);
-      tp.vel = Measured(std::move(vel), times);
-      tp.times = std::move(times);
+      const Signal* only = use_pos != use_vel ? (use_pos ? &d->position : &d->velocity) : nullptr;
+      if (only && UsedAsLogged(*only, o.bin_s)) {
+        TrialProblem::Measurements& m = use_pos ? tp.pos : tp.vel;
+        const double sigma = use_pos ? d->position_sigma : d->velocity_sigma;
+        m.w_all = 1.0 / (sigma > 0 ? sigma : 1.0);  // as Bin's
+        m.y_ref = &only->y;
+        tp.times_ref = &only->t;
+      } else {
+        Binned pos =
+            use_pos ? Bin(d->position, d->position_sigma, o.bin_s, d->breakpoints) : Binned{};
+        Binned vel =
+            use_vel ? Bin(d->velocity, d->velocity_sigma, o.bin_s, d->breakpoints) : Binned{};
+        std::vector<double> times;
+        times.reserve(pos.t.size() + vel.t.size());
+        times.insert(times.end(), pos.t.begin(), pos.t.end());
+        times.insert(times.end(), vel.t.begin(), vel.t.end());
+        std::sort(times.begin(), times.end());
+        times.erase(std::unique(times.begin(), times.end()), times.end());
+        // Simulation starts at t = 0; samples before it (none after PrepareTrial) are dropped.
+        times.erase(times.begin(), std::lower_bound(times.begin(), times.end(), 0.0));
+        tp.pos = Measured(std::move(pos), times);
+        tp.vel = Measured(std::move(vel), times);
+        tp.times_owned = std::move(times);
+      }
       // Initial state: given, or guessed from the smoothed data.
       const TrialInitialState* given = nullptr;
       if (initial) {
@@ -198,7 +243,8 @@ class Problem {
           // sample is a fine start for a parameter that enters linearly.
         }
       }
-      if (o.grid_s > 0 && model.sensor_delay_index() < 0 && !tp.times.empty()) {
+      const std::vector<double>& times = tp.times();
+      if (o.grid_s > 0 && model.sensor_delay_index() < 0 && !times.empty()) {
         // Grid: every breakpoint, and points at most grid_s apart in between.
         std::vector<double> grid = {0.0};
         auto extend_to = [&](double t) {
@@ -209,17 +255,12 @@ class Problem {
           if (t > last) grid.push_back(t);
         };
         for (double b : d->breakpoints) {
-          if (b > 0 && b < tp.times.back()) extend_to(b);
+          if (b > 0 && b < times.back()) extend_to(b);
         }
-        extend_to(tp.times.back());
-        if (grid.size() < tp.times.size()) {
+        extend_to(times.back());
+        if (grid.size() < times.size()) {
+          grid.shrink_to_fit();
           tp.grid = std::move(grid);
-          std::size_t g = 0;
-          tp.interval.reserve(tp.times.size());
-          for (double t : tp.times) {
-            while (g + 2 < tp.grid.size() && tp.grid[g + 1] < t) ++g;
-            tp.interval.push_back(static_cast<int>(g));
-          }
         }
       }
       if (tp.init.chi0_estimated) tp.z_chi0 = z++;
@@ -269,26 +310,27 @@ class Problem {
     return out;
   }
 
-  /// Residuals r = w·(y − ŷ) and, when `rows` is given, the rows of J = ∂r/∂z, trial by trial
-  /// (a block of its own initial-state columns and the free parameters', block_least_squares.h):
-  /// the Jacobian of the campaign is never stored. False if a simulation fails.
-  bool Evaluate(const Eigen::VectorXd& z, Eigen::VectorXd* r, BlockRowSink* rows) const {
+  /// Residuals r = w·(y − ŷ) (when `r` is given), their cost ½‖r‖² (when `cost` is), and, when
+  /// `rows` is given, the rows of J = ∂r/∂z, trial by trial (a block of its own initial-state
+  /// columns and the free parameters', block_least_squares.h): the Jacobian of the campaign is
+  /// never stored, nor, for a trial of one sensor on a grid, its simulation. False if a
+  /// simulation fails.
+  bool Evaluate(const Eigen::VectorXd& z, Eigen::VectorXd* r, BlockRowSink* rows,
+                double* cost = nullptr) const {
     const Eigen::VectorXd theta = Theta(z);
     if (!Admissible(model_, theta)) return false;
-    r->resize(num_r_);
+    if (r) r->resize(num_r_);
     model::SimulationOptions so;
     so.step_s = o_.step_s;
     so.sensitivities = rows != nullptr;
-    bool finite = true;
+    RowWriter out{r, rows, 0.0, true};
     for (const TrialProblem& tp : trials_) {
       Eigen::VectorXd x0 = Eigen::VectorXd::Zero(model_.num_states());
       x0[0] = tp.z_chi0 >= 0 ? z[tp.z_chi0] : tp.init.chi0;
       x0[1] = tp.z_xi0 >= 0 ? z[tp.z_xi0] : tp.init.xi0;
       const model::TrialConditions c = tp.trial->conditions();
-      const std::vector<double>& at = tp.grid.empty() ? tp.times : tp.grid;
-      const model::Trajectory sim = model::SimulateMeasured(model_, theta, c, at, so, &x0);
-      if (!sim.x.allFinite()) return false;
-      const View tr(tp, sim, model_, theta, c);
+      const std::vector<double>& at = tp.grid.empty() ? tp.times() : tp.grid;
+      // ∂ŷ/∂ξ0 by a forward difference: a second, plain simulation.
       model::Trajectory sim_xi;
       double h_xi = 0.0;
       if (rows && tp.z_xi0 >= 0) {
@@ -302,39 +344,136 @@ class Problem {
       const View tr_xi(tp, sim_xi, model_, theta, c);
       const int own = (tp.z_chi0 >= 0 ? 1 : 0) + (tp.z_xi0 >= 0 ? 1 : 0);
       if (rows) rows->StartBlock(tp.z_chi0 >= 0 ? tp.z_chi0 : std::max(tp.z_xi0, 0), own);
-      int row = tp.r_offset;
-      auto fill = [&](const TrialProblem::Measurements& m, int s) {
-        for (std::size_t k = 0; k < m.size(); ++k, ++row) {
-          const int i = m.at(k);
-          const double w = m.weight(k);
-          const double x = tr.x(i, s);
-          const bool excluded = row < static_cast<int>(excluded_.size()) && excluded_[row];
-          const double res = excluded ? 0.0 : w * (m.y[k] - x);  // left out: residual and row 0
-          (*r)[row] = res;
-          finite = finite && std::isfinite(res);
-          if (!rows) continue;
-          double* out = rows->Row();
-          int col = 0;
-          if (tp.z_chi0 >= 0) out[col++] = s == 0 ? -w : 0.0;
-          if (tp.z_xi0 >= 0) out[col++] = -w * (tr_xi.x(i, s) - x) / h_xi;
-          for (int j : free_) out[col++] = -w * tr.S(i, s, j);
-          out[col] = res;
-          for (int c2 = 0; c2 < col; ++c2) {
-            if (excluded) out[c2] = 0.0;
-            finite = finite && std::isfinite(out[c2]);
-          }
-          rows->Commit();
-        }
+      // Row of measurement k of sensor s at time index i (grid interval g): ŷ = x, its
+      // sensitivities S(j) = ∂x_s/∂θ_j.
+      auto fill = [&](const TrialProblem::Measurements& m, int s, std::size_t k, int i, int g,
+                      double x, const auto& S) {
+        const int row = tp.r_offset + static_cast<int>(s == 0 ? k : tp.pos.size() + k);
+        const double w = m.weight(k);
+        const bool excluded = row < static_cast<int>(excluded_.size()) && excluded_[row];
+        const double res = excluded ? 0.0 : w * (m.y(k) - x);  // left out: residual and row 0
+        double* J = out.Add(row, res);
+        if (!J) return;
+        int col = 0;
+        if (tp.z_chi0 >= 0) J[col++] = s == 0 ? -w : 0.0;
+        if (tp.z_xi0 >= 0) J[col++] = -w * (tr_xi.x(i, g, s) - x) / h_xi;
+        for (int j : free_) J[col++] = -w * S(j);
+        J[col] = res;
+        out.Commit(J, col, excluded);
       };
-      fill(tp.pos, 0);
-      fill(tp.vel, 1);
+      if (tp.streamable()) {
+        if (!Stream(tp, theta, c, so, x0, fill)) return false;
+      } else {
+        const model::Trajectory sim = model::SimulateMeasured(model_, theta, c, at, so, &x0);
+        if (!sim.x.allFinite()) return false;
+        const View tr(tp, sim, model_, theta, c);
+        auto sensor = [&](const TrialProblem::Measurements& m, int s) {
+          IntervalCursor interval(tp.grid);
+          for (std::size_t k = 0; k < m.size(); ++k) {
+            const int i = m.at(k);
+            const int g = tp.grid.empty() ? 0 : interval(tp.times()[i]);
+            fill(m, s, k, i, g, tr.x(i, g, s), [&](int j) { return tr.S(i, g, s, j); });
+          }
+        };
+        sensor(tp.pos, 0);
+        sensor(tp.vel, 1);
+      }
       if (rows) rows->EndBlock();
     }
     if (rows) rows->Finish();
-    return finite;
+    if (cost) *cost = 0.5 * out.sum_squares;
+    return out.finite;
   }
 
  private:
+  // Where Evaluate's rows go: the residual vector (if any), the cost, the Jacobian's sink.
+  struct RowWriter {
+    Eigen::VectorXd* r;
+    BlockRowSink* rows;
+    double sum_squares;
+    bool finite;
+    // Records residual `res` of `row`; the sink's row to fill (the Jacobian's entries, then the
+    // residual), or null without a Jacobian.
+    double* Add(int row, double res) {
+      if (r) (*r)[row] = res;
+      sum_squares += res * res;
+      finite = finite && std::isfinite(res);
+      if (!rows) return nullptr;
+      return rows->Row();
+    }
+    void Commit(double* J, int cols, bool excluded) {
+      for (int c = 0; c < cols; ++c) {
+        if (excluded) J[c] = 0.0;
+        finite = finite && std::isfinite(J[c]);
+      }
+      rows->Commit();
+    }
+  };
+
+  // One grid point of a streamed simulation: state, dx/dt (position, velocity) under the
+  // interval's held input, and S row-major (state s, parameter j at s·P + j).
+  struct GridPoint {
+    double x[3] = {0, 0, 0};
+    double dx[2] = {0, 0};
+    std::vector<double> S;
+  };
+
+  // The rows of a one-sensor trial on a grid, made while the simulation runs: each grid point
+  // is kept until the next arrives, and the samples between the two are interpolated as View
+  // does (the same numbers); the simulation with its sensitivities is never stored (16–24
+  // bytes a sample). The samples' times must increase (a log's do). A trial whose initial
+  // velocity is estimated still stores its plain finite-difference run on the grid (tr_xi).
+  template <class Fill>
+  bool Stream(const TrialProblem& tp, const Eigen::VectorXd& theta, const model::TrialConditions& c,
+              const model::SimulationOptions& so, const Eigen::VectorXd& x0,
+              const Fill& fill) const {
+    const int s = tp.pos.size() > 0 ? 0 : 1;
+    const TrialProblem::Measurements& m = s == 0 ? tp.pos : tp.vel;
+    const std::vector<double>& times = tp.times();
+    const int np = model_.num_parameters();
+    const std::size_t last = tp.grid.size() - 1;
+    GridPoint left, right;
+    std::size_t k = 0;
+    bool finite = true;
+    const model::OutputVisitor visit = [&](std::size_t g, const double* x, const double* S) {
+      if (!finite) return;  // diverged: Evaluate fails, its rows are not wanted
+      GridPoint& p = g == 0 ? left : right;
+      std::copy(x, x + model_.num_states(), p.x);
+      if (S) p.S.assign(S, S + model_.num_states() * np);
+      finite = std::all_of(x, x + model_.num_states(), [](double v) { return std::isfinite(v); });
+      if (g == 0 || !finite) return;
+      const int a = static_cast<int>(g - 1);  // the interval [grid[a], grid[g]]
+      IntervalEnds(tp.grid[a], tp.grid[g], theta, c, &left, &right);
+      for (; k < m.size(); ++k) {
+        const int i = m.at(k);
+        const double t = times[i];
+        if (t > tp.grid[g] && g < last) break;
+        const TrialProblem::Hermite w = tp.Weights(t, a);
+        const double xs =
+            w.h00 * left.x[s] + w.h10 * left.dx[s] + w.h01 * right.x[s] + w.h11 * right.dx[s];
+        fill(m, s, k, i, a, xs,
+             [&](int j) { return (1 - w.u) * left.S[s * np + j] + w.u * right.S[s * np + j]; });
+      }
+      std::swap(left, right);
+    };
+    model::SimulateVisiting(model_, theta, c, tp.grid, so, &x0, model::Seen::kBySensors, visit);
+    return finite;
+  }
+
+  // dx/dt at both ends of a grid interval with the input held at its start (View's
+  // one-sided derivatives at breakpoints).
+  void IntervalEnds(double ta, double tb, const Eigen::VectorXd& theta,
+                    const model::TrialConditions& c, GridPoint* a, GridPoint* b) const {
+    const model::InputSample in = model_.SampleInput(ta, c, theta.data());
+    double dx[3];
+    model_.Derivative(ta, a->x, in, c, theta.data(), dx);
+    a->dx[0] = dx[0];
+    a->dx[1] = dx[1];
+    model_.Derivative(tb, b->x, in, c, theta.data(), dx);
+    b->dx[0] = dx[0];
+    b->dx[1] = dx[1];
+  }
+
   // A simulation seen at tp.times: run there (as is), or on tp.grid and interpolated
   // (OutputErrorOptions::grid_s): position and velocity by cubic Hermite with dx/dt from the
   // model and the interval's input held at both ends (one-sided derivatives at breakpoints),
@@ -362,17 +501,16 @@ class Problem {
         dr_(k, 1) = dx[1];
       }
     }
-    double x(int i, int s) const {
+    // State s at time index i, in grid interval k (ignored without a grid).
+    double x(int i, int k, int s) const {
       if (tp_.grid.empty()) return g_.x(i, s);
-      const int k = tp_.interval[i];
-      const TrialProblem::Hermite w = tp_.Weights(i);
+      const TrialProblem::Hermite w = tp_.Weights(tp_.times()[i], k);
       if (s >= 2) return (1 - w.u) * g_.x(k, s) + w.u * g_.x(k + 1, s);
       return w.h00 * g_.x(k, s) + w.h10 * dl_(k, s) + w.h01 * g_.x(k + 1, s) + w.h11 * dr_(k, s);
     }
-    double S(int i, int s, int j) const {
+    double S(int i, int k, int s, int j) const {
       if (tp_.grid.empty()) return g_.S[s](i, j);
-      const int k = tp_.interval[i];
-      const double u = tp_.U(i);
+      const double u = tp_.U(tp_.times()[i], k);
       return (1 - u) * g_.S[s](k, j) + u * g_.S[s](k + 1, j);
     }
 
@@ -398,12 +536,17 @@ double ResidualLag1(const Problem& p, const Eigen::VectorXd& r) {
   for (const TrialProblem& tp : p.trials()) {
     int off = tp.r_offset;
     for (std::size_t len : {tp.pos.size(), tp.vel.size()}) {
-      if (len >= 10) {
-        const Eigen::VectorXd seg = r.segment(off, len);
-        const Eigen::VectorXd c = seg.array() - seg.mean();
-        const double den = c.squaredNorm();
+      if (len >= 10) {  // read in place (two copies were 16 bytes a measurement)
+        const auto seg = r.segment(off, len);
+        const double mean = seg.mean();
+        double den = 0.0, num = 0.0;
+        for (Eigen::Index i = 0; i < seg.size(); ++i) {
+          const double c = seg[i] - mean;
+          den += c * c;
+          if (i > 0) num += (seg[i - 1] - mean) * c;
+        }
         if (den > 0) {
-          sum += c.head(len - 1).dot(c.tail(len - 1)) / den;
+          sum += num / den;
           ++count;
         }
       }
@@ -439,7 +582,7 @@ namespace {
 
 struct LmOutcome {
   Eigen::VectorXd z;
-  Eigen::VectorXd r;
+  Eigen::VectorXd r;       // at z: WithResiduals (the iterations keep only the cost)
   BlockLeastSquares rows;  // J at z, as its block-angular factor
   int iterations = 0;
   bool converged = false;
@@ -463,17 +606,15 @@ constexpr double kNegligibleStep = 0.1;
 LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputErrorOptions& o) {
   LmOutcome out;
   const int shared = p.num_free();
-  Eigen::VectorXd r;
   BlockLeastSquares J(shared);
-  if (!p.Evaluate(z, &r, &J)) {
+  double cost = 0.0;
+  if (!p.Evaluate(z, nullptr, &J, &cost)) {
     out.failed = true;
     out.message = "the simulation fails at the starting parameters";
     out.z = z;
     return out;
   }
-  double cost = 0.5 * r.squaredNorm();
   double lambda = 1e-3;
-  Eigen::VectorXd r_trial;
   const int dof = std::max(1, p.num_r() - p.num_excluded() - p.num_z());
   // Gauss–Newton decrement in units of the estimate's standard deviations (squared).
   auto decrement = [&](const BlockLeastSquares& a) {
@@ -499,16 +640,15 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
       // The trial point is simulated with its sensitivities: most steps are accepted, and an
       // accepted step then needs no second simulation for its Jacobian.
       BlockLeastSquares J_trial(shared);
-      if (!p.Evaluate(z_new, &r_trial, &J_trial)) {
+      double cost_new = 0.0;
+      if (!p.Evaluate(z_new, nullptr, &J_trial, &cost_new)) {
         lambda *= 10;
         continue;
       }
-      const double cost_new = 0.5 * r_trial.squaredNorm();
       if (cost_new <= cost) {
         rel_decrease = (cost - cost_new) / std::max(cost, 1e-300);
         z = z_new;
         cost = cost_new;
-        std::swap(r, r_trial);
         std::swap(J, J_trial);
         lambda = std::max(1e-12, lambda / 3);
         accepted = true;
@@ -539,11 +679,13 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
                   " iterations";
   }
   out.z = z;
-  out.r = std::move(r);
   out.rows = std::move(J);
   return out;
 }
 
+// The residuals at the fit's answer (one plain simulation; the iterations keep none: 16 bytes a
+// measurement). False if that simulation fails, which the fit's own evaluation there did not.
+bool WithResiduals(const Problem& p, LmOutcome* lm) { return p.Evaluate(lm->z, &lm->r, nullptr); }
 
 }  // namespace
 
@@ -560,7 +702,7 @@ Eigen::VectorXd CoarseStart(const model::DofModel& model, const std::vector<cons
   if (o.coarse_measurements <= 0 || full.num_r() <= 2 * o.coarse_measurements) return z0;
   double duration = 0.0;
   for (const TrialProblem& tp : full.trials()) {
-    if (!tp.times.empty()) duration += tp.times.back();
+    if (!tp.times().empty()) duration += tp.times().back();
   }
   OutputErrorOptions c = o;
   c.bin_s = std::max(o.bin_s, duration / o.coarse_measurements);
@@ -577,28 +719,27 @@ Eigen::VectorXd CoarseStart(const model::DofModel& model, const std::vector<cons
 // declared σ) are left out and the fit repeated once. Returns how many were left out.
 int RefitWithoutGrossErrors(Problem* p, const OutputErrorOptions& o, LmOutcome* lm,
                             int* iterations) {
-  std::vector<double> a(lm->r.size());
-  for (Eigen::Index i = 0; i < lm->r.size(); ++i) a[i] = std::abs(lm->r[i]);
+  // The median |r| from a single-precision copy (4 bytes a measurement; its relative rounding,
+  // 6e-8, is nothing on a 6σ limit).
+  std::vector<float> a(lm->r.size());
+  for (Eigen::Index i = 0; i < lm->r.size(); ++i) a[i] = static_cast<float>(std::abs(lm->r[i]));
   std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
   const double limit = std::max(5.0, 6.0 * 1.4826 * a[a.size() / 2]);
-  std::vector<char> mask(lm->r.size(), 0);
-  int gross = 0;
-  for (Eigen::Index i = 0; i < lm->r.size(); ++i) {
-    if (std::abs(lm->r[i]) > limit) {
-      mask[i] = 1;
-      ++gross;
-    }
-  }
+  a = {};
+  const auto gross =
+      std::count_if(lm->r.begin(), lm->r.end(), [&](double x) { return std::abs(x) > limit; });
   if (gross == 0 || gross >= lm->r.size() / 100 + 1) return 0;
+  std::vector<char> mask(lm->r.size(), 0);
+  for (Eigen::Index i = 0; i < lm->r.size(); ++i) mask[i] = std::abs(lm->r[i]) > limit;
   p->Exclude(mask);
   LmOutcome again = LevenbergMarquardt(*p, lm->z, o);
   *iterations += again.iterations;
-  if (again.failed) {
+  if (again.failed || !WithResiduals(*p, &again)) {
     p->Exclude({});
     return 0;
   }
   *lm = std::move(again);
-  return gross;
+  return static_cast<int>(gross);
 }
 
 // The whitened score sums of the trials (covariance.h's WhitenedScoreSum over each trial's
@@ -651,8 +792,7 @@ Eigen::MatrixXd RobustCovariance(const Problem& p, const LmOutcome& lm, double s
   const Prewhitening plan = PlanPrewhitening(lm.r, groups);
   const int shared = p.num_free(), P = p.num_z();
   TrialScoreSums sums(plan, shared);
-  Eigen::VectorXd r;
-  if (!p.Evaluate(lm.z, &r, &sums)) return sigma2 * fa.unit_covariance;
+  if (!p.Evaluate(lm.z, nullptr, &sums)) return sigma2 * fa.unit_covariance;
   const double correction = sums.batches() > P ? double(sums.batches()) / (sums.batches() - P) : 1.0;
   const Eigen::MatrixXd& crb = fa.unit_covariance;
   Eigen::MatrixXd hac = Eigen::MatrixXd::Zero(crb.rows(), crb.cols());
@@ -788,9 +928,11 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
     LmOutcome lm = LevenbergMarquardt(
         p, CoarseStart(model, trials, theta, free, initial.empty() ? nullptr : &initial, p, p.InitialZ(), o), o);
     res.iterations += lm.iterations;
-    if (lm.failed) {
+    if (lm.failed || !WithResiduals(p, &lm)) {
       res.status = OutputErrorStatus::kFailed;
-      res.message = "output error: " + lm.message;
+      res.message =
+          "output error: " +
+          (lm.failed ? lm.message : std::string("the simulation fails at the fitted parameters"));
       return res;
     }
     const int gross = RefitWithoutGrossErrors(&p, o, &lm, &res.iterations);
@@ -832,10 +974,9 @@ Eigen::MatrixXd CramerRaoBound(const model::DofModel& model,
     if (j >= static_cast<int>(state.size()) || state[j] == ParameterState::kEstimated) free.push_back(j);
   }
   const Problem p(model, trials, theta, free, initial.empty() ? nullptr : &initial, o);
-  Eigen::VectorXd r;
   BlockLeastSquares J(p.num_free());
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(np, np);
-  if (!p.Evaluate(p.InitialZ(), &r, &J)) return out;
+  if (!p.Evaluate(p.InitialZ(), nullptr, &J)) return out;
   // The θ block of M⁻¹, M = JᵀJ the Fisher information with r scaled by 1/σ.
   for (std::size_t a = 0; a < free.size(); ++a) {
     const Eigen::VectorXd column = J.Solve(Eigen::VectorXd::Unit(p.num_z(), a), 0.0);

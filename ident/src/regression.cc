@@ -54,9 +54,9 @@ model::TermContext MeasuredContext(const model::DofModel& model, const TrialData
 }
 
 IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const TrialData& trial,
-                                         const std::vector<double>& b,
-                                         const Eigen::VectorXd& theta, double max_step,
-                                         const SmoothedSignal* velocity_source) {
+                                         const std::vector<double>& b, const Eigen::VectorXd& theta,
+                                         double max_step, const SmoothedSignal* velocity_source,
+                                         double velocity_shift) {
   IntegratedRegressors out;
   const int np = model.num_parameters();
   const int n = b.size() < 2 ? 0 : static_cast<int>(b.size()) - 1;
@@ -116,7 +116,7 @@ IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const Tri
       for (int p = 0; p < pieces; ++p) {
         const double mid = a + (p + 0.5) * len;
         for (double node : {mid - g * len, mid + g * len}) {
-          const double xi = velocity(node);
+          const double xi = velocity(node) + velocity_shift;
           if (std::isnan(xi)) continue;
           const model::TermContext c = MeasuredContext(model, trial, node, xi, theta);
           double h0 = 0.0;

@@ -351,16 +351,12 @@ void EstimateVelocity(const TrialDataOptions& o, const std::string& where, Trial
     }
   } else {
     sg.window = FilterWindow(o, d->position, "position", time_scale, where, d->gaps);
-    SmoothedSignal s = SavitzkyGolay(d->position, sg);
-    d->initial_position = s.value.front();
-    d->initial_velocity = std::isfinite(s.derivative.front()) ? s.derivative.front() : 0.0;
+    // The estimate is the position's filter one derivative up; the smoothed positions
+    // themselves are not kept.
+    d->velocity_estimate = SavitzkyGolayRate(d->position, sg, &d->initial_position);
+    const double v0 = d->velocity_estimate.value.front();
+    d->initial_velocity = std::isfinite(v0) ? v0 : 0.0;
     d->position_noise_ar1 = PositionNoiseAr1(d->position, sg, d->position_sigma);
-    // The estimate is the position's filter one derivative up, moved (not copied: 36 bytes a
-    // sample); the smoothed positions themselves are not kept.
-    d->velocity_estimate = std::move(s);
-    d->velocity_estimate.value = std::move(d->velocity_estimate.derivative);  // velocity
-    d->velocity_estimate.derivative = std::move(d->velocity_estimate.second_derivative);  // acceleration
-    d->velocity_estimate.second_derivative = {};
     d->velocity_from_position = true;
   }
   d->sg_window = sg.window;
@@ -400,7 +396,7 @@ double FirstForceTime(const model::TrialLog& log, Dof dof, TrialData* d) {
 }  // namespace
 
 TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehicle& vehicle,
-                       const TrialDataOptions& o) {
+                       const TrialDataOptions& o, const std::function<void()>& log_read) {
   const model::TrialLog& log = e.log;
   const std::string where = e.path.empty() ? e.file : e.path;
   TrialData d;
@@ -416,9 +412,11 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
   d.duration = log.t.back() - d.time_offset;
   ReadForce(e, vehicle, where, &d);
   ReadMeasurements(log, vehicle, where, o, &d);
-  EstimateVelocity(o, where, &d);
   ReadAuxVelocities(log, &d);
-  for (const std::string& n : log.notes) d.notes.push_back(n);
+  std::vector<std::string> log_notes = log.notes;
+  if (log_read) log_read();  // `log` may be gone from here on
+  EstimateVelocity(o, where, &d);
+  for (std::string& n : log_notes) d.notes.push_back(std::move(n));
   return d;
 }
 

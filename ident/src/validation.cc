@@ -148,14 +148,16 @@ const Signal& VelocityReference(const TrialData& trial, Signal* estimated) {
 // positions'), and its state c at a sample time t: the simulation at t, or, for sensors much
 // faster than the RK4 step, on a grid of about one step (and the input's breakpoints)
 // interpolated linearly (error ~ step²/8·|ξ''|, far below any MAE) — the union of the sample
-// times is then not materialised (8–16 bytes a sample). Queries come in increasing t within
-// one signal (Rewind between signals).
+// times is then not materialised (8–16 bytes a sample), nor is it when it is the positions'
+// own times. Only position and velocity are kept (16 bytes a simulated time, not a trajectory's
+// 24–32). Queries come in increasing t within one signal (Rewind between signals).
 class FreeRun {
  public:
   FreeRun(const model::DofModel& model, const Eigen::VectorXd& theta, const TrialData& trial,
           const std::vector<double>& velocity_times, double step_s, Eigen::VectorXd x0) {
     const SampleTimes span = MergedTimes(velocity_times, trial.position.t, nullptr);
     if (span.count == 0) return;
+    times_ = &grid_;
     dense_ = span.count > 4 * ((span.last - span.first) / step_s + 1);
     if (dense_) {
       for (double t = 0.0; t < span.last; t += step_s) grid_.push_back(t);
@@ -165,33 +167,48 @@ class FreeRun {
       }
       std::sort(grid_.begin(), grid_.end());
       grid_.erase(std::unique(grid_.begin(), grid_.end()), grid_.end());
+    } else if (&velocity_times == &trial.position.t && span.count == trial.position.size()) {
+      times_ = &trial.position.t;  // each time once, none negative: the union is the positions'
     } else {
       grid_.reserve(span.count);
       MergedTimes(velocity_times, trial.position.t, &grid_);
     }
     model::SimulationOptions so;
     so.step_s = step_s;
-    sim_ = model::SimulateMeasured(model, theta, trial.conditions(), grid_, so, &x0);
+    position_.resize(times_->size());
+    velocity_.resize(times_->size());
+    model::SimulateVisiting(model, theta, trial.conditions(), *times_, so, &x0,
+                            model::Seen::kBySensors,
+                            [&](std::size_t i, const double* x, const double*) {
+                              position_[i] = x[0];
+                              velocity_[i] = x[1];
+                            });
   }
-  bool empty() const { return grid_.empty(); }
+  FreeRun(const FreeRun&) = delete;  // times_ may point at its own grid_
+  FreeRun& operator=(const FreeRun&) = delete;
+  bool empty() const { return !times_ || times_->empty(); }
   void Rewind() { g_ = 0; }
+  /// State c (0 position, 1 velocity) at sample time t.
   double At(double t, int c) {
+    const std::vector<double>& times = *times_;
+    const std::vector<double>& x = c == 0 ? position_ : velocity_;
     if (!dense_) {  // every sample time is a simulated time
-      if (g_ >= grid_.size() || grid_[g_] > t) g_ = 0;
-      while (g_ < grid_.size() && grid_[g_] < t) ++g_;
-      return sim_.x(static_cast<Eigen::Index>(g_), c);
+      if (g_ >= times.size() || times[g_] > t) g_ = 0;
+      while (g_ < times.size() && times[g_] < t) ++g_;
+      return x[g_];
     }
-    if (g_ >= grid_.size() || grid_[g_] > t) g_ = 0;
-    while (g_ + 2 < grid_.size() && grid_[g_ + 1] < t) ++g_;
-    const double w = grid_[g_ + 1] > grid_[g_] ? (t - grid_[g_]) / (grid_[g_ + 1] - grid_[g_]) : 0.0;
-    const auto g = static_cast<Eigen::Index>(g_);
-    return sim_.x(g, c) + w * (sim_.x(g + 1, c) - sim_.x(g, c));
+    if (g_ >= times.size() || times[g_] > t) g_ = 0;
+    while (g_ + 2 < times.size() && times[g_ + 1] < t) ++g_;
+    const double w =
+        times[g_ + 1] > times[g_] ? (t - times[g_]) / (times[g_ + 1] - times[g_]) : 0.0;
+    return x[g_] + w * (x[g_ + 1] - x[g_]);
   }
 
  private:
   bool dense_ = false;
-  std::vector<double> grid_;  ///< the simulated times: the sample times, or the dense grid
-  model::Trajectory sim_;
+  std::vector<double> grid_;                    ///< the simulated times when not the positions' own
+  const std::vector<double>* times_ = nullptr;  ///< the simulated times (grid_ or the positions')
+  std::vector<double> position_, velocity_;     ///< the free run at times_
   std::size_t g_ = 0;
 };
 

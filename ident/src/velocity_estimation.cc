@@ -275,14 +275,15 @@ double InputTimeScale(const std::vector<double>& t, const std::vector<double>& f
 
 namespace {
 
-// A smoothed signal at times t with nothing estimated yet (NaN, every sample an edge, run 0).
-SmoothedSignal Unsmoothed(const std::vector<double>& t) {
+// A smoothed signal at times t with nothing estimated yet (NaN, every sample an edge, run 0),
+// its second derivative sized only `with_second_derivative`.
+SmoothedSignal Unsmoothed(const std::vector<double>& t, bool with_second_derivative) {
   SmoothedSignal out;
   const std::size_t n = t.size();
   out.t = t;
   out.value.assign(n, kNaN);
   out.derivative.assign(n, kNaN);
-  out.second_derivative.assign(n, kNaN);
+  if (with_second_derivative) out.second_derivative.assign(n, kNaN);
   out.edge.assign(n, true);
   out.run.assign(n, 0);
   return out;
@@ -291,7 +292,7 @@ SmoothedSignal Unsmoothed(const std::vector<double>& t) {
 }  // namespace
 
 SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
-  SmoothedSignal out = Unsmoothed(s.t);
+  SmoothedSignal out = Unsmoothed(s.t, true);
   SmoothRuns(s, options, [&out](const SmoothedSample& p) {
     out.value[p.i] = p.value;
     out.derivative[p.i] = p.derivative;
@@ -299,6 +300,23 @@ SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& option
     out.edge[p.i] = p.edge;
     out.run[p.i] = p.run;
   }, &out);
+  return out;
+}
+
+SmoothedSignal SavitzkyGolayRate(const Signal& s, const SavitzkyGolayOptions& options,
+                                 double* first_value) {
+  SmoothedSignal out = Unsmoothed(s.t, false);
+  *first_value = kNaN;
+  SmoothRuns(
+      s, options,
+      [&](const SmoothedSample& p) {
+        if (p.i == 0) *first_value = p.value;
+        out.value[p.i] = p.derivative;
+        out.derivative[p.i] = p.second_derivative;
+        out.edge[p.i] = p.edge;
+        out.run[p.i] = p.run;
+      },
+      &out);
   return out;
 }
 
@@ -398,7 +416,7 @@ std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rat
 }
 
 SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap_factor) {
-  SmoothedSignal out = Unsmoothed(p.t);
+  SmoothedSignal out = Unsmoothed(p.t, true);
   int run = 0;
   for (const auto& [b, e] : Runs(p.t, gap_factor)) {
     const std::size_t m = e - b;

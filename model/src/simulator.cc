@@ -21,11 +21,9 @@ inline double Inside(double t, double a, double b) {
   return std::max(a, std::min(t, b - 1e-12 * std::max(1.0, b)));
 }
 
-// The output trajectory, sized: x for every output time, S (with sensitivities) in place.
 // Throws std::invalid_argument on a step <= 0 or unsorted or negative output times, and
 // InputError when the simulation would take more than limits::kMaxSimulationSteps steps.
-Trajectory SizedOutput(int nx, int np, const std::vector<double>& output_times,
-                       const SimulationOptions& options) {
+void CheckOutputTimes(const std::vector<double>& output_times, const SimulationOptions& options) {
   if (!(options.step_s > 0)) throw std::invalid_argument("SimulationOptions::step_s must be > 0");
   if (!std::is_sorted(output_times.begin(), output_times.end()) ||
       (!output_times.empty() && output_times.front() < 0)) {
@@ -35,6 +33,13 @@ Trajectory SizedOutput(int nx, int np, const std::vector<double>& output_times,
     CheckedCount(output_times.back() / options.step_s, "simulation (duration / integration step)",
                  limits::kMaxSimulationSteps, "a shorter trial or a longer integration step");
   }
+}
+
+// The output trajectory, sized: x for every output time, S (with sensitivities) in place
+// (CheckOutputTimes first).
+Trajectory SizedOutput(int nx, int np, const std::vector<double>& output_times,
+                       const SimulationOptions& options) {
+  CheckOutputTimes(output_times, options);
   Trajectory out;
   out.t = output_times;
   out.x.resize(output_times.size(), nx);
@@ -66,18 +71,24 @@ __attribute__((always_inline)) inline void SensitivitySlope(const double* A, con
 }
 
 // Integrates from x0 at t = 0 and records the state at output_times[i] - shift (the state x0
-// for shifted times before 0). Every RK4 step ends at the input's breakpoints and at the
-// (shifted) output times, which are merged on the fly.
-// NX = number of states (2, or 3 with thruster lag), a template parameter so that the state
-// loops unroll. The hot loop keeps its buffers local (a class holding them was 8% slower in
-// the planner: stores through its pointers forced reloads of every member).
+// for shifted times before 0), or hands it to `visit` (nothing stored). Every RK4 step ends at the
+// input's breakpoints and at the (shifted) output times, which are merged on the fly. NX = number
+// of states (2, or 3 with thruster lag), a template parameter so that the state loops unroll. The
+// hot loop keeps its buffers local (a class holding them was 8% slower in the planner: stores
+// through its pointers forced reloads of every member).
 template <int NX, bool kOthers>
-Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
-                      const TrialConditions& c, const std::vector<double>& output_times,
-                      double shift, const SimulationOptions& options, const Eigen::VectorXd* x0) {
+Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta, const TrialConditions& c,
+                      const std::vector<double>& output_times, double shift,
+                      const SimulationOptions& options, const Eigen::VectorXd* x0,
+                      const OutputVisitor* visit) {
   constexpr int nx = NX;
   const int np = model.num_parameters();
-  Trajectory out = SizedOutput(nx, np, output_times, options);
+  Trajectory out;
+  if (visit) {
+    CheckOutputTimes(output_times, options);
+  } else {
+    out = SizedOutput(nx, np, output_times, options);
+  }
   const double* th = theta.data();
   const Kernel::Inverses inv = Kernel::Invert(model, th);
   const bool sens = options.sensitivities;
@@ -93,6 +104,10 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
   std::size_t next_out = 0;
   auto record = [&](double t) {
     for (; next_out < n_out && output_times[next_out] - shift <= t; ++next_out) {
+      if (visit) {
+        (*visit)(next_out, x, sens ? S.data() : nullptr);
+        continue;
+      }
       for (int s = 0; s < nx; ++s) out.x(next_out, s) = x[s];
       for (int s = 0; s < (sens ? nx : 0); ++s) {
         for (int j = 0; j < np; ++j) out.S[s](next_out, j) = S[s * np + j];
@@ -166,12 +181,13 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta,
   return out;
 }
 
-Trajectory Integrate(const DofModel& model, const Eigen::VectorXd& theta,
-                     const TrialConditions& c, const std::vector<double>& output_times,
-                     double shift, const SimulationOptions& options, const Eigen::VectorXd* x0) {
+Trajectory Integrate(const DofModel& model, const Eigen::VectorXd& theta, const TrialConditions& c,
+                     const std::vector<double>& output_times, double shift,
+                     const SimulationOptions& options, const Eigen::VectorXd* x0,
+                     const OutputVisitor* visit = nullptr) {
   const auto run = [&](auto nx, auto others) {
     return IntegrateN<decltype(nx)::value, decltype(others)::value>(model, theta, c, output_times,
-                                                                    shift, options, x0);
+                                                                    shift, options, x0, visit);
   };
   using Lag = std::integral_constant<int, 3>;
   using NoLag = std::integral_constant<int, 2>;
@@ -189,6 +205,17 @@ Trajectory Simulate(const DofModel& model, const Eigen::VectorXd& theta,
                     const TrialConditions& c, const std::vector<double>& output_times,
                     const SimulationOptions& options, const Eigen::VectorXd* x0) {
   return Integrate(model, theta, c, output_times, 0.0, options, x0);
+}
+
+void SimulateVisiting(const DofModel& model, const Eigen::VectorXd& theta, const TrialConditions& c,
+                      const std::vector<double>& output_times, const SimulationOptions& options,
+                      const Eigen::VectorXd* x0, Seen seen, const OutputVisitor& visit) {
+  const int di = seen == Seen::kBySensors ? model.sensor_delay_index() : -1;
+  if (options.sensitivities && di >= 0) {
+    throw std::invalid_argument(
+        "SimulateVisiting: no sensitivity to a sensor delay (SimulateMeasured has it)");
+  }
+  Integrate(model, theta, c, output_times, di >= 0 ? theta[di] : 0.0, options, x0, &visit);
 }
 
 Trajectory SimulateMeasured(const DofModel& model, const Eigen::VectorXd& theta,

@@ -4,6 +4,7 @@
 // definitions, and the live heap of a 420-trial fit against its number of measurements.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -138,7 +139,28 @@ TEST(BlockLeastSquaresTest, StepsAndCovarianceEqualTheDenseNormalEquations) {
   EXPECT_LT((K - expected).norm(), 1e-9 * expected.norm());
 }
 
+// The output error of the campaign's standard surge model started 5% off the truth, model
+// selection off, and its peak live heap.
+std::pair<OutputErrorResult, long long> SurgeFitCountingHeap(
+    const model::Campaign& c, const model::Truth& truth,
+    const std::vector<const TrialData*>& trials) {
+  const model::DofModel m(
+      c.vehicle, model::ModelStructure::Standard(c.vehicle, model::Dof::kSurge, {}, false));
+  Eigen::VectorXd theta(m.num_parameters());
+  for (int j = 0; j < m.num_parameters(); ++j) {
+    theta[j] = 1.05 * TrueParameter(truth, model::Dof::kSurge, m.parameter_names()[j]);
+  }
+  const std::vector<ParameterState> state(m.num_parameters(), ParameterState::kEstimated);
+  OutputErrorOptions o;
+  o.prune_insignificant = false;
+  uuvplan::testing::StartCountingHeap();
+  OutputErrorResult r = OutputErrorFit(m, trials, theta, state, o);
+  return {std::move(r), uuvplan::testing::StopCountingHeap()};
+}
+
 TEST(OutputErrorMemoryTest, LiveHeapOfAManyTrialFitGrowsWithItsMeasurementsNotTrialsSquared) {
+  if (!uuvplan::testing::HeapCountingAvailable())
+    GTEST_SKIP() << "a sanitizer build counts no heap";
   // 420 ROMEO surge trials of 24 s (position at 3.33 Hz, ~80 measurements each; each trial's
   // initial position is an unknown of its own: 423 unknowns). A dense Jacobian would be
   // measurements × unknowns × 8 B = 34,000 × 423 × 8 = 115 MB; the fit's peak live heap must
@@ -157,22 +179,47 @@ TEST(OutputErrorMemoryTest, LiveHeapOfAManyTrialFitGrowsWithItsMeasurementsNotTr
   }
   std::vector<const TrialData*> trials;
   for (const TrialData& d : data) trials.push_back(&d);
-  const model::DofModel m(c.vehicle, model::ModelStructure::Standard(c.vehicle, model::Dof::kSurge, {}, false));
-  Eigen::VectorXd theta(m.num_parameters());
-  for (int j = 0; j < m.num_parameters(); ++j) {
-    theta[j] = 1.05 * TrueParameter(truth, model::Dof::kSurge, m.parameter_names()[j]);
-  }
-  const std::vector<ParameterState> state(m.num_parameters(), ParameterState::kEstimated);
-  OutputErrorOptions o;
-  o.prune_insignificant = false;
-  uuvplan::testing::StartCountingHeap();
-  const OutputErrorResult r = OutputErrorFit(m, trials, theta, state, o);
-  const long long peak = uuvplan::testing::StopCountingHeap();
+  const auto [r, peak] = SurgeFitCountingHeap(c, truth, trials);
   ASSERT_TRUE(r.ok()) << r.message;
-  ASSERT_GT(static_cast<int>(r.initial.size()) + m.num_parameters(), BlockAnalysis::kDenseColumns);
+  ASSERT_GT(static_cast<int>(r.initial.size() + r.names.size()), BlockAnalysis::kDenseColumns);
   EXPECT_LT(peak, 400LL * r.num_residuals)
       << r.num_residuals << " measurements, peak live heap " << peak << " B";
   std::cout << r.num_residuals << " measurements, peak live heap " << peak / 1e6 << " MB\n";
+}
+
+TEST(OutputErrorMemoryTest,
+     ALongPositionTrialIsFittedWithoutStoringItsSimulationOrItsSamplesAgain) {
+  if (!uuvplan::testing::HeapCountingAvailable())
+    GTEST_SKIP() << "a sanitizer build counts no heap";
+  // Issue #16's case in small (bench/cases/position_surge_truth.yaml: position alone at 100 Hz,
+  // σ 1 cm), 300 s of force legs: 30,001 measurements on the output error's 0.05 s grid
+  // (6,001 points). The fit makes the trial's rows while the simulation runs and reads the
+  // samples in place. What it holds per measurement at its peak: the residuals at the answer
+  // (8 B), a single-precision copy of their absolute values for the gross-error median (4 B)
+  // and the grid (1.6 B): 14.5 B measured. Under 20 B: the simulation stored on the grid
+  // instead (its sensitivities, Hermite slopes and times) measures 28 B, a copy of the samples
+  // and their times adds 16 B, a second residual vector 8 B.
+  const model::Truth truth =
+      io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/bench/cases/position_surge_truth.yaml");
+  const model::Campaign c = VirtualCampaign(
+      truth,
+      {testing::Segments(
+          "legs", model::Dof::kSurge, "surge-front",
+          {{50, 40}, {-25, 30}, {75, 40}, {-50, 40}, {25, 50}, {-75, 40}, {50, 60}})},
+      16);
+  const TrialData d = PrepareTrial(c.trials[0], 0, c.vehicle, TrialDataOptions{});
+  ASSERT_FALSE(d.has_velocity());
+  const auto [r, peak] = SurgeFitCountingHeap(c, truth, {&d});
+  ASSERT_TRUE(r.ok()) << r.message;
+  ASSERT_EQ(r.num_residuals, static_cast<int>(d.position.size()));
+  EXPECT_LT(peak, 20LL * r.num_residuals)
+      << r.num_residuals << " measurements, peak live heap " << peak << " B";
+  std::cout << r.num_residuals << " measurements, peak live heap " << peak << " B ("
+            << double(peak) / r.num_residuals << " B a measurement)\n";
+  // The fit is a fit: m within 3σ of the truth (1.5 times a 95% interval's half-width).
+  const int im = static_cast<int>(std::find(r.names.begin(), r.names.end(), "m") - r.names.begin());
+  ASSERT_LT(im, static_cast<int>(r.names.size()));
+  EXPECT_LT(std::abs(r.theta[im] - 900.0), 3.0 * std::sqrt(r.covariance(im, im)));
 }
 
 }  // namespace

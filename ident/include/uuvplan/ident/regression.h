@@ -44,9 +44,11 @@ struct IntegratedRegressors {
 /// `velocity` (may be null: the trial's velocity_estimate) replaces the measured velocity, e.g.
 /// by a simulated one to build instrumental variables: its `value` is the velocity and its
 /// `derivative` (may be empty: linear interpolation) the acceleration at its times.
+/// `velocity_shift` is added to that velocity (a velocity error held over the trial).
 IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const TrialData& trial,
                                          const std::vector<double>& boundaries,
                                          const Eigen::VectorXd& theta, double max_step_s,
-                                         const SmoothedSignal* velocity = nullptr);
+                                         const SmoothedSignal* velocity = nullptr,
+                                         double velocity_shift = 0.0);
 
 }  // namespace uuvplan::ident

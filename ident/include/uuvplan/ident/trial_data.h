@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -114,8 +115,11 @@ struct TrialData {
 /// Prepares a trial of a campaign. Throws model::InputError (naming the file and column) when
 /// the trial's DOF has no force column or no position/velocity sample, or when a mapping is
 /// not a mapping of the vehicle.
+/// `log_read`, when given, is called once the entry's log has been read, before the velocity
+/// estimate is made (the caller may release the log there: the estimate then does not share
+/// memory with it).
 TrialData PrepareTrial(const model::TrialEntry& entry, int index, const model::Vehicle& vehicle,
-                       const TrialDataOptions& options);
+                       const TrialDataOptions& options, const std::function<void()>& log_read = {});
 
 /// Intervals of constant commanded force and mapping (for steady-state detection).
 std::vector<ForcePiece> ConstantForcePieces(const TrialData& trial, double force_tolerance);

@@ -68,6 +68,13 @@ struct SmoothedSignal {
 /// Savitzky–Golay smoothing and differentiation of irregularly sampled data.
 SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options);
 
+/// SavitzkyGolay one derivative up, for a rate from positions: `value` is the filter's
+/// derivative, `derivative` its second derivative (second_derivative empty), the gains the
+/// filter's; the smoothed signal itself is not stored (8 bytes a sample), only its first sample's
+/// value, in `first_value` (NaN where a run is too short).
+SmoothedSignal SavitzkyGolayRate(const Signal& s, const SavitzkyGolayOptions& options,
+                                 double* first_value);
+
 /// One sample of SavitzkyGolay's output (index i into s).
 struct SmoothedSample {
   std::size_t i = 0;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <functional>
 #include <vector>
 
 #include "uuvplan/model/dof_model.h"
@@ -27,6 +28,23 @@ struct Trajectory {
 Trajectory Simulate(const DofModel& model, const Eigen::VectorXd& theta,
                     const TrialConditions& conditions, const std::vector<double>& output_times,
                     const SimulationOptions& options, const Eigen::VectorXd* x0 = nullptr);
+
+/// One output of a simulation: its index in the output times, the state x (num_states values)
+/// and, with sensitivities, S row-major (S[s·P + j] = ∂x_s/∂theta_j, P = num_parameters), else
+/// null. Both are valid during the call only.
+using OutputVisitor = std::function<void(std::size_t i, const double* x, const double* S)>;
+
+/// What a visited simulation reports: the state (as Simulate) or what the sensors see (as
+/// SimulateMeasured: the model's sensor delay applied).
+enum class Seen { kState, kBySensors };
+
+/// Simulate or SimulateMeasured (`seen`), each output handed to `visit` in order instead of
+/// stored: memory independent of the number of outputs (a fit streams its residuals from it).
+/// Seen by sensors with a sensor delay, only without sensitivities (std::invalid_argument).
+void SimulateVisiting(const DofModel& model, const Eigen::VectorXd& theta,
+                      const TrialConditions& conditions, const std::vector<double>& output_times,
+                      const SimulationOptions& options, const Eigen::VectorXd* x0, Seen seen,
+                      const OutputVisitor& visit);
 
 /// What the sensors see: position and velocity at `times` delayed by the model's
 /// sensor_delay tau (y(t) = x(t - tau), rest before t = 0), with sensitivities if asked
