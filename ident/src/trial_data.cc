@@ -147,6 +147,12 @@ void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle,
   }
   const auto& fcol = log.force[Index(d->dof)];
   std::vector<char> used(vehicle.mappings.size(), 0);
+  // Sized once (grown by doubling they held up to twice their rows for the whole identification).
+  const auto rows = static_cast<std::size_t>(
+      std::count_if(fcol.begin(), fcol.end(), [](double f) { return !std::isnan(f); }));
+  d->force_t.reserve(rows);
+  d->force.reserve(rows);
+  d->mapping.reserve(rows);
   for (std::size_t i = 0; i < fcol.size(); ++i) {
     if (std::isnan(fcol[i])) continue;
     int m = default_mapping;
