@@ -182,6 +182,22 @@ bool Admissible(const model::DofModel& model, const Eigen::VectorXd& theta) {
   return true;
 }
 
+// dx/dt (position, velocity) at both ends of the grid interval [ta, tb], states xa and xb,
+// with the input held at its start (one-sided derivatives at breakpoints): the slopes of the
+// cubic Hermite interpolation of the output error's grid.
+void HermiteSlopes(const model::DofModel& model, double ta, double tb, const double* xa,
+                   const double* xb, const Eigen::VectorXd& theta, const model::TrialConditions& c,
+                   double* dl, double* dr) {
+  const model::InputSample in = model.SampleInput(ta, c, theta.data());
+  double dx[3];
+  model.Derivative(ta, xa, in, c, theta.data(), dx);
+  dl[0] = dx[0];
+  dl[1] = dx[1];
+  model.Derivative(tb, xb, in, c, theta.data(), dx);
+  dr[0] = dx[0];
+  dr[1] = dx[1];
+}
+
 class Problem {
  public:
   Problem(const model::DofModel& model, const std::vector<const TrialData*>& trials,
@@ -443,7 +459,7 @@ class Problem {
       finite = std::all_of(x, x + model_.num_states(), [](double v) { return std::isfinite(v); });
       if (g == 0 || !finite) return;
       const int a = static_cast<int>(g - 1);  // the interval [grid[a], grid[g]]
-      IntervalEnds(tp.grid[a], tp.grid[g], theta, c, &left, &right);
+      HermiteSlopes(model_, tp.grid[a], tp.grid[g], left.x, right.x, theta, c, left.dx, right.dx);
       for (; k < m.size(); ++k) {
         const int i = m.at(k);
         const double t = times[i];
@@ -460,20 +476,6 @@ class Problem {
     return finite;
   }
 
-  // dx/dt at both ends of a grid interval with the input held at its start (View's
-  // one-sided derivatives at breakpoints).
-  void IntervalEnds(double ta, double tb, const Eigen::VectorXd& theta,
-                    const model::TrialConditions& c, GridPoint* a, GridPoint* b) const {
-    const model::InputSample in = model_.SampleInput(ta, c, theta.data());
-    double dx[3];
-    model_.Derivative(ta, a->x, in, c, theta.data(), dx);
-    a->dx[0] = dx[0];
-    a->dx[1] = dx[1];
-    model_.Derivative(tb, b->x, in, c, theta.data(), dx);
-    b->dx[0] = dx[0];
-    b->dx[1] = dx[1];
-  }
-
   // A simulation seen at tp.times: run there (as is), or on tp.grid and interpolated
   // (OutputErrorOptions::grid_s): position and velocity by cubic Hermite with dx/dt from the
   // model and the interval's input held at both ends (one-sided derivatives at breakpoints),
@@ -488,17 +490,15 @@ class Problem {
       const std::size_t ng = tp.grid.size();
       dl_.resize(ng, 2);
       dr_.resize(ng, 2);
-      std::vector<double> x(nx), dx(nx);
+      double xa[3] = {0, 0, 0}, xb[3] = {0, 0, 0}, dl[2], dr[2];
       for (std::size_t k = 0; k + 1 < ng; ++k) {
-        const model::InputSample in = model.SampleInput(tp.grid[k], c, theta.data());
-        for (int s = 0; s < nx; ++s) x[s] = g.x(k, s);
-        model.Derivative(tp.grid[k], x.data(), in, c, theta.data(), dx.data());
-        dl_(k, 0) = dx[0];
-        dl_(k, 1) = dx[1];
-        for (int s = 0; s < nx; ++s) x[s] = g.x(k + 1, s);
-        model.Derivative(tp.grid[k + 1], x.data(), in, c, theta.data(), dx.data());
-        dr_(k, 0) = dx[0];
-        dr_(k, 1) = dx[1];
+        for (int s = 0; s < nx; ++s) {
+          xa[s] = g.x(k, s);
+          xb[s] = g.x(k + 1, s);
+        }
+        HermiteSlopes(model, tp.grid[k], tp.grid[k + 1], xa, xb, theta, c, dl, dr);
+        dl_.row(k) << dl[0], dl[1];
+        dr_.row(k) << dr[0], dr[1];
       }
     }
     // State s at time index i, in grid interval k (ignored without a grid).
