@@ -174,8 +174,11 @@ Candidate LoopChoice(const DofContext& ctx, const SineDesignOptions& sine,
   return best;
 }
 
-// The loop's stuck test of one candidate at design point j: its bottleneck (the parameter of
-// interest with the largest n).
+// The loop's stuck test of one candidate at design point j, judged on its bottleneck (the
+// parameter of interest with the largest n). The loop itself judges the parameter the candidate
+// brings nearest to the target (CandidateGain); the bottleneck is the more cautious choice for a
+// promise made before any trial — measured (loop_validation, 2026-11-28): with the loop's rule
+// here, random vehicle 16 was judged "all" while its loop ended stuck.
 TargetReach Bottleneck(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
                        const Eigen::MatrixXd& trial, int j, const PrecisionGoal& goal) {
   TargetReach here;

@@ -155,6 +155,7 @@ void PrintPredictedSigma(model::Dof dof, const planner::PredictedPrecision& pred
                   Quantity(sigma, model::Unit(name, dof), 2)});
   }
   table.Print(std::cout, "     ");
+  std::cout << "     assumption: " << planner::kPredictedSigmaAssumption << "\n";
   std::cout << std::fixed;
 }
 

@@ -146,6 +146,7 @@ void PrintLoopSummary(const planner::LoopResult& r, const planner::LoopOptions& 
   for (const auto& [dof, t] : r.dof_pool_time) {
     out << "; " << model::DofName(dof) << " " << model::DurationText(t);
   }
+  out << "\nassumption: " << planner::kPredictedSigmaAssumption;
   out << "\n\nFinal estimates against the truth:\n";
   PrintProgress(r.progress, lo.step.target_percent, out, &truth);
 }

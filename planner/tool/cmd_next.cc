@@ -57,7 +57,7 @@ void PrintNextTrial(const planner::NextStepResult& r, std::ostream& out) {
     for (const auto& [name, s] : r.predicted.sigma) {
       out << "  " << name << " " << Quantity(s, model::Unit(name, d.dof));
     }
-    out << "\n";
+    out << "\n  assumption: " << planner::kPredictedSigmaAssumption << "\n";
   }
 }
 

@@ -112,6 +112,7 @@ void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
     }
   }
   predicted.Print(out);
+  out << "assumption: " << planner::kPredictedSigmaAssumption << "\n";
   out << "\nPool time: " << model::DurationText(r.schedule.pool_time) << " (pauses included), "
       << r.schedule.trials.size() << " trials\n";
   for (const auto& d : r.dofs) {

@@ -102,8 +102,12 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   at_truth.judge_points = false;
   c.hosted_at_truth =
       planner::JudgePool(planner::VehicleOfTruth(truth), pool, so, nullptr, at_truth).hosted;
-  // UUVPLAN_VERBOSE=1: each trial, its DOF's estimates of interest and their trust.
+  // UUVPLAN_VERBOSE=1: the verdict's reason per DOF, then each trial, its DOF's estimates of
+  // interest and their trust.
   const bool verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
+  for (const auto& d : verdict.dofs) {
+    if (verbose) std::cout << "  verdict " << model::DofName(d.dof) << ": " << d.reason << "\n";
+  }
   planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const auto& it) {
     if (verbose) std::cout << IterationText(truth, it) << std::endl;
   });

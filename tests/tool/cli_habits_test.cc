@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tool_test_util.h"
+#include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::tool_test {
 namespace {
@@ -101,6 +102,23 @@ TEST(CliHabits, BadInputOfEveryFileCommandStartsWithTheProgramName) {
     EXPECT_THAT(run.err, StartsWith("uuvplan: error: ")) << args;
     EXPECT_THAT(run.err, HasSubstr("missing.yaml")) << args;
   }
+}
+
+// An answer that depends on an assumption says so where it is printed: every predicted σ
+// assumes each trial's start known (docs/planning.md, "Initial state"), and `schedule` and
+// `demo` print that sentence beside their predicted σ (`next` and `loop` print it too).
+TEST(CliHabits, PredictedSigmaSaysWhatItAssumes) {
+  const TempDir scratch;
+  const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
+  const ToolRun schedule = RunTool("schedule '" + romeo + "vehicle.yaml' --pool '" + romeo +
+                                       "pool.yaml' --dof surge",
+                                   scratch);
+  EXPECT_EQ(schedule.status, 0) << schedule.err;
+  EXPECT_THAT(schedule.out, HasSubstr(std::string("assumption: ") +
+                                      planner::kPredictedSigmaAssumption));
+  const ToolRun demo = RunTool("demo --out '" + (scratch / "demo") + "'", scratch);
+  EXPECT_EQ(demo.status, 0) << demo.err;
+  EXPECT_THAT(demo.out, HasSubstr(planner::kPredictedSigmaAssumption));
 }
 
 }  // namespace

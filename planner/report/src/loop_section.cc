@@ -21,7 +21,8 @@ Section LoopSection(const io::LoopHistory& h) {
                            r.kind, r.mapping, Number(r.duration), Number(r.pool_time)});
   }
   s.tables.push_back(std::move(trials));
-  Table last{"Estimates after the last trial",
+  Table last{std::string("Estimates after the last trial (") +
+                 planner::kPredictedSigmaAssumption + ")",
              {"DOF", "parameter", "value", "σ", "unit", "percentile error (%)", "predicted σ"},
              {}};
   for (const auto& [dof, params] : h.series) {

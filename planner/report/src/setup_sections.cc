@@ -104,8 +104,9 @@ Section ScheduleSection(const planner::Schedule& schedule,
                            turn ? "°" : std::string(model::PositionUnit(d.dof)), Number(t.thrust_min)});
   }
   s.tables.push_back(std::move(trials));
-  Table predicted{
-      "Predicted precision", {"DOF", "parameter", "predicted σ", "unit", "criterion"}, {}};
+  Table predicted{std::string("Predicted precision (") + planner::kPredictedSigmaAssumption + ")",
+                  {"DOF", "parameter", "predicted σ", "unit", "criterion"},
+                  {}};
   for (const auto& [dof, p] : schedule.predicted) {
     for (const auto& [name, sigma] : p.sigma) {
       predicted.rows.push_back({std::string(model::DofName(dof)), name, Number(sigma),

@@ -172,15 +172,16 @@ std::string NonPhysical(const model::Vehicle& vehicle, model::Dof dof, const std
 /// The predicted information gain of a candidate trial for its DOF's parameters of interest
 /// above the target: for each, the information ratio r = (σ_now/σ_after)² − 1 (σ_now the
 /// identification's σ the design knew, +inf when it knew none) and the number of such trials
-/// to the target n = ((σ_now/σ_target)² − 1)/r; the bottleneck is the parameter with the
-/// largest n. Negligible when n > DesignLoopOptions::max_trials_to_target.
+/// to the target n = ((σ_now/σ_target)² − 1)/r; the one reported is the parameter the trial
+/// brings nearest to the target (the smallest n). Negligible when even that n >
+/// DesignLoopOptions::max_trials_to_target.
 struct CandidateGain {
   model::Dof dof = model::Dof::kSurge;
   std::string trial;      ///< the candidate's id
-  std::string parameter;  ///< the bottleneck
+  std::string parameter;  ///< the parameter it brings nearest to the target
   double sigma_now = std::numeric_limits<double>::quiet_NaN();
   double sigma_after = std::numeric_limits<double>::quiet_NaN();  ///< predicted
-  double gain = 0.0;  ///< 1 − σ_after/σ_now of the bottleneck (1 when σ_now is +inf)
+  double gain = 0.0;  ///< 1 − σ_after/σ_now of that parameter (1 when σ_now is +inf)
   double trials_to_target = 0.0;
   /// σ_now is +inf (not determined yet) and this trial determines it: one trial, then planned
   /// from its estimate (trials_to_target 1).

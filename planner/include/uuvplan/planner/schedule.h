@@ -38,6 +38,15 @@ struct PlannedTrial {
   StartPosition start;   ///< where the travel over the box is centred in the pool
 };
 
+/// What every predicted σ assumes, printed beside it (docs/planning.md, "Initial state"): the
+/// Fisher information counts each trial's initial position and velocity as known, while the
+/// identification's output error estimates them.
+inline constexpr const char* kPredictedSigmaAssumption =
+    "predicted σ assume each trial's initial position and velocity known; `identify` estimates "
+    "them, so the achieved σ can be larger, several times on steady runs and short trials "
+    "(payload60 yaw, a 2-minute steady run: 0.053 predicted, 0.50 kg·m² achieved; "
+    "docs/planning.md, \"Initial state\")";
+
 struct PredictedPrecision {
   std::map<std::string, double> sigma;  ///< predicted 1σ per parameter name
   std::string criterion = "D";          ///< D, Ds, A or E
