@@ -277,7 +277,8 @@ std::vector<Eigen::MatrixXd> DofContext::Information(const model::TrialDesign& d
   std::vector<Eigen::MatrixXd> out;
   for (const auto& th : tm.design_thetas) {
     const TrialResponse r =
-        SimulateTrial(*tm.model, th, *input, sensors_, design.duration, step_s_, true);
+        SimulateTrial(*tm.model, th, *input, sensors_, design.duration, step_s_, true,
+                      options_.start_known);
     out.push_back(tm.Embed(r.M, model_->num_parameters()));
   }
   return out;

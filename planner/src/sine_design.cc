@@ -162,8 +162,9 @@ class SineProblem {
     const auto& thetas = ctx_.design_thetas();
     const int np = ctx_.model().num_parameters();
     for (std::size_t j = 0; j < thetas.size(); ++j) {
-      TrialResponse r = SimulateTrial(*tm_->model, tm_->design_thetas[j], *input,
-                                      ctx_.design_sensors(), d.duration, ctx_.step_s(), true);
+      TrialResponse r =
+          SimulateTrial(*tm_->model, tm_->design_thetas[j], *input, ctx_.design_sensors(),
+                        d.duration, ctx_.step_s(), true, ctx_.options().start_known);
       lo = std::min(lo, r.position_min);
       hi = std::max(hi, r.position_max);
       Eigen::MatrixXd M = tm_->Embed(r.M, np);

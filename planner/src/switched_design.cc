@@ -102,8 +102,9 @@ class SwitchedProblem {
     const int np = ctx_.model().num_parameters();
     double lo = 0.0, hi = 0.0;
     for (std::size_t j = 0; j < thetas.size(); ++j) {
-      const TrialResponse r = SimulateTrial(*tm.model, tm.design_thetas[j], *input,
-                                            ctx_.design_sensors(), d.duration, ctx_.step_s(), true);
+      const TrialResponse r =
+          SimulateTrial(*tm.model, tm.design_thetas[j], *input, ctx_.design_sensors(),
+                        d.duration, ctx_.step_s(), true, ctx_.options().start_known);
       lo = std::min(lo, r.position_min);
       hi = std::max(hi, r.position_max);
       Eigen::MatrixXd M = tm.Embed(r.M, np);

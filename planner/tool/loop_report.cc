@@ -203,7 +203,10 @@ json PredictedJson(model::Dof dof, const planner::PredictedPrecision& p) {
   json sigma = json::object();
   for (const auto& [name, s] : p.sigma) sigma[name] = Num(s);
   return {{std::string(model::DofName(dof)),
-           {{"sigma", sigma}, {"criterion", p.criterion}, {"value", Num(p.criterion_value)}}}};
+           {{"sigma", sigma},
+            {"criterion", p.criterion},
+            {"value", Num(p.criterion_value)},
+            {"assumption", planner::kPredictedSigmaAssumption}}}};
 }
 
 }  // namespace uuvplan::tool

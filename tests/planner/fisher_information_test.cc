@@ -38,9 +38,11 @@ model::ModelStructure LinearStructure() {
 }
 
 TEST(FisherInformation, MatchesTheClosedFormOfALinearStepResponse) {
-  // m·dξ/dt = -k·ξ + F from rest: ξ(t) = (F/k)(1 - e^{-kt/m}),
-  //   ∂ξ/∂m = -(F·t/m²)·e^{-kt/m},  ∂ξ/∂k = -(F/k²)(1 - e^{-kt/m}) + (F·t/(k·m))·e^{-kt/m}.
-  // Velocity sampled at 10 Hz with σ = 0.01 over 20 s: M = Σ s·sᵀ/σ².
+  // m·dξ/dt = -k·ξ + F from ξ0 = 0: ξ(t) = (F/k)(1 - e^{-kt/m}),
+  //   ∂ξ/∂m = -(F·t/m²)·e^{-kt/m},  ∂ξ/∂k = -(F/k²)(1 - e^{-kt/m}) + (F·t/(k·m))·e^{-kt/m},
+  //   ∂ξ/∂ξ0 = e^{-kt/m} (the initial velocity the output error fits with θ).
+  // Velocity sampled at 10 Hz with σ = 0.01 over 20 s: the information of (m, k, ξ0) is
+  // J = Σ s·sᵀ/σ², and M on (m, k) is its Schur complement with ξ0 profiled out.
   const double m = 100.0, k = 20.0, F = 10.0, T = 20.0, sigma = 0.01;
   const model::Vehicle v = SimpleVehicle(m, k, 0.0, true, false);
   const model::DofModel dm(v, LinearStructure());
@@ -49,14 +51,22 @@ TEST(FisherInformation, MatchesTheClosedFormOfALinearStepResponse) {
   const auto input = model::MakeSteadyExcitation(F, 0, T);
   const TrialResponse r =
       SimulateTrial(dm, theta, *input, v.sensors.at(model::Dof::kSurge), T, 0.01, true);
-  Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
+  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
   for (int i = 0; i <= 200; ++i) {
     const double t = 0.1 * i, e = std::exp(-k * t / m);
-    const Eigen::Vector2d s(-(F * t / (m * m)) * e, -(F / (k * k)) * (1 - e) + F * t / (k * m) * e);
-    M += s * s.transpose() / (sigma * sigma);
+    const Eigen::Vector3d s(-(F * t / (m * m)) * e, -(F / (k * k)) * (1 - e) + F * t / (k * m) * e,
+                            e);
+    J += s * s.transpose() / (sigma * sigma);
   }
-  // RK4 at 0.01 s on a 5 s time constant: relative error far below 1e-8.
+  const Eigen::Matrix2d M = J.topLeftCorner<2, 2>() -
+                            J.topRightCorner<2, 1>() * J.bottomLeftCorner<1, 2>() / J(2, 2);
+  // RK4 at 0.01 s on a 5 s time constant: relative error far below 1e-8; ∂ξ/∂ξ0 by a forward
+  // difference, exact for a linear model up to rounding (~1e-10).
+  ASSERT_EQ(r.M_joint.rows(), 3);
+  EXPECT_LT((r.M_joint - J).norm() / J.norm(), 1e-8);
   EXPECT_LT((r.M - M).norm() / M.norm(), 1e-8);
+  // Profiling ξ0 out costs information: M ≤ the known-start information, not equal to it.
+  EXPECT_GT((J.topLeftCorner<2, 2>() - M).norm() / M.norm(), 1e-3);
   EXPECT_NEAR(r.velocity_max, (F / k) * (1 - std::exp(-k * T / m)), 1e-9);
 }
 
@@ -83,17 +93,28 @@ TEST(FisherInformation, ConvergesWithTheChosenStep) {
 
 TEST(FisherInformation, IsContinuousInTheDuration) {
   // The sample after the last whole one counts with the fraction of its interval covered:
-  // M(10.05 s) = M(10 s) + 0.5·s(10.1)s(10.1)ᵀ/σ² at 10 Hz, and M is continuous at 10 s.
+  // J(10.05 s) = J(10 s) + 0.5·s(10.1)s(10.1)ᵀ/σ² at 10 Hz for the information J of (θ, ξ0),
+  // and M (ξ0 profiled out) is continuous at 10 s.
   const model::Vehicle v = SimpleVehicle(100.0, 20.0, 0.0, true, false);
   const model::DofModel dm(v, LinearStructure());
   const Eigen::Vector2d theta(100.0, 20.0);
   const auto input = model::MakeSteadyExcitation(10.0, 0, 100.0);
   const auto& sensors = v.sensors.at(model::Dof::kSurge);
-  auto M = [&](double T) { return SimulateTrial(dm, theta, *input, sensors, T, 0.01, true).M; };
-  const Eigen::MatrixXd M10 = M(10.0), M10p = M(10.0 + 1e-9), M1005 = M(10.05), M101 = M(10.1);
-  EXPECT_LT((M10p - M10).norm() / M10.norm(), 1e-7);
-  // Half of the 10.1 s sample's term: M(10.1) - M(10) is that whole term.
-  EXPECT_LT((M1005 - (M10 + 0.5 * (M101 - M10))).norm() / M10.norm(), 1e-9);
+  // The half-sample identity holds for the information of (θ, ξ0), linear in the weights
+  // (M_joint); M, its Schur complement with ξ0 profiled out, is only continuous.
+  auto R = [&](double T) { return SimulateTrial(dm, theta, *input, sensors, T, 0.01, true); };
+  const TrialResponse R10 = R(10.0), R10p = R(10.0 + 1e-9), R1005 = R(10.05), R101 = R(10.1);
+  EXPECT_LT((R10p.M - R10.M).norm() / R10.M.norm(), 1e-7);
+  EXPECT_LT((R10p.M_joint - R10.M_joint).norm() / R10.M_joint.norm(), 1e-7);
+  // Half of the 10.1 s sample's term: M_joint(10.1) - M_joint(10) is that whole term. (The
+  // forward-difference step of ∂y/∂ξ0 scales with the trial's speed range, which grows with the
+  // duration: exact for this linear model up to rounding.)
+  const Eigen::MatrixXd &J10 = R10.M_joint, &J1005 = R1005.M_joint, &J101 = R101.M_joint;
+  EXPECT_LT((J1005 - (J10 + 0.5 * (J101 - J10))).norm() / J10.norm(), 1e-9);
+  // M between its neighbours: one half-sample adds information, the other half more.
+  const double m10 = R10.M(0, 0), m1005 = R1005.M(0, 0), m101 = R101.M(0, 0);
+  EXPECT_GT(m1005, m10);
+  EXPECT_LT(m1005, m101);
 }
 
 TEST(FisherInformation, GoodwinPayneOptimalFrequencyIsAOverRoot3) {
@@ -138,10 +159,12 @@ TEST(FisherInformation, GoodwinPayneOptimalFrequencyIsAOverRoot3) {
 TEST(FisherInformation, PredictedSigmaMatchesMonteCarloOutputError) {
   // ROMEO surge truth (cases/romeo/truth.yaml: m 890, k 46.9, kq 306.2, bias 0) run through the
   // seed's sine (35 ± 25 N, 26 s period, 52 s) in surge-front, sonar at 3.33 Hz with σ = 0.03 m.
-  // Each replicate adds seeded Gaussian noise and fits θ = [m, k, kq, bias] by Gauss-Newton
-  // output error from the truth (the maximum-likelihood estimate for this noise). Its spread
-  // must match the Cramér-Rao σ = sqrt((M⁻¹)_ii) the planner predicts: with n replicates the
-  // sample σ has a relative standard error 1/sqrt(2(n-1)); the tolerance is 4 of those.
+  // Each replicate adds seeded Gaussian noise and fits θ = [m, k, kq, bias] with the trial's
+  // initial position χ0 and velocity ξ0 by Gauss-Newton output error from the truth (the
+  // maximum-likelihood estimate for this noise, with the initial state unknown as in
+  // ident/src/output_error.cc). Its spread must match the Cramér-Rao σ = sqrt((M⁻¹)_ii) the
+  // planner predicts (χ0 and ξ0 profiled out): with n replicates the sample σ has a relative
+  // standard error 1/sqrt(2(n-1)); the tolerance is 4 of those.
   const model::Vehicle v = testing::Romeo();
   model::ModelStructure s = model::ModelStructure::Standard(v, model::Dof::kSurge, {}, false);
   const model::DofModel dm(v, s);
@@ -168,17 +191,30 @@ TEST(FisherInformation, PredictedSigmaMatchesMonteCarloOutputError) {
   const int n = env ? std::max(10, std::atoi(env)) : 200;
   std::mt19937_64 rng(20240601);
   std::normal_distribution<double> noise(0.0, sigma);
+  model::SimulationOptions plain = so;
+  plain.sensitivities = false;
   Eigen::MatrixXd est(n, 4);
   for (int r = 0; r < n; ++r) {
     Eigen::VectorXd y = clean;
     for (int i = 0; i < y.size(); ++i) y[i] += noise(rng);
-    Eigen::VectorXd th = truth;
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(6);  // θ, χ0, ξ0
+    z.head(4) = truth;
     for (int it = 0; it < 6; ++it) {
-      const model::Trajectory tr = model::SimulateMeasured(dm, th, c, times, so);
-      const Eigen::MatrixXd& S = tr.S[0];
-      th += (S.transpose() * S).ldlt().solve(S.transpose() * (y - tr.x.col(0)));
+      Eigen::VectorXd x0 = Eigen::VectorXd::Zero(dm.num_states());
+      x0[0] = z[4];
+      x0[1] = z[5];
+      const model::Trajectory tr = model::SimulateMeasured(dm, z.head(4), c, times, so, &x0);
+      const double h = 1e-6;  // m/s: ∂y/∂ξ0 by a forward difference
+      Eigen::VectorXd x1 = x0;
+      x1[1] += h;
+      const Eigen::VectorXd y1 = model::SimulateMeasured(dm, z.head(4), c, times, plain, &x1).x.col(0);
+      Eigen::MatrixXd S(times.size(), 6);
+      S.leftCols(4) = tr.S[0];
+      S.col(4).setOnes();
+      S.col(5) = (y1 - tr.x.col(0)) / h;
+      z += (S.transpose() * S).ldlt().solve(S.transpose() * (y - tr.x.col(0)));
     }
-    est.row(r) = th.transpose();
+    est.row(r) = z.head(4).transpose();
   }
   const Eigen::RowVectorXd mean = est.colwise().mean();
   const double tol = 4.0 / std::sqrt(2.0 * (n - 1));

@@ -182,15 +182,17 @@ TEST_F(RomeoSchedule, WholeRomeoScheduleDeterminesHeaveWithTheLoopsFamilies) {
   // Heave: 2 m of free depth (cases/romeo/pool.yaml) hosts no settled steady run (the smallest
   // travels 5.1 m), but the loop's next-trial families — a run from rest and sines — fit and
   // determine m, k and the η (issue #13 item 2: what the loop can determine the schedule must
-  // not call undeterminable). The steady failure stays in the notes.
+  // not call undeterminable). The steady failure stays in the notes. Heave's only shortfall
+  // is the loop's 5% target over the whole box (PoolVerdict.JudgedAtTheLoopsTarget).
   ScheduleOptions o;
   const ScheduleResult r = PlanSchedule(*vehicle_, *pool_, o);
-  EXPECT_EQ(r.status, PlanStatus::kOk) << r.message;
+  EXPECT_EQ(r.status, PlanStatus::kPartial) << r.message;
   ASSERT_EQ(r.dofs.size(), 4u);  // surge, sway, heave, yaw: the DOFs with mappings and sensors
   for (const auto& d : r.dofs) {
-    EXPECT_TRUE(d.complete) << d.message;
     EXPECT_TRUE(d.determinacy.determined) << model::Join(d.determinacy.undetermined);
+    EXPECT_EQ(d.complete, d.dof != model::Dof::kHeave) << d.message;
     if (d.dof != model::Dof::kHeave) continue;
+    EXPECT_FALSE(d.reach.reached);
     bool completed = false;
     for (const auto& t : d.trials) completed = completed || t.design.id.rfind("heave-more-", 0) == 0;
     EXPECT_TRUE(completed);
@@ -239,11 +241,12 @@ TEST(PlannerCli, ScheduleAndCheckPool) {
     EXPECT_TRUE(t.contains("travel"));
     EXPECT_TRUE(t.contains("thrust_min"));
   }
-  // The plan fits its own pool (exit 0) and not a 6 m one (exit 1, with the required length).
+  // The plan fits its own pool (exit 0: surge, the DOF it plans, is hosted) and not a 6 m one
+  // (exit 1, with the required length).
   const std::string out = (dir / "check.json").string();
-  EXPECT_EQ(
-      RunTool("check-pool " + vehicle + " --pool " + pool + " --plan " + plan + " --json " + out),
-      0);
+  EXPECT_EQ(RunTool("check-pool " + vehicle + " --pool " + pool + " --dof surge --plan " + plan +
+                    " --json " + out),
+            0);
   const fs::path small = dir / "small.yaml";
   std::ofstream(small) << "name: small\nlength: 6\nwidth: 12\ndepth: 5\nmargin: 1.5\n";
   EXPECT_EQ(RunTool("check-pool " + vehicle + " --pool " + small.string() + " --plan " + plan +

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -106,16 +107,20 @@ TEST(CliHabits, BadInputOfEveryFileCommandStartsWithTheProgramName) {
 
 // An answer that depends on an assumption says so where it is printed: every predicted σ
 // assumes each trial's start known (docs/planning.md, "Initial state"), and `schedule` and
-// `demo` print that sentence beside their predicted σ (`next` and `loop` print it too).
+// `demo` print that sentence beside their predicted σ, and the schedule's JSON carries it
+// (`next` and `loop` print and write it too).
 TEST(CliHabits, PredictedSigmaSaysWhatItAssumes) {
   const TempDir scratch;
   const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
   const ToolRun schedule = RunTool("schedule '" + romeo + "vehicle.yaml' --pool '" + romeo +
-                                       "pool.yaml' --dof surge",
+                                       "pool.yaml' --dof surge --json '" + (scratch / "plan.json") +
+                                       "'",
                                    scratch);
   EXPECT_EQ(schedule.status, 0) << schedule.err;
   EXPECT_THAT(schedule.out, HasSubstr(std::string("assumption: ") +
                                       planner::kPredictedSigmaAssumption));
+  const auto plan = nlohmann::json::parse(ReadText(scratch / "plan.json"));
+  EXPECT_EQ(plan["predicted"]["surge"]["assumption"], planner::kPredictedSigmaAssumption);
   const ToolRun demo = RunTool("demo --out '" + (scratch / "demo") + "'", scratch);
   EXPECT_EQ(demo.status, 0) << demo.err;
   EXPECT_THAT(demo.out, HasSubstr(planner::kPredictedSigmaAssumption));

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::io {
 namespace {
@@ -45,6 +46,7 @@ void AddInformationJson(const planner::ScheduleInformation& info, nlohmann::json
       {"point", "the nominal parameters (centre of the a priori box)"},
       {"criteria", "relative information M_rel = D·M·D, D = diag(|theta|): D = log det, "
                    "A = -log tr M_rel^-1, E = log lambda_min (natural log, larger is better)"},
+      {"assumption", planner::kPredictedSigmaAssumption},
       {"dofs", dofs}};
 }
 

@@ -306,7 +306,10 @@ json ScheduleToJson(const Schedule& schedule) {
     json sigma = json::object();
     for (const auto& [name, s] : p.sigma) sigma[name] = s;
     predicted[std::string(model::DofName(dof))] = {
-        {"sigma", sigma}, {"criterion", p.criterion}, {"value", p.criterion_value}};
+        {"sigma", sigma},
+        {"criterion", p.criterion},
+        {"value", p.criterion_value},
+        {"assumption", planner::kPredictedSigmaAssumption}};
   }
   return {{"trials", trials}, {"predicted", predicted}, {"pool_time", schedule.pool_time}};
 }

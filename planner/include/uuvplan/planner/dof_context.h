@@ -74,6 +74,10 @@ struct PlannerOptions {
   /// several DOFs. The results do not depend on it: each design is planned on its own and
   /// taken in the serial order.
   int threads = 0;
+  /// Count each trial's initial state as known (fisher_information.h): the information is then
+  /// an upper bound of what the identification can use. Off for every design and predicted σ;
+  /// the pool verdict judges "none" on it (pool_verdict.h).
+  bool start_known = false;
 
   bool IsValid(std::string* error) const;
   /// `threads`, or 1 when a backend is Ipopt: its linear solver (MUMPS) is not thread-safe.

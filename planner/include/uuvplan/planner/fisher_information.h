@@ -12,6 +12,12 @@
 // fraction of a sample interval the trial covers beyond its last whole sample: M is then a
 // continuous function of the duration (a solver may move the duration smoothly), and differs
 // from the strictly discrete information by at most one sample.
+//
+// The trial's initial state is not known to the identification: its output error fits the
+// initial position (position sensor) and velocity of every trial with θ (seed 000 eqs. 16-19
+// fit m·ξ0 + k·χ0 likewise). M is the information on θ with those two profiled out (the Schur
+// complement of the information of θ, χ0, ξ0), so that a steady run's constant position lag
+// behind its start, which a free χ0 absorbs, is not counted as information on m.
 #pragma once
 
 #include <Eigen/Dense>
@@ -25,9 +31,13 @@ namespace uuvplan::planner {
 
 /// What one simulation of a trial at one theta gives the planner.
 struct TrialResponse {
-  /// Fisher information, absolute units, rows/cols in DofModel::parameter_names() order
-  /// (empty when not asked for).
+  /// Fisher information on theta, the trial's initial state profiled out (see above), absolute
+  /// units, rows/cols in DofModel::parameter_names() order (empty when not asked for).
   Eigen::MatrixXd M;
+  /// The information of (theta, chi0, xi0) M is the Schur complement of: theta's rows/cols
+  /// first, then the initial position (only with a position sensor), then the initial velocity
+  /// (empty when not asked for). Linear in the samples' weights, unlike M.
+  Eigen::MatrixXd M_joint;
   double position_min = 0.0;  ///< extremes of the position over [0, duration] (m or rad)
   double position_max = 0.0;
   double velocity_min = 0.0;  ///< extremes of the velocity over [0, duration]
@@ -42,12 +52,16 @@ struct TrialResponse {
 double ChooseStep(double shortest_time_constant_s, double max_step_s = 0.5);
 
 /// Simulates `input` from rest for `duration` at `theta` and returns the position/velocity
-/// extremes and, if `with_information`, the Fisher information of the DOF's sensors.
+/// extremes and, if `with_information`, the Fisher information of the DOF's sensors on theta,
+/// the initial position and velocity profiled out (one more plain simulation for ∂y/∂ξ0).
 /// Throws std::invalid_argument if the DOF has no sensor, or a sensor has rate <= 0 or
 /// sigma <= 0 (the vehicle reader rejects those first).
+/// With `start_known` M is the information with the initial state known instead (the block of
+/// theta in M_joint, an upper bound of the profiled M).
 TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd& theta,
                             const model::Excitation& input, const model::DofSensors& sensors,
-                            double duration, double step_s, bool with_information);
+                            double duration, double step_s, bool with_information,
+                            bool start_known = false);
 
 /// The position of the trial on a fine grid (every `step_s`) for constraint checks:
 /// returns the extremes over [0, duration] of every simulated step, not only sensor samples.

@@ -82,6 +82,10 @@ struct DofVerdict {
   /// kAll exactly when `hosted`; else kPart or kNone by `points`.
   Hostability hostability = Hostability::kNone;
   std::vector<PointVerdict> points;  ///< centre and corners checked when not hosted
+  /// `points` were planned with each trial's start known (PlannerOptions::start_known): no
+  /// point is hosted with it estimated, so "none" is judged on that upper bound of the
+  /// information — the loop's own trials, planned at its estimates, may still get there.
+  bool points_start_known = false;
 };
 
 /// The pool that hosts every DOF asked for (wall to wall, m) and the tether turns: along a

@@ -38,14 +38,13 @@ struct PlannedTrial {
   StartPosition start;   ///< where the travel over the box is centred in the pool
 };
 
-/// What every predicted σ assumes, printed beside it (docs/planning.md, "Initial state"): the
-/// Fisher information counts each trial's initial position and velocity as known, while the
-/// identification's output error estimates them.
+/// What every predicted σ assumes, printed beside it (docs/planning.md, "Fisher information"
+/// and "Initial state").
 inline constexpr const char* kPredictedSigmaAssumption =
-    "predicted σ assume each trial's initial position and velocity known; `identify` estimates "
-    "them, so the achieved σ can be larger, several times on steady runs and short trials "
-    "(payload60 yaw, a 2-minute steady run: 0.053 predicted, 0.50 kg·m² achieved; "
-    "docs/planning.md, \"Initial state\")";
+    "predicted σ are the Cramér–Rao bound of the model as given, with white sensor noise of the "
+    "vehicle file's σ, each trial's initial position and velocity estimated with the parameters "
+    "as `identify` does (docs/planning.md, \"Initial state\"); coloured noise or an unmodelled "
+    "effect makes the achieved σ larger";
 
 struct PredictedPrecision {
   std::map<std::string, double> sigma;  ///< predicted 1σ per parameter name
