@@ -177,8 +177,9 @@ Candidate LoopChoice(const DofContext& ctx, const SineDesignOptions& sine,
 // The loop's stuck test of one candidate at design point j, judged on its bottleneck (the
 // parameter of interest with the largest n). The loop itself judges the parameter the candidate
 // brings nearest to the target (CandidateGain); the bottleneck is the more cautious choice for a
-// promise made before any trial — measured (loop_validation 30 1 2 1, 2026-11-28, start known):
-// the loop's rule here judged one more pool of 34 "all" and agreed with the loop no better.
+// promise made before any trial — measured (loop_validation 30 1 2 1, 2026-11-28, with the
+// start then counted as known): the loop's rule here judged one more pool of 34 "all" and agreed
+// with the loop no better.
 TargetReach Bottleneck(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
                        const Eigen::MatrixXd& trial, int j, const PrecisionGoal& goal) {
   TargetReach here;

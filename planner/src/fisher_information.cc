@@ -85,20 +85,23 @@ TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd&
   // σ(m) predicted 0.053, achieved 0.50 kg·m²). So they are nuisance parameters, profiled out:
   //   M = Mθθ − Mθn·Mnn⁺·Mnθ   of the information of (θ, χ0, ξ0),
   // with ∂y/∂χ0 = (1, 0) (no force depends on the position) and ∂y/∂ξ0 by a forward
-  // difference, as the output error takes them. ξ0 is profiled out even where the output error
+  // difference, as the output error takes it. ξ0 is profiled out even where the output error
   // would fix it at 0: a start judged at rest is only at rest within the test's resolution, and
   // the information a known ξ0 adds (a steady run's start-up curvature) is what an undetected
   // residual velocity biases (payload60 yaw: 0.01 rad/s moves m by 1.4 σ of that information).
   const int np = model.num_parameters();
-  const bool free_chi0 = static_cast<bool>(sensors.position);
-  const int nn = (free_chi0 ? 1 : 0) + 1;
+  const bool free_chi0 = static_cast<bool>(sensors.position) && !start_known;
+  const int nn = start_known ? 0 : (free_chi0 ? 1 : 0) + 1;
+  // ∂y/∂ξ0 by a forward difference, its step relative to the trial's largest speed.
   const double h_xi = 1e-6 * std::max({std::abs(r.velocity_min), std::abs(r.velocity_max), 1e-3});
-  Eigen::VectorXd x_xi = Eigen::VectorXd::Zero(model.num_states());
-  x_xi[1] = h_xi;
-  model::SimulationOptions plain = options;
-  plain.sensitivities = false;
-  const model::Trajectory traj_xi =
-      model::SimulateMeasured(model, theta, conditions, times, plain, &x_xi);
+  model::Trajectory traj_xi;
+  if (!start_known) {
+    Eigen::VectorXd x_xi = Eigen::VectorXd::Zero(model.num_states());
+    x_xi[1] = h_xi;
+    model::SimulationOptions plain = options;
+    plain.sensitivities = false;
+    traj_xi = model::SimulateMeasured(model, theta, conditions, times, plain, &x_xi);
+  }
   // M = Σ_k w_k/σ² · s_kᵀ s_k, s_k the row of ∂y/∂(theta, χ0, ξ0) of the sample's channel.
   Eigen::MatrixXd weighted(samples.size(), np + nn);
   int n = 0;
@@ -109,15 +112,14 @@ TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd&
     weighted.row(n).head(np) = w * traj.S[c].row(k);
     int col = np;
     if (free_chi0) weighted(n, col++) = c == 0 ? w : 0.0;
-    weighted(n, col) = w * (traj_xi.x(k, c) - traj.x(k, c)) / h_xi;
+    if (!start_known) weighted(n, col) = w * (traj_xi.x(k, c) - traj.x(k, c)) / h_xi;
     ++n;
   }
-  Eigen::MatrixXd& full = r.M_joint;
-  full = Eigen::MatrixXd::Zero(np + nn, np + nn);
+  Eigen::MatrixXd full = Eigen::MatrixXd::Zero(np + nn, np + nn);
   full.selfadjointView<Eigen::Lower>().rankUpdate(weighted.topRows(n).transpose());
   full = full.selfadjointView<Eigen::Lower>();
-  if (start_known) {
-    r.M = full.topLeftCorner(np, np);
+  if (start_known) {  // the block of θ: no nuisance column was made
+    r.M = std::move(full);
     return r;
   }
   const Eigen::MatrixXd Mtn = full.topRightCorner(np, nn);
@@ -125,6 +127,7 @@ TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd&
       full.bottomRightCorner(nn, nn));
   r.M = full.topLeftCorner(np, np) - Mtn * Mnn.solve(Mtn.transpose());
   r.M = (0.5 * (r.M + r.M.transpose())).eval();
+  r.M_joint = std::move(full);
   return r;
 }
 

@@ -134,7 +134,8 @@ void JudgePoints(const model::Vehicle& vehicle, const model::Pool& pool,
   so.dofs = {v->dof};
   const std::vector<BoxPoint> points = VerdictPoints(vehicle, v->dof, options.planner.box);
   std::vector<char> hosted = HostedPoints(vehicle, pool, so, v->dof, points);
-  if (std::none_of(hosted.begin(), hosted.end(), [](char h) { return h != 0; })) {
+  const bool none = std::none_of(hosted.begin(), hosted.end(), [](char h) { return h != 0; });
+  if (none && !points.empty() && !options.planner.start_known) {
     so.planner.start_known = true;
     hosted = HostedPoints(vehicle, pool, so, v->dof, points);
     v->points_start_known = true;
@@ -478,16 +479,25 @@ std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& p
                   " (metacentric height > 0) cannot make these turns; plan them only for a "
                   "vehicle without one");
   }
+  const bool bound = std::any_of(v.dofs.begin(), v.dofs.end(), [](const DofVerdict& d) {
+    return d.points_start_known;
+  });
   if (v.hostability == Hostability::kPart) {
     out.push_back(
         "  assumption: judged over the whole a priori box (the vehicle file's inertia bounds and "
-        "drag prior); the pool hosts the vehicles at the points listed, so the first trials "
-        "decide: `loop` and `next` run, and a loop that then ends stuck on a DOF above has met a "
-        "vehicle outside the hostable part (status infeasible, exit 1)");
+        "drag prior); the pool hosts the vehicles at the points listed" +
+        std::string(bound ? " (for a DOF so marked, only counting each trial's start known: "
+                            "the loop's trials at its estimates must do better than the a "
+                            "priori schedule there)"
+                          : "") +
+        ", so the first trials decide: `loop` and `next` run, and a loop that then ends stuck "
+        "on a DOF above has met a vehicle outside the hostable part (status infeasible, exit "
+        "1)");
   } else if (!v.hosted) {
     out.push_back(
         "  assumption: judged over the whole a priori box (its centre and four (m, drag) "
-        "corners each planned as a known vehicle): no vehicle of the box is hosted, `loop` "
+        "corners each planned as a known vehicle, and again counting each trial's start "
+        "known, the upper bound of the information): no vehicle of the box is hosted, `loop` "
         "refuses before any trial");
   }
   return out;

@@ -41,7 +41,8 @@ void PrintProgress(const std::vector<planner::DofProgress>& progress, double tar
 ///          "interest": {<name>: {"value", "sigma", "percent"}}}} (null for not estimated).
 nlohmann::json ProgressJson(const std::vector<planner::DofProgress>& progress);
 
-/// {<dof>: {"sigma": {<name>: s}, "criterion", "value"}} as in a schedule's "predicted".
+/// {<dof>: {"sigma": {<name>: s}, "criterion", "value", "assumption"}} as in a schedule's
+/// "predicted".
 nlohmann::json PredictedJson(model::Dof dof, const planner::PredictedPrecision& p);
 
 }  // namespace uuvplan::tool

@@ -65,8 +65,15 @@ TEST(FisherInformation, MatchesTheClosedFormOfALinearStepResponse) {
   ASSERT_EQ(r.M_joint.rows(), 3);
   EXPECT_LT((r.M_joint - J).norm() / J.norm(), 1e-8);
   EXPECT_LT((r.M - M).norm() / M.norm(), 1e-8);
-  // Profiling ξ0 out costs information: M ≤ the known-start information, not equal to it.
-  EXPECT_GT((J.topLeftCorner<2, 2>() - M).norm() / M.norm(), 1e-3);
+  // start_known gives θ's block of the joint information (the same sums: to rounding), and
+  // profiling ξ0 out costs information: that block minus M is positive semidefinite and not 0.
+  const TrialResponse known = SimulateTrial(dm, theta, *input, v.sensors.at(model::Dof::kSurge),
+                                            T, 0.01, true, /*start_known=*/true);
+  EXPECT_EQ(known.M_joint.size(), 0);
+  EXPECT_LT((known.M - r.M_joint.topLeftCorner<2, 2>()).norm() / known.M.norm(), 1e-12);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> lost(known.M - r.M);
+  EXPECT_GE(lost.eigenvalues().minCoeff(), -1e-9 * known.M.norm());
+  EXPECT_GT(lost.eigenvalues().maxCoeff(), 1e-3 * r.M.norm());
   EXPECT_NEAR(r.velocity_max, (F / k) * (1 - std::exp(-k * T / m)), 1e-9);
 }
 

@@ -18,6 +18,7 @@
 #include "uuvplan/model/prior.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/trial_design.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/pool_verdict.h"
 
 namespace uuvplan::planner {
@@ -123,7 +124,7 @@ model::Pool CasePool(const std::string& c) {
   return io::ReadPool(std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + c + "/pool.yaml");
 }
 
-TEST(PoolVerdict, RomeoOwnPoolHostsEveryDof) {
+TEST(PoolVerdict, RomeoOwnPoolAgreesAcrossCommands) {
   const model::Vehicle v = testing::Romeo();
   CheckVerdict(v, testing::RomeoPool(), {Dof::kSurge, Dof::kSway, Dof::kHeave, Dof::kYaw},
                "romeo");
@@ -200,9 +201,36 @@ void ExpectPart(const model::Vehicle& v, const model::Pool& pool, Dof dof,
   VerdictOptions plain;
   plain.need_checks = -1;
   plain.judge_points = false;
+  // Points judged on the start-known bound are checked on it too.
+  so.planner.start_known = verdict.dofs[0].points_start_known;
   for (const PointVerdict& p : verdict.dofs[0].points) {
     const PoolVerdict at = JudgePool(VehicleAt(v, dof, p.point), pool, so, nullptr, plain);
     EXPECT_EQ(at.hosted, p.hosted) << what << " at " << p.point.label;
+  }
+}
+
+// "none" is judged on the start-known upper bound of the information (docs/planning.md, "Initial
+// state"): ROMEO heave in a 6 × 6 × 3 m pool (1 m of free depth) is hosted at no point of the box
+// with each trial's start estimated, at some with it known: part, and its line says which.
+TEST(PoolVerdict, HeaveInASixMetrePoolIsPartOnlyOnTheStartKnownBound) {
+  const model::Vehicle v = testing::Romeo();
+  ExpectPart(v, SixBySixByThree(), Dof::kHeave, "romeo-six heave");
+  ScheduleOptions so;
+  so.dofs = {Dof::kHeave};
+  const PoolVerdict verdict = JudgePool(v, SixBySixByThree(), so);
+  ASSERT_EQ(verdict.dofs.size(), 1u);
+  const DofVerdict& heave = verdict.dofs[0];
+  EXPECT_TRUE(heave.points_start_known);
+  const std::string lines = model::Join(VerdictLines(verdict, SixBySixByThree()), "\n");
+  EXPECT_NE(lines.find("hosted at none with each trial's start estimated"), std::string::npos)
+      << lines;
+  VerdictOptions plain;
+  plain.need_checks = -1;
+  plain.judge_points = false;
+  for (const PointVerdict& p : heave.points) {  // none hosted with the start estimated
+    const PoolVerdict at = JudgePool(VehicleAt(v, Dof::kHeave, p.point), SixBySixByThree(), so,
+                                     nullptr, plain);
+    EXPECT_FALSE(at.hosted) << p.point.label;
   }
 }
 

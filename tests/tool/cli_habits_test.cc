@@ -105,10 +105,11 @@ TEST(CliHabits, BadInputOfEveryFileCommandStartsWithTheProgramName) {
   }
 }
 
-// An answer that depends on an assumption says so where it is printed: every predicted σ
-// assumes each trial's start known (docs/planning.md, "Initial state"), and `schedule` and
-// `demo` print that sentence beside their predicted σ, and the schedule's JSON carries it
-// (`next` and `loop` print and write it too).
+// An answer that depends on an assumption says so where it is printed: every predicted σ rests
+// on the model as given, white sensor noise and each trial's start estimated (docs/planning.md,
+// "Initial state"); `schedule` and `demo` print that sentence beside their predicted σ, and the
+// schedule's JSON carries it beside `predicted` and `information` (`next` and `loop` print it
+// too, from the same constant).
 TEST(CliHabits, PredictedSigmaSaysWhatItAssumes) {
   const TempDir scratch;
   const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
@@ -121,6 +122,7 @@ TEST(CliHabits, PredictedSigmaSaysWhatItAssumes) {
                                       planner::kPredictedSigmaAssumption));
   const auto plan = nlohmann::json::parse(ReadText(scratch / "plan.json"));
   EXPECT_EQ(plan["predicted"]["surge"]["assumption"], planner::kPredictedSigmaAssumption);
+  EXPECT_EQ(plan["information"]["assumption"], planner::kPredictedSigmaAssumption);
   const ToolRun demo = RunTool("demo --out '" + (scratch / "demo") + "'", scratch);
   EXPECT_EQ(demo.status, 0) << demo.err;
   EXPECT_THAT(demo.out, HasSubstr(planner::kPredictedSigmaAssumption));

@@ -46,7 +46,8 @@ nlohmann::json PoolVerdictJson(const planner::PoolVerdict& v, const model::Pool&
         {"need_refuted", d.need_verified ? TravelJson(pool, d.dof, d.need_refuted) : nlohmann::json()},
         {"undetermined", d.determinacy.undetermined},
         {"hostability", std::string(planner::HostabilityName(d.hostability))},
-        {"points", PointsJson(d)}};
+        {"points", PointsJson(d)},
+        {"points_start_known", d.points_start_known}};
   }
   const planner::RequiredPool& r = v.required;
   const double m2 = 2 * pool.margin;

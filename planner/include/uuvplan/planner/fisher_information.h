@@ -56,8 +56,8 @@ double ChooseStep(double shortest_time_constant_s, double max_step_s = 0.5);
 /// the initial position and velocity profiled out (one more plain simulation for ∂y/∂ξ0).
 /// Throws std::invalid_argument if the DOF has no sensor, or a sensor has rate <= 0 or
 /// sigma <= 0 (the vehicle reader rejects those first).
-/// With `start_known` M is the information with the initial state known instead (the block of
-/// theta in M_joint, an upper bound of the profiled M).
+/// With `start_known` M is the information with the initial state known instead (theta's block
+/// of the joint information, an upper bound of the profiled M; M_joint is then left empty).
 TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd& theta,
                             const model::Excitation& input, const model::DofSensors& sensors,
                             double duration, double step_s, bool with_information,

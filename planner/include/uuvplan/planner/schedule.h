@@ -43,8 +43,9 @@ struct PlannedTrial {
 inline constexpr const char* kPredictedSigmaAssumption =
     "predicted σ are the Cramér–Rao bound of the model as given, with white sensor noise of the "
     "vehicle file's σ, each trial's initial position and velocity estimated with the parameters "
-    "as `identify` does (docs/planning.md, \"Initial state\"); coloured noise or an unmodelled "
-    "effect makes the achieved σ larger";
+    "as `identify` does (the velocity even where `identify` judges the start at rest and fixes "
+    "it: there the prediction is cautious; docs/planning.md, \"Initial state\"); coloured noise "
+    "or an unmodelled effect makes the achieved σ larger";
 
 struct PredictedPrecision {
   std::map<std::string, double> sigma;  ///< predicted 1σ per parameter name
