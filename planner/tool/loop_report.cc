@@ -12,6 +12,7 @@
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/ident/monte_carlo.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
 
 namespace uuvplan::tool {
 namespace {
@@ -200,13 +201,7 @@ json ProgressJson(const std::vector<planner::DofProgress>& progress) {
 }
 
 json PredictedJson(model::Dof dof, const planner::PredictedPrecision& p) {
-  json sigma = json::object();
-  for (const auto& [name, s] : p.sigma) sigma[name] = Num(s);
-  return {{std::string(model::DofName(dof)),
-           {{"sigma", sigma},
-            {"criterion", p.criterion},
-            {"value", Num(p.criterion_value)},
-            {"assumption", planner::kPredictedSigmaAssumption}}}};
+  return {{std::string(model::DofName(dof)), io::PredictedToJson(p)}};
 }
 
 }  // namespace uuvplan::tool

@@ -17,6 +17,7 @@ namespace uuvplan::tool_test {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 namespace fs = std::filesystem;
 
 const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
@@ -156,14 +157,21 @@ TEST(ReportTool, ScheduleReportKeepsTheVerdictOfTheScheduleOptions) {
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_THAT(ReadText(tmp / "stored/report.html"),
               HasSubstr("CANNOT host the identification of surge"));
+  // The predicted σ are labelled with what the file says they rest on (io::PredictedToJson).
+  EXPECT_THAT(ReadText(tmp / "stored/report.html"),
+              HasSubstr("initial position and velocity estimated with the parameters"));
   auto j = nlohmann::json::parse(ReadText(plan));
-  j.erase("verdict");  // a hand-made plan
+  j.erase("verdict");  // a hand-made plan, or one written before the verdict and assumption
+  j["predicted"]["surge"].erase("assumption");
   const std::string bare = tmp.Write("bare.json", j.dump());
   const ToolRun b = report(bare, "bare");
   EXPECT_EQ(b.status, 0) << b.err;  // the default longest trial: hosted
   const std::string html = ReadText(tmp / "bare/report.html");
   EXPECT_THAT(html, HasSubstr("CAN host the identification of surge to 5%"));
   EXPECT_THAT(html, HasSubstr("the file holds no verdict for pool"));
+  // Not today's assumption: the old planner counted each trial's start as known.
+  EXPECT_THAT(html, HasSubstr("assumption not recorded in the file (written before 2026-11-28"));
+  EXPECT_THAT(html, Not(HasSubstr("initial position and velocity estimated with the parameters")));
 }
 
 // A virtual ROMEO heave campaign (the planned heave trials run on truth-effects.yaml) after a

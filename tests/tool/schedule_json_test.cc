@@ -158,6 +158,28 @@ TEST(ScheduleJson, ScheduleRoundTripsThroughAFile) {
   EXPECT_EQ(r.pool_time, 395.5);
 }
 
+// Every predicted σ says what it rests on (planner::kPredictedSigmaAssumption), in the file
+// and read back; a file written before that was recorded (no "assumption") is read as resting
+// on the start counted known, which made σ several times too small (docs/planning.md,
+// "Initial state"), so that `report` does not label it with today's assumption.
+TEST(ScheduleJson, PredictedSigmaCarryWhatTheyRestOnAndOldFilesSaySo) {
+  Schedule s;
+  s.trials = {SteadyTrial()};
+  s.predicted[model::Dof::kSurge] = {{{"m", 56.0}}, "D", -12.25};
+  json j = ScheduleToJson(s);
+  EXPECT_EQ(j["predicted"]["surge"]["assumption"], planner::kPredictedSigmaAssumption);
+  EXPECT_EQ(ReadScheduleJson(TempFile("now.json", j.dump())).predicted.at(model::Dof::kSurge)
+                .assumption,
+            planner::kPredictedSigmaAssumption);
+  j["predicted"]["surge"].erase("assumption");
+  EXPECT_EQ(ReadScheduleJson(TempFile("old.json", j.dump())).predicted.at(model::Dof::kSurge)
+                .assumption,
+            planner::kUnrecordedSigmaAssumption);
+  j["predicted"]["surge"]["assumption"] = 3;
+  EXPECT_THAT(ErrorOf([&] { ReadScheduleJson(TempFile("bad.json", j.dump())); }),
+              HasSubstr("predicted.surge.assumption"));
+}
+
 TEST(ScheduleJson, ReadsTheTrialOfANextResult) {
   const json next = {{"estimates", {{"dofs", json::object()}}},
                      {"trial", TrialToJson(SineTrial())},

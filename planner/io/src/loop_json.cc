@@ -52,6 +52,11 @@ void ReadIteration(const JsonValue& it, int index, LoopHistory* h) {
       h->series[d][name].push_back(point);
     }
   }
+  if (const auto predicted = it.Optional("predicted")) {
+    if (const auto entry = predicted->Optional(std::string(model::DofName(dof)))) {
+      h->predicted_assumption = PredictedAssumptionOf(*entry);
+    }
+  }
 }
 
 }  // namespace

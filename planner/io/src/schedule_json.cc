@@ -226,6 +226,16 @@ std::array<double, 2> TravelOf(const JsonValue& v) {
   return t;
 }
 
+}  // namespace
+
+std::string PredictedAssumptionOf(const JsonValue& predicted) {
+  const auto a = predicted.Optional("assumption");
+  if (!a) return planner::kUnrecordedSigmaAssumption;
+  return String(*a, "the sentence saying what the predicted σ rest on");
+}
+
+namespace {
+
 PredictedPrecision PredictedOf(const JsonValue& v) {
   if (!v.json().is_object()) v.Expected("an object {sigma, criterion, value}");
   PredictedPrecision p;
@@ -236,6 +246,7 @@ PredictedPrecision PredictedOf(const JsonValue& v) {
   }
   p.criterion = String(v.Required("criterion", "D, Ds, A or E"), "a criterion name (D, Ds, A, E)");
   p.criterion_value = Number(v.Required("value", "the criterion value"));
+  p.assumption = PredictedAssumptionOf(v);
   return p;
 }
 
@@ -298,18 +309,22 @@ json TrialToJson(const PlannedTrial& trial) {
   return j;
 }
 
+json PredictedToJson(const PredictedPrecision& p) {
+  const auto number = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+  json sigma = json::object();
+  for (const auto& [name, s] : p.sigma) sigma[name] = number(s);
+  return {{"sigma", sigma},
+          {"criterion", p.criterion},
+          {"value", number(p.criterion_value)},
+          {"assumption", p.assumption}};
+}
+
 json ScheduleToJson(const Schedule& schedule) {
   json trials = json::array();
   for (const auto& t : schedule.trials) trials.push_back(TrialToJson(t));
   json predicted = json::object();
   for (const auto& [dof, p] : schedule.predicted) {
-    json sigma = json::object();
-    for (const auto& [name, s] : p.sigma) sigma[name] = s;
-    predicted[std::string(model::DofName(dof))] = {
-        {"sigma", sigma},
-        {"criterion", p.criterion},
-        {"value", p.criterion_value},
-        {"assumption", planner::kPredictedSigmaAssumption}};
+    predicted[std::string(model::DofName(dof))] = PredictedToJson(p);
   }
   return {{"trials", trials}, {"predicted", predicted}, {"pool_time", schedule.pool_time}};
 }

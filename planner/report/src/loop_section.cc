@@ -21,8 +21,10 @@ Section LoopSection(const io::LoopHistory& h) {
                            r.kind, r.mapping, Number(r.duration), Number(r.pool_time)});
   }
   s.tables.push_back(std::move(trials));
-  Table last{std::string("Estimates after the last trial (") +
-                 planner::kPredictedSigmaAssumption + ")",
+  Table last{"Estimates after the last trial (" +
+                 (h.predicted_assumption.empty() ? std::string("no σ was predicted")
+                                                 : h.predicted_assumption) +
+                 ")",
              {"DOF", "parameter", "value", "σ", "unit", "percentile error (%)", "predicted σ"},
              {}};
   for (const auto& [dof, params] : h.series) {

@@ -55,6 +55,16 @@ Table SensorTable(const model::Vehicle& v) {
   return t;
 }
 
+// What the schedule's predicted σ rest on: one sentence when every DOF's says the same.
+std::string PredictedAssumptions(const planner::Schedule& schedule) {
+  std::string out;
+  for (const auto& [dof, p] : schedule.predicted) {
+    if (out.find(p.assumption) != std::string::npos) continue;
+    out += (out.empty() ? "" : "; ") + p.assumption;
+  }
+  return out.empty() ? planner::kPredictedSigmaAssumption : out;
+}
+
 }  // namespace
 
 Section VehicleSection(const model::Vehicle& v, const std::string& source) {
@@ -104,7 +114,7 @@ Section ScheduleSection(const planner::Schedule& schedule,
                            turn ? "°" : std::string(model::PositionUnit(d.dof)), Number(t.thrust_min)});
   }
   s.tables.push_back(std::move(trials));
-  Table predicted{std::string("Predicted precision (") + planner::kPredictedSigmaAssumption + ")",
+  Table predicted{"Predicted precision (" + PredictedAssumptions(schedule) + ")",
                   {"DOF", "parameter", "predicted σ", "unit", "criterion"},
                   {}};
   for (const auto& [dof, p] : schedule.predicted) {

@@ -47,10 +47,20 @@ inline constexpr const char* kPredictedSigmaAssumption =
     "it: there the prediction is cautious; docs/planning.md, \"Initial state\"); coloured noise "
     "or an unmodelled effect makes the achieved σ larger";
 
+/// What a schedule or loop JSON written before 2026-11-28 (no "assumption" key) rests on: the
+/// planner then counted each trial's initial state as known, which lends a steady run's
+/// start-up lag as information on m (docs/planning.md, "Initial state").
+inline constexpr const char* kUnrecordedSigmaAssumption =
+    "assumption not recorded in the file (written before 2026-11-28, when the planner counted "
+    "each trial's initial position and velocity as known): these predicted σ may be several "
+    "times smaller than `identify` achieves; plan again for σ that estimate the start";
+
 struct PredictedPrecision {
   std::map<std::string, double> sigma;  ///< predicted 1σ per parameter name
   std::string criterion = "D";          ///< D, Ds, A or E
   double criterion_value = 0.0;
+  /// What the σ rest on: the planner's own, or what a file read back says it rested on.
+  std::string assumption = kPredictedSigmaAssumption;
 };
 
 struct Schedule {

@@ -31,6 +31,9 @@ struct LoopHistory {
   std::string status, message;
   double target_percent = 0.0;  ///< percentile error 100·σ/|θ| every parameter must reach
   double pool_time = 0.0;       ///< s
+  /// What the predicted σ rest on: the last iteration's "predicted" assumption (or
+  /// planner::kUnrecordedSigmaAssumption for a file written before it was recorded).
+  std::string predicted_assumption;
   std::vector<LoopTrialRow> trials;
   /// Per DOF, per parameter name: one point per iteration that estimated it.
   std::map<model::Dof, std::map<std::string, std::vector<LoopPoint>>> series;

@@ -16,6 +16,13 @@ namespace uuvplan::io {
 /// its kind, travel, thrust_min (and ballast_steps when non-zero).
 nlohmann::json TrialToJson(const planner::PlannedTrial& trial);
 nlohmann::json ScheduleToJson(const planner::Schedule& schedule);
+/// One DOF's predicted precision: {sigma: {<parameter>: σ}, criterion, value, assumption};
+/// a non-finite number is written as null (what every reader reads as NaN). Used by the
+/// schedule, `next` and each loop iteration alike.
+nlohmann::json PredictedToJson(const planner::PredictedPrecision& predicted);
+/// The "assumption" of a predicted-precision object, or planner::kUnrecordedSigmaAssumption
+/// when the file was written before it was recorded.
+std::string PredictedAssumptionOf(const JsonValue& predicted);
 
 /// Reads a trial object; throws model::InputError naming the file, the trial's key path (e.g.
 /// "plan.json: trials[2]") and the key on any missing or ill-typed field.
