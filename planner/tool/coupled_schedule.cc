@@ -57,8 +57,7 @@ int RunCoupledSchedule(const model::Vehicle& vehicle, const model::Pool& pool,
       << "); thrusters " << model::Significant(d.envelope.thrust_margin, 3)
       << " N above min_thrust at their weakest (negative: one comes too near zero or reverses), at most "
       << model::Significant(100 * d.envelope.thrust_load, 3)
-      << "% of their limit\n\nCramér–Rao σ (the vehicle file's surge, sway and yaw sensors; an "
-         "efficient estimator):\n";
+      << "% of their limit\n\nCramér–Rao σ (" << planner::kCoupledSigmaAssumption << "):\n";
   PrintCramerRao(d, out);
   for (const std::string& note : d.notes) out << "  note: " << note << "\n";
   if (d.envelope.turns > 1.0) {

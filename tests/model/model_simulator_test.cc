@@ -288,6 +288,40 @@ TEST(ExcitationTest, SineAgreesWithLibmAtStageTimesShiftsAndRevisits) {
   EXPECT_LE(worst, tol);
 }
 
+TEST(ExcitationTest, SwitchedMultisineAgreesWithLibmAtStageTimesAndSwitches) {
+  // The switched excitation rotates each component's sine too (rotating_sine.h): its force and
+  // mapping must be SwitchedWave::Force's (libm) to rounding, 1e-12 of |offset| + Σ|a_i| as
+  // above, at the RK4 stage times of a 0.01 s step and again after going back in time; the
+  // mapping may differ only where the wave is within that rounding of 0 (at a switch).
+  SwitchedWave wave;
+  wave.offset = 3.0;
+  wave.components = {{40.0, 0.371, 2.78}, {4.6, 0.742, 1.41}, {32.0, 1.113, 3.17}};
+  wave.floor_pos = 2.0;
+  wave.floor_neg = 2.5;
+  wave.mapping_pos = 0;
+  wave.mapping_neg = 1;
+  const auto switched = MakeSwitchedExcitation(wave, 120.0);
+  const double tol = 1e-12 * (3.0 + 40.0 + 4.6 + 32.0);
+  double worst = 0.0;
+  int mapping_mismatches = 0;
+  auto check = [&](double t) {
+    double force = 0.0;
+    int mapping = -1, libm_mapping = -1;
+    switched->Sample(t, &force, &mapping);
+    worst = std::max(worst, std::abs(force - wave.Force(t, &libm_mapping)));
+    if (mapping != libm_mapping && std::abs(wave.Wave(t)) > tol) ++mapping_mismatches;
+  };
+  for (int k = 0; k < 12000; ++k) {
+    const double ta = k * 0.01, te = (k + 1) * 0.01;
+    check(ta + 0.5 * (te - ta));
+    check(te);
+  }
+  for (double t : {60.0, 59.5, 0.0, 100.001, 100.011, 100.021}) check(t);
+  EXPECT_LE(worst, tol);
+  EXPECT_EQ(mapping_mismatches, 0);
+  EXPECT_FALSE(switched->Breakpoints().empty());  // the wave does switch in 120 s
+}
+
 TEST(VehicleTest, RomeoYawInertiaOfAUniformBox) {
   // Seed 000 §IV-D: I_r = (1/12)·450·(1.3² + 0.9²) = 93.75 kg·m².
   Vehicle v = TwoMappingVehicle();

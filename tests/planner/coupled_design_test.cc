@@ -94,6 +94,8 @@ void ExpectJsonProfileReplaysTheTrial(const CoupledDesign& d, const model::Vehic
   }
   EXPECT_EQ(j.at("fits"), true);
   EXPECT_DOUBLE_EQ(j.at("trial").at("start").at("x").get<double>(), d.start_x);
+  // Its σ say what they rest on (a bound: start known, efficient estimator), as the terminal.
+  EXPECT_EQ(j.at("cramer_rao_assumption"), kCoupledSigmaAssumption);
 }
 
 CoupledDesign PlannedAsvDesign(model::CombinedMode mode) {

@@ -62,6 +62,7 @@ nlohmann::json CoupledDesignJson(const planner::CoupledDesign& d, const model::V
                    {"thrust_load", d.envelope.thrust_load},
                    {"closed_water_force", d.envelope.closed_water_force}};
   j["cramer_rao"] = cr;
+  j["cramer_rao_assumption"] = planner::kCoupledSigmaAssumption;
   j["criterion"] = d.criterion;
   j["solver"] = d.solver.BriefReport();
   return j;

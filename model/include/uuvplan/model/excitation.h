@@ -71,6 +71,8 @@ struct SwitchedWave {
   double Wave(double t) const;
   /// phi_n(t) and the mapping in force.
   double Force(double t, int* mapping) const;
+  /// The force and mapping for a wave value w (Force(t, ·) = Switch(Wave(t), ·)).
+  double Switch(double w, int* mapping) const;
   /// Zero crossings of w in (0, duration) (where the mapping switches), to 1e-9 s.
   std::vector<double> Switches(double duration) const;
 };

@@ -86,6 +86,13 @@ struct CoupledEnvelope {
   bool finite = true;
 };
 
+/// What the combined trial's Cramér–Rao σ rest on, printed and written beside them.
+inline constexpr const char* kCoupledSigmaAssumption =
+    "a lower bound: the vehicle file's surge, sway and yaw sensors with white noise, the "
+    "trial's initial state known and an efficient estimator; `identify --model coupled` fits "
+    "integral least squares with instruments (seed 003), whose σ are larger, and coloured noise "
+    "or an unmodelled effect makes them larger still";
+
 struct CoupledDesign {
   model::CoupledTrialDesign trial;
   /// Start pose in the pool: x m from the wall the surge axis faces away from (length), y m from
