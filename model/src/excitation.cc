@@ -94,38 +94,30 @@ class HeldExcitation final : public Excitation {
 class SwitchedExcitation final : public Excitation {
  public:
   SwitchedExcitation(SwitchedWave wave, double duration)
-      : wave_(std::move(wave)), duration_(duration), switches_(wave_.Switches(duration)) {
-    for (const SineComponent& c : wave_.components) sines_.emplace_back(c.omega, c.phase);
-  }
+      : wave_(std::move(wave)), duration_(duration), switches_(wave_.Switches(duration)),
+        rotating_(wave_) {}
+  SwitchedExcitation(const SwitchedExcitation&) = delete;  // rotating_ refers to wave_
+  SwitchedExcitation& operator=(const SwitchedExcitation&) = delete;
   double Force(double t) const override {
     int mapping = -1;
-    return wave_.Switch(Wave(t), &mapping);
+    return wave_.Switch(rotating_.At(t), &mapping);
   }
   int Mapping(double t) const override {
     int mapping = -1;
-    wave_.Switch(Wave(t), &mapping);
+    wave_.Switch(rotating_.At(t), &mapping);
     return mapping;
   }
   void Sample(double t, double* force, int* mapping) const override {
-    *force = wave_.Switch(Wave(t), mapping);
+    *force = wave_.Switch(rotating_.At(t), mapping);
   }
   std::vector<double> Breakpoints() const override { return switches_; }
   double duration() const override { return duration_; }
 
  private:
-  // SwitchedWave::Wave with each component's sine rotated (RotatingSine).
-  double Wave(double t) const {
-    double w = wave_.offset;
-    for (std::size_t i = 0; i < sines_.size(); ++i) {
-      w += wave_.components[i].amplitude * sines_[i].At(t);
-    }
-    return w;
-  }
-
   SwitchedWave wave_;
   double duration_;
   std::vector<double> switches_;
-  mutable std::vector<internal::RotatingSine> sines_;
+  mutable internal::RotatingWave rotating_;
 };
 
 }  // namespace
@@ -157,18 +149,11 @@ std::vector<double> SwitchedWave::Switches(double duration) const {
   }
   std::vector<double> out;
   if (!(duration > 0)) return out;
-  // The scan's samples are h apart: each component's sine rotated (RotatingSine), not libm's.
-  std::vector<internal::RotatingSine> sines;
-  for (const SineComponent& c : components) sines.emplace_back(c.omega, c.phase);
-  const auto scanned = [&](double t) {
-    double w = offset;
-    for (std::size_t k = 0; k < sines.size(); ++k) w += components[k].amplitude * sines[k].At(t);
-    return w;
-  };
+  internal::RotatingWave scanned(*this);  // the scan's samples are h apart: rotated sines
   const std::size_t n = static_cast<std::size_t>(std::ceil(duration / h));
-  double t0 = 0.0, w0 = scanned(0.0);
+  double t0 = 0.0, w0 = scanned.At(0.0);
   for (std::size_t i = 1; i <= n; ++i) {
-    const double t1 = std::min(duration, i * h), w1 = scanned(t1);
+    const double t1 = std::min(duration, i * h), w1 = scanned.At(t1);
     if ((w0 >= 0) != (w1 >= 0)) {
       double a = t0, b = t1;
       while (b - a > 1e-9) {

@@ -288,11 +288,33 @@ TEST(ExcitationTest, SineAgreesWithLibmAtStageTimesShiftsAndRevisits) {
   EXPECT_LE(worst, tol);
 }
 
+// SwitchedWave::Switches as it was written with libm alone: the wave sampled h apart, each sign
+// change bisected to 1e-9 s.
+std::vector<double> LibmSwitches(const SwitchedWave& wave, double duration, double h) {
+  std::vector<double> out;
+  double t0 = 0.0, w0 = wave.Wave(0.0);
+  for (std::size_t i = 1; i <= static_cast<std::size_t>(std::ceil(duration / h)); ++i) {
+    const double t1 = std::min(duration, i * h), w1 = wave.Wave(t1);
+    if ((w0 >= 0) != (w1 >= 0)) {
+      double a = t0, b = t1;
+      while (b - a > 1e-9) {
+        const double c = 0.5 * (a + b);
+        ((wave.Wave(c) >= 0) == (w0 >= 0) ? a : b) = c;
+      }
+      if (b > 0 && b < duration) out.push_back(b);
+    }
+    t0 = t1;
+    w0 = w1;
+  }
+  return out;
+}
+
 TEST(ExcitationTest, SwitchedMultisineAgreesWithLibmAtStageTimesAndSwitches) {
   // The switched excitation rotates each component's sine too (rotating_sine.h): its force and
   // mapping must be SwitchedWave::Force's (libm) to rounding, 1e-12 of |offset| + Σ|a_i| as
-  // above, at the RK4 stage times of a 0.01 s step and again after going back in time; the
-  // mapping may differ only where the wave is within that rounding of 0 (at a switch).
+  // above, at the RK4 stage times of a 0.01 s step, after going back in time, and on both
+  // sides of every switch; the switches (scanned with rotated sines, bisected with libm) must be
+  // exactly those of a libm scan.
   SwitchedWave wave;
   wave.offset = 3.0;
   wave.components = {{40.0, 0.371, 2.78}, {4.6, 0.742, 1.41}, {32.0, 1.113, 3.17}};
@@ -301,6 +323,11 @@ TEST(ExcitationTest, SwitchedMultisineAgreesWithLibmAtStageTimesAndSwitches) {
   wave.mapping_pos = 0;
   wave.mapping_neg = 1;
   const auto switched = MakeSwitchedExcitation(wave, 120.0);
+  // Switches' scan step: 1/100 of the shortest period, at most 0.05 s.
+  const std::vector<double> switches =
+      LibmSwitches(wave, 120.0, std::min(0.05, 2 * M_PI / 1.113 / 100.0));
+  ASSERT_GE(switches.size(), 4u);  // the wave does switch, several times in 120 s
+  EXPECT_EQ(switched->Breakpoints(), switches);
   const double tol = 1e-12 * (3.0 + 40.0 + 4.6 + 32.0);
   double worst = 0.0;
   int mapping_mismatches = 0;
@@ -309,7 +336,7 @@ TEST(ExcitationTest, SwitchedMultisineAgreesWithLibmAtStageTimesAndSwitches) {
     int mapping = -1, libm_mapping = -1;
     switched->Sample(t, &force, &mapping);
     worst = std::max(worst, std::abs(force - wave.Force(t, &libm_mapping)));
-    if (mapping != libm_mapping && std::abs(wave.Wave(t)) > tol) ++mapping_mismatches;
+    mapping_mismatches += mapping != libm_mapping;
   };
   for (int k = 0; k < 12000; ++k) {
     const double ta = k * 0.01, te = (k + 1) * 0.01;
@@ -317,9 +344,14 @@ TEST(ExcitationTest, SwitchedMultisineAgreesWithLibmAtStageTimesAndSwitches) {
     check(te);
   }
   for (double t : {60.0, 59.5, 0.0, 100.001, 100.011, 100.021}) check(t);
+  // Just before and after each switch (the integrator's steps end there): far enough from the
+  // zero (1e-6 s, |w| ~ 1e-5 N) that rounding cannot flip the sign.
+  for (double b : switches) {
+    check(b - 1e-6);
+    check(b + 1e-6);
+  }
   EXPECT_LE(worst, tol);
   EXPECT_EQ(mapping_mismatches, 0);
-  EXPECT_FALSE(switched->Breakpoints().empty());  // the wave does switch in 120 s
 }
 
 TEST(VehicleTest, RomeoYawInertiaOfAUniformBox) {

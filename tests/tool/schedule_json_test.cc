@@ -4,10 +4,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 
 #include "tool_test_util.h"
+#include "uuvplan/io/loop_json.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/planner/schedule.h"
@@ -178,6 +181,36 @@ TEST(ScheduleJson, PredictedSigmaCarryWhatTheyRestOnAndOldFilesSaySo) {
   j["predicted"]["surge"]["assumption"] = 3;
   EXPECT_THAT(ErrorOf([&] { ReadScheduleJson(TempFile("bad.json", j.dump())); }),
               HasSubstr("predicted.surge.assumption"));
+}
+
+// A loop's history carries what its predicted σ rest on: the iteration's own sentence, or the
+// unrecorded one for a loop written before it was (report labels its table with it); a null σ
+// or criterion value (a non-finite one, as the writers put it) reads as NaN.
+TEST(ScheduleJson, LoopHistoryCarriesWhatItsPredictedSigmaRestOn) {
+  json iteration = json::parse(R"({"trial": {"id": "a", "dof": "surge", "kind": "steady",
+    "duration": 10, "mapping": "surge-front", "force": 30}, "dof": "surge", "pool_time": 10,
+    "params": {"surge": {"m": {"value": 900, "sigma": 9}}},
+    "sigma": {"m": {"predicted": null}}})");
+  planner::PredictedPrecision p;
+  p.sigma = {{"m", std::numeric_limits<double>::quiet_NaN()}};
+  p.criterion_value = std::numeric_limits<double>::infinity();
+  iteration["predicted"] = {{"surge", io::PredictedToJson(p)}};
+  EXPECT_TRUE(iteration["predicted"]["surge"]["sigma"]["m"].is_null());
+  EXPECT_TRUE(iteration["predicted"]["surge"]["value"].is_null());
+  json loop = {{"iterations", {iteration}}};
+  const io::LoopHistory now = io::ReadLoopJson(TempFile("loop.json", loop.dump()));
+  EXPECT_EQ(now.predicted_assumption, planner::kPredictedSigmaAssumption);
+  EXPECT_TRUE(std::isnan(now.series.at(model::Dof::kSurge).at("m").front().predicted));
+  loop["iterations"][0]["predicted"]["surge"].erase("assumption");
+  EXPECT_EQ(io::ReadLoopJson(TempFile("old-loop.json", loop.dump())).predicted_assumption,
+            planner::kUnrecordedSigmaAssumption);
+  // A schedule's predicted object with null σ and value reads back as NaN, not as an error.
+  Schedule s;
+  s.trials = {SteadyTrial()};
+  s.predicted[model::Dof::kSurge] = p;
+  const Schedule r = ReadScheduleJson(TempFile("nan.json", ScheduleToJson(s).dump()));
+  EXPECT_TRUE(std::isnan(r.predicted.at(model::Dof::kSurge).sigma.at("m")));
+  EXPECT_TRUE(std::isnan(r.predicted.at(model::Dof::kSurge).criterion_value));
 }
 
 TEST(ScheduleJson, ReadsTheTrialOfANextResult) {

@@ -2,6 +2,7 @@
 #include "uuvplan/io/json_value.h"
 
 #include <cmath>
+#include <limits>
 
 #include "text_checks.h"
 #include "uuvplan/io/files.h"
@@ -63,6 +64,10 @@ JsonValue JsonValue::Item(std::size_t index) const {
 double Number(const JsonValue& v, const std::string& expectation) {
   if (!v.json().is_number() || !std::isfinite(v.json().get<double>())) v.Expected(expectation);
   return v.json().get<double>();
+}
+
+double NumberOrNaN(const JsonValue& v, const std::string& expectation) {
+  return v.json().is_null() ? std::numeric_limits<double>::quiet_NaN() : Number(v, expectation);
 }
 
 double PositiveNumber(const JsonValue& v, const std::string& unit) {

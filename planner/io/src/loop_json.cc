@@ -13,9 +13,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// A number, or NaN for null (the writers' NaN, json_value.h).
-double NumberOrNaN(const JsonValue& v) { return v.json().is_null() ? kNaN : Number(v); }
-
 model::Dof DofKey(const JsonValue& at, const std::string& name) {
   const auto dof = model::ParseDof(name);
   if (!dof) at.Expected("a DOF name (surge sway heave roll pitch yaw)");

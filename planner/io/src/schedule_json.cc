@@ -242,10 +242,12 @@ PredictedPrecision PredictedOf(const JsonValue& v) {
   const JsonValue sigma = v.Required("sigma", "predicted 1σ per parameter");
   if (!sigma.json().is_object()) sigma.Expected("an object {<parameter>: sigma}");
   for (const auto& [name, s] : sigma.json().items()) {
-    p.sigma[name] = NonNegativeNumber(*sigma.Optional(name), "a number >= 0");
+    const double x = NumberOrNaN(*sigma.Optional(name), "a number >= 0, or null");
+    if (x < 0) sigma.Optional(name)->Expected("a number >= 0, or null");
+    p.sigma[name] = x;
   }
   p.criterion = String(v.Required("criterion", "D, Ds, A or E"), "a criterion name (D, Ds, A, E)");
-  p.criterion_value = Number(v.Required("value", "the criterion value"));
+  p.criterion_value = NumberOrNaN(v.Required("value", "the criterion value"));
   p.assumption = PredictedAssumptionOf(v);
   return p;
 }

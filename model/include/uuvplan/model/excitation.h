@@ -12,6 +12,8 @@
 
 namespace uuvplan::model {
 
+/// A trial's commanded input. Its const methods may cache the last answer (the sines rotate
+/// their last value, held samples remember their index): one object per thread.
 class Excitation {
  public:
   virtual ~Excitation() = default;

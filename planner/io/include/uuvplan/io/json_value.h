@@ -40,6 +40,8 @@ class JsonValue : public Place {
 
 /// A finite number.
 double Number(const JsonValue& v, const std::string& expectation = "a number");
+/// A finite number, or NaN for null (what the writers put for a non-finite one).
+double NumberOrNaN(const JsonValue& v, const std::string& expectation = "a number or null");
 /// A number > 0, described as "a positive number (<unit>)".
 double PositiveNumber(const JsonValue& v, const std::string& unit);
 /// A number >= 0, described as `expectation` ("a number >= 0 (s)").
