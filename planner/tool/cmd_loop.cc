@@ -43,7 +43,6 @@ struct LoopCliOptions {
   planner::LoopOptions loop;  ///< --target, --budget, --seed bound here
 };
 
-json Num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 // "σ predicted → achieved: m 31.2 → 29.8 kg, kq 120 → 98.4 N·s²/m²".
 std::string SigmaLine(const planner::LoopIteration& it) {
@@ -87,7 +86,7 @@ void PrintIteration(const planner::LoopIteration& it, double target, bool verbos
 json SigmaJson(const planner::LoopIteration& it) {
   json j = json::object();
   for (const auto& [name, pa] : it.sigma) {
-    j[name] = {{"predicted", Num(pa[0])}, {"achieved", Num(pa[1])},
+    j[name] = {{"predicted", io::JsonNumber(pa[0])}, {"achieved", io::JsonNumber(pa[1])},
                {"unit", model::Unit(name, it.dof)}};
   }
   return j;
@@ -97,7 +96,7 @@ json IterationJson(const planner::LoopIteration& it) {
   json params = json::object();
   for (const auto& [dof, estimates] : it.params) {
     json p = json::object();
-    for (const auto& e : estimates) p[e.name] = {{"value", Num(e.value)}, {"sigma", Num(e.sigma)}};
+    for (const auto& e : estimates) p[e.name] = {{"value", io::JsonNumber(e.value)}, {"sigma", io::JsonNumber(e.sigma)}};
     params[std::string(model::DofName(dof))] = p;
   }
   return {{"trial", io::TrialToJson(it.trial)},

@@ -19,7 +19,6 @@ namespace {
 
 using nlohmann::json;
 
-json Num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 std::string Percent(double p) {
   if (!std::isfinite(p)) return "—";
@@ -95,10 +94,10 @@ json CandidatesJson(const std::vector<planner::CandidateGain>& candidates) {
     j.push_back({{"dof", std::string(model::DofName(c.dof))},
                  {"trial", c.trial},
                  {"parameter", c.parameter},
-                 {"sigma_now", Num(c.sigma_now)},
-                 {"sigma_after", Num(c.sigma_after)},
-                 {"gain", Num(c.gain)},
-                 {"trials_to_target", Num(c.trials_to_target)},
+                 {"sigma_now", io::JsonNumber(c.sigma_now)},
+                 {"sigma_after", io::JsonNumber(c.sigma_after)},
+                 {"gain", io::JsonNumber(c.gain)},
+                 {"trials_to_target", io::JsonNumber(c.trials_to_target)},
                  {"first_estimate", c.first_estimate},
                  {"negligible", c.negligible}});
   }
@@ -172,9 +171,9 @@ json ProgressJson(const std::vector<planner::DofProgress>& progress) {
   for (const auto& p : progress) {
     json interest = json::object();
     for (const auto& q : p.interest) {
-      interest[q.name] = std::isfinite(q.value) ? json{{"value", Num(q.value)},
-                                                        {"sigma", Num(q.sigma)},
-                                                        {"percent", Num(q.percent)},
+      interest[q.name] = std::isfinite(q.value) ? json{{"value", io::JsonNumber(q.value)},
+                                                        {"sigma", io::JsonNumber(q.sigma)},
+                                                        {"percent", io::JsonNumber(q.percent)},
                                                         {"unit", model::Unit(q.name, p.dof)},
                                                         {"held", q.held},
                                                         {"physical", q.physical},
@@ -183,16 +182,16 @@ json ProgressJson(const std::vector<planner::DofProgress>& progress) {
     }
     json consistency = nullptr;
     if (p.consistency.tested) {
-      consistency = {{"chi2", Num(p.consistency.chi2)},
+      consistency = {{"chi2", io::JsonNumber(p.consistency.chi2)},
                      {"dof", p.consistency.dof},
-                     {"p_value", Num(p.consistency.p_value)},
+                     {"p_value", io::JsonNumber(p.consistency.p_value)},
                      {"level", p.consistency.level},
                      {"consistent", p.consistency.consistent},
                      {"worst", p.consistency.worst},
-                     {"worst_sigmas", Num(p.consistency.worst_sigmas)}};
+                     {"worst_sigmas", io::JsonNumber(p.consistency.worst_sigmas)}};
     }
     j[std::string(model::DofName(p.dof))] = {
-        {"converged", p.converged}, {"worst", p.worst},   {"worst_percent", Num(p.worst_percent)},
+        {"converged", p.converged}, {"worst", p.worst},   {"worst_percent", io::JsonNumber(p.worst_percent)},
         {"trials", p.trials},       {"usable", p.usable}, {"status", p.status},
         {"precise", p.precise},     {"trusted", p.trusted}, {"doubts", p.doubts},
         {"refusal", p.refusal},     {"consistency", consistency}, {"interest", interest}};

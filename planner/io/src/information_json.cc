@@ -4,17 +4,11 @@
 #include <cmath>
 #include <string>
 
+#include "uuvplan/io/json_value.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::io {
-namespace {
-
-// A finite number, or null (JSON has no NaN or infinity).
-nlohmann::json Number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nullptr; }
-
-}  // namespace
-
 nlohmann::json InformationJson(const planner::InformationSummary& s) {
   nlohmann::json units = nlohmann::json::array(), theta = nlohmann::json::array();
   nlohmann::json fisher = nlohmann::json::array(), sigma = nlohmann::json::object();
@@ -24,7 +18,7 @@ nlohmann::json InformationJson(const planner::InformationSummary& s) {
     nlohmann::json row = nlohmann::json::array();
     for (std::size_t j = 0; j < s.names.size(); ++j) row.push_back(s.fisher(i, j));
     fisher.push_back(row);
-    sigma[s.names[i]] = Number(s.sigma[i]);
+    sigma[s.names[i]] = JsonNumber(s.sigma[i]);
   }
   return {{"parameters", s.names},
           {"units", units},
@@ -32,7 +26,7 @@ nlohmann::json InformationJson(const planner::InformationSummary& s) {
           {"fisher", fisher},
           {"criteria", {{"D", s.d}, {"A", s.a}, {"E", s.e}, {"singular", s.singular}}},
           {"sigma", sigma},
-          {"condition_number", Number(s.condition_number)}};
+          {"condition_number", JsonNumber(s.condition_number)}};
 }
 
 void AddInformationJson(const planner::ScheduleInformation& info, nlohmann::json* j) {

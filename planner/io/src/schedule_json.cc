@@ -241,10 +241,11 @@ PredictedPrecision PredictedOf(const JsonValue& v) {
   PredictedPrecision p;
   const JsonValue sigma = v.Required("sigma", "predicted 1σ per parameter");
   if (!sigma.json().is_object()) sigma.Expected("an object {<parameter>: sigma}");
-  for (const auto& [name, s] : sigma.json().items()) {
-    const double x = NumberOrNaN(*sigma.Optional(name), "a number >= 0, or null");
-    if (x < 0) sigma.Optional(name)->Expected("a number >= 0, or null");
-    p.sigma[name] = x;
+  for (const auto& item : sigma.json().items()) {
+    const JsonValue s = *sigma.Optional(item.key());
+    const double x = NumberOrNaN(s, "a number >= 0, or null");
+    if (x < 0) s.Expected("a number >= 0, or null");
+    p.sigma[item.key()] = x;
   }
   p.criterion = String(v.Required("criterion", "D, Ds, A or E"), "a criterion name (D, Ds, A, E)");
   p.criterion_value = NumberOrNaN(v.Required("value", "the criterion value"));
@@ -312,12 +313,11 @@ json TrialToJson(const PlannedTrial& trial) {
 }
 
 json PredictedToJson(const PredictedPrecision& p) {
-  const auto number = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
   json sigma = json::object();
-  for (const auto& [name, s] : p.sigma) sigma[name] = number(s);
+  for (const auto& [name, s] : p.sigma) sigma[name] = JsonNumber(s);
   return {{"sigma", sigma},
           {"criterion", p.criterion},
-          {"value", number(p.criterion_value)},
+          {"value", JsonNumber(p.criterion_value)},
           {"assumption", p.assumption}};
 }
 
