@@ -5,14 +5,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "tool_test_util.h"
-#include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::tool_test {
 namespace {
@@ -103,29 +101,6 @@ TEST(CliHabits, BadInputOfEveryFileCommandStartsWithTheProgramName) {
     EXPECT_THAT(run.err, StartsWith("uuvplan: error: ")) << args;
     EXPECT_THAT(run.err, HasSubstr("missing.yaml")) << args;
   }
-}
-
-// An answer that depends on an assumption says so where it is printed: every predicted σ rests
-// on the model as given, white sensor noise and each trial's start estimated (docs/planning.md,
-// "Initial state"); `schedule` and `demo` print that sentence beside their predicted σ, and the
-// schedule's JSON carries it beside `predicted` and `information` (`next` and `loop` print it
-// too, from the same constant).
-TEST(CliHabits, PredictedSigmaSaysWhatItAssumes) {
-  const TempDir scratch;
-  const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
-  const ToolRun schedule = RunTool("schedule '" + romeo + "vehicle.yaml' --pool '" + romeo +
-                                       "pool.yaml' --dof surge --json '" + (scratch / "plan.json") +
-                                       "'",
-                                   scratch);
-  EXPECT_EQ(schedule.status, 0) << schedule.err;
-  EXPECT_THAT(schedule.out, HasSubstr(std::string("assumption: ") +
-                                      planner::kPredictedSigmaAssumption));
-  const auto plan = nlohmann::json::parse(ReadText(scratch / "plan.json"));
-  EXPECT_EQ(plan["predicted"]["surge"]["assumption"], planner::kPredictedSigmaAssumption);
-  EXPECT_EQ(plan["information"]["assumption"], planner::kPredictedSigmaAssumption);
-  const ToolRun demo = RunTool("demo --out '" + (scratch / "demo") + "'", scratch);
-  EXPECT_EQ(demo.status, 0) << demo.err;
-  EXPECT_THAT(demo.out, HasSubstr(planner::kPredictedSigmaAssumption));
 }
 
 }  // namespace

@@ -399,6 +399,8 @@ TEST(Cli, DemoTellsTheRomeoStory) {
   EXPECT_THAT(r.out, HasSubstr("converged after"));
   EXPECT_THAT(r.out, HasSubstr("installation_loss (heave)"));
   EXPECT_THAT(r.out, HasSubstr("eta.vertical-all.neg = 0.56"));
+  // Its predicted σ say what they rest on (ScheduleInformation.RomeoTablesAgreeWithTheirMatrices).
+  EXPECT_THAT(r.out, HasSubstr(planner::kPredictedSigmaAssumption));
 
   // Seed 000 §IV-D: five experiments, 0-4 ballast steps, up and down legs in vertical-all.
   const model::Campaign c = io::ReadCampaign(dir / "demo/campaign.yaml");

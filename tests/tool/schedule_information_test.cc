@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tool_test_util.h"
+#include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::tool_test {
 namespace {
@@ -61,6 +62,11 @@ void CheckBlock(const std::string& dof, const json& b, const json& worst_sigma) 
   }
 }
 
+// ... and say what they rest on: an answer that depends on an assumption says so where it is
+// printed. Every predicted σ rests on the model as given, white sensor noise and each trial's
+// start estimated (docs/planning.md, "Initial state"): `schedule` prints that sentence beside
+// its σ and the JSON carries it beside `predicted` and `information` (`next`, `loop` and `demo`
+// print it from the same constant; Cli.DemoTellsTheRomeoStory).
 TEST(ScheduleInformation, RomeoTablesAgreeWithTheirMatrices) {
   const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
   const TempDir scratch;
@@ -68,8 +74,15 @@ TEST(ScheduleInformation, RomeoTablesAgreeWithTheirMatrices) {
                                   "pool.yaml --json " + (scratch / "plan.json"),
                               scratch);
   ASSERT_TRUE(run.status == 0 || run.status == 1) << run.err;
+  EXPECT_NE(run.out.find(std::string("assumption: ") + planner::kPredictedSigmaAssumption),
+            std::string::npos)
+      << run.out;
   const json j = json::parse(ReadText(scratch / "plan.json"));
   ASSERT_TRUE(j.contains("information"));
+  EXPECT_EQ(j["information"]["assumption"], planner::kPredictedSigmaAssumption);
+  for (const auto& [dof, p] : j["predicted"].items()) {
+    EXPECT_EQ(p["assumption"], planner::kPredictedSigmaAssumption) << dof;
+  }
   const json& dofs = j["information"]["dofs"];
   ASSERT_EQ(dofs.size(), j["predicted"].size());
   for (const auto& [dof, block] : dofs.items()) {
