@@ -248,6 +248,7 @@ const DofContext::TrialModel& DofContext::ModelFor(const model::TrialDesign& des
   const std::vector<std::string> etas = UsedEtas(vehicle_, design);
   std::string key;
   for (const auto& e : etas) key += e + ";";
+  const std::lock_guard<std::mutex> lock(trial_models_mutex_);
   auto it = trial_models_.find(key);
   if (it != trial_models_.end()) return *it->second;
   auto tm = std::make_unique<TrialModel>();

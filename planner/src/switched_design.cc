@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/fisher_information.h"
 #include "uuvplan/planner/thrust_limits.h"
@@ -284,11 +285,22 @@ std::vector<SwitchPair> OneWayPairs(const DofContext& ctx, const OneWayHint& hin
   return out;
 }
 
-SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family,
-                                const SineDesignOptions& o,
-                                const std::vector<Eigen::MatrixXd>& prior, const std::string& id,
-                                const OneWayHint& hint) {
-  SineDesignResult result;
+namespace {
+
+// One optimisation of DesignSwitched: a family over one pair of mappings, at one duration.
+struct PairTask {
+  model::InputFamily family;
+  SwitchPair pair;
+  double duration;
+};
+struct PairSolution {
+  SolverSummary summary;
+  model::TrialDesign design;  ///< decoded from summary.x
+};
+
+// The family's optimisations, one per switch pair (DesignSwitched's doc).
+std::vector<PairTask> PairTasks(const DofContext& ctx, model::InputFamily family,
+                                const SineDesignOptions& o, const OneWayHint& hint) {
   const double longest = o.fixed_duration_s > 0
                              ? o.fixed_duration_s
                              : std::min(o.max_duration_s > 0 ? o.max_duration_s : 1e300,
@@ -303,34 +315,66 @@ SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family
   if (pairs.empty() && o.one_way_families && family == model::InputFamily::kSwitchedSquare) {
     pairs = OneWayPairs(ctx, hint);
   }
-  double best = -std::numeric_limits<double>::infinity();
+  std::vector<PairTask> tasks;
   for (const SwitchPair& pair : pairs) {
     // One way the vehicle drifts: the longest trial is not the best; the sine's duration is.
     const double duration = pair.one_way != 0 && o.fixed_duration_s <= 0 && hint.duration_s > 0
                                 ? hint.duration_s
                                 : longest;
-    SwitchedProblem sp(ctx, family, o, prior, pair, duration);
-    DesignProblem p;
-    p.num_variables = sp.num_variables();
-    p.lower.assign(p.num_variables, 0.0);
-    p.upper.assign(p.num_variables, 1.0);
-    const auto starts = sp.Starts();
-    p.x0 = starts[1];
-    p.num_scenarios = static_cast<int>(ctx.design_thetas().size());
-    p.num_constraints = 1;
-    p.evaluate = [&sp](const double* x, double* phi, double* g) { return sp.Evaluate(x, phi, g); };
-    SolverOptions so = ctx.options().solver;
-    so.robustness = ctx.options().robustness;
-    // More variables than the sine's three: a budget in proportion (DIRECT-L's cost grows with
-    // the dimension), measured on ROMEO surge (docs/planning.md §Designs 1b).
-    so.max_global_evaluations = 100 * p.num_variables;
-    so.max_local_evaluations = 30 * p.num_variables;
-    so.extra_starts = starts;
-    const SolverSummary summary = Solve(SolverBackend::kNlopt, p, so);
-    if (!summary.is_success() || summary.objective <= best) continue;
-    best = summary.objective;
-    result.summary = summary;
-    result.trial.design = sp.Decode(summary.x.data());
+    tasks.push_back({family, pair, duration});
+  }
+  return tasks;
+}
+
+PairSolution SolvePair(const DofContext& ctx, const PairTask& t, const SineDesignOptions& o,
+                       const std::vector<Eigen::MatrixXd>& prior) {
+  SwitchedProblem sp(ctx, t.family, o, prior, t.pair, t.duration);
+  DesignProblem p;
+  p.num_variables = sp.num_variables();
+  p.lower.assign(p.num_variables, 0.0);
+  p.upper.assign(p.num_variables, 1.0);
+  const auto starts = sp.Starts();
+  p.x0 = starts[1];
+  p.num_scenarios = static_cast<int>(ctx.design_thetas().size());
+  p.num_constraints = 1;
+  p.evaluate = [&sp](const double* x, double* phi, double* g) { return sp.Evaluate(x, phi, g); };
+  SolverOptions so = ctx.options().solver;
+  so.robustness = ctx.options().robustness;
+  // More variables than the sine's three: a budget in proportion (DIRECT-L's cost grows with
+  // the dimension), measured on ROMEO surge (docs/planning.md §Designs 1b).
+  so.max_global_evaluations = 100 * p.num_variables;
+  so.max_local_evaluations = 30 * p.num_variables;
+  so.extra_starts = starts;
+  PairSolution out;
+  out.summary = Solve(SolverBackend::kNlopt, p, so);
+  if (out.summary.is_success()) out.design = sp.Decode(out.summary.x.data());
+  return out;
+}
+
+// Every task solved, on the context's threads (PlannerOptions::threads): each writes only its
+// own slot, so the solutions do not depend on the number of threads.
+std::vector<PairSolution> SolveAll(const DofContext& ctx, const std::vector<PairTask>& tasks,
+                                   const SineDesignOptions& o,
+                                   const std::vector<Eigen::MatrixXd>& prior) {
+  std::vector<PairSolution> out(tasks.size());
+  model::ParallelFor(tasks.size(), ctx.options().Threads(),
+                     [&](std::size_t i) { out[i] = SolvePair(ctx, tasks[i], o, prior); });
+  return out;
+}
+
+// The family's best solution (the first of equal objectives, in pair order), scored and
+// checked.
+SineDesignResult BestOfFamily(const DofContext& ctx, model::InputFamily family,
+                              const SineDesignOptions& o,
+                              const std::vector<Eigen::MatrixXd>& prior, const std::string& id,
+                              const PairSolution* first, const PairSolution* last) {
+  SineDesignResult result;
+  double best = -std::numeric_limits<double>::infinity();
+  for (const PairSolution* s = first; s != last; ++s) {
+    if (!s->summary.is_success() || s->summary.objective <= best) continue;
+    best = s->summary.objective;
+    result.summary = s->summary;
+    result.trial.design = s->design;
     result.trial.design.id = id;
   }
   if (!std::isfinite(best)) {
@@ -341,6 +385,16 @@ SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family
   }
   ScoreAndCheck(ctx, o, prior, &result);
   return result;
+}
+
+}  // namespace
+
+SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family,
+                                const SineDesignOptions& o,
+                                const std::vector<Eigen::MatrixXd>& prior, const std::string& id,
+                                const OneWayHint& hint) {
+  const std::vector<PairSolution> solved = SolveAll(ctx, PairTasks(ctx, family, o, hint), o, prior);
+  return BestOfFamily(ctx, family, o, prior, id, solved.data(), solved.data() + solved.size());
 }
 
 SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptions& o,
@@ -359,8 +413,19 @@ SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptio
   best.notes.push_back("single sine: " + (best.status == DesignStatus::kOk
                                               ? "robust criterion " + model::Significant(best.criterion, 4)
                                               : best.message));
+  // Every family's pairs solved at once (on the context's threads), then judged family by
+  // family in the order of o.families.
+  std::vector<PairTask> tasks;
+  std::vector<std::size_t> ends;
   for (model::InputFamily family : o.families) {
-    SineDesignResult r = DesignSwitched(ctx, family, o, prior, id, hint);
+    for (PairTask& t : PairTasks(ctx, family, o, hint)) tasks.push_back(std::move(t));
+    ends.push_back(tasks.size());
+  }
+  const std::vector<PairSolution> solved = SolveAll(ctx, tasks, o, prior);
+  for (std::size_t f = 0; f < o.families.size(); ++f) {
+    const model::InputFamily family = o.families[f];
+    SineDesignResult r = BestOfFamily(ctx, family, o, prior, id,
+                                      solved.data() + (f ? ends[f - 1] : 0), solved.data() + ends[f]);
     std::ostringstream s;
     s << model::InputFamilyName(r.status == DesignStatus::kOk ? r.trial.design.family : family)
       << ": " << (r.status == DesignStatus::kOk ? "robust criterion " + model::Significant(r.criterion, 4)

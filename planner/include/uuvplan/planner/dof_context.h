@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <map>
+#include <mutex>
 #include <memory>
 #include <string>
 #include <vector>
@@ -138,7 +139,8 @@ class DofContext {
     /// The trial's information (trial parameters) as the DOF's (np × np, zeros elsewhere).
     Eigen::MatrixXd Embed(const Eigen::MatrixXd& M, int np) const;
   };
-  /// Cached by the set of installation coefficients (not thread-safe: one context per thread).
+  /// Cached by the set of installation coefficients; thread-safe (the families of an inertia
+  /// trial are optimised on several threads, switched_design.cc).
   const TrialModel& ModelFor(const model::TrialDesign& design) const;
 
   /// Admissible |phi_n| of a mapping in one direction (thrust_limits.h), capped so that the
@@ -173,6 +175,7 @@ class DofContext {
   model::DofSensors sensors_, design_sensors_;
   std::vector<Eigen::VectorXd> design_thetas_, check_thetas_;
   mutable std::map<std::string, std::unique_ptr<TrialModel>> trial_models_;
+  mutable std::mutex trial_models_mutex_;
   double step_s_ = 0.1, tc_min_ = 1.0, tc_max_ = 1.0;
 };
 
