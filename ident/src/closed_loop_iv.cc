@@ -225,11 +225,20 @@ ClosedLoopIvResult ClosedLoopInstrumentalFit(const model::DofModel& model,
   std::vector<double> before_value(np, 0.0), before_sigma(np, 0.0);
   std::vector<int> dropped;
   ClosedLoopIvResult out = SolveIv(model, trials, theta_now, free, one_step, o);
+  std::vector<std::string> kept_notes;
   while (o.prune_insignificant && out.ok()) {
     std::vector<PruneCandidate> candidates;
-    for (const ParameterEstimate& e : out.fit.estimates) candidates.push_back({e.name, e.value, e.sigma});
+    std::vector<int> index;  // of each estimate in the model's layout (the covariance's)
+    for (const ParameterEstimate& e : out.fit.estimates) {
+      candidates.push_back({e.name, e.value, e.sigma});
+      index.push_back(model.ParameterIndex(e.name));
+    }
+    const Eigen::MatrixXd cov = out.fit.covariance(index, index);
+    const std::vector<double> correlation = LargestCorrelations(cov);
+    for (std::size_t c = 0; c < candidates.size(); ++c) candidates[c].correlation = correlation[c];
     double pe = 0.0;
-    const int worst = WorstInsignificant(candidates, o.prunable, &pe);
+    kept_notes.clear();
+    const int worst = WorstInsignificant(candidates, o.prunable, o.drop_correlation, &pe, &kept_notes);
     if (worst < 0) break;
     const int j = model.ParameterIndex(candidates[worst].name);
     before_value[j] = candidates[worst].value;
@@ -241,6 +250,7 @@ ClosedLoopIvResult ClosedLoopInstrumentalFit(const model::DofModel& model,
     if (!next.ok()) break;  // keep the last fit that worked
     out = std::move(next);
   }
+  out.notes = kept_notes;
   if (!out.ok() || dropped.empty()) return out;
   for (int j : dropped) {
     if (out.fit.state[j] == ParameterState::kFixed && out.fit.theta[j] == 0.0) {

@@ -8,6 +8,7 @@
 #include "model_selection.h"
 #include "options_check.h"
 #include "uuvplan/ident/least_squares.h"
+#include "uuvplan/ident/significance.h"
 #include "uuvplan/model/coupled_model.h"
 #include "uuvplan/model/util/text.h"
 
@@ -167,7 +168,7 @@ int NegativeInsignificantDrag(const CoupledLsResult& r, const std::vector<int>& 
       if (c.value < 0) negative.push_back(c.name);
     }
     double pe = 0.0;
-    const int c = WorstInsignificant(candidates, negative, &pe);
+    const int c = WorstInsignificant(candidates, negative, kSeedDropCorrelation, &pe);
     if (c >= 0 && pe > worst_pe) {
       worst_pe = pe;
       worst = index[c];

@@ -172,9 +172,15 @@ LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofI
     }
     const RlsDofResult& f = *r->rls;
     std::vector<PruneCandidate> candidates;
-    for (int j : f.free) candidates.push_back({f.names[j], f.final_theta[j], std::sqrt(f.covariance(j, j))});
+    const std::vector<double> correlation = LargestCorrelations(f.covariance(f.free, f.free));
+    for (std::size_t i = 0; i < f.free.size(); ++i) {
+      const int j = f.free[i];
+      candidates.push_back({f.names[j], f.final_theta[j], std::sqrt(f.covariance(j, j)), correlation[i]});
+    }
     double pe = 0.0;
-    const int worst = o.prune_insignificant ? WorstInsignificant(candidates, c.steady.prunable, &pe) : -1;
+    const int worst = o.prune_insignificant
+                          ? WorstInsignificant(candidates, c.steady.prunable, c.steady.drop_correlation, &pe)
+                          : -1;
     if (worst < 0) break;
     const int j = f.free[worst];
     ParameterEstimate e{f.names[j], 0.0, std::nan(""), ParameterState::kDropped, false,
@@ -208,9 +214,11 @@ void ClosedLoop(const DofContext& c, const IdentifyOptions& o, const LeastSquare
   if (!r->closed_loop_suspected) return;
   ClosedLoopIvOptions iv = o.closed_loop_iv;
   iv.prune_insignificant = o.prune_insignificant && iv.prune_insignificant;
+  iv.drop_correlation = c.steady.drop_correlation;
   r->closed_loop_iv =
       ClosedLoopInstrumentalFit(c.model, c.trials.fit, ls.estimate.theta, o.one_step, iv);
   if (!r->closed_loop_iv->ok()) r->notes.push_back(r->closed_loop_iv->fit.message);
+  for (const std::string& n : r->closed_loop_iv->notes) r->notes.push_back("closed loop: " + n);
 }
 
 }  // namespace

@@ -1,14 +1,39 @@
 #include "model_selection.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "drag_parameter.h"
 #include "uuvplan/ident/significance.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 
+namespace {
+std::string Fixed2(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", x);
+  return text;
+}
+}  // namespace
+
+std::vector<double> LargestCorrelations(const Eigen::MatrixXd& covariance) {
+  const Eigen::Index n = covariance.rows();
+  std::vector<double> out(n, 0.0);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const double scale = std::sqrt(covariance(i, i) * covariance(k, k));
+      if (k == i || !(scale > 0)) continue;
+      out[i] = std::max(out[i], std::abs(covariance(i, k)) / scale);
+    }
+  }
+  return out;
+}
+
 int WorstInsignificant(const std::vector<PruneCandidate>& candidates,
-                       const std::vector<std::string>& prunable, double* worst_pe) {
+                       const std::vector<std::string>& prunable, double max_correlation,
+                       double* worst_pe, std::vector<std::string>* kept) {
   const auto drag_terms = std::count_if(candidates.begin(), candidates.end(),
                                         [](const PruneCandidate& c) { return IsDragParameter(c.name); });
   int worst = -1;
@@ -18,6 +43,19 @@ int WorstInsignificant(const std::vector<PruneCandidate>& candidates,
     if (std::find(prunable.begin(), prunable.end(), p.name) == prunable.end()) continue;
     if (IsDragParameter(p.name) && drag_terms <= 1) continue;
     const double pe = PercentileError(p.value, p.sigma);
+    if (!(pe > kInsignificantPercentileError)) continue;
+    const bool non_physical = IsDragParameter(p.name) && p.value < 0;
+    if (p.correlation > max_correlation && !non_physical) {
+      if (kept) {
+        kept->push_back(p.name + " = " + model::Significant(p.value, 4) + " ± " +
+                        model::Significant(p.sigma, 4) + " is insignificant but kept: correlated at " +
+                        Fixed2(p.correlation) +
+                        " with another parameter, so dropping it would report that one's σ " +
+                        "as if " + p.name + " were exactly 0 (model selection, " +
+                        "docs/identification.md)");
+      }
+      continue;
+    }
     if (pe > *worst_pe) {
       *worst_pe = pe;
       worst = static_cast<int>(c);

@@ -11,18 +11,27 @@
 
 namespace uuvplan::ident {
 
-/// A parameter that model selection may drop: its name, estimate and σ in the current fit.
+/// A parameter that model selection may drop: its name, estimate and σ in the current fit,
+/// and its largest |correlation| with another parameter of that fit (LargestCorrelations).
 struct PruneCandidate {
   const std::string& name;
   double value, sigma;
+  double correlation = 0.0;
 };
+
+/// For each parameter of a covariance (any order), the largest |correlation| with another.
+std::vector<double> LargestCorrelations(const Eigen::MatrixXd& covariance);
 
 /// The index in `candidates` of the parameter to drop, or -1: the one named in `prunable`
 /// with the largest percentile error above 51.02% (first of equals), never the last drag term
-/// among the candidates (a model without drag has no steady state). *worst_pe is set to its
-/// percentile error.
+/// among the candidates (a model without drag has no steady state), nor one correlated with
+/// another above `max_correlation` (kDropCorrelation; 1: seed 000's rule, any) unless it is a
+/// negative drag term (non-physical: fixed at its bound 0). *worst_pe is set to its
+/// percentile error. `kept`, when given, gets a note for every insignificant parameter kept
+/// for its correlation.
 int WorstInsignificant(const std::vector<PruneCandidate>& candidates,
-                       const std::vector<std::string>& prunable, double* worst_pe);
+                       const std::vector<std::string>& prunable, double max_correlation,
+                       double* worst_pe, std::vector<std::string>* kept = nullptr);
 
 /// The estimated and dropped parameters (fixed ones left out) of a fit, dropped ones with the
 /// value and σ they had in the last fit that still had them.

@@ -862,12 +862,18 @@ int DropWorst(const std::vector<int>& free, const OutputErrorOptions& o, Eigen::
               std::vector<double>* before_value, std::vector<double>* before_sigma,
               OutputErrorResult* res) {
   std::vector<PruneCandidate> candidates;
-  for (int j : free) {
-    candidates.push_back({res->names[j], (*theta)[j], std::sqrt(res->covariance(j, j))});
+  const std::vector<double> correlation = LargestCorrelations(res->covariance(free, free));
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const int j = free[i];
+    candidates.push_back({res->names[j], (*theta)[j], std::sqrt(res->covariance(j, j)), correlation[i]});
   }
   double worst_pe = 0.0;
-  const int c = WorstInsignificant(candidates, o.prunable, &worst_pe);
-  if (c < 0 || free.size() <= 1) return -1;
+  std::vector<std::string> kept;
+  const int c = WorstInsignificant(candidates, o.prunable, o.drop_correlation, &worst_pe, &kept);
+  if (c < 0 || free.size() <= 1) {  // the final model: say what it kept
+    res->notes.insert(res->notes.end(), kept.begin(), kept.end());
+    return -1;
+  }
   const int worst = free[c];
   (*before_value)[worst] = (*theta)[worst];
   (*before_sigma)[worst] = std::sqrt(res->covariance(worst, worst));

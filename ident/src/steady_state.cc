@@ -357,6 +357,7 @@ LinearFit FitWithSelection(const model::DofModel& model, const std::vector<Stead
   std::vector<double> before_value(np, 0.0), before_sigma(np, 0.0);
   Eigen::VectorXd theta = r->theta;
   LinearFit fit;
+  std::vector<std::string> kept;  // insignificant parameters kept for their correlation
   while (true) {
     const int p = static_cast<int>(cols->size());
     Eigen::MatrixXd H(n, p);
@@ -366,11 +367,14 @@ LinearFit FitWithSelection(const model::DofModel& model, const std::vector<Stead
     for (int c = 0; c < p; ++c) theta[(*cols)[c]] = fit.theta[c];
     if (!o.prune_insignificant || fit.status != FitStatus::kOk) break;
     std::vector<PruneCandidate> candidates;
+    const std::vector<double> correlation = LargestCorrelations(fit.covariance);
     for (int c = 0; c < p; ++c) {
-      candidates.push_back({r->names[(*cols)[c]], fit.theta[c], std::sqrt(fit.covariance(c, c))});
+      candidates.push_back({r->names[(*cols)[c]], fit.theta[c], std::sqrt(fit.covariance(c, c)),
+                            correlation[c]});
     }
     double worst_pe = 0.0;
-    const int worst = WorstInsignificant(candidates, o.prunable, &worst_pe);
+    kept.clear();
+    const int worst = WorstInsignificant(candidates, o.prunable, o.drop_correlation, &worst_pe, &kept);
     if (worst < 0 || p == 1) break;
     const int j = (*cols)[worst];
     r->state[j] = ParameterState::kDropped;
@@ -383,6 +387,7 @@ LinearFit FitWithSelection(const model::DofModel& model, const std::vector<Stead
                        "(seed 000 §IV-D)");
     cols->erase(cols->begin() + worst);
   }
+  r->notes.insert(r->notes.end(), kept.begin(), kept.end());
   r->theta = theta;
   for (std::size_t c = 0; c < cols->size(); ++c) {
     r->state[(*cols)[c]] = ParameterState::kEstimated;

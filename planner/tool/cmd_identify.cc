@@ -90,6 +90,7 @@ void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
   if (!co.steady.empty()) given.push_back("--steady");
   if (co.identify.refine != chain.refine) given.push_back("--no-refine");
   if (co.identify.prune_insignificant != chain.prune_insignificant) given.push_back("--no-prune");
+  if (co.identify.seed_selection != chain.seed_selection) given.push_back("--seed-selection");
   if (co.closed_loop != kClosedLoopNames.Name(chain.closed_loop)) given.push_back("--closed-loop");
   if (co.method.method != ident::MethodName(chain.method)) given.push_back("--method");
   if (co.method.forgetting_given) given.push_back("--forgetting");
@@ -142,6 +143,11 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
   sub->add_flag_callback(
       "--no-prune", [o] { o->identify.prune_insignificant = false; },
       "keep insignificant drag/bias parameters (no model selection by the 51.02% rule)");
+  sub->add_flag_callback(
+      "--seed-selection", [o] { o->identify.seed_selection = true; },
+      "drop an insignificant parameter even where it is correlated with another, as seed 000 "
+      "§IV-D does (by default it is kept: the others' σ would assume it exactly 0)")
+      ->excludes("--no-prune");
   sub->add_option("--closed-loop", o->closed_loop,
                   "whether the logs were recorded in closed loop: auto (detect), yes, no")
       ->capture_default_str();

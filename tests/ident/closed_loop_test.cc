@@ -364,8 +364,8 @@ std::string AllChunksInHeave(const std::filesystem::path& dir, bool swapped) {
 // heave trials (chunks 2, 6 fit; 5, 7 validate) are all chunks where the depth was driven
 // (commands −14…+33 N): there the linear thrust map's bias takes up the map's curvature (a
 // concave map needs a larger mean command for the same mean thrust) and the drag times the
-// asymmetric motion (the buoyant vehicle rises faster than it sinks): −9.7 ± 0.9 N, swapped
-// −10.9 ± 0.9 N (RealTartanSwappedFitAndValidateAgreeOnSurgeDrag). The eight chunks where
+// asymmetric motion (the buoyant vehicle rises faster than it sinks): −9.5 ± 1.1 N, swapped
+// −10.5 ± 1.2 N (RealTartanSwappedFitAndValidateAgreeOnSurgeDrag). The eight chunks where
 // the depth was only held (commands 4…11 N, |w| ≈ 0.01 m/s) measure the force that holds depth
 // directly; over all 16 chunks, each half of the campaign must give −8 ± 1 N, and the two halves
 // must agree within 3 combined σ (docs/validation.md, tartan heave).

@@ -372,8 +372,11 @@ void CheckTable4(const model::Truth& truth, const Table4Row (&table)[N], const s
   model::VirtualCampaignOptions vo;
   vo.seed = 4;
   io::SimulateCampaign(truth, testing::UrisDesigns(), dir.string(), vo);
+  // Seed 004 drops β as the seeds do (seed 000 §IV-D's rule, `--seed-selection`): β is
+  // correlated with α, whose σ then assume β = 0 — as the true β is here.
   const RunResult r = RunUuvplan("identify " + (dir / "campaign.yaml").string() +
-                                 " --method rls --json " + (dir / "rls.json").string() + options);
+                                 " --method rls --seed-selection --json " +
+                                 (dir / "rls.json").string() + options);
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_THAT(r.out, ::testing::Not(::testing::HasSubstr("excluded as outliers, more than 5%")));
   EXPECT_THAT(r.out, ::testing::HasSubstr("method rls"));
@@ -510,6 +513,10 @@ TEST(IdentifyCliTest, MethodOptionsAreCheckedAndNamed) {
   }
   const RunResult no_refine = RunUuvplan("identify " + campaign + " --method rls --no-refine");
   EXPECT_EQ(no_refine.status, 2) << no_refine.out;
+  // Seed 000's selection rule and no selection at all contradict each other.
+  const RunResult both = RunUuvplan("identify " + campaign + " --seed-selection --no-prune");
+  EXPECT_EQ(both.status, 2) << both.out;
+  EXPECT_THAT(both.out, ::testing::HasSubstr("--seed-selection"));
   const RunResult ok = RunUuvplan("identify " + campaign + " --method integral");
   EXPECT_EQ(ok.status, 0) << ok.out;
   EXPECT_THAT(ok.out, ::testing::HasSubstr("method integral"));

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "uuvplan/ident/one_step_ls.h"
+#include "uuvplan/ident/significance.h"
 #include "uuvplan/ident/trial_data.h"
 #include "uuvplan/model/dof_model.h"
 
@@ -47,6 +48,8 @@ struct ClosedLoopIvOptions {
   bool weight_by_residuals = true;
   /// Seed 000 §IV-D model selection among `prunable` (identify's prune switch applies).
   bool prune_insignificant = true;
+  /// An insignificant parameter correlated with another above this is kept (significance.h).
+  double drop_correlation = kDropCorrelation;
   std::vector<std::string> prunable = {"k", "kq", "bias", "bias_step"};
   bool IsValid(std::string* error) const;
 };
@@ -57,6 +60,7 @@ struct ClosedLoopIvResult {
   int instrument_lags = 1; ///< L
   double lag_s = 0.0;      ///< d in seconds (mean knot spacing × d)
   bool residual_weights = false;  ///< the rows weighted by their trial's residuals
+  std::vector<std::string> notes;  ///< model selection's (insignificant parameters kept)
   bool ok() const { return fit.ok(); }
 };
 

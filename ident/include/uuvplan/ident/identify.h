@@ -85,6 +85,9 @@ struct IdentifyOptions {
   Method method = Method::kChain;
   bool refine = true;                ///< run the output-error stage (Method::kChain only)
   bool prune_insignificant = true;   ///< seed 000 §IV-D model selection (both stages)
+  /// Seed 000's rule as the seed applies it: drop an insignificant parameter even where it is
+  /// correlated with another (whose σ then assume it exactly 0; significance.h).
+  bool seed_selection = false;
   ClosedLoop closed_loop = ClosedLoop::kAuto;
   /// Threads for preparing the trials and fitting the DOFs (0: one per core); each job fills
   /// its own slot, so the result does not depend on it.

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "uuvplan/ident/estimate.h"
+#include "uuvplan/ident/significance.h"
 #include "uuvplan/ident/trial_data.h"
 #include "uuvplan/model/dof_model.h"
 
@@ -54,6 +55,8 @@ struct OutputErrorOptions {
   /// scatter of a white residual's lag-1 (±2/√n, 0.06 at 1000 residuals).
   double whiteness_threshold = 0.1;
   bool prune_insignificant = true;
+  /// An insignificant parameter correlated with another above this is kept (significance.h).
+  double drop_correlation = kDropCorrelation;
   std::vector<std::string> prunable = {"k", "kq", "bias", "bias_step"};
   double max_condition = 1e12;
   /// Multi-resolution start for long records: with more than 2× this many measurements, the

@@ -27,6 +27,7 @@
 
 #include "uuvplan/ident/estimate.h"
 #include "uuvplan/ident/least_squares.h"
+#include "uuvplan/ident/significance.h"
 #include "uuvplan/ident/trial_data.h"
 #include "uuvplan/ident/velocity_estimation.h"
 #include "uuvplan/model/dof_model.h"
@@ -73,6 +74,8 @@ struct SteadyStateOptions {
   /// few degrees of freedom of a steady-state fit).
   CovarianceKind covariance = CovarianceKind::kKnownNoiseAtLeast;
   bool prune_insignificant = true;
+  /// An insignificant parameter correlated with another above this is kept (significance.h).
+  double drop_correlation = kDropCorrelation;
   std::vector<std::string> prunable = {"k", "kq", "bias", "bias_step"};
   double max_condition = 1e8;
   int reweight_iterations = 3;
