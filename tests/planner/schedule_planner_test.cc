@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "planner_test_util.h"
@@ -72,6 +73,28 @@ TEST_F(RomeoSchedule, SurgeScheduleIsCompleteOrderedAndTimed) {
     EXPECT_TRUE(std::isfinite(p.sigma.at(name)));
   }
   EXPECT_EQ(p.criterion, "D");
+}
+
+// A short trial limit (`--max-duration 30`): the min_thrust run settles in ~63 s, the runs at
+// 95–185 N in 22–30 s. Before, a direction whose smallest run did not settle in time was
+// refused whole ("no steady run of surge fits": CANNOT host) while the default schedule holds
+// 25 s runs in the same mappings; now each direction starts at the smallest force that
+// settles and holds within the limit (SmallestTimely, steady_design.cc).
+TEST_F(RomeoSchedule, AShortTrialLimitKeepsTheSteadyRunsThatSettleWithinIt) {
+  ScheduleOptions o = SurgeOnly();
+  o.planner.max_trial_duration_s = 30;
+  const ScheduleResult r = PlanSchedule(*vehicle_, *pool_, o);
+  ASSERT_EQ(r.dofs.size(), 1u);
+  EXPECT_EQ(r.status, PlanStatus::kOk) << r.message;
+  std::set<std::pair<std::string, bool>> directions;  // (mapping, force > 0) of the steady runs
+  for (const auto& t : r.schedule.trials) {
+    EXPECT_LE(t.design.duration, 30.0 + 1e-9) << t.design.id;
+    if (t.design.kind == model::TrialKind::kSteady) {
+      directions.insert({t.design.mapping, t.design.force > 0});
+    }
+  }
+  EXPECT_EQ(directions.size(), 6u);  // three mappings, both directions
+  EXPECT_EQ(r.dofs[0].message.find("settles"), std::string::npos) << r.dofs[0].message;
 }
 
 TEST_F(RomeoSchedule, SurgeScheduleFitsItsPoolAndA6mPoolIsRefused) {
