@@ -236,8 +236,8 @@ bool JudgePlanTrials(const std::vector<TrialPoolCheck>& checks, DofVerdict* v) {
   bool fits = true;
   for (const auto& c : checks) {
     if (c.dof != v->dof) continue;
-    v->extent = std::max(v->extent, c.check.span);
-    v->need = std::max(v->need, c.check.span);
+    v->extent = std::max(v->extent, c.check.span);  // the plan's own need (Required); `need`
+                                                    // stays the planner's, searched as without it
     if (c.check.feasible) continue;
     fits = false;
     const std::string why = model::Join(c.check.reasons, "; ");
@@ -416,11 +416,15 @@ std::string RequiredLine(const PoolVerdict& v, const model::Pool& pool) {
   std::ostringstream r;
   const RequiredPool& q = v.required;
   std::vector<std::string> sides;
-  bool rotation = false, searched = false;
+  bool rotation = false, searched = false, planned = false;
   double bracket = 0.0;  // the widest (need − refuted) / need of the sides searched
   for (const auto& d : v.dofs) {
     if (d.hosted || !std::isfinite(d.need)) continue;
-    if (d.need_searched && d.need > 0) {
+    // A given plan's own travel beyond what planning found: the plan as given needs that
+    // side (Required), the planner's own schedule less — say which is which.
+    const bool plan_side = v.plan_given && d.extent > d.need;
+    planned = planned || !plan_side;
+    if (d.need_searched && d.need > 0 && !plan_side) {
       searched = true;
       bracket = std::max(bracket, (d.need - d.need_refuted) / d.need);
     }
@@ -430,13 +434,21 @@ std::string RequiredLine(const PoolVerdict& v, const model::Pool& pool) {
     }
     const double wall = d.dof == model::Dof::kSurge ? q.length
                         : d.dof == model::Dof::kSway ? q.width : q.depth;
-    sides.push_back(std::string(model::Pool::SideName(d.dof)) +
-                    (d.need_verified ? " " : " at least ") + Fmt(wall, 4) + " m wall to wall (" +
-                    Fmt(wall - 2 * pool.margin, 4) + " m free)");
+    std::string side = std::string(model::Pool::SideName(d.dof)) +
+                       (d.need_verified || plan_side ? " " : " at least ") + Fmt(wall, 4) +
+                       " m wall to wall (" + Fmt(wall - 2 * pool.margin, 4) + " m free)";
+    if (plan_side) {
+      side += ", the plan's trials' travel over the box (the planner's own schedule " +
+              std::string(d.need_verified ? "is hosted from " : "needs at least ") +
+              Fmt(pool.WallToWallFor(d.need), 4) + " m wall to wall)";
+    }
+    sides.push_back(side);
   }
   if (rotation) sides.push_back("tether " + Fmt(q.turns, 4) + " turns");
   if (sides.empty()) return "  no pool size lifts the limits above";
-  if (searched) {
+  if (!planned) {
+    r << "  a pool that hosts the plan as given";
+  } else if (searched) {
     r << "  smallest pool found that hosts every DOF asked for";
     if (bracket > 0) {
       r << " (each side planned there; " << Fmt(100 * bracket, 2)

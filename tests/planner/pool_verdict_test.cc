@@ -145,6 +145,38 @@ TEST(PoolVerdict, RomeoSixMetrePoolIsRefusedWithAConfirmedLargerNeed) {
   EXPECT_GT(verdict.required.length, six.length + 1.0);
 }
 
+// check-pool --plan: a plan made for a larger pool (ROMEO's own, 20 m free) judged in a 3 m
+// one. The plan as given needs its trials' travel (Required, the JSON's `required`); the
+// planner's own need is searched as without a plan (one answer: before, the plan's 19.8 m
+// started the search and `check-pool --plan` proposed another pool than `check-pool`), and the
+// text tells the two apart instead of calling the plan's travel "planned there".
+TEST(PoolVerdict, APlanForALargerPoolNeedsItsTravelAndThePlannersNeedIsUnchanged) {
+  const model::Vehicle v = testing::Romeo();
+  const model::Pool tiny{"tiny", 3.0, 6.0, 3.0, 1.0};
+  ScheduleOptions so;
+  so.dofs = {Dof::kSurge};
+  const ScheduleResult made_for_romeo = PlanSchedule(v, testing::RomeoPool(), so);
+  const ScheduleResult own = PlanSchedule(v, tiny, so);
+  VerdictOptions confirm_only;
+  confirm_only.judge_points = false;
+  const PoolVerdict alone = JudgePool(v, tiny, so, own, nullptr, confirm_only);
+  const PoolVerdict with_plan = JudgePool(v, tiny, so, own, &made_for_romeo.schedule, confirm_only);
+  ASSERT_FALSE(with_plan.hosted);
+  EXPECT_EQ(with_plan.dofs.at(0).need, alone.dofs.at(0).need);
+  EXPECT_EQ(with_plan.dofs.at(0).need_verified, alone.dofs.at(0).need_verified);
+  EXPECT_GT(with_plan.required.length, 20.0);  // the plan's surge runs span ~19.8 m
+  EXPECT_LT(alone.required.length, with_plan.required.length);
+  const std::string lines = model::Join(VerdictLines(with_plan, tiny), "\n");
+  EXPECT_NE(lines.find("a pool that hosts the plan as given: length " +
+                       model::Significant(with_plan.required.length, 4)),
+            std::string::npos)
+      << lines;
+  EXPECT_NE(lines.find("the planner's own schedule is hosted from " +
+                       model::Significant(tiny.WallToWallFor(alone.dofs.at(0).need), 4) + " m"),
+            std::string::npos)
+      << lines;
+}
+
 // "To this precision" (issue #13): the verdict judges at the loop's target. ROMEO heave in its
 // own pool (2 m of free depth), over the whole a priori box, reaches 15% (hosted) but not 5%:
 // at some point of the box the loop's next trial gives the parameters still above the target
