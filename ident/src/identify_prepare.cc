@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "identify_stages.h"
+#include "number_text.h"
 
 namespace uuvplan::ident {
 
@@ -50,6 +51,13 @@ void WarnAboutData(const TrialData& d, const OutlierOptions& outliers, DofIdenti
                                          d.velocity.size() + d.velocity_outliers.size(), outliers);
   for (const std::string& w : {pos, vel}) {
     if (!w.empty()) r->warnings.push_back(w);
+  }
+  if (d.force_gap_t1 > d.force_gap_t0) {
+    r->warnings.push_back(d.name + ": no force value for " + Fmt(d.force_gap_t1 - d.force_gap_t0) +
+                          " s (t = " + Fmt(d.force_gap_t0 + d.time_offset) + " to " +
+                          Fmt(d.force_gap_t1 + d.time_offset) +
+                          " s of the log): the last command is held across it (zero-order "
+                          "hold); if it changed there, the estimates are biased");
   }
 }
 

@@ -124,6 +124,24 @@ namespace {
 
 // The logged force of the DOF and the mapping in force on each row (zero-order hold,
 // notes/pitfalls.md), as the trial's excitation; the command steps (force_jumps).
+// The longest step between force rows, or to the trial's end, kept when it is longer than
+// 1 s and 10 median steps (TrialData::force_gap_t0).
+void FindForceGap(TrialData* d) {
+  const std::vector<double>& t = d->force_t;
+  if (t.size() < 3) return;
+  std::vector<double> steps(t.size() - 1);
+  for (std::size_t i = 1; i < t.size(); ++i) steps[i - 1] = t[i] - t[i - 1];
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  double t0 = 0.0, t1 = 0.0;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (steps[i] > t1 - t0) t0 = t[i], t1 = t[i + 1];
+  }
+  if (d->duration - t.back() > t1 - t0) t0 = t.back(), t1 = d->duration;
+  if (t1 - t0 > std::max(1.0, 10.0 * median)) d->force_gap_t0 = t0, d->force_gap_t1 = t1;
+}
+
 void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle,
                const std::string& where, TrialData* d) {
   const model::TrialLog& log = e.log;
@@ -170,6 +188,7 @@ void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle,
   for (std::size_t m = 0; m < used.size(); ++m) {
     if (used[m]) d->mappings_used.push_back(vehicle.mappings[m].name);
   }
+  FindForceGap(d);
   d->input = model::MakeHeldExcitation(d->force_t, d->force, d->mapping, d->duration);
   d->breakpoints = d->input->Breakpoints();
   std::sort(d->breakpoints.begin(), d->breakpoints.end());

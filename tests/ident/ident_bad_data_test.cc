@@ -50,6 +50,27 @@ TEST(BadDataTest, OneConstantForceDoesNotExciteTheModel) {
   EXPECT_TRUE(AnyContains(s->notes, "too few steady-state segments", "at least"));
 }
 
+// A log whose force cells are empty for 10 s while the vehicle moves (a recorder that lost
+// the command): the last command is held across the hole, as a zero-order hold does, but the
+// data does not say it held — a warning names the trial and the span. The same trial logged
+// whole gets no such warning.
+TEST(BadDataTest, ForceMissingOverSecondsIsAWarningNamingTheSpan) {
+  const model::Truth truth = testing::CaseTruth("romeo");
+  model::TrialDesign d = testing::Segments("legs", Dof::kSurge, "surge-front", {{40, 30}, {80, 30}});
+  model::Campaign c = VirtualCampaign(truth, {d}, 3);
+  const auto warned = [](const model::Campaign& campaign) {
+    const IdentifyResult r = Identify(campaign, IdentifyOptions{});
+    const DofIdentification* s = r.Find(Dof::kSurge);
+    return s != nullptr && AnyContains(s->warnings, "no force value for", "held across it");
+  };
+  EXPECT_FALSE(warned(c));
+  model::TrialLog& log = c.trials[0].log;
+  for (std::size_t i = 0; i < log.t.size(); ++i) {
+    if (log.t[i] >= 25.0 && log.t[i] < 35.0) log.force[model::Index(Dof::kSurge)][i] = std::nan("");
+  }
+  EXPECT_TRUE(warned(c));
+}
+
 TEST(BadDataTest, ATrialAtRestIdentifiesNothingAndSaysSo) {
   // 20 s of ROMEO surge with no thrust: the vehicle stays at rest (truth bias 0); no estimator
   // can fit it. That is no usable estimate: status failed, which `uuvplan identify` turns into

@@ -78,6 +78,10 @@ struct TrialData {
   /// Times of the large command changes (steps of more than 5% of the force range, and
   /// mapping changes): the filtered velocity is distorted within half a filter window of them.
   std::vector<double> force_jumps;
+  /// The longest stretch without a force value, [t0, t1) in trial time, when it is longer than
+  /// 1 s and 10 median row steps (NaN cells or missing rows): the last command is held across
+  /// it (zero-order hold), which the data does not confirm. Empty (t1 <= t0) otherwise.
+  double force_gap_t0 = 0.0, force_gap_t1 = 0.0;
 
   /// Velocity estimate: smoothed measured velocity if the DOF has a velocity column, else the
   /// Savitzky–Golay derivative of the positions (`velocity_from_position` says which); its
