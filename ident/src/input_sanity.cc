@@ -271,6 +271,26 @@ void CheckForceAgainstMotion(TrialCheck& c) {
   }
 }
 
+// A measurement that never changes while the force commands thrust: a stuck or disconnected
+// sensor (identification would fit it: a constant position read as an immovable vehicle gave
+// payload60 surge m = 3227 kg, 27× its a priori range, with exit 0).
+void CheckStuckSensor(TrialCheck& c) {
+  double push = 0.0;
+  for (double f : c.force.y) push = std::max(push, std::abs(f));
+  if (!(push > 0)) return;
+  for (const auto& [m, column] : {std::pair(&c.pos, c.pos_name), std::pair(&c.vel, c.vel_name)}) {
+    if (!m->has_value()) continue;
+    const std::vector<double>& y = (*m)->raw.y;
+    const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
+    if (*lo != *hi) continue;
+    c.Report(column,
+             "every one of its " + std::to_string(y.size()) + " values is " + Fmt(*lo, 4) +
+                 " while " + c.force_name + " commands up to " + Fmt(push, 3) + " " +
+                 std::string(model::ForceUnit(c.dof)),
+             "a stuck or disconnected sensor: check the log, or leave the column empty");
+  }
+}
+
 void CheckTrial(const model::TrialEntry& e, const InputSanityOptions& o, std::vector<InputProblem>* out) {
   const model::TrialLog& log = e.log;
   const Dof dof = e.dof;
@@ -280,6 +300,7 @@ void CheckTrial(const model::TrialEntry& e, const InputSanityOptions& o, std::ve
   const double time_scale = InputTimeScale(c.force.t, c.force.y);
   if (log.HasPosition(dof)) c.pos = SmoothableOf(Finite(log.t, log.position[model::Index(dof)]), time_scale);
   if (log.HasVelocity(dof)) c.vel = SmoothableOf(Finite(log.t, log.velocity[model::Index(dof)]), time_scale);
+  CheckStuckSensor(c);
   CheckRateAgainstPosition(c);
   CheckRotationRate(c);
   CheckForceAgainstMotion(c);

@@ -139,9 +139,10 @@ void AddThreadsOption(CLI::App* sub, const std::vector<int*>& targets, const std
 
 void AddAcceptUnitsFlag(CLI::App* sub, bool* accept) {
   sub->add_flag("--accept-units", *accept,
-                "identify even when a log's units or signs look wrong (a rate 57.3× the "
-                "derivative of its angle, a position column that holds a velocity, a force "
-                "opposite to the motion); the findings are then printed as warnings");
+                "identify even when a log's units, signs or sensors look wrong (a rate 57.3× "
+                "the derivative of its angle, a position column that holds a velocity, a force "
+                "opposite to the motion, a sensor stuck at one value); the findings are then "
+                "printed as warnings");
 }
 
 model::Campaign ReadCampaignForIdentification(const std::string& path, bool accept_units) {
@@ -151,11 +152,11 @@ model::Campaign ReadCampaignForIdentification(const std::string& path, bool acce
   std::string text;
   for (const ident::InputProblem& p : problems) text += "\n  " + p.Text();
   if (accept_units) {
-    std::cerr << "warning: units or signs look wrong (accepted by --accept-units):" << text << "\n";
+    std::cerr << "warning: units, signs or sensors look wrong (accepted by --accept-units):" << text << "\n";
     return campaign;
   }
   throw model::InputError(problems.front().file,
-                          "units or signs look wrong, identification not started:" + text +
+                          "units, signs or sensors look wrong, identification not started:" + text +
                               "\n(fix the columns; if they are right, pass --accept-units)");
 }
 

@@ -82,5 +82,20 @@ TEST(InputSanityTest, AnOppositeRateSignIsNamed) {
   EXPECT_THAT(problems[0].fix, ::testing::HasSubstr("opposite sign conventions"));
 }
 
+// A sensor stuck at one value while the force pushes: named on its column, position or rate.
+TEST(InputSanityTest, AStuckSensorIsNamed) {
+  for (const bool rate : {false, true}) {
+    model::Campaign c = Virtual("romeo", {testing::RomeoYawDesigns()[0]}, Dof::kYaw, true);
+    model::TrialLog& log = c.trials[0].log;
+    auto& column = rate ? log.velocity[model::Index(Dof::kYaw)] : log.position[model::Index(Dof::kYaw)];
+    for (double& v : column) v = 0.25;
+    const auto problems = CheckInputSanity(c);
+    ASSERT_FALSE(problems.empty()) << rate;
+    EXPECT_EQ(problems[0].column, rate ? "vel_yaw" : "pos_yaw");
+    EXPECT_THAT(problems[0].finding, ::testing::HasSubstr("every one of its"));
+    EXPECT_THAT(problems[0].fix, ::testing::HasSubstr("stuck or disconnected sensor"));
+  }
+}
+
 }  // namespace
 }  // namespace uuvplan::ident

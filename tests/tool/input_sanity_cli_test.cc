@@ -92,7 +92,7 @@ void ExpectStopped(const TempDir& dir, const std::string& campaign, const std::s
   EXPECT_THAT(r.err, HasSubstr("--accept-units"));
   const ToolRun accepted = RunTool("identify '" + campaign + "' --accept-units", dir);
   EXPECT_NE(accepted.status, 2) << accepted.err;
-  EXPECT_THAT(accepted.err, HasSubstr("warning: units or signs look wrong"));
+  EXPECT_THAT(accepted.err, HasSubstr("warning: units, signs or sensors look wrong"));
   EXPECT_THAT(accepted.out, HasSubstr("Identification of"));
 }
 
@@ -122,7 +122,7 @@ TEST(InputSanityCliTest, ThePlannersOwnScheduleRaisesNothing) {
             0);
   const ToolRun r = RunTool("identify " + (dir / "campaign/campaign.yaml"), dir);
   EXPECT_EQ(r.status, 0) << r.err << r.out;
-  EXPECT_THAT(r.err, Not(HasSubstr("units or signs look wrong")));
+  EXPECT_THAT(r.err, Not(HasSubstr("units, signs or sensors look wrong")));
 }
 
 TEST(InputSanityCliTest, GyroInDegreesPerSecondStops) {

@@ -11,6 +11,8 @@
 //    force far better than m·d²x/dt² + k·dx/dt, with m, k > 0 — holds a velocity.
 //  - thrust sign vs motion: F = m·a + c·ν + b fitted to the logged force and the measured motion
 //    gives m < 0 and c < 0 (the force and the motion it causes have opposite signs).
+//  - a stuck sensor: a pos_ or vel_ column whose every value is the same while the force
+//    commands thrust.
 // Each finding names the trial's file, the column and the likely unit or fix. The checks look
 // at each trial's own DOF (the one identified from it).
 #pragma once
