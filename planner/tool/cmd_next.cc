@@ -159,12 +159,10 @@ int RunNext(const NextCliOptions& o) {
   // hosts; in one it hosts for part of the box or none, the pool's answer is 1 (as `loop`'s,
   // planner::ReadLoopEnd). A trial is planned (0) where the loop may run: all or part.
   int exit_status = ExitStatus(r.status);
-  if (r.status == planner::NextStatus::kTrial && !planner::LoopMayRun(verdict)) {
-    exit_status = VerdictExit(verdict);
-  }
-  if (r.status == planner::NextStatus::kStuck && !verdict.hosted) {
-    exit_status = VerdictExit(verdict);
-  }
+  const bool pool_refuses =
+      (r.status == planner::NextStatus::kTrial && !planner::LoopMayRun(verdict)) ||
+      (r.status == planner::NextStatus::kStuck && !verdict.hosted);
+  if (pool_refuses) exit_status = VerdictExit(verdict);
   std::ostream& out = ReportStream(o.json);
   PrintNextStep(r, campaign, pool, o, out);
   PrintVerdict(verdict, pool, out);
@@ -172,6 +170,12 @@ int RunNext(const NextCliOptions& o) {
     nlohmann::json j = NextStepJson(r, o.design.target_percent);
     j["verdict"] = io::PoolVerdictJson(verdict, pool);
     j["exit_status"] = exit_status;
+    // The pool's answer is the status a script reads (as `loop`'s): the best next trial, if
+    // any, is still given for reference.
+    if (pool_refuses && exit_status != 0) {
+      j["status"] = std::string(planner::NextStatusName(planner::NextStatus::kInfeasible));
+      j["message"] = verdict.sentence;
+    }
     WriteJson(o.json, j);
   }
   return exit_status;

@@ -547,5 +547,26 @@ TEST_F(LoopCliTest, NextWritesEstimatesTrialAndPredicted) {
   EXPECT_EQ(sim.status, 0) << sim.err;
 }
 
+// A pool the verdict refuses (ROMEO heave in 0.5 m of free depth): `next` exits 1 and its
+// JSON says so as `loop`'s does — status "infeasible", the verdict's sentence as the message —
+// so that a script reading `status` stops; the best next trial stays in `trial` for reference.
+// Before, the status read "trial" beside "exit_status": 1.
+TEST_F(LoopCliTest, NextInAPoolTheVerdictRefusesIsInfeasible) {
+  const std::string campaign =
+      dir_.Write("campaign.yaml", "vehicle: '" + RomeoPath("vehicle.yaml") + "'\ntrials: []\n");
+  const std::string pool =
+      dir_.Write("shallow.yaml", "name: shallow\nlength: 30\nwidth: 20\ndepth: 2.5\nmargin: 1\n");
+  const auto r = tool_test::RunTool("next '" + campaign + "' --pool '" + pool +
+                                        "' --dof heave --json '" + (dir_ / "n.json") + "'",
+                                    dir_);
+  EXPECT_EQ(r.status, 1) << r.err << r.out;
+  const auto j = nlohmann::json::parse(tool_test::ReadText(dir_ / "n.json"));
+  EXPECT_EQ(j.at("status"), "infeasible");
+  EXPECT_EQ(j.at("exit_status"), 1);
+  EXPECT_EQ(j.at("message").get<std::string>().rfind("Pool shallow CANNOT host", 0), 0u)
+      << j.at("message");
+  EXPECT_FALSE(j.at("trial").is_null());
+}
+
 }  // namespace
 }  // namespace uuvplan::planner
