@@ -71,13 +71,14 @@ class SwitchedProblem {
     if (w_[1] <= w_[0]) w_[1] = 2.0 * w_[0];
   }
 
-  int num_variables() const {
-    switch (family_) {
+  static int VariablesOf(model::InputFamily family) {
+    switch (family) {
       case model::InputFamily::kSwitchedSquare: return 5;
       case model::InputFamily::kSwitchedSine: return 4;
       default: return 2 * kMultisineHarmonics + 3;
     }
   }
+  int num_variables() const { return VariablesOf(family_); }
 
   model::TrialDesign Decode(const double* x) const {
     model::TrialDesign d;
@@ -356,9 +357,18 @@ PairSolution SolvePair(const DofContext& ctx, const PairTask& t, const SineDesig
 std::vector<PairSolution> SolveAll(const DofContext& ctx, const std::vector<PairTask>& tasks,
                                    const SineDesignOptions& o,
                                    const std::vector<Eigen::MatrixXd>& prior) {
+  // The costliest first (evaluations ∝ variables, SolvePair's budgets), so that no thread is
+  // left with a multisine while the others idle; the order of solving changes no solution.
+  std::vector<std::size_t> order(tasks.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return SwitchedProblem::VariablesOf(tasks[a].family) > SwitchedProblem::VariablesOf(tasks[b].family);
+  });
   std::vector<PairSolution> out(tasks.size());
-  model::ParallelFor(tasks.size(), ctx.options().Threads(),
-                     [&](std::size_t i) { out[i] = SolvePair(ctx, tasks[i], o, prior); });
+  model::ParallelFor(tasks.size(), ctx.options().Threads(), [&](std::size_t k) {
+    const std::size_t i = order[k];
+    out[i] = SolvePair(ctx, tasks[i], o, prior);
+  });
   return out;
 }
 
