@@ -238,7 +238,8 @@ ClosedLoopIvResult ClosedLoopInstrumentalFit(const model::DofModel& model,
     for (std::size_t c = 0; c < candidates.size(); ++c) candidates[c].correlation = correlation[c];
     double pe = 0.0;
     kept_notes.clear();
-    const int worst = WorstInsignificant(candidates, o.prunable, o.drop_correlation, &pe, &kept_notes);
+    const int worst =
+        WorstInsignificant(candidates, o.prunable, o.drop_correlation, &pe, &kept_notes);
     if (worst < 0) break;
     const int j = model.ParameterIndex(candidates[worst].name);
     before_value[j] = candidates[worst].value;

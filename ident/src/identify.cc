@@ -75,7 +75,9 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
                        o.steady, o.output_error, model.ParameterIndex(model::param::kMass)};
   c.steady.prune_insignificant = o.prune_insignificant && c.steady.prune_insignificant;
   c.output_error.prune_insignificant = o.prune_insignificant && c.output_error.prune_insignificant;
-  if (o.seed_selection) c.steady.drop_correlation = c.output_error.drop_correlation = kSeedDropCorrelation;
+  if (o.seed_selection) {
+    c.steady.drop_correlation = c.output_error.drop_correlation = kSeedDropCorrelation;
+  }
   r.closed_loop_suspected = stages::SuspectClosedLoop(trials.fit, o.closed_loop);
   NoteParametersNotUsed(campaign.vehicle, dof, &r);
   r.timing.push_back({"prepare", prepare_s + watch.Lap()});

@@ -164,6 +164,7 @@ LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofI
   std::vector<int> free = LinearParameters(c.model);
   Eigen::VectorXd given = c.prior;
   std::vector<ParameterEstimate> dropped;
+  std::vector<std::string> kept;  // insignificant parameters kept for their correlation
   while (true) {
     r->rls = RecursiveOneStep(c.model, c.trials.fit, given, free, o.one_step, o.rls);
     if (!r->rls->ok()) {
@@ -175,11 +176,14 @@ LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofI
     const std::vector<double> correlation = LargestCorrelations(f.covariance(f.free, f.free));
     for (std::size_t i = 0; i < f.free.size(); ++i) {
       const int j = f.free[i];
-      candidates.push_back({f.names[j], f.final_theta[j], std::sqrt(f.covariance(j, j)), correlation[i]});
+      candidates.push_back(
+          {f.names[j], f.final_theta[j], std::sqrt(f.covariance(j, j)), correlation[i]});
     }
     double pe = 0.0;
+    kept.clear();
     const int worst = o.prune_insignificant
-                          ? WorstInsignificant(candidates, c.steady.prunable, c.steady.drop_correlation, &pe)
+                          ? WorstInsignificant(candidates, c.steady.prunable,
+                                               c.steady.drop_correlation, &pe, &kept)
                           : -1;
     if (worst < 0) break;
     const int j = f.free[worst];
@@ -193,6 +197,7 @@ LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofI
     given[j] = 0.0;
     free.erase(std::find(free.begin(), free.end(), j));
   }
+  for (const std::string& n : kept) r->notes.push_back("rls: " + n);
   RlsDofResult& f = *r->rls;
   f.estimates = MakeEstimates(f.names, f.final_theta, f.covariance, f.state);
   for (const ParameterEstimate& e : dropped) {
@@ -214,7 +219,7 @@ void ClosedLoop(const DofContext& c, const IdentifyOptions& o, const LeastSquare
   if (!r->closed_loop_suspected) return;
   ClosedLoopIvOptions iv = o.closed_loop_iv;
   iv.prune_insignificant = o.prune_insignificant && iv.prune_insignificant;
-  iv.drop_correlation = c.steady.drop_correlation;
+  if (o.seed_selection) iv.drop_correlation = kSeedDropCorrelation;
   r->closed_loop_iv =
       ClosedLoopInstrumentalFit(c.model, c.trials.fit, ls.estimate.theta, o.one_step, iv);
   if (!r->closed_loop_iv->ok()) r->notes.push_back(r->closed_loop_iv->fit.message);

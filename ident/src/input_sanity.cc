@@ -287,7 +287,8 @@ void CheckStuckSensor(TrialCheck& c) {
              "every one of its " + std::to_string(y.size()) + " values is " + Fmt(*lo, 4) +
                  " while " + c.force_name + " commands up to " + Fmt(push, 3) + " " +
                  std::string(model::ForceUnit(c.dof)),
-             "a stuck or disconnected sensor: check the log, or leave the column empty");
+             "a stuck or disconnected sensor, or a vehicle that did not move: check the log, "
+             "or leave the column empty");
   }
 }
 

@@ -2,21 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "drag_parameter.h"
 #include "uuvplan/ident/significance.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
-
-namespace {
-std::string Fixed2(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", x);
-  return text;
-}
-}  // namespace
 
 std::vector<double> LargestCorrelations(const Eigen::MatrixXd& covariance) {
   const Eigen::Index n = covariance.rows();
@@ -47,12 +38,12 @@ int WorstInsignificant(const std::vector<PruneCandidate>& candidates,
     const bool non_physical = IsDragParameter(p.name) && p.value < 0;
     if (p.correlation > max_correlation && !non_physical) {
       if (kept) {
-        kept->push_back(p.name + " = " + model::Significant(p.value, 4) + " ± " +
-                        model::Significant(p.sigma, 4) + " is insignificant but kept: correlated at " +
-                        Fixed2(p.correlation) +
-                        " with another parameter, so dropping it would report that one's σ " +
-                        "as if " + p.name + " were exactly 0 (model selection, " +
-                        "docs/identification.md)");
+        kept->push_back(
+            p.name + " = " + model::Significant(p.value, 4) + " ± " +
+            model::Significant(p.sigma, 4) + " is insignificant but kept: correlated at " +
+            model::Decimals(p.correlation, 2) +
+            " with another parameter, so dropping it would report that one's σ as if " +
+            p.name + " were exactly 0 (model selection, docs/identification.md)");
       }
       continue;
     }

@@ -865,7 +865,8 @@ int DropWorst(const std::vector<int>& free, const OutputErrorOptions& o, Eigen::
   const std::vector<double> correlation = LargestCorrelations(res->covariance(free, free));
   for (std::size_t i = 0; i < free.size(); ++i) {
     const int j = free[i];
-    candidates.push_back({res->names[j], (*theta)[j], std::sqrt(res->covariance(j, j)), correlation[i]});
+    candidates.push_back(
+        {res->names[j], (*theta)[j], std::sqrt(res->covariance(j, j)), correlation[i]});
   }
   double worst_pe = 0.0;
   std::vector<std::string> kept;

@@ -369,12 +369,13 @@ LinearFit FitWithSelection(const model::DofModel& model, const std::vector<Stead
     std::vector<PruneCandidate> candidates;
     const std::vector<double> correlation = LargestCorrelations(fit.covariance);
     for (int c = 0; c < p; ++c) {
-      candidates.push_back({r->names[(*cols)[c]], fit.theta[c], std::sqrt(fit.covariance(c, c)),
-                            correlation[c]});
+      candidates.push_back(
+          {r->names[(*cols)[c]], fit.theta[c], std::sqrt(fit.covariance(c, c)), correlation[c]});
     }
     double worst_pe = 0.0;
     kept.clear();
-    const int worst = WorstInsignificant(candidates, o.prunable, o.drop_correlation, &worst_pe, &kept);
+    const int worst =
+        WorstInsignificant(candidates, o.prunable, o.drop_correlation, &worst_pe, &kept);
     if (worst < 0 || p == 1) break;
     const int j = (*cols)[worst];
     r->state[j] = ParameterState::kDropped;

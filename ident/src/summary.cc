@@ -1,16 +1,12 @@
 // The shared result shape of the staged pipelines (summary.h).
 #include "uuvplan/ident/summary.h"
 
-#include <cstdio>
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
 
-std::string Seconds(double s) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3f s", s);
-  return buffer;
-}
+std::string Seconds(double s) { return model::Decimals(s, 3) + " s"; }
 
 }  // namespace
 

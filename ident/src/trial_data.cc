@@ -122,10 +122,9 @@ void LogAuxVelocities::At(double t, std::array<double, model::kNumDofs>* v) cons
 
 namespace {
 
-// The logged force of the DOF and the mapping in force on each row (zero-order hold,
-// notes/pitfalls.md), as the trial's excitation; the command steps (force_jumps).
-// The longest step between force rows, or to the trial's end, kept when it is longer than
-// 1 s and 10 median steps (TrialData::force_gap_t0).
+// The longest step between force rows, or from the last one to the trial's end (a force log
+// that stops before the measurements), kept when it is longer than 1 s and 10 median steps
+// (TrialData::force_gap_t0).
 void FindForceGap(TrialData* d) {
   const std::vector<double>& t = d->force_t;
   if (t.size() < 3) return;
@@ -142,6 +141,8 @@ void FindForceGap(TrialData* d) {
   if (t1 - t0 > std::max(1.0, 10.0 * median)) d->force_gap_t0 = t0, d->force_gap_t1 = t1;
 }
 
+// The logged force of the DOF and the mapping in force on each row (zero-order hold,
+// notes/pitfalls.md), as the trial's excitation; the command steps (force_jumps).
 void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle,
                const std::string& where, TrialData* d) {
   const model::TrialLog& log = e.log;

@@ -330,21 +330,28 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
   out.plan_given = plan_checks != nullptr;
   if (plan_checks != nullptr) out.plan_checks = *plan_checks;
   out.hosted = !own.dofs.empty();
-  std::vector<char> plan_fits;
+  std::vector<char> plan_fits, own_hosted;
+  std::vector<std::size_t> not_hosted;
   for (const auto& p : own.dofs) {
     out.dofs.push_back(JudgeOwn(&p, p.dof, pool));
+    own_hosted.push_back(out.dofs.back().hosted);
     plan_fits.push_back(JudgePlanTrials(out.plan_checks, &out.dofs.back()));
+    if (!out.dofs.back().hosted) not_hosted.push_back(out.dofs.size() - 1);
   }
-  // The DOFs not hosted, each searched on its own (PlannerOptions::threads; each writes only
-  // its verdict, so the answer does not depend on the threads).
-  model::ParallelFor(out.dofs.size(), options.planner.Threads(), [&](std::size_t i) {
+  // The DOFs not hosted, each searched on its own (PlannerOptions::threads, only those: one
+  // left alone plans its trials' families on both cores; each writes only its verdict, so the
+  // answer does not depend on the threads).
+  model::ParallelFor(not_hosted.size(), options.planner.Threads(), [&](std::size_t k) {
+    const std::size_t i = not_hosted[k];
     DofVerdict& v = out.dofs[i];
-    if (!v.hosted && std::isfinite(v.need) && vo.need_checks >= 0) {
+    // The planner's own schedule hosted here and only a given plan's trials failing: no
+    // larger pool to search for it (the plan's own need is its travel, Required).
+    if (!own_hosted[i] && std::isfinite(v.need) && vo.need_checks >= 0) {
       ConfirmNeed(vehicle, pool, options, vo, &v);
       BelowTargetUnlifted(pool, &v);
     }
     // A given plan that fails its own checks is judged as given: no other point rescues it.
-    if (!v.hosted && vo.judge_points && plan_fits[i]) JudgePoints(vehicle, pool, options, &v);
+    if (vo.judge_points && plan_fits[i]) JudgePoints(vehicle, pool, options, &v);
   });
   for (const DofVerdict& v : out.dofs) out.hosted = out.hosted && v.hosted;
   out.required = Required(pool, out.dofs);
@@ -376,7 +383,11 @@ std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
   s << (v.hostability == Hostability::kPart ? "hosted for PART of the a priori box ("
                                              : "NOT hosted (")
     << PoolLimitName(v.limit) << "): ";
-  if (std::isfinite(v.need)) {
+  if (std::isfinite(v.need) && v.need <= pool.FreeTravel(v.dof)) {
+    // Only a given plan's trials fail (JudgePlanTrials): the planner's own schedule fits.
+    s << "the planner's own schedule is hosted here; the plan's trials need "
+      << Travel(pool, v.dof, v.extent) << ". ";
+  } else if (std::isfinite(v.need)) {
     s << (v.need_verified ? "needs " : "needs at least ") << Travel(pool, v.dof, v.need)
       << (v.need_verified ? ", confirmed by planning it there" : "");
     if (v.need_verified && v.need_searched) {
@@ -438,9 +449,12 @@ std::string RequiredLine(const PoolVerdict& v, const model::Pool& pool) {
                        (d.need_verified || plan_side ? " " : " at least ") + Fmt(wall, 4) +
                        " m wall to wall (" + Fmt(wall - 2 * pool.margin, 4) + " m free)";
     if (plan_side) {
+      const bool here = d.need <= pool.FreeTravel(d.dof);  // its own extent, in this pool
       side += ", the plan's trials' travel over the box (the planner's own schedule " +
-              std::string(d.need_verified ? "is hosted from " : "needs at least ") +
-              Fmt(pool.WallToWallFor(d.need), 4) + " m wall to wall)";
+              (here ? std::string("is hosted in this pool")
+                    : std::string(d.need_verified ? "is hosted from " : "needs at least ") +
+                          Fmt(pool.WallToWallFor(d.need), 4) + " m wall to wall") +
+              ")";
     }
     sides.push_back(side);
   }

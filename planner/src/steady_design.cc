@@ -341,10 +341,11 @@ class SteadyPlanner {
     return true;
   }
 
-  // The smallest |force| in [lo, hi] whose run settles and holds within t_max (a larger force
-  // settles sooner: the linearised drag grows with the speed, seed 000 eq. 13): lo itself when
+  // The smallest |force| in [lo, hi] whose run settles and holds within t_max: lo itself when
   // it does, else by bisection in log force (a short --max-duration: ROMEO surge's min_thrust
-  // run takes 63 s, its 25 s runs at 180 N were refused with it). False when none does.
+  // run takes 63 s, its 25 s runs at 183 N were refused with it). A larger force takes less
+  // of both: it settles sooner (the linearised drag grows with the speed, seed 000 eq. 13) and
+  // holds shorter (HoldTime ∝ 1/speed). False when none does.
   bool SmallestTimely(const std::string& mapping, int sign, double lo, double hi, double t_max,
                       double* force, SteadyLeg* leg) const {
     const auto timely = [&](double f, SteadyLeg* l) {
@@ -352,16 +353,21 @@ class SteadyPlanner {
     };
     *force = lo;
     if (timely(lo, leg)) return true;
-    SteadyLeg top;
-    if (!timely(hi, &top)) return false;
-    double a = std::log(lo), b = std::log(hi);  // a fails, b succeeds
+    if (!timely(hi, leg)) return false;
+    double a = std::log(lo), b = std::log(hi);  // a fails, b succeeds (its leg in *leg)
+    *force = hi;
     for (int it = 0; it < 8; ++it) {
       const double c = 0.5 * (a + b);
       SteadyLeg l;
-      (timely(std::exp(c), &l) ? b : a) = c;
+      if (timely(std::exp(c), &l)) {
+        b = c;
+        *force = std::exp(c);
+        *leg = l;
+      } else {
+        a = c;
+      }
     }
-    *force = std::exp(b);
-    return timely(*force, leg);
+    return true;
   }
 
   const DofContext& ctx_;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <sstream>
 
@@ -361,23 +362,31 @@ std::vector<PairSolution> SolveAll(const DofContext& ctx, const std::vector<Pair
   // left with a multisine while the others idle; the order of solving changes no solution.
   std::vector<std::size_t> order(tasks.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return SwitchedProblem::VariablesOf(tasks[a].family) > SwitchedProblem::VariablesOf(tasks[b].family);
-  });
+  const auto cost = [&](std::size_t i) { return SwitchedProblem::VariablesOf(tasks[i].family); };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cost(a) > cost(b); });
   std::vector<PairSolution> out(tasks.size());
+  std::vector<std::exception_ptr> errors(tasks.size());  // rethrown in task order, as before
   model::ParallelFor(tasks.size(), ctx.options().Threads(), [&](std::size_t k) {
     const std::size_t i = order[k];
-    out[i] = SolvePair(ctx, tasks[i], o, prior);
+    try {
+      out[i] = SolvePair(ctx, tasks[i], o, prior);
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
   });
+  for (const std::exception_ptr& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
   return out;
 }
 
 // The family's best solution (the first of equal objectives, in pair order), scored and
 // checked.
 SineDesignResult BestOfFamily(const DofContext& ctx, model::InputFamily family,
-                              const SineDesignOptions& o,
-                              const std::vector<Eigen::MatrixXd>& prior, const std::string& id,
-                              const PairSolution* first, const PairSolution* last) {
+                              const SineDesignOptions& o, const std::vector<Eigen::MatrixXd>& prior,
+                              const std::string& id, const PairSolution* first,
+                              const PairSolution* last) {
   SineDesignResult result;
   double best = -std::numeric_limits<double>::infinity();
   for (const PairSolution* s = first; s != last; ++s) {
@@ -434,8 +443,8 @@ SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptio
   const std::vector<PairSolution> solved = SolveAll(ctx, tasks, o, prior);
   for (std::size_t f = 0; f < o.families.size(); ++f) {
     const model::InputFamily family = o.families[f];
-    SineDesignResult r = BestOfFamily(ctx, family, o, prior, id,
-                                      solved.data() + (f ? ends[f - 1] : 0), solved.data() + ends[f]);
+    SineDesignResult r = BestOfFamily(
+        ctx, family, o, prior, id, solved.data() + (f ? ends[f - 1] : 0), solved.data() + ends[f]);
     std::ostringstream s;
     s << model::InputFamilyName(r.status == DesignStatus::kOk ? r.trial.design.family : family)
       << ": " << (r.status == DesignStatus::kOk ? "robust criterion " + model::Significant(r.criterion, 4)

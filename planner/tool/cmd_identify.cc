@@ -144,9 +144,9 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
       "--no-prune", [o] { o->identify.prune_insignificant = false; },
       "keep insignificant drag/bias parameters (no model selection by the 51.02% rule)");
   sub->add_flag_callback(
-      "--seed-selection", [o] { o->identify.seed_selection = true; },
-      "drop an insignificant parameter even where it is correlated with another, as seed 000 "
-      "§IV-D does (by default it is kept: the others' σ would assume it exactly 0)")
+         "--seed-selection", [o] { o->identify.seed_selection = true; },
+         "drop an insignificant parameter even where it is correlated with another, as seed 000 "
+         "§IV-D does (by default it is kept: the others' σ would assume it exactly 0)")
       ->excludes("--no-prune");
   sub->add_option("--closed-loop", o->closed_loop,
                   "whether the logs were recorded in closed loop: auto (detect), yes, no")

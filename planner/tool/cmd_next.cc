@@ -174,7 +174,8 @@ int RunNext(const NextCliOptions& o) {
     // any, is still given for reference.
     if (pool_refuses && exit_status != 0) {
       j["status"] = std::string(planner::NextStatusName(planner::NextStatus::kInfeasible));
-      j["message"] = verdict.sentence;
+      const bool stuck = r.status == planner::NextStatus::kStuck && !r.message.empty();
+      j["message"] = verdict.sentence + (stuck ? "; " + r.message : std::string());
     }
     WriteJson(o.json, j);
   }

@@ -152,7 +152,8 @@ model::Campaign ReadCampaignForIdentification(const std::string& path, bool acce
   std::string text;
   for (const ident::InputProblem& p : problems) text += "\n  " + p.Text();
   if (accept_units) {
-    std::cerr << "warning: units, signs or sensors look wrong (accepted by --accept-units):" << text << "\n";
+    std::cerr << "warning: units, signs or sensors look wrong (accepted by --accept-units):" << text
+              << "\n";
     return campaign;
   }
   throw model::InputError(problems.front().file,

@@ -56,7 +56,8 @@ TEST(BadDataTest, OneConstantForceDoesNotExciteTheModel) {
 // whole gets no such warning.
 TEST(BadDataTest, ForceMissingOverSecondsIsAWarningNamingTheSpan) {
   const model::Truth truth = testing::CaseTruth("romeo");
-  model::TrialDesign d = testing::Segments("legs", Dof::kSurge, "surge-front", {{40, 30}, {80, 30}});
+  model::TrialDesign d =
+      testing::Segments("legs", Dof::kSurge, "surge-front", {{40, 30}, {80, 30}});
   model::Campaign c = VirtualCampaign(truth, {d}, 3);
   const auto warned = [](const model::Campaign& campaign) {
     const IdentifyResult r = Identify(campaign, IdentifyOptions{});

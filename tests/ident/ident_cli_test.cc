@@ -374,9 +374,9 @@ void CheckTable4(const model::Truth& truth, const Table4Row (&table)[N], const s
   io::SimulateCampaign(truth, testing::UrisDesigns(), dir.string(), vo);
   // Seed 004 drops β as the seeds do (seed 000 §IV-D's rule, `--seed-selection`): β is
   // correlated with α, whose σ then assume β = 0 — as the true β is here.
-  const RunResult r = RunUuvplan("identify " + (dir / "campaign.yaml").string() +
-                                 " --method rls --seed-selection --json " +
-                                 (dir / "rls.json").string() + options);
+  const RunResult r =
+      RunUuvplan("identify " + (dir / "campaign.yaml").string() +
+                 " --method rls --seed-selection --json " + (dir / "rls.json").string() + options);
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_THAT(r.out, ::testing::Not(::testing::HasSubstr("excluded as outliers, more than 5%")));
   EXPECT_THAT(r.out, ::testing::HasSubstr("method rls"));

@@ -87,7 +87,8 @@ TEST(InputSanityTest, AStuckSensorIsNamed) {
   for (const bool rate : {false, true}) {
     model::Campaign c = Virtual("romeo", {testing::RomeoYawDesigns()[0]}, Dof::kYaw, true);
     model::TrialLog& log = c.trials[0].log;
-    auto& column = rate ? log.velocity[model::Index(Dof::kYaw)] : log.position[model::Index(Dof::kYaw)];
+    auto& column =
+        rate ? log.velocity[model::Index(Dof::kYaw)] : log.position[model::Index(Dof::kYaw)];
     for (double& v : column) v = 0.25;
     const auto problems = CheckInputSanity(c);
     ASSERT_FALSE(problems.empty()) << rate;

@@ -177,6 +177,33 @@ TEST(PoolVerdict, APlanForALargerPoolNeedsItsTravelAndThePlannersNeedIsUnchanged
       << lines;
 }
 
+// The other way round: a plan made for a 40 m pool judged in ROMEO's own (20 m free), where the
+// planner's own schedule is hosted. Only the plan fails: no larger pool is searched for the
+// planner (its schedule fits here), the DOF line and the pool line say so, and `required` is
+// the plan's travel.
+TEST(PoolVerdict, APlanTooLongForAPoolThatHostsThePlannerIsThePlansFailureOnly) {
+  const model::Vehicle v = testing::Romeo();
+  const model::Pool romeo = testing::RomeoPool();
+  model::Pool long_pool = romeo;
+  long_pool.length = 40.0;
+  ScheduleOptions so;
+  so.dofs = {Dof::kSurge};
+  const ScheduleResult made_for_40 = PlanSchedule(v, long_pool, so);
+  const PoolVerdict verdict = JudgePool(v, romeo, so, &made_for_40.schedule);
+  ASSERT_FALSE(verdict.hosted) << verdict.sentence;
+  const DofVerdict& surge = verdict.dofs.at(0);
+  EXPECT_FALSE(surge.need_verified);  // nothing planned for it: the planner is hosted here
+  EXPECT_LE(surge.need, romeo.FreeTravel(Dof::kSurge));
+  EXPECT_GT(verdict.required.length, romeo.length);
+  const std::string lines = model::Join(VerdictLines(verdict, romeo), "\n");
+  EXPECT_NE(lines.find("the planner's own schedule is hosted here; the plan's trials need"),
+            std::string::npos)
+      << lines;
+  EXPECT_NE(lines.find("a pool that hosts the plan as given"), std::string::npos) << lines;
+  EXPECT_NE(lines.find("(the planner's own schedule is hosted in this pool)"), std::string::npos)
+      << lines;
+}
+
 // "To this precision" (issue #13): the verdict judges at the loop's target. ROMEO heave in its
 // own pool (2 m of free depth), over the whole a priori box, reaches 15% (hosted) but not 5%:
 // at some point of the box the loop's next trial gives the parameters still above the target

@@ -80,6 +80,7 @@ TEST(ScheduleInformation, RomeoTablesAgreeWithTheirMatrices) {
   const json j = json::parse(ReadText(scratch / "plan.json"));
   ASSERT_TRUE(j.contains("information"));
   EXPECT_EQ(j["information"]["assumption"], planner::kPredictedSigmaAssumption);
+  EXPECT_FALSE(j["predicted"].empty());
   for (const auto& [dof, p] : j["predicted"].items()) {
     EXPECT_EQ(p["assumption"], planner::kPredictedSigmaAssumption) << dof;
   }

@@ -8,8 +8,8 @@
 #include <Eigen/Dense>
 #include <array>
 #include <map>
-#include <mutex>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 

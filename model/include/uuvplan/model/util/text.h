@@ -53,6 +53,14 @@ inline std::string Significant(double x, int digits) {
   return text == "-0" ? "0" : text;
 }
 
+/// `decimals` digits after the point, kept even when zero ("0.90", "1.250"): a figure whose
+/// resolution is fixed (a correlation, a stage's seconds).
+inline std::string Decimals(double x, int decimals) {
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(decimals) << x;
+  return os.str();
+}
+
 /// A duration for people: "45.2 s" under a minute, else minutes and seconds "4:05 min" (never
 /// "2.4e+02 s").
 inline std::string DurationText(double seconds) {
