@@ -227,15 +227,12 @@ ClosedLoopIvResult ClosedLoopInstrumentalFit(const model::DofModel& model,
   ClosedLoopIvResult out = SolveIv(model, trials, theta_now, free, one_step, o);
   std::vector<std::string> kept_notes;
   while (o.prune_insignificant && out.ok()) {
-    std::vector<PruneCandidate> candidates;
-    std::vector<int> index;  // of each estimate in the model's layout (the covariance's)
+    std::vector<int> estimated;  // m and the free parameters, in the model's layout
     for (const ParameterEstimate& e : out.fit.estimates) {
-      candidates.push_back({e.name, e.value, e.sigma});
-      index.push_back(model.ParameterIndex(e.name));
+      estimated.push_back(model.ParameterIndex(e.name));
     }
-    const Eigen::MatrixXd cov = out.fit.covariance(index, index);
-    const std::vector<double> correlation = LargestCorrelations(cov);
-    for (std::size_t c = 0; c < candidates.size(); ++c) candidates[c].correlation = correlation[c];
+    const std::vector<PruneCandidate> candidates =
+        CandidatesOf(names, out.fit.theta, out.fit.covariance, estimated);
     double pe = 0.0;
     kept_notes.clear();
     const int worst =

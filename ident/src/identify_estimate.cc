@@ -172,13 +172,8 @@ LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofI
       return ls;
     }
     const RlsDofResult& f = *r->rls;
-    std::vector<PruneCandidate> candidates;
-    const std::vector<double> correlation = LargestCorrelations(f.covariance(f.free, f.free));
-    for (std::size_t i = 0; i < f.free.size(); ++i) {
-      const int j = f.free[i];
-      candidates.push_back(
-          {f.names[j], f.final_theta[j], std::sqrt(f.covariance(j, j)), correlation[i]});
-    }
+    const std::vector<PruneCandidate> candidates =
+        CandidatesOf(f.names, f.final_theta, f.covariance, f.free);
     double pe = 0.0;
     kept.clear();
     const int worst = o.prune_insignificant

@@ -22,6 +22,19 @@ std::vector<double> LargestCorrelations(const Eigen::MatrixXd& covariance) {
   return out;
 }
 
+std::vector<PruneCandidate> CandidatesOf(const std::vector<std::string>& names,
+                                         const Eigen::VectorXd& theta,
+                                         const Eigen::MatrixXd& covariance,
+                                         const std::vector<int>& free) {
+  const std::vector<double> correlation = LargestCorrelations(covariance(free, free));
+  std::vector<PruneCandidate> out;
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const int j = free[i];
+    out.push_back({names[j], theta[j], std::sqrt(covariance(j, j)), correlation[i]});
+  }
+  return out;
+}
+
 int WorstInsignificant(const std::vector<PruneCandidate>& candidates,
                        const std::vector<std::string>& prunable, double max_correlation,
                        double* worst_pe, std::vector<std::string>* kept) {

@@ -22,6 +22,13 @@ struct PruneCandidate {
 /// For each parameter of a covariance (any order), the largest |correlation| with another.
 std::vector<double> LargestCorrelations(const Eigen::MatrixXd& covariance);
 
+/// The candidates of a fit in the model's layout: the parameters `free` (indices into `names`,
+/// `theta` and `covariance`), each with its σ and its largest |correlation| among them.
+std::vector<PruneCandidate> CandidatesOf(const std::vector<std::string>& names,
+                                         const Eigen::VectorXd& theta,
+                                         const Eigen::MatrixXd& covariance,
+                                         const std::vector<int>& free);
+
 /// The index in `candidates` of the parameter to drop, or -1: the one named in `prunable`
 /// with the largest percentile error above 51.02% (first of equals), never the last drag term
 /// among the candidates (a model without drag has no steady state), nor one correlated with

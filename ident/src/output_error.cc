@@ -861,13 +861,8 @@ void StoreCovariance(const Problem& p, const LmOutcome& lm, const std::vector<in
 int DropWorst(const std::vector<int>& free, const OutputErrorOptions& o, Eigen::VectorXd* theta,
               std::vector<double>* before_value, std::vector<double>* before_sigma,
               OutputErrorResult* res) {
-  std::vector<PruneCandidate> candidates;
-  const std::vector<double> correlation = LargestCorrelations(res->covariance(free, free));
-  for (std::size_t i = 0; i < free.size(); ++i) {
-    const int j = free[i];
-    candidates.push_back(
-        {res->names[j], (*theta)[j], std::sqrt(res->covariance(j, j)), correlation[i]});
-  }
+  const std::vector<PruneCandidate> candidates =
+      CandidatesOf(res->names, *theta, res->covariance, free);
   double worst_pe = 0.0;
   std::vector<std::string> kept;
   const int c = WorstInsignificant(candidates, o.prunable, o.drop_correlation, &worst_pe, &kept);

@@ -330,13 +330,14 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
   out.plan_given = plan_checks != nullptr;
   if (plan_checks != nullptr) out.plan_checks = *plan_checks;
   out.hosted = !own.dofs.empty();
-  std::vector<char> plan_fits, own_hosted;
+  std::vector<char> plan_fits;
   std::vector<std::size_t> not_hosted;
   for (const auto& p : own.dofs) {
-    out.dofs.push_back(JudgeOwn(&p, p.dof, pool));
-    own_hosted.push_back(out.dofs.back().hosted);
-    plan_fits.push_back(JudgePlanTrials(out.plan_checks, &out.dofs.back()));
-    if (!out.dofs.back().hosted) not_hosted.push_back(out.dofs.size() - 1);
+    DofVerdict& v = out.dofs.emplace_back(JudgeOwn(&p, p.dof, pool));
+    const bool own_hosted = v.hosted;
+    plan_fits.push_back(JudgePlanTrials(out.plan_checks, &v));
+    v.only_plan_fails = own_hosted && !v.hosted;
+    if (!v.hosted) not_hosted.push_back(out.dofs.size() - 1);
   }
   // The DOFs not hosted, each searched on its own (PlannerOptions::threads, only those: one
   // left alone plans its trials' families on both cores; each writes only its verdict, so the
@@ -344,9 +345,9 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
   model::ParallelFor(not_hosted.size(), options.planner.Threads(), [&](std::size_t k) {
     const std::size_t i = not_hosted[k];
     DofVerdict& v = out.dofs[i];
-    // The planner's own schedule hosted here and only a given plan's trials failing: no
-    // larger pool to search for it (the plan's own need is its travel, Required).
-    if (!own_hosted[i] && std::isfinite(v.need) && vo.need_checks >= 0) {
+    // Only a given plan's trials failing: no larger pool to search for the planner (the
+    // plan's own need is its travel, Required).
+    if (!v.only_plan_fails && std::isfinite(v.need) && vo.need_checks >= 0) {
       ConfirmNeed(vehicle, pool, options, vo, &v);
       BelowTargetUnlifted(pool, &v);
     }
@@ -383,8 +384,7 @@ std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
   s << (v.hostability == Hostability::kPart ? "hosted for PART of the a priori box ("
                                              : "NOT hosted (")
     << PoolLimitName(v.limit) << "): ";
-  if (std::isfinite(v.need) && v.need <= pool.FreeTravel(v.dof)) {
-    // Only a given plan's trials fail (JudgePlanTrials): the planner's own schedule fits.
+  if (v.only_plan_fails) {
     s << "the planner's own schedule is hosted here; the plan's trials need "
       << Travel(pool, v.dof, v.extent) << ". ";
   } else if (std::isfinite(v.need)) {
@@ -449,11 +449,11 @@ std::string RequiredLine(const PoolVerdict& v, const model::Pool& pool) {
                        (d.need_verified || plan_side ? " " : " at least ") + Fmt(wall, 4) +
                        " m wall to wall (" + Fmt(wall - 2 * pool.margin, 4) + " m free)";
     if (plan_side) {
-      const bool here = d.need <= pool.FreeTravel(d.dof);  // its own extent, in this pool
       side += ", the plan's trials' travel over the box (the planner's own schedule " +
-              (here ? std::string("is hosted in this pool")
-                    : std::string(d.need_verified ? "is hosted from " : "needs at least ") +
-                          Fmt(pool.WallToWallFor(d.need), 4) + " m wall to wall") +
+              (d.only_plan_fails
+                   ? std::string("is hosted in this pool")
+                   : std::string(d.need_verified ? "is hosted from " : "needs at least ") +
+                         Fmt(pool.WallToWallFor(d.need), 4) + " m wall to wall") +
               ")";
     }
     sides.push_back(side);

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <sstream>
 
@@ -366,18 +365,9 @@ std::vector<PairSolution> SolveAll(const DofContext& ctx, const std::vector<Pair
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return cost(a) > cost(b); });
   std::vector<PairSolution> out(tasks.size());
-  std::vector<std::exception_ptr> errors(tasks.size());  // rethrown in task order, as before
   model::ParallelFor(tasks.size(), ctx.options().Threads(), [&](std::size_t k) {
-    const std::size_t i = order[k];
-    try {
-      out[i] = SolvePair(ctx, tasks[i], o, prior);
-    } catch (...) {
-      errors[i] = std::current_exception();
-    }
+    out[order[k]] = SolvePair(ctx, tasks[order[k]], o, prior);
   });
-  for (const std::exception_ptr& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
   return out;
 }
 

@@ -74,6 +74,9 @@ struct DofVerdict {
   /// least this pool's).
   double need_refuted = 0.0;
   bool need_searched = false;  ///< `need` is the smallest found (VerdictOptions::need_bisections)
+  /// The planner's own schedule is hosted here; only a given plan's trials fail (no larger
+  /// pool is searched: `need` is the planner's extent, `extent` the plan's).
+  bool only_plan_fails = false;
   Determinacy determinacy;     ///< of the planner's own schedule in this pool
   /// Determined, but the loop's target is out of reach of its trials in this pool
   /// (TargetReach of the schedule: the loop would end stuck).
