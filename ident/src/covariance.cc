@@ -75,24 +75,28 @@ std::pair<double, double> ExpectedResidualMoments(const Eigen::MatrixXd& Q, doub
 
 }  // namespace
 
+Eigen::MatrixXd OrthonormalBasis(const Eigen::Ref<const Eigen::MatrixXd>& X) {
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(X);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(X.rows(), X.cols());
+}
+
 double Ar1FromFittedResiduals(const std::vector<FittedResiduals>& fits) {
   double num = 0.0, den = 0.0, N = 0.0;
-  std::vector<Eigen::MatrixXd> bases;
+  std::vector<const Eigen::MatrixXd*> bases;
   for (const FittedResiduals& f : fits) {
-    if (f.X.rows() <= f.X.cols() + 2 || !(f.sum_sq > 0)) continue;
-    Eigen::HouseholderQR<Eigen::MatrixXd> qr(f.X);
-    bases.push_back(qr.householderQ() * Eigen::MatrixXd::Identity(f.X.rows(), f.X.cols()));
+    if (f.Q.rows() <= f.Q.cols() + 2 || !(f.sum_sq > 0)) continue;
+    bases.push_back(&f.Q);
     num += f.sum_lag1;
     den += f.sum_sq;
-    N += static_cast<double>(f.X.rows());
+    N += static_cast<double>(f.Q.rows());
   }
   if (!(den > 0) || num / den <= 2.0 / std::sqrt(N)) return 0.0;
   const double observed = num / den;
   // g(ρ) = Σ E lag − ρ̂·Σ E sq rises with ρ; bisection on [0, 0.99].
   auto g = [&](double rho) {
     double lag = 0.0, sq = 0.0;
-    for (const Eigen::MatrixXd& Q : bases) {
-      const auto [s, l] = ExpectedResidualMoments(Q, rho);
+    for (const Eigen::MatrixXd* Q : bases) {
+      const auto [s, l] = ExpectedResidualMoments(*Q, rho);
       sq += s;
       lag += l;
     }
@@ -110,13 +114,12 @@ double Ar1FromFittedResiduals(const std::vector<FittedResiduals>& fits) {
 
 double Ar1FromResidualVariance(const std::vector<FittedResiduals>& fits, double sigma) {
   double observed = 0.0, dof = 0.0;
-  std::vector<Eigen::MatrixXd> bases;
+  std::vector<const Eigen::MatrixXd*> bases;
   for (const FittedResiduals& f : fits) {
-    if (f.X.rows() <= f.X.cols() + 2) continue;
-    Eigen::HouseholderQR<Eigen::MatrixXd> qr(f.X);
-    bases.push_back(qr.householderQ() * Eigen::MatrixXd::Identity(f.X.rows(), f.X.cols()));
+    if (f.Q.rows() <= f.Q.cols() + 2) continue;
+    bases.push_back(&f.Q);
     observed += f.sum_sq;
-    dof += static_cast<double>(f.X.rows() - f.X.cols());
+    dof += static_cast<double>(f.Q.rows() - f.Q.cols());
   }
   if (bases.empty() || !(sigma > 0)) return 0.0;
   // White Gaussian noise makes Σr²/σ² a χ² of Σ(n − q) degrees (mean dof, sd √(2·dof)): ρ is 0
@@ -127,7 +130,7 @@ double Ar1FromResidualVariance(const std::vector<FittedResiduals>& fits, double 
   // h(ρ) = σ²·Σ E Σr²(ρ) − Σr² falls with ρ (the fitted columns take more of slower noise).
   auto h = [&](double rho) {
     double sq = 0.0;
-    for (const Eigen::MatrixXd& Q : bases) sq += ExpectedResidualMoments(Q, rho).first;
+    for (const Eigen::MatrixXd* Q : bases) sq += ExpectedResidualMoments(*Q, rho).first;
     return sigma * sigma * sq - observed;
   };
   double lo = 0.0, hi = 0.99;

@@ -190,10 +190,8 @@ IdentifyResult IdentifyCampaign(const model::Campaign& campaign, model::Campaign
   std::vector<double> prepare_s(trials.size());  // per trial
   diagnosis::ParallelFor(trials.size(), o.threads, [&](std::size_t i) {
     Stopwatch watch;
-    trials[i] =
-        PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.data, [&] {
-          if (release) release->trials[i].log = model::TrialLog{};
-        });
+    trials[i] = PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.data,
+                             release ? &release->trials[i].log : nullptr);
     prepare_s[i] = watch.Lap();
   });
   for (const TrialData& t : trials) result.trials.push_back(ReportOf(t));

@@ -58,11 +58,10 @@ std::vector<double> WhiteNoiseSensitivity(const model::DofModel& model, const Tr
   double vmax = 0.0;
   for (double x : run.xi) vmax = std::max(vmax, std::abs(x));
   const double dv = 1e-3 * std::max(vmax, 1e-9);
-  SmoothedSignal plus = raw, minus = raw;
-  for (double& x : plus.value) x += dv;
-  for (double& x : minus.value) x -= dv;
-  const IntegratedRegressors ip = IntegrateRegressors(model, trial, run.t, theta_known, max_step_s, &plus);
-  const IntegratedRegressors im = IntegrateRegressors(model, trial, run.t, theta_known, max_step_s, &minus);
+  const IntegratedRegressors ip =
+      IntegrateRegressors(model, trial, run.t, theta_known, max_step_s, &raw, dv);
+  const IntegratedRegressors im =
+      IntegrateRegressors(model, trial, run.t, theta_known, max_step_s, &raw, -dv);
   const Eigen::VectorXd d = ((ip.H - im.H) * theta_known + (ip.h0 - im.h0)) / (2.0 * dv);
   return std::vector<double>(d.data(), d.data() + d.size());
 }
@@ -97,16 +96,17 @@ void AddRuns(const model::DofModel& model, const TrialData& trial, const Eigen::
   const SmoothedSignal& v = trial.velocity_estimate;
   const double input_sigma = trial.velocity_from_position ? trial.position_sigma : trial.velocity_sigma;
   const bool raw = o.raw_measured_velocity && !trial.velocity_from_position &&
-                   trial.velocity.size() == v.size() && trial.velocity.t == v.t;
+                   trial.velocity.size() == v.size() && trial.velocity.t.vector() == v.t.vector();
   SmoothedSignal raw_signal;
   if (raw) {
     raw_signal = v;
-    raw_signal.value = trial.velocity.y;
+    raw_signal.value.assign(trial.velocity.y.begin(), trial.velocity.y.end());
   }
   const SmoothedSignal& src = raw ? raw_signal : v;
   // The sensor's noise colour from its own samples (ρ = 1 + 2·γ_d(1)/γ_d(0) of the differences
   // of raw − smoothed).
-  const double rho = raw ? NoiseAr1FromDifferences(trial.velocity.y, v.value) : 0.0;
+  const double rho =
+      raw ? NoiseAr1FromDifferences(trial.velocity.y, {v.value.begin(), v.value.end()}) : 0.0;
   for (const auto& [begin, end] : SmoothRuns(trial)) {
     Run run;
     run.trial = trial.index;

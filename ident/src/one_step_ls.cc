@@ -57,7 +57,8 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
     if (std::find(free.begin(), free.end(), j) == free.end()) fixed_linear.push_back(j);
   }
   int run_counter = 0;
-  std::vector<Eigen::RowVectorXd> F;
+  const std::size_t cols = 1 + free.size();
+  std::vector<double> F;  // row-major, `cols` a row (one heap block, not one a row)
   std::vector<double> Y;
   double noise_var_sum = 0.0;
   int noise_count = 0;
@@ -87,12 +88,10 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
           IntegrateRegressors(model, *trial, kt, theta, o.max_step_s,
                               instrument ? &(*instrument)[ti] : nullptr, velocity_shift);
       for (std::size_t k = 0; k + 1 < kt.size(); ++k) {
-        Eigen::RowVectorXd row(1 + free.size());
         double known = ir.h0[k];
         for (int j : fixed_linear) known += theta[j] * ir.H(k, j);
-        row[0] = known;
-        for (std::size_t c = 0; c < free.size(); ++c) row[1 + c] = ir.H(k, free[c]);
-        F.push_back(row);
+        F.push_back(known);
+        for (int j : free) F.push_back(ir.H(k, j));
         Y.push_back(kx[k + 1] - kx[k]);
         rows.t.push_back(kt[k + 1]);
         rows.group.push_back(trial->index);
@@ -103,12 +102,11 @@ OneStepRows BuildOneStepRows(const model::DofModel& model,
     }
   }
   (void)np;
-  rows.F.resize(F.size(), 1 + free.size());
-  rows.Y.resize(Y.size());
-  for (std::size_t r = 0; r < F.size(); ++r) {
-    rows.F.row(r) = F[r];
-    rows.Y[r] = Y[r];
-  }
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  rows.F = Eigen::Map<const RowMajor>(F.data(), static_cast<Eigen::Index>(Y.size()),
+                                      static_cast<Eigen::Index>(cols));
+  F = {};
+  rows.Y = Eigen::Map<const Eigen::VectorXd>(Y.data(), static_cast<Eigen::Index>(Y.size()));
   rows.noise_sigma = noise_count > 0 ? std::sqrt(noise_var_sum / noise_count) : 0.0;
   // Rows of trials without a known noise take the mean weight.
   const double mean_w = rows.noise_sigma > 0 ? 1.0 / (rows.noise_sigma * rows.noise_sigma) : 1.0;
@@ -352,8 +350,13 @@ bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const One
   for (std::size_t i = 0; defect && i < sampled.size(); ++i) {
     if (sampled[i].t.empty()) sampled[i] = fine[i];
   }
-  const OneStepRows Zs =
-      defect ? BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &sampled) : Z;
+  // Without a defect Zs is Z itself (not a copy: its rows are 40 bytes a row).
+  const OneStepRows Zs_built =
+      defect ? BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &sampled)
+             : OneStepRows{};
+  const OneStepRows& Zs = defect ? Zs_built : Z;
+  fine = {};
+  sampled = {};
   if (Z.F.rows() != R.F.rows() || Zs.F.rows() != R.F.rows()) return false;
   // Rows scaled by 1/σ of their noise (Ω keeps its form: the weight is constant in a run).
   const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();

@@ -218,7 +218,7 @@ class Problem {
         const double sigma = use_pos ? d->position_sigma : d->velocity_sigma;
         m.w_all = 1.0 / (sigma > 0 ? sigma : 1.0);  // as Bin's
         m.y_ref = &only->y;
-        tp.times_ref = &only->t;
+        tp.times_ref = &only->t.vector();
       } else {
         Binned pos =
             use_pos ? Bin(d->position, d->position_sigma, o.bin_s, d->breakpoints) : Binned{};

@@ -71,7 +71,7 @@ IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const Tri
   const auto& vt = src.t;
   const auto& vv = src.value;
   // Slopes for cubic Hermite interpolation: the filter's acceleration where known.
-  const std::vector<double>* va = &src.derivative;
+  const std::vector<float>* va = &src.derivative;
   if (va && va->size() != vv.size()) va = nullptr;
   // The cursor starts at the first boundary (a binary search), not at the signal's start: the
   // callers integrate one run of a long trial at a time, and a scan from the start each time
@@ -82,7 +82,7 @@ IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const Tri
   // Interpolation with a forward-moving cursor (queries are increasing): cubic Hermite between
   // samples with the filter's accelerations (the local polynomials of the Savitzky–Golay fit),
   // linear where an acceleration is missing.
-  auto velocity = [&](double t) {
+  auto velocity = [&](double t) -> double {
     if (vt.empty()) return 0.0;
     if (t <= vt.front()) return vv.front();
     if (t >= vt.back()) return vv.back();

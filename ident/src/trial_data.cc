@@ -31,6 +31,57 @@ Signal Column(const std::vector<double>& t, const std::vector<double>& col, doub
   return s;
 }
 
+// Column's samples from a log the caller gave up: the column's and (`last`) the times' vectors
+// reused in place, not copied (a million-row log is not held twice while it is read).
+Signal TakenColumn(std::vector<double>* t, std::vector<double>* col, double offset, bool last) {
+  std::vector<double> times = last ? std::move(*t) : *t;
+  std::vector<double> y = std::move(*col);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    if (std::isnan(y[i]) || times[i] < offset) continue;  // as Column
+    times[k] = times[i] - offset;
+    y[k++] = y[i];
+  }
+  times.resize(k);
+  y.resize(k);
+  if (2 * k < y.capacity()) {  // a sparse column (a 10 Hz sensor in a 100 Hz log)
+    times.shrink_to_fit();
+    y.shrink_to_fit();
+  }
+  Signal s;
+  s.t = std::move(times);
+  s.y = std::move(y);
+  return s;
+}
+
+// The measurement columns of a trial's log, as signals (Column), copied from the log or taken
+// from it when the caller gives it up (`owned`, the same log): the times are moved into the
+// last column read that needs them.
+class LogColumns {
+ public:
+  using Columns = std::array<std::vector<double>, model::kNumDofs> model::TrialLog::*;
+  LogColumns(const model::TrialLog& log, model::TrialLog* owned, double offset)
+      : log_(log), owned_(owned), offset_(offset) {
+    for (Dof d : model::kAllDofs) {
+      times_users_ += log.HasPosition(d) ? 1 : 0;
+      times_users_ += log.HasVelocity(d) ? 1 : 0;
+    }
+  }
+  Signal Read(Columns columns, Dof d) {
+    const std::vector<double>& col = (log_.*columns)[Index(d)];
+    if (col.empty()) return Signal{};
+    const bool last = --times_users_ == 0;
+    if (!owned_) return Column(log_.t, col, offset_);
+    return TakenColumn(&owned_->t, &(owned_->*columns)[Index(d)], offset_, last);
+  }
+
+ private:
+  const model::TrialLog& log_;
+  model::TrialLog* owned_;
+  double offset_;
+  int times_users_ = 0;
+};
+
 double MedianRate(const Signal& s) {
   if (s.size() < 2) return 1.0;
   const double h = MedianStep(s.t, 0, s.size());
@@ -276,16 +327,26 @@ Signal Clean(Signal s, double declared, const char* what, const TrialDataOptions
   return s;
 }
 
-// The DOF's position and velocity samples, cleaned; unusable columns and gaps reported.
-void ReadMeasurements(const model::TrialLog& log, const model::Vehicle& vehicle,
-                      const std::string& where, const TrialDataOptions& o, TrialData* d) {
+// The DOF's position and velocity samples as logged (NaN rows and rows before t = 0 left out),
+// and whether the log has their columns at all.
+struct Measurements {
+  Signal position, velocity;
+  bool position_column = false, velocity_column = false;
+};
+
+Measurements ReadMeasurements(const model::TrialLog& log, LogColumns* columns,
+                              const std::string& where, TrialData* d) {
   const Dof dof = d->dof;
   const std::string dof_name(model::DofName(dof));
-  Signal pos = Column(log.t, log.position[Index(dof)], d->time_offset);
+  Measurements m;
+  m.position_column = log.HasPosition(dof);
+  m.velocity_column = log.HasVelocity(dof);
+  Signal& pos = m.position;
+  pos = columns->Read(&model::TrialLog::position, dof);
   if (model::IsRotational(dof)) UnwrapHeading(&pos, d);
-  Signal vel = Column(log.t, log.velocity[Index(dof)], d->time_offset);
-  if (pos.size() < 3 && vel.size() < 3) {
-    const bool any_column = log.HasPosition(dof) || log.HasVelocity(dof);
+  m.velocity = columns->Read(&model::TrialLog::velocity, dof);
+  if (pos.size() < 3 && m.velocity.size() < 3) {
+    const bool any_column = m.position_column || m.velocity_column;
     throw model::InputError(where, any_column
                                        ? "columns pos_" + dof_name + "/vel_" + dof_name +
                                              " have fewer than 3 samples (all NaN?): expected "
@@ -293,18 +354,26 @@ void ReadMeasurements(const model::TrialLog& log, const model::Vehicle& vehicle,
                                        : "no column pos_" + dof_name + " or vel_" + dof_name +
                                              ": expected a measurement of the trial's DOF");
   }
+  return m;
+}
+
+// The DOF's position and velocity samples, cleaned; unusable columns and gaps reported.
+void CleanMeasurements(Measurements m, const model::Vehicle& vehicle, const TrialDataOptions& o,
+                       TrialData* d) {
+  const Dof dof = d->dof;
+  const std::string dof_name(model::DofName(dof));
   const auto sensors = vehicle.sensors.find(dof);
   const model::DofSensors* spec = sensors == vehicle.sensors.end() ? nullptr : &sensors->second;
-  d->position = Clean(std::move(pos), spec && spec->position ? spec->position->sigma : -1.0,
+  d->position = Clean(std::move(m.position), spec && spec->position ? spec->position->sigma : -1.0,
                       "position", o,
                       {&d->position_outliers, &d->position_sigma, &d->position_sigma_estimated}, d);
-  d->velocity = Clean(std::move(vel), spec && spec->velocity ? spec->velocity->sigma : -1.0,
+  d->velocity = Clean(std::move(m.velocity), spec && spec->velocity ? spec->velocity->sigma : -1.0,
                       "velocity", o,
                       {&d->velocity_outliers, &d->velocity_sigma, &d->velocity_sigma_estimated}, d);
   // A column that is present but empty (all NaN) is not used; the other measurement carries
   // the trial, and the caller is told which column was ignored.
-  if (log.HasPosition(dof) && !d->has_position()) d->unusable_columns.push_back("pos_" + dof_name);
-  if (log.HasVelocity(dof) && !d->has_velocity()) d->unusable_columns.push_back("vel_" + dof_name);
+  if (m.position_column && !d->has_position()) d->unusable_columns.push_back("pos_" + dof_name);
+  if (m.velocity_column && !d->has_velocity()) d->unusable_columns.push_back("vel_" + dof_name);
   for (const std::string& c : d->unusable_columns) {
     d->notes.push_back("column " + c + " has fewer than 3 values (all NaN?): not used");
   }
@@ -392,12 +461,12 @@ void EstimateVelocity(const TrialDataOptions& o, const std::string& where, Trial
 }
 
 // Other DOFs' velocities (coupling).
-void ReadAuxVelocities(const model::TrialLog& log, TrialData* d) {
+void ReadAuxVelocities(LogColumns* columns, TrialData* d) {
   std::array<Signal, model::kNumDofs> aux;
   bool any_aux = false;
   for (Dof other : model::kAllDofs) {
     if (other == d->dof) continue;
-    aux[Index(other)] = Column(log.t, log.velocity[Index(other)], d->time_offset);
+    aux[Index(other)] = columns->Read(&model::TrialLog::velocity, other);
     any_aux = any_aux || !aux[Index(other)].empty();
   }
   if (any_aux) d->aux = std::make_unique<LogAuxVelocities>(d->dof, std::move(aux));
@@ -422,7 +491,7 @@ double FirstForceTime(const model::TrialLog& log, Dof dof, TrialData* d) {
 }  // namespace
 
 TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehicle& vehicle,
-                       const TrialDataOptions& o, const std::function<void()>& log_read) {
+                       const TrialDataOptions& o, model::TrialLog* given_up) {
   const model::TrialLog& log = e.log;
   const std::string where = e.path.empty() ? e.file : e.path;
   TrialData d;
@@ -437,10 +506,12 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
   d.start_time = e.start + d.time_offset;
   d.duration = log.t.back() - d.time_offset;
   ReadForce(e, vehicle, where, &d);
-  ReadMeasurements(log, vehicle, where, o, &d);
-  ReadAuxVelocities(log, &d);
+  LogColumns columns(log, given_up, d.time_offset);
+  Measurements m = ReadMeasurements(log, &columns, where, &d);
+  ReadAuxVelocities(&columns, &d);
   std::vector<std::string> log_notes = log.notes;
-  if (log_read) log_read();  // `log` may be gone from here on
+  if (given_up) *given_up = model::TrialLog{};  // `log` is gone from here on
+  CleanMeasurements(std::move(m), vehicle, o, &d);
   EstimateVelocity(o, where, &d);
   for (std::string& n : log_notes) d.notes.push_back(std::move(n));
   return d;
@@ -495,7 +566,8 @@ std::vector<std::pair<std::size_t, std::size_t>> SmoothRuns(const TrialData& d,
       crossed = true;
       ++next_jump;
     }
-    const bool new_run = open && (v.run[i] != v.run[begin] || (split_at_force_jumps && crossed));
+    const bool run_starts = std::binary_search(v.run_starts.begin(), v.run_starts.end(), i);
+    const bool new_run = open && (run_starts || (split_at_force_jumps && crossed));
     if (open && (!usable || new_run)) {
       out.push_back({begin, i});
       open = false;

@@ -11,7 +11,8 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }
 
-ResidualAnalysis AnalyzeResiduals(const std::vector<double>& r, int max_lag, int bins,
+template <class Real>
+ResidualAnalysis AnalyzeResiduals(const std::vector<Real>& r, int max_lag, int bins,
                                   double step_s) {
   ResidualAnalysis a;
   a.n = static_cast<int>(r.size());
@@ -79,11 +80,14 @@ ResidualAnalysis AnalyzeResiduals(const std::vector<double>& r, int max_lag, int
   }
   return a;
 }
+template ResidualAnalysis AnalyzeResiduals(const std::vector<double>&, int, int, double);
+template ResidualAnalysis AnalyzeResiduals(const std::vector<float>&, int, int, double);
 
 namespace {
 
 // Up to `points` of the samples of `s` at t >= 0 (the ones `r`, measured − model, is of).
-FreeRunCurve Decimate(const Signal& s, const std::vector<double>& r, int points) {
+template <class Real>
+FreeRunCurve Decimate(const Signal& s, const std::vector<Real>& r, int points) {
   FreeRunCurve c;
   std::size_t first = 0;
   while (first < s.size() && s.t[first] < 0) ++first;
@@ -167,8 +171,10 @@ class FreeRun {
       }
       std::sort(grid_.begin(), grid_.end());
       grid_.erase(std::unique(grid_.begin(), grid_.end()), grid_.end());
-    } else if (&velocity_times == &trial.position.t && span.count == trial.position.size()) {
-      times_ = &trial.position.t;  // each time once, none negative: the union is the positions'
+    } else if (&velocity_times == &trial.position.t.vector() &&
+               span.count == trial.position.size()) {
+      times_ =
+          &trial.position.t.vector();  // each time once, none negative: the union is the positions'
     } else {
       grid_.reserve(span.count);
       MergedTimes(velocity_times, trial.position.t, &grid_);
@@ -212,6 +218,96 @@ class FreeRun {
   std::size_t g_ = 0;
 };
 
+// True when the free run is simulated at the positions' own times (FreeRun): an estimated
+// velocity (its samples are the positions'), sensors no faster than about four RK4 steps, each
+// time once and none negative.
+bool SimulatedAtPositionTimes(const TrialData& trial, double step_s) {
+  if (trial.has_velocity() || trial.velocity_estimate.size() != trial.position.size()) return false;
+  const SampleTimes span = MergedTimes(trial.position.t, trial.position.t, nullptr);
+  return span.count > 0 && span.count == trial.position.size() &&
+         span.count <= 4 * ((span.last - span.first) / step_s + 1);
+}
+
+// The velocity and position errors of a free run simulated at the positions' own times, each
+// taken as the simulation visits its sample (a million-row trial is not stored twice more):
+// the same sums, in the same order, as ScoreStoredFreeRun.
+void ScoreVisitedFreeRun(const model::DofModel& model, const Eigen::VectorXd& theta,
+                         const TrialData& trial, double step_s, Eigen::VectorXd x0, TrialFit* f,
+                         std::vector<float>* perr) {
+  const SmoothedSignal& v = trial.velocity_estimate;
+  const Signal& p = trial.position;
+  double sum_abs = 0.0, sum_abs_zero = 0.0, ss = 0.0;
+  int velocity_samples = 0;
+  perr->reserve(p.size());
+  model::SimulationOptions so;
+  so.step_s = step_s;
+  model::SimulateVisiting(model, theta, trial.conditions(), p.t, so, &x0, model::Seen::kBySensors,
+                          [&](std::size_t i, const double* x, const double*) {
+                            if (!v.edge[i] && std::isfinite(v.value[i])) {
+                              sum_abs += std::abs(x[1] - v.value[i]);  // eq. 37
+                              sum_abs_zero += std::abs(v.value[i]);
+                              ++velocity_samples;
+                            }
+                            const double e = p.y[i] - x[0];
+                            ss += e * e;
+                            perr->push_back(static_cast<float>(e));
+                          });
+  f->velocity_samples = velocity_samples;
+  f->velocity_mae = velocity_samples > 0 ? sum_abs / velocity_samples : kNaN;
+  f->zero_velocity_mae = velocity_samples > 0 ? sum_abs_zero / velocity_samples : kNaN;
+  f->position_samples = static_cast<int>(perr->size());
+  f->position_rms = perr->empty() ? kNaN : std::sqrt(ss / perr->size());
+}
+
+// The same errors from a stored free run (FreeRun) on the union of the velocity reference's and
+// the positions' times: velocity residuals kept in `verr` when there are no positions.
+void ScoreStoredFreeRun(const model::DofModel& model, const Eigen::VectorXd& theta,
+                        const TrialData& trial, double step_s, Eigen::VectorXd x0, TrialFit* f,
+                        std::vector<float>* perr, std::vector<double>* verr) {
+  // An estimated velocity's times are a subset of the positions' (its samples are theirs).
+  const std::vector<double>& vtimes = trial.has_velocity() ? trial.velocity.t : trial.position.t;
+  FreeRun run(model, theta, trial, vtimes, step_s, std::move(x0));
+  if (run.empty()) return;
+  const bool keep_velocity = !trial.has_position() || trial.position.t.back() < 0;
+  double sum_abs = 0.0, sum_abs_zero = 0.0;
+  if (keep_velocity)
+    verr->reserve(trial.has_velocity() ? trial.velocity.size() : trial.velocity_estimate.size());
+  int velocity_samples = 0;
+  ForEachVelocityReference(trial, [&](double t, double v) {
+    if (t < 0) return;
+    const double e = run.At(t, 1) - v;  // ν_model − ν_measured (eq. 37)
+    sum_abs += std::abs(e);
+    sum_abs_zero += std::abs(v);
+    ++velocity_samples;
+    if (keep_velocity) verr->push_back(-e);
+  });
+  f->velocity_samples = velocity_samples;
+  f->velocity_mae = velocity_samples > 0 ? sum_abs / velocity_samples : kNaN;
+  f->zero_velocity_mae = velocity_samples > 0 ? sum_abs_zero / velocity_samples : kNaN;
+  run.Rewind();
+  if (!trial.has_position()) return;
+  double ss = 0.0;
+  perr->reserve(trial.position.size());
+  for (std::size_t k = 0; k < trial.position.size(); ++k) {
+    if (trial.position.t[k] < 0) continue;
+    const double e = trial.position.y[k] - run.At(trial.position.t[k], 0);
+    ss += e * e;
+    perr->push_back(static_cast<float>(e));
+  }
+  f->position_samples = static_cast<int>(perr->size());
+  f->position_rms = perr->empty() ? kNaN : std::sqrt(ss / perr->size());
+}
+
+// Residual analysis of the position errors when there are positions, else of the velocity's.
+template <class Real>
+void AnalyzeTrialResiduals(const Signal& s, const std::vector<Real>& r, const char* signal,
+                           const ValidationOptions& o, TrialFit* f) {
+  const double step = s.size() > 1 ? (s.t.back() - s.t.front()) / (s.size() - 1) : 0.0;
+  f->residuals = AnalyzeResiduals(r, o.max_lag, o.bins, step);
+  f->residual_signal = signal;
+  if (o.curve_points > 0) f->curve = Decimate(s, r, o.curve_points);
+}
+
 }  // namespace
 
 TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& theta,
@@ -232,51 +328,21 @@ TrialFit ValidateTrial(const model::DofModel& model, const Eigen::VectorXd& thet
   }
   f.initial_position = x0[0];
   f.initial_velocity = x0[1];
-  // The residuals analysed are the position's when there are positions (perr non-empty):
-  // the velocity's are then summed, not kept, and an estimated velocity not copied.
-  const bool use_pos = trial.has_position() && trial.position.t.back() >= 0;
-  // The union of the velocity reference's and the positions' times: an estimated velocity's
-  // times are a subset of the positions' (its samples are theirs), so the positions' alone.
-  const std::vector<double>& vtimes = trial.has_velocity() ? trial.velocity.t : trial.position.t;
   f.velocity_reference = trial.has_velocity() ? "measured" : "estimated";
-  FreeRun run(model, theta, trial, vtimes, o.step_s, x0);
-  if (run.empty()) return f;
-  double sum_abs = 0.0, sum_abs_zero = 0.0;
+  // Position errors in float (AnalyzeResiduals); velocity errors only without positions.
+  std::vector<float> perr;
   std::vector<double> verr;
-  if (!use_pos) verr.reserve(trial.has_velocity() ? trial.velocity.size() : trial.velocity_estimate.size());
-  int velocity_samples = 0;
-  ForEachVelocityReference(trial, [&](double t, double v) {
-    if (t < 0) return;
-    const double e = run.At(t, 1) - v;  // ν_model − ν_measured (eq. 37)
-    sum_abs += std::abs(e);
-    sum_abs_zero += std::abs(v);
-    ++velocity_samples;
-    if (!use_pos) verr.push_back(-e);
-  });
-  f.velocity_samples = velocity_samples;
-  f.velocity_mae = f.velocity_samples > 0 ? sum_abs / f.velocity_samples : kNaN;
-  f.zero_velocity_mae = f.velocity_samples > 0 ? sum_abs_zero / f.velocity_samples : kNaN;
-  std::vector<double> perr;
-  run.Rewind();
-  if (trial.has_position()) {
-    double ss = 0.0;
-    perr.reserve(trial.position.size());
-    for (std::size_t k = 0; k < trial.position.size(); ++k) {
-      if (trial.position.t[k] < 0) continue;
-      const double e = trial.position.y[k] - run.At(trial.position.t[k], 0);
-      ss += e * e;
-      perr.push_back(e);
-    }
-    f.position_samples = static_cast<int>(perr.size());
-    f.position_rms = f.position_samples > 0 ? std::sqrt(ss / f.position_samples) : kNaN;
+  if (SimulatedAtPositionTimes(trial, o.step_s)) {
+    ScoreVisitedFreeRun(model, theta, trial, o.step_s, x0, &f, &perr);
+  } else {
+    ScoreStoredFreeRun(model, theta, trial, o.step_s, x0, &f, &perr, &verr);
   }
-  const std::vector<double>& r = use_pos ? perr : verr;
-  Signal estimated;
-  const Signal& s = use_pos ? trial.position : VelocityReference(trial, &estimated);
-  const double step = s.size() > 1 ? (s.t.back() - s.t.front()) / (s.size() - 1) : 0.0;
-  f.residuals = AnalyzeResiduals(r, o.max_lag, o.bins, step);
-  f.residual_signal = use_pos ? "position" : "velocity";
-  if (o.curve_points > 0) f.curve = Decimate(s, r, o.curve_points);
+  if (f.position_samples > 0) {
+    AnalyzeTrialResiduals(trial.position, perr, "position", o, &f);
+  } else if (f.velocity_samples > 0) {
+    Signal estimated;
+    AnalyzeTrialResiduals(VelocityReference(trial, &estimated), verr, "velocity", o, &f);
+  }
   return f;
 }
 

@@ -277,7 +277,7 @@ namespace {
 
 // A smoothed signal at times t with nothing estimated yet (NaN, every sample an edge, run 0),
 // its second derivative sized only `with_second_derivative`.
-SmoothedSignal Unsmoothed(const std::vector<double>& t, bool with_second_derivative) {
+SmoothedSignal Unsmoothed(const SharedTimes& t, bool with_second_derivative) {
   SmoothedSignal out;
   const std::size_t n = t.size();
   out.t = t;
@@ -285,11 +285,23 @@ SmoothedSignal Unsmoothed(const std::vector<double>& t, bool with_second_derivat
   out.derivative.assign(n, kNaN);
   if (with_second_derivative) out.second_derivative.assign(n, kNaN);
   out.edge.assign(n, true);
-  out.run.assign(n, 0);
+  if (n > 0) out.run_starts = {0};
   return out;
 }
 
+// The first sample of each of the runs SmoothRuns and ButterworthVelocity filter separately.
+std::vector<std::size_t> RunStarts(const SharedTimes& t, double gap_factor) {
+  std::vector<std::size_t> starts;
+  for (const auto& run : Runs(t, gap_factor)) starts.push_back(run.first);
+  return starts;
+}
+
 }  // namespace
+
+int SmoothedSignal::run(std::size_t i) const {
+  const auto after = std::upper_bound(run_starts.begin(), run_starts.end(), i);
+  return after == run_starts.begin() ? 0 : static_cast<int>(after - run_starts.begin()) - 1;
+}
 
 SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
   SmoothedSignal out = Unsmoothed(s.t, true);
@@ -298,8 +310,8 @@ SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& option
     out.derivative[p.i] = p.derivative;
     out.second_derivative[p.i] = p.second_derivative;
     out.edge[p.i] = p.edge;
-    out.run[p.i] = p.run;
   }, &out);
+  out.run_starts = RunStarts(s.t, options.gap_factor);
   return out;
 }
 
@@ -314,9 +326,9 @@ SmoothedSignal SavitzkyGolayRate(const Signal& s, const SavitzkyGolayOptions& op
         out.value[p.i] = p.derivative;
         out.derivative[p.i] = p.second_derivative;
         out.edge[p.i] = p.edge;
-        out.run[p.i] = p.run;
       },
       &out);
+  out.run_starts = RunStarts(s.t, options.gap_factor);
   return out;
 }
 
@@ -362,15 +374,16 @@ double PositionNoiseAr1(const Signal& position, const SavitzkyGolayOptions& opti
     const double mid = 0.5 * (position.t[a] + position.t[e - 1]);
     const double span = std::max(position.t[e - 1] - position.t[a], 1e-12);
     FittedResiduals f;
-    f.X.resize(w, q);
+    Eigen::MatrixXd X(w, q);
     Eigen::VectorXd y(w);
     for (int i = 0; i < w; ++i) {
       const double u = (position.t[a + i] - mid) / span;
       double p = 1.0;
-      for (int j = 0; j < q; ++j, p *= u) f.X(i, j) = p;
+      for (int j = 0; j < q; ++j, p *= u) X(i, j) = p;
       y[i] = position.y[a + i];
     }
-    const Eigen::VectorXd r = y - f.X * f.X.colPivHouseholderQr().solve(y);
+    const Eigen::VectorXd r = y - X * X.colPivHouseholderQr().solve(y);
+    f.Q = OrthonormalBasis(X);
     f.sum_sq = r.squaredNorm();
     f.sum_lag1 = r.head(w - 1).dot(r.tail(w - 1));
     sets.push_back(std::move(f));
@@ -417,11 +430,9 @@ std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rat
 
 SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap_factor) {
   SmoothedSignal out = Unsmoothed(p.t, true);
-  int run = 0;
+  out.run_starts = RunStarts(p.t, gap_factor);
   for (const auto& [b, e] : Runs(p.t, gap_factor)) {
     const std::size_t m = e - b;
-    for (std::size_t i = b; i < e; ++i) out.run[i] = run;
-    ++run;
     if (m < 3) continue;
     std::vector<double> d(m), y(p.y.begin() + b, p.y.begin() + e);
     // Central differences (exact for parabolas on any grid: the derivative of the parabola
@@ -775,7 +786,7 @@ double PooledNoiseAr1(const std::vector<const SpeedFit*>& fits) {
   for (const SpeedFit* f : fits) {
     if (!f->ok || f->fitted < 1 || f->design.size() != std::size_t(f->n) * f->fitted) continue;
     FittedResiduals r;
-    r.X = Eigen::Map<const Eigen::MatrixXd>(f->design.data(), f->n, f->fitted);
+    r.Q = OrthonormalBasis(Eigen::Map<const Eigen::MatrixXd>(f->design.data(), f->n, f->fitted));
     r.sum_sq = f->residual_sd * f->residual_sd * (f->n - f->fitted);
     r.sum_lag1 = f->lag1 * r.sum_sq;
     sets.push_back(std::move(r));
@@ -794,15 +805,19 @@ double Ar1SpeedSigma(const SpeedFit& fit, double rho, double noise_sigma) {
   return sd * std::sqrt(std::max(0.0, Ar1QuadraticForm(fit.weights, rho)));
 }
 
-double Interpolate(const std::vector<double>& t, const std::vector<double>& y, double at) {
+template <class Real>
+double Interpolate(const std::vector<double>& t, const std::vector<Real>& y, double at) {
   if (t.empty()) return kNaN;
   if (at <= t.front()) return y.front();
   if (at >= t.back()) return y.back();
   const auto it = std::upper_bound(t.begin(), t.end(), at);
   const std::size_t i = static_cast<std::size_t>(it - t.begin());
   const double w = (at - t[i - 1]) / (t[i] - t[i - 1]);
-  return y[i - 1] + w * (y[i] - y[i - 1]);
+  const double y0 = y[i - 1], y1 = y[i];
+  return y0 + w * (y1 - y0);
 }
+template double Interpolate(const std::vector<double>&, const std::vector<double>&, double);
+template double Interpolate(const std::vector<double>&, const std::vector<float>&, double);
 
 double NoiseSigmaFromDifferences(const Signal& s) {
   if (s.size() < 8) return kNaN;

@@ -33,10 +33,17 @@ TEST(SavitzkyGolayTest, ReproducesQuarticsExactlyOnUniformAndJitteredTimes) {
       s.y.push_back(Poly(t));
     }
     const SmoothedSignal f = SavitzkyGolay(s, {4, 21, 3.0});
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      EXPECT_NEAR(f.value[i], Poly(s.t[i]), 1e-7) << "jittered " << jittered << " i " << i;
-      EXPECT_NEAR(f.derivative[i], PolyDot(s.t[i]), 1e-7) << "jittered " << jittered << " i " << i;
-    }
+    std::size_t visited = 0;
+    ForEachSmoothed(s, {4, 21, 3.0}, [&](const SmoothedSample& p) {
+      const double t = s.t[p.i];
+      EXPECT_NEAR(p.value, Poly(t), 1e-7) << "jittered " << jittered << " i " << p.i;
+      EXPECT_NEAR(p.derivative, PolyDot(t), 1e-7) << "jittered " << jittered << " i " << p.i;
+      // Stored in float (velocity_estimation.h): the same numbers, rounded to nearest.
+      EXPECT_EQ(f.value[p.i], static_cast<float>(p.value));
+      EXPECT_EQ(f.derivative[p.i], static_cast<float>(p.derivative));
+      ++visited;
+    });
+    EXPECT_EQ(visited, s.size());
     EXPECT_TRUE(f.edge.front());
     EXPECT_FALSE(f.edge[40]);
   }
@@ -56,12 +63,13 @@ TEST(SavitzkyGolayTest, NeverFiltersAcrossAGap) {
     s.y.push_back(100.0 - 0.5 * t);
   }
   const SmoothedSignal f = SavitzkyGolay(s, {4, 21, 3.0});
-  EXPECT_EQ(f.run[39], 0);
-  EXPECT_EQ(f.run[40], 1);
+  EXPECT_EQ(f.run(39), 0);
+  EXPECT_EQ(f.run(40), 1);
   EXPECT_TRUE(f.edge[39]);
   EXPECT_TRUE(f.edge[40]);
-  for (int i = 0; i < 40; ++i) EXPECT_NEAR(f.derivative[i], 0.2, 1e-9);
-  for (int i = 40; i < 80; ++i) EXPECT_NEAR(f.derivative[i], -0.5, 1e-9);
+  ForEachSmoothed(s, {4, 21, 3.0}, [&](const SmoothedSample& p) {
+    EXPECT_NEAR(p.derivative, p.i < 40 ? 0.2 : -0.5, 1e-9) << p.i;
+  });
   ASSERT_EQ(FindGaps(s.t).size(), 1u);
   EXPECT_NEAR(FindGaps(s.t)[0].t1 - FindGaps(s.t)[0].t0, 22.0 - 39 * 0.3, 1e-12);
 }

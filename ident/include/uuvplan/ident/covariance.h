@@ -91,13 +91,17 @@ double Ar1Coefficient(const Eigen::VectorXd& r);
 /// ρ = 0). Clamped to [0, 0.99]. NaN samples split the series.
 double NoiseAr1FromDifferences(const std::vector<double>& y, const std::vector<double>& s);
 
-/// Residuals of a least-squares fit of `X` (n × q, rows consecutive samples) to a series
-/// with AR(1) errors, summarised by Σr_i² and Σr_i·r_{i−1}.
+/// Residuals of a least-squares fit of X (n × q, rows consecutive samples) to a series with
+/// AR(1) errors, summarised by Σr_i² and Σr_i·r_{i−1}; Q an orthonormal basis of X
+/// (OrthonormalBasis, n × q: X itself is not kept).
 struct FittedResiduals {
-  Eigen::MatrixXd X;
+  Eigen::MatrixXd Q;
   double sum_sq = 0.0;
   double sum_lag1 = 0.0;
 };
+
+/// An orthonormal basis of the columns of X (the thin Q of its QR decomposition).
+Eigen::MatrixXd OrthonormalBasis(const Eigen::Ref<const Eigen::MatrixXd>& X);
 
 /// The AR(1) coefficient of the errors behind several fits' residuals, freed of the fits'
 /// bias: r = (I − P)e, P = QQᵀ (Q an orthonormal basis of X), so with Ω_ij = ρ^|i−j|,

@@ -119,11 +119,11 @@ struct TrialData {
 /// Prepares a trial of a campaign. Throws model::InputError (naming the file and column) when
 /// the trial's DOF has no force column or no position/velocity sample, or when a mapping is
 /// not a mapping of the vehicle.
-/// `log_read`, when given, is called once the entry's log has been read, before the velocity
-/// estimate is made (the caller may release the log there: the estimate then does not share
-/// memory with it).
+/// `given_up`, when not null, is the entry's own log, which the caller gives up: its columns
+/// are moved into the trial instead of copied, and it is left empty (model::TrialLog{}) before
+/// the samples are cleaned and the velocity estimated (a long log is not held twice).
 TrialData PrepareTrial(const model::TrialEntry& entry, int index, const model::Vehicle& vehicle,
-                       const TrialDataOptions& options, const std::function<void()>& log_read = {});
+                       const TrialDataOptions& options, model::TrialLog* given_up = nullptr);
 
 /// Intervals of constant commanded force and mapping (for steady-state detection).
 std::vector<ForcePiece> ConstantForcePieces(const TrialData& trial, double force_tolerance);

@@ -17,11 +17,13 @@
 #include <string>
 #include <vector>
 
+#include "uuvplan/ident/shared_times.h"
+
 namespace uuvplan::ident {
 
 /// Samples of one signal: times (s) and values, no NaN.
 struct Signal {
-  std::vector<double> t;
+  SharedTimes t;  ///< shared with the signals made from this one (a velocity estimate's)
   std::vector<double> y;
   std::size_t size() const { return t.size(); }
   bool empty() const { return t.empty(); }
@@ -50,13 +52,21 @@ int ChosenWindow(int given, double rate_hz, double input_time_scale_s);
 /// the mean (the period of a sine). 0 when it cannot be told (constant input).
 double InputTimeScale(const std::vector<double>& t, const std::vector<double>& force);
 
+/// A filter's output. Its value and derivative are computed in double and stored in float
+/// (8 bytes a sample, not 16, on a million-sample log; issue #16): the rounding, 6e-8 of the
+/// value, is 10⁻⁴–10⁻⁶ of the filtered noise of any sensor the seeds use (1 cm sonar at
+/// 100 Hz gives mm/s of velocity noise), so no estimate moves by a visible fraction of its σ.
+/// ForEachSmoothed hands out the doubles.
 struct SmoothedSignal {
-  std::vector<double> t;
-  std::vector<double> value;       ///< smoothed signal
-  std::vector<double> derivative;  ///< its time derivative (NaN where a run is too short)
+  SharedTimes t;                          ///< the times of the signal it was made from, shared
+  std::vector<float> value;               ///< smoothed signal
+  std::vector<float> derivative;          ///< its time derivative (NaN where a run is too short)
   std::vector<double> second_derivative;  ///< its second time derivative (NaN if unknown)
   std::vector<bool> edge;          ///< within half a window of a run end (trim before fitting)
-  std::vector<int> run;            ///< run index (runs are separated by gaps)
+  /// First sample of each run (runs are separated by gaps; the first starts at 0).
+  std::vector<std::size_t> run_starts;
+  /// The run of sample i.
+  int run(std::size_t i) const;
   /// Noise gains of the centred filter: σ_value = gain·σ_input, σ_derivative = gain_d·σ_input
   /// (per second; for the median step of the first run).
   double value_gain = 1.0;
@@ -211,7 +221,10 @@ std::vector<SteadySegment> DetectSteadySegments(const Signal& s, bool is_positio
 double MedianStep(const std::vector<double>& t, std::size_t begin, std::size_t end);
 
 /// Linear interpolation of samples at time t (held constant beyond the ends).
-double Interpolate(const std::vector<double>& t, const std::vector<double>& y, double at);
+template <class Real>
+double Interpolate(const std::vector<double>& t, const std::vector<Real>& y, double at);
+extern template double Interpolate(const std::vector<double>&, const std::vector<double>&, double);
+extern template double Interpolate(const std::vector<double>&, const std::vector<float>&, double);
 
 /// Robust noise estimate of a sampled signal: 1.4826·MAD of the third differences / √20
 /// (exact for white noise on a locally quadratic signal).
