@@ -149,7 +149,48 @@ struct TrialCheck {
 std::string RateUnitOf(Dof d) { return std::string(model::VelocityUnit(d)); }
 std::string PositionUnitOf(Dof d) { return std::string(model::PositionUnit(d)); }
 
-// The logged rate against the derivative of the logged position (both smoothed).
+// The ratio of the rate to the position's change, read from windows of about `window_s` (and
+// at least 5 samples) of the position samples: the change Δp of each against the rate's
+// integral I over it (trapezoids of the rate samples, interpolated at the window's ends).
+// With Δp ≈ I/ratio in every window, ratio = ΣI²/ΣIΔp; `cosine` = ΣIΔp/√(ΣI²ΣΔp²) says how
+// well one ratio explains them all (uncentred: a steady run's windows all change alike).
+struct IncrementRatio {
+  double ratio = 0.0, cosine = 0.0;
+  int windows = 0;
+};
+IncrementRatio RateAgainstIncrements(const Signal& pos, const Signal& vel, double window_s) {
+  IncrementRatio out;
+  if (pos.size() < 2 || vel.size() < 2) return out;
+  const double step = MedianStep(pos.t, 0, pos.size());
+  const std::size_t k = std::max<std::size_t>(5, static_cast<std::size_t>(window_s / step));
+  const std::vector<double>& vt = vel.t;
+  auto integral = [&](double a, double b) {  // ∫_a^b rate dt, trapezoids
+    if (a < vt.front() || b > vt.back()) return std::nan("");
+    std::size_t i = std::upper_bound(vt.begin(), vt.end(), a) - vt.begin();
+    double s = 0.0, t0 = a, v0 = Interpolate(vt, vel.y, a);
+    for (; i < vt.size() && vt[i] < b; ++i) {
+      s += 0.5 * (v0 + vel.y[i]) * (vt[i] - t0);
+      t0 = vt[i];
+      v0 = vel.y[i];
+    }
+    return s + 0.5 * (v0 + Interpolate(vt, vel.y, b)) * (b - t0);
+  };
+  double ii = 0.0, ip = 0.0, pp = 0.0;
+  for (std::size_t a = 0; a + k < pos.size(); a += k) {
+    const double I = integral(pos.t[a], pos.t[a + k]);
+    const double dp = pos.y[a + k] - pos.y[a];
+    if (!std::isfinite(I) || !std::isfinite(dp)) continue;
+    ii += I * I, ip += I * dp, pp += dp * dp;
+    ++out.windows;
+  }
+  if (!(ii > 0 && pp > 0 && ip != 0)) return out;
+  out.ratio = ii / ip;
+  out.cosine = ip / std::sqrt(ii * pp);
+  return out;
+}
+
+// The logged rate against the derivative of the logged position (both smoothed), else
+// against the position's changes over windows (RateAgainstIncrements).
 void CheckRateAgainstPosition(TrialCheck& c) {
   if (!c.pos || !c.vel) return;
   const SmoothedSignal vel = c.vel->Smoothed();
@@ -161,23 +202,35 @@ void CheckRateAgainstPosition(TrialCheck& c) {
   const auto& dx = s.columns[0];
   const auto& v = s.columns[1];
   const double corr = Correlation(v, dx);
-  if (std::abs(corr) < c.o.min_correlation) {
+  double ratio = 0.0;
+  std::string seen;
+  if (std::abs(corr) >= c.o.min_correlation) {
+    double vdx = 0, dxdx = 0;
+    for (std::size_t i = 0; i < dx.size(); ++i) vdx += v[i] * dx[i], dxdx += dx[i] * dx[i];
+    ratio = vdx / dxdx;
+    seen = c.vel_name + " is " + Fmt(ratio, 3) + " × the derivative of " + c.pos_name +
+           " (correlation " + Fmt(corr, 3) + ")";
+  } else {
+    const IncrementRatio inc = RateAgainstIncrements(c.pos->raw, c.vel->raw, c.o.increment_window_s);
     const double follow = Correlation(v, s.columns[2]);
-    if (std::abs(follow) >= c.o.follow_correlation && std::abs(corr) < c.o.min_correlation / 2) {
-      c.Report(c.pos_name,
-               "follows " + c.vel_name + " (correlation " + Fmt(follow, 3) +
-                   ") instead of integrating it (correlation of " + c.vel_name +
-                   " with its derivative " + Fmt(corr, 3) + ")",
-               "it holds a velocity, not a position in " + PositionUnitOf(c.dof) +
-                   " (log the position, or leave the column out)");
+    if (inc.windows >= 5 && std::abs(inc.cosine) >= c.o.min_correlation) {
+      ratio = inc.ratio;
+      seen = "the integral of " + c.vel_name + " is " + Fmt(ratio, 3) + " × the change of " +
+             c.pos_name + " over " + std::to_string(inc.windows) + " windows of " +
+             Fmt(c.o.increment_window_s, 3) + " s (cosine " + Fmt(inc.cosine, 3) +
+             "; the derivative is too noisy to compare, correlation " + Fmt(corr, 3) + ")";
+    } else {
+      if (std::abs(follow) >= c.o.follow_correlation && std::abs(corr) < c.o.min_correlation / 2) {
+        c.Report(c.pos_name,
+                 "follows " + c.vel_name + " (correlation " + Fmt(follow, 3) +
+                     ") instead of integrating it (correlation of " + c.vel_name +
+                     " with its derivative " + Fmt(corr, 3) + ")",
+                 "it holds a velocity, not a position in " + PositionUnitOf(c.dof) +
+                     " (log the position, or leave the column out)");
+      }
+      return;
     }
-    return;
   }
-  double vdx = 0, dxdx = 0;
-  for (std::size_t i = 0; i < dx.size(); ++i) vdx += v[i] * dx[i], dxdx += dx[i] * dx[i];
-  const double ratio = vdx / dxdx;
-  const std::string seen = c.vel_name + " is " + Fmt(ratio, 3) + " × the derivative of " +
-                           c.pos_name + " (correlation " + Fmt(corr, 3) + ")";
   const bool rotational = model::IsRotational(c.dof);
   if (rotational && Near(ratio, kDegreesPerRadian, c.o.ratio_tolerance)) {
     c.Report(c.vel_name, seen, "likely in deg/s: expected rad/s (multiply by π/180)");

@@ -82,6 +82,36 @@ TEST(InputSanityTest, AnOppositeRateSignIsNamed) {
   EXPECT_THAT(problems[0].fix, ::testing::HasSubstr("opposite sign conventions"));
 }
 
+TEST(InputSanityTest, ANoisyHeadingInDegreesIsNamedFromItsChangesOverWindows) {
+  // VSOR's heading (seed 002: 13 Hz, noisy) beside its gyro, on two 15 s steady turns (the
+  // planner's steady runs): the heading's derivative is too noisy to compare with the rate
+  // (correlation −0.2 and 0.4 here, under 0.8), but its changes over 2 s windows follow the
+  // rate's integral (cosine ≥ 0.99). Logged in rad, nothing is raised; logged in degrees (and
+  // read as the CSV reader would), both trials are named at 1/57.3 from those windows.
+  model::Truth truth = testing::CaseTruth("vsor");
+  model::VirtualCampaignOptions vo;
+  vo.seed = 5;
+  vo.unwrap_headings = false;
+  const std::vector<model::TrialDesign> steady = {
+      testing::Segments("yaw_ccw", Dof::kYaw, "yaw-ht1-ht7", {{30, 15}}),
+      testing::Segments("yaw_cw", Dof::kYaw, "yaw-ht1-ht7", {{-30, 15}})};
+  model::Campaign c = model::BuildVirtualCampaign(truth, steady, vo);
+  model::Campaign degrees = c;
+  for (model::TrialEntry& e : c.trials) model::UnwrapAngles(&e.log);
+  EXPECT_TRUE(CheckInputSanity(c).empty()) << Texts(CheckInputSanity(c));
+  for (model::TrialEntry& e : degrees.trials) {
+    for (double& p : e.log.position[model::Index(Dof::kYaw)]) p *= 180.0 / M_PI;
+    model::UnwrapAngles(&e.log);
+  }
+  const auto problems = CheckInputSanity(degrees);
+  ASSERT_EQ(problems.size(), 2u) << Texts(problems);
+  for (const InputProblem& p : problems) {
+    EXPECT_EQ(p.column, "pos_yaw") << Texts(problems);
+    EXPECT_THAT(p.finding, ::testing::HasSubstr("× the change of pos_yaw over")) << Texts(problems);
+    EXPECT_THAT(p.fix, ::testing::HasSubstr("likely in degrees")) << Texts(problems);
+  }
+}
+
 // A sensor stuck at one value while the force pushes: named on its column, position or rate.
 TEST(InputSanityTest, AStuckSensorIsNamed) {
   for (const bool rate : {false, true}) {

@@ -92,6 +92,18 @@ TEST(ReadTrialLogTest, UnwrapsSeveralTurnsBothWays) {
   EXPECT_THAT(log.notes, ElementsAre("unwrapped pos_roll: 3 jump(s) of more than pi rad"));
 }
 
+TEST(ReadTrialLogTest, AHeadingThatSpansMoreThanATurnIsNotUnwrapped) {
+  // A heading in degrees: its noise alone steps by more than pi (0 → 4 → 1.5 → 8), and it
+  // spans 12 > 2·pi, so it is no angle wrapped to (-pi, pi] (unwrapping it would add 2·pi at
+  // random): left as logged, and said so (input_sanity then names degrees).
+  ScratchDir dir;
+  const std::string path =
+      dir.Write("degrees.csv", "t,pos_yaw\n0,0\n1,4\n2,1.5\n3,8\n4,12\n");
+  const TrialLog log = ReadTrialLog(path);
+  ExpectSameColumn(log.position[Index(Dof::kYaw)], {0, 4, 1.5, 8, 12});
+  EXPECT_THAT(log.notes, ElementsAre(HasSubstr("not a wrapped angle in rad, not unwrapped")));
+}
+
 TEST(ReadTrialLogTest, ToleratesCrLfSpacesBlankLinesCommentsAnywhereAndNoFinalNewline) {
   ScratchDir dir;
   const std::string path = dir.Write("loose.csv",

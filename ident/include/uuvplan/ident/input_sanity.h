@@ -26,8 +26,12 @@ namespace uuvplan::ident {
 
 struct InputSanityOptions {
   /// |correlation| of the rate with the position's derivative needed before their ratio is
-  /// read (below it, the motion is too small against the noise to tell).
+  /// read (below it, the motion is too small against the noise to tell). Below it, the ratio
+  /// is read from the position's changes over windows of `increment_window_s` against the
+  /// rate's integral over the same windows (noise averages out of an integral, not out of a
+  /// derivative) when those agree in direction as closely (cosine ≥ min_correlation).
   double min_correlation = 0.8;
+  double increment_window_s = 2.0;
   /// A ratio within ×/÷ this of 180/π (or of −1) names degrees (or a flipped sign).
   double ratio_tolerance = 1.3;
   /// A ratio outside [1/limit, limit] (and not one of the above): different units.
