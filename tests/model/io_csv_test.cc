@@ -92,16 +92,19 @@ TEST(ReadTrialLogTest, UnwrapsSeveralTurnsBothWays) {
   EXPECT_THAT(log.notes, ElementsAre("unwrapped pos_roll: 3 jump(s) of more than pi rad"));
 }
 
-TEST(ReadTrialLogTest, AHeadingThatSpansMoreThanATurnIsNotUnwrapped) {
-  // A heading in degrees: its noise alone steps by more than pi (0 → 4 → 1.5 → 8), and it
-  // spans 12 > 2·pi, so it is no angle wrapped to (-pi, pi] (unwrapping it would add 2·pi at
-  // random): left as logged, and said so (input_sanity then names degrees).
+TEST(ReadTrialLogTest, AHeadingInDegreesIsNotUnwrappedByTwoPi) {
+  // A heading in degrees spans more than 2·pi, so it is no angle wrapped to (-pi, pi]: its
+  // noise alone steps by more than pi (0 → 4 → 1.5 → 8), which unwrapping by 2·pi would turn
+  // into turns. Left as logged; wrapped at ±180 (179 → -178), it is unwrapped by 360 and said
+  // so (input_sanity then names degrees).
   ScratchDir dir;
-  const std::string path =
-      dir.Write("degrees.csv", "t,pos_yaw\n0,0\n1,4\n2,1.5\n3,8\n4,12\n");
-  const TrialLog log = ReadTrialLog(path);
-  ExpectSameColumn(log.position[Index(Dof::kYaw)], {0, 4, 1.5, 8, 12});
-  EXPECT_THAT(log.notes, ElementsAre(HasSubstr("not a wrapped angle in rad, not unwrapped")));
+  const TrialLog noisy = ReadTrialLog(dir.Write("noisy.csv", "t,pos_yaw\n0,0\n1,4\n2,1.5\n3,8\n4,12\n"));
+  ExpectSameColumn(noisy.position[Index(Dof::kYaw)], {0, 4, 1.5, 8, 12});
+  EXPECT_THAT(noisy.notes, IsEmpty());
+  const TrialLog wrapped =
+      ReadTrialLog(dir.Write("wrapped.csv", "t,pos_yaw\n0,170\n1,174\n2,179\n3,-178\n4,-175\n"));
+  ExpectSameColumn(wrapped.position[Index(Dof::kYaw)], {170, 174, 179, 182, 185});
+  EXPECT_THAT(wrapped.notes, ElementsAre(HasSubstr("unwrapped pos_yaw as degrees")));
 }
 
 TEST(ReadTrialLogTest, ToleratesCrLfSpacesBlankLinesCommentsAnywhereAndNoFinalNewline) {
