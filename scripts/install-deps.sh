@@ -2,7 +2,8 @@
 # Installs uuvplan's build and test dependencies from Debian packages (bookworm).
 # Idempotent and non-interactive: packages already present are not fetched again.
 # Usage: scripts/install-deps.sh [--bench]
-#   --bench  also the optional benchmark dependencies (bench/plain_identify.py: NumPy, SciPy);
+#   --bench  also the optional benchmark dependencies (bench/plain_identify.py: NumPy, SciPy;
+#            bench/method_coverage.sh: PyYAML);
 #            the build and the tests never need them.
 set -euo pipefail
 
@@ -17,7 +18,7 @@ packages=(
   chromium fonts-dejavu-core
   clang-14 libclang-rt-14-dev  # the sanitizer and fuzz stage (scripts/sanitize.sh)
 )
-bench_packages=(python3 python3-numpy python3-scipy)
+bench_packages=(python3 python3-numpy python3-scipy python3-yaml)
 if [ "${1:-}" = "--bench" ]; then packages+=("${bench_packages[@]}"); fi
 
 missing=()
