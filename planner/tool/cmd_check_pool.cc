@@ -180,7 +180,7 @@ void BindCheckPool(CLI::App* sub, CheckPoolCliOptions* o) {
   sub->add_option("--max-duration", o->check.schedule.planner.max_trial_duration_s,
                   "longest trial (s)")
       ->capture_default_str()
-      ->check(PositiveNumber("a duration in s"));
+      ->check(TrialDuration());
 }
 
 const CommandRegistration kRegistration(MakeCommand<CheckPoolCliOptions>(

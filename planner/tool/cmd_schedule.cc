@@ -195,7 +195,7 @@ void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {
                   "longest trial (s); with --model coupled the combined trial's duration "
                   "(then 120 s when not given)")
       ->capture_default_str()
-      ->check(PositiveNumber("a duration in s"))
+      ->check(TrialDuration())
       ->each([o](const std::string&) { o->duration_given = true; });
   sub->add_option("--model", o->model_kind,
                   "dof (a schedule per DOF) or coupled (one combined surge+sway+yaw sine trial "

@@ -32,6 +32,24 @@ CLI::Validator PositiveNumber(const std::string& what) {
       "NUMBER > 0");
 }
 
+// A pool is booked by the hour; the seeds' trials last 0.5–4 min. A longer "trial" is a unit
+// slip (ms for s) and would only meet the simulation's work limit further on.
+constexpr double kMaxTrialSeconds = 3600.0;
+
+CLI::Validator TrialDuration() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double x = std::strtod(text.c_str(), &end);
+        const bool number = !text.empty() && end == text.c_str() + text.size();
+        return number && std::isfinite(x) && x > 0 && x <= kMaxTrialSeconds
+                   ? ""
+                   : "expected a trial's duration in (0, 3600] s (a pool is booked by the hour), "
+                     "got '" + text + "'";
+      },
+      "SECONDS in (0, 3600]");
+}
+
 CLI::Validator OutputFile() {
   return CLI::Validator(
       [](std::string& path) -> std::string {

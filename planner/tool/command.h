@@ -55,6 +55,8 @@ Command MakeCommand(std::string name, int order, std::string description,
 /// `--json F`: "<what> as JSON to this file ('-' = stdout)".
 /// A finite number > 0 (`what`: "a percentage", "a duration in s"), in the option's message.
 CLI::Validator PositiveNumber(const std::string& what);
+/// --max-duration: a pool trial's length in s, in (0, kMaxTrialSeconds].
+CLI::Validator TrialDuration();
 /// An output file's check, at parse time so that nothing is computed for an output that cannot
 /// be written and a command with two outputs writes both or neither: its directory exists and
 /// is writable ('-' = stdout passes).

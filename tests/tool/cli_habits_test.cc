@@ -87,6 +87,21 @@ TEST(CliHabits, ParserErrorsStartWithTheProgramName) {
   }
 }
 
+TEST(CliHabits, ATrialLongerThanAnHourIsRefusedNamingTheOption) {
+  // --max-duration 1e9 (a unit slip) once ran into the simulation's work limit, whose message
+  // ("position trace samples … a shorter trial") named no option.
+  const TempDir scratch;
+  const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
+  for (const char* command : {"schedule", "check-pool"}) {
+    const ToolRun run = RunTool(std::string(command) + " '" + romeo + "vehicle.yaml' --pool '" +
+                                    romeo + "pool.yaml' --max-duration 1e9",
+                                scratch);
+    EXPECT_EQ(run.status, 2) << command;
+    EXPECT_THAT(run.err, HasSubstr("--max-duration")) << command << run.err;
+    EXPECT_THAT(run.err, HasSubstr("(0, 3600] s")) << command << run.err;
+  }
+}
+
 TEST(CliHabits, BadInputOfEveryFileCommandStartsWithTheProgramName) {
   const TempDir scratch;
   const std::string missing = scratch / "missing.yaml";
