@@ -60,12 +60,11 @@ Signal TakenColumn(std::vector<double>* t, std::vector<double>* col, double offs
 class LogColumns {
  public:
   using Columns = std::array<std::vector<double>, model::kNumDofs> model::TrialLog::*;
-  LogColumns(const model::TrialLog& log, model::TrialLog* owned, double offset)
+  /// `dof`: the trial's own (the only DOF whose position is read; every DOF's velocity is).
+  LogColumns(const model::TrialLog& log, model::TrialLog* owned, Dof dof, double offset)
       : log_(log), owned_(owned), offset_(offset) {
-    for (Dof d : model::kAllDofs) {
-      times_users_ += log.HasPosition(d) ? 1 : 0;
-      times_users_ += log.HasVelocity(d) ? 1 : 0;
-    }
+    times_users_ = log.HasPosition(dof) ? 1 : 0;
+    for (Dof d : model::kAllDofs) times_users_ += log.HasVelocity(d) ? 1 : 0;
   }
   Signal Read(Columns columns, Dof d) {
     const std::vector<double>& col = (log_.*columns)[Index(d)];
@@ -440,7 +439,12 @@ void EstimateVelocity(const TrialDataOptions& o, const std::string& where, Trial
     if (d->has_position()) {
       SavitzkyGolayOptions sp = sg;
       sp.window = ChosenWindow(o.sg_window, MedianRate(d->position), time_scale);
-      d->initial_position = SavitzkyGolay(d->position, sp).value.front();
+      // In double (ForEachSmoothed): a stored SmoothedSignal rounds its values to float, 6e-8 of
+      // a position's size (0.3 m on UTM coordinates).
+      d->initial_position = std::nan("");
+      ForEachSmoothed(d->position, sp, [d](const SmoothedSample& p) {
+        if (p.i == 0) d->initial_position = p.value;
+      });
     } else {
       d->initial_position = std::nan("");
     }
@@ -506,7 +510,7 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
   d.start_time = e.start + d.time_offset;
   d.duration = log.t.back() - d.time_offset;
   ReadForce(e, vehicle, where, &d);
-  LogColumns columns(log, given_up, d.time_offset);
+  LogColumns columns(log, given_up, e.dof, d.time_offset);
   Measurements m = ReadMeasurements(log, &columns, where, &d);
   ReadAuxVelocities(&columns, &d);
   std::vector<std::string> log_notes = log.notes;

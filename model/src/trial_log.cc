@@ -34,13 +34,24 @@ int Unwrap(std::vector<double>* angle, double period) {
   return jumps;
 }
 
-// The spread max − min of a column's values (NaN skipped; 0 when empty).
-double Spread(const std::vector<double>& x) {
+// The smallest and largest value of a column (NaN skipped; lo > hi when it has none).
+struct Range {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  bool Within(double a, double b) const { return lo >= a && hi <= b; }
+};
+Range RangeOf(const std::vector<double>& x) {
+  Range r;
   for (double v : x) {
-    if (!std::isnan(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    if (!std::isnan(v)) r.lo = std::min(r.lo, v), r.hi = std::max(r.hi, v);
   }
-  return hi >= lo ? hi - lo : 0.0;
+  return r;
+}
+
+// Whether a column's values lie where an angle wrapped to one turn (`turn`: 2·pi or 360) does,
+// (−turn/2, turn/2] or [0, turn), with `slack` for printed rounding (±3.1416 of a 4-decimal
+// log is past pi).
+bool WrappedTo(const Range& r, double turn, double slack) {
+  return r.Within(-0.5 * turn - slack, 0.5 * turn + slack) || r.Within(-slack, turn + slack);
 }
 
 // Jumps of more than `size` between consecutive values (NaN skipped).
@@ -55,30 +66,23 @@ int JumpsOver(const std::vector<double>& x, double size) {
   return jumps;
 }
 
-// The largest |value| of a column (NaN skipped).
-double Largest(const std::vector<double>& x) {
-  double m = 0.0;
-  for (double v : x) {
-    if (!std::isnan(v)) m = std::max(m, std::abs(v));
-  }
-  return m;
-}
-
 }  // namespace
 
 void UnwrapAngles(TrialLog* log) {
   for (Dof dof : {Dof::kRoll, Dof::kPitch, Dof::kYaw}) {
     std::vector<double>& angle = log->position[Index(dof)];
-    // An angle wrapped to (-pi, pi] (or [0, 2pi)) spans at most 2pi. A column that spans more
-    // is continuous already, or not in radians: a heading in degrees, whose noise alone can
-    // step by more than pi (unwrapping it by 2pi would add 2pi at random), is unwrapped by 360
-    // when it stays within ±180 and jumps by more than 180 (input_sanity then names degrees).
+    // An angle wrapped to one turn lies in (-pi, pi] or [0, 2pi). A column outside both is
+    // continuous already, or not in radians: a heading in degrees, whose noise alone can step
+    // by more than pi (unwrapping it by 2pi would add 2pi at random), is unwrapped by 360 when
+    // it lies in (-180, 180] or [0, 360) and jumps by more than 180 (input_sanity then names
+    // degrees); anything else is left as logged.
     const std::string name = "pos_" + std::string(DofName(dof));
-    if (Spread(angle) > 2.0 * kPi * (1.0 + 1e-9)) {
-      if (Largest(angle) <= 180.0 * (1.0 + 1e-9) && JumpsOver(angle, 180.0) > 0) {
+    const Range range = RangeOf(angle);
+    if (!WrappedTo(range, 2.0 * kPi, 1e-3)) {
+      if (WrappedTo(range, 360.0, 0.05) && JumpsOver(angle, 180.0) > 0) {
         const int jumps = Unwrap(&angle, 360.0);
-        log->notes.push_back("unwrapped " + name + " as degrees (it spans more than 2·pi and "
-                             "wraps at ±180): " + std::to_string(jumps) +
+        log->notes.push_back("unwrapped " + name + " as degrees (its values lie outside one "
+                             "turn in rad and wrap at 360): " + std::to_string(jumps) +
                              " jump(s) of more than 180");
       }
       continue;

@@ -105,6 +105,21 @@ TEST(ReadTrialLogTest, AHeadingInDegreesIsNotUnwrappedByTwoPi) {
       ReadTrialLog(dir.Write("wrapped.csv", "t,pos_yaw\n0,170\n1,174\n2,179\n3,-178\n4,-175\n"));
   ExpectSameColumn(wrapped.position[Index(Dof::kYaw)], {170, 174, 179, 182, 185});
   EXPECT_THAT(wrapped.notes, ElementsAre(HasSubstr("unwrapped pos_yaw as degrees")));
+  // A compass heading in degrees, 0–360, the same.
+  const TrialLog compass =
+      ReadTrialLog(dir.Write("compass.csv", "t,pos_yaw\n0,350\n1,355\n2,359\n3,2\n4,6\n"));
+  ExpectSameColumn(compass.position[Index(Dof::kYaw)], {350, 355, 359, 362, 366});
+  EXPECT_THAT(compass.notes, ElementsAre(HasSubstr("unwrapped pos_yaw as degrees")));
+}
+
+TEST(ReadTrialLogTest, ARadianHeadingPrintedWithFourDecimalsIsStillUnwrapped) {
+  // Wrapped to (-pi, pi] and printed to 4 decimals, a heading near south reads ±3.1416, just
+  // past pi: it is still a wrapped angle in rad.
+  ScratchDir dir;
+  const TrialLog log =
+      ReadTrialLog(dir.Write("south.csv", "t,pos_yaw\n0,3.1416\n1,-3.1416\n2,3.1415\n"));
+  ExpectSameColumn(log.position[Index(Dof::kYaw)], {3.1416, -3.1416 + 2 * kPi, 3.1415});
+  EXPECT_THAT(log.notes, ElementsAre(HasSubstr("unwrapped pos_yaw: 2 jump(s)")));
 }
 
 TEST(ReadTrialLogTest, ToleratesCrLfSpacesBlankLinesCommentsAnywhereAndNoFinalNewline) {

@@ -1,7 +1,8 @@
 // Unit and sign sanity of a campaign's logs, checked before any identification (issue #14):
 // the mistakes that identification would otherwise fit without complaint.
 //
-//  - rate vs angle: the logged rate against the derivative of the logged position. A ratio of
+//  - rate vs angle: the logged rate against the derivative of the logged position (too noisy:
+//    the rate's integral against the position's changes over windows). A ratio of
 //    180/π = 57.3 names degrees (vel_ in deg/s, or pos_ in degrees when the ratio is 1/57.3),
 //    −1 an opposite sign convention, any other ratio far from 1 different units; a rotational
 //    rate whose 99th percentile exceeds one turn per second is in degrees (no pool vehicle

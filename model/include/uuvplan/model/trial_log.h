@@ -28,9 +28,12 @@ struct TrialLog {
   bool HasVelocity(Dof d) const { return !velocity[Index(d)].empty(); }
 };
 
-/// Unwraps pos_roll/pitch/yaw wrapped to (-pi, pi] (what ReadTrialLog does): wherever two
-/// consecutive samples differ by more than pi, later samples shift by the multiple of 2·pi that
-/// brings the step back within pi. Notes what it did in log->notes.
+/// Unwraps pos_roll/pitch/yaw wrapped to one turn (what ReadTrialLog does): a column within
+/// (-pi, pi] or [0, 2pi) (1e-3 of slack for rounding): wherever two consecutive samples differ
+/// by more than pi, later samples shift by the multiple of 2·pi that brings the step back within
+/// pi. A column outside both is not a wrapped angle in rad: unwrapped by 360 the same way when
+/// it lies within (-180, 180] or [0, 360) and steps by more than 180 (degrees; the unit check
+/// names them), else left as logged. Notes what it did in log->notes.
 void UnwrapAngles(TrialLog* log);
 
 }  // namespace uuvplan::model
