@@ -332,18 +332,14 @@ Eigen::VectorXd RowSensitivity(const OneStepDofInput& in, const OneStepRows& R,
   return sw.cwiseProduct((Fp.F - Fm.F) * psi) / (2.0 * dv);
 }
 
-// One instrumental-variables iteration against the errors in variables of ξ̃ in F: the
-// instruments Z are the rows along the velocity simulated by the current estimate, F is
-// corrected for the interpolation defect seen on the simulated path. Returns whether to
-// iterate again (false: converged, or the step failed and the previous answer stands).
-bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const OneStepOptions& o,
-                      OneStepDofResult* res) {
-  Eigen::VectorXd theta_now;
-  Eigen::MatrixXd unused;
-  PsiToPhysical(*in.model, in.theta, R.free, res->psi, res->psi_covariance, &theta_now, &unused);
+}  // namespace
+
+bool OneStepInstruments(const OneStepDofInput& in, const OneStepRows& R, const OneStepOptions& o,
+                        const Eigen::VectorXd& theta_now, Eigen::MatrixXd* Z,
+                        Eigen::MatrixXd* F_corrected) {
   std::vector<SmoothedSignal> fine, sampled;
   if (!SimulatedVelocities(*in.model, in.trials, theta_now, o, &fine, &sampled)) return false;
-  const OneStepRows Z = BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &fine);
+  OneStepRows Zr = BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &fine);
   // The interpolation defect Z − Zs is zero where the samples are the fine grid (empty).
   const bool defect = std::any_of(sampled.begin(), sampled.end(),
                                   [](const SmoothedSignal& s) { return !s.t.empty(); });
@@ -352,16 +348,34 @@ bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const One
   }
   // Without a defect Zs is Z itself (not a copy: its rows are 40 bytes a row).
   const OneStepRows Zs_built =
-      defect ? BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &sampled)
-             : OneStepRows{};
-  const OneStepRows& Zs = defect ? Zs_built : Z;
+      defect ? BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &sampled) : OneStepRows{};
+  const OneStepRows& Zs = defect ? Zs_built : Zr;
   fine = {};
   sampled = {};
-  if (Z.F.rows() != R.F.rows() || Zs.F.rows() != R.F.rows()) return false;
+  if (Zr.F.rows() != R.F.rows() || Zs.F.rows() != R.F.rows()) return false;
+  *F_corrected = R.F + (Zr.F - Zs.F);
+  *Z = std::move(Zr.F);
+  return true;
+}
+
+namespace {
+
+// One instrumental-variables iteration against the errors in variables of ξ̃ in F: the
+// instruments Z are the rows along the velocity simulated by the current estimate, F is
+// corrected for the interpolation defect seen on the simulated path (OneStepInstruments).
+// Returns whether to iterate again (false: converged, or the step failed and the previous
+// answer stands).
+bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const OneStepOptions& o,
+                      OneStepDofResult* res) {
+  Eigen::VectorXd theta_now;
+  Eigen::MatrixXd unused;
+  PsiToPhysical(*in.model, in.theta, R.free, res->psi, res->psi_covariance, &theta_now, &unused);
+  Eigen::MatrixXd Z, F;
+  if (!OneStepInstruments(in, R, o, theta_now, &Z, &F)) return false;
   // Rows scaled by 1/σ of their noise (Ω keeps its form: the weight is constant in a run).
   const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
-  const Eigen::MatrixXd Fc = sw.asDiagonal() * (R.F + (Z.F - Zs.F));
-  const Eigen::MatrixXd Zw = sw.asDiagonal() * Z.F;
+  const Eigen::MatrixXd Fc = sw.asDiagonal() * F;
+  const Eigen::MatrixXd Zw = sw.asDiagonal() * Z;
   const Eigen::VectorXd Yw = sw.cwiseProduct(R.Y);
   const Eigen::MatrixXd A = Zw.transpose() * Fc;
   Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
@@ -386,7 +400,7 @@ bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const One
   }
   res->psi = psi;
   res->psi_covariance = cov;
-  res->residuals = R.Y - (R.F + (Z.F - Zs.F)) * psi;
+  res->residuals = R.Y - F * psi;
   res->cost = res->residuals.squaredNorm() / static_cast<int>(R.Y.size());
   res->instrumental = true;
   return !converged;

@@ -58,7 +58,7 @@ struct CovarianceSums {
     return std::clamp(g1, -0.5 * Gamma0(p), 0.5 * Gamma0(p));
   }
   Eigen::MatrixXd Covariance(const Eigen::MatrixXd& P, int p) const {
-    return P * (Gamma0(p) * A + Gamma1(p) * B) * P;
+    return P * (Gamma0(p) * A + Gamma1(p) * B) * P.transpose();
   }
 };
 
@@ -69,12 +69,14 @@ bool RlsOptions::IsValid(std::string* error) const {
                  "RlsOptions::lambda = " + std::to_string(lambda) +
                      ". Violated constraint: 0.9 < lambda <= 1 (seed 004)",
                  error) &&
-         Require(p0 > 0, "RlsOptions::p0 must be > 0", error);
+         Require(p0 > 0, "RlsOptions::p0 must be > 0", error) &&
+         Require(instrument_iterations >= 0, "RlsOptions::instrument_iterations must be >= 0", error);
 }
 
 RlsTrajectory RecursiveLeastSquares(const Eigen::MatrixXd& F, const Eigen::VectorXd& Y,
                                     const std::vector<double>& t, const RlsOptions& o,
-                                    int rows_per_update, const std::vector<int>* runs) {
+                                    int rows_per_update, const std::vector<int>* runs,
+                                    const Eigen::MatrixXd* instruments) {
   const int p = static_cast<int>(F.cols());
   const int q = std::max(1, rows_per_update);
   const int steps = static_cast<int>(F.rows()) / q;
@@ -88,14 +90,15 @@ RlsTrajectory RecursiveLeastSquares(const Eigen::MatrixXd& F, const Eigen::Vecto
   const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(p, p);
   for (int k = 0; k < steps; ++k) {
     const Eigen::MatrixXd Fk = F.middleRows(k * q, q);
+    const Eigen::MatrixXd Zk = instruments ? Eigen::MatrixXd(instruments->middleRows(k * q, q)) : Fk;
     const Eigen::VectorXd Yk = Y.segment(k * q, q);
-    const Eigen::MatrixXd S = o.lambda * Eigen::MatrixXd::Identity(q, q) + Fk * P * Fk.transpose();
-    const Eigen::MatrixXd Gamma = P * Fk.transpose() * S.inverse();
+    const Eigen::MatrixXd S = o.lambda * Eigen::MatrixXd::Identity(q, q) + Fk * P * Zk.transpose();
+    const Eigen::MatrixXd Gamma = P * Zk.transpose() * S.inverse();
     theta += Gamma * (Yk - Fk * theta);  // a-priori error
     P = (I - Gamma * Fk) * P / o.lambda;
-    P = 0.5 * (P + P.transpose());
+    if (!instruments) P = 0.5 * (P + P.transpose());  // (ZᵀF)⁻¹ is not symmetric
     const bool continues = q == 1 && runs && k > 0 && (*runs)[k] == (*runs)[k - 1];
-    sums.Add(Fk, Yk - Fk * theta, continues, o.lambda);
+    sums.Add(Zk, Yk - Fk * theta, continues, o.lambda);
     // Fewer than 2p weighted rows say little of the residual variance: no σ yet.
     const Eigen::MatrixXd cov = sums.sw > 2.0 * p
                                     ? sums.Covariance(P, p)
@@ -128,18 +131,62 @@ std::vector<double> CampaignTimes(const OneStepRows& rows, const std::vector<con
   return t;
 }
 
-// Rows scaled by √ of their relative noise weight (Λ_k, seed 004 eq. 16; mean weight 1).
-void WeightRows(OneStepRows* rows) {
-  if (rows->weight.empty()) return;
+// The rows' scales: √ of their relative noise weight (Λ_k, seed 004 eq. 16; mean weight 1).
+Eigen::VectorXd RowScales(const OneStepRows& rows) {
+  Eigen::VectorXd s = Eigen::VectorXd::Ones(rows.Y.size());
+  if (rows.weight.empty()) return s;
   double mean = 0.0;
-  for (double w : rows->weight) mean += w;
-  mean /= static_cast<double>(rows->weight.size());
-  if (!(mean > 0)) return;
-  for (int k = 0; k < rows->Y.size(); ++k) {
-    const double s = std::sqrt(rows->weight[k] / mean);
-    rows->F.row(k) *= s;
-    rows->Y[k] *= s;
+  for (double w : rows.weight) mean += w;
+  mean /= static_cast<double>(rows.weight.size());
+  if (!(mean > 0)) return s;
+  for (int k = 0; k < rows.Y.size(); ++k) s[k] = std::sqrt(rows.weight[k] / mean);
+  return s;
+}
+
+// The final ψ of a recursion in physical parameters (model layout).
+Eigen::VectorXd FinalPhysical(const model::DofModel& model, const Eigen::VectorXd& theta,
+                              const std::vector<int>& free, const RlsTrajectory& psi) {
+  Eigen::VectorXd phys;
+  Eigen::MatrixXd cov;
+  const Eigen::MatrixXd none = Eigen::MatrixXd::Zero(psi.theta.cols(), psi.theta.cols());
+  PsiToPhysical(model, theta, free, psi.theta.bottomRows(1).transpose(), none, &phys, &cov);
+  return phys;
+}
+
+// Recursive IV (rls.h) against the errors in variables of the filtered velocity in F: the
+// instruments are the rows along the velocity the current estimate simulates, F is corrected
+// for the interpolation defect (OneStepInstruments), iterated until no coefficient moves by
+// more than 5% of its σ (at most `iterations`). False when the instruments cannot be built;
+// `psi` is then left as it was.
+bool InstrumentalRecursion(const model::DofModel& model, const std::vector<const TrialData*>& trials,
+                           const Eigen::VectorXd& theta, const OneStepRows& rows,
+                           const Eigen::VectorXd& scales, const std::vector<double>& times,
+                           const OneStepOptions& ro, const RlsOptions& o, int iterations,
+                           RlsTrajectory* psi) {
+  OneStepDofInput in;
+  in.model = &model;
+  in.trials = trials;
+  in.theta = theta;
+  in.free = rows.free;
+  const Eigen::VectorXd Yw = scales.cwiseProduct(rows.Y);
+  bool done = false;
+  for (int it = 0; it < iterations; ++it) {
+    Eigen::MatrixXd Z, Fc;
+    if (!OneStepInstruments(in, rows, ro, FinalPhysical(model, theta, rows.free, *psi), &Z, &Fc)) {
+      return done;
+    }
+    const Eigen::MatrixXd Zw = scales.asDiagonal() * Z;
+    RlsTrajectory next = RecursiveLeastSquares(scales.asDiagonal() * Fc, Yw, times, o, 1,
+                                               &rows.run, &Zw);
+    const Eigen::VectorXd now = next.theta.bottomRows(1).transpose();
+    if (!now.allFinite() || !(now[0] > 0)) return done;
+    const Eigen::VectorXd before = psi->theta.bottomRows(1).transpose();
+    const Eigen::VectorXd sigma = next.final_covariance.diagonal().cwiseMax(0.0).cwiseSqrt();
+    *psi = std::move(next);
+    done = true;
+    if (((now - before).cwiseAbs().array() <= 0.05 * sigma.array()).all()) break;
   }
+  return done;
 }
 
 }  // namespace
@@ -163,10 +210,15 @@ RlsDofResult RecursiveOneStep(const model::DofModel& model,
                 "variance; longer trials)";
     return r;
   }
-  WeightRows(&rows);
+  const Eigen::VectorXd scales = RowScales(rows);
+  const std::vector<double> times = CampaignTimes(rows, trials);
   RlsOptions with_covariance = o;
   with_covariance.keep_covariance = true;
-  r.psi = RecursiveLeastSquares(rows.F, rows.Y, CampaignTimes(rows, trials), with_covariance, 1, &rows.run);
+  r.psi = RecursiveLeastSquares(scales.asDiagonal() * rows.F, scales.cwiseProduct(rows.Y), times,
+                                with_covariance, 1, &rows.run);
+  r.instrumental = o.instrument_iterations > 0 &&
+                   InstrumentalRecursion(model, trials, theta, rows, scales, times, ro,
+                                         with_covariance, o.instrument_iterations, &r.psi);
   const int steps = static_cast<int>(r.psi.theta.rows());
   r.theta.resize(steps, model.num_parameters());
   r.sigma.resize(steps, model.num_parameters());
@@ -187,7 +239,9 @@ RlsDofResult RecursiveOneStep(const model::DofModel& model,
   for (int j : r.free) r.state[j] = ParameterState::kEstimated;
   r.status = FitStatus::kOk;
   r.message = "RLS (seed 004 eq. 15, λ = " + Fmt(o.lambda, 6) + ") on " +
-              std::to_string(steps) + " one-step rows";
+              std::to_string(steps) + " one-step rows" +
+              (r.instrumental ? ", instruments from the simulated velocity (recursive IV)"
+                              : ", plain least squares (no instruments)");
   return r;
 }
 

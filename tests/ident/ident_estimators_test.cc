@@ -291,18 +291,23 @@ TEST(LeastSquaresTest, VarianceModelSandwichMatchesTheSpreadOfHeteroscedasticMa1
   EXPECT_GT(std::abs(mean(sigma_homo) / sd - 1.0), 0.08);
 }
 
+// The one-step rows of a URIS surge PRBS trial (seed 004 §5.2), k, kq and bias free.
+struct UrisSurgeRows {
+  model::Truth truth = testing::CaseTruth("uris");
+  model::Campaign c = VirtualCampaign(truth, {testing::UrisDesigns()[1]}, 9);
+  TrialData d = PrepareTrial(c.trials[0], 0, c.vehicle, TrialDataOptions{});
+  model::DofModel m{c.vehicle, model::ModelStructure::Standard(c.vehicle, Dof::kSurge, {"surge-x"}, false)};
+  OneStepOptions ro;
+  Eigen::VectorXd theta = PriorTheta(c.vehicle, m, {});
+  std::vector<int> free = {m.ParameterIndex("k"), m.ParameterIndex("kq"), m.ParameterIndex("bias")};
+  OneStepRows rows = BuildOneStepRows(m, {&d}, theta, free, ro);
+};
+
 TEST(RlsTest, ForgettingFactorOneEqualsBatchLeastSquares) {
   // Seed 004 eq. 15 with λ = 1 and a vague prior (P0 = 1e8 relative) is the batch LS answer of
   // the same rows, up to the prior's weight (1e-6 relative).
-  const model::Truth truth = testing::CaseTruth("uris");
-  const auto designs = testing::UrisDesigns();
-  const model::Campaign c = VirtualCampaign(truth, {designs[1]}, 9);
-  const TrialData d = PrepareTrial(c.trials[0], 0, c.vehicle, TrialDataOptions{});
-  const model::DofModel m(c.vehicle, model::ModelStructure::Standard(c.vehicle, Dof::kSurge, {"surge-x"}, false));
-  OneStepOptions ro;
-  const Eigen::VectorXd theta = PriorTheta(c.vehicle, m, {});
-  const std::vector<int> free = {m.ParameterIndex("k"), m.ParameterIndex("kq"), m.ParameterIndex("bias")};
-  const OneStepRows rows = BuildOneStepRows(m, {&d}, theta, free, ro);
+  const UrisSurgeRows u;
+  const OneStepRows& rows = u.rows;
   const Eigen::VectorXd batch = rows.F.colPivHouseholderQr().solve(rows.Y);
   RlsOptions o;
   o.lambda = 1.0;
@@ -316,6 +321,33 @@ TEST(RlsTest, ForgettingFactorOneEqualsBatchLeastSquares) {
   std::string error;
   EXPECT_FALSE(bad.IsValid(&error));
   EXPECT_NE(error.find("0.9 < lambda <= 1"), std::string::npos);
+}
+
+TEST(RlsTest, InstrumentsWithForgettingOneGiveTheBatchInstrumentalEstimate) {
+  // The recursive IV update (rls.h) with λ = 1 and a vague prior is the batch IV answer
+  // (ZᵀF)⁻¹ZᵀY of the same rows (up to the prior's weight, 1e-6 relative), Z the rows along the
+  // velocity the truth simulates (OneStepInstruments), F corrected for the interpolation defect.
+  const UrisSurgeRows u;
+  const OneStepRows& rows = u.rows;
+  OneStepDofInput in;
+  in.model = &u.m;
+  in.trials = {&u.d};
+  in.theta = u.theta;
+  in.free = u.free;
+  Eigen::VectorXd truth_theta = u.theta;
+  for (int j = 0; j < u.m.num_parameters(); ++j) {
+    truth_theta[j] = TrueParameter(u.truth, Dof::kSurge, u.m.parameter_names()[j]);
+  }
+  Eigen::MatrixXd Z, F;
+  ASSERT_TRUE(OneStepInstruments(in, rows, u.ro, truth_theta, &Z, &F));
+  const Eigen::VectorXd batch = (Z.transpose() * F).fullPivLu().solve(Z.transpose() * rows.Y);
+  RlsOptions o;
+  o.lambda = 1.0;
+  o.p0 = 1e8;
+  const RlsTrajectory traj = RecursiveLeastSquares(F, rows.Y, rows.t, o, 1, nullptr, &Z);
+  for (int j = 0; j < batch.size(); ++j) {
+    EXPECT_NEAR(traj.theta(traj.theta.rows() - 1, j), batch[j], 1e-6 * std::abs(batch[j]) + 1e-12) << j;
+  }
 }
 
 TEST(RlsTest, TracksAThrustThatDriftsBy20Percent) {

@@ -127,6 +127,14 @@ struct OneStepDofInput {
   double weight = 0.0;     ///< Λ for this DOF; 0: 1/noise_sigma²
 };
 
+/// The instruments of rows R (built for `in`) at the physical parameters `theta_now`: Z, the
+/// rows along the velocity `theta_now` simulates from each trial's initial state, and R's F
+/// corrected for the interpolation defect seen on that path (F + Z − Zs, Zs the rows at the
+/// samples' times). False when a simulation diverges or the rows do not match.
+bool OneStepInstruments(const OneStepDofInput& in, const OneStepRows& R, const OneStepOptions& o,
+                        const Eigen::VectorXd& theta_now, Eigen::MatrixXd* Z,
+                        Eigen::MatrixXd* F_corrected);
+
 struct OneStepDofResult {
   FitStatus status = FitStatus::kNoData;
   std::string message;

@@ -39,6 +39,11 @@ struct RlsOptions {
   Eigen::VectorXd theta0;  ///< initial estimate (empty: zeros)
   /// Keep the covariance of every update (RlsTrajectory::covariance), not only the last.
   bool keep_covariance = false;
+  /// RecursiveOneStep: recursive IV passes after the plain recursion (instruments from the
+  /// velocity the estimate simulates, against the errors in variables of the filtered velocity
+  /// in the rows; 0: seed 004's plain RLS). VSOR's schedule: m +40%, 2/20 covered without them
+  /// (docs/validation.md).
+  int instrument_iterations = 3;
   bool IsValid(std::string* error) const;
 };
 
@@ -55,10 +60,15 @@ struct RlsTrajectory {
 /// Runs eq. 15 over the rows of F (one row per update; `rows_per_update` rows form one F_k
 /// for multivariable updates, seed 004: F_k ∈ R^{3×12}). `runs` (may be null; single-row
 /// updates only) labels the rows: consecutive rows of one run share a knot (MA(1) residuals).
+/// With `instruments` (Z, the shape of F) the update is the recursive instrumental-variable
+/// one (Young 1970): Γ_k = P Z_kᵀ(λI + F_k P Z_kᵀ)⁻¹, P_k = (I − Γ_k F_k)P_{k−1}/λ, so that
+/// P_k⁻¹ = Σ λ^{k−i}Z_iᵀF_i and, with λ = 1, θ_N is the batch IV estimate (ZᵀF)⁻¹ZᵀY; its
+/// covariance is the sandwich above with Z in A_k and B_k and P_kᵀ on the right.
 RlsTrajectory RecursiveLeastSquares(const Eigen::MatrixXd& F, const Eigen::VectorXd& Y,
                                     const std::vector<double>& t, const RlsOptions& options,
                                     int rows_per_update = 1,
-                                    const std::vector<int>* runs = nullptr);
+                                    const std::vector<int>* runs = nullptr,
+                                    const Eigen::MatrixXd* instruments = nullptr);
 
 struct RlsDofResult {
   FitStatus status = FitStatus::kNoData;
@@ -66,6 +76,7 @@ struct RlsDofResult {
   double lambda = 1.0;
   std::vector<std::string> coefficient_names;  ///< "gamma", "<name>/m" …
   RlsTrajectory psi;
+  bool instrumental = false;       ///< psi is the recursive IV's (RlsOptions::instrument_iterations)
   std::vector<std::string> names;  ///< model parameter names
   std::vector<int> free;           ///< model indices of ψ[1..] (besides m)
   std::vector<std::string> not_excited;  ///< regressor-linear parameters no row excites
