@@ -215,27 +215,26 @@ void CheckRateAgainstPosition(TrialCheck& c) {
     ratio = vdx / dxdx;
     seen = c.vel_name + " is " + Fmt(ratio, 3) + " × the derivative of " + c.pos_name +
            " (correlation " + Fmt(corr, 3) + ")";
+  } else if (const IncrementRatio inc =
+                 RateAgainstIncrements(c.pos->raw, c.vel->raw, c.o.increment_window_s);
+             inc.windows >= 5 && std::abs(inc.cosine) >= c.o.min_correlation) {
+    from_windows = true;
+    ratio = inc.ratio;
+    seen = "the integral of " + c.vel_name + " is " + Fmt(ratio, 3) + " × the change of " +
+           c.pos_name + " over " + std::to_string(inc.windows) + " windows of " +
+           Fmt(c.o.increment_window_s, 3) + " s (cosine " + Fmt(inc.cosine, 3) +
+           "; the derivative is too noisy to compare, correlation " + Fmt(corr, 3) + ")";
   } else {
-    const IncrementRatio inc = RateAgainstIncrements(c.pos->raw, c.vel->raw, c.o.increment_window_s);
     const double follow = Correlation(v, s.columns[2]);
-    if (inc.windows >= 5 && std::abs(inc.cosine) >= c.o.min_correlation) {
-      from_windows = true;
-      ratio = inc.ratio;
-      seen = "the integral of " + c.vel_name + " is " + Fmt(ratio, 3) + " × the change of " +
-             c.pos_name + " over " + std::to_string(inc.windows) + " windows of " +
-             Fmt(c.o.increment_window_s, 3) + " s (cosine " + Fmt(inc.cosine, 3) +
-             "; the derivative is too noisy to compare, correlation " + Fmt(corr, 3) + ")";
-    } else {
-      if (std::abs(follow) >= c.o.follow_correlation && std::abs(corr) < c.o.min_correlation / 2) {
-        c.Report(c.pos_name,
-                 "follows " + c.vel_name + " (correlation " + Fmt(follow, 3) +
-                     ") instead of integrating it (correlation of " + c.vel_name +
-                     " with its derivative " + Fmt(corr, 3) + ")",
-                 "it holds a velocity, not a position in " + PositionUnitOf(c.dof) +
-                     " (log the position, or leave the column out)");
-      }
-      return;
+    if (std::abs(follow) >= c.o.follow_correlation && std::abs(corr) < c.o.min_correlation / 2) {
+      c.Report(c.pos_name,
+               "follows " + c.vel_name + " (correlation " + Fmt(follow, 3) +
+                   ") instead of integrating it (correlation of " + c.vel_name +
+                   " with its derivative " + Fmt(corr, 3) + ")",
+               "it holds a velocity, not a position in " + PositionUnitOf(c.dof) +
+                   " (log the position, or leave the column out)");
     }
+    return;
   }
   const bool rotational = model::IsRotational(c.dof);
   if (rotational && Near(ratio, kDegreesPerRadian, c.o.ratio_tolerance)) {

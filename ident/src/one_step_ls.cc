@@ -334,6 +334,12 @@ Eigen::VectorXd RowSensitivity(const OneStepDofInput& in, const OneStepRows& R,
 
 }  // namespace
 
+bool MovedLessThan(const Eigen::VectorXd& before, const Eigen::VectorXd& after,
+                   const Eigen::MatrixXd& covariance, double fraction) {
+  const Eigen::ArrayXd sigma = covariance.diagonal().cwiseMax(0.0).cwiseSqrt().array();
+  return ((after - before).cwiseAbs().array() <= fraction * sigma).all();
+}
+
 bool OneStepInstruments(const OneStepDofInput& in, const OneStepRows& R, const OneStepOptions& o,
                         const Eigen::VectorXd& theta_now, Eigen::MatrixXd* Z,
                         Eigen::MatrixXd* F_corrected) {
@@ -350,8 +356,6 @@ bool OneStepInstruments(const OneStepDofInput& in, const OneStepRows& R, const O
   const OneStepRows Zs_built =
       defect ? BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &sampled) : OneStepRows{};
   const OneStepRows& Zs = defect ? Zs_built : Zr;
-  fine = {};
-  sampled = {};
   if (Zr.F.rows() != R.F.rows() || Zs.F.rows() != R.F.rows()) return false;
   *F_corrected = R.F + (Zr.F - Zs.F);
   *Z = std::move(Zr.F);
@@ -394,10 +398,7 @@ bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const One
   features.col(1) = Ak.cwiseAbs2();
   const Eigen::MatrixXd cov = Ma1VarianceModelCovariance(Fc, Zw, r, R.run, features);
   // Converged when no coefficient moved by more than 5% of its σ.
-  bool converged = true;
-  for (int j = 0; j < psi.size(); ++j) {
-    converged = converged && std::abs(psi[j] - res->psi[j]) <= 0.05 * std::sqrt(std::max(0.0, cov(j, j)));
-  }
+  const bool converged = MovedLessThan(res->psi, psi, cov, 0.05);
   res->psi = psi;
   res->psi_covariance = cov;
   res->residuals = R.Y - F * psi;

@@ -88,9 +88,11 @@ RlsTrajectory RecursiveLeastSquares(const Eigen::MatrixXd& F, const Eigen::Vecto
   out.t.resize(steps);
   CovarianceSums sums{Eigen::MatrixXd::Zero(p, p), Eigen::MatrixXd::Zero(p, p), {}};
   const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(p, p);
+  Eigen::MatrixXd instrument_rows;
   for (int k = 0; k < steps; ++k) {
     const Eigen::MatrixXd Fk = F.middleRows(k * q, q);
-    const Eigen::MatrixXd Zk = instruments ? Eigen::MatrixXd(instruments->middleRows(k * q, q)) : Fk;
+    if (instruments) instrument_rows = instruments->middleRows(k * q, q);
+    const Eigen::MatrixXd& Zk = instruments ? instrument_rows : Fk;
     const Eigen::VectorXd Yk = Y.segment(k * q, q);
     const Eigen::MatrixXd S = o.lambda * Eigen::MatrixXd::Identity(q, q) + Fk * P * Zk.transpose();
     const Eigen::MatrixXd Gamma = P * Zk.transpose() * S.inverse();
@@ -181,10 +183,10 @@ bool InstrumentalRecursion(const model::DofModel& model, const std::vector<const
     const Eigen::VectorXd now = next.theta.bottomRows(1).transpose();
     if (!now.allFinite() || !(now[0] > 0)) return done;
     const Eigen::VectorXd before = psi->theta.bottomRows(1).transpose();
-    const Eigen::VectorXd sigma = next.final_covariance.diagonal().cwiseMax(0.0).cwiseSqrt();
+    const bool settled = MovedLessThan(before, now, next.final_covariance, 0.05);
     *psi = std::move(next);
     done = true;
-    if (((now - before).cwiseAbs().array() <= 0.05 * sigma.array()).all()) break;
+    if (settled) break;
   }
   return done;
 }

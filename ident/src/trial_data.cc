@@ -18,27 +18,14 @@ namespace {
 using model::Dof;
 using model::Index;
 
-Signal Column(const std::vector<double>& t, const std::vector<double>& col, double offset) {
-  Signal s;
-  if (col.empty()) return s;
-  s.t.reserve(col.size());
-  s.y.reserve(col.size());
-  for (std::size_t i = 0; i < col.size(); ++i) {
-    if (std::isnan(col[i]) || t[i] < offset) continue;  // before t = 0 (the first force row)
-    s.t.push_back(t[i] - offset);
-    s.y.push_back(col[i]);
-  }
-  return s;
-}
-
-// Column's samples from a log the caller gave up: the column's and (`last`) the times' vectors
-// reused in place, not copied (a million-row log is not held twice while it is read).
-Signal TakenColumn(std::vector<double>* t, std::vector<double>* col, double offset, bool last) {
-  std::vector<double> times = last ? std::move(*t) : *t;
-  std::vector<double> y = std::move(*col);
+// A log column `y` at `times` as a signal: the rows with a value at or after t = 0 (the first
+// force row, log time `offset`), times shifted there, compacted in the vectors given (moved
+// from a log the caller gave up, a million-row log is not held twice while it is read; else
+// copies).
+Signal KeptSamples(std::vector<double> times, std::vector<double> y, double offset) {
   std::size_t k = 0;
   for (std::size_t i = 0; i < y.size(); ++i) {
-    if (std::isnan(y[i]) || times[i] < offset) continue;  // as Column
+    if (std::isnan(y[i]) || times[i] < offset) continue;  // before t = 0: no force logged
     times[k] = times[i] - offset;
     y[k++] = y[i];
   }
@@ -54,7 +41,7 @@ Signal TakenColumn(std::vector<double>* t, std::vector<double>* col, double offs
   return s;
 }
 
-// The measurement columns of a trial's log, as signals (Column), copied from the log or taken
+// The measurement columns of a trial's log, as signals (KeptSamples), copied from the log or taken
 // from it when the caller gives it up (`owned`, the same log): the times are moved into the
 // last column read that needs them.
 class LogColumns {
@@ -70,8 +57,9 @@ class LogColumns {
     const std::vector<double>& col = (log_.*columns)[Index(d)];
     if (col.empty()) return Signal{};
     const bool last = --times_users_ == 0;
-    if (!owned_) return Column(log_.t, col, offset_);
-    return TakenColumn(&owned_->t, &(owned_->*columns)[Index(d)], offset_, last);
+    if (!owned_) return KeptSamples(log_.t, col, offset_);
+    return KeptSamples(last ? std::move(owned_->t) : owned_->t,
+                       std::move((owned_->*columns)[Index(d)]), offset_);
   }
 
  private:

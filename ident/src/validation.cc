@@ -148,115 +148,129 @@ const Signal& VelocityReference(const TrialData& trial, Signal* estimated) {
   return *estimated;
 }
 
+// Sensors much faster than the RK4 step: more than about four samples a step.
+bool Dense(const SampleTimes& span, double step_s) {
+  return span.count > 4 * ((span.last - span.first) / step_s + 1);
+}
+
 // The model's free run over a trial's sample times (the velocity reference's and the
-// positions'), and its state c at a sample time t: the simulation at t, or, for sensors much
-// faster than the RK4 step, on a grid of about one step (and the input's breakpoints)
-// interpolated linearly (error ~ step²/8·|ξ''|, far below any MAE) — the union of the sample
-// times is then not materialised (8–16 bytes a sample), nor is it when it is the positions'
-// own times. Only position and velocity are kept (16 bytes a simulated time, not a trajectory's
-// 24–32). Queries come in increasing t within one signal (Rewind between signals).
+// positions'), and its state c at a sample time t: the simulation at t, or, for dense sensors,
+// on a grid of about one step (and the input's breakpoints) interpolated linearly (error
+// ~ step²/8·|ξ''|, far below any MAE) — the union of the sample times is then not
+// materialised (8–16 bytes a sample). Only position and velocity are kept (16 bytes a
+// simulated time, not a trajectory's 24–32). Queries come in increasing t within one signal
+// (Rewind between signals). ScoreVisitedFreeRun stores nothing where the times are the
+// positions' own.
 class FreeRun {
  public:
   FreeRun(const model::DofModel& model, const Eigen::VectorXd& theta, const TrialData& trial,
           const std::vector<double>& velocity_times, double step_s, Eigen::VectorXd x0) {
     const SampleTimes span = MergedTimes(velocity_times, trial.position.t, nullptr);
     if (span.count == 0) return;
-    times_ = &grid_;
-    dense_ = span.count > 4 * ((span.last - span.first) / step_s + 1);
+    dense_ = Dense(span, step_s);
     if (dense_) {
-      for (double t = 0.0; t < span.last; t += step_s) grid_.push_back(t);
-      grid_.push_back(span.last);
+      for (double t = 0.0; t < span.last; t += step_s) times_.push_back(t);
+      times_.push_back(span.last);
       for (double b : trial.breakpoints) {
-        if (b < span.last) grid_.push_back(b);
+        if (b < span.last) times_.push_back(b);
       }
-      std::sort(grid_.begin(), grid_.end());
-      grid_.erase(std::unique(grid_.begin(), grid_.end()), grid_.end());
-    } else if (&velocity_times == &trial.position.t.vector() &&
-               span.count == trial.position.size()) {
-      times_ =
-          &trial.position.t.vector();  // each time once, none negative: the union is the positions'
+      std::sort(times_.begin(), times_.end());
+      times_.erase(std::unique(times_.begin(), times_.end()), times_.end());
     } else {
-      grid_.reserve(span.count);
-      MergedTimes(velocity_times, trial.position.t, &grid_);
+      times_.reserve(span.count);
+      MergedTimes(velocity_times, trial.position.t, &times_);
     }
     model::SimulationOptions so;
     so.step_s = step_s;
-    position_.resize(times_->size());
-    velocity_.resize(times_->size());
-    model::SimulateVisiting(model, theta, trial.conditions(), *times_, so, &x0,
+    position_.resize(times_.size());
+    velocity_.resize(times_.size());
+    model::SimulateVisiting(model, theta, trial.conditions(), times_, so, &x0,
                             model::Seen::kBySensors,
                             [&](std::size_t i, const double* x, const double*) {
                               position_[i] = x[0];
                               velocity_[i] = x[1];
                             });
   }
-  FreeRun(const FreeRun&) = delete;  // times_ may point at its own grid_
-  FreeRun& operator=(const FreeRun&) = delete;
-  bool empty() const { return !times_ || times_->empty(); }
+  bool empty() const { return times_.empty(); }
   void Rewind() { g_ = 0; }
   /// State c (0 position, 1 velocity) at sample time t.
   double At(double t, int c) {
-    const std::vector<double>& times = *times_;
     const std::vector<double>& x = c == 0 ? position_ : velocity_;
     if (!dense_) {  // every sample time is a simulated time
-      if (g_ >= times.size() || times[g_] > t) g_ = 0;
-      while (g_ < times.size() && times[g_] < t) ++g_;
+      if (g_ >= times_.size() || times_[g_] > t) g_ = 0;
+      while (g_ < times_.size() && times_[g_] < t) ++g_;
       return x[g_];
     }
-    if (g_ >= times.size() || times[g_] > t) g_ = 0;
-    while (g_ + 2 < times.size() && times[g_ + 1] < t) ++g_;
+    if (g_ >= times_.size() || times_[g_] > t) g_ = 0;
+    while (g_ + 2 < times_.size() && times_[g_ + 1] < t) ++g_;
     const double w =
-        times[g_ + 1] > times[g_] ? (t - times[g_]) / (times[g_ + 1] - times[g_]) : 0.0;
+        times_[g_ + 1] > times_[g_] ? (t - times_[g_]) / (times_[g_ + 1] - times_[g_]) : 0.0;
     return x[g_] + w * (x[g_ + 1] - x[g_]);
   }
 
  private:
   bool dense_ = false;
-  std::vector<double> grid_;                    ///< the simulated times when not the positions' own
-  const std::vector<double>* times_ = nullptr;  ///< the simulated times (grid_ or the positions')
-  std::vector<double> position_, velocity_;     ///< the free run at times_
+  std::vector<double> times_;                 ///< the simulated times
+  std::vector<double> position_, velocity_;   ///< the free run at times_
   std::size_t g_ = 0;
 };
 
-// True when the free run is simulated at the positions' own times (FreeRun): an estimated
-// velocity (its samples are the positions'), sensors no faster than about four RK4 steps, each
-// time once and none negative.
+// True when the free run is simulated at the positions' own times: an estimated velocity (its
+// samples are the positions'), sensors not dense, each time once and none negative.
 bool SimulatedAtPositionTimes(const TrialData& trial, double step_s) {
   if (trial.has_velocity() || trial.velocity_estimate.size() != trial.position.size()) return false;
   const SampleTimes span = MergedTimes(trial.position.t, trial.position.t, nullptr);
-  return span.count > 0 && span.count == trial.position.size() &&
-         span.count <= 4 * ((span.last - span.first) / step_s + 1);
+  return span.count > 0 && span.count == trial.position.size() && !Dense(span, step_s);
 }
 
-// The velocity and position errors of a free run simulated at the positions' own times, each
-// taken as the simulation visits its sample (a million-row trial is not stored twice more):
-// the same sums, in the same order, as ScoreStoredFreeRun.
+// The free run's errors, summed: seed 002 eq. 37's velocity MAE (and the zero-velocity model's
+// on the same samples) and the position RMS, the position errors kept (float) for the residual
+// analysis.
+struct FreeRunErrors {
+  double sum_abs = 0.0, sum_abs_zero = 0.0, sum_sq = 0.0;
+  int velocity_samples = 0;
+  std::vector<float>* position_errors;
+
+  void AddVelocity(double model, double measured) {
+    sum_abs += std::abs(model - measured);
+    sum_abs_zero += std::abs(measured);
+    ++velocity_samples;
+  }
+  void AddPosition(double measured, double model) {
+    const double e = measured - model;
+    sum_sq += e * e;
+    position_errors->push_back(static_cast<float>(e));
+  }
+  void Fill(TrialFit* f) const {
+    f->velocity_samples = velocity_samples;
+    f->velocity_mae = velocity_samples > 0 ? sum_abs / velocity_samples : kNaN;
+    f->zero_velocity_mae = velocity_samples > 0 ? sum_abs_zero / velocity_samples : kNaN;
+    const std::size_t n = position_errors->size();
+    f->position_samples = static_cast<int>(n);
+    f->position_rms = n > 0 ? std::sqrt(sum_sq / n) : kNaN;
+  }
+};
+
+// The errors of a free run simulated at the positions' own times, each taken as the simulation
+// visits its sample (a million-row trial is not stored twice more): the same sums, in the same
+// order, as ScoreStoredFreeRun.
 void ScoreVisitedFreeRun(const model::DofModel& model, const Eigen::VectorXd& theta,
                          const TrialData& trial, double step_s, Eigen::VectorXd x0, TrialFit* f,
                          std::vector<float>* perr) {
   const SmoothedSignal& v = trial.velocity_estimate;
   const Signal& p = trial.position;
-  double sum_abs = 0.0, sum_abs_zero = 0.0, ss = 0.0;
-  int velocity_samples = 0;
+  FreeRunErrors errors{0.0, 0.0, 0.0, 0, perr};
   perr->reserve(p.size());
   model::SimulationOptions so;
   so.step_s = step_s;
   model::SimulateVisiting(model, theta, trial.conditions(), p.t, so, &x0, model::Seen::kBySensors,
                           [&](std::size_t i, const double* x, const double*) {
                             if (!v.edge[i] && std::isfinite(v.value[i])) {
-                              sum_abs += std::abs(x[1] - v.value[i]);  // eq. 37
-                              sum_abs_zero += std::abs(v.value[i]);
-                              ++velocity_samples;
+                              errors.AddVelocity(x[1], v.value[i]);
                             }
-                            const double e = p.y[i] - x[0];
-                            ss += e * e;
-                            perr->push_back(static_cast<float>(e));
+                            errors.AddPosition(p.y[i], x[0]);
                           });
-  f->velocity_samples = velocity_samples;
-  f->velocity_mae = velocity_samples > 0 ? sum_abs / velocity_samples : kNaN;
-  f->zero_velocity_mae = velocity_samples > 0 ? sum_abs_zero / velocity_samples : kNaN;
-  f->position_samples = static_cast<int>(perr->size());
-  f->position_rms = perr->empty() ? kNaN : std::sqrt(ss / perr->size());
+  errors.Fill(f);
 }
 
 // The same errors from a stored free run (FreeRun) on the union of the velocity reference's and
@@ -269,33 +283,23 @@ void ScoreStoredFreeRun(const model::DofModel& model, const Eigen::VectorXd& the
   FreeRun run(model, theta, trial, vtimes, step_s, std::move(x0));
   if (run.empty()) return;
   const bool keep_velocity = !trial.has_position() || trial.position.t.back() < 0;
-  double sum_abs = 0.0, sum_abs_zero = 0.0;
+  FreeRunErrors errors{0.0, 0.0, 0.0, 0, perr};
   if (keep_velocity)
     verr->reserve(trial.has_velocity() ? trial.velocity.size() : trial.velocity_estimate.size());
-  int velocity_samples = 0;
   ForEachVelocityReference(trial, [&](double t, double v) {
     if (t < 0) return;
-    const double e = run.At(t, 1) - v;  // ν_model − ν_measured (eq. 37)
-    sum_abs += std::abs(e);
-    sum_abs_zero += std::abs(v);
-    ++velocity_samples;
-    if (keep_velocity) verr->push_back(-e);
+    const double model_v = run.At(t, 1);
+    errors.AddVelocity(model_v, v);  // ν_model − ν_measured (eq. 37)
+    if (keep_velocity) verr->push_back(v - model_v);
   });
-  f->velocity_samples = velocity_samples;
-  f->velocity_mae = velocity_samples > 0 ? sum_abs / velocity_samples : kNaN;
-  f->zero_velocity_mae = velocity_samples > 0 ? sum_abs_zero / velocity_samples : kNaN;
   run.Rewind();
-  if (!trial.has_position()) return;
-  double ss = 0.0;
-  perr->reserve(trial.position.size());
-  for (std::size_t k = 0; k < trial.position.size(); ++k) {
-    if (trial.position.t[k] < 0) continue;
-    const double e = trial.position.y[k] - run.At(trial.position.t[k], 0);
-    ss += e * e;
-    perr->push_back(static_cast<float>(e));
+  if (trial.has_position()) {
+    perr->reserve(trial.position.size());
+    for (std::size_t k = 0; k < trial.position.size(); ++k) {
+      if (trial.position.t[k] >= 0) errors.AddPosition(trial.position.y[k], run.At(trial.position.t[k], 0));
+    }
   }
-  f->position_samples = static_cast<int>(perr->size());
-  f->position_rms = perr->empty() ? kNaN : std::sqrt(ss / perr->size());
+  errors.Fill(f);
 }
 
 // Residual analysis of the position errors when there are positions, else of the velocity's.

@@ -89,8 +89,8 @@ void UnwrapAngles(TrialLog* log) {
     }
     const int jumps = Unwrap(&angle, 2.0 * kPi);
     if (jumps > 0) {
-      log->notes.push_back("unwrapped pos_" + std::string(DofName(dof)) + ": " +
-                           std::to_string(jumps) + " jump(s) of more than pi rad");
+      log->notes.push_back("unwrapped " + name + ": " + std::to_string(jumps) +
+                           " jump(s) of more than pi rad");
     }
   }
 }

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -20,14 +21,24 @@ std::vector<Command>& Registry() {
   return commands;
 }
 
+namespace {
+
+// Whether `text` is a whole finite number in (0, most].
+bool NumberInRange(const std::string& text, double most) {
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  const bool number = !text.empty() && end == text.c_str() + text.size();
+  return number && std::isfinite(x) && x > 0 && x <= most;
+}
+
+}  // namespace
+
 CLI::Validator PositiveNumber(const std::string& what) {
   return CLI::Validator(
       [what](std::string& text) -> std::string {
-        char* end = nullptr;
-        const double x = std::strtod(text.c_str(), &end);
-        const bool number = !text.empty() && end == text.c_str() + text.size();
-        return number && std::isfinite(x) && x > 0 ? ""
-                                                   : "expected " + what + " > 0, got '" + text + "'";
+        return NumberInRange(text, std::numeric_limits<double>::infinity())
+                   ? ""
+                   : "expected " + what + " > 0, got '" + text + "'";
       },
       "NUMBER > 0");
 }
@@ -39,10 +50,7 @@ constexpr double kMaxTrialSeconds = 3600.0;
 CLI::Validator TrialDuration() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        char* end = nullptr;
-        const double x = std::strtod(text.c_str(), &end);
-        const bool number = !text.empty() && end == text.c_str() + text.size();
-        return number && std::isfinite(x) && x > 0 && x <= kMaxTrialSeconds
+        return NumberInRange(text, kMaxTrialSeconds)
                    ? ""
                    : "expected a trial's duration in (0, 3600] s (a pool is booked by the hour), "
                      "got '" + text + "'";

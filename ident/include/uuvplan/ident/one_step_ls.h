@@ -131,6 +131,11 @@ struct OneStepDofInput {
 /// rows along the velocity `theta_now` simulates from each trial's initial state, and R's F
 /// corrected for the interpolation defect seen on that path (F + Z − Zs, Zs the rows at the
 /// samples' times). False when a simulation diverges or the rows do not match.
+/// Whether no coefficient moved from `before` to `after` by more than `fraction` of its σ (the
+/// instrumental iterations' stop: 5%).
+bool MovedLessThan(const Eigen::VectorXd& before, const Eigen::VectorXd& after,
+                   const Eigen::MatrixXd& covariance, double fraction);
+
 bool OneStepInstruments(const OneStepDofInput& in, const OneStepRows& R, const OneStepOptions& o,
                         const Eigen::VectorXd& theta_now, Eigen::MatrixXd* Z,
                         Eigen::MatrixXd* F_corrected);
