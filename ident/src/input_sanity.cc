@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <optional>
@@ -44,20 +45,142 @@ Signal Finite(const std::vector<double>& t, const std::vector<double>& y) {
 // (window at the log's rate). The smoothed signal is computed when a check needs it, stored
 // (Smoothed) or streamed (ForEachSmoothed): a long log's check holds no per-sample copy.
 struct Smoothable {
-  Signal raw;
+  const Signal& raw;
   SavitzkyGolayOptions sg;
   SmoothedSignal Smoothed() const { return SavitzkyGolay(raw, sg); }
 };
 
 // nullopt when too short to smooth.
-std::optional<Smoothable> SmoothableOf(Signal s, double input_time_scale) {
+std::optional<Smoothable> SmoothableOf(const Signal& s, double input_time_scale) {
   if (s.size() < 2 * kMinSamples) return std::nullopt;
   const double step = MedianStep(s.t, 0, s.size());
   if (!(step > 0)) return std::nullopt;
   SavitzkyGolayOptions o;
   o.window = SavitzkyGolayWindow(1.0 / step, input_time_scale);
-  return Smoothable{std::move(s), o};
+  return Smoothable{s, o};
 }
+
+// A trial's own-DOF columns as signals of their finite samples (copies, Finite). From a log
+// that lends them (`lender`), the columns go into their signals instead, and back to the log
+// unchanged when this object goes: every all-finite column, the times shared; or, when there is
+// none, the one column with few gaps (non-finite cells in at most 1/8 of the rows), compacted in
+// place with the rows it drops kept aside. A million-row log's check then holds no second copy
+// of it (issue #16).
+class OwnColumns {
+ public:
+  using Columns = std::array<std::vector<double>, model::kNumDofs> model::TrialLog::*;
+
+  // `lender`, when given, is `log` itself.
+  OwnColumns(const model::TrialLog& log, model::TrialLog* lender, Dof dof)
+      : lender_(lender), dof_(dof) {
+    if (!lender_) {
+      for (std::size_t k = 0; k < kKinds.size(); ++k) signals_[k] = Finite(log.t, Column(log, k));
+      return;
+    }
+    times_ = std::move(lender_->t);
+    const std::size_t n = times_.size();
+    std::array<std::size_t, 3> gaps{};
+    for (std::size_t k = 0; k < kKinds.size(); ++k) {
+      const std::vector<double>& y = Column(log, k);
+      gaps[k] = y.size() != n
+                    ? n + 1
+                    : static_cast<std::size_t>(std::count_if(
+                          y.begin(), y.end(), [](double v) { return !std::isfinite(v); }));
+      lent_[k] = n > 0 && gaps[k] == 0;
+    }
+    if (std::none_of(lent_.begin(), lent_.end(), [](bool b) { return b; })) {
+      for (std::size_t k = 0; k < kKinds.size() && compacted_ < 0; ++k) {
+        if (n > 0 && gaps[k] <= n / 8) compacted_ = static_cast<int>(k);
+      }
+    }
+    for (std::size_t k = 0; k < kKinds.size(); ++k) {  // copies first: compaction moves the times
+      if (!lent_[k] && static_cast<int>(k) != compacted_)
+        signals_[k] = Finite(times_.vector(), Column(log, k));
+    }
+    for (std::size_t k = 0; k < kKinds.size(); ++k) {
+      if (!lent_[k] && static_cast<int>(k) != compacted_) continue;
+      signals_[k].y = std::move(Column(*lender_, k));
+      if (static_cast<int>(k) == compacted_) {
+        times_.Change([&](std::vector<double>& t) { Compact(&t, &signals_[k].y); });
+      }
+      signals_[k].t = times_;
+    }
+  }
+  ~OwnColumns() {
+    if (!lender_) return;
+    std::array<std::vector<double>, 3> ys;
+    for (std::size_t k = 0; k < kKinds.size(); ++k) {
+      ys[k] = std::move(signals_[k].y);
+      signals_[k].t = SharedTimes();
+    }
+    std::vector<double> t = std::move(times_).Release();
+    if (compacted_ >= 0) Restore(&t, &ys[compacted_]);
+    for (std::size_t k = 0; k < kKinds.size(); ++k) {
+      if (lent_[k] || static_cast<int>(k) == compacted_) Column(*lender_, k) = std::move(ys[k]);
+    }
+    lender_->t = std::move(t);
+  }
+  OwnColumns(const OwnColumns&) = delete;
+  OwnColumns& operator=(const OwnColumns&) = delete;
+
+  const Signal& force() const { return signals_[0]; }
+  const Signal& position() const { return signals_[1]; }
+  const Signal& velocity() const { return signals_[2]; }
+
+ private:
+  static constexpr std::array<Columns, 3> kKinds = {
+      &model::TrialLog::force, &model::TrialLog::position, &model::TrialLog::velocity};
+  struct Dropped {
+    std::size_t row;
+    double t, y;
+  };
+
+  const std::vector<double>& Column(const model::TrialLog& log, std::size_t k) const {
+    return (log.*kKinds[k])[model::Index(dof_)];
+  }
+  std::vector<double>& Column(model::TrialLog& log, std::size_t k) const {
+    return (log.*kKinds[k])[model::Index(dof_)];
+  }
+  // Keeps the finite samples at the front, in order; the others are set aside.
+  void Compact(std::vector<double>* t, std::vector<double>* y) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < y->size(); ++i) {
+      if (std::isfinite((*y)[i])) {
+        (*t)[kept] = (*t)[i];
+        (*y)[kept++] = (*y)[i];
+      } else {
+        dropped_.push_back({i, (*t)[i], (*y)[i]});
+      }
+    }
+    t->resize(kept);
+    y->resize(kept);
+  }
+  // Puts the dropped rows back where they were (the kept ones move down to make room).
+  void Restore(std::vector<double>* t, std::vector<double>* y) const {
+    std::size_t kept = t->size(), d = dropped_.size();
+    t->resize(kept + d);
+    y->resize(kept + d);
+    for (std::size_t i = t->size(); i-- > 0;) {
+      if (d > 0 && dropped_[d - 1].row == i) {
+        --d;
+        (*t)[i] = dropped_[d].t;
+        (*y)[i] = dropped_[d].y;
+      } else {
+        --kept;
+        (*t)[i] = (*t)[kept];
+        (*y)[i] = (*y)[kept];
+      }
+    }
+  }
+
+  model::TrialLog* lender_;
+  Dof dof_;
+  SharedTimes times_;
+  std::array<Signal, 3> signals_;
+  std::array<bool, 3> lent_{};
+  int compacted_ = -1;
+  std::vector<Dropped> dropped_;
+};
 
 // Aligned samples of up to four quantities, with the least-squares tools the checks need.
 struct Samples {
@@ -133,7 +256,7 @@ struct TrialCheck {
   Dof dof;
   std::string pos_name, vel_name, force_name;
   std::optional<Smoothable> pos, vel;
-  Signal force;
+  const Signal& force;
   std::vector<InputProblem>* out;
 
   bool Flagged(const std::string& column) const {
@@ -351,15 +474,21 @@ void CheckStuckSensor(TrialCheck& c) {
   }
 }
 
-void CheckTrial(const model::TrialEntry& e, const InputSanityOptions& o, std::vector<InputProblem>* out) {
-  const model::TrialLog& log = e.log;
-  const Dof dof = e.dof;
-  const std::string name(model::DofName(dof));
-  TrialCheck c{e, o, dof, "pos_" + name, "vel_" + name, "force_" + name, {}, {}, {}, out};
-  c.force = Finite(log.t, log.HasForce(dof) ? log.force[model::Index(dof)] : std::vector<double>{});
-  const double time_scale = InputTimeScale(c.force.t, c.force.y);
-  if (log.HasPosition(dof)) c.pos = SmoothableOf(Finite(log.t, log.position[model::Index(dof)]), time_scale);
-  if (log.HasVelocity(dof)) c.vel = SmoothableOf(Finite(log.t, log.velocity[model::Index(dof)]), time_scale);
+void CheckTrial(const model::TrialEntry& e, model::TrialLog* lender, const InputSanityOptions& o,
+                std::vector<InputProblem>* out) {
+  const OwnColumns columns(e.log, lender, e.dof);
+  const std::string name(model::DofName(e.dof));
+  const double time_scale = InputTimeScale(columns.force().t, columns.force().y);
+  TrialCheck c{e,
+               o,
+               e.dof,
+               "pos_" + name,
+               "vel_" + name,
+               "force_" + name,
+               SmoothableOf(columns.position(), time_scale),
+               SmoothableOf(columns.velocity(), time_scale),
+               columns.force(),
+               out};
   CheckStuckSensor(c);
   CheckRateAgainstPosition(c);
   CheckRotationRate(c);
@@ -383,7 +512,13 @@ std::string InputProblem::Text() const { return file + ": column " + column + ":
 
 std::vector<InputProblem> CheckInputSanity(const model::Campaign& campaign, const InputSanityOptions& o) {
   std::vector<InputProblem> out;
-  for (const model::TrialEntry& e : campaign.trials) CheckTrial(e, o, &out);
+  for (const model::TrialEntry& e : campaign.trials) CheckTrial(e, nullptr, o, &out);
+  return out;
+}
+
+std::vector<InputProblem> CheckInputSanity(model::Campaign* campaign, const InputSanityOptions& o) {
+  std::vector<InputProblem> out;
+  for (model::TrialEntry& e : campaign->trials) CheckTrial(e, &e.log, o, &out);
   return out;
 }
 

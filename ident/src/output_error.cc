@@ -13,6 +13,7 @@
 #include "uuvplan/ident/block_least_squares.h"
 #include "uuvplan/ident/covariance.h"
 #include "uuvplan/ident/least_squares.h"
+#include "uuvplan/ident/median_abs.h"
 #include "uuvplan/ident/significance.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/parameter.h"
@@ -70,8 +71,12 @@ struct TrialProblem {
             h * u * u * (u - 1), u};
   }
   int num_residuals() const { return static_cast<int>(pos.size() + vel.size()); }
-  // One sensor on the grid: its rows can be made while the simulation runs (Problem::Stream).
-  bool streamable() const { return !grid.empty() && (pos.size() == 0 || vel.size() == 0); }
+  // One sensor, on the grid or at its own times without a sensor delay to differentiate: its
+  // rows can be made while the simulation runs (Problem::Stream).
+  bool streamable(const model::DofModel& model) const {
+    return (pos.size() == 0 || vel.size() == 0) &&
+           (!grid.empty() || model.sensor_delay_index() < 0);
+  }
 };
 
 // The grid interval of increasing sample times, found by a forward cursor (the first g with
@@ -346,8 +351,12 @@ class Problem {
       x0[1] = tp.z_xi0 >= 0 ? z[tp.z_xi0] : tp.init.xi0;
       const model::TrialConditions c = tp.trial->conditions();
       const std::vector<double>& at = tp.grid.empty() ? tp.times() : tp.grid;
-      // ∂ŷ/∂ξ0 by a forward difference: a second, plain simulation.
+      // ∂ŷ/∂ξ0 by a forward difference: a second, plain simulation (of a streamed trial at its
+      // own times, only its sensor's values are kept).
+      const bool streamed = tp.streamable(model_);
+      const bool own_times = streamed && tp.grid.empty();
       model::Trajectory sim_xi;
+      std::vector<double> sensor_xi;
       double h_xi = 0.0;
       if (rows && tp.z_xi0 >= 0) {
         h_xi = 1e-6 * std::max(1e-3, std::abs(x0[1]));
@@ -355,9 +364,14 @@ class Problem {
         x1[1] += h_xi;
         model::SimulationOptions plain = so;
         plain.sensitivities = false;
-        sim_xi = model::SimulateMeasured(model_, theta, c, at, plain, &x1);
+        if (own_times) {
+          sensor_xi = SensorValues(tp, theta, c, plain, x1);
+        } else {
+          sim_xi = model::SimulateMeasured(model_, theta, c, at, plain, &x1);
+        }
       }
       const View tr_xi(tp, sim_xi, model_, theta, c);
+      auto x_xi = [&](int i, int g, int s) { return own_times ? sensor_xi[i] : tr_xi.x(i, g, s); };
       const int own = (tp.z_chi0 >= 0 ? 1 : 0) + (tp.z_xi0 >= 0 ? 1 : 0);
       if (rows) rows->StartBlock(tp.z_chi0 >= 0 ? tp.z_chi0 : std::max(tp.z_xi0, 0), own);
       // Row of measurement k of sensor s at time index i (grid interval g): ŷ = x, its
@@ -372,12 +386,12 @@ class Problem {
         if (!J) return;
         int col = 0;
         if (tp.z_chi0 >= 0) J[col++] = s == 0 ? -w : 0.0;
-        if (tp.z_xi0 >= 0) J[col++] = -w * (tr_xi.x(i, g, s) - x) / h_xi;
+        if (tp.z_xi0 >= 0) J[col++] = -w * (x_xi(i, g, s) - x) / h_xi;
         for (int j : free_) J[col++] = -w * S(j);
         J[col] = res;
         out.Commit(J, col, excluded);
       };
-      if (tp.streamable()) {
+      if (streamed) {
         if (!Stream(tp, theta, c, so, x0, fill)) return false;
       } else {
         const model::Trajectory sim = model::SimulateMeasured(model_, theta, c, at, so, &x0);
@@ -434,6 +448,42 @@ class Problem {
     std::vector<double> S;
   };
 
+  // The sensor's values of a plain simulation of a trial at its own times, from x0.
+  std::vector<double> SensorValues(const TrialProblem& tp, const Eigen::VectorXd& theta,
+                                   const model::TrialConditions& c,
+                                   const model::SimulationOptions& so,
+                                   const Eigen::VectorXd& x0) const {
+    const int s = tp.pos.size() > 0 ? 0 : 1;
+    std::vector<double> values;
+    values.reserve(tp.times().size());
+    model::SimulateVisiting(
+        model_, theta, c, tp.times(), so, &x0, model::Seen::kBySensors,
+        [&](std::size_t, const double* x, const double*) { values.push_back(x[s]); });
+    return values;
+  }
+
+  // The rows of a one-sensor trial at its own times, made while the simulation runs: nothing
+  // of the simulation is stored (issue #16: 40 bytes a sample of a trial binned to 200k).
+  template <class Fill>
+  bool StreamAtOwnTimes(const TrialProblem& tp, const Eigen::VectorXd& theta,
+                        const model::TrialConditions& c, const model::SimulationOptions& so,
+                        const Eigen::VectorXd& x0, const Fill& fill) const {
+    const int s = tp.pos.size() > 0 ? 0 : 1;
+    const TrialProblem::Measurements& m = s == 0 ? tp.pos : tp.vel;
+    const int np = model_.num_parameters();
+    std::size_t k = 0;
+    bool finite = true;
+    const model::OutputVisitor visit = [&](std::size_t i, const double* x, const double* S) {
+      if (!finite) return;  // diverged: Evaluate fails, its rows are not wanted
+      finite = std::all_of(x, x + model_.num_states(), [](double v) { return std::isfinite(v); });
+      for (; finite && k < m.size() && static_cast<std::size_t>(m.at(k)) == i; ++k) {
+        fill(m, s, k, static_cast<int>(i), 0, x[s], [&](int j) { return S[s * np + j]; });
+      }
+    };
+    model::SimulateVisiting(model_, theta, c, tp.times(), so, &x0, model::Seen::kBySensors, visit);
+    return finite;
+  }
+
   // The rows of a one-sensor trial on a grid, made while the simulation runs: each grid point
   // is kept until the next arrives, and the samples between the two are interpolated as View
   // does (the same numbers); the simulation with its sensitivities is never stored (16–24
@@ -443,6 +493,7 @@ class Problem {
   bool Stream(const TrialProblem& tp, const Eigen::VectorXd& theta, const model::TrialConditions& c,
               const model::SimulationOptions& so, const Eigen::VectorXd& x0,
               const Fill& fill) const {
+    if (tp.grid.empty()) return StreamAtOwnTimes(tp, theta, c, so, x0, fill);
     const int s = tp.pos.size() > 0 ? 0 : 1;
     const TrialProblem::Measurements& m = s == 0 ? tp.pos : tp.vel;
     const std::vector<double>& times = tp.times();
@@ -719,13 +770,7 @@ Eigen::VectorXd CoarseStart(const model::DofModel& model, const std::vector<cons
 // declared σ) are left out and the fit repeated once. Returns how many were left out.
 int RefitWithoutGrossErrors(Problem* p, const OutputErrorOptions& o, LmOutcome* lm,
                             int* iterations) {
-  // The median |r| from a single-precision copy (4 bytes a measurement; its relative rounding,
-  // 6e-8, is nothing on a 6σ limit).
-  std::vector<float> a(lm->r.size());
-  for (Eigen::Index i = 0; i < lm->r.size(); ++i) a[i] = static_cast<float>(std::abs(lm->r[i]));
-  std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
-  const double limit = std::max(5.0, 6.0 * 1.4826 * a[a.size() / 2]);
-  a = {};
+  const double limit = std::max(5.0, 6.0 * 1.4826 * MedianAbs(lm->r));
   const auto gross =
       std::count_if(lm->r.begin(), lm->r.end(), [&](double x) { return std::abs(x) > limit; });
   if (gross == 0 || gross >= lm->r.size() / 100 + 1) return 0;

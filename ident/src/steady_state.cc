@@ -107,18 +107,20 @@ std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetect
     const double rho = PooledNoiseAr1(fits);
     noise_ar1[from_position] = rho;
     for (SteadySegment& seg : found) seg.fit.sigma = Ar1SpeedSigma(seg.fit, rho, sigma);
-    for (const SteadySegment& seg : found) {
+    // Moved, not copied: a segment's fit holds per-sample weights and design (issue #16).
+    for (SteadySegment& seg : found) {
       bool replaced = false;
       for (std::size_t k = 0; k < segments.size(); ++k) {
         if (segments[k].piece != seg.piece) continue;
         if (seg.fit.sigma < segments[k].fit.sigma) {
-          segments[k] = seg;
+          segments[k] = std::move(seg);
           segment_from_position[k] = from_position;
         }
         replaced = true;
+        break;
       }
       if (!replaced) {
-        segments.push_back(seg);
+        segments.push_back(std::move(seg));
         segment_from_position.push_back(from_position);
       }
     }

@@ -31,7 +31,7 @@ double MedianStep(const std::vector<double>& t, std::size_t begin, std::size_t e
   std::vector<double> steps;
   steps.reserve(n / stride + 1);
   for (std::size_t i = begin + 1; i < end; i += stride) steps.push_back(t[i] - t[i - 1]);
-  return Median(steps);
+  return Median(std::move(steps));
 }
 
 namespace {

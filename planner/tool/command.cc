@@ -173,7 +173,7 @@ void AddAcceptUnitsFlag(CLI::App* sub, bool* accept) {
 
 model::Campaign ReadCampaignForIdentification(const std::string& path, bool accept_units) {
   model::Campaign campaign = io::ReadCampaign(path);
-  const std::vector<ident::InputProblem> problems = ident::CheckInputSanity(campaign);
+  const std::vector<ident::InputProblem> problems = ident::CheckInputSanity(&campaign);
   if (problems.empty()) return campaign;
   std::string text;
   for (const ident::InputProblem& p : problems) text += "\n  " + p.Text();

@@ -63,5 +63,10 @@ struct InputProblem {
 /// The unit and sign problems of every trial of `campaign` (empty: none found).
 std::vector<InputProblem> CheckInputSanity(const model::Campaign& campaign,
                                            const InputSanityOptions& options = {});
+/// As above, with the logs' columns lent to the check instead of copied (the all-finite ones,
+/// else one with few gaps compacted in place) and given back bit for bit before it returns, on
+/// an exception too: a long log's check holds no second copy of it (issue #16).
+std::vector<InputProblem> CheckInputSanity(model::Campaign* campaign,
+                                           const InputSanityOptions& options = {});
 
 }  // namespace uuvplan::ident

@@ -65,6 +65,15 @@ class SharedTimes {
   void set(std::size_t i, double t) {
     Change([i, t](std::vector<double>& v) { v[i] = t; });
   }
+  /// The times as a vector, moved out when no other copy shares them (else copied); this copy
+  /// is left empty. How times lent to signals go back to their owner (CheckInputSanity).
+  std::vector<double> Release() && {
+    std::vector<double> out;
+    if (times_) out = times_.use_count() == 1 ? std::move(*times_) : *times_;
+    times_.reset();
+    Cache();
+    return out;
+  }
   /// Any other change of the times in place, change(std::vector<double>&).
   template <class F>
   void Change(const F& change) {
