@@ -16,15 +16,10 @@
 namespace uuvplan::ident {
 namespace {
 
-TEST(InputSanityMemoryTest, LiveHeapOfTheCheckIsTheFiniteColumnsItReads) {
-  if (!uuvplan::testing::HeapCountingAvailable())
-    GTEST_SKIP() << "a sanitizer build counts no heap";
-  // ROMEO surge with a sonar-like position sensor alone at 100 Hz (the issue #16 case at 1/10
-  // of its length: 100,000 rows), force legs of ±25/50 N. The check copies the finite samples
-  // of the two columns it reads (force and position: t and value, 32 B a row) and holds O(1)
-  // more; under 40 B a row leaves room for those copies' small vectors. The dense check it
-  // replaces held the n × 3 regression matrix and its QR (48 B a row), four sample columns
-  // grown by doubling (up to 64) and the stored smoothed signal (36): about 180 B a row.
+// ROMEO surge with a sonar-like position sensor alone at 100 Hz (the issue #16 case at 1/10 of
+// its length: 100,000 rows; the force logged at 20 Hz, ~2% of the positions dropped out),
+// force legs of ±25/50 N.
+model::Campaign LongSurgeCampaign() {
   model::Truth truth = testing::CaseTruth("romeo");
   truth.vehicle.sensors[model::Dof::kSurge] = model::DofSensors{};
   truth.vehicle.sensors[model::Dof::kSurge].position = model::SensorSpec{100.0, 0.01};
@@ -32,8 +27,19 @@ TEST(InputSanityMemoryTest, LiveHeapOfTheCheckIsTheFiniteColumnsItReads) {
   for (int i = 0; legs.size() < 50; ++i) legs.push_back({(i % 2 ? -25.0 : 50.0), 20.0});
   model::VirtualCampaignOptions vo;
   vo.seed = 16;
-  const model::Campaign c = model::BuildVirtualCampaign(
+  return model::BuildVirtualCampaign(
       truth, {testing::Segments("long", model::Dof::kSurge, "surge-front", legs)}, vo);
+}
+
+TEST(InputSanityMemoryTest, LiveHeapOfTheCheckIsTheFiniteColumnsItReads) {
+  if (!uuvplan::testing::HeapCountingAvailable())
+    GTEST_SKIP() << "a sanitizer build counts no heap";
+  // The check copies the finite samples
+  // of the two columns it reads (force and position: t and value, 32 B a row) and holds O(1)
+  // more; under 40 B a row leaves room for those copies' small vectors. The dense check it
+  // replaces held the n × 3 regression matrix and its QR (48 B a row), four sample columns
+  // grown by doubling (up to 64) and the stored smoothed signal (36): about 180 B a row.
+  const model::Campaign c = LongSurgeCampaign();
   const long long rows = static_cast<long long>(c.trials.front().log.size());
   ASSERT_GT(rows, 99000);
   uuvplan::testing::StartCountingHeap();
@@ -56,15 +62,7 @@ TEST(InputSanityMemoryTest, ALentLogIsCheckedWithoutACopyAndGivenBackUnchanged) 
   // sample), the dropped rows (24 B each, twice that for the vector's doubling), MedianStep's
   // sample of at most 40,000 steps (8 B each) and 64 kB for the O(1) sums, runs and texts. A
   // copy of the position (16 B a finite sample, 1.6 MB here) does not fit under it.
-  model::Truth truth = testing::CaseTruth("romeo");
-  truth.vehicle.sensors[model::Dof::kSurge] = model::DofSensors{};
-  truth.vehicle.sensors[model::Dof::kSurge].position = model::SensorSpec{100.0, 0.01};
-  std::vector<std::pair<double, double>> legs;
-  for (int i = 0; legs.size() < 50; ++i) legs.push_back({(i % 2 ? -25.0 : 50.0), 20.0});
-  model::VirtualCampaignOptions vo;
-  vo.seed = 16;
-  model::Campaign c = model::BuildVirtualCampaign(
-      truth, {testing::Segments("long", model::Dof::kSurge, "surge-front", legs)}, vo);
+  model::Campaign c = LongSurgeCampaign();
   for (const bool gaps : {false, true}) {
     model::TrialLog& log = c.trials.front().log;
     if (gaps) {  // a gap every 997 rows (0.1%) and a sign flip that the check must still name
