@@ -94,11 +94,10 @@ class OwnColumns {
       }
     }
     for (std::size_t k = 0; k < kKinds.size(); ++k) {  // copies first: compaction moves the times
-      if (!lent_[k] && static_cast<int>(k) != compacted_)
-        signals_[k] = Finite(times_.vector(), Column(log, k));
+      if (!Owned(k)) signals_[k] = Finite(times_.vector(), Column(log, k));
     }
     for (std::size_t k = 0; k < kKinds.size(); ++k) {
-      if (!lent_[k] && static_cast<int>(k) != compacted_) continue;
+      if (!Owned(k)) continue;
       signals_[k].y = std::move(Column(*lender_, k));
       if (static_cast<int>(k) == compacted_) {
         times_.Change([&](std::vector<double>& t) { Compact(&t, &signals_[k].y); });
@@ -116,7 +115,7 @@ class OwnColumns {
     std::vector<double> t = std::move(times_).Release();
     if (compacted_ >= 0) Restore(&t, &ys[compacted_]);
     for (std::size_t k = 0; k < kKinds.size(); ++k) {
-      if (lent_[k] || static_cast<int>(k) == compacted_) Column(*lender_, k) = std::move(ys[k]);
+      if (Owned(k)) Column(*lender_, k) = std::move(ys[k]);
     }
     lender_->t = std::move(t);
   }
@@ -135,6 +134,8 @@ class OwnColumns {
     double t, y;
   };
 
+  // Whether column k is in its signal (lent or compacted), not copied.
+  bool Owned(std::size_t k) const { return lent_[k] || static_cast<int>(k) == compacted_; }
   const std::vector<double>& Column(const model::TrialLog& log, std::size_t k) const {
     return (log.*kKinds[k])[model::Index(dof_)];
   }

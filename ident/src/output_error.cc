@@ -71,6 +71,8 @@ struct TrialProblem {
             h * u * u * (u - 1), u};
   }
   int num_residuals() const { return static_cast<int>(pos.size() + vel.size()); }
+  // The state a one-sensor trial measures: 0 position, 1 velocity.
+  int sensor() const { return pos.size() > 0 ? 0 : 1; }
   // One sensor, on the grid or at its own times without a sensor delay to differentiate: its
   // rows can be made while the simulation runs (Problem::Stream).
   bool streamable(const model::DofModel& model) const {
@@ -453,7 +455,7 @@ class Problem {
                                    const model::TrialConditions& c,
                                    const model::SimulationOptions& so,
                                    const Eigen::VectorXd& x0) const {
-    const int s = tp.pos.size() > 0 ? 0 : 1;
+    const int s = tp.sensor();
     std::vector<double> values;
     values.reserve(tp.times().size());
     model::SimulateVisiting(
@@ -468,7 +470,7 @@ class Problem {
   bool StreamAtOwnTimes(const TrialProblem& tp, const Eigen::VectorXd& theta,
                         const model::TrialConditions& c, const model::SimulationOptions& so,
                         const Eigen::VectorXd& x0, const Fill& fill) const {
-    const int s = tp.pos.size() > 0 ? 0 : 1;
+    const int s = tp.sensor();
     const TrialProblem::Measurements& m = s == 0 ? tp.pos : tp.vel;
     const int np = model_.num_parameters();
     std::size_t k = 0;
@@ -494,7 +496,7 @@ class Problem {
               const model::SimulationOptions& so, const Eigen::VectorXd& x0,
               const Fill& fill) const {
     if (tp.grid.empty()) return StreamAtOwnTimes(tp, theta, c, so, x0, fill);
-    const int s = tp.pos.size() > 0 ? 0 : 1;
+    const int s = tp.sensor();
     const TrialProblem::Measurements& m = s == 0 ? tp.pos : tp.vel;
     const std::vector<double>& times = tp.times();
     const int np = model_.num_parameters();
