@@ -22,9 +22,14 @@ dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 "$build/bench/position_identify_bench" --write "$dir/campaign" --rows 1000000 >/dev/null
 csv="$(ls "$dir"/campaign/trials/*.csv)"
-echo "trial: $(wc -l <"$csv") lines, $(stat -c %s "$csv") bytes of CSV"
-best() {  # best (lowest wall) of the "wall user sys rss" lines on stdin
-  sort -n | head -1 | awk '{ printf "wall %.2f s, CPU %.2f s, peak RSS %.0f MB\n", $1, $2 + $3, $4 / 1024 }'
+csv_bytes="$(stat -c %s "$csv")"
+echo "trial: $(wc -l <"$csv") lines, $csv_bytes bytes of CSV"
+# The best (lowest wall) of the "wall user sys rss" lines on stdin, and the highest peak RSS of
+# them all (time's %M is in KiB; MB here are 10^6 bytes, the CSV's unit) against the CSV's size.
+best() {
+  sort -n | awk -v csv="$csv_bytes" 'NR == 1 { wall = $1; cpu = $2 + $3 } $4 > rss { rss = $4 }
+    END { printf "wall %.2f s, CPU %.2f s, peak RSS (highest of the runs) %.1f MB = %.2f x the CSV\n",
+                 wall, cpu, rss * 1024 / 1e6, rss * 1024 / csv }'
 }
 declare -A times
 for ((i = 0; i < runs; i++)); do

@@ -84,11 +84,11 @@ double Ar1FromFittedResiduals(const std::vector<FittedResiduals>& fits) {
   double num = 0.0, den = 0.0, N = 0.0;
   std::vector<const Eigen::MatrixXd*> bases;
   for (const FittedResiduals& f : fits) {
-    if (f.Q.rows() <= f.Q.cols() + 2 || !(f.sum_sq > 0)) continue;
-    bases.push_back(&f.Q);
+    if (!f.basis || f.basis->Q.rows() <= f.basis->Q.cols() + 2 || !(f.sum_sq > 0)) continue;
+    bases.push_back(&f.basis->Q);
     num += f.sum_lag1;
     den += f.sum_sq;
-    N += static_cast<double>(f.Q.rows());
+    N += static_cast<double>(f.basis->Q.rows());
   }
   if (!(den > 0) || num / den <= 2.0 / std::sqrt(N)) return 0.0;
   const double observed = num / den;
@@ -116,10 +116,10 @@ double Ar1FromResidualVariance(const std::vector<FittedResiduals>& fits, double 
   double observed = 0.0, dof = 0.0;
   std::vector<const Eigen::MatrixXd*> bases;
   for (const FittedResiduals& f : fits) {
-    if (f.Q.rows() <= f.Q.cols() + 2) continue;
-    bases.push_back(&f.Q);
+    if (!f.basis || f.basis->Q.rows() <= f.basis->Q.cols() + 2) continue;
+    bases.push_back(&f.basis->Q);
     observed += f.sum_sq;
-    dof += static_cast<double>(f.Q.rows() - f.Q.cols());
+    dof += static_cast<double>(f.basis->Q.rows() - f.basis->Q.cols());
   }
   if (bases.empty() || !(sigma > 0)) return 0.0;
   // White Gaussian noise makes Σr²/σ² a χ² of Σ(n − q) degrees (mean dof, sd √(2·dof)): ρ is 0

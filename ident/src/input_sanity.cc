@@ -25,7 +25,7 @@ constexpr double kDegreesPerRadian = 180.0 / M_PI;
 constexpr std::size_t kMinSamples = 30;  // fewer aligned samples: no verdict
 
 // The finite samples of a log column.
-Signal Finite(const std::vector<double>& t, const std::vector<double>& y) {
+Signal Finite(model::TimesView t, const std::vector<double>& y) {
   Signal s;
   const std::size_t n = std::min(t.size(), y.size());
   const auto finite = static_cast<std::size_t>(
@@ -94,7 +94,7 @@ class OwnColumns {
       }
     }
     for (std::size_t k = 0; k < kKinds.size(); ++k) {  // copies first: compaction moves the times
-      if (!Owned(k)) signals_[k] = Finite(times_.vector(), Column(log, k));
+      if (!Owned(k)) signals_[k] = Finite(times_, Column(log, k));
     }
     for (std::size_t k = 0; k < kKinds.size(); ++k) {
       if (!Owned(k)) continue;
@@ -288,7 +288,7 @@ IncrementRatio RateAgainstIncrements(const Signal& pos, const Signal& vel, doubl
   if (pos.size() < 2 || vel.size() < 2) return out;
   const double step = MedianStep(pos.t, 0, pos.size());
   const std::size_t k = std::max<std::size_t>(5, static_cast<std::size_t>(window_s / step));
-  const std::vector<double>& vt = vel.t;
+  const SharedTimes& vt = vel.t;
   auto integral = [&](double a, double b) {  // ∫_a^b rate dt, trapezoids
     if (a < vt.front() || b > vt.back()) return std::nan("");
     std::size_t i = std::upper_bound(vt.begin(), vt.end(), a) - vt.begin();

@@ -96,7 +96,8 @@ void AddRuns(const model::DofModel& model, const TrialData& trial, const Eigen::
   const SmoothedSignal& v = trial.velocity_estimate;
   const double input_sigma = trial.velocity_from_position ? trial.position_sigma : trial.velocity_sigma;
   const bool raw = o.raw_measured_velocity && !trial.velocity_from_position &&
-                   trial.velocity.size() == v.size() && trial.velocity.t.vector() == v.t.vector();
+                   trial.velocity.size() == v.size() &&
+                   std::equal(v.t.begin(), v.t.end(), trial.velocity.t.begin());
   SmoothedSignal raw_signal;
   if (raw) {
     raw_signal = v;

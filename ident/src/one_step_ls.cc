@@ -43,77 +43,141 @@ bool OneStepOptions::IsValid(std::string* error) const {
                  "OneStepOptions: max_step_s > 0, max_condition > 1, newey_west_lags >= 0", error);
 }
 
-OneStepRows BuildOneStepRows(const model::DofModel& model,
-                             const std::vector<const TrialData*>& trials,
-                             const Eigen::VectorXd& theta, const std::vector<int>& free,
-                             const OneStepOptions& o, const std::vector<SmoothedSignal>* instrument,
-                             double velocity_shift) {
-  OneStepRows rows;
-  rows.free = free;
-  const int np = model.num_parameters();
-  const std::vector<int> linear = LinearParameters(model);
-  std::vector<int> fixed_linear;
-  for (int j : linear) {
-    if (std::find(free.begin(), free.end(), j) == free.end()) fixed_linear.push_back(j);
+namespace {
+
+// One run's knots (seed 002 eq. 20's integration intervals): samples of the velocity estimate
+// at least `window` apart, as indices; and the trial they belong to.
+struct KnotRun {
+  std::size_t trial = 0;
+  std::vector<std::size_t> knots;
+};
+
+std::vector<std::size_t> RunKnots(const SmoothedSignal& v, std::size_t begin, std::size_t end,
+                                  double window) {
+  std::vector<std::size_t> knots;
+  for (std::size_t i = begin; i < end; ++i) {
+    if (!knots.empty() && v.t[i] - v.t[knots.back()] < window - 1e-9) continue;
+    knots.push_back(i);
   }
-  int run_counter = 0;
-  const std::size_t cols = 1 + free.size();
-  std::vector<double> F;  // row-major, `cols` a row (one heap block, not one a row)
-  std::vector<double> Y;
-  double noise_var_sum = 0.0;
-  int noise_count = 0;
+  return knots;
+}
+
+// Every trial's runs of at least two knots, in order; the knot spacing is one SG window (its
+// span in time) unless told otherwise.
+std::vector<KnotRun> KnotRuns(const std::vector<const TrialData*>& trials,
+                              const OneStepOptions& o) {
+  std::vector<KnotRun> out;
   for (std::size_t ti = 0; ti < trials.size(); ++ti) {
-    const TrialData* trial = trials[ti];
-    const SmoothedSignal& v = trial->velocity_estimate;
-    const double row_var = 2.0 * std::pow(VelocityNoiseSigma(*trial), 2);
-    if (row_var > 0) {
-      noise_var_sum += row_var;
-      ++noise_count;
-    }
-    // Knot spacing: one SG window (its span in time) unless told otherwise.
+    const TrialData& trial = *trials[ti];
+    const SmoothedSignal& v = trial.velocity_estimate;
     double window = o.window_s;
     if (window < 0) {
       const double span = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
-      window = span * (trial->sg_window - 1);
+      window = span * (trial.sg_window - 1);
     }
-    for (const auto& [begin, end] : SmoothRuns(*trial, o.split_at_force_jumps)) {
-      std::vector<double> kt, kx;
-      for (std::size_t i = begin; i < end; ++i) {
-        if (!kt.empty() && v.t[i] - kt.back() < window - 1e-9) continue;
-        kt.push_back(v.t[i]);
-        kx.push_back(v.value[i]);
-      }
-      if (kt.size() < 2) continue;
-      const IntegratedRegressors ir =
-          IntegrateRegressors(model, *trial, kt, theta, o.max_step_s,
-                              instrument ? &(*instrument)[ti] : nullptr, velocity_shift);
-      for (std::size_t k = 0; k + 1 < kt.size(); ++k) {
-        double known = ir.h0[k];
-        for (int j : fixed_linear) known += theta[j] * ir.H(k, j);
-        F.push_back(known);
-        for (int j : free) F.push_back(ir.H(k, j));
-        Y.push_back(kx[k + 1] - kx[k]);
-        rows.t.push_back(kt[k + 1]);
-        rows.group.push_back(trial->index);
-        rows.run.push_back(run_counter);
-        rows.weight.push_back(row_var > 0 ? 1.0 / row_var : -1.0);
-      }
-      ++run_counter;
+    for (const auto& [begin, end] : SmoothRuns(trial, o.split_at_force_jumps)) {
+      std::vector<std::size_t> knots = RunKnots(v, begin, end, window);
+      if (knots.size() >= 2) out.push_back({ti, std::move(knots)});
     }
   }
-  (void)np;
-  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  rows.F = Eigen::Map<const RowMajor>(F.data(), static_cast<Eigen::Index>(Y.size()),
-                                      static_cast<Eigen::Index>(cols));
-  F = {};
-  rows.Y = Eigen::Map<const Eigen::VectorXd>(Y.data(), static_cast<Eigen::Index>(Y.size()));
-  rows.noise_sigma = noise_count > 0 ? std::sqrt(noise_var_sum / noise_count) : 0.0;
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+// The rows of BuildOneStepRows into `F`, and with `rows` Y and the bookkeeping (knot times,
+// groups, runs, weights, noise σ); along `instrument` or a shifted velocity as
+// OneStepRegressors. Sized once: grown by doubling, a million-sample trial's rows held up to
+// twice their size at the one-step stage's peak (issue #16).
+void FillRows(const model::DofModel& model, const std::vector<const TrialData*>& trials,
+              const Eigen::VectorXd& theta, const std::vector<int>& free, const OneStepOptions& o,
+              const std::vector<SmoothedSignal>* instrument, double velocity_shift,
+              Eigen::MatrixXd* F, OneStepRows* rows) {
+  std::vector<int> fixed_linear;
+  for (int j : LinearParameters(model)) {
+    if (std::find(free.begin(), free.end(), j) == free.end()) fixed_linear.push_back(j);
+  }
+  const std::vector<KnotRun> runs = KnotRuns(trials, o);
+  std::size_t n_rows = 0;
+  for (const KnotRun& run : runs) n_rows += run.knots.size() - 1;
+  F->resize(static_cast<Eigen::Index>(n_rows), static_cast<Eigen::Index>(1 + free.size()));
+  Eigen::Index r = 0;
+  for (const KnotRun& run : runs) {
+    const TrialData* trial = trials[run.trial];
+    const SmoothedSignal& v = trial->velocity_estimate;
+    std::vector<double> kt(run.knots.size());
+    for (std::size_t k = 0; k < run.knots.size(); ++k) kt[k] = v.t[run.knots[k]];
+    const IntegratedRegressors ir =
+        IntegrateRegressors(model, *trial, kt, theta, o.max_step_s,
+                            instrument ? &(*instrument)[run.trial] : nullptr, velocity_shift);
+    for (std::size_t k = 0; k + 1 < run.knots.size(); ++k, ++r) {
+      double known = ir.h0[k];
+      for (int j : fixed_linear) known += theta[j] * ir.H(k, j);
+      (*F)(r, 0) = known;
+      for (std::size_t c = 0; c < free.size(); ++c) {
+        (*F)(r, static_cast<Eigen::Index>(c + 1)) = ir.H(k, free[c]);
+      }
+    }
+  }
+  if (!rows) return;
+  std::vector<double> row_var(trials.size());
+  double noise_var_sum = 0.0;
+  int noise_count = 0;
+  for (std::size_t ti = 0; ti < trials.size(); ++ti) {
+    row_var[ti] = 2.0 * std::pow(VelocityNoiseSigma(*trials[ti]), 2);
+    if (row_var[ti] > 0) {
+      noise_var_sum += row_var[ti];
+      ++noise_count;
+    }
+  }
+  rows->noise_sigma = noise_count > 0 ? std::sqrt(noise_var_sum / noise_count) : 0.0;
   // Rows of trials without a known noise take the mean weight.
-  const double mean_w = rows.noise_sigma > 0 ? 1.0 / (rows.noise_sigma * rows.noise_sigma) : 1.0;
-  for (double& w : rows.weight) {
-    if (!(w > 0)) w = mean_w;
+  const double mean_w = rows->noise_sigma > 0 ? 1.0 / (rows->noise_sigma * rows->noise_sigma) : 1.0;
+  rows->Y.resize(static_cast<Eigen::Index>(n_rows));
+  rows->t.reserve(n_rows);
+  rows->group.reserve(n_rows);
+  rows->run.reserve(n_rows);
+  rows->weight.reserve(n_rows);
+  r = 0;
+  for (std::size_t ri = 0; ri < runs.size(); ++ri) {
+    const std::vector<std::size_t>& knots = runs[ri].knots;
+    const TrialData* trial = trials[runs[ri].trial];
+    const SmoothedSignal& v = trial->velocity_estimate;
+    const double var = row_var[runs[ri].trial];
+    for (std::size_t k = 0; k + 1 < knots.size(); ++k, ++r) {
+      rows->Y[r] =
+          static_cast<double>(v.value[knots[k + 1]]) - static_cast<double>(v.value[knots[k]]);
+      rows->t.push_back(v.t[knots[k + 1]]);
+      rows->group.push_back(trial->index);
+      rows->run.push_back(static_cast<int>(ri));
+      rows->weight.push_back(var > 0 ? 1.0 / var : mean_w);
+    }
   }
+}
+
+}  // namespace
+
+OneStepRows BuildOneStepRows(const model::DofModel& model,
+                             const std::vector<const TrialData*>& trials,
+                             const Eigen::VectorXd& theta, const std::vector<int>& free,
+                             const OneStepOptions& o) {
+  OneStepRows rows;
+  rows.free = free;
+  FillRows(model, trials, theta, free, o, nullptr, 0.0, &rows.F, &rows);
   return rows;
+}
+
+Eigen::MatrixXd OneStepRegressors(const model::DofModel& model,
+                                  const std::vector<const TrialData*>& trials,
+                                  const Eigen::VectorXd& theta, const std::vector<int>& free,
+                                  const OneStepOptions& o,
+                                  const std::vector<SmoothedSignal>* instrument,
+                                  double velocity_shift) {
+  Eigen::MatrixXd F;
+  FillRows(model, trials, theta, free, o, instrument, velocity_shift, &F, nullptr);
+  return F;
 }
 
 void PsiToPhysical(const model::DofModel& model, const Eigen::VectorXd& theta_given,
@@ -324,12 +388,12 @@ Eigen::VectorXd RowSensitivity(const OneStepDofInput& in, const OneStepRows& R,
   // The regressors along the velocities shifted by ±dv (not copied: a copy of every trial's
   // estimate was 24 MB for a million samples).
   auto rows_shifted = [&](double shift) {
-    return BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, nullptr, shift);
+    return OneStepRegressors(*in.model, in.trials, in.theta, R.free, o, nullptr, shift);
   };
-  const OneStepRows Fp = rows_shifted(dv);
-  const OneStepRows Fm = rows_shifted(-dv);
-  if (Fp.F.rows() != nr || Fm.F.rows() != nr) return Eigen::VectorXd::Zero(nr);
-  return sw.cwiseProduct((Fp.F - Fm.F) * psi) / (2.0 * dv);
+  const Eigen::MatrixXd Fp = rows_shifted(dv);
+  const Eigen::MatrixXd Fm = rows_shifted(-dv);
+  if (Fp.rows() != nr || Fm.rows() != nr) return Eigen::VectorXd::Zero(nr);
+  return sw.cwiseProduct((Fp - Fm) * psi) / (2.0 * dv);
 }
 
 }  // namespace
@@ -345,20 +409,22 @@ bool OneStepInstruments(const OneStepDofInput& in, const OneStepRows& R, const O
                         Eigen::MatrixXd* F_corrected) {
   std::vector<SmoothedSignal> fine, sampled;
   if (!SimulatedVelocities(*in.model, in.trials, theta_now, o, &fine, &sampled)) return false;
-  OneStepRows Zr = BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &fine);
+  Eigen::MatrixXd Zr = OneStepRegressors(*in.model, in.trials, in.theta, R.free, o, &fine);
   // The interpolation defect Z − Zs is zero where the samples are the fine grid (empty).
   const bool defect = std::any_of(sampled.begin(), sampled.end(),
                                   [](const SmoothedSignal& s) { return !s.t.empty(); });
   for (std::size_t i = 0; defect && i < sampled.size(); ++i) {
-    if (sampled[i].t.empty()) sampled[i] = fine[i];
+    if (sampled[i].t.empty()) sampled[i] = std::move(fine[i]);
   }
+  fine = {};  // 12 bytes a fine-grid point, gone before Zs is built
   // Without a defect Zs is Z itself (not a copy: its rows are 40 bytes a row).
-  const OneStepRows Zs_built =
-      defect ? BuildOneStepRows(*in.model, in.trials, in.theta, R.free, o, &sampled) : OneStepRows{};
-  const OneStepRows& Zs = defect ? Zs_built : Zr;
-  if (Zr.F.rows() != R.F.rows() || Zs.F.rows() != R.F.rows()) return false;
-  *F_corrected = R.F + (Zr.F - Zs.F);
-  *Z = std::move(Zr.F);
+  const Eigen::MatrixXd Zs_built =
+      defect ? OneStepRegressors(*in.model, in.trials, in.theta, R.free, o, &sampled)
+             : Eigen::MatrixXd();
+  const Eigen::MatrixXd& Zs = defect ? Zs_built : Zr;
+  if (Zr.rows() != R.F.rows() || Zs.rows() != R.F.rows()) return false;
+  *F_corrected = R.F + (Zr - Zs);
+  *Z = std::move(Zr);
   return true;
 }
 
@@ -512,15 +578,21 @@ std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofIn
   std::vector<OneStepDofResult> results(dofs.size());
   std::vector<OneStepRows> rows(dofs.size());
   for (std::size_t d = 0; d < dofs.size(); ++d) rows[d] = DofRows(dofs[d], o, &results[d]);
-  const StackedSystem s = Stack(dofs, rows);
   LeastSquaresOptions lso;
   lso.covariance = o.covariance;
   lso.newey_west_lags = o.newey_west_lags;
   lso.truncated_kernel = true;  // consecutive rows share an endpoint: MA(1), weight 1
   lso.max_condition = o.max_condition;
-  const LinearFit fit = SolveLeastSquares(s.F, s.Y, &s.W, lso, &s.groups);
+  LinearFit fit;
+  std::vector<int> row0, col0;
+  {  // the stacked copy of the rows gone before the IV iterations (issue #16: their peak)
+    const StackedSystem s = Stack(dofs, rows);
+    fit = SolveLeastSquares(s.F, s.Y, &s.W, lso, &s.groups);
+    row0 = s.row0;
+    col0 = s.col0;
+  }
   for (std::size_t d = 0; d < dofs.size(); ++d) {
-    SolveDof(dofs[d], rows[d], fit, s.row0[d], s.col0[d], o, lso, &results[d]);
+    SolveDof(dofs[d], rows[d], fit, row0[d], col0[d], o, lso, &results[d]);
   }
   return results;
 }

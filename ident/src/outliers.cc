@@ -260,7 +260,7 @@ Signal RemoveSamples(const Signal& s, const std::vector<Outlier>& outliers) {
   return out;
 }
 
-std::vector<Gap> FindGaps(const std::vector<double>& t, double factor) {
+std::vector<Gap> FindGaps(model::TimesView t, double factor) {
   std::vector<Gap> gaps;
   if (t.size() < 3) return gaps;
   const double h = MedianStep(t, 0, t.size());

@@ -31,8 +31,8 @@ struct TrialProblem {
   // The sorted union of the used sample times: owned, or the trial's own sample times when one
   // sensor is used sample by sample (not copied: 8 bytes a sample).
   std::vector<double> times_owned;
-  const std::vector<double>* times_ref = nullptr;
-  const std::vector<double>& times() const { return times_ref ? *times_ref : times_owned; }
+  const SharedTimes* times_ref = nullptr;
+  model::TimesView times() const { return times_ref ? times_ref->view() : times_owned; }
   // One sensor's measurements: measurement k is at times[at(k)], value y(k), weight w(k)
   // (1/σ, √n/σ for a bin). The index is not stored when it is k itself (one sensor), nor the
   // weights when they are all equal (unbinned), nor the values when they are the trial's own
@@ -225,7 +225,7 @@ class Problem {
         const double sigma = use_pos ? d->position_sigma : d->velocity_sigma;
         m.w_all = 1.0 / (sigma > 0 ? sigma : 1.0);  // as Bin's
         m.y_ref = &only->y;
-        tp.times_ref = &only->t.vector();
+        tp.times_ref = &only->t;
       } else {
         Binned pos =
             use_pos ? Bin(d->position, d->position_sigma, o.bin_s, d->breakpoints) : Binned{};
@@ -266,7 +266,7 @@ class Problem {
           // sample is a fine start for a parameter that enters linearly.
         }
       }
-      const std::vector<double>& times = tp.times();
+      const model::TimesView times = tp.times();
       if (o.grid_s > 0 && model.sensor_delay_index() < 0 && !times.empty()) {
         // Grid: every breakpoint, and points at most grid_s apart in between.
         std::vector<double> grid = {0.0};
@@ -352,7 +352,7 @@ class Problem {
       x0[0] = tp.z_chi0 >= 0 ? z[tp.z_chi0] : tp.init.chi0;
       x0[1] = tp.z_xi0 >= 0 ? z[tp.z_xi0] : tp.init.xi0;
       const model::TrialConditions c = tp.trial->conditions();
-      const std::vector<double>& at = tp.grid.empty() ? tp.times() : tp.grid;
+      const model::TimesView at = tp.grid.empty() ? tp.times() : tp.grid;
       // ∂ŷ/∂ξ0 by a forward difference: a second, plain simulation (of a streamed trial at its
       // own times, only its sensor's values are kept).
       const bool streamed = tp.streamable(model_);
@@ -498,7 +498,7 @@ class Problem {
     if (tp.grid.empty()) return StreamAtOwnTimes(tp, theta, c, so, x0, fill);
     const int s = tp.sensor();
     const TrialProblem::Measurements& m = s == 0 ? tp.pos : tp.vel;
-    const std::vector<double>& times = tp.times();
+    const model::TimesView times = tp.times();
     const int np = model_.num_parameters();
     const std::size_t last = tp.grid.size() - 1;
     GridPoint left, right;

@@ -54,7 +54,7 @@ model::TermContext MeasuredContext(const model::DofModel& model, const TrialData
 }
 
 IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const TrialData& trial,
-                                         const std::vector<double>& b, const Eigen::VectorXd& theta,
+                                         model::TimesView b, const Eigen::VectorXd& theta,
                                          double max_step, const SmoothedSignal* velocity_source,
                                          double velocity_shift) {
   IntegratedRegressors out;

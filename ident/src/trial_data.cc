@@ -37,6 +37,7 @@ Signal KeptSamples(std::vector<double> times, std::vector<double> y, double offs
   }
   Signal s;
   s.t = std::move(times);
+  s.t.CompactUniform(offset);  // a log on a uniform decimal clock: its times not stored
   s.y = std::move(y);
   return s;
 }
@@ -164,16 +165,16 @@ namespace {
 // that stops before the measurements), kept when it is longer than 1 s and 10 median steps
 // (TrialData::force_gap_t0).
 void FindForceGap(TrialData* d) {
-  const std::vector<double>& t = d->force_t;
+  const SharedTimes& t = d->force_t;
   if (t.size() < 3) return;
-  std::vector<double> steps(t.size() - 1);
+  std::vector<double> steps(t.size() - 1);  // one copy (a second was the prep's peak, #16)
   for (std::size_t i = 1; i < t.size(); ++i) steps[i - 1] = t[i] - t[i - 1];
-  std::vector<double> sorted = steps;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double median = sorted[sorted.size() / 2];
+  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+  const double median = steps[steps.size() / 2];
+  steps = {};
   double t0 = 0.0, t1 = 0.0;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    if (steps[i] > t1 - t0) t0 = t[i], t1 = t[i + 1];
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    if (t[i + 1] - t[i] > t1 - t0) t0 = t[i], t1 = t[i + 1];
   }
   if (d->duration - t.back() > t1 - t0) t0 = t.back(), t1 = d->duration;
   if (t1 - t0 > std::max(1.0, 10.0 * median)) d->force_gap_t0 = t0, d->force_gap_t1 = t1;
@@ -207,18 +208,21 @@ void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle,
   // Sized once (grown by doubling they held up to twice their rows for the whole identification).
   const auto rows = static_cast<std::size_t>(
       std::count_if(fcol.begin(), fcol.end(), [](double f) { return !std::isnan(f); }));
-  d->force_t.reserve(rows);
+  std::vector<double> force_t;
+  force_t.reserve(rows);
   d->force.reserve(rows);
   d->mapping.reserve(rows);
   for (std::size_t i = 0; i < fcol.size(); ++i) {
     if (std::isnan(fcol[i])) continue;
     int m = default_mapping;
     if (!log.mapping.empty() && log.mapping[i] >= 0) m = name_to_vehicle[log.mapping[i]];
-    d->force_t.push_back(log.t[i] - d->time_offset);
+    force_t.push_back(log.t[i] - d->time_offset);
     d->force.push_back(fcol[i]);
     d->mapping.push_back(m);
     if (m >= 0) used[m] = 1;
   }
+  d->force_t = std::move(force_t);
+  d->force_t.CompactUniform(d->time_offset);
   if (d->force.empty()) {
     throw model::InputError(where, "column force_" + dof_name +
                                        " has no value (all cells empty or NaN): expected the "
@@ -376,7 +380,7 @@ void CleanMeasurements(Measurements m, const model::Vehicle& vehicle, const Tria
 }
 
 // Samples in the longest stretch of `t` without a gap (the filter does not cross gaps).
-int LongestRun(const std::vector<double>& t, const std::vector<Gap>& gaps) {
+int LongestRun(model::TimesView t, const std::vector<Gap>& gaps) {
   std::ptrdiff_t longest = 0;
   auto begin = t.begin();
   for (const Gap& g : gaps) {  // in time order (FindGaps)

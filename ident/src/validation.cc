@@ -107,8 +107,7 @@ struct SampleTimes {
   std::size_t count = 0;
   double first = 0.0, last = 0.0;
 };
-SampleTimes MergedTimes(const std::vector<double>& a, const std::vector<double>& b,
-                        std::vector<double>* out) {
+SampleTimes MergedTimes(model::TimesView a, model::TimesView b, std::vector<double>* out) {
   SampleTimes s;
   auto i = static_cast<std::size_t>(std::lower_bound(a.begin(), a.end(), 0.0) - a.begin());
   auto j = static_cast<std::size_t>(std::lower_bound(b.begin(), b.end(), 0.0) - b.begin());
@@ -164,7 +163,7 @@ bool Dense(const SampleTimes& span, double step_s) {
 class FreeRun {
  public:
   FreeRun(const model::DofModel& model, const Eigen::VectorXd& theta, const TrialData& trial,
-          const std::vector<double>& velocity_times, double step_s, Eigen::VectorXd x0) {
+          model::TimesView velocity_times, double step_s, Eigen::VectorXd x0) {
     const SampleTimes span = MergedTimes(velocity_times, trial.position.t, nullptr);
     if (span.count == 0) return;
     dense_ = Dense(span, step_s);
@@ -279,7 +278,7 @@ void ScoreStoredFreeRun(const model::DofModel& model, const Eigen::VectorXd& the
                         const TrialData& trial, double step_s, Eigen::VectorXd x0, TrialFit* f,
                         std::vector<float>* perr, std::vector<double>* verr) {
   // An estimated velocity's times are a subset of the positions' (its samples are theirs).
-  const std::vector<double>& vtimes = trial.has_velocity() ? trial.velocity.t : trial.position.t;
+  const SharedTimes& vtimes = trial.has_velocity() ? trial.velocity.t : trial.position.t;
   FreeRun run(model, theta, trial, vtimes, step_s, std::move(x0));
   if (run.empty()) return;
   const bool keep_velocity = !trial.has_position() || trial.position.t.back() < 0;

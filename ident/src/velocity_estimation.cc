@@ -23,7 +23,7 @@ double Median(std::vector<double> v) {
 
 }  // namespace
 
-double MedianStep(const std::vector<double>& t, std::size_t begin, std::size_t end) {
+double MedianStep(model::TimesView t, std::size_t begin, std::size_t end) {
   if (end <= begin + 1) return kNaN;
   const std::size_t n = end - begin - 1;
   // At most ~20,000 evenly spread steps: the median of a long record to well within 1%.
@@ -37,8 +37,7 @@ double MedianStep(const std::vector<double>& t, std::size_t begin, std::size_t e
 namespace {
 
 // Runs of samples separated by steps longer than gap_factor × the median step: [begin, end).
-std::vector<std::pair<std::size_t, std::size_t>> Runs(const std::vector<double>& t,
-                                                      double gap_factor) {
+std::vector<std::pair<std::size_t, std::size_t>> Runs(model::TimesView t, double gap_factor) {
   std::vector<std::pair<std::size_t, std::size_t>> runs;
   if (t.empty()) return runs;
   const double h = t.size() < 2 ? 1.0 : MedianStep(t, 0, t.size());
@@ -236,7 +235,7 @@ int ChosenWindow(int given, double rate_hz, double input_time_scale_s) {
   return given > 0 ? given : SavitzkyGolayWindow(rate_hz, input_time_scale_s);
 }
 
-double InputTimeScale(const std::vector<double>& t, const std::vector<double>& f) {
+double InputTimeScale(model::TimesView t, const std::vector<double>& f) {
   if (f.size() < 3) return 0.0;
   double lo = f[0], hi = f[0], mean = 0.0;
   for (double v : f) {
@@ -383,7 +382,7 @@ double PositionNoiseAr1(const Signal& position, const SavitzkyGolayOptions& opti
       y[i] = position.y[a + i];
     }
     const Eigen::VectorXd r = y - X * X.colPivHouseholderQr().solve(y);
-    f.Q = OrthonormalBasis(X);
+    f.basis = std::make_shared<const ColumnBasis>(ColumnBasis{OrthonormalBasis(X)});
     f.sum_sq = r.squaredNorm();
     f.sum_lag1 = r.head(w - 1).dot(r.tail(w - 1));
     sets.push_back(std::move(f));
@@ -437,9 +436,10 @@ SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap
     std::vector<double> d(m), y(p.y.begin() + b, p.y.begin() + e);
     // Central differences (exact for parabolas on any grid: the derivative of the parabola
     // through three points at the middle one), second-order one-sided at the ends.
-    const double* t = p.t.data() + b;  // a structured binding cannot be captured before C++20
+    const std::size_t first = b;  // a structured binding cannot be captured before C++20
+    auto t = [&](std::size_t i) { return p.t[first + i]; };
     auto parabola_slope = [&](std::size_t i0, std::size_t at) {
-      const double t0 = t[i0], t1 = t[i0 + 1], t2 = t[i0 + 2], x = t[at];
+      const double t0 = t(i0), t1 = t(i0 + 1), t2 = t(i0 + 2), x = t(at);
       const double y0 = y[i0], y1 = y[i0 + 1], y2 = y[i0 + 2];
       return y0 * (2 * x - t1 - t2) / ((t0 - t1) * (t0 - t2)) +
              y1 * (2 * x - t0 - t2) / ((t1 - t0) * (t1 - t2)) +
@@ -517,11 +517,13 @@ SpeedFit ConstantSpeedFit(const Signal& s, double t0, double t1, double known_si
   // Eq. 11 for the slope: σ_v² = σ_ε² / Σ(t − t̄)².
   SetSpeedSigma(r, 2, known_sigma, stt, &f);
   f.fitted = 2;
-  f.design.assign(n, 1.0);
+  Eigen::MatrixXd design(n, 2);
   for (auto i = lo; i < hi; ++i) {
     f.weights.push_back((s.t[i] - tm) / stt);
-    f.design.push_back(s.t[i] - tm);
+    design(i - lo, 0) = 1.0;
+    design(i - lo, 1) = s.t[i] - tm;
   }
+  f.basis = std::make_shared<const ColumnBasis>(ColumnBasis{OrthonormalBasis(design)});
   return f;
 }
 
@@ -539,7 +541,8 @@ SpeedFit MeanSpeedFit(const Signal& s, double t0, double t1, double known_sigma)
   SetSpeedSigma(r, 1, known_sigma, static_cast<double>(n), &f);
   f.fitted = 1;
   f.weights.assign(n, 1.0 / n);
-  f.design.assign(n, 1.0);
+  f.basis = std::make_shared<const ColumnBasis>(
+      ColumnBasis{OrthonormalBasis(Eigen::MatrixXd::Ones(n, 1))});
   return f;
 }
 
@@ -657,7 +660,7 @@ SettlingFit SettlingSpeedFit(const Signal& s, bool is_position, double t0, doubl
   const Eigen::VectorXd w = J.leftCols(q) * Ninv.col(iv);
   f.weights.assign(w.data(), w.data() + n);
   f.fitted = q;
-  f.design.assign(J.data(), J.data() + static_cast<std::ptrdiff_t>(n) * q);
+  f.basis = std::make_shared<const ColumnBasis>(ColumnBasis{OrthonormalBasis(J.leftCols(q))});
   std::vector<double> r(n);
   for (int i = 0; i < n; ++i) {
     const double arg = (s.t[lo + i] - start) / tau;
@@ -784,9 +787,9 @@ std::vector<SteadySegment> DetectSteadySegments(const Signal& s, bool is_positio
 double PooledNoiseAr1(const std::vector<const SpeedFit*>& fits) {
   std::vector<FittedResiduals> sets;
   for (const SpeedFit* f : fits) {
-    if (!f->ok || f->fitted < 1 || f->design.size() != std::size_t(f->n) * f->fitted) continue;
+    if (!f->ok || f->fitted < 1 || !f->basis || f->basis->Q.rows() != f->n) continue;
     FittedResiduals r;
-    r.Q = OrthonormalBasis(Eigen::Map<const Eigen::MatrixXd>(f->design.data(), f->n, f->fitted));
+    r.basis = f->basis;  // shared, not computed again here
     r.sum_sq = f->residual_sd * f->residual_sd * (f->n - f->fitted);
     r.sum_lag1 = f->lag1 * r.sum_sq;
     sets.push_back(std::move(r));
@@ -806,7 +809,7 @@ double Ar1SpeedSigma(const SpeedFit& fit, double rho, double noise_sigma) {
 }
 
 template <class Real>
-double Interpolate(const std::vector<double>& t, const std::vector<Real>& y, double at) {
+double Interpolate(model::TimesView t, const std::vector<Real>& y, double at) {
   if (t.empty()) return kNaN;
   if (at <= t.front()) return y.front();
   if (at >= t.back()) return y.back();
@@ -816,8 +819,8 @@ double Interpolate(const std::vector<double>& t, const std::vector<Real>& y, dou
   const double y0 = y[i - 1], y1 = y[i];
   return y0 + w * (y1 - y0);
 }
-template double Interpolate(const std::vector<double>&, const std::vector<double>&, double);
-template double Interpolate(const std::vector<double>&, const std::vector<float>&, double);
+template double Interpolate(model::TimesView, const std::vector<double>&, double);
+template double Interpolate(model::TimesView, const std::vector<float>&, double);
 
 double NoiseSigmaFromDifferences(const Signal& s) {
   if (s.size() < 8) return kNaN;

@@ -194,8 +194,8 @@ std::unique_ptr<Excitation> MakeSegmentsExcitation(std::vector<Segment> segments
   return std::make_unique<HeldExcitation>(std::move(t), std::move(force), std::move(mapping), now);
 }
 
-std::unique_ptr<Excitation> MakeHeldExcitation(std::vector<double> t, std::vector<double> force,
-                                               std::vector<int> mapping, double duration) {
+std::unique_ptr<Excitation> MakeHeldExcitation(TimesView t, const std::vector<double>& force,
+                                               const std::vector<int>& mapping, double duration) {
   // Drop samples without a force value: the previous command holds (zero-order hold). A row
   // that repeats the previous command changes nothing and is not kept (a log at 100 Hz of
   // legs of 10–40 s holds 1,000–4,000 rows per command; issue #16).

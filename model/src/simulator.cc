@@ -23,7 +23,7 @@ inline double Inside(double t, double a, double b) {
 
 // Throws std::invalid_argument on a step <= 0 or unsorted or negative output times, and
 // InputError when the simulation would take more than limits::kMaxSimulationSteps steps.
-void CheckOutputTimes(const std::vector<double>& output_times, const SimulationOptions& options) {
+void CheckOutputTimes(TimesView output_times, const SimulationOptions& options) {
   if (!(options.step_s > 0)) throw std::invalid_argument("SimulationOptions::step_s must be > 0");
   if (!std::is_sorted(output_times.begin(), output_times.end()) ||
       (!output_times.empty() && output_times.front() < 0)) {
@@ -37,11 +37,10 @@ void CheckOutputTimes(const std::vector<double>& output_times, const SimulationO
 
 // The output trajectory, sized: x for every output time, S (with sensitivities) in place
 // (CheckOutputTimes first).
-Trajectory SizedOutput(int nx, int np, const std::vector<double>& output_times,
-                       const SimulationOptions& options) {
+Trajectory SizedOutput(int nx, int np, TimesView output_times, const SimulationOptions& options) {
   CheckOutputTimes(output_times, options);
   Trajectory out;
-  out.t = output_times;
+  out.t = output_times.ToVector();
   out.x.resize(output_times.size(), nx);
   if (options.sensitivities) {
     out.S.resize(nx);  // sized in place: copying a prototype would touch 3 × n_out × np doubles
@@ -78,9 +77,8 @@ __attribute__((always_inline)) inline void SensitivitySlope(const double* A, con
 // through its pointers forced reloads of every member).
 template <int NX, bool kOthers>
 Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta, const TrialConditions& c,
-                      const std::vector<double>& output_times, double shift,
-                      const SimulationOptions& options, const Eigen::VectorXd* x0,
-                      const OutputVisitor* visit) {
+                      TimesView output_times, double shift, const SimulationOptions& options,
+                      const Eigen::VectorXd* x0, const OutputVisitor* visit) {
   constexpr int nx = NX;
   const int np = model.num_parameters();
   Trajectory out;
@@ -182,9 +180,8 @@ Trajectory IntegrateN(const DofModel& model, const Eigen::VectorXd& theta, const
 }
 
 Trajectory Integrate(const DofModel& model, const Eigen::VectorXd& theta, const TrialConditions& c,
-                     const std::vector<double>& output_times, double shift,
-                     const SimulationOptions& options, const Eigen::VectorXd* x0,
-                     const OutputVisitor* visit = nullptr) {
+                     TimesView output_times, double shift, const SimulationOptions& options,
+                     const Eigen::VectorXd* x0, const OutputVisitor* visit = nullptr) {
   const auto run = [&](auto nx, auto others) {
     return IntegrateN<decltype(nx)::value, decltype(others)::value>(model, theta, c, output_times,
                                                                     shift, options, x0, visit);
@@ -201,14 +198,14 @@ Trajectory Integrate(const DofModel& model, const Eigen::VectorXd& theta, const 
 
 }  // namespace
 
-Trajectory Simulate(const DofModel& model, const Eigen::VectorXd& theta,
-                    const TrialConditions& c, const std::vector<double>& output_times,
-                    const SimulationOptions& options, const Eigen::VectorXd* x0) {
+Trajectory Simulate(const DofModel& model, const Eigen::VectorXd& theta, const TrialConditions& c,
+                    TimesView output_times, const SimulationOptions& options,
+                    const Eigen::VectorXd* x0) {
   return Integrate(model, theta, c, output_times, 0.0, options, x0);
 }
 
 void SimulateVisiting(const DofModel& model, const Eigen::VectorXd& theta, const TrialConditions& c,
-                      const std::vector<double>& output_times, const SimulationOptions& options,
+                      TimesView output_times, const SimulationOptions& options,
                       const Eigen::VectorXd* x0, Seen seen, const OutputVisitor& visit) {
   const int di = seen == Seen::kBySensors ? model.sensor_delay_index() : -1;
   if (options.sensitivities && di >= 0) {
@@ -219,7 +216,7 @@ void SimulateVisiting(const DofModel& model, const Eigen::VectorXd& theta, const
 }
 
 Trajectory SimulateMeasured(const DofModel& model, const Eigen::VectorXd& theta,
-                            const TrialConditions& c, const std::vector<double>& times,
+                            const TrialConditions& c, TimesView times,
                             const SimulationOptions& options, const Eigen::VectorXd* x0) {
   const int di = model.sensor_delay_index();
   const double tau = di >= 0 ? theta[di] : 0.0;

@@ -1,4 +1,6 @@
 // uuvplan <command> [options]: see docs/cli.md.
+#include <malloc.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
@@ -37,10 +39,18 @@ void RefuseCountsOutOfRange(CLI::App& app) {
   }
 }
 
+// Blocks of 128 KiB and more (a long log's vectors) mapped on their own and given back to the
+// system when freed. By default glibc raises this threshold to the size of the largest such
+// block freed (up to 32 MiB); the vectors that follow then come from the heap, and the holes
+// they leave stay resident: 3–4 MB more peak RSS on issue #16's 1,000,000-row log
+// (docs/performance.md, "Memory, round 10").
+void ReturnLargeBlocksWhenFreed() { mallopt(M_MMAP_THRESHOLD, 128 * 1024); }
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace uuvplan::tool;
+  ReturnLargeBlocksWhenFreed();
   CLI::App app{
       "uuvplan: plan, run and analyse hydrodynamic identification trials of underwater "
       "vehicles (drag, added mass, thruster installation losses)",

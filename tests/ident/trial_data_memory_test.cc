@@ -1,9 +1,16 @@
 // Issue #16: a long position-only log is not held twice while it is prepared, and what the
 // prepared trial keeps is shared where it can be: the positions are moved out of a log the
 // caller gives up (PrepareTrial's `given_up`), the velocity estimate shares their times
-// (SharedTimes) and stores its samples in float, and its runs as their first samples.
+// (SharedTimes) and stores its samples in float, and its runs as their first samples; times
+// logged on a uniform decimal clock are held as the clock.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include "ident_cases.h"
@@ -27,6 +34,77 @@ model::Campaign PositionLegs() {
       16);
 }
 
+std::uint64_t Bits(double x) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
+// A time column as the CSV reader reads it: the decimal text of each time (`decimals` digits)
+// parsed to the nearest double, as std::strtod does.
+std::vector<double> ParsedClock(long long first, long long step, int decimals, std::size_t n) {
+  std::vector<double> t(n);
+  long long scale = 1;
+  for (int d = 0; d < decimals; ++d) scale *= 10;
+  char text[64];
+  for (std::size_t i = 0; i < n; ++i) {
+    const long long v = first + static_cast<long long>(i) * step;
+    std::snprintf(text, sizeof text, "%lld.%0*lld", v / scale, decimals, v % scale);
+    t[i] = std::strtod(text, nullptr);
+  }
+  return t;
+}
+
+TEST(SharedTimesTest, ALogOnADecimalClockIsHeldAsTheClockEveryTimeBitForBit) {
+  // 200,000 rows at 100 Hz from t = 1234.56 s, shifted to the fourth row as the log's reader
+  // shifts them (KeptSamples: t − offset): the clock must give back every one of those doubles.
+  const std::vector<double> logged = ParsedClock(123456, 1, 2, 200000);
+  const double offset = logged[3];
+  std::vector<double> t;
+  for (std::size_t i = 3; i < logged.size(); ++i) t.push_back(logged[i] - offset);
+  SharedTimes s = t;
+  s.CompactUniform(offset);
+  ASSERT_TRUE(s.uniform());
+  ASSERT_EQ(s.size(), t.size());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) differing += Bits(s[i]) != Bits(t[i]);
+  EXPECT_EQ(differing, 0u);
+  // Read as a sequence too (binary search, iteration), and given back as the same vector.
+  EXPECT_EQ(std::upper_bound(s.begin(), s.end(), 777.777) - s.begin(),
+            std::upper_bound(t.begin(), t.end(), 777.777) - t.begin());
+  EXPECT_TRUE(std::equal(s.begin(), s.end(), t.begin(), t.end()));
+  const SharedTimes copy = s;
+  EXPECT_TRUE(copy.SharesWith(s));
+  EXPECT_EQ(SharedTimes(s).Release(), t);
+  // A change turns the clock into a vector holding the same times and the new one.
+  s.push_back(t.back() + 1.0);
+  EXPECT_FALSE(s.uniform());
+  EXPECT_FALSE(s.SharesWith(copy));
+  EXPECT_TRUE(std::equal(t.begin(), t.end(), s.begin()));
+  EXPECT_EQ(s.back(), t.back() + 1.0);
+}
+
+TEST(SharedTimesTest, TimesOffAClockStayAVector) {
+  // Jittered (a logger's own timestamps), or a missing row: not a clock; nothing changes.
+  std::vector<double> jittered = ParsedClock(0, 1, 2, 1000);
+  jittered[500] += 1e-6;
+  std::vector<double> gap = ParsedClock(0, 1, 2, 1000);
+  gap.erase(gap.begin() + 400);
+  for (const std::vector<double>& t : {jittered, gap}) {
+    SharedTimes s = t;
+    s.CompactUniform(0.0);
+    EXPECT_FALSE(s.uniform());
+    EXPECT_EQ(SharedTimes(s).Release(), t);
+  }
+  // Times that are k·0.01 computed in binary (not parsed decimals) are off the clock too
+  // wherever k·0.01 is not the double nearest k/100: held as they are, never changed.
+  std::vector<double> computed(1000);
+  for (std::size_t k = 0; k < computed.size(); ++k) computed[k] = static_cast<double>(k) * 0.01;
+  SharedTimes c = computed;
+  c.CompactUniform(0.0);
+  EXPECT_EQ(SharedTimes(c).Release(), computed);
+}
+
 TEST(SharedTimesTest, CopiesShareTheTimesAndAChangeDetachesOnlyTheChangedCopy) {
   SharedTimes a = std::vector<double>{0.0, 0.1, 0.2};
   SharedTimes b = a;
@@ -39,7 +117,7 @@ TEST(SharedTimesTest, CopiesShareTheTimesAndAChangeDetachesOnlyTheChangedCopy) {
   const SharedTimes moved = std::move(b);
   EXPECT_EQ(moved.size(), 4u);
   EXPECT_TRUE(b.empty());  // NOLINT(bugprone-use-after-move): a moved-from SharedTimes is empty
-  EXPECT_EQ(static_cast<const std::vector<double>&>(a), (std::vector<double>{0.0, 0.1, 0.2}));
+  EXPECT_EQ(SharedTimes(a).Release(), (std::vector<double>{0.0, 0.1, 0.2}));
 }
 
 TEST(PreparedTrialMemoryTest, AGivenUpLogIsMovedNotCopiedAndTheEstimateSharesItsTimes) {
@@ -63,7 +141,8 @@ TEST(PreparedTrialMemoryTest, AGivenUpLogIsMovedNotCopiedAndTheEstimateSharesIts
 
   // The same trial either way, and the log given up is left empty.
   EXPECT_TRUE(given.trials[0].log.t.empty());
-  EXPECT_EQ(d.position.t.vector(), copied.position.t.vector());
+  EXPECT_TRUE(std::equal(d.position.t.begin(), d.position.t.end(), copied.position.t.begin(),
+                         copied.position.t.end()));
   EXPECT_EQ(d.position.y, copied.position.y);
   EXPECT_EQ(d.velocity_estimate.value, copied.velocity_estimate.value);
   EXPECT_EQ(d.initial_velocity, copied.initial_velocity);
@@ -77,6 +156,27 @@ TEST(PreparedTrialMemoryTest, AGivenUpLogIsMovedNotCopiedAndTheEstimateSharesIts
   std::cout << n << " samples: prepare's peak heap " << moved_peak / static_cast<double>(n)
             << " B a sample from a given-up log, " << copied_peak / static_cast<double>(n)
             << " B copied\n";
+}
+
+TEST(PreparedTrialMemoryTest, TimesReadFromADecimalClockAreHeldAsTheClock) {
+  // The same log with its times as a CSV gives them (decimal text, parsed): the trial keeps
+  // no vector of times (8 B a sample), and every time it reads is the one logged, shifted.
+  model::Campaign logged = PositionLegs();
+  std::vector<double>& t = logged.trials[0].log.t;
+  t = ParsedClock(0, 1, 2, t.size());
+  const TrialData d = PrepareTrial(logged.trials[0], 0, logged.vehicle, TrialDataOptions{});
+  ASSERT_GT(d.position.size(), 30000u);
+  EXPECT_TRUE(d.position.t.uniform());
+  EXPECT_TRUE(d.velocity_estimate.t.SharesWith(d.position.t));
+  const std::vector<double>& y = logged.trials[0].log.position[model::Index(model::Dof::kSurge)];
+  std::vector<double> kept;  // KeptSamples' rows: a position, at or after t = 0
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!std::isnan(y[i]) && t[i] >= d.time_offset) kept.push_back(t[i] - d.time_offset);
+  }
+  ASSERT_EQ(kept.size(), d.position.size());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < kept.size(); ++i) differing += Bits(d.position.t[i]) != Bits(kept[i]);
+  EXPECT_EQ(differing, 0u);
 }
 
 }  // namespace

@@ -52,7 +52,7 @@ TEST(SimulatorTest, Rk4ConvergesAtFourthOrderOnTheLinearModel) {
   for (double h : {2.0, 1.0, 0.5, 0.25}) {
     SimulationOptions o;
     o.step_s = h;
-    const Trajectory tr = Simulate(model, theta, c, {t_end}, o);
+    const Trajectory tr = Simulate(model, theta, c, std::vector<double>{t_end}, o);
     errors.push_back(std::abs(tr.x(0, 1) - LinearSineVelocity(m, k, a, b, w, t_end)));
   }
   for (std::size_t i = 1; i < errors.size(); ++i) {
@@ -78,7 +78,8 @@ TEST(SimulatorTest, StepsEndAtSegmentBreakpoints) {
   const auto input = MakeSegmentsExcitation({{20.0, 1.3, 0}, {-10.0, 3.0, 1}});
   SimulationOptions o;
   o.step_s = 0.25;
-  const Trajectory tr = Simulate(model, theta, TrialConditions{input.get()}, {1.3, 4.3}, o);
+  const Trajectory tr =
+      Simulate(model, theta, TrialConditions{input.get()}, std::vector<double>{1.3, 4.3}, o);
   const double xi1 = 20.0 / 50.0 * (1 - std::exp(-1.3 / 2.0));
   const double xi2 = -10.0 / 50.0 + (xi1 + 10.0 / 50.0) * std::exp(-3.0 / 2.0);
   // RK4 local error ~ (h/t_c)^5/120 per step: ~1e-7 of the speed here.

@@ -59,12 +59,22 @@ void CheckNotRepeated(const model::Campaign& campaign, std::size_t index, const 
 
 // The median interval between the rows where `column` has a sample; NaN for fewer than 20
 // intervals (a hand-written log of a few rows says little about its sampling).
+// The median interval between a column's values, from at most ~20,000 evenly spread intervals
+// (as ident's MedianStep: well within 1% of the whole's, for a factor-4 test; all of them were a
+// 12 MB peak of reading a million-row log, issue #16).
 double MedianInterval(const std::vector<double>& t, const std::vector<double>& column) {
+  const std::size_t n = std::min(t.size(), column.size());
+  const auto values = static_cast<std::size_t>(
+      std::count_if(column.begin(), column.begin() + static_cast<std::ptrdiff_t>(n),
+                    [](double v) { return !std::isnan(v); }));
+  const std::size_t stride = std::max<std::size_t>(1, values / 20000);
   std::vector<double> dt;
+  dt.reserve(values / stride + 1);
   double last = std::nan("");
-  for (std::size_t i = 0; i < t.size() && i < column.size(); ++i) {
+  std::size_t interval = 0;
+  for (std::size_t i = 0; i < n; ++i) {
     if (std::isnan(column[i])) continue;
-    if (!std::isnan(last)) dt.push_back(t[i] - last);
+    if (!std::isnan(last) && interval++ % stride == 0) dt.push_back(t[i] - last);
     last = t[i];
   }
   if (dt.size() < 20) return std::nan("");

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -91,11 +92,17 @@ double Ar1Coefficient(const Eigen::VectorXd& r);
 /// ρ = 0). Clamped to [0, 0.99]. NaN samples split the series.
 double NoiseAr1FromDifferences(const std::vector<double>& y, const std::vector<double>& s);
 
-/// Residuals of a least-squares fit of X (n × q, rows consecutive samples) to a series with
-/// AR(1) errors, summarised by Σr_i² and Σr_i·r_{i−1}; Q an orthonormal basis of X
-/// (OrthonormalBasis, n × q: X itself is not kept).
-struct FittedResiduals {
+/// An orthonormal basis Q of a fit's columns X (OrthonormalBasis, n × q: X itself is not kept),
+/// shared by the fit that made it and the AR(1) estimates below (a million-sample record's
+/// bases are megabytes).
+struct ColumnBasis {
   Eigen::MatrixXd Q;
+};
+
+/// Residuals of a least-squares fit of X (n × q, rows consecutive samples) to a series with
+/// AR(1) errors, summarised by Σr_i² and Σr_i·r_{i−1}, with the basis of X.
+struct FittedResiduals {
+  std::shared_ptr<const ColumnBasis> basis;
   double sum_sq = 0.0;
   double sum_lag1 = 0.0;
 };

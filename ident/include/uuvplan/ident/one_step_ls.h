@@ -99,16 +99,22 @@ struct OneStepRows {
 };
 
 /// Builds the rows for `trials` of one DOF; `free` lists the model parameters to estimate
-/// (regressor-linear, not m); all others take their value in `theta`. With `instrument`
-/// (one velocity per trial, same order), F is computed along those velocities instead of the
-/// measured ones (the knots and Y stay those of the data): the instruments Z. `velocity_shift`
-/// is added to that velocity (RowSensitivity's difference).
+/// (regressor-linear, not m); all others take their value in `theta`.
 OneStepRows BuildOneStepRows(const model::DofModel& model,
                              const std::vector<const TrialData*>& trials,
                              const Eigen::VectorXd& theta, const std::vector<int>& free,
-                             const OneStepOptions& options,
-                             const std::vector<SmoothedSignal>* instrument = nullptr,
-                             double velocity_shift = 0.0);
+                             const OneStepOptions& options);
+
+/// The F of BuildOneStepRows (same knots) computed along `instrument` (one velocity per trial,
+/// same order) instead of the measured velocities — the instruments Z — or, without it, along
+/// the measured ones plus `velocity_shift` (RowSensitivity's difference). F alone: Y and the
+/// rows' bookkeeping are the data's, not built again.
+Eigen::MatrixXd OneStepRegressors(const model::DofModel& model,
+                                  const std::vector<const TrialData*>& trials,
+                                  const Eigen::VectorXd& theta, const std::vector<int>& free,
+                                  const OneStepOptions& options,
+                                  const std::vector<SmoothedSignal>* instrument,
+                                  double velocity_shift = 0.0);
 
 /// BuildOneStepRows without the `free` parameters no row excites (their names appended to
 /// `not_excited`; they keep their value in `theta`); empty `free`: every regressor-linear one.

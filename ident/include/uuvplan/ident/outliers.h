@@ -69,6 +69,6 @@ struct Gap {
 };
 
 /// Steps longer than `factor` × the median step.
-std::vector<Gap> FindGaps(const std::vector<double>& t, double factor = 3.0);
+std::vector<Gap> FindGaps(model::TimesView t, double factor = 3.0);
 
 }  // namespace uuvplan::ident

@@ -46,8 +46,8 @@ struct IntegratedRegressors {
 /// `derivative` (may be empty: linear interpolation) the acceleration at its times.
 /// `velocity_shift` is added to that velocity (a velocity error held over the trial).
 IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const TrialData& trial,
-                                         const std::vector<double>& boundaries,
-                                         const Eigen::VectorXd& theta, double max_step_s,
+                                         model::TimesView boundaries, const Eigen::VectorXd& theta,
+                                         double max_step_s,
                                          const SmoothedSignal* velocity = nullptr,
                                          double velocity_shift = 0.0);
 

@@ -1,8 +1,9 @@
 // Sample times that several signals share: a velocity estimate's times are its positions'
 // (8 bytes a sample of a long log, issue #16). A read-only std::vector<double> held by
 // reference count; copies share it, and a change detaches the changed copy first (copy on
-// write), so a SharedTimes behaves as a value. Reads go through the vector's own data pointer,
-// cached, so that a loop over t[i] costs what it costs on a std::vector.
+// write), so a SharedTimes behaves as a value. Times logged on a uniform decimal clock can be
+// held as that clock instead (CompactUniform; model::UniformClock: the very same doubles,
+// computed, 0 bytes a sample). Read them as a model::TimesView (view(), or t[i]).
 #pragma once
 
 #include <cstddef>
@@ -10,12 +11,14 @@
 #include <memory>
 #include <vector>
 
+#include "uuvplan/model/times_view.h"
+
 namespace uuvplan::ident {
 
 class SharedTimes {
  public:
   using value_type = double;
-  using const_iterator = std::vector<double>::const_iterator;
+  using const_iterator = model::TimesView::const_iterator;
 
   SharedTimes() = default;
   SharedTimes(const SharedTimes&) = default;
@@ -23,33 +26,42 @@ class SharedTimes {
   SharedTimes(SharedTimes&& o) noexcept { *this = std::move(o); }
   SharedTimes& operator=(SharedTimes&& o) noexcept {
     times_ = std::move(o.times_);
-    Cache();
-    o.Cache();
+    view_ = o.view_;
+    o.view_ = {};
     return *this;
   }
   SharedTimes(std::vector<double> t) { *this = std::move(t); }  // NOLINT: a vector is times
   SharedTimes(std::initializer_list<double> t) : SharedTimes(std::vector<double>(t)) {}
   SharedTimes& operator=(std::vector<double> t) {
     times_ = std::make_shared<std::vector<double>>(std::move(t));
-    Cache();
+    view_ = *times_;
     return *this;
   }
 
-  operator const std::vector<double>&() const { return vector(); }  // NOLINT: read as a vector
-  const std::vector<double>& vector() const { return times_ ? *times_ : Empty(); }
-  /// True when `other` holds the very same times (not a copy of them).
-  bool SharesWith(const SharedTimes& other) const { return times_ && times_ == other.times_; }
+  operator model::TimesView() const { return view_; }  // NOLINT: read as times
+  const model::TimesView& view() const { return view_; }
+  /// True when `other` holds the very same times (not a copy of them): the same vector, or the
+  /// same uniform clock.
+  bool SharesWith(const SharedTimes& other) const {
+    if (uniform()) return other.uniform() && clock_ == other.clock_ && size() == other.size();
+    return times_ && times_ == other.times_;
+  }
+  /// Whether the times are held as a uniform clock (no vector).
+  bool uniform() const { return !times_ && !view_.empty(); }
 
-  std::size_t size() const { return size_; }
-  bool empty() const { return size_ == 0; }
-  double operator[](std::size_t i) const { return data_[i]; }
-  const double* data() const { return data_; }
-  double front() const { return data_[0]; }
-  double back() const { return data_[size_ - 1]; }
-  const_iterator begin() const { return vector().begin(); }
-  const_iterator end() const { return vector().end(); }
+  std::size_t size() const { return view_.size(); }
+  bool empty() const { return view_.empty(); }
+  double operator[](std::size_t i) const { return view_[i]; }
+  double front() const { return view_.front(); }
+  double back() const { return view_.back(); }
+  const_iterator begin() const { return view_.begin(); }
+  const_iterator end() const { return view_.end(); }
 
-  // Changes (each detaches this copy from the others first).
+  /// Holds the times as their uniform clock when every time is (n0 + k·step)/10^d − offset bit
+  /// for bit (d ≤ 9; `offset` is what was subtracted from the logged times); else unchanged.
+  void CompactUniform(double offset);
+
+  // Changes (each detaches this copy from the others first; a clock becomes a vector again).
   void push_back(double t) {
     Change([t](std::vector<double>& v) { v.push_back(t); });
   }
@@ -69,36 +81,33 @@ class SharedTimes {
   /// is left empty. How times lent to signals go back to their owner (CheckInputSanity).
   std::vector<double> Release() && {
     std::vector<double> out;
-    if (times_) out = times_.use_count() == 1 ? std::move(*times_) : *times_;
+    if (uniform()) {
+      out = view_.ToVector();
+    } else if (times_) {
+      out = times_.use_count() == 1 ? std::move(*times_) : *times_;
+    }
     times_.reset();
-    Cache();
+    view_ = {};
     return out;
   }
   /// Any other change of the times in place, change(std::vector<double>&).
   template <class F>
   void Change(const F& change) {
-    if (!times_) {
+    if (uniform()) {
+      times_ = std::make_shared<std::vector<double>>(view_.ToVector());
+    } else if (!times_) {
       times_ = std::make_shared<std::vector<double>>();
     } else if (times_.use_count() > 1) {
       times_ = std::make_shared<std::vector<double>>(*times_);
     }
     change(*times_);
-    Cache();
+    view_ = *times_;
   }
 
  private:
-  static const std::vector<double>& Empty() {
-    static const std::vector<double> empty;
-    return empty;
-  }
-  void Cache() {
-    data_ = times_ ? times_->data() : nullptr;
-    size_ = times_ ? times_->size() : 0;
-  }
-
   std::shared_ptr<std::vector<double>> times_;
-  const double* data_ = nullptr;
-  std::size_t size_ = 0;
+  model::UniformClock clock_;  // when uniform()
+  model::TimesView view_;      // of *times_, or of clock_
 };
 
 }  // namespace uuvplan::ident

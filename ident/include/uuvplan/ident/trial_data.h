@@ -68,8 +68,10 @@ struct TrialData {
   double position_sigma_estimated = -1.0;  ///< from the data (NoiseSigmaFromDifferences)
   double velocity_sigma_estimated = -1.0;
 
-  /// Logged force rows (NaN rows dropped) and the vehicle mapping index in force on each.
-  std::vector<double> force_t, force;
+  /// Logged force rows (NaN rows dropped) and the vehicle mapping index in force on each; their
+  /// times as a uniform clock when the log's are (SharedTimes::CompactUniform).
+  SharedTimes force_t;
+  std::vector<double> force;
   std::vector<int> mapping;
   std::unique_ptr<model::Excitation> input;          ///< zero-order hold of the rows
   std::vector<double> breakpoints;                   ///< input->Breakpoints(), sorted, cached

@@ -14,12 +14,15 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "uuvplan/ident/shared_times.h"
 
 namespace uuvplan::ident {
+
+struct ColumnBasis;  // covariance.h
 
 /// Samples of one signal: times (s) and values, no NaN.
 struct Signal {
@@ -50,7 +53,7 @@ int ChosenWindow(int given, double rate_hz, double input_time_scale_s);
 /// The time scale of a logged input: the median duration of its constant pieces when it is
 /// piecewise constant, else twice the median time between sign changes of its deviation from
 /// the mean (the period of a sine). 0 when it cannot be told (constant input).
-double InputTimeScale(const std::vector<double>& t, const std::vector<double>& force);
+double InputTimeScale(model::TimesView t, const std::vector<double>& force);
 
 /// A filter's output. Its value and derivative are computed in double and stored in float
 /// (8 bytes a sample, not 16, on a million-sample log; issue #16): the rounding, 6e-8 of the
@@ -147,7 +150,9 @@ struct SpeedFit {
   double t0 = 0.0, t1 = 0.0;
   int fitted = 0;                ///< coefficients fitted to the n samples
   std::vector<double> weights;   ///< speed = Σ weights_i·y_i over the n samples (linearised)
-  std::vector<double> design;    ///< the fit's n × fitted columns (column-major, linearised)
+  /// An orthonormal basis of the fit's n × fitted columns (OrthonormalBasis; linearised):
+  /// what the pooled noise AR(1) needs of them (PooledNoiseAr1), shared.
+  std::shared_ptr<const ColumnBasis> basis;
 };
 SpeedFit ConstantSpeedFit(const Signal& position, double t0, double t1,
                           double known_sigma = -1.0);
@@ -218,13 +223,13 @@ std::vector<SteadySegment> DetectSteadySegments(const Signal& s, bool is_positio
 
 /// Median of the steps t[i] − t[i−1] over [begin, end) (from at most ~20,000 evenly spread
 /// steps of a long record).
-double MedianStep(const std::vector<double>& t, std::size_t begin, std::size_t end);
+double MedianStep(model::TimesView t, std::size_t begin, std::size_t end);
 
 /// Linear interpolation of samples at time t (held constant beyond the ends).
 template <class Real>
-double Interpolate(const std::vector<double>& t, const std::vector<Real>& y, double at);
-extern template double Interpolate(const std::vector<double>&, const std::vector<double>&, double);
-extern template double Interpolate(const std::vector<double>&, const std::vector<float>&, double);
+double Interpolate(model::TimesView t, const std::vector<Real>& y, double at);
+extern template double Interpolate(model::TimesView, const std::vector<double>&, double);
+extern template double Interpolate(model::TimesView, const std::vector<float>&, double);
 
 /// Robust noise estimate of a sampled signal: 1.4826·MAD of the third differences / √20
 /// (exact for white noise on a locally quadratic signal).

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "uuvplan/model/dof.h"
+#include "uuvplan/model/times_view.h"
 
 namespace uuvplan::model {
 
@@ -49,8 +50,8 @@ struct Segment {
 std::unique_ptr<Excitation> MakeSegmentsExcitation(std::vector<Segment> segments);
 /// Zero-order hold of samples (t_i, force_i, mapping_i): force_i holds on [t_i, t_{i+1}).
 /// NaN forces are skipped (the previous value holds). Before t_0 the first value holds.
-std::unique_ptr<Excitation> MakeHeldExcitation(std::vector<double> t, std::vector<double> force,
-                                               std::vector<int> mapping, double duration);
+std::unique_ptr<Excitation> MakeHeldExcitation(TimesView t, const std::vector<double>& force,
+                                               const std::vector<int>& mapping, double duration);
 
 /// One sinusoid of a waveform: amplitude·sin(omega·t + phase).
 struct SineComponent {

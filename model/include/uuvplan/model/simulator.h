@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "uuvplan/model/dof_model.h"
+#include "uuvplan/model/times_view.h"
 
 namespace uuvplan::model {
 
@@ -26,7 +27,7 @@ struct Trajectory {
 /// Integrates from x0 (default: rest) at t = 0 and reports the state at `output_times`
 /// (sorted, >= 0). Every step ends at breakpoints of the input and at output times.
 Trajectory Simulate(const DofModel& model, const Eigen::VectorXd& theta,
-                    const TrialConditions& conditions, const std::vector<double>& output_times,
+                    const TrialConditions& conditions, TimesView output_times,
                     const SimulationOptions& options, const Eigen::VectorXd* x0 = nullptr);
 
 /// One output of a simulation: its index in the output times, the state x (num_states values)
@@ -42,7 +43,7 @@ enum class Seen { kState, kBySensors };
 /// stored: memory independent of the number of outputs (a fit streams its residuals from it).
 /// Seen by sensors with a sensor delay, only without sensitivities (std::invalid_argument).
 void SimulateVisiting(const DofModel& model, const Eigen::VectorXd& theta,
-                      const TrialConditions& conditions, const std::vector<double>& output_times,
+                      const TrialConditions& conditions, TimesView output_times,
                       const SimulationOptions& options, const Eigen::VectorXd* x0, Seen seen,
                       const OutputVisitor& visit);
 
@@ -51,7 +52,7 @@ void SimulateVisiting(const DofModel& model, const Eigen::VectorXd& theta,
 /// (∂y/∂tau = -dx/dt(t - tau)). Columns of the result as in Simulate: 0 position,
 /// 1 velocity (2 actuator force with thruster lag).
 Trajectory SimulateMeasured(const DofModel& model, const Eigen::VectorXd& theta,
-                            const TrialConditions& conditions, const std::vector<double>& times,
+                            const TrialConditions& conditions, TimesView times,
                             const SimulationOptions& options, const Eigen::VectorXd* x0 = nullptr);
 
 }  // namespace uuvplan::model
