@@ -6,16 +6,10 @@
 
 #include "number_text.h"
 #include "options_check.h"
+#include "uuvplan/model/util/median.h"
 
 namespace uuvplan::ident {
 namespace {
-
-double MedianOf(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  const std::size_t mid = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + mid, v.end());
-  return v[mid];
-}
 
 // Leave-one-out prediction of a sample by a local quadratic fitted to its neighbours (itself
 // left out). Where it misses by more than the noise allows, its truncation error is estimated
@@ -199,7 +193,7 @@ std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& o,
   for (std::size_t i = 0; i < n; i += stride) {
     if (!guarded[i] && !std::isnan(r[i])) abs_r.push_back(std::abs(r[i]));
   }
-  double limit = o.threshold * 1.4826 * MedianOf(abs_r);
+  double limit = abs_r.empty() ? 0.0 : o.threshold * 1.4826 * model::Median(std::move(abs_r));
   if (known_sigma > 0) limit = std::max(limit, o.noise_floor * known_sigma);
   if (!(limit > 0)) return out;
   // Beyond the noise limit and the allowed truncation error (false for NaN).

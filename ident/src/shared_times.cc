@@ -35,9 +35,8 @@ void SharedTimes::CompactUniform(double offset) {
     bool every = true;
     for (std::size_t i = 0; every && i < n; ++i) every = SameBits(c(i), t[i]);
     if (every) {
-      clock_ = c;
       times_.reset();
-      view_ = model::TimesView(clock_, n);
+      view_ = model::TimesView(c, n);
       return;
     }
   }

@@ -8,30 +8,23 @@
 
 #include "options_check.h"
 #include "uuvplan/ident/covariance.h"
+#include "uuvplan/model/util/median.h"
 
 namespace uuvplan::ident {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double Median(std::vector<double> v) {
-  if (v.empty()) return kNaN;
-  const std::size_t mid = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + mid, v.end());
-  return v[mid];
-}
-
 }  // namespace
 
 double MedianStep(model::TimesView t, std::size_t begin, std::size_t end) {
   if (end <= begin + 1) return kNaN;
   const std::size_t n = end - begin - 1;
-  // At most ~20,000 evenly spread steps: the median of a long record to well within 1%.
-  const std::size_t stride = std::max<std::size_t>(1, n / 20000);
+  const std::size_t stride = model::SpreadStride(n);
   std::vector<double> steps;
   steps.reserve(n / stride + 1);
   for (std::size_t i = begin + 1; i < end; i += stride) steps.push_back(t[i] - t[i - 1]);
-  return Median(std::move(steps));
+  return model::Median(std::move(steps));
 }
 
 namespace {
@@ -259,7 +252,7 @@ double InputTimeScale(model::TimesView t, const std::vector<double>& f) {
       prev = c;
     }
     legs.push_back(t.back() - prev);
-    return Median(legs);
+    return model::Median(legs);
   }
   std::vector<double> crossings;
   for (std::size_t i = 1; i < f.size(); ++i) {
@@ -269,7 +262,7 @@ double InputTimeScale(model::TimesView t, const std::vector<double>& f) {
   // Full periods (every other crossing), robust to a mean that is off the sine's offset.
   std::vector<double> periods;
   for (std::size_t i = 2; i < crossings.size(); ++i) periods.push_back(crossings[i] - crossings[i - 2]);
-  return Median(periods);
+  return model::Median(periods);
 }
 
 namespace {
@@ -831,7 +824,7 @@ double NoiseSigmaFromDifferences(const Signal& s) {
   for (std::size_t i = 3; i < s.size(); i += stride) {
     d.push_back(std::abs(s.y[i] - 3 * s.y[i - 1] + 3 * s.y[i - 2] - s.y[i - 3]));
   }
-  return 1.4826 * Median(d) / std::sqrt(20.0);
+  return 1.4826 * model::Median(d) / std::sqrt(20.0);
 }
 
 }  // namespace uuvplan::ident

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "uuvplan/io/plausibility.h"
+#include "uuvplan/model/util/median.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/model/work_limits.h"
 
@@ -57,17 +58,15 @@ void CheckNotRepeated(const model::Campaign& campaign, std::size_t index, const 
   }
 }
 
-// The median interval between the rows where `column` has a sample; NaN for fewer than 20
-// intervals (a hand-written log of a few rows says little about its sampling).
-// The median interval between a column's values, from at most ~20,000 evenly spread intervals
-// (as ident's MedianStep: well within 1% of the whole's, for a factor-4 test; all of them were a
-// 12 MB peak of reading a million-row log, issue #16).
+// The median interval between the rows where `column` has a sample, from evenly spread
+// intervals (util/median.h); NaN for fewer than 20 intervals (a hand-written log of a few rows
+// says little about its sampling).
 double MedianInterval(const std::vector<double>& t, const std::vector<double>& column) {
   const std::size_t n = std::min(t.size(), column.size());
   const auto values = static_cast<std::size_t>(
       std::count_if(column.begin(), column.begin() + static_cast<std::ptrdiff_t>(n),
                     [](double v) { return !std::isnan(v); }));
-  const std::size_t stride = std::max<std::size_t>(1, values / 20000);
+  const std::size_t stride = model::SpreadStride(values);
   std::vector<double> dt;
   dt.reserve(values / stride + 1);
   double last = std::nan("");
@@ -77,9 +76,7 @@ double MedianInterval(const std::vector<double>& t, const std::vector<double>& c
     if (!std::isnan(last) && interval++ % stride == 0) dt.push_back(t[i] - last);
     last = t[i];
   }
-  if (dt.size() < 20) return std::nan("");
-  std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
-  return dt[dt.size() / 2];
+  return dt.size() < 20 ? std::nan("") : model::Median(std::move(dt));
 }
 
 // The sampling of the trial's own sensor against the rate the vehicle declares for it: within a

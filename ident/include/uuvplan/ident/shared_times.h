@@ -43,7 +43,9 @@ class SharedTimes {
   /// True when `other` holds the very same times (not a copy of them): the same vector, or the
   /// same uniform clock.
   bool SharesWith(const SharedTimes& other) const {
-    if (uniform()) return other.uniform() && clock_ == other.clock_ && size() == other.size();
+    if (uniform()) {
+      return other.uniform() && *view_.clock() == *other.view_.clock() && size() == other.size();
+    }
     return times_ && times_ == other.times_;
   }
   /// Whether the times are held as a uniform clock (no vector).
@@ -106,8 +108,7 @@ class SharedTimes {
 
  private:
   std::shared_ptr<std::vector<double>> times_;
-  model::UniformClock clock_;  // when uniform()
-  model::TimesView view_;      // of *times_, or of clock_
+  model::TimesView view_;  // of *times_, or of a uniform clock
 };
 
 }  // namespace uuvplan::ident

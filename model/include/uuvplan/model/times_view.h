@@ -1,6 +1,6 @@
 // Sample times as the simulator and the estimators read them: a sorted array of doubles, or a
 // uniform decimal clock held as its parameters (issue #16: 8 bytes a sample of a long log).
-// Non-owning: the array or the clock's owner outlives the view.
+// An array is not owned (its owner outlives the view); a clock is held by value.
 //
 // A uniform clock: t_k = (n0 + k·step)/scale − offset, with n0, step and scale = 10^d integers
 // exact in a double, so that (n0 + k·step)/scale is one correctly rounded division — the nearest
@@ -40,6 +40,8 @@ class TimesView {
   double back() const { return (*this)[size_ - 1]; }
   const_iterator begin() const;
   const_iterator end() const;
+  /// The clock the times are computed from, or null when they are an array.
+  const UniformClock* clock() const { return data_ ? nullptr : &clock_; }
   std::vector<double> ToVector() const {
     std::vector<double> v(size_);
     for (std::size_t i = 0; i < size_; ++i) v[i] = (*this)[i];
