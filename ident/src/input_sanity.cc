@@ -68,8 +68,6 @@ std::optional<Smoothable> SmoothableOf(const Signal& s, double input_time_scale)
 // of it (issue #16).
 class OwnColumns {
  public:
-  using Columns = std::array<std::vector<double>, model::kNumDofs> model::TrialLog::*;
-
   // `lender`, when given, is `log` itself.
   OwnColumns(const model::TrialLog& log, model::TrialLog* lender, Dof dof)
       : lender_(lender), dof_(dof) {
@@ -127,7 +125,7 @@ class OwnColumns {
   const Signal& velocity() const { return signals_[2]; }
 
  private:
-  static constexpr std::array<Columns, 3> kKinds = {
+  static constexpr std::array<model::LogColumnKind, 3> kKinds = {
       &model::TrialLog::force, &model::TrialLog::position, &model::TrialLog::velocity};
   struct Dropped {
     std::size_t row;

@@ -47,14 +47,13 @@ Signal KeptSamples(std::vector<double> times, std::vector<double> y, double offs
 // last column read that needs them.
 class LogColumns {
  public:
-  using Columns = std::array<std::vector<double>, model::kNumDofs> model::TrialLog::*;
   /// `dof`: the trial's own (the only DOF whose position is read; every DOF's velocity is).
   LogColumns(const model::TrialLog& log, model::TrialLog* owned, Dof dof, double offset)
       : log_(log), owned_(owned), offset_(offset) {
     times_users_ = log.HasPosition(dof) ? 1 : 0;
     for (Dof d : model::kAllDofs) times_users_ += log.HasVelocity(d) ? 1 : 0;
   }
-  Signal Read(Columns columns, Dof d) {
+  Signal Read(model::LogColumnKind columns, Dof d) {
     const std::vector<double>& col = (log_.*columns)[Index(d)];
     if (col.empty()) return Signal{};
     const bool last = --times_users_ == 0;

@@ -11,11 +11,13 @@
 namespace uuvplan::model {
 
 struct TrialLog {
-  std::vector<double> t;  ///< s, strictly increasing
   /// Columns per DOF (indexed by Index(dof)); empty vector = column absent; NaN = no sample.
-  std::array<std::vector<double>, kNumDofs> force;     ///< force_<dof>: N or N·m
-  std::array<std::vector<double>, kNumDofs> position;  ///< pos_<dof>: m or rad (unwrapped)
-  std::array<std::vector<double>, kNumDofs> velocity;  ///< vel_<dof>: m/s or rad/s
+  using DofColumns = std::array<std::vector<double>, kNumDofs>;
+
+  std::vector<double> t;  ///< s, strictly increasing
+  DofColumns force;       ///< force_<dof>: N or N·m
+  DofColumns position;    ///< pos_<dof>: m or rad (unwrapped)
+  DofColumns velocity;    ///< vel_<dof>: m/s or rad/s
   /// Optional `mapping` column: index into mapping_names per row, -1 = empty cell.
   std::vector<int> mapping;
   std::vector<std::string> mapping_names;
@@ -27,6 +29,9 @@ struct TrialLog {
   bool HasPosition(Dof d) const { return !position[Index(d)].empty(); }
   bool HasVelocity(Dof d) const { return !velocity[Index(d)].empty(); }
 };
+
+/// One kind of a log's columns: &TrialLog::force, &TrialLog::position or &TrialLog::velocity.
+using LogColumnKind = TrialLog::DofColumns TrialLog::*;
 
 /// Unwraps pos_roll/pitch/yaw wrapped to one turn (what ReadTrialLog does): a column within
 /// (-pi, pi] or [0, 2pi) (1e-3 of slack for rounding): wherever two consecutive samples differ
