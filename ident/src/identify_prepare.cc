@@ -5,6 +5,7 @@
 
 #include "identify_stages.h"
 #include "number_text.h"
+#include "uuvplan/model/util/median.h"
 
 namespace uuvplan::ident {
 
@@ -27,12 +28,8 @@ double CommandRoughness(const TrialData& d) {
     d1.push_back(std::abs(v[i] - v[i - 1]));
     if (i >= 3) d3.push_back(std::abs(v[i] - 3 * v[i - 1] + 3 * v[i - 2] - v[i - 3]));
   }
-  auto median = [](std::vector<double> x) {
-    std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
-    return x[x.size() / 2];
-  };
-  const double m1 = median(d1);
-  return m1 > 0 ? median(d3) / m1 : 0.0;
+  const double m1 = model::Median(std::move(d1));
+  return m1 > 0 ? model::Median(std::move(d3)) / m1 : 0.0;
 }
 
 namespace stages {

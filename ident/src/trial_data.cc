@@ -1,16 +1,16 @@
 #include "uuvplan/ident/trial_data.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <utility>
 
-#include <Eigen/Dense>
-
 #include "number_text.h"
 #include "options_check.h"
 #include "uuvplan/ident/covariance.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/median.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -168,9 +168,7 @@ void FindForceGap(TrialData* d) {
   if (t.size() < 3) return;
   std::vector<double> steps(t.size() - 1);  // one copy (a second was the prep's peak, #16)
   for (std::size_t i = 1; i < t.size(); ++i) steps[i - 1] = t[i] - t[i - 1];
-  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
-  const double median = steps[steps.size() / 2];
-  steps = {};
+  const double median = model::Median(std::move(steps));  // and the copy freed
   double t0 = 0.0, t1 = 0.0;
   for (std::size_t i = 0; i + 1 < t.size(); ++i) {
     if (t[i + 1] - t[i] > t1 - t0) t0 = t[i], t1 = t[i + 1];

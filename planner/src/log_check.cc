@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "uuvplan/model/util/median.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::planner {
@@ -19,9 +20,7 @@ double MedianForceDeviation(const model::TrialDesign& design, const std::vector<
     if (std::isnan(force[i]) || t[i] - t.front() > design.duration) continue;
     deviation.push_back(std::abs(force[i] - design.NominalForce(t[i] - t.front())));
   }
-  if (deviation.empty()) return INFINITY;
-  std::nth_element(deviation.begin(), deviation.begin() + deviation.size() / 2, deviation.end());
-  return deviation[deviation.size() / 2];
+  return deviation.empty() ? INFINITY : model::Median(std::move(deviation));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "../number_text.h"
 #include "diagnosis_internal.h"
 #include "uuvplan/ident/chi_square.h"
+#include "uuvplan/model/util/median.h"
 
 namespace uuvplan::ident::diagnosis {
 
@@ -21,9 +22,7 @@ double TypicalSpeed(const Trials& trials) {
       if (std::isfinite(v)) s.push_back(std::abs(v));
     }
   }
-  if (s.empty()) return 0.0;
-  std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
-  return s[s.size() / 2];
+  return s.empty() ? 0.0 : model::Median(std::move(s));
 }
 
 // Smallest |φⁿ| above 1% of the largest.
