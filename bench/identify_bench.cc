@@ -27,7 +27,7 @@
 
 #include "ident/ident_cases.h"  // CaseTruth, Segments, Sine: the test cases' builders
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/ident/monte_carlo.h"  // TrueParameter
+#include "uuvplan/ident/stats/monte_carlo.h"  // TrueParameter
 #include "uuvplan/io/io.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/io/virtual_campaign.h"

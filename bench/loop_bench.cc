@@ -1,5 +1,5 @@
-// The full-size comparison of issue #5: the design–identify loop (planner/design_loop.h) against
-// seed 000's own procedure (planner/paper_procedure.h) on the virtual ROMEO, same truth, pool,
+// The full-size comparison of issue #5: the design–identify loop (planner/loop/design_loop.h) against
+// seed 000's own procedure (planner/design/paper_procedure.h) on the virtual ROMEO, same truth, pool,
 // sensors, pauses and identification. Prints every loop iteration, the final percentile errors
 // (and the true errors) of every parameter of interest for both, the pool times, and the wall
 // time per loop iteration.
@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "uuvplan/ident/monte_carlo.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/io/io.h"
-#include "uuvplan/planner/design_loop.h"
-#include "uuvplan/planner/paper_procedure.h"
+#include "uuvplan/planner/loop/design_loop.h"
+#include "uuvplan/planner/design/paper_procedure.h"
 
 using namespace uuvplan;
 using planner::DofProgress;

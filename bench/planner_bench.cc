@@ -6,7 +6,7 @@
 // Run: build/bench/planner_bench [repetitions] [--budgets]
 //   --budgets  also prints the sine design's robust criterion against the solver budget
 //              (DIRECT-L evaluations / COBYLA evaluations), the figures behind the defaults in
-//              planner/dof_context.h.
+//              planner/design/dof_context.h.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,7 +18,7 @@
 
 #include "uuvplan/io/io.h"
 #include "uuvplan/planner/schedule_planner.h"
-#include "uuvplan/planner/sine_design.h"
+#include "uuvplan/planner/design/sine_design.h"
 
 using namespace uuvplan;
 using namespace uuvplan::planner;

@@ -20,6 +20,8 @@ if command -v ccache >/dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   # ccache caches the files that include a precompiled header (UUVPLAN_PCH) only with these
   export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}"
+  # Paths below the checkout hashed relative to it: two checkouts share the cache.
+  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}" CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-true}"
 fi
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DUUVPLAN_WERROR=ON "${launcher[@]}" \
   "${options[@]}" >/dev/null

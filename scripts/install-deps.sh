@@ -9,6 +9,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make pkg-config universal-ctags
+  ccache clang-format-14  # rebuilds of unchanged files; the format check (scripts/format.sh)
   libeigen3-dev libnlopt-cxx-dev coinor-libipopt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "uuvplan/ident/significance.h"
+#include "uuvplan/ident/stats/significance.h"
 #include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::ident {

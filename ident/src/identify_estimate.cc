@@ -7,9 +7,9 @@
 #include <cmath>
 
 #include "identify_stages.h"
-#include "model_selection.h"
+#include "stats/model_selection.h"
 #include "number_text.h"
-#include "uuvplan/ident/regression.h"
+#include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 

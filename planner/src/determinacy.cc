@@ -8,9 +8,9 @@
 #include "format.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/planner/criteria.h"
-#include "uuvplan/planner/design_loop.h"
-#include "uuvplan/planner/thrust_limits.h"
+#include "uuvplan/planner/design/criteria.h"
+#include "uuvplan/planner/loop/design_loop.h"
+#include "uuvplan/planner/design/thrust_limits.h"
 
 namespace uuvplan::planner {
 namespace {

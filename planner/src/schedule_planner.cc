@@ -14,8 +14,8 @@
 #include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/determinacy.h"
-#include "uuvplan/planner/switched_design.h"
-#include "uuvplan/planner/trial_envelope.h"
+#include "uuvplan/planner/design/switched_design.h"
+#include "uuvplan/planner/design/trial_envelope.h"
 
 namespace uuvplan::planner {
 

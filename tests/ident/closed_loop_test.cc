@@ -19,9 +19,9 @@
 
 #include "ident/ident_cases.h"
 #include "support/real_data.h"
-#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/model/util/seed.h"
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "uuvplan/ident/covariance.h"
-#include "uuvplan/ident/velocity_estimation.h"
+#include "uuvplan/ident/stats/covariance.h"
+#include "uuvplan/ident/prepare/velocity_estimation.h"
 
 namespace uuvplan::ident {
 namespace {

@@ -1,4 +1,4 @@
-// The one-step integral least squares of the coupled horizontal model (ident/coupled_ls.h) on
+// The one-step integral least squares of the coupled horizontal model (ident/estimators/coupled_ls.h) on
 // virtual combined-mode campaigns of the ASV (cases/asv, seed 003).
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "support/coupled_campaign.h"
-#include "uuvplan/ident/coupled_ls.h"
-#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/estimators/coupled_ls.h"
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/coupled_model.h"
 

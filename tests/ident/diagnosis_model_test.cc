@@ -14,7 +14,7 @@
 
 #include "support/hidden_effect.h"
 #include "support/real_data.h"
-#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/ident/score.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"

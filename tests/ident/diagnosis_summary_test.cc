@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "support/hidden_effect.h"
-#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 
 namespace uuvplan::ident {
 namespace {

@@ -11,8 +11,8 @@
 
 #include "support/hidden_effect.h"
 #include "support/real_data.h"
-#include "uuvplan/ident/chi_square.h"
-#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/stats/chi_square.h"
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/io/io.h"
 
 namespace uuvplan::ident {

@@ -9,8 +9,8 @@
 
 #include "ident_cases.h"
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/ident/monte_carlo.h"
-#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
+#include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::ident {

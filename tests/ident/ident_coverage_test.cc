@@ -1,4 +1,4 @@
-// Monte Carlo checks of the reported σ (ident/monte_carlo.h): for cases/romeo (surge, heave,
+// Monte Carlo checks of the reported σ (ident/stats/monte_carlo.h): for cases/romeo (surge, heave,
 // yaw), cases/vsor and cases/uris, the same virtual campaign with independent seeds, and for
 // every estimator that reports σ the coverage of its 95% intervals and the spread of its
 // estimates against its mean σ; and the output-error spread against the Cramér–Rao bound on the
@@ -20,7 +20,7 @@
 #include <map>
 
 #include "ident_cases.h"
-#include "uuvplan/ident/monte_carlo.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 
 namespace uuvplan::ident {
 namespace {

@@ -11,12 +11,12 @@
 
 #include "ident_cases.h"
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/ident/least_squares.h"
-#include "uuvplan/ident/monte_carlo.h"
-#include "uuvplan/ident/one_step_ls.h"
-#include "uuvplan/ident/output_error.h"
-#include "uuvplan/ident/rls.h"
-#include "uuvplan/ident/steady_state.h"
+#include "uuvplan/ident/estimators/least_squares.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
+#include "uuvplan/ident/estimators/one_step_ls.h"
+#include "uuvplan/ident/estimators/output_error.h"
+#include "uuvplan/ident/estimators/rls.h"
+#include "uuvplan/ident/estimators/steady_state.h"
 #include "uuvplan/ident/validation.h"
 
 namespace uuvplan::ident {

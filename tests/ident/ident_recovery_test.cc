@@ -10,7 +10,7 @@
 
 #include "ident_cases.h"
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/ident/monte_carlo.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 
 namespace uuvplan::ident {
 namespace {

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "uuvplan/ident/one_step_ls.h"
+#include "uuvplan/ident/estimators/one_step_ls.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/excitation.h"
-#include "uuvplan/ident/significance.h"
+#include "uuvplan/ident/stats/significance.h"
 
 namespace uuvplan::ident {
 namespace {

@@ -8,11 +8,11 @@
 #include <random>
 
 #include "ident_cases.h"
-#include "uuvplan/ident/monte_carlo.h"
-#include "uuvplan/ident/outliers.h"
-#include "uuvplan/ident/steady_state.h"
-#include "uuvplan/ident/trial_data.h"
-#include "uuvplan/ident/velocity_estimation.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
+#include "uuvplan/ident/prepare/outliers.h"
+#include "uuvplan/ident/estimators/steady_state.h"
+#include "uuvplan/ident/prepare/trial_data.h"
+#include "uuvplan/ident/prepare/velocity_estimation.h"
 
 namespace uuvplan::ident {
 namespace {

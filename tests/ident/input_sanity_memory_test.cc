@@ -1,6 +1,6 @@
 // Issue #16: the unit and sign check of a long log holds memory in proportion to the columns it
 // reads, not a dense regression of them: its force balance is summed sample by sample
-// (ident/src/centred_moments.h) over the Savitzky–Golay samples streamed by ForEachSmoothed.
+// (ident/src/stats/centred_moments.h) over the Savitzky–Golay samples streamed by ForEachSmoothed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +10,7 @@
 
 #include "ident_cases.h"
 #include "support/live_heap.h"
-#include "uuvplan/ident/input_sanity.h"
+#include "uuvplan/ident/prepare/input_sanity.h"
 #include "uuvplan/model/campaign_builder.h"
 
 namespace uuvplan::ident {

@@ -1,7 +1,7 @@
-// The unit and sign checks of ident/input_sanity.h on campaigns in memory: correct logs (the
+// The unit and sign checks of ident/prepare/input_sanity.h on campaigns in memory: correct logs (the
 // seed cases' virtual campaigns, the two real campaigns of shared/data) raise nothing, and each
 // mistake is named on its column. The command line's exit status 2 and --accept-units are
-// tested in tests/tool/input_sanity_cli_test.cc.
+// tested in tests/cli/input_sanity_cli_test.cc.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 #include "ident_cases.h"
 #include "support/real_data.h"
-#include "uuvplan/ident/input_sanity.h"
+#include "uuvplan/ident/prepare/input_sanity.h"
 #include "uuvplan/model/campaign_builder.h"
 
 namespace uuvplan::ident {

@@ -1,7 +1,7 @@
-// MedianAbs (ident/median_abs.h) picks what std::nth_element picks from a float copy of |r|:
+// MedianAbs (ident/stats/median_abs.h) picks what std::nth_element picks from a float copy of |r|:
 // the radix selection must agree element for element, ties, zeros, signs and wide ranges
 // included (the output error's gross-error limit is 6·1.4826 times it).
-#include "uuvplan/ident/median_abs.h"
+#include "uuvplan/ident/stats/median_abs.h"
 
 #include <gtest/gtest.h>
 

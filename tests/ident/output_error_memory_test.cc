@@ -10,11 +10,11 @@
 
 #include "ident_cases.h"
 #include "support/live_heap.h"
-#include "uuvplan/ident/block_least_squares.h"
-#include "uuvplan/ident/covariance.h"
-#include "uuvplan/ident/monte_carlo.h"
-#include "uuvplan/ident/output_error.h"
-#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/ident/estimators/block_least_squares.h"
+#include "uuvplan/ident/stats/covariance.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
+#include "uuvplan/ident/estimators/output_error.h"
+#include "uuvplan/ident/prepare/trial_data.h"
 
 namespace uuvplan::ident {
 namespace {

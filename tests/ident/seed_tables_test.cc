@@ -16,8 +16,8 @@
 
 #include "ident_cases.h"
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/ident/significance.h"
-#include "uuvplan/ident/steady_state.h"
+#include "uuvplan/ident/stats/significance.h"
+#include "uuvplan/ident/estimators/steady_state.h"
 
 namespace uuvplan::ident {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "ident_cases.h"
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/ident/monte_carlo.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/model/campaign_builder.h"
 
 namespace uuvplan::ident {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "support/hidden_effect.h"
-#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/virtual_pool.h"

@@ -15,8 +15,8 @@
 
 #include "ident_cases.h"
 #include "support/live_heap.h"
-#include "uuvplan/ident/monte_carlo.h"
-#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
+#include "uuvplan/ident/prepare/trial_data.h"
 
 namespace uuvplan::ident {
 namespace {

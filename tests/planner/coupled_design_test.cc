@@ -1,4 +1,4 @@
-// Combined-mode designs for the coupled horizontal model (planner/coupled_design.h) on the ASV
+// Combined-mode designs for the coupled horizontal model (planner/design/coupled_design.h) on the ASV
 // of seed 003 (cases/asv), replayed by an integrator of this file's own over the prior box.
 #include <gtest/gtest.h>
 
@@ -6,14 +6,14 @@
 #include <cmath>
 #include <iostream>
 
-#include "uuvplan/ident/coupled_ls.h"
-#include "uuvplan/ident/significance.h"
+#include "uuvplan/ident/estimators/coupled_ls.h"
+#include "uuvplan/ident/stats/significance.h"
 #include "uuvplan/io/coupled_design_json.h"
 #include "uuvplan/io/pool_yaml.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/coupled_virtual_trial.h"
-#include "uuvplan/planner/coupled_design.h"
+#include "uuvplan/planner/design/coupled_design.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -107,7 +107,7 @@ CoupledDesign PlannedAsvDesign(model::CombinedMode mode) {
 
 // The planned trial flown in the virtual pool by the case's truth (cases/asv/truth.yaml: its
 // quadratic drags lie below the prior box's, which only moves the track) and identified by the
-// coupled least squares (ident/coupled_ls.h): the inertias — the coupling's coefficients —
+// coupled least squares (ident/estimators/coupled_ls.h): the inertias — the coupling's coefficients —
 // within 3σ of the truth (a 0.3% chance each to miss) and determined to better than 3% (the
 // plan promises 0.4–1.6% at the box's worst for an efficient estimator; the one-step rows,
 // one Savitzky–Golay window apart, give 0.6–1.1%). The drag terms are not asserted: under the

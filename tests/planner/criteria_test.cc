@@ -1,5 +1,5 @@
 // Design criteria against hand computations on small information matrices.
-#include "uuvplan/planner/criteria.h"
+#include "uuvplan/planner/design/criteria.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 //
 // Monte Carlo size: UUVPLAN_PLANNER_MC_RUNS (default 200; the full-size check is 2000, see
 // docs/planning.md).
-#include "uuvplan/planner/fisher_information.h"
+#include "uuvplan/planner/design/fisher_information.h"
 
 #include <gtest/gtest.h>
 
@@ -19,10 +19,10 @@
 #include "uuvplan/model/excitation.h"
 #include "uuvplan/model/model_structure.h"
 #include "uuvplan/model/simulator.h"
-#include "uuvplan/planner/criteria.h"
-#include "uuvplan/planner/dof_context.h"
-#include "uuvplan/planner/seed_rules.h"
-#include "uuvplan/planner/solver.h"
+#include "uuvplan/planner/design/criteria.h"
+#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/seed_rules.h"
+#include "uuvplan/planner/design/solver.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -169,7 +169,7 @@ TEST(FisherInformation, PredictedSigmaMatchesMonteCarloOutputError) {
   // Each replicate adds seeded Gaussian noise and fits θ = [m, k, kq, bias] with the trial's
   // initial position χ0 and velocity ξ0 by Gauss-Newton output error from the truth (the
   // maximum-likelihood estimate for this noise, with the initial state unknown as in
-  // ident/src/output_error.cc). Its spread must match the Cramér-Rao σ = sqrt((M⁻¹)_ii) the
+  // ident/src/estimators/output_error.cc). Its spread must match the Cramér-Rao σ = sqrt((M⁻¹)_ii) the
   // planner predicts (χ0 and ξ0 profiled out): with n replicates the sample σ has a relative
   // standard error 1/sqrt(2(n-1)); the tolerance is 4 of those.
   const model::Vehicle v = testing::Romeo();

@@ -10,8 +10,8 @@
 #include "uuvplan/io/io.h"
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
-#include "uuvplan/planner/criteria.h"
-#include "uuvplan/planner/dof_context.h"
+#include "uuvplan/planner/design/criteria.h"
+#include "uuvplan/planner/design/dof_context.h"
 
 namespace uuvplan::planner::testing {
 

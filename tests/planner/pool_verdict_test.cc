@@ -1,4 +1,4 @@
-// The one pool verdict (planner/pool_verdict.h), issue #13: on ROMEO (own pool and a 6 × 6 × 3 m
+// The one pool verdict (planner/pool/pool_verdict.h), issue #13: on ROMEO (own pool and a 6 × 6 × 3 m
 // pool), VSOR, URIS and seeded random vehicles, the verdict of the planner's own schedule and of
 // that schedule given back as a plan agree; `required` covers every trial's extent and every
 // DOF's need; and every planned trial stays inside the pool and the tether's turns when
@@ -19,7 +19,7 @@
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/planner/pool_verdict.h"
+#include "uuvplan/planner/pool/pool_verdict.h"
 
 namespace uuvplan::planner {
 namespace {

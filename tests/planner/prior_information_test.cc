@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "planner_test_util.h"
-#include "uuvplan/planner/dof_context.h"
+#include "uuvplan/planner/design/dof_context.h"
 #include "uuvplan/planner/schedule_planner.h"
 
 namespace uuvplan::planner {

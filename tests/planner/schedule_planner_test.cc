@@ -1,5 +1,5 @@
-// The whole schedule, the pool check and the next-trial design on ROMEO (cases/romeo), and the
-// `schedule` / `check-pool` commands' exit statuses and JSON.
+// The whole schedule, the pool check and the next-trial design on ROMEO (cases/romeo); the
+// commands' exit statuses and JSON are in tests/cli/planner_cli_test.cc.
 #include "uuvplan/planner/schedule_planner.h"
 
 #include <gmock/gmock.h>
@@ -19,7 +19,7 @@
 
 #include "planner_test_util.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/planner/pool_check.h"
+#include "uuvplan/planner/pool/pool_check.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -237,118 +237,6 @@ TEST(UrisSchedule, RotationWithoutADragPriorPlansOnTheThrustScaledDrag) {
   EXPECT_THAT(r.dofs[0].notes,
               ::testing::Contains(::testing::HasSubstr(
                   "assumed that the largest thrust, 8 N·m, holds the vehicle at 1 rad/s")));
-}
-
-// The command line (UUVPLAN_BINARY): exit statuses and JSON of schedule and check-pool.
-int RunTool(const std::string& args) {
-  const std::string cmd = std::string(UUVPLAN_BINARY) + " " + args + " > /dev/null 2>&1";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-TEST(PlannerCli, ScheduleAndCheckPool) {
-  namespace fs = std::filesystem;
-  const fs::path dir =
-      fs::temp_directory_path() / ("uuvplan_planner_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string vehicle = testing::RomeoPath("vehicle.yaml");
-  const std::string pool = testing::RomeoPath("pool.yaml");
-  const std::string plan = (dir / "plan.json").string();
-  ASSERT_EQ(RunTool("schedule " + vehicle + " --pool " + pool + " --dof surge --json " + plan), 0);
-  std::ifstream in(plan);
-  const nlohmann::json j = nlohmann::json::parse(in);
-  ASSERT_TRUE(j.contains("trials"));
-  ASSERT_TRUE(j["predicted"].contains("surge"));
-  EXPECT_TRUE(j["predicted"]["surge"]["sigma"].contains("m"));
-  for (const auto& t : j["trials"]) {
-    EXPECT_TRUE(t.contains("travel"));
-    EXPECT_TRUE(t.contains("thrust_min"));
-  }
-  // The plan fits its own pool (exit 0: surge, the DOF it plans, is hosted) and not a 6 m one
-  // (exit 1, with the required length).
-  const std::string out = (dir / "check.json").string();
-  EXPECT_EQ(RunTool("check-pool " + vehicle + " --pool " + pool + " --dof surge --plan " + plan +
-                    " --json " + out),
-            0);
-  const fs::path small = dir / "small.yaml";
-  std::ofstream(small) << "name: small\nlength: 6\nwidth: 12\ndepth: 5\nmargin: 1.5\n";
-  EXPECT_EQ(RunTool("check-pool " + vehicle + " --pool " + small.string() + " --plan " + plan +
-                    " --json " + out),
-            1);
-  std::ifstream cin(out);
-  const nlohmann::json c = nlohmann::json::parse(cin);
-  EXPECT_FALSE(c["feasible"].get<bool>());
-  EXPECT_GT(c["required"]["length"].get<double>(), 20.0);
-  EXPECT_EQ(c["required"]["unit"], "m");
-  EXPECT_EQ(c["required"]["measure"], "wall to wall");
-  EXPECT_EQ(c["verdict"]["dofs"]["surge"]["limit"], "length");
-  EXPECT_FALSE(c["trials"][0]["reasons"].empty());
-  EXPECT_TRUE(c.contains("fits"));
-  // Bad input: exit 2.
-  EXPECT_EQ(RunTool("schedule " + vehicle + " --pool " + pool + " --dof twist"), 2);
-  EXPECT_EQ(RunTool("schedule " + (dir / "missing.yaml").string() + " --pool " + pool), 2);
-  fs::remove_all(dir);
-}
-
-// The same inputs, one answer: schedule, check-pool (own and --plan) and the start of loop on
-// ROMEO surge in a pool 3 m long (hosted for no vehicle of the a priori box) all exit 1 with the
-// same verdict sentence; in a 6 m pool (hosted for part of the box) they print the same "PART"
-// verdict, schedule and check-pool exit 1 (nothing can be promised before the first trials)
-// and loop runs — and converges (docs/planning.md, "The pool verdict").
-TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
-  namespace fs = std::filesystem;
-  const fs::path dir =
-      fs::temp_directory_path() / ("uuvplan_verdict_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path small = dir / "small.yaml";
-  std::ofstream(small) << "name: small\nlength: 3\nwidth: 12\ndepth: 5\nmargin: 1\n";
-  const std::string v = testing::RomeoPath("vehicle.yaml"), p = " --pool " + small.string();
-  const std::string plan = (dir / "plan.json").string();
-  auto run = [&](const std::string& args, const std::string& name, std::string* text) {
-    const fs::path out = dir / name;
-    const std::string cmd = std::string(UUVPLAN_BINARY) + " " + args + " > " + out.string() + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    std::ifstream in(out);
-    text->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  };
-  // The precision judged at is in the sentence: the loop's default target.
-  const std::string sentence = "Pool small CANNOT host the identification of surge to 5% ";
-  std::string a, b, c, d;
-  EXPECT_EQ(run("schedule " + v + p + " --dof surge --json " + plan, "a.txt", &a), 1);
-  EXPECT_EQ(run("check-pool " + v + p + " --dof surge", "b.txt", &b), 1);
-  EXPECT_EQ(run("check-pool " + v + p + " --dof surge --plan " + plan, "c.txt", &c), 1);
-  const std::string loop_json = (dir / "loop.json").string();
-  EXPECT_EQ(run("loop --truth " + testing::RomeoPath("truth.yaml") + p + " --dof surge --json " +
-                    loop_json,
-                "d.txt", &d),
-            1);
-  for (const std::string* t : {&a, &b, &c, &d}) {
-    EXPECT_NE(t->find(sentence), std::string::npos) << *t;
-  }
-  // The refused loop still writes its JSON: the verdict, status and exit status.
-  std::ifstream in(loop_json);
-  std::string e((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_NE(e.find("\"status\": \"infeasible\""), std::string::npos) << e;
-  EXPECT_NE(e.find("\"exit_status\": 1"), std::string::npos) << e;
-  EXPECT_NE(e.find(sentence), std::string::npos) << e;
-  // Part of the box: the same sentence everywhere; the loop runs.
-  const fs::path six = dir / "six.yaml";
-  std::ofstream(six) << "name: six\nlength: 6\nwidth: 12\ndepth: 5\nmargin: 1\n";
-  const std::string q = " --pool " + six.string();
-  const std::string part = "Pool six can host the identification of surge to 5% (every "
-                           "parameter of interest's 100·σ/|θ|) for PART of the a priori box only";
-  EXPECT_EQ(run("schedule " + v + q + " --dof surge --json " + plan, "e.txt", &a), 1);
-  EXPECT_EQ(run("check-pool " + v + q + " --dof surge", "f.txt", &b), 1);
-  EXPECT_EQ(run("check-pool " + v + q + " --dof surge --plan " + plan, "g.txt", &c), 1);
-  EXPECT_EQ(run("loop --truth " + testing::RomeoPath("truth.yaml") + q + " --dof surge", "h.txt",
-                &d),
-            0);
-  for (const std::string* t : {&a, &b, &c, &d}) {
-    EXPECT_NE(t->find(part), std::string::npos) << *t;
-  }
-  EXPECT_NE(d.find("Converged after"), std::string::npos) << d;
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // (§III-B eqs. 13-14, §IV-D), reproduced by the closed-form rules the planner starts from.
 // The seed writes "Hz" for ω_opt; eq. 14 gives rad/s, and only rad/s is consistent with its
 // remark that a 26 s period (0.24 rad/s) is "higher than the suboptimal" frequency.
-#include "uuvplan/planner/seed_rules.h"
+#include "uuvplan/planner/design/seed_rules.h"
 
 #include <gtest/gtest.h>
 

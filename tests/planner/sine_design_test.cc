@@ -1,7 +1,7 @@
 // Robust sine designs on ROMEO (cases/romeo, seed 000): the hard constraints at every mass of
 // the a priori box, the predicted σ of the mass against the paper's own design, and NLopt
 // against Ipopt on the same robust problems.
-#include "uuvplan/planner/sine_design.h"
+#include "uuvplan/planner/design/sine_design.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -11,11 +11,11 @@
 
 #include "planner_test_util.h"
 #include "uuvplan/model/dof_model.h"
-#include "uuvplan/planner/criteria.h"
-#include "uuvplan/planner/fisher_information.h"
+#include "uuvplan/planner/design/criteria.h"
+#include "uuvplan/planner/design/fisher_information.h"
 #include "uuvplan/planner/schedule_planner.h"
-#include "uuvplan/planner/steady_design.h"
-#include "uuvplan/planner/thrust_limits.h"
+#include "uuvplan/planner/design/steady_design.h"
+#include "uuvplan/planner/design/thrust_limits.h"
 
 namespace uuvplan::planner {
 namespace {

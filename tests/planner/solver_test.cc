@@ -1,6 +1,6 @@
 // The design solver interface on problems with known optima, run through both backends (the
 // same DesignProblem through NLopt and Ipopt, as Drake's solvers/test examples do).
-#include "uuvplan/planner/solver.h"
+#include "uuvplan/planner/design/solver.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Steady-state runs and legs (seed 000 §III-A, Table I) on ROMEO: every leg settles and holds
 // its speed for every point of the a priori box, no thruster reverses, legs fit the pool, and
 // the pool that cannot host a run says so with the size it would need.
-#include "uuvplan/planner/steady_design.h"
+#include "uuvplan/planner/design/steady_design.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include "planner_test_util.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/mapping.h"
-#include "uuvplan/planner/fisher_information.h"
-#include "uuvplan/planner/seed_rules.h"
-#include "uuvplan/planner/thrust_limits.h"
+#include "uuvplan/planner/design/fisher_information.h"
+#include "uuvplan/planner/design/seed_rules.h"
+#include "uuvplan/planner/design/thrust_limits.h"
 
 namespace uuvplan::planner {
 namespace {

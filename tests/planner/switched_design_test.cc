@@ -2,7 +2,7 @@
 // paper's design at the same duration and pool, the best family against the single sine on
 // ROMEO, URIS and VSOR, every case's planned profiles replayed from the schedule JSON over the
 // box, and the switched trial identified.
-#include "uuvplan/planner/switched_design.h"
+#include "uuvplan/planner/design/switched_design.h"
 
 #include <gtest/gtest.h>
 
@@ -15,11 +15,11 @@
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/campaign_builder.h"
-#include "uuvplan/planner/criteria.h"
-#include "uuvplan/planner/fisher_information.h"
+#include "uuvplan/planner/design/criteria.h"
+#include "uuvplan/planner/design/fisher_information.h"
 #include "uuvplan/planner/schedule_planner.h"
-#include "uuvplan/planner/thrust_limits.h"
-#include "uuvplan/planner/trial_envelope.h"
+#include "uuvplan/planner/design/thrust_limits.h"
+#include "uuvplan/planner/design/trial_envelope.h"
 
 namespace uuvplan::planner {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/trial_design.h"

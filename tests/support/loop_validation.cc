@@ -10,7 +10,7 @@
 
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/planner/pool_verdict.h"
+#include "uuvplan/planner/pool/pool_verdict.h"
 
 namespace uuvplan::testing {
 namespace {

@@ -17,8 +17,8 @@
 
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/truth.h"
-#include "uuvplan/planner/design_loop.h"
-#include "uuvplan/planner/pool_verdict.h"
+#include "uuvplan/planner/loop/design_loop.h"
+#include "uuvplan/planner/pool/pool_verdict.h"
 
 namespace uuvplan::testing {
 

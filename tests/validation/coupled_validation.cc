@@ -1,5 +1,5 @@
 // Full-size validation of the coupled horizontal model's one-step least squares (issue #19,
-// ident/coupled_ls.h): N random coupling truths of the ASV (cases/asv, seed 003), each run
+// ident/estimators/coupled_ls.h): N random coupling truths of the ASV (cases/asv, seed 003), each run
 // through the three combined modes in the virtual pool and identified. Prints per parameter the
 // share of estimates within 1σ, 2σ and 3σ of the truth (Gaussian: 68.3%, 95.4%, 99.7%), the
 // mean z = (θ̂ − θ)/σ (bias, in σ) and the standard deviation of z (1 when σ is right).
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "support/coupled_campaign.h"
-#include "uuvplan/ident/coupled_ls.h"
+#include "uuvplan/ident/estimators/coupled_ls.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/coupled_model.h"
 

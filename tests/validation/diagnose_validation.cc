@@ -11,7 +11,7 @@
 #include <string>
 
 #include "support/hidden_effect.h"
-#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 
 using namespace uuvplan;
 

@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "ident/ident_cases.h"
-#include "uuvplan/ident/monte_carlo.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/model/parameter.h"
 
 using namespace uuvplan;

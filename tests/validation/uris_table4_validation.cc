@@ -25,7 +25,7 @@
 
 #include "ident/ident_cases.h"
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/ident/monte_carlo.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 
 using namespace uuvplan;
 

@@ -6,7 +6,7 @@
 
 #include "../number_text.h"
 #include "diagnosis_internal.h"
-#include "uuvplan/ident/chi_square.h"
+#include "uuvplan/ident/stats/chi_square.h"
 #include "uuvplan/model/util/median.h"
 
 namespace uuvplan::ident::diagnosis {

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "uuvplan/ident/diagnosis.h"
-#include "uuvplan/ident/output_error.h"
-#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/ident/diagnosis/diagnosis.h"
+#include "uuvplan/ident/estimators/output_error.h"
+#include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/effects.h"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "../number_text.h"
-#include "uuvplan/ident/diagnosis.h"
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 
 namespace uuvplan::ident {
 namespace {

@@ -11,7 +11,7 @@
 
 #include <Eigen/Dense>
 
-#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/ident/validation.h"
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/dof_model.h"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "uuvplan/ident/trial_data.h"
+#include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/dof_model.h"
 

@@ -25,7 +25,7 @@ inline constexpr double kMaxLogRows =
     kMaxCampaignRows < kMaxTrialRows ? kMaxCampaignRows : kMaxTrialRows;
 
 // No limit on (fit rows) × (fit trials) any more: the output error accumulates its normal
-// equations trial by trial (ident/block_least_squares.h), so its memory is O(rows + trials), not
+// equations trial by trial (ident/estimators/block_least_squares.h), so its memory is O(rows + trials), not
 // rows × trials (issue #15: 2,000 trials of 2,934 rows, docs/performance.md).
 
 }  // namespace uuvplan::model::limits

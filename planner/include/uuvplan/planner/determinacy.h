@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "uuvplan/planner/dof_context.h"
+#include "uuvplan/planner/design/dof_context.h"
 #include "uuvplan/planner/schedule.h"
-#include "uuvplan/planner/sine_design.h"
-#include "uuvplan/planner/steady_design.h"
+#include "uuvplan/planner/design/sine_design.h"
+#include "uuvplan/planner/design/steady_design.h"
 
 namespace uuvplan::planner {
 

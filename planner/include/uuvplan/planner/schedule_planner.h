@@ -24,10 +24,10 @@
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
 #include "uuvplan/planner/determinacy.h"
-#include "uuvplan/planner/dof_context.h"
+#include "uuvplan/planner/design/dof_context.h"
 #include "uuvplan/planner/schedule.h"
-#include "uuvplan/planner/sine_design.h"
-#include "uuvplan/planner/steady_design.h"
+#include "uuvplan/planner/design/sine_design.h"
+#include "uuvplan/planner/design/steady_design.h"
 
 namespace uuvplan::planner {
 

@@ -1,0 +1,132 @@
+// `uuvplan log CAMPAIGN TRIAL.csv --trial ID [--plan PLAN.json] [--dof D] [--mapping M]
+// [--ballast-steps N] [--use fit|validate] [--start S]`: appends a trial logged at the pool to
+// its campaign (io/campaign_log.h: the CSV copied to trials/<ID>.csv, campaign.yaml rewritten,
+// each atomically; the input CSV is never modified), so that `next` can run between trials.
+// With --plan (a schedule or a `next` result) the log is checked against the planned trial ID
+// (planner/pool/log_check.h), which also gives the DOF and mapping.
+// Exit status (docs/cli.md): 0 logged; 2 bad input (nothing changed), including a log that is
+// not the planned trial.
+#include <algorithm>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "uuvplan/cli/command.h"
+#include "uuvplan/ident/prepare/outliers.h"
+#include "uuvplan/io/campaign_log.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
+#include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/text.h"
+#include "uuvplan/planner/pool/log_check.h"
+
+namespace uuvplan::cli {
+namespace {
+
+struct LogCliOptions {
+  std::string campaign;
+  std::string csv;
+  std::string id;
+  std::string plan;
+  std::string dof;
+  std::string mapping;
+  int ballast_steps = 0;
+  std::string use = "fit";
+  std::optional<double> start;
+};
+
+// The trial `id` of the plan at `path`; InputError naming the plan when it has none.
+model::TrialDesign PlannedDesign(const std::string& path, const std::string& id) {
+  const planner::Schedule plan = io::ReadScheduleJson(path);
+  for (const planner::PlannedTrial& t : plan.trials) {
+    if (t.design.id == id) return t.design;
+  }
+  throw model::InputError(path + ": trials", "no trial '" + id + "' (--trial)");
+}
+
+io::LoggedTrial TrialOf(const LogCliOptions& o, const model::TrialDesign* design) {
+  io::LoggedTrial t;
+  t.id = o.id;
+  t.csv = o.csv;
+  t.ballast_steps = design && o.ballast_steps == 0 ? design->ballast_steps : o.ballast_steps;
+  t.start = o.start;
+  if (o.use != "fit" && o.use != "validate") {
+    throw model::InputError("--use " + o.use, "expected fit or validate");
+  }
+  t.use = o.use == "fit" ? model::TrialUse::kFit : model::TrialUse::kValidate;
+  if (!o.dof.empty()) {
+    t.dof = ParseDofFlags({o.dof}).front();
+  } else if (design) {
+    t.dof = design->dof;
+  } else {
+    throw model::InputError("--dof", "required without --plan (the trial's DOF)");
+  }
+  t.mapping = !o.mapping.empty() ? o.mapping : design ? design->mapping : "";
+  return t;
+}
+
+// Drop-outs said when the trial is logged, not first by identify (seed 000 Fig. 14: a step
+// longer than 3× the median step is a gap; filters and integrals never cross one).
+void PrintGaps(const model::TrialEntry& e) {
+  const std::vector<ident::Gap> gaps = ident::FindGaps(e.log.t);
+  if (gaps.empty()) return;
+  const auto longest = std::max_element(gaps.begin(), gaps.end(), [](const auto& a, const auto& b) {
+    return a.t1 - a.t0 < b.t1 - b.t0;
+  });
+  std::cout << "note: " << gaps.size() << " gap(s) in the log (steps over 3× the median), the "
+            << "longest " << model::DurationText(longest->t1 - longest->t0) << " from t = "
+            << model::Significant(longest->t0, 6) << " s: identification neither filters nor "
+            << "integrates across a gap, so the trial counts as shorter pieces\n";
+}
+
+int RunLog(const LogCliOptions& o) {
+  std::optional<model::TrialDesign> design;
+  if (!o.plan.empty()) design = PlannedDesign(o.plan, o.id);
+  const io::LoggedTrial trial = TrialOf(o, design ? &*design : nullptr);
+  if (design) {
+    const auto problems = planner::CompareLogWithDesign(*design, trial.dof, trial.mapping,
+                                                        io::ReadTrialLog(o.csv));
+    if (!problems.empty()) {
+      throw model::InputError(o.csv, "not the planned trial " + o.id + " of " + o.plan + ": " +
+                                         model::Join(problems, "; ") +
+                                         " (log it without --plan if it is meant to differ)");
+    }
+  }
+  const model::Campaign c = io::AppendLoggedTrial(o.campaign, trial);
+  const model::TrialEntry& e = c.trials.back();
+  const double span = e.log.t.empty() ? 0.0 : e.log.t.back() - e.log.t.front();
+  std::cout << "Logged " << o.id << " (" << model::DofName(e.dof) << ", mapping "
+            << (e.mapping.empty() ? "-" : e.mapping) << ", " << e.log.size() << " rows, "
+            << model::DurationText(span) << (design ? ", as planned" : "") << ") as " << e.file
+            << " of " << c.path << ": " << c.trials.size() << " trial(s)\n";
+  PrintGaps(e);
+  return kExitOk;
+}
+
+void BindLog(CLI::App* sub, LogCliOptions* o) {
+  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")
+      ->required();
+  sub->add_option("TRIAL", o->csv, "the trial's log (CSV, contract §Trial log); only read")
+      ->required();
+  sub->add_option("--trial", o->id, "the trial's id (its file becomes trials/<id>.csv)")
+      ->required();
+  sub->add_option("--plan", o->plan,
+                  "a schedule or `next` result: check the log against its trial --trial");
+  sub->add_option("--dof", o->dof, "the trial's DOF (default: the planned trial's)");
+  sub->add_option("--mapping", o->mapping,
+                  "the trial's mapping (default: the planned trial's, else the vehicle's only "
+                  "mapping on the DOF)");
+  sub->add_option("--ballast-steps", o->ballast_steps, "known ballast steps added (heave)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--use", o->use, "fit (default) or validate");
+  sub->add_option("--start", o->start, "start time on the campaign clock (s)");
+}
+
+const CommandRegistration kRegistration(MakeCommand<LogCliOptions>(
+    "log", 44,
+    "Append a trial logged at the pool to its campaign (checked against the plan with "
+    "--plan), so that `next` can run between trials.",
+    BindLog, RunLog));
+
+}  // namespace
+}  // namespace uuvplan::cli

@@ -1,0 +1,205 @@
+// `uuvplan next CAMPAIGN --pool POOL [--dof D]... [--target PCT] [--json F]`: identify from
+// every trial logged so far, turn the estimates and their covariance into the a priori
+// knowledge of the design (box = estimates ± 2σ, prior information = covariance⁻¹) and plan the
+// single most informative next trial (planner/loop/design_loop.h, docs/loop.md) — what a pool team
+// runs between two trials. The result can be run with `simulate --plan` (its "trial").
+// Exit status (docs/cli.md): 0 a trial is planned and the pool hosts the identification of the
+// DOFs driven for all or part of the a priori box (the pool verdict, planner/pool/pool_verdict.h,
+// printed as `schedule` prints it), or the DOFs have converged (then "trial" is null); 1 no
+// trial that is still needed fits the pool, or the pool verdict says it hosts them for no vehicle
+// of the box (the best next trial is still printed), or a DOF of a pool not hosted over the
+// whole box is stuck (outside the hostable part); 2 bad input;
+// 5 stuck (no trial the pool allows adds information); 6 convergence refused (precise but
+// non-physical or invalid).
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "uuvplan/cli/command.h"
+#include "uuvplan/cli/identify_table.h"
+#include "uuvplan/cli/text_table.h"
+#include "uuvplan/cli/trial_text.h"
+#include "uuvplan/io/identify_json.h"
+#include "uuvplan/cli/loop_report.h"
+#include "uuvplan/model/input_error.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/schedule_json.h"
+#include "uuvplan/io/pool_verdict_json.h"
+#include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/text.h"
+#include "uuvplan/planner/loop/design_loop.h"
+#include "uuvplan/planner/pool/pool_verdict.h"
+#include "uuvplan/cli/verdict_text.h"
+
+namespace uuvplan::cli {
+namespace {
+
+struct NextCliOptions {
+  std::string campaign;
+  std::string pool;
+  std::vector<std::string> dofs;
+  std::string json;
+  bool accept_units = false;
+  planner::DesignLoopOptions design;  ///< --target bound here
+};
+
+// The planned trial: its design, the travel and thrust it needs, and the σ predicted after it.
+void PrintNextTrial(const planner::NextStepResult& r, std::ostream& out) {
+  const auto& d = r.trial.design;
+  out << "Next: " << d.id << " (" << model::DofName(d.dof) << ", " << r.source << ")\n  "
+      << TrialLine(d) << "\n  travel " << TravelText(d.dof, r.trial.travel[0], r.trial.travel[1])
+      << ", smallest thrust " << model::Significant(r.trial.thrust_min, 3) << " N\n  "
+      << r.message << "\n";
+  if (!r.predicted.sigma.empty()) {
+    out << "  predicted σ after it:";
+    for (const auto& [name, s] : r.predicted.sigma) {
+      out << "  " << name << " " << Quantity(s, model::Unit(name, d.dof));
+    }
+    out << "\n  assumption: " << planner::kPredictedSigmaAssumption << "\n";
+  }
+}
+
+// Why a candidate has no bottleneck parameter (CandidateGain::parameter empty).
+std::string NoBottleneck(const std::vector<planner::DofProgress>& progress, model::Dof dof) {
+  for (const auto& p : progress) {
+    if (p.dof != dof) continue;
+    if (p.precise) {
+      return "every parameter of interest is below the target; this trial tests the estimate "
+             "(trusted once a second estimate agrees)";
+    }
+    if (!std::isfinite(p.worst_percent)) {
+      return "nothing is estimated yet; this trial starts the estimate";
+    }
+  }
+  return "no parameter of interest above the target is reached by this trial";
+}
+
+void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& campaign,
+                   const model::Pool& pool, const NextCliOptions& o, std::ostream& out) {
+  const double target = o.design.target_percent;
+  out << "Next trial for " << campaign.vehicle.name << " in pool " << pool.name << " after "
+      << campaign.trials.size() << " trial(s) of " << o.campaign << "\n\n";
+  if (!r.estimates.dofs.empty()) {
+    PrintIdentifyTable(r.estimates, out);
+    out << "\n";
+  }
+  out << "Parameters of interest (m; kq where significant, else k; every η):\n";
+  PrintProgress(r.progress, target, out);
+  out << "\n";
+  switch (r.status) {
+    case planner::NextStatus::kTrial:
+      PrintNextTrial(r, out);
+      break;
+    case planner::NextStatus::kConverged:
+      out << "No trial needed: " << r.message << "\n";
+      break;
+    case planner::NextStatus::kInfeasible:
+      out << "No trial can be planned: " << r.message << "\n";
+      break;
+    case planner::NextStatus::kStuck:
+      out << "No trial adds enough information: " << r.message << "\n";
+      break;
+    case planner::NextStatus::kRefused:
+      out << "Convergence refused: " << r.message << "\n";
+      break;
+  }
+  for (const auto& c : r.candidates) {
+    if (c.parameter.empty()) {
+      out << "Candidate " << c.trial << " (" << model::DofName(c.dof)
+          << "): no σ to predict: " << NoBottleneck(r.progress, c.dof) << "\n";
+      continue;
+    }
+    const std::string unit = model::Unit(c.parameter, c.dof);
+    out << "Candidate " << c.trial << " (" << model::DofName(c.dof) << "): σ(" << c.parameter
+        << ") " << (std::isinf(c.sigma_now) ? "not determined yet" : Quantity(c.sigma_now, unit))
+        << " → " << Quantity(c.sigma_after, unit)
+        << (c.first_estimate ? ": this trial determines it (the next is planned from its estimate)"
+                             : ", about " + model::Significant(c.trials_to_target, 3) +
+                                   " such trials to the target")
+        << (c.negligible ? " — negligible" : "") << "\n";
+  }
+  if (!r.notes.empty()) {
+    out << "\nNotes:\n";
+    for (const auto& n : r.notes) out << "  - " << n << "\n";
+  }
+}
+
+// {"estimates", "trial" (null unless planned), "predicted", "status", "message", "source",
+//  "target", "progress", "notes"}.
+nlohmann::json NextStepJson(const planner::NextStepResult& r, double target) {
+  const bool planned = r.status == planner::NextStatus::kTrial;
+  nlohmann::json j;
+  j["estimates"] = io::IdentifyJson(r.estimates);
+  j["trial"] = planned ? io::TrialToJson(r.trial) : nlohmann::json(nullptr);
+  j["predicted"] = planned ? PredictedJson(r.dof, r.predicted) : nlohmann::json::object();
+  j["status"] = std::string(planner::NextStatusName(r.status));
+  j["message"] = r.message;
+  j["source"] = r.source;
+  j["target"] = target;
+  j["progress"] = ProgressJson(r.progress);
+  j["candidates"] = CandidatesJson(r.candidates);
+  j["exit_status"] = ExitStatus(r.status);
+  j["notes"] = r.notes;
+  return j;
+}
+
+int RunNext(const NextCliOptions& o) {
+  const model::Campaign campaign = ReadCampaignForIdentification(o.campaign, o.accept_units);
+  const model::Pool pool = io::ReadPool(o.pool);
+  planner::DesignLoopOptions options = o.design;
+  options.dofs = ParseDofFlags(o.dofs);
+  const planner::NextStepResult r = planner::NextStep(campaign, pool, options);
+  // The pool verdict of the DOFs driven (schedule's and check-pool's answer for them).
+  planner::ScheduleOptions so = options.ScheduleAtTarget();
+  for (const auto& p : r.progress) so.dofs.push_back(p.dof);
+  const planner::PoolVerdict verdict = planner::JudgePool(campaign.vehicle, pool, so);
+  // A DOF that ran trials here and gets no further one is stuck (5) in a pool the verdict
+  // hosts; in one it hosts for part of the box or none, the pool's answer is 1 (as `loop`'s,
+  // planner::ReadLoopEnd). A trial is planned (0) where the loop may run: all or part.
+  int exit_status = ExitStatus(r.status);
+  const bool pool_refuses =
+      (r.status == planner::NextStatus::kTrial && !planner::LoopMayRun(verdict)) ||
+      (r.status == planner::NextStatus::kStuck && !verdict.hosted);
+  if (pool_refuses) exit_status = VerdictExit(verdict);
+  std::ostream& out = ReportStream(o.json);
+  PrintNextStep(r, campaign, pool, o, out);
+  PrintVerdict(verdict, pool, out);
+  if (!o.json.empty()) {
+    nlohmann::json j = NextStepJson(r, o.design.target_percent);
+    j["verdict"] = io::PoolVerdictJson(verdict, pool);
+    j["exit_status"] = exit_status;
+    // The pool's answer is the status a script reads (as `loop`'s): the best next trial, if
+    // any, is still given for reference.
+    if (pool_refuses && exit_status != 0) {
+      j["status"] = std::string(planner::NextStatusName(planner::NextStatus::kInfeasible));
+      const bool stuck = r.status == planner::NextStatus::kStuck && !r.message.empty();
+      j["message"] = verdict.sentence + (stuck ? "; " + r.message : std::string());
+    }
+    WriteJson(o.json, j);
+  }
+  return exit_status;
+}
+
+void BindNext(CLI::App* sub, NextCliOptions* o) {
+  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml of the trials run so far, or its directory")->required();
+  sub->add_option("--pool", o->pool, "pool.yaml of the pool of the next trial")->required();
+  sub->add_option("--dof", o->dofs,
+                  "DOF to drive to the target (repeatable; default: the DOFs the campaign "
+                  "has trials of, or every DOF the vehicle can plan)");
+  AddTargetOption(sub, &o->design.target_percent);
+  AddJsonOption(sub, &o->json, "also write the result");
+  AddAcceptUnitsFlag(sub, &o->accept_units);
+  AddThreadsOption(sub, {&o->design.schedule.planner.threads, &o->design.identify.threads},
+                   "identifying (trials and DOFs) and planning the DOFs' candidate trials");
+}
+
+const CommandRegistration kRegistration(MakeCommand<NextCliOptions>(
+    "next", 45,
+    "Identify from the trials so far, then plan the single most informative next trial "
+    "(sequential design: box = estimates ± 2σ, prior information = covariance⁻¹).",
+    BindNext, RunNext));
+
+}  // namespace
+}  // namespace uuvplan::cli

@@ -1,0 +1,311 @@
+// `uuvplan simulate --truth TRUTH.yaml --plan PLAN.json --out DIR [--seed N] [--step S]
+// [--json F]`: runs a plan on the virtual vehicle of a truth file (model/virtual_pool.h) and
+// writes the campaign as a pool team would log it: DIR/campaign.yaml, DIR/vehicle.yaml and
+// DIR/trials/<id>.csv. DIR must be new or empty; it is written whole or not at all.
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "uuvplan/cli/command.h"
+#include "uuvplan/model/util/text.h"
+#include "uuvplan/model/input_error.h"
+#include "uuvplan/io/coupled_design_json.h"
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/json_value.h"
+#include "uuvplan/model/coupled_virtual_trial.h"
+#include "uuvplan/model/util/seed.h"
+#include "uuvplan/io/schedule_json.h"
+#include "uuvplan/io/virtual_campaign.h"
+#include "uuvplan/model/campaign_builder.h"
+#include "uuvplan/planner/schedule.h"
+
+namespace uuvplan::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using model::InputError;
+
+struct SimulateOptions {
+  std::string truth;
+  std::string plan;
+  std::string out;
+  double step_s = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the truth's step
+  std::string json;
+  model::VirtualCampaignOptions campaign;  ///< --seed bound here; its pause_s between trials
+};
+
+std::string MappingNames(const model::Vehicle& v, model::Dof dof) {
+  std::string names;
+  for (int i : v.MappingsOf(dof)) names += (names.empty() ? "" : ", ") + v.mappings[i].name;
+  return names.empty() ? "none" : names;
+}
+
+// A mapping named in the plan must be one of the truth vehicle's mappings of the trial's DOF.
+void CheckMapping(const model::Vehicle& v, const model::TrialDesign& d, const std::string& name,
+                  const std::string& where) {
+  const int i = v.MappingIndex(name);
+  if (i >= 0 && v.mappings[i].dof == d.dof) return;
+  throw InputError(where, "expected a " + std::string(model::DofName(d.dof)) +
+                              " mapping of vehicle '" + v.name + "' (" + MappingNames(v, d.dof) +
+                              "), got '" + name + "'");
+}
+
+// Everything the virtual pool needs for each trial, checked up front so that the message names
+// the plan's trial and the truth file rather than failing half-way through the campaign.
+void CheckPlanAgainstTruth(const planner::Schedule& plan, const model::Truth& truth,
+                           const std::string& plan_path, const std::string& truth_path) {
+  const model::Vehicle& v = truth.vehicle;
+  for (std::size_t i = 0; i < plan.trials.size(); ++i) {
+    const model::TrialDesign& d = plan.trials[i].design;
+    const std::string where = plan_path + ": trials[" + std::to_string(i) + "]";
+    const std::string dof(model::DofName(d.dof));
+    CheckMapping(v, d, d.mapping, where + ".mapping");
+    for (std::size_t k = 0; k < d.segments.size(); ++k) {
+      if (!d.segments[k].mapping.empty()) {
+        CheckMapping(v, d, d.segments[k].mapping,
+                     where + ".segments[" + std::to_string(k) + "].mapping");
+      }
+    }
+    if (truth.dofs.count(d.dof) == 0) {
+      throw InputError(truth_path, "missing dofs." + dof + ".params: trial '" + d.id + "' (" +
+                                       where + ") is a " + dof +
+                                       " trial, and the truth has no true " + dof +
+                                       " parameters to simulate it with");
+    }
+    const auto s = v.sensors.find(d.dof);
+    if (s == v.sensors.end() || (!s->second.position && !s->second.velocity)) {
+      throw InputError(truth_path, "missing sensors." + dof + ": trial '" + d.id + "' needs a " +
+                                       dof + " position or velocity sensor");
+    }
+  }
+}
+
+// The virtual pool applies whatever force is asked; a real thruster saturates. Say so when a
+// push asks more of a thruster of its mapping than it can give (tau_i = share_i·phi within the
+// range); "" when every thruster can.
+std::string SaturationNote(const model::TrialDesign& d, const model::Vehicle& v, double force,
+                           const std::string& name) {
+  const model::ThrustMapping& m = v.mappings[v.MappingIndex(name)];
+  for (const auto& [index, share] : m.shares) {
+    const model::Thruster& th = v.thrusters[index];
+    const double tau = share * force;
+    const double limit = tau >= 0 ? th.MaxForwardThrust() : th.MaxReverseThrust();
+    if (std::abs(tau) > limit * (1 + 1e-9)) {
+      std::ostringstream s;
+      s << "trial '" << d.id << "' asks " << force << " " << model::ForceUnit(d.dof)
+        << " of mapping '" << name << "': thruster " << th.name << " would give " << tau
+        << " N but can give at most " << (tau >= 0 ? "" : "-") << limit
+        << " N (the virtual pool does not saturate thrusters)";
+      return s.str();
+    }
+  }
+  return "";
+}
+
+// One note per push extreme that saturates: each push's largest force, then its smallest.
+std::vector<std::string> SaturationNotes(const planner::Schedule& plan, const model::Vehicle& v) {
+  std::vector<std::string> notes;
+  for (const auto& t : plan.trials) {
+    for (const model::ForceDemand& push : t.design.Demands()) {
+      std::vector<double> extremes = {push.max};
+      if (push.min != push.max) extremes.push_back(push.min);
+      for (const double force : extremes) {
+        std::string note = SaturationNote(t.design, v, force, push.mapping);
+        if (!note.empty()) notes.push_back(std::move(note));
+      }
+    }
+  }
+  return notes;
+}
+
+// --out must be new or empty: nothing is overwritten.
+void CheckNewOrEmpty(const std::string& out) {
+  std::error_code ec;
+  if (!fs::exists(out, ec)) return;
+  if (!fs::is_directory(out, ec)) {
+    throw InputError(out, "--out exists and is not a directory; choose a new directory");
+  }
+  if (!fs::is_empty(out, ec)) {
+    throw InputError(out,
+                     "--out exists and is not empty; choose a new directory (nothing "
+                     "is overwritten)");
+  }
+}
+
+// Figures of the simulated campaign, for the table's last line and the JSON.
+struct CampaignTotals {
+  std::size_t rows = 0;
+  double trial_time = 0.0;  ///< s of trials
+  double clock = 0.0;       ///< s of pool time, pauses included
+};
+
+CampaignTotals Totals(const model::Campaign& campaign,
+                      const std::vector<model::TrialDesign>& designs) {
+  CampaignTotals t;
+  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
+    t.rows += campaign.trials[i].log.size();
+    t.trial_time += designs[i].duration;
+  }
+  if (!campaign.trials.empty()) t.clock = campaign.trials.back().start + designs.back().duration;
+  return t;
+}
+
+void PrintCampaignTable(const model::Campaign& campaign,
+                        const std::vector<model::TrialDesign>& designs, std::ostream& out) {
+  out << std::left << std::setw(22) << "trial" << std::setw(7) << "dof" << std::setw(10) << "kind"
+      << std::setw(24) << "mapping" << std::right << std::setw(10) << "duration" << std::setw(8)
+      << "rows"
+      << "  file\n";
+  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
+    const auto& e = campaign.trials[i];
+    const auto& d = designs[i];
+    std::ostringstream dur;
+    dur << std::fixed << std::setprecision(1) << d.duration << " s";
+    out << std::left << std::setw(22) << d.id << std::setw(7) << model::DofName(d.dof)
+        << std::setw(10) << model::TrialKindName(d.kind) << std::setw(24) << d.mapping << std::right
+        << std::setw(10) << dur.str() << std::setw(8) << e.log.size() << "  " << e.file << "\n";
+  }
+}
+
+nlohmann::json SimulationJson(const model::Campaign& campaign,
+                              const std::vector<model::TrialDesign>& designs,
+                              const SimulateOptions& o, double step_s) {
+  nlohmann::json trials = nlohmann::json::array();
+  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
+    const auto& e = campaign.trials[i];
+    const auto& d = designs[i];
+    trials.push_back({{"id", d.id},
+                      {"dof", std::string(model::DofName(d.dof))},
+                      {"file", e.file},
+                      {"rows", e.log.size()},
+                      {"duration", d.duration},
+                      {"start", e.start}});
+  }
+  const CampaignTotals totals = Totals(campaign, designs);
+  return {{"campaign", (fs::path(o.out) / "campaign.yaml").string()},
+          {"seed", o.campaign.seed},
+          {"step", step_s},
+          {"trials", trials},
+          {"rows", totals.rows},
+          {"trial_time", totals.trial_time},
+          {"pool_time", totals.clock}};
+}
+
+// A coupled schedule (`schedule --model coupled --json`): its combined trial flown by the
+// coupled virtual pool (model/coupled_virtual_trial.h, seed StreamSeed(seed, 0) as trial 0 of a
+// campaign), written as a one-trial campaign listed under its first DOF, as `identify --model
+// coupled` reads it.
+int RunCoupledSimulate(const SimulateOptions& o, const model::Truth& truth,
+                       const nlohmann::json& root) {
+  const model::CoupledTrialDesign trial = io::CoupledTrialOfJson(root, o.plan);
+  for (const model::TrialDesign& in : trial.inputs) {
+    const int m = truth.vehicle.MappingIndex(in.mapping);
+    if (m < 0 || truth.vehicle.mappings[m].dof != in.dof) {
+      throw InputError(o.plan + ": trial.inputs", "mapping '" + in.mapping + "' is not a " +
+                                                      std::string(model::DofName(in.dof)) +
+                                                      " mapping of the truth's vehicle (" +
+                                                      MappingNames(truth.vehicle, in.dof) + ")");
+    }
+  }
+  model::VirtualPoolOptions pool;
+  pool.seed = model::StreamSeed(o.campaign.seed, 0);
+  pool.command_rate_hz = o.campaign.command_rate_hz;
+  model::Campaign campaign;
+  campaign.vehicle = truth.vehicle;
+  model::TrialEntry e;
+  e.file = "trials/" + trial.id + ".csv";
+  e.dof = trial.inputs.front().dof;
+  e.mapping = trial.inputs.front().mapping;
+  e.start = 0.0;
+  e.has_start = true;
+  e.log = model::RunCoupledVirtualTrial(truth, trial, pool);
+  const std::size_t rows = e.log.t.size();
+  campaign.trials.push_back(std::move(e));
+  io::WriteCampaign(o.out, std::move(campaign), truth.vehicle,
+                    {"uuvplan virtual pool: truth vehicle '" + truth.vehicle.name +
+                     "', combined trial '" + trial.id + "', seed " + std::to_string(o.campaign.seed)});
+  const std::string campaign_path = (fs::path(o.out) / "campaign.yaml").string();
+  std::ostream& out = ReportStream(o.json);
+  out << "Simulated the combined " << model::kCombinedModeNames.Name(trial.mode) << " trial '"
+      << trial.id << "' of plan " << o.plan << " on the virtual '" << truth.vehicle.name
+      << "' of " << o.truth << " (coupled horizontal model, seed 003)\n(seed " << o.campaign.seed
+      << ", RK4 step " << truth.integration_step_s << " s): " << trial.duration << " s, " << rows
+      << " rows\nCampaign: " << campaign_path << "  (identify it with --model coupled)\n";
+  if (!o.json.empty()) {
+    WriteJson(o.json, {{"campaign", campaign_path}, {"seed", o.campaign.seed},
+                       {"step", truth.integration_step_s}, {"model", "coupled-horizontal"},
+                       {"trials", {{{"id", trial.id}, {"mode", std::string(model::kCombinedModeNames.Name(trial.mode))},
+                                    {"duration", trial.duration}, {"rows", rows}}}}});
+  }
+  return kExitOk;
+}
+
+int RunSimulate(const SimulateOptions& options) {
+  SimulateOptions o = options;
+  o.out = DirectoryName(o.out);
+  if (!std::isnan(o.step_s) && !(o.step_s > 0 && std::isfinite(o.step_s))) {
+    throw InputError("--step",
+                     "expected a positive integration step in s, got " + std::to_string(o.step_s));
+  }
+  CheckNewOrEmpty(o.out);
+  model::Truth truth = io::ReadTruth(o.truth);
+  if (!std::isnan(o.step_s)) truth.integration_step_s = o.step_s;
+  if (const nlohmann::json root = io::LoadJson(o.plan); io::IsCoupledScheduleJson(root)) {
+    return RunCoupledSimulate(o, truth, root);
+  }
+  const planner::Schedule plan = io::ReadScheduleJson(o.plan);
+  CheckPlanAgainstTruth(plan, truth, o.plan, o.truth);
+
+  std::vector<model::TrialDesign> designs;
+  for (const auto& t : plan.trials) designs.push_back(t.design);
+  const model::Campaign campaign = io::SimulateCampaign(truth, designs, o.out, o.campaign);
+
+  for (const std::string& note : SaturationNotes(plan, truth.vehicle)) {
+    std::cerr << "uuvplan simulate: note: " << note << "\n";
+  }
+  std::ostream& out = ReportStream(o.json);
+  out << "Simulated " << campaign.trials.size() << " trial(s) of plan " << o.plan
+      << " on the virtual '" << truth.vehicle.name << "' of " << o.truth << "\n"
+      << "(seed " << o.campaign.seed << ", RK4 step " << truth.integration_step_s << " s, "
+      << o.campaign.pause_s << " s pause between trials)\n\n";
+  PrintCampaignTable(campaign, designs, out);
+  const CampaignTotals totals = Totals(campaign, designs);
+  out << "\n"
+      << campaign.trials.size() << " trials, " << totals.rows << " rows, "
+      << model::DurationText(totals.trial_time) << " of trials, "
+      << model::DurationText(totals.clock) << " of pool time with pauses\n"
+      << "Campaign: " << (fs::path(o.out) / "campaign.yaml").string() << "\n";
+  if (!o.json.empty()) {
+    WriteJson(o.json, SimulationJson(campaign, designs, o, truth.integration_step_s));
+  }
+  return kExitOk;
+}
+
+void BindSimulate(CLI::App* sub, SimulateOptions* o) {
+  sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")->required();
+  sub->add_option("--plan", o->plan,
+                  "plan JSON: a `schedule --json` result (also `--model coupled`), or a `next "
+                  "--json` result (its trial)")
+      ->required();
+  sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
+      ->required();
+  sub->add_option("--seed", o->campaign.seed,
+                  "seed of the sensor noise, drop-outs and outliers")
+      ->capture_default_str();
+  sub->add_option("--step", o->step_s,
+                  "RK4 integration step in s (default: the truth's virtual_pool.step, else 0.01)");
+  AddJsonOption(sub, &o->json, "also write a summary", /*check_now=*/false);
+}
+
+const CommandRegistration kRegistration(MakeCommand<SimulateOptions>(
+    "simulate", 30,
+    "Run a plan on the virtual vehicle of a truth file and write the campaign (campaign.yaml, "
+    "vehicle.yaml, trials/<id>.csv) as a pool team would log it.",
+    BindSimulate, RunSimulate));
+
+}  // namespace
+}  // namespace uuvplan::cli

@@ -1,0 +1,153 @@
+// The a priori box of a DOF's parameters (see parameter_box.h).
+#include "uuvplan/planner/design/parameter_box.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "uuvplan/model/effects.h"
+#include "uuvplan/model/prior.h"
+#include "uuvplan/model/util/text.h"
+
+namespace uuvplan::planner {
+namespace {
+
+bool IsEta(const std::string& name) { return model::StartsWith(name, model::param::kEtaPrefix); }
+
+// A parameter the estimates do not cover: the box's η centre, else the model's nominal value
+// (model/prior.h: an effect's null value).
+double NominalWithoutValue(const std::string& name, const BoxOptions& options) {
+  return IsEta(name) ? options.eta_nominal : model::NullValue(name);
+}
+
+// The drag axis (k and kq scaled together by [drag_lo, drag_hi]) and, when the box has free
+// installation coefficients, their axis over the options' eta range.
+void AddDragAndEtaAxes(double drag_lo, double drag_hi, const std::vector<std::string>& etas,
+                       const BoxOptions& options, ParameterBox* box) {
+  box->axes.push_back({"drag",
+                       {model::param::kLinearDrag, model::param::kQuadraticDrag},
+                       drag_lo,
+                       drag_hi,
+                       true});
+  if (!etas.empty()) {
+    box->axes.push_back({"eta", etas, options.eta_range[0] / options.eta_nominal,
+                         options.eta_range[1] / options.eta_nominal, false});
+  }
+}
+
+void AddPoints(const ParameterBox& box, const std::vector<int>& axes,
+               const std::vector<std::vector<double>>& values, std::vector<double>* factors,
+               std::size_t a, std::vector<ParameterValues>* out) {
+  if (a == axes.size()) {
+    out->push_back(box.At(*factors));
+    return;
+  }
+  for (double f : values[a]) {
+    (*factors)[axes[a]] = f;
+    AddPoints(box, axes, values, factors, a + 1, out);
+  }
+}
+
+}  // namespace
+
+ParameterValues ParameterBox::At(const std::vector<double>& factors) const {
+  ParameterValues p = nominal;
+  for (std::size_t a = 0; a < axes.size() && a < factors.size(); ++a) {
+    for (const auto& name : axes[a].params) {
+      if (auto it = p.find(name); it != p.end()) it->second = nominal.at(name) * factors[a];
+    }
+  }
+  return p;
+}
+
+double ParameterBox::Nominal(const std::string& name, double fallback) const {
+  auto it = nominal.find(name);
+  return it == nominal.end() ? fallback : it->second;
+}
+
+std::vector<ParameterValues> ParameterBox::DesignPoints() const {
+  std::vector<ParameterValues> out = {nominal};
+  std::vector<int> idx;
+  std::vector<std::vector<double>> values;
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    if (!axes[a].in_design || axes[a].lo == axes[a].hi) continue;
+    idx.push_back(static_cast<int>(a));
+    values.push_back({axes[a].lo, axes[a].hi});
+  }
+  if (idx.empty()) return out;
+  std::vector<double> factors(axes.size(), 1.0);
+  AddPoints(*this, idx, values, &factors, 0, &out);
+  return out;
+}
+
+std::vector<ParameterValues> ParameterBox::CheckPoints(int per_axis) const {
+  per_axis = std::max(2, per_axis);
+  std::vector<int> idx;
+  std::vector<std::vector<double>> values;
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    if (axes[a].lo == axes[a].hi) continue;
+    idx.push_back(static_cast<int>(a));
+    std::vector<double> v;
+    for (int i = 0; i < per_axis; ++i) {
+      v.push_back(axes[a].lo + (axes[a].hi - axes[a].lo) * i / (per_axis - 1));
+    }
+    values.push_back(v);
+  }
+  std::vector<ParameterValues> out;
+  std::vector<double> factors(axes.size(), 1.0);
+  AddPoints(*this, idx, values, &factors, 0, &out);
+  return out;
+}
+
+// Centred on the model's nominal values (model/prior.h), except η: the box is centred on
+// options.eta_nominal, a planning assumption (installation losses are expected, seed 000
+// Table III), not a prior.
+ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
+                        const std::vector<std::string>& names, const BoxOptions& options,
+                        std::vector<std::string>* notes) {
+  ParameterBox box;
+  const auto mb = vehicle.InertiaBounds(dof);
+  const model::APrioriDrag drag = model::DragOf(vehicle, dof, options.fallback_drag_rel_sigma);
+  const double rel = drag.drag.rel_sigma;
+  if (!drag.from_vehicle_file() && notes) {
+    notes->push_back(model::DragAssumption(dof, drag) +
+                     ". Give the drag of a previous fit to plan better.");
+  }
+  box.nominal = model::NominalValues(vehicle, dof, names, options.fallback_drag_rel_sigma);
+  std::vector<std::string> etas;
+  for (const auto& n : names) {
+    if (!IsEta(n)) continue;
+    box.nominal[n] = options.eta_nominal;
+    etas.push_back(n);
+  }
+  const double m_mid = 0.5 * (mb[0] + mb[1]);
+  box.axes.push_back({"m", {model::param::kMass}, mb[0] / m_mid, mb[1] / m_mid, true});
+  const double half = options.drag_sigmas * rel;
+  AddDragAndEtaAxes(std::max(0.05, 1.0 - half), 1.0 + half, etas, options, &box);
+  return box;
+}
+
+ParameterBox EstimateBox(const ParameterValues& estimates, const ParameterValues& sigmas,
+                         const std::vector<std::string>& names, double n_sigma,
+                         const BoxOptions& options) {
+  ParameterBox box;
+  std::vector<std::string> etas;
+  for (const auto& n : names) {
+    auto it = estimates.find(n);
+    box.nominal[n] = it != estimates.end() ? it->second : NominalWithoutValue(n, options);
+    if (IsEta(n) && it == estimates.end()) etas.push_back(n);
+  }
+  auto rel = [&](const std::string& n) {
+    auto v = estimates.find(n);
+    auto s = sigmas.find(n);
+    if (v == estimates.end() || s == sigmas.end() || v->second == 0.0) return 0.0;
+    return std::min(0.9, n_sigma * s->second / std::abs(v->second));
+  };
+  const double rm = rel(model::param::kMass);
+  box.axes.push_back({"m", {model::param::kMass}, 1.0 - rm, 1.0 + rm, true});
+  const double rd = std::max(rel(model::param::kLinearDrag), rel(model::param::kQuadraticDrag));
+  AddDragAndEtaAxes(1.0 - rd, 1.0 + rd, etas, options, &box);
+  return box;
+}
+
+}  // namespace uuvplan::planner
