@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "design/sensor_information.h"
 #include "format.h"
 #include "options_check.h"
 
@@ -136,12 +137,7 @@ DofContext::DofContext(const model::Vehicle& vehicle, const model::Pool& pool, m
   step_s_ = ChooseStep(tc_min_, options_.max_step_s);
   design_sensors_ = sensors_;
   for (auto* spec : {&design_sensors_.position, &design_sensors_.velocity}) {
-    if (!*spec) continue;
-    const double rate = 1.0 / step_s_;
-    if ((*spec)->rate_hz > rate) {
-      (*spec)->sigma *= std::sqrt(rate / (*spec)->rate_hz);
-      (*spec)->rate_hz = rate;
-    }
+    if (*spec) **spec = AtMostRate(**spec, 1.0 / step_s_);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "design/travel_margin.h"
 #include "options_check.h"
 
 #include "uuvplan/model/effects.h"
@@ -37,10 +38,6 @@ bool SineDesignOptions::IsValid(std::string* error) const {
 
 namespace {
 
-// Designs keep this far (m) inside the pool, so that the finer check (DofContext::Check, finer
-// step, denser box grid) agrees with the design's own travel.
-constexpr double kTravelSafety = 0.005;
-
 // Hull of the travel over several parameter points as the trial goes on: the first time the
 // span (max over points of position - min over points of position) exceeds `available`.
 // The point with the fastest steady speed is traced first over [0, t_max]; the others only up
@@ -59,7 +56,7 @@ double FirstOverflow(const DofContext& ctx, const model::DofModel& model,
   };
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return speed(thetas[a]) < speed(thetas[b]); });
-  const double avail = ctx.available() - kTravelSafety;
+  const double avail = ctx.available() - kSineTravelMargin;
   std::vector<double> lo, hi;
   double horizon = t_max;
   for (std::size_t n = 0; n < order.size(); ++n) {
@@ -173,7 +170,7 @@ class SineProblem {
       phi[j] = EvaluateCriterion(RelativeInformation(M, thetas[j]), o_.criterion, interest_).value;
     }
     if (num_constraints() > 1) {
-      g[1] = (hi - lo - (ctx_.available() - kTravelSafety)) / ctx_.available();
+      g[1] = (hi - lo - (ctx_.available() - kSineTravelMargin)) / ctx_.available();
     }
     return true;
   }

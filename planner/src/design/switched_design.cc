@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "design/travel_margin.h"
 #include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/fisher_information.h"
@@ -14,9 +15,6 @@
 namespace uuvplan::planner {
 namespace {
 
-// As the single sine (sine_design.cc): designs keep 5 mm inside the pool, so that the finer
-// check over the whole grid agrees with the design points' travel.
-constexpr double kTravelSafety = 0.005;
 // Shortest segment of a square wave (s): a shorter first or last piece is merged into its
 // neighbour. CHOSEN: two RK4 steps of the fastest DOF; a pool team cannot command less.
 constexpr double kShortestSegment = 0.2;
@@ -115,7 +113,7 @@ class SwitchedProblem {
       phi[j] = EvaluateCriterion(RelativeInformation(M, thetas[j]), o_.criterion, interest_).value;
     }
     const double avail = ctx_.available();
-    g[0] = std::isfinite(avail) ? (hi - lo - (avail - kTravelSafety)) / avail : -1.0;
+    g[0] = std::isfinite(avail) ? (hi - lo - (avail - kSineTravelMargin)) / avail : -1.0;
     return true;
   }
 
