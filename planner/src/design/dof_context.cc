@@ -281,6 +281,30 @@ std::vector<Eigen::MatrixXd> DofContext::Information(const model::TrialDesign& d
   return out;
 }
 
+std::vector<Eigen::MatrixXd> DofContext::DesignInformation(const TrialModel& tm,
+                                                           const model::Excitation& input,
+                                                           double duration,
+                                                           std::array<double, 2>* travel) const {
+  std::vector<Eigen::MatrixXd> out;
+  *travel = {0.0, 0.0};
+  for (const auto& th : tm.design_thetas) {
+    const TrialResponse r = SimulateTrial(*tm.model, th, input, design_sensors_, duration, step_s_,
+                                          true, options_.start_known);
+    (*travel)[0] = std::min((*travel)[0], r.position_min);
+    (*travel)[1] = std::max((*travel)[1], r.position_max);
+    out.push_back(tm.Embed(r.M, model_->num_parameters()));
+  }
+  return out;
+}
+
+std::vector<Eigen::MatrixXd> WithPrior(std::vector<Eigen::MatrixXd> information,
+                                       const std::vector<Eigen::MatrixXd>& prior) {
+  for (std::size_t j = 0; j < information.size() && j < prior.size(); ++j) {
+    if (prior[j].size() == information[j].size()) information[j] += prior[j];
+  }
+  return information;
+}
+
 std::vector<double> DofContext::CriterionValues(const std::vector<Eigen::MatrixXd>& M, Criterion c,
                                                 const std::vector<int>& interest,
                                                 bool* any_singular) const {

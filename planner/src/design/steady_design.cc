@@ -677,10 +677,7 @@ void Summarise(const DofContext& ctx, const SteadyDesignOptions& o,
                const std::vector<Eigen::MatrixXd>& prior, const std::string& infeasible,
                SteadyDesignResult* result) {
   const std::string dof(model::DofName(ctx.dof()));
-  std::vector<Eigen::MatrixXd> total = result->information;
-  for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
-    if (prior[j].size() == total[j].size()) total[j] += prior[j];
-  }
+  const std::vector<Eigen::MatrixXd> total = WithPrior(result->information, prior);
   std::vector<int> interest;
   for (int i : InformedParameters(RelativeInformation(total[0], ctx.design_thetas()[0]))) {
     if (i != 0) interest.push_back(i);
