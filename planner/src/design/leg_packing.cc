@@ -1,4 +1,5 @@
 // Step 4 of the steady design (steady_design.h): the exact design's legs packed into trials.
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <map>

@@ -2,7 +2,6 @@
 // the exact design's legs and their packing into trials.
 #pragma once
 
-#include <Eigen/Dense>
 #include <string>
 #include <vector>
 
