@@ -8,6 +8,7 @@
 
 #include "number_text.h"
 #include "options_check.h"
+#include "uuvplan/ident/prepare/speed_fit.h"
 #include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/median.h"

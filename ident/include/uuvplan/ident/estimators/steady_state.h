@@ -28,8 +28,8 @@
 #include "uuvplan/ident/estimate.h"
 #include "uuvplan/ident/estimators/least_squares.h"
 #include "uuvplan/ident/stats/model_selection_options.h"
+#include "uuvplan/ident/prepare/steady_detection.h"
 #include "uuvplan/ident/prepare/trial_data.h"
-#include "uuvplan/ident/prepare/velocity_estimation.h"
 #include "uuvplan/model/dof_model.h"
 
 namespace uuvplan::ident {
