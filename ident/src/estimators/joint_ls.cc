@@ -8,6 +8,7 @@
 #include "stats/model_selection.h"
 #include "uuvplan/ident/estimators/least_squares.h"
 #include "uuvplan/ident/stats/significance.h"
+#include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
 
@@ -41,13 +42,6 @@ Eigen::VectorXd InstrumentalSolve(const Eigen::MatrixXd& H, const Eigen::MatrixX
   const Eigen::MatrixXd A = Z.transpose() * w.asDiagonal() * Hs;
   const Eigen::VectorXd b = Z.transpose() * w.asDiagonal() * y;
   return scale.asDiagonal() * A.colPivHouseholderQr().solve(b);
-}
-
-// The columns `cols` of H (the parameters still in the model).
-Eigen::MatrixXd Columns(const Eigen::MatrixXd& H, const std::vector<int>& cols) {
-  Eigen::MatrixXd out(H.rows(), static_cast<Eigen::Index>(cols.size()));
-  for (std::size_t c = 0; c < cols.size(); ++c) out.col(static_cast<Eigen::Index>(c)) = H.col(cols[c]);
-  return out;
 }
 
 // θ of all np parameters from the estimate of `cols` (the dropped ones 0).
@@ -85,7 +79,7 @@ LinearFit LeastSquares(Fit* fit) {
   for (int pass = 0; pass < 2; ++pass) {
     LeastSquaresOptions ls;
     ls.covariance = CovarianceKind::kResidual;
-    lf = SolveLeastSquares(Columns(rows.H, fit->cols), rows.y, &fit->w, ls);
+    lf = SolveLeastSquares(SelectedColumns(rows.H, fit->cols), rows.y, &fit->w, ls);
     if (!lf.ok()) return lf;
     fit->w = EquationWeights(rows, lf.residuals, equations);
   }
@@ -109,9 +103,10 @@ void Instrumental(const std::vector<JointTrialData>& trials, const JointLsOption
       simulated.push_back(internal::SimulatedVelocities(d, *fit->model, fit->theta, options.step_s));
     }
     const Eigen::MatrixXd Z = internal::BuildJointRows(*fit->model, trials, simulated).H;
-    const Eigen::VectorXd theta = Expand(
-        InstrumentalSolve(Columns(fit->rows.H, fit->cols), Columns(Z, fit->cols), fit->rows.y, fit->w),
-        fit->cols, fit->np());
+    const Eigen::VectorXd theta =
+        Expand(InstrumentalSolve(SelectedColumns(fit->rows.H, fit->cols),
+                                 SelectedColumns(Z, fit->cols), fit->rows.y, fit->w),
+               fit->cols, fit->np());
     if (!Z.allFinite() || !theta.allFinite()) {
       result->notes.push_back(
           "instrumental variables skipped: the current estimate's simulation or the "
@@ -190,10 +185,10 @@ bool FitAndPrune(const std::vector<JointTrialData>& data, const JointLsOptions& 
     // The MA(1) sandwich of the √W-scaled rows (joint_ls.h).
     const Eigen::VectorXd sw = fit->w.cwiseSqrt();
     const Eigen::VectorXd r = fit->rows.y - fit->rows.H * fit->theta;
-    result->covariance = Expand(Ma1Covariance(sw.asDiagonal() * Columns(fit->rows.H, fit->cols),
-                                              sw.asDiagonal() * Columns(fit->Z, fit->cols),
-                                              sw.cwiseProduct(r), fit->rows.group),
-                                fit->cols, fit->np());
+    const Eigen::MatrixXd H = sw.asDiagonal() * SelectedColumns(fit->rows.H, fit->cols);
+    const Eigen::MatrixXd Z = sw.asDiagonal() * SelectedColumns(fit->Z, fit->cols);
+    result->covariance =
+        Expand(Ma1Covariance(H, Z, sw.cwiseProduct(r), fit->rows.group), fit->cols, fit->np());
     const int drop = options.prune ? NegativeInsignificantDrag(*fit->model, *result, fit->cols) : -1;
     if (drop < 0) return true;
     result->dropped.push_back({drop, result->theta[drop], result->Sigma(drop)});

@@ -912,7 +912,7 @@ int DropWorst(const std::vector<int>& free, const OutputErrorOptions& o, Eigen::
       CandidatesOf(res->names, *theta, res->covariance, free);
   double worst_pe = 0.0;
   std::vector<std::string> kept;
-  const int c = WorstInsignificant(candidates, o.prunable, o.drop_correlation, &worst_pe, &kept);
+  const int c = WorstInsignificant(candidates, o.selection, &worst_pe, &kept);
   if (c < 0 || free.size() <= 1) {  // the final model: say what it kept
     res->notes.insert(res->notes.end(), kept.begin(), kept.end());
     return -1;
@@ -989,7 +989,7 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
     theta = p.Theta(lm.z);
     initial = p.Initial(lm.z);
     StoreCovariance(p, lm, free, o, &res);
-    if (!o.prune_insignificant || res.status != OutputErrorStatus::kConverged) break;
+    if (!o.selection.prune_insignificant || res.status != OutputErrorStatus::kConverged) break;
     if (DropWorst(free, o, &theta, &before_value, &before_sigma, &res) < 0) break;
   }
   res.theta = theta;

@@ -8,9 +8,12 @@
 #include <numeric>
 #include <sstream>
 
+#include "design/sensor_information.h"
+#include "design/travel_margin.h"
 #include "format.h"
 #include "options_check.h"
 
+#include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/mapping.h"
 #include "uuvplan/planner/design/fisher_information.h"
@@ -80,22 +83,13 @@ std::vector<int> EfficientRounding(const std::vector<double>& w, int N) {
 
 namespace {
 
-// Designs keep this far (m) inside the pool so that the finer final check agrees.
-constexpr double kTravelSafety = 0.01;
+using ident::SubMatrix;
 
 // Relative scaling of the DOF parameters at a design point.
 Eigen::VectorXd Scale(const Eigen::VectorXd& theta) {
   Eigen::VectorXd d(theta.size());
   for (int i = 0; i < theta.size(); ++i) d[i] = theta[i] != 0.0 ? std::abs(theta[i]) : 1.0;
   return d;
-}
-
-Eigen::MatrixXd Rows(const Eigen::MatrixXd& M, const std::vector<int>& idx) {
-  Eigen::MatrixXd out(idx.size(), idx.size());
-  for (std::size_t a = 0; a < idx.size(); ++a) {
-    for (std::size_t b = 0; b < idx.size(); ++b) out(a, b) = M(idx[a], idx[b]);
-  }
-  return out;
 }
 
 }  // namespace
@@ -129,10 +123,10 @@ DesignProblem SteadyWeightsProblem(const DofContext& ctx,
   for (int j = 0; j < J; ++j) {
     const Eigen::VectorXd d = Scale(ctx.design_thetas()[j]);
     for (int c = 0; c < C; ++c) {
-      data->Mc[j].push_back(Rows(d.asDiagonal() * M[c][j] * d.asDiagonal(), data->P));
+      data->Mc[j].push_back(SubMatrix(d.asDiagonal() * M[c][j] * d.asDiagonal(), data->P));
     }
     data->M0[j] = j < static_cast<int>(prior.size()) && prior[j].size() > 0
-                      ? Rows(d.asDiagonal() * prior[j] * d.asDiagonal(), data->P)
+                      ? SubMatrix(d.asDiagonal() * prior[j] * d.asDiagonal(), data->P)
                       : Eigen::MatrixXd::Zero(data->P.size(), data->P.size());
   }
   const bool use_gradient = criterion == Criterion::kD || criterion == Criterion::kDs;
@@ -162,7 +156,7 @@ DesignProblem SteadyWeightsProblem(const DofContext& ctx,
       Eigen::MatrixXd Mn;
       Eigen::LDLT<Eigen::MatrixXd> nn;
       if (nuis) {
-        Mn = Rows(Mw, data->nuisance);
+        Mn = SubMatrix(Mw, data->nuisance);
         nn.compute(Mn);
         v -= nn.vectorD().array().log().sum();
       }
@@ -173,7 +167,7 @@ DesignProblem SteadyWeightsProblem(const DofContext& ctx,
         if (nuis) Nninv = nn.solve(Eigen::MatrixXd::Identity(Mn.rows(), Mn.cols()));
         for (int c = 0; c < C; ++c) {
           double d = (Minv.cwiseProduct(data->Mc[j][c])).sum();
-          if (nuis) d -= (Nninv.cwiseProduct(Rows(data->Mc[j][c], data->nuisance))).sum();
+          if (nuis) d -= (Nninv.cwiseProduct(SubMatrix(data->Mc[j][c], data->nuisance))).sum();
           J_phi[j * C + c] = data->N * d;
         }
       }
@@ -226,12 +220,11 @@ class SteadyPlanner {
     const double target = o_.speed_rel_sigma * std::max(std::abs(speed), 1e-6);
     double t = std::numeric_limits<double>::infinity();
     if (s.position) {  // LS slope of N = rate·T positions: σ² = 12σ_p²/(rate·T³)
-      t = std::min(t, std::cbrt(12.0 * s.position->sigma * s.position->sigma /
+      t = std::min(t, std::cbrt(12.0 * NoiseVariance(*s.position) /
                                 (s.position->rate_hz * target * target)));
     }
     if (s.velocity) {  // mean of N = rate·T velocities
-      t = std::min(t,
-                   s.velocity->sigma * s.velocity->sigma / (s.velocity->rate_hz * target * target));
+      t = std::min(t, NoiseVariance(*s.velocity) / (s.velocity->rate_hz * target * target));
     }
     return std::max(o_.min_hold_s, t);
   }
@@ -415,7 +408,7 @@ SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignO
         continue;
       }
       out.required_travel = std::max(out.required_travel, smallest.travel);
-      if (smallest.travel > avail - kTravelSafety) {
+      if (smallest.travel > avail - kSteadyTravelMargin) {
         std::ostringstream m;
         const model::Dof dof = ctx.dof();
         const bool turns = model::IsRotational(dof);
@@ -434,13 +427,13 @@ SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignO
       double hi = r.max_abs;
       SteadyLeg big;
       const bool big_ok = sp.MakeLeg(name, s, hi, &big);
-      if (!big_ok || big.travel > avail - kTravelSafety || big.duration() > t_max) {
+      if (!big_ok || big.travel > avail - kSteadyTravelMargin || big.duration() > t_max) {
         double a = std::log(lo), b = std::log(hi);
         for (int it = 0; it < 8; ++it) {
           const double c = 0.5 * (a + b);
           SteadyLeg leg;
           const bool ok = sp.MakeLeg(name, s, std::exp(c), &leg) &&
-                          leg.travel <= avail - kTravelSafety && leg.duration() <= t_max;
+                          leg.travel <= avail - kSteadyTravelMargin && leg.duration() <= t_max;
           (ok ? a : b) = c;
         }
         hi = std::exp(a);
@@ -449,7 +442,7 @@ SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignO
       for (int k = 0; k < K; ++k) {
         const double f = K == 1 ? lo : lo * std::pow(hi / lo, static_cast<double>(k) / (K - 1));
         SteadyLeg leg;
-        if (sp.MakeLeg(name, s, f, &leg) && leg.travel <= avail - kTravelSafety &&
+        if (sp.MakeLeg(name, s, f, &leg) && leg.travel <= avail - kSteadyTravelMargin &&
             leg.duration() <= t_max) {
           out.legs.push_back(leg);
         }
@@ -590,7 +583,7 @@ class LegPacker {
     leg.settle_s = t.settle_s;
     leg.hold_s = t.hold_s;
     if (total_ + leg.duration() > t_max) return;
-    if (t.travel_hi - t.travel_lo > ctx_.available() - kTravelSafety) return;
+    if (t.travel_hi - t.travel_lo > ctx_.available() - kSteadyTravelMargin) return;
     std::vector<model::SegmentDesign> trial_segs = segs_;
     trial_segs.push_back({leg.force, leg.duration(), leg.mapping});
     model::TrialDesign d;
@@ -684,10 +677,7 @@ void Summarise(const DofContext& ctx, const SteadyDesignOptions& o,
                const std::vector<Eigen::MatrixXd>& prior, const std::string& infeasible,
                SteadyDesignResult* result) {
   const std::string dof(model::DofName(ctx.dof()));
-  std::vector<Eigen::MatrixXd> total = result->information;
-  for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
-    if (prior[j].size() == total[j].size()) total[j] += prior[j];
-  }
+  const std::vector<Eigen::MatrixXd> total = WithPrior(result->information, prior);
   std::vector<int> interest;
   for (int i : InformedParameters(RelativeInformation(total[0], ctx.design_thetas()[0]))) {
     if (i != 0) interest.push_back(i);

@@ -11,6 +11,7 @@
 
 #include "format.h"
 #include "loop/loop_trust.h"
+#include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/parallel.h"
@@ -75,18 +76,17 @@ void DesignInputs(const model::Vehicle& vehicle, const ident::DofIdentification&
     names->push_back(p.name);
     idx.push_back(static_cast<int>(j));
   }
-  const int n = static_cast<int>(idx.size());
-  covariance->resize(n, n);
   const bool full = id.covariance.rows() == static_cast<int>(id.params.size()) &&
                     id.covariance.cols() == static_cast<int>(id.params.size());
+  if (full) {
+    *covariance = ident::SubMatrix(id.covariance, idx);
+    return;
+  }
+  const int n = static_cast<int>(idx.size());
+  *covariance = Eigen::MatrixXd::Zero(n, n);
   for (int a = 0; a < n; ++a) {
-    for (int b = 0; b < n; ++b) {
-      if (full) {
-        (*covariance)(a, b) = id.covariance(idx[a], idx[b]);
-      } else {
-        (*covariance)(a, b) = a == b ? id.params[idx[a]].sigma * id.params[idx[a]].sigma : 0.0;
-      }
-    }
+    const double sigma = id.params[idx[a]].sigma;
+    (*covariance)(a, a) = sigma * sigma;
   }
 }
 // The (mapping, direction) pairs a logged trial pushed in: the sign of its force_<dof> column

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "design/travel_margin.h"
 #include "format.h"
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/parallel.h"
@@ -16,9 +17,6 @@ namespace {
 
 using internal::Fmt;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The designs keep 5-10 mm inside the free travel (sine_design.cc, steady_design.cc): a need
-// within this of the free travel is a space limit.
-constexpr double kTravelSafety = 0.01;
 
 constexpr model::EnumNames<PoolLimit, 10> kLimitNames{{{
     {PoolLimit::kNone, "none"}, {PoolLimit::kLength, "length"}, {PoolLimit::kWidth, "width"},
@@ -58,12 +56,12 @@ PoolLimit LimitOfText(model::Dof dof, const std::string& text) {
 model::Pool Offering(const model::Pool& pool, model::Dof dof, double free) {
   model::Pool p = pool;
   p.name = pool.name + "-enlarged";
-  const double wall = pool.WallToWallFor(free + kTravelSafety);
+  const double wall = pool.WallToWallFor(free + kLargestTravelMargin);
   switch (dof) {
     case model::Dof::kSurge: p.length = std::max(p.length, wall); break;
     case model::Dof::kSway: p.width = std::max(p.width, wall); break;
     case model::Dof::kHeave: p.depth = std::max(p.depth, wall); break;
-    default: p.max_turns = std::max(p.max_turns, (free + kTravelSafety) / (2 * M_PI));
+    default: p.max_turns = std::max(p.max_turns, (free + kLargestTravelMargin) / (2 * M_PI));
   }
   return p;
 }
