@@ -81,7 +81,7 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
   o->steady_windows[index].push_back({t0, t1});
 }
 
-// `--model coupled` fits seed 003's model by its own estimator (coupled_ls.h) on every DOF
+// `--model coupled` fits seed 003's model by its own estimator (joint_ls.h) on every DOF
 // at once: the options of the per-DOF chain do not apply, and one given would be ignored.
 void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
   const ident::IdentifyOptions chain;

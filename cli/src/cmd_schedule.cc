@@ -21,6 +21,7 @@
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/planner/pool/command_sheet.h"
+#include "uuvplan/planner/design/coupled_design.h"
 #include "uuvplan/planner/design/information_table.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
@@ -74,9 +75,10 @@ void RefusePerDofOptionsWithCoupled(const ScheduleCliOptions& o) {
 }
 
 int RunCoupled(const ScheduleCliOptions& o, const model::Vehicle& vehicle, const model::Pool& pool) {
-  planner::CoupledDesignOptions co;
+  planner::CombinedDesignOptions co =
+      o.mode.empty() ? planner::CoupledDesignOptions()
+                     : planner::CoupledDesignOptions(*model::ParseDofList(o.mode));  // checked by CLI11
   co.solver.robustness = ParseRobustness(o.robust);
-  if (!o.mode.empty()) co.mode = *model::kCombinedModeNames.Parse(o.mode);  // checked by CLI11
   if (o.duration_given) co.duration_s = o.schedule.planner.max_trial_duration_s;
   return RunCoupledSchedule(vehicle, pool, co, o.json);
 }

@@ -13,10 +13,11 @@
 #include "uuvplan/cli/command.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/io/coupled_design_json.h"
+#include "uuvplan/io/combined_design_json.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/json_value.h"
-#include "uuvplan/model/coupled_virtual_trial.h"
+#include "uuvplan/model/coupled_model.h"
+#include "uuvplan/model/virtual_pool.h"
 #include "uuvplan/model/util/seed.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/io/virtual_campaign.h"
@@ -196,12 +197,13 @@ nlohmann::json SimulationJson(const model::Campaign& campaign,
 }
 
 // A coupled schedule (`schedule --model coupled --json`): its combined trial flown by the
-// coupled virtual pool (model/coupled_virtual_trial.h, seed StreamSeed(seed, 0) as trial 0 of a
+// coupled model's virtual pool (model/virtual_pool.h RunCombinedTrial, seed StreamSeed(seed, 0) as trial 0 of a
 // campaign), written as a one-trial campaign listed under its first DOF, as `identify --model
 // coupled` reads it.
 int RunCoupledSimulate(const SimulateOptions& o, const model::Truth& truth,
                        const nlohmann::json& root) {
-  const model::CoupledTrialDesign trial = io::CoupledTrialOfJson(root, o.plan);
+  const model::MultiDofModel coupled = model::CoupledModelOfTruth(truth);
+  const model::CombinedTrialDesign trial = io::CombinedTrialOfJson(root, o.plan, coupled);
   for (const model::TrialDesign& in : trial.inputs) {
     const int m = truth.vehicle.MappingIndex(in.mapping);
     if (m < 0 || truth.vehicle.mappings[m].dof != in.dof) {
@@ -222,7 +224,8 @@ int RunCoupledSimulate(const SimulateOptions& o, const model::Truth& truth,
   e.mapping = trial.inputs.front().mapping;
   e.start = 0.0;
   e.has_start = true;
-  e.log = model::RunCoupledVirtualTrial(truth, trial, pool);
+  e.log = model::RunCombinedTrial(truth, coupled, model::CoupledThetaOfTruth(coupled, truth), trial,
+                                 pool);
   const std::size_t rows = e.log.t.size();
   campaign.trials.push_back(std::move(e));
   io::WriteCampaign(o.out, std::move(campaign), truth.vehicle,
@@ -230,7 +233,7 @@ int RunCoupledSimulate(const SimulateOptions& o, const model::Truth& truth,
                      "', combined trial '" + trial.id + "', seed " + std::to_string(o.campaign.seed)});
   const std::string campaign_path = (fs::path(o.out) / "campaign.yaml").string();
   std::ostream& out = ReportStream(o.json);
-  out << "Simulated the combined " << model::kCombinedModeNames.Name(trial.mode) << " trial '"
+  out << "Simulated the combined " << model::DofList(trial.dofs) << " trial '"
       << trial.id << "' of plan " << o.plan << " on the virtual '" << truth.vehicle.name
       << "' of " << o.truth << " (coupled horizontal model, seed 003)\n(seed " << o.campaign.seed
       << ", RK4 step " << truth.integration_step_s << " s): " << trial.duration << " s, " << rows
@@ -238,7 +241,7 @@ int RunCoupledSimulate(const SimulateOptions& o, const model::Truth& truth,
   if (!o.json.empty()) {
     WriteJson(o.json, {{"campaign", campaign_path}, {"seed", o.campaign.seed},
                        {"step", truth.integration_step_s}, {"model", "coupled-horizontal"},
-                       {"trials", {{{"id", trial.id}, {"mode", std::string(model::kCombinedModeNames.Name(trial.mode))},
+                       {"trials", {{{"id", trial.id}, {"mode", model::DofList(trial.dofs)},
                                     {"duration", trial.duration}, {"rows", rows}}}}});
   }
   return kExitOk;
@@ -254,7 +257,7 @@ int RunSimulate(const SimulateOptions& options) {
   CheckNewOrEmpty(o.out);
   model::Truth truth = io::ReadTruth(o.truth);
   if (!std::isnan(o.step_s)) truth.integration_step_s = o.step_s;
-  if (const nlohmann::json root = io::LoadJson(o.plan); io::IsCoupledScheduleJson(root)) {
+  if (const nlohmann::json root = io::LoadJson(o.plan); io::IsCombinedScheduleJson(root, model::kCoupledModelName)) {
     return RunCoupledSimulate(o, truth, root);
   }
   const planner::Schedule plan = io::ReadScheduleJson(o.plan);

@@ -103,7 +103,15 @@ struct DofModelKernel {
                                                 const InputSample& in, const TrialConditions& c,
                                                 const double* theta, const Inverses& inv,
                                                 double* dx) {
-    const TermContext tc = Context(m, t, x, in, c);
+    DerivativeAt<kOthers>(m, Context(m, t, x, in, c), x, in, theta, inv, dx);
+  }
+  /// The same at a term context already made (a joint model's: the other DOFs' velocities
+  /// from its state, multi_dof_kernel.h).
+  template <bool kOthers = true>
+  [[gnu::always_inline]] static void DerivativeAt(const DofModel& m, const TermContext& tc,
+                                                  const double* x, const InputSample& in,
+                                                  const double* theta, const Inverses& inv,
+                                                  double* dx) {
     dx[0] = x[1];
     dx[1] = TotalForce<kOthers>(m, tc, theta) * inv.mass;
     if (m.has_lag()) dx[2] = (in.u - x[2]) * inv.lag;

@@ -203,6 +203,15 @@ class CouplingTerm final : public ForceTerm {
     }
     return p;
   }
+  void OtherVelocityPartials(const TermContext& c, const double* theta,
+                             double* J_F_v) const override {
+    // d(a·b)/d(other velocity): each factor that is not the own DOF contributes the other one.
+    for (std::size_t j = 0; j < pairs_.size(); ++j) {
+      const auto [a, b] = pairs_[j];
+      if (a != own_) J_F_v[a] += theta[j] * V(c, b);
+      if (b != own_) J_F_v[b] += theta[j] * V(c, a);
+    }
+  }
   bool Regressor(const TermContext& c, double* h, double* h0) const override {
     for (std::size_t j = 0; j < pairs_.size(); ++j) h[j] = Product(c, j);
     *h0 = 0.0;

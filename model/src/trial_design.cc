@@ -1,5 +1,6 @@
 #include "uuvplan/model/trial_design.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "uuvplan/model/input_error.h"
@@ -137,6 +138,28 @@ SwitchedWave SwitchedWaveOf(const Vehicle& vehicle, const TrialDesign& d) {
   w.mapping_pos = MappingOf(vehicle, d.mapping, d);
   w.mapping_neg = MappingOf(vehicle, d.mapping_neg, d);
   return w;
+}
+
+std::string CombinedTrialDesign::Check() const {
+  const std::string where = "combined trial '" + id + "' (" + DofList(dofs) + ")";
+  if (!(duration > 0)) return where + ": duration must be a positive number of seconds";
+  for (Dof d : kAllDofs) {
+    const long n = std::count_if(inputs.begin(), inputs.end(),
+                                 [&](const TrialDesign& in) { return in.dof == d; });
+    const long want = std::count(dofs.begin(), dofs.end(), d);
+    if (n != want) {
+      return where + ": expected " + (want ? "one input" : "no input") + " for " +
+             std::string(DofName(d)) + ", found " + std::to_string(n);
+    }
+  }
+  return "";
+}
+
+const TrialDesign* CombinedTrialDesign::InputOf(Dof dof) const {
+  for (const TrialDesign& in : inputs) {
+    if (in.dof == dof) return &in;
+  }
+  return nullptr;
 }
 
 }  // namespace uuvplan::model

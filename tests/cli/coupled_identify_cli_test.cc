@@ -45,12 +45,13 @@ TEST(CoupledIdentifyCli, IdentifiesACombinedModeCampaign) {
   EXPECT_NE(run.out.find("kg·m²"), std::string::npos) << run.out;  // units on every number
   const nlohmann::json j = nlohmann::json::parse(ReadText(scratch / "id.json"));
   ASSERT_EQ(j.at("status"), "ok");
-  const model::CoupledHorizontalModel want = model::CoupledModelOfTruth(truth);
-  const std::vector<std::string> names = model::CoupledParameterNames();
-  for (int k = 0; k < model::kCoupledParameterCount; ++k) {
+  const model::MultiDofModel coupled = model::CoupledHorizontalModel(truth.vehicle);
+  const Eigen::VectorXd want = model::CoupledThetaOfTruth(coupled, truth);
+  const std::vector<std::string>& names = coupled.parameter_names();
+  ASSERT_EQ(names.size(), 12u);
+  for (std::size_t k = 0; k < names.size(); ++k) {
     const auto& p = j.at("params").at(names[k]);
-    EXPECT_LT(std::abs(p.at("value").get<double>() - want.theta[k]),
-              3 * p.at("sigma").get<double>())
+    EXPECT_LT(std::abs(p.at("value").get<double>() - want[k]), 3 * p.at("sigma").get<double>())
         << names[k];
   }
 }

@@ -57,13 +57,15 @@ TEST(CoupledScheduleCli, ACoupledPlanIsSimulatedAndIdentified) {
                              scratch);
   ASSERT_EQ(id.status, 0) << id.out << id.err;
   const nlohmann::json j = nlohmann::json::parse(ReadText(scratch / "id.json"));
-  const model::CoupledHorizontalModel want = model::CoupledModelOfTruth(io::ReadTruth(truth));
-  const std::vector<std::string> names = model::CoupledParameterNames();
-  for (int i = 0; i < 3; ++i) {
-    const int k = model::CoupledIndex(i, "m");
-    const auto& p = j.at("params").at(names[k]);
-    EXPECT_LT(std::abs(p.at("value").get<double>() - want.theta[k]), 3 * p.at("sigma").get<double>())
-        << names[k];
+  const model::Truth t = io::ReadTruth(truth);
+  const model::MultiDofModel coupled = model::CoupledHorizontalModel(t.vehicle);
+  const Eigen::VectorXd want = model::CoupledThetaOfTruth(coupled, t);
+  for (model::Dof dof : model::kHorizontalDofs) {
+    const std::string name = std::string(model::DofName(dof)) + ".m";
+    const auto& p = j.at("params").at(name);
+    EXPECT_LT(std::abs(p.at("value").get<double>() - want[coupled.ParameterIndex(name)]),
+              3 * p.at("sigma").get<double>())
+        << name;
   }
 }
 

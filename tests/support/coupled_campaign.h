@@ -1,13 +1,13 @@
-// Seeded virtual campaigns of the coupled horizontal model (issue #19): the ASV of cases/asv
-// with a random coupling truth, run through seed 003 Table I's combined modes in the virtual
-// pool. Shared by tests/ident/coupled_ls_test.cc and the full-size validation program
-// tests/validation/coupled_coverage.cc.
+// Seeded virtual campaigns of the coupled horizontal model: the ASV of cases/asv with a random
+// coupling truth, run through ref 003 Table I's combined modes in the virtual pool. Shared by
+// tests/ident/joint_ls_test.cc and the full-size validation program
+// tests/validation/coupled_validation.cc.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "uuvplan/model/coupled_trial.h"
+#include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/trial_log.h"
 #include "uuvplan/model/truth.h"
 
@@ -22,11 +22,11 @@ model::Truth RandomCoupledTruth(const model::Truth& base, std::uint64_t seed);
 
 /// Three zero-mean sine trials of `duration_s` (surge+yaw, sway+yaw, surge+sway+yaw) at
 /// incommensurate frequencies, within the ASV's thrust (at most 88 N of 120 N per thruster).
-std::vector<model::CoupledTrialDesign> CombinedModeDesigns(double duration_s);
+std::vector<model::CombinedTrialDesign> CombinedModeDesigns(double duration_s);
 
 /// The logs of `designs` run on `truth`, trial i from model::StreamSeed(seed, i).
 std::vector<model::TrialLog> RunCoupledCampaign(const model::Truth& truth,
-                                                const std::vector<model::CoupledTrialDesign>& designs,
+                                                const std::vector<model::CombinedTrialDesign>& designs,
                                                 std::uint64_t seed);
 
 }  // namespace uuvplan::testing

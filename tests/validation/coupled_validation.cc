@@ -1,5 +1,5 @@
 // Full-size validation of the coupled horizontal model's one-step least squares (issue #19,
-// ident/estimators/coupled_ls.h): N random coupling truths of the ASV (cases/asv, seed 003), each run
+// ident/estimators/joint_ls.h): N random coupling truths of the ASV (cases/asv, seed 003), each run
 // through the three combined modes in the virtual pool and identified. Prints per parameter the
 // share of estimates within 1σ, 2σ and 3σ of the truth (Gaussian: 68.3%, 95.4%, 99.7%), the
 // mean z = (θ̂ − θ)/σ (bias, in σ) and the standard deviation of z (1 when σ is right).
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "support/coupled_campaign.h"
-#include "uuvplan/ident/estimators/coupled_ls.h"
+#include "uuvplan/ident/estimators/joint_ls.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/coupled_model.h"
 
@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   const int draws = argc > 1 ? std::atoi(argv[1]) : 200;
   const std::uint64_t first = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 1;
   const double duration = argc > 3 ? std::atof(argv[3]) : 120.0;
-  ident::CoupledLsOptions options;
+  ident::JointLsOptions options;
   if (argc > 4) options.iv_iterations = std::atoi(argv[4]);
   if (draws <= 0 || first == 0 || !(duration > 0) || argc > 5 || !options.IsValid(nullptr)) {
     std::fprintf(stderr, "usage: coupled_validation [draws > 0] [first seed > 0] [duration s] "
@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
   const model::Truth base =
       io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/truth.yaml");
   const auto designs = testing::CombinedModeDesigns(duration);
-  constexpr int P = model::kCoupledParameterCount;
+  constexpr int P = 12;  // [m, k, kq, bias] of surge, sway, yaw
   std::vector<std::vector<double>> z(P);
   int failed = 0;
   for (int i = 0; i < draws; ++i) {
@@ -41,16 +41,19 @@ int main(int argc, char** argv) {
     const auto logs = testing::RunCoupledCampaign(truth, designs, 1000 + seed);
     std::vector<const model::TrialLog*> p;
     for (const auto& l : logs) p.push_back(&l);
-    const ident::CoupledLsResult r = ident::CoupledOneStepLeastSquares(p, options);
+    const ident::JointLsResult r =
+        ident::JointOneStepLeastSquares(model::CoupledHorizontalModel(truth.vehicle), p, options);
     if (!r.ok()) {
       std::printf("seed %llu: %s\n", static_cast<unsigned long long>(seed), r.message.c_str());
       ++failed;
       continue;
     }
-    const model::CoupledHorizontalModel want = model::CoupledModelOfTruth(truth);
-    for (int j = 0; j < P; ++j) z[j].push_back((r.theta[j] - want.theta[j]) / r.Sigma(j));
+    const Eigen::VectorXd want =
+        model::CoupledThetaOfTruth(model::CoupledHorizontalModel(truth.vehicle), truth);
+    for (int j = 0; j < P; ++j) z[j].push_back((r.theta[j] - want[j]) / r.Sigma(j));
   }
-  const std::vector<std::string> names = model::CoupledParameterNames();
+  const std::vector<std::string> names =
+      model::CoupledHorizontalModel(base.vehicle).parameter_names();
   std::printf("%d draws from seed %llu, trials of %g s, %d IV iterations, %d failed fits\n",
               draws, static_cast<unsigned long long>(first), duration, options.iv_iterations,
               failed);

@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <sstream>
 
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/prior.h"
+#include "uuvplan/model/util/seed.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::planner {
@@ -63,6 +65,20 @@ ParameterValues ParameterBox::At(const std::vector<double>& factors) const {
 double ParameterBox::Nominal(const std::string& name, double fallback) const {
   auto it = nominal.find(name);
   return it == nominal.end() ? fallback : it->second;
+}
+
+std::vector<ParameterValues> ParameterBox::Sample(int n, std::uint64_t seed) const {
+  std::mt19937_64 rng(model::SplitMix64(seed));
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<ParameterValues> out;
+  std::vector<double> factors(axes.size());
+  for (int k = 0; k < n; ++k) {
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+      factors[a] = axes[a].lo + unit(rng) * (axes[a].hi - axes[a].lo);
+    }
+    out.push_back(At(factors));
+  }
+  return out;
 }
 
 std::vector<ParameterValues> ParameterBox::DesignPoints() const {
@@ -125,6 +141,28 @@ ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
   const double half = options.drag_sigmas * rel;
   AddDragAndEtaAxes(std::max(0.05, 1.0 - half), 1.0 + half, etas, options, &box);
   return box;
+}
+
+ParameterBox JointAPrioriBox(const model::Vehicle& vehicle, const model::MultiDofModel& model,
+                             const BoxOptions& options, std::vector<std::string>* notes) {
+  ParameterBox joint;
+  for (int i = 0; i < model.num_dofs(); ++i) {
+    const std::string prefix = std::string(model::DofName(model.dof(i))) + ".";
+    std::vector<std::string> names;
+    for (int j = 0; j < model.num_parameters(); ++j) {
+      const auto [dof, local] = model.LocalName(j);
+      if (dof == model.dof(i)) names.push_back(local);
+    }
+    const ParameterBox box = APrioriBox(vehicle, model.dof(i), names, options, notes);
+    for (const auto& [name, value] : box.nominal) joint.nominal[prefix + name] = value;
+    for (BoxAxis axis : box.axes) {
+      axis.in_design = axis.name == "m";
+      axis.name = prefix + axis.name;
+      for (std::string& p : axis.params) p = prefix + p;
+      joint.axes.push_back(axis);
+    }
+  }
+  return joint;
 }
 
 ParameterBox EstimateBox(const ParameterValues& estimates, const ParameterValues& sigmas,

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace uuvplan::model {
 
@@ -19,6 +20,10 @@ inline constexpr std::array<Dof, kNumDofs> kAllDofs = {Dof::kSurge, Dof::kSway, 
 std::string_view DofName(Dof dof);
 /// Inverse of DofName; nullopt for anything else.
 std::optional<Dof> ParseDof(std::string_view name);
+/// The DOFs of a combined trial's mode, named and joined by '+' ("surge+sway+yaw").
+std::string DofList(const std::vector<Dof>& dofs);
+/// Inverse of DofList; nullopt when a part is not a DOF name or names one twice.
+std::optional<std::vector<Dof>> ParseDofList(std::string_view joined);
 /// The SNAME velocity letter of the DOF: u v w p q r.
 char VelocityLetter(Dof dof);
 /// roll, pitch, yaw: positions are angles (rad), forces are torques (N·m).

@@ -51,6 +51,11 @@ class ForceTerm {
                                 double* J_F_theta) const = 0;
   /// True when the term reads the other DOFs' velocities (TermContext::velocities).
   virtual bool NeedsOtherVelocities() const { return false; }
+  /// For a term that reads them: adds ∂F/∂(velocity of DOF d) to J_F_v[Index(d)] for every DOF
+  /// d but the own one (whose partial is TermPartials::d_xi). A multi-DOF model
+  /// (multi_dof_model.h) reads those velocities from its state, so they enter its Jacobian.
+  virtual void OtherVelocityPartials(const TermContext& /*c*/, const double* /*theta*/,
+                                     double* /*J_F_v*/) const {}
   /// For terms linear in their parameters: F = Σ h[j]·theta[j] + h0; returns false otherwise.
   virtual bool Regressor(const TermContext& /*c*/, double* /*h*/, double* /*h0*/) const {
     return false;

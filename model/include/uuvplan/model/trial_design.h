@@ -87,6 +87,21 @@ struct TrialDesign {
   bool Pushes(const std::string& mapping, int sign) const;
 };
 
+/// A trial that pushes several DOFs at once (ref 003 Table I's combined modes): one input per
+/// DOF of `dofs` (a design above in a mapping of that DOF; its own duration is ignored, the
+/// trial's holds), all over `duration` from rest. The DOFs it does not move are commanded 0.
+struct CombinedTrialDesign {
+  std::string id;
+  std::vector<Dof> dofs;  ///< the DOFs it moves: its mode (DofList: "surge+sway+yaw")
+  double duration = 0.0;  ///< s
+  std::vector<TrialDesign> inputs;
+
+  /// "" when the inputs are exactly one per DOF of `dofs`, else what is wrong.
+  std::string Check() const;
+  /// The input that moves `dof`, or null.
+  const TrialDesign* InputOf(Dof dof) const;
+};
+
 std::string_view TrialKindName(TrialKind kind);
 std::string_view InputFamilyName(InputFamily family);
 /// The switched wave of a `switched` design, mappings resolved in `vehicle` (InputError if one

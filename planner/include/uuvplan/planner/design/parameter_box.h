@@ -9,11 +9,13 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "uuvplan/model/dof.h"
+#include "uuvplan/model/multi_dof_model.h"
 #include "uuvplan/model/vehicle.h"
 
 namespace uuvplan::planner {
@@ -40,6 +42,8 @@ struct ParameterBox {
   std::vector<ParameterValues> CheckPoints(int per_axis) const;
   /// Values at given factors (axis order), other parameters nominal.
   ParameterValues At(const std::vector<double>& factors) const;
+  /// `n` points drawn uniformly from the box, every axis in turn per point (seeded).
+  std::vector<ParameterValues> Sample(int n, std::uint64_t seed) const;
   /// Nominal value of a parameter, or `fallback`.
   double Nominal(const std::string& name, double fallback = 0.0) const;
 };
@@ -63,6 +67,13 @@ struct BoxOptions {
 ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
                         const std::vector<std::string>& parameter_names, const BoxOptions& options,
                         std::vector<std::string>* notes);
+
+/// The a priori box of a multi-DOF model's global θ: the product of its DOFs' boxes above (each
+/// over the DOF's parameters the model does not tie), named as the model names them ("sway.k";
+/// axes "sway.m", "sway.drag"). Only the inertia axes are design axes: the criterion at their
+/// 2^n vertices and the centre, the drags varying in the check points.
+ParameterBox JointAPrioriBox(const model::Vehicle& vehicle, const model::MultiDofModel& model,
+                             const BoxOptions& options, std::vector<std::string>* notes);
 
 /// A box about current estimates (for the next trial of a sequential design): m and the drag
 /// group each ± `n_sigma`·σ (relative σ capped at 0.9), eta within the a priori range.

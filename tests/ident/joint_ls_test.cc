@@ -1,12 +1,13 @@
-// The one-step integral least squares of the coupled horizontal model (ident/estimators/coupled_ls.h) on
-// virtual combined-mode campaigns of the ASV (cases/asv, seed 003).
+// The joint one-step integral least squares (ident/estimators/joint_ls.h) of the coupled
+// horizontal model (model/coupled_model.h) on virtual combined-mode campaigns of the ASV
+// (cases/asv, ref 003).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
 #include "support/coupled_campaign.h"
-#include "uuvplan/ident/estimators/coupled_ls.h"
+#include "uuvplan/ident/estimators/joint_ls.h"
 #include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/coupled_model.h"
@@ -18,10 +19,21 @@ model::Truth AsvTruth() {
   return io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/truth.yaml");
 }
 
+// The ASV's coupled model to fit, and its true θ.
+model::MultiDofModel Coupled() { return model::CoupledHorizontalModel(AsvTruth().vehicle); }
+Eigen::VectorXd TrueTheta(const model::Truth& truth) {
+  return model::CoupledThetaOfTruth(Coupled(), truth);
+}
+int InertiaIndex(int i) { return 4 * i; }  // [m, k, kq, bias] of surge, sway, yaw
+
 std::vector<const model::TrialLog*> Pointers(const std::vector<model::TrialLog>& logs) {
   std::vector<const model::TrialLog*> p;
   for (const auto& l : logs) p.push_back(&l);
   return p;
+}
+
+JointLsResult Fit(const std::vector<model::TrialLog>& logs) {
+  return JointOneStepLeastSquares(Coupled(), Pointers(logs), JointLsOptions{});
 }
 
 // The case's own truth: every parameter within 3σ, and the σ small enough to mean something
@@ -29,17 +41,18 @@ std::vector<const model::TrialLog*> Pointers(const std::vector<model::TrialLog>&
 TEST(CoupledLeastSquares, RecoversTheAsvCase) {
   const model::Truth truth = AsvTruth();
   const auto logs = testing::RunCoupledCampaign(truth, testing::CombinedModeDesigns(120.0), 11);
-  const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
+  const JointLsResult r = Fit(logs);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_TRUE(r.instrumental);
-  const model::CoupledHorizontalModel want = model::CoupledModelOfTruth(truth);
-  for (int j = 0; j < model::kCoupledParameterCount; ++j) {
-    EXPECT_LT(std::abs(r.theta[j] - want.theta[j]), 3 * r.Sigma(j))
-        << r.names[j] << " = " << r.theta[j] << " ± " << r.Sigma(j) << ", true " << want.theta[j];
+  const Eigen::VectorXd want = TrueTheta(truth);
+  ASSERT_EQ(r.names.size(), 12u);
+  for (int j = 0; j < 12; ++j) {
+    EXPECT_LT(std::abs(r.theta[j] - want[j]), 3 * r.Sigma(j))
+        << r.names[j] << " = " << r.theta[j] << " ± " << r.Sigma(j) << ", true " << want[j];
   }
   for (int i = 0; i < 3; ++i) {
-    const int m = model::CoupledIndex(i, "m");
-    EXPECT_LT(r.Sigma(m), 0.1 * want.theta[m]) << r.names[m];
+    const int m = InertiaIndex(i);
+    EXPECT_LT(r.Sigma(m), 0.1 * want[m]) << r.names[m];
   }
 }
 
@@ -56,12 +69,12 @@ TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const model::Truth truth = testing::RandomCoupledTruth(base, seed);
     const auto logs = testing::RunCoupledCampaign(truth, designs, 1000 + seed);
-    const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
+    const JointLsResult r = Fit(logs);
     ASSERT_TRUE(r.ok()) << "seed " << seed << ": " << r.message;
-    const model::CoupledHorizontalModel want = model::CoupledModelOfTruth(truth);
-    for (int j = 0; j < model::kCoupledParameterCount; ++j, ++total) {
-      const double z = (r.theta[j] - want.theta[j]) / r.Sigma(j);
-      if (j == model::CoupledIndex(0, "m") || j == model::CoupledIndex(1, "m")) inertia_z += z;
+    const Eigen::VectorXd want = TrueTheta(truth);
+    for (int j = 0; j < 12; ++j, ++total) {
+      const double z = (r.theta[j] - want[j]) / r.Sigma(j);
+      if (j == InertiaIndex(0) || j == InertiaIndex(1)) inertia_z += z;
       if (std::abs(z) < 3) {
         ++within;
       } else {
@@ -82,20 +95,20 @@ TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
 TEST(CoupledLeastSquares, NamesTheMissingColumn) {
   auto logs = testing::RunCoupledCampaign(AsvTruth(), testing::CombinedModeDesigns(60.0), 3);
   logs[1].velocity[model::Index(model::Dof::kSway)].clear();
-  const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
+  const JointLsResult r = Fit(logs);
   EXPECT_FALSE(r.ok());
   EXPECT_NE(r.message.find("trial 2: no vel_sway column"), std::string::npos) << r.message;
 }
 
 // A surge+yaw trial alone pushes no sway: the sway equation has no thrust, so nothing fixes the
 // scale of its terms (m_u among them), and the residual-weighted least squares drove every
-// inertia towards 0 (surge.m 0.31 ± 0.05 kg, status ok) or, through the instruments, to NaN.
-// Now a failure naming the DOF.
+// inertia towards 0 (surge.m 0.31 ± 0.05 kg, status ok) or, through the instruments, to NaN:
+// a failure naming the DOF.
 TEST(CoupledLeastSquares, ATrialSetThatPushesNoSwayFailsNamingIt) {
   const auto designs = testing::CombinedModeDesigns(120.0);
   const auto logs = testing::RunCoupledCampaign(AsvTruth(), {designs[0]}, 5);  // surge+yaw
-  const CoupledLsResult r = CoupledOneStepLeastSquares(Pointers(logs), CoupledLsOptions{});
-  EXPECT_EQ(r.status, CoupledStatus::kTooFewData);
+  const JointLsResult r = Fit(logs);
+  EXPECT_EQ(r.status, JointLsStatus::kTooFewData);
   EXPECT_NE(r.message.find("no fit trial pushes sway"), std::string::npos) << r.message;
 }
 
@@ -133,8 +146,8 @@ TEST(CoupledDiagnosis, NamesTheCoriolisCouplingOfEachDofOnA1DofFittedCampaign) {
   // 1.3 (−m_u −330), u·v −178.8 ± 2.1 (m_u − m_v −180); validate velocity MAE 86%, 82%, 95%
   // better.
   const model::Truth truth = AsvTruth();
-  const model::CoupledHorizontalModel want = model::CoupledModelOfTruth(truth);
-  const double m_u = want.Inertia(0), m_v = want.Inertia(1);
+  const Eigen::VectorXd want = TrueTheta(truth);
+  const double m_u = want[InertiaIndex(0)], m_v = want[InertiaIndex(1)];
   const struct {
     model::Dof dof;
     const char* param;

@@ -1,12 +1,12 @@
-#include "uuvplan/io/coupled_json.h"
+#include "uuvplan/io/joint_ls_json.h"
 
 namespace uuvplan::io {
 
-nlohmann::json CoupledIdentifyJson(const ident::CoupledLsResult& r) {
+nlohmann::json JointLsJson(const ident::JointLsResult& r, const std::string& model_name) {
   nlohmann::json j;
-  j["model"] = "coupled-horizontal";
+  j["model"] = model_name;
   j["method"] = "one-step";
-  j["status"] = std::string(ident::kCoupledStatusNames.Name(r.status));
+  j["status"] = std::string(ident::kJointLsStatusNames.Name(r.status));
   j["message"] = r.message;
   j["instrumental"] = r.instrumental;
   j["rows"] = r.num_rows;
