@@ -4,11 +4,15 @@
 #include <vector>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/cli/text_table.h"
 #include "uuvplan/ident/estimators/coupled_ls.h"
 #include "uuvplan/io/coupled_json.h"
+#include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/text_table.h"
 
 namespace uuvplan::cli {
+
+using text::Quantity;
+using text::TextTable;
 
 int RunCoupledIdentify(const model::Campaign& campaign, const std::string& campaign_path,
                        const std::string& json_path) {

@@ -4,13 +4,17 @@
 #include <iostream>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/cli/text_table.h"
 #include "uuvplan/io/coupled_design_json.h"
 #include "uuvplan/model/dof.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/text_table.h"
 
 namespace uuvplan::cli {
 namespace {
+
+using text::Quantity;
+using text::TextTable;
 
 void PrintInputs(const planner::CoupledDesign& d, std::ostream& out) {
   TextTable table({"DOF", "mapping", "offset", "amplitude", "ω", "period"});

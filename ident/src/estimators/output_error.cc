@@ -7,12 +7,11 @@
 #include <optional>
 #include <sstream>
 
-#include "stats/model_selection.h"
-#include "number_text.h"
 #include "options_check.h"
+#include "stats/model_selection.h"
 #include "uuvplan/ident/estimators/block_least_squares.h"
-#include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/ident/estimators/least_squares.h"
+#include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/ident/stats/median_abs.h"
 #include "uuvplan/ident/stats/significance.h"
 #include "uuvplan/model/effects.h"
@@ -716,8 +715,10 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
       const double dec = decrement(J);
       out.converged = dec < 1.0;
       if (!out.converged) {
-        out.message = "Levenberg–Marquardt stalled (no step lowers the cost, the Gauss–Newton "
-                      "step is still " + Fmt(std::sqrt(dec), 3) + " σ long)";
+        out.message =
+            "Levenberg–Marquardt stalled (no step lowers the cost, the Gauss–Newton "
+            "step is still " +
+            model::Significant(std::sqrt(dec), 3) + " σ long)";
       }
       break;
     }
@@ -920,8 +921,9 @@ int DropWorst(const std::vector<int>& free, const OutputErrorOptions& o, Eigen::
   const int worst = free[c];
   (*before_value)[worst] = (*theta)[worst];
   (*before_sigma)[worst] = std::sqrt(res->covariance(worst, worst));
-  res->notes.push_back(res->names[worst] + " = " + Fmt((*theta)[worst]) + " ± " +
-                       Fmt((*before_sigma)[worst]) + " (" + Fmt(worst_pe, 3) +
+  res->notes.push_back(res->names[worst] + " = " + model::Significant((*theta)[worst], 4) + " ± " +
+                       model::Significant((*before_sigma)[worst], 4) + " (" +
+                       model::Significant(worst_pe, 3) +
                        "% > 51.02%): insignificant at 95%, dropped and the rest refitted");
   (*theta)[worst] = 0.0;
   res->state[worst] = ParameterState::kDropped;
@@ -1002,10 +1004,11 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
                         "gross errors");
   }
   if (res.hac_covariance) {
-    res.notes.push_back("output-error residuals are not white (mean lag-1 autocorrelation " +
-                        Fmt(res.residual_lag1, 3) +
-                        "): model error or coloured noise; σ from the scores prewhitened by an "
-                        "AR(1) of the residuals per trial and sensor, then batch means (a sandwich)");
+    res.notes.push_back(
+        "output-error residuals are not white (mean lag-1 autocorrelation " +
+        model::Significant(res.residual_lag1, 3) +
+        "): model error or coloured noise; σ from the scores prewhitened by an "
+        "AR(1) of the residuals per trial and sensor, then batch means (a sandwich)");
   }
   res.message = Message(res);
   return res;
