@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Lists the functions longer than N lines (default 120) in the C++ sources outside tests/ and
+# Lists the functions longer than N lines (default 80) in the C++ sources outside tests/ and
 # bench/, longest first, and exits 1 when there is one (docs/architecture.md, Conventions).
 # Needs universal-ctags (scripts/install-deps.sh); exits 77 (ctest: skipped) without it.
 set -euo pipefail
-N="${1:-120}"
+N="${1:-80}"
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 if ! command -v ctags >/dev/null; then
   echo "function_lengths: universal-ctags is not installed (scripts/install-deps.sh)" >&2

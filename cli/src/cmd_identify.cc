@@ -89,8 +89,13 @@ void RefuseChainOptionsWithCoupled(const IdentifyFlags& co) {
   if (!co.dofs.empty()) given.push_back("--dof");
   if (!co.steady.empty()) given.push_back("--steady");
   if (co.identify.refine != chain.refine) given.push_back("--no-refine");
-  if (co.identify.prune_insignificant != chain.prune_insignificant) given.push_back("--no-prune");
-  if (co.identify.seed_selection != chain.seed_selection) given.push_back("--seed-selection");
+  const ident::ModelSelectionOptions& selection = co.identify.selection;
+  if (selection.prune_insignificant != chain.selection.prune_insignificant) {
+    given.push_back("--no-prune");
+  }
+  if (selection.drop_correlation != chain.selection.drop_correlation) {
+    given.push_back("--seed-selection");
+  }
   if (co.closed_loop != kClosedLoopNames.Name(chain.closed_loop)) given.push_back("--closed-loop");
   if (co.method.method != ident::MethodName(chain.method)) given.push_back("--method");
   if (co.method.forgetting_given) given.push_back("--forgetting");
@@ -141,10 +146,11 @@ void BindIdentify(CLI::App* sub, IdentifyFlags* o) {
       "--no-refine", [o] { o->identify.refine = false; },
       "skip the output-error refinement (report the least-squares estimates)");
   sub->add_flag_callback(
-      "--no-prune", [o] { o->identify.prune_insignificant = false; },
+      "--no-prune", [o] { o->identify.selection.prune_insignificant = false; },
       "keep insignificant drag/bias parameters (no model selection by the 51.02% rule)");
   sub->add_flag_callback(
-         "--seed-selection", [o] { o->identify.seed_selection = true; },
+         "--seed-selection",
+         [o] { o->identify.selection.drop_correlation = ident::kSeedDropCorrelation; },
          "drop an insignificant parameter even where it is correlated with another, as seed 000 "
          "§IV-D does (by default it is kept: the others' σ would assume it exactly 0)")
       ->excludes("--no-prune");

@@ -73,11 +73,7 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
   r.parameter_names = model.parameter_names();
   stages::DofContext c{campaign.vehicle, trials, model, PriorTheta(campaign.vehicle, model, o.initial_guess),
                        o.steady, o.output_error, model.ParameterIndex(model::param::kMass)};
-  c.steady.prune_insignificant = o.prune_insignificant && c.steady.prune_insignificant;
-  c.output_error.prune_insignificant = o.prune_insignificant && c.output_error.prune_insignificant;
-  if (o.seed_selection) {
-    c.steady.drop_correlation = c.output_error.drop_correlation = kSeedDropCorrelation;
-  }
+  c.steady.selection = c.output_error.selection = o.selection;
   r.closed_loop_suspected = stages::SuspectClosedLoop(trials.fit, o.closed_loop);
   NoteParametersNotUsed(campaign.vehicle, dof, &r);
   r.timing.push_back({"prepare", prepare_s + watch.Lap()});

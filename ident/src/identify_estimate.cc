@@ -178,9 +178,8 @@ LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofI
         CandidatesOf(f.names, f.final_theta, f.covariance, f.free);
     double pe = 0.0;
     kept.clear();
-    const int worst = o.prune_insignificant
-                          ? WorstInsignificant(candidates, c.steady.prunable,
-                                               c.steady.drop_correlation, &pe, &kept)
+    const int worst = o.selection.prune_insignificant
+                          ? WorstInsignificant(candidates, o.selection, &pe, &kept)
                           : -1;
     if (worst < 0) break;
     const int j = f.free[worst];
@@ -216,8 +215,7 @@ void ClosedLoop(const DofContext& c, const IdentifyOptions& o, const LeastSquare
                 DofIdentification* r) {
   if (!r->closed_loop_suspected) return;
   ClosedLoopIvOptions iv = o.closed_loop_iv;
-  iv.prune_insignificant = o.prune_insignificant && iv.prune_insignificant;
-  if (o.seed_selection) iv.drop_correlation = kSeedDropCorrelation;
+  iv.selection = o.selection;
   r->closed_loop_iv =
       ClosedLoopInstrumentalFit(c.model, c.trials.fit, ls.estimate.theta, o.one_step, iv);
   if (!r->closed_loop_iv->ok()) r->notes.push_back(r->closed_loop_iv->fit.message);

@@ -157,6 +157,50 @@ ParameterBox BoxAboutEstimates(const model::Vehicle& vehicle, const model::Pool&
   return box;
 }
 
+// The DOF's trial families, each designed on the information of the prior and of the trials
+// before it (in `info`, which gains theirs): steady runs, the sine, then the loop's families
+// completing the schedule. Their trials, checks and notes go to `plan`; why a family could not
+// be designed to `failures`.
+void DesignFamilies(const DofContext& ctx, const ScheduleOptions& o, const std::string& name,
+                    std::vector<Eigen::MatrixXd>* info, DofPlan* plan,
+                    std::vector<std::string>* failures) {
+  if (o.steady_runs) {
+    SteadyDesignResult st = DesignSteady(ctx, o.steady, *info, name + "-steady");
+    for (auto& n : st.notes) plan->notes.push_back(std::move(n));
+    if (st.status == DesignStatus::kOk) {
+      for (std::size_t j = 0; j < info->size(); ++j) (*info)[j] += st.information[j];
+      for (std::size_t i = 0; i < st.trials.size(); ++i) {
+        plan->trials.push_back(st.trials[i]);
+        plan->checks.push_back(st.checks[i]);
+      }
+    } else {
+      failures->push_back("steady runs: " + st.message);
+      plan->required_travel = std::max(plan->required_travel, st.required_travel);
+    }
+  }
+  if (o.sine_trial) {
+    SineDesignResult sn = DesignInertiaTrial(ctx, o.sine, *info, name + "-sine");
+    for (auto& n : sn.notes) plan->notes.push_back(std::move(n));
+    if (sn.status == DesignStatus::kOk) {
+      for (std::size_t j = 0; j < info->size(); ++j) (*info)[j] += sn.information[j];
+      plan->trials.push_back(sn.trial);
+      plan->checks.push_back(sn.check);
+    } else {
+      failures->push_back("sine trial: " + sn.message);
+      if (sn.check.span > 0) plan->required_travel = std::max(plan->required_travel, sn.check.span);
+    }
+  }
+  if (o.max_completion_trials > 0) {
+    CompletionResult extra = CompleteWithLoopFamilies(ctx, o.sine, o.steady, info,
+                                                      name + "-more", o.max_completion_trials);
+    for (std::size_t i = 0; i < extra.trials.size(); ++i) {
+      plan->trials.push_back(extra.trials[i]);
+      plan->checks.push_back(extra.checks[i]);
+    }
+    for (auto& n : extra.notes) plan->notes.push_back(std::move(n));
+  }
+}
+
 // The steady runs and the sine of one DOF, each designed on the information of the prior and
 // of the trials before it, with the DOF's status, message and predicted precision.
 DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::Dof dof,
@@ -169,41 +213,7 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
   const PriorInformation* user_prior = pit == o.prior.end() ? nullptr : &pit->second;
   std::vector<Eigen::MatrixXd> info = PriorPerPoint(*ctx, user_prior);
   std::vector<std::string> failures;
-  if (o.steady_runs) {
-    SteadyDesignResult st = DesignSteady(*ctx, o.steady, info, name + "-steady");
-    for (auto& n : st.notes) plan.notes.push_back(std::move(n));
-    if (st.status == DesignStatus::kOk) {
-      for (std::size_t j = 0; j < info.size(); ++j) info[j] += st.information[j];
-      for (std::size_t i = 0; i < st.trials.size(); ++i) {
-        plan.trials.push_back(st.trials[i]);
-        plan.checks.push_back(st.checks[i]);
-      }
-    } else {
-      failures.push_back("steady runs: " + st.message);
-      plan.required_travel = std::max(plan.required_travel, st.required_travel);
-    }
-  }
-  if (o.sine_trial) {
-    SineDesignResult sn = DesignInertiaTrial(*ctx, o.sine, info, name + "-sine");
-    for (auto& n : sn.notes) plan.notes.push_back(std::move(n));
-    if (sn.status == DesignStatus::kOk) {
-      for (std::size_t j = 0; j < info.size(); ++j) info[j] += sn.information[j];
-      plan.trials.push_back(sn.trial);
-      plan.checks.push_back(sn.check);
-    } else {
-      failures.push_back("sine trial: " + sn.message);
-      if (sn.check.span > 0) plan.required_travel = std::max(plan.required_travel, sn.check.span);
-    }
-  }
-  if (o.max_completion_trials > 0) {
-    CompletionResult extra = CompleteWithLoopFamilies(*ctx, o.sine, o.steady, &info,
-                                                      name + "-more", o.max_completion_trials);
-    for (std::size_t i = 0; i < extra.trials.size(); ++i) {
-      plan.trials.push_back(extra.trials[i]);
-      plan.checks.push_back(extra.checks[i]);
-    }
-    for (auto& n : extra.notes) plan.notes.push_back(std::move(n));
-  }
+  DesignFamilies(*ctx, o, name, &info, &plan, &failures);
   plan.determinacy = InterestDeterminacy(*ctx, info);
   std::ostringstream m;
   for (const auto& f : failures) m << " " << f;

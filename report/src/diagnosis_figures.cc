@@ -6,17 +6,6 @@
 
 namespace uuvplan::report {
 
-namespace {
-
-Series ResidualSeries(const ident::TrialFit& t, const std::string& label, Colour c, Style s) {
-  Series r{label, s, c, t.curve.t, {}, {}, {}};
-  for (std::size_t i = 0; i < t.curve.t.size(); ++i)
-    r.y.push_back(t.curve.measured[i] - t.curve.simulated[i]);
-  return r;
-}
-
-}  // namespace
-
 Figure ResidualsBeforeAfterFigure(const BeforeAfter& runs) {
   Figure f = StartFigure(
       "diagnosis-" + DofText(runs.dof) + "-residuals",
@@ -24,16 +13,12 @@ Figure ResidualsBeforeAfterFigure(const BeforeAfter& runs) {
       "Residual (measured − free run) of each trial of " + DofText(runs.dof) +
           " with the standard model (before) and with the extended model diagnosis chose "
           "(after), both scored as `uuvplan score` does.");
-  f.columns = 2;
   for (const ident::TrialScore& b : runs.before.trials) {
     if (b.dof != runs.dof) continue;
     Panel p;
     p.title = b.fit.name;
     p.x_label = "t (s)";
-    p.y_label = b.fit.residual_signal + " residual (" +
-                std::string(b.fit.residual_signal == "position" ? model::PositionUnit(runs.dof)
-                                                                : model::VelocityUnit(runs.dof)) +
-                ")";
+    p.y_label = b.fit.residual_signal + " residual (" + SignalUnit(b.fit, runs.dof) + ")";
     p.series.push_back(ResidualSeries(b.fit, "before", Colour::kVermillion, Style::kLine));
     for (const ident::TrialScore& a : runs.after.trials) {
       if (a.fit.trial == b.fit.trial)
@@ -42,8 +27,7 @@ Figure ResidualsBeforeAfterFigure(const BeforeAfter& runs) {
     p.levels.push_back({0.0, "", Colour::kBlack, Style::kLine});
     f.panels.push_back(std::move(p));
   }
-  const int rows = (static_cast<int>(f.panels.size()) + 1) / 2;
-  f.height = 40 + 260 * std::max(rows, 1);
+  LayOutTwoColumns(&f);
   return f;
 }
 

@@ -10,13 +10,17 @@ namespace uuvplan::report {
 
 namespace {
 
-std::string SignalUnit(const ident::TrialFit& t, model::Dof dof) {
-  return std::string(t.residual_signal == "position" ? model::PositionUnit(dof)
-                                                     : model::VelocityUnit(dof));
-}
-
 std::string UseName(model::TrialUse use) {
   return use == model::TrialUse::kFit ? "fit" : "validate";
+}
+
+// A trial's panel against time: its file and use, `quantity` in the unit of its signal.
+Panel TrialPanel(const ident::TrialFit& t, model::Dof dof, const std::string& quantity) {
+  Panel p;
+  p.title = t.name + " (" + UseName(t.use) + ")";
+  p.x_label = "t (s)";
+  p.y_label = quantity + " (" + SignalUnit(t, dof) + ")";
+  return p;
 }
 
 }  // namespace
@@ -28,20 +32,15 @@ Figure FreeRunFigure(const ident::DofIdentification& dof, const std::string& ste
           ": the measured signal (position when logged, "
           "else velocity) and the free-run simulation of the identified model from the "
           "trial's initial state with the logged input (no re-initialisation).");
-  f.columns = 2;
   for (const ident::TrialFit& t : dof.fit.trials) {
-    Panel p;
-    p.title = t.name + " (" + UseName(t.use) + ")";
-    p.x_label = "t (s)";
-    p.y_label = t.residual_signal + " (" + SignalUnit(t, dof.dof) + ")";
+    Panel p = TrialPanel(t, dof.dof, t.residual_signal);
     p.series.push_back(
         {"measured", Style::kLine, Colour::kGrey, t.curve.t, t.curve.measured, {}, {}});
     p.series.push_back(
         {"free run", Style::kLine, Colour::kBlue, t.curve.t, t.curve.simulated, {}, {}});
     f.panels.push_back(std::move(p));
   }
-  const int rows = (static_cast<int>(f.panels.size()) + 1) / 2;
-  f.height = 40 + 260 * std::max(rows, 1);
+  LayOutTwoColumns(&f);
   return f;
 }
 
@@ -77,21 +76,14 @@ Figure ResidualFigure(const ident::DofIdentification& dof, const std::string& st
           " against time, and its normalised autocorrelation with the 95% whiteness "
           "bounds ±1.96/√N (seed 004 §5.2; white unless more lags fall outside than white "
           "noise puts there 99% of the time).");
-  f.columns = 2;
   for (const ident::TrialFit& t : dof.fit.trials) {
-    Panel r;
-    r.title = t.name + " (" + UseName(t.use) + ")";
-    r.x_label = "t (s)";
-    r.y_label = "residual (" + SignalUnit(t, dof.dof) + ")";
-    Series s{"", Style::kLine, Colour::kBlue, t.curve.t, {}, {}, {}};
-    for (std::size_t i = 0; i < t.curve.t.size(); ++i)
-      s.y.push_back(t.curve.measured[i] - t.curve.simulated[i]);
-    r.series.push_back(std::move(s));
+    Panel r = TrialPanel(t, dof.dof, "residual");
+    r.series.push_back(ResidualSeries(t, "", Colour::kBlue, Style::kLine));
     r.levels.push_back({0.0, "", Colour::kBlack, Style::kLine});
     f.panels.push_back(std::move(r));
     f.panels.push_back(AutocorrelationPanel(t));
   }
-  f.height = 40 + 260 * std::max<int>(1, static_cast<int>(dof.fit.trials.size()));
+  LayOutTwoColumns(&f);
   return f;
 }
 

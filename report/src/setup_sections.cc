@@ -1,5 +1,6 @@
 // The vehicle, the pool and the schedule.
 #include <cmath>
+#include <utility>
 
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
@@ -65,12 +66,19 @@ std::string PredictedAssumptions(const planner::Schedule& schedule) {
   return out.empty() ? planner::kPredictedSigmaAssumption : out;
 }
 
+// The section of an input file: what it names (and where it was read), then its values.
+Section InputFileSection(std::string id, std::string title, const std::string& name,
+                         const std::string& source, Table values) {
+  Section s{std::move(id), std::move(title), {name + " (" + source + ")"}, {}, {}};
+  s.tables.push_back(std::move(values));
+  return s;
+}
+
 }  // namespace
 
 Section VehicleSection(const model::Vehicle& v, const std::string& source) {
-  Section s{"vehicle", "Vehicle", {}, {}, {}};
-  s.paragraphs.push_back(v.name + " (" + source + ")");
-  s.tables.push_back(
+  Section s = InputFileSection(
+      "vehicle", "Vehicle", v.name, source,
       {"Vehicle",
        {"mass in air (kg)", "length (m)", "width (m)", "height (m)", "min_thrust (N)"},
        {{Number(v.mass), Number(v.size[0]), Number(v.size[1]), Number(v.size[2]),
@@ -82,14 +90,12 @@ Section VehicleSection(const model::Vehicle& v, const std::string& source) {
 }
 
 Section PoolSection(const model::Pool& p, const std::string& source) {
-  Section s{"pool", "Pool", {}, {}, {}};
-  s.paragraphs.push_back(p.name + " (" + source + ")");
-  s.tables.push_back(
+  return InputFileSection(
+      "pool", "Pool", p.name, source,
       {"Pool",
        {"length (m)", "width (m)", "depth (m)", "margin (m)", "tether twist (turns)"},
        {{Number(p.length), Number(p.width), Number(p.depth), Number(p.margin),
          Number(p.max_turns)}}});
-  return s;
 }
 
 Section ScheduleSection(const planner::Schedule& schedule,

@@ -100,7 +100,7 @@ IdentifyOptions SurgeOptions(const model::Vehicle& v) {
   o.dofs = {Dof::kSurge};
   // One mapping, no installation coefficient: η·m is all a single mapping shows.
   o.structures[Dof::kSurge] = model::ModelStructure::Standard(v, Dof::kSurge, {}, false);
-  o.prune_insignificant = false;
+  o.selection.prune_insignificant = false;
   return o;
 }
 

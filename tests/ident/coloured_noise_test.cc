@@ -1,4 +1,4 @@
-// The AR(1) pieces behind the σ of coloured noise (covariance.h, velocity_estimation.h):
+// The AR(1) pieces behind the σ of coloured noise (covariance.h, speed_fit.h):
 // the bias-freed AR(1) coefficient from fitted residuals and the exact σ of a steady speed.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <random>
 
 #include "uuvplan/ident/stats/covariance.h"
-#include "uuvplan/ident/prepare/velocity_estimation.h"
+#include "uuvplan/ident/prepare/speed_fit.h"
 
 namespace uuvplan::ident {
 namespace {

@@ -49,7 +49,7 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   MonteCarloOptions o;
   o.repetitions = Repetitions(30);
   o.seed = 7;
-  o.identify.prune_insignificant = false;
+  o.identify.selection.prune_insignificant = false;
   o.cramer_rao = false;
   model::Truth truth = testing::CaseTruth(c.truth);
   truth.defects.noise_ar1 = c.ar1;
@@ -125,7 +125,7 @@ TEST(IntegralInertiaCoverageTest, UrisYawPrbsMassIsUnbiasedAndItsSigmaMatchesThe
   MonteCarloOptions o;
   o.repetitions = Repetitions(100);
   o.seed = 7;
-  o.identify.prune_insignificant = false;
+  o.identify.selection.prune_insignificant = false;
   o.cramer_rao = false;
   const model::Truth truth = testing::CaseTruth("uris");
   const std::vector<model::TrialDesign> all = testing::UrisDesigns();
@@ -152,7 +152,7 @@ TEST(CramerRaoTest, OutputErrorSpreadIsWithin25PercentOfTheBoundOnTheRomeoSurgeS
   MonteCarloOptions o;
   o.repetitions = Repetitions(50);
   o.seed = 11;
-  o.identify.prune_insignificant = false;
+  o.identify.selection.prune_insignificant = false;
   const model::Truth truth = testing::CaseTruth("romeo");
   // The sine never reverses the force: no installation coefficient is excited.
   o.identify.structures[Dof::kSurge] = model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {}, false);

@@ -59,7 +59,7 @@ TEST(SteadyStateFitTest, HeaveWithBallastStepsEq20IsExactOnNoiseFreeSpeeds) {
     }
   }
   SteadyStateOptions o;
-  o.prune_insignificant = false;
+  o.selection.prune_insignificant = false;
   const SteadyStateResult r = SteadyStateFit(model, pts, PriorTheta(truth.vehicle, model, {}), o);
   ASSERT_TRUE(r.ok()) << r.message;
   for (const char* name : {"k", "kq", "bias", "bias_step", "eta.vertical-all.neg"}) {
@@ -97,7 +97,7 @@ TEST(SteadyStateFitTest, InsignificantYawQuadraticDragIsDroppedAsTableIII) {
   for (int seed = 0; seed < 20; ++seed) {
     const std::vector<SteadyPoint> pts = RomeoYawLegs(truth.vehicle, 28.6, 0.0, seed);
     SteadyStateOptions seed_rule;  // Table III drops kq whatever its correlation with k
-    seed_rule.drop_correlation = kSeedDropCorrelation;
+    seed_rule.selection.drop_correlation = kSeedDropCorrelation;
     const SteadyStateResult r =
         SteadyStateFit(model, pts, PriorTheta(truth.vehicle, model, {}), seed_rule);
     ASSERT_TRUE(r.ok()) << r.message;
@@ -133,7 +133,7 @@ TEST(SteadyStateFitTest, ACorrelatedInsignificantParameterIsKeptSoThatTheOthersS
     const std::vector<SteadyPoint> pts = RomeoYawLegs(truth.vehicle, kTrueK, kTrueKq, seed);
     const Eigen::VectorXd start = PriorTheta(truth.vehicle, model, {});
     SteadyStateOptions seed_rule;
-    seed_rule.drop_correlation = kSeedDropCorrelation;
+    seed_rule.selection.drop_correlation = kSeedDropCorrelation;
     const SteadyStateResult s = SteadyStateFit(model, pts, start, seed_rule);
     const SteadyStateResult d = SteadyStateFit(model, pts, start, SteadyStateOptions{});
     ASSERT_TRUE(s.ok() && d.ok()) << s.message << d.message;
@@ -434,7 +434,7 @@ TEST(OutputErrorTest, CovarianceIsTheCramerRaoBoundAtTheTruth) {
   for (int j = 0; j < m.num_parameters(); ++j) theta[j] = TrueParameter(truth, Dof::kSurge, m.parameter_names()[j]);
   std::vector<ParameterState> state(m.num_parameters(), ParameterState::kEstimated);
   OutputErrorOptions o;
-  o.prune_insignificant = false;
+  o.selection.prune_insignificant = false;
   Eigen::VectorXd start = theta * 1.1;
   const OutputErrorResult r = OutputErrorFit(m, {&d}, start, state, o);
   ASSERT_TRUE(r.ok()) << r.message;
@@ -458,8 +458,9 @@ TEST(IdentifyTest, SmallBiasDroppedByLeastSquaresIsReTestedByTheOutputError) {
   model::Truth truth = testing::CaseTruth("romeo");
   truth.dofs[Dof::kSurge].params["bias"] = kBias;
   const model::Campaign c = VirtualCampaign(truth, testing::RomeoSurgeDesigns(), 31);
-  IdentifyOptions seed_rule;        // the least squares drop it only by seed 000's own rule: the
-  seed_rule.seed_selection = true;  // default keeps the bias, correlated with the drag terms
+  IdentifyOptions seed_rule;  // the least squares drop it only by seed 000's own rule: the
+  // default keeps the bias, correlated with the drag terms
+  seed_rule.selection.drop_correlation = kSeedDropCorrelation;
   const IdentifyResult r = Identify(c, seed_rule);
   const DofIdentification* s = r.Find(Dof::kSurge);
   ASSERT_NE(s, nullptr);

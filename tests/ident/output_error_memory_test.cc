@@ -152,7 +152,7 @@ std::pair<OutputErrorResult, long long> SurgeFitCountingHeap(
   }
   const std::vector<ParameterState> state(m.num_parameters(), ParameterState::kEstimated);
   OutputErrorOptions o;
-  o.prune_insignificant = false;
+  o.selection.prune_insignificant = false;
   uuvplan::testing::StartCountingHeap();
   OutputErrorResult r = OutputErrorFit(m, trials, theta, state, o);
   return {std::move(r), uuvplan::testing::StopCountingHeap()};

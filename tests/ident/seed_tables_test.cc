@@ -80,7 +80,7 @@ void CheckRow(const model::Vehicle& v, Dof dof, const std::vector<Legs>& legs, c
     }
   }
   SteadyStateOptions o;
-  o.prune_insignificant = false;
+  o.selection.prune_insignificant = false;
   const SteadyStateResult r = SteadyStateFit(model, pts, PriorTheta(v, model, {}), o);
   ASSERT_TRUE(r.ok()) << r.message;
   std::vector<std::pair<std::string, double>> expected = {{"k", row.k}};

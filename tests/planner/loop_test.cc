@@ -352,8 +352,9 @@ TEST(StopRulesTest, SmallPoolStopsStuckNamingThePool) {
   const model::Pool small = FiveMetrePool();
   LoopOptions o;
   o.step.dofs = {Dof::kSurge};
-  o.step.identify.prune_insignificant = true;
-  o.step.identify.seed_selection = true;  // the seed's rule drops k although it is correlated
+  o.step.identify.selection.prune_insignificant = true;
+  // the seed's rule drops k although it is correlated
+  o.step.identify.selection.drop_correlation = ident::kSeedDropCorrelation;
   // The issue's families (single-mapping sines and legs): a mapping-switched trial (issue #17)
   // oscillates in place and determines surge in 3 m (the loop converges), so the pool limit this
   // test exercises exists only without them.

@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
     ident::MonteCarloOptions o;
     o.repetitions = reps;
     o.seed = 7;  // the CI subset uses the same seed: its repetitions are the first ones here
-    o.identify.prune_insignificant = false;
+    o.identify.selection.prune_insignificant = false;
     o.cramer_rao = false;
     const auto t0 = std::chrono::steady_clock::now();
     model::Truth truth = t::CaseTruth(c.truth);
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     ident::MonteCarloOptions o;
     o.repetitions = reps;
     o.seed = 11;
-    o.identify.prune_insignificant = false;
+    o.identify.selection.prune_insignificant = false;
     // The sine never reverses the force: no installation coefficient is excited.
     o.identify.structures[Dof::kSurge] =
         model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {}, false);

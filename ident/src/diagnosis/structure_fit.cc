@@ -31,7 +31,7 @@ StructureFit FitStructure(const model::Vehicle& vehicle, const model::ModelStruc
     }
   }
   OutputErrorOptions o = options;
-  o.prune_insignificant = false;  // structures are compared as given
+  o.selection.prune_insignificant = false;  // structures are compared as given
   f.oe = OutputErrorFit(*f.model, trials, theta0, state, o);
   for (int i = 0; i < np; ++i) f.values[f.model->parameter_names()[i]] = f.oe.theta[i];
   for (const auto& s : f.oe.state) f.free_parameters += s == ParameterState::kEstimated;

@@ -226,7 +226,7 @@ ClosedLoopIvResult ClosedLoopInstrumentalFit(const model::DofModel& model,
   std::vector<int> dropped;
   ClosedLoopIvResult out = SolveIv(model, trials, theta_now, free, one_step, o);
   std::vector<std::string> kept_notes;
-  while (o.prune_insignificant && out.ok()) {
+  while (o.selection.prune_insignificant && out.ok()) {
     std::vector<int> estimated;  // m and the free parameters, in the model's layout
     for (const ParameterEstimate& e : out.fit.estimates) {
       estimated.push_back(model.ParameterIndex(e.name));
@@ -235,8 +235,7 @@ ClosedLoopIvResult ClosedLoopInstrumentalFit(const model::DofModel& model,
         CandidatesOf(names, out.fit.theta, out.fit.covariance, estimated);
     double pe = 0.0;
     kept_notes.clear();
-    const int worst =
-        WorstInsignificant(candidates, o.prunable, o.drop_correlation, &pe, &kept_notes);
+    const int worst = WorstInsignificant(candidates, o.selection, &pe, &kept_notes);
     if (worst < 0) break;
     const int j = model.ParameterIndex(candidates[worst].name);
     before_value[j] = candidates[worst].value;

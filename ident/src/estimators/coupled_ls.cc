@@ -9,6 +9,7 @@
 #include "options_check.h"
 #include "uuvplan/ident/estimators/least_squares.h"
 #include "uuvplan/ident/stats/significance.h"
+#include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/coupled_model.h"
 #include "uuvplan/model/util/text.h"
 
@@ -42,13 +43,6 @@ Eigen::VectorXd InstrumentalSolve(const Eigen::MatrixXd& H, const Eigen::MatrixX
   const Eigen::MatrixXd A = Z.transpose() * w.asDiagonal() * Hs;
   const Eigen::VectorXd b = Z.transpose() * w.asDiagonal() * y;
   return scale.asDiagonal() * A.colPivHouseholderQr().solve(b);
-}
-
-// The columns `cols` of H (the parameters still in the model).
-Eigen::MatrixXd Columns(const Eigen::MatrixXd& H, const std::vector<int>& cols) {
-  Eigen::MatrixXd out(H.rows(), static_cast<Eigen::Index>(cols.size()));
-  for (std::size_t c = 0; c < cols.size(); ++c) out.col(static_cast<Eigen::Index>(c)) = H.col(cols[c]);
-  return out;
 }
 
 // θ of all 12 parameters from the estimate of `cols` (the dropped ones 0).
@@ -89,7 +83,7 @@ LinearFit LeastSquares(Fit* fit) {
   for (int pass = 0; pass < 2; ++pass) {
     LeastSquaresOptions ls;
     ls.covariance = CovarianceKind::kResidual;
-    lf = SolveLeastSquares(Columns(rows.H, fit->cols), rows.y, &fit->w, ls);
+    lf = SolveLeastSquares(SelectedColumns(rows.H, fit->cols), rows.y, &fit->w, ls);
     if (!lf.ok()) return lf;
     fit->w = EquationWeights(rows, lf.residuals);
   }
@@ -115,9 +109,10 @@ void Instrumental(const std::vector<CoupledTrialData>& trials, const CoupledLsOp
       simulated.push_back(internal::SimulatedVelocities(d, current, options.step_s));
     }
     const Eigen::MatrixXd Z = internal::BuildCoupledRows(trials, simulated).H;
-    const Eigen::VectorXd theta = Expand(
-        InstrumentalSolve(Columns(fit->rows.H, fit->cols), Columns(Z, fit->cols), fit->rows.y, fit->w),
-        fit->cols);
+    const Eigen::VectorXd theta =
+        Expand(InstrumentalSolve(SelectedColumns(fit->rows.H, fit->cols),
+                                 SelectedColumns(Z, fit->cols), fit->rows.y, fit->w),
+               fit->cols);
     if (!Z.allFinite() || !theta.allFinite()) {
       result->notes.push_back(
           "instrumental variables skipped: the current estimate's simulation or the "
@@ -236,10 +231,9 @@ CoupledLsResult CoupledOneStepLeastSquares(const std::vector<const model::TrialL
     // The MA(1) sandwich of the √W-scaled rows (coupled_ls.h).
     const Eigen::VectorXd sw = fit.w.cwiseSqrt();
     const Eigen::VectorXd r = fit.rows.y - fit.rows.H * fit.theta;
-    result.covariance = Expand(Ma1Covariance(sw.asDiagonal() * Columns(fit.rows.H, fit.cols),
-                                             sw.asDiagonal() * Columns(fit.Z, fit.cols),
-                                             sw.cwiseProduct(r), fit.rows.group),
-                               fit.cols);
+    const Eigen::MatrixXd H = sw.asDiagonal() * SelectedColumns(fit.rows.H, fit.cols);
+    const Eigen::MatrixXd Z = sw.asDiagonal() * SelectedColumns(fit.Z, fit.cols);
+    result.covariance = Expand(Ma1Covariance(H, Z, sw.cwiseProduct(r), fit.rows.group), fit.cols);
     const int drop = options.prune ? NegativeInsignificantDrag(result, fit.cols) : -1;
     if (drop < 0) break;
     result.dropped.push_back({drop, result.theta[drop], result.Sigma(drop)});

@@ -8,6 +8,7 @@
 #include "options_check.h"
 #include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/ident/stats/covariance.h"
+#include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/util/text.h"
 
@@ -223,11 +224,7 @@ double KnownParameterVariance(const std::vector<Run>& runs, const std::vector<Ro
       for (std::size_t c = 0; c < known.size(); ++c) J[c] += g * run.Y(s, known[c]);
     }
   }
-  Eigen::MatrixXd Sk(known.size(), known.size());
-  for (std::size_t a1 = 0; a1 < known.size(); ++a1) {
-    for (std::size_t b1 = 0; b1 < known.size(); ++b1) Sk(a1, b1) = known_cov(known[a1], known[b1]);
-  }
-  return J.dot(Sk * J);
+  return J.dot(SubMatrix(known_cov, known) * J);
 }
 
 // Σ_s c_s·ξ̃_s's noise for a position-derived run: ξ̃_s = Σ_j w_sj·χ_j, so the sensitivity to

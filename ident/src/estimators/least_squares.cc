@@ -194,6 +194,45 @@ ScaledFactor AnalyseScaledFactor(const Eigen::MatrixXd& R, const LeastSquaresOpt
   return f;
 }
 
+namespace {
+
+// The covariance of θ that options.covariance names, from the unit covariance D·(BᵀB)⁻¹·D, the
+// fit's s² and residuals, and the row weights' square roots `sw` (wr = sw·residuals).
+Eigen::MatrixXd CovarianceOfKind(const LeastSquaresOptions& options, const LinearFit& fit,
+                                 const Eigen::MatrixXd& unit, const Eigen::MatrixXd& H,
+                                 const Eigen::VectorXd& sw, const Eigen::VectorXd& wr,
+                                 const Eigen::VectorXd* weights, const std::vector<int>* groups) {
+  const Eigen::Index n = H.rows();
+  switch (options.covariance) {
+    case CovarianceKind::kResidual:
+      return (fit.dof > 0 ? fit.sigma2 : 1.0) * unit;
+    case CovarianceKind::kKnownNoise:
+      return unit;
+    case CovarianceKind::kConservative: {
+      // Inflate the known-noise covariance by s² only when the residuals say the noise is
+      // larger than known: s²·dof beyond the 99% point of χ²(dof) (P < 1%).
+      const bool larger = fit.dof > 0 && ChiSquareSurvival(fit.sigma2 * fit.dof, fit.dof) < 0.01;
+      return (larger ? fit.sigma2 : 1.0) * unit;
+    }
+    case CovarianceKind::kKnownNoiseAtLeast:
+      return (fit.dof > 0 ? std::max(1.0, fit.sigma2) : 1.0) * unit;
+    case CovarianceKind::kDifferenced: {
+      std::vector<int> g(n, 0);
+      if (groups) g = *groups;
+      return DifferencedCovariance(sw.asDiagonal() * H, wr, g);
+    }
+    case CovarianceKind::kNeweyWest: {
+      const int lags =
+          options.newey_west_lags >= 0 ? options.newey_west_lags : DefaultNeweyWestLags(int(n));
+      return NeweyWestCovariance(H, fit.residuals, weights, lags, groups,
+                                 options.truncated_kernel);
+    }
+  }
+  return Eigen::MatrixXd();
+}
+
+}  // namespace
+
 LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
                             const Eigen::VectorXd* weights, const LeastSquaresOptions& options,
                             const std::vector<int>* groups) {
@@ -237,37 +276,7 @@ LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
   fit.sigma2 = fit.dof > 0 ? wr.squaredNorm() / fit.dof : std::numeric_limits<double>::quiet_NaN();
   // (BᵀB)⁻¹ = R⁻¹R⁻ᵀ (pseudo-inverse); Cov of theta = D (BᵀB)⁻¹ D.
   const Eigen::MatrixXd unit = D.asDiagonal() * (Rpinv * Rpinv.transpose()) * D.asDiagonal();
-  switch (options.covariance) {
-    case CovarianceKind::kResidual:
-      fit.covariance = (fit.dof > 0 ? fit.sigma2 : 1.0) * unit;
-      break;
-    case CovarianceKind::kKnownNoise:
-      fit.covariance = unit;
-      break;
-    case CovarianceKind::kConservative: {
-      // Inflate the known-noise covariance by s² only when the residuals say the noise is
-      // larger than known: s²·dof beyond the 99% point of χ²(dof) (P < 1%).
-      const bool larger = fit.dof > 0 && ChiSquareSurvival(fit.sigma2 * fit.dof, fit.dof) < 0.01;
-      fit.covariance = (larger ? fit.sigma2 : 1.0) * unit;
-      break;
-    }
-    case CovarianceKind::kKnownNoiseAtLeast:
-      fit.covariance = (fit.dof > 0 ? std::max(1.0, fit.sigma2) : 1.0) * unit;
-      break;
-    case CovarianceKind::kDifferenced: {
-      std::vector<int> g(n, 0);
-      if (groups) g = *groups;
-      fit.covariance = DifferencedCovariance(sw.asDiagonal() * H, wr, g);
-      break;
-    }
-    case CovarianceKind::kNeweyWest: {
-      const int lags =
-          options.newey_west_lags >= 0 ? options.newey_west_lags : DefaultNeweyWestLags(int(n));
-      fit.covariance = NeweyWestCovariance(H, fit.residuals, weights, lags, groups,
-                                           options.truncated_kernel);
-      break;
-    }
-  }
+  fit.covariance = CovarianceOfKind(options, fit, unit, H, sw, wr, weights, groups);
   if (fit.condition_number > options.max_condition || !fit.not_identifiable.empty()) {
     fit.status = FitStatus::kIllConditioned;
     std::ostringstream os;

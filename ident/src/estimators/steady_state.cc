@@ -9,6 +9,7 @@
 #include "stats/model_selection.h"
 #include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/ident/stats/significance.h"
+#include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/mapping.h"
 #include "uuvplan/model/util/enum_names.h"
@@ -290,11 +291,10 @@ void ReportSingular(const model::DofModel& model, const Eigen::MatrixXd& Hall,
                     const Eigen::VectorXd& theta, SteadyStateResult* r) {
   const int n = r->num_points, p = static_cast<int>(cols.size());
   const int d = static_cast<int>(distinct.size());
-  Eigen::MatrixXd H(n, p), Hd_all, Hd(d, p);
+  Eigen::MatrixXd H = SelectedColumns(Hall, cols), Hd_all;
   Eigen::VectorXd y_unused;
-  for (int c = 0; c < p; ++c) H.col(c) = Hall.col(cols[c]);
   SteadyRows(model, distinct, theta, &Hd_all, &y_unused);
-  for (int c = 0; c < p; ++c) Hd.col(c) = Hd_all.col(cols[c]);
+  Eigen::MatrixXd Hd = SelectedColumns(Hd_all, cols);
   for (int c = 0; c < p; ++c) {
     const double s = H.col(c).norm();
     if (s > 0) {
@@ -366,7 +366,7 @@ LinearFit FitWithSelection(const model::DofModel& model, const std::vector<Stead
     // y − (dropped columns at 0) = y: dropped parameters contribute nothing.
     fit = WeightedFit(model, points, H, y, *cols, o, lso, &theta);
     for (int c = 0; c < p; ++c) theta[(*cols)[c]] = fit.theta[c];
-    if (!o.prune_insignificant || fit.status != FitStatus::kOk) break;
+    if (!o.selection.prune_insignificant || fit.status != FitStatus::kOk) break;
     std::vector<PruneCandidate> candidates;
     const std::vector<double> correlation = LargestCorrelations(fit.covariance);
     for (int c = 0; c < p; ++c) {
@@ -375,8 +375,7 @@ LinearFit FitWithSelection(const model::DofModel& model, const std::vector<Stead
     }
     double worst_pe = 0.0;
     kept.clear();
-    const int worst =
-        WorstInsignificant(candidates, o.prunable, o.drop_correlation, &worst_pe, &kept);
+    const int worst = WorstInsignificant(candidates, o.selection, &worst_pe, &kept);
     if (worst < 0 || p == 1) break;
     const int j = (*cols)[worst];
     r->state[j] = ParameterState::kDropped;

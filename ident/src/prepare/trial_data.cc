@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "options_check.h"
+#include "uuvplan/ident/prepare/speed_fit.h"
 #include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/median.h"

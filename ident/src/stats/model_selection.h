@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "uuvplan/ident/estimate.h"
+#include "uuvplan/ident/stats/model_selection_options.h"
 
 namespace uuvplan::ident {
 
@@ -39,6 +40,13 @@ std::vector<PruneCandidate> CandidatesOf(const std::vector<std::string>& names,
 int WorstInsignificant(const std::vector<PruneCandidate>& candidates,
                        const std::vector<std::string>& prunable, double max_correlation,
                        double* worst_pe, std::vector<std::string>* kept = nullptr);
+/// As above, among `selection`'s prunable parameters at its drop correlation.
+inline int WorstInsignificant(const std::vector<PruneCandidate>& candidates,
+                              const ModelSelectionOptions& selection, double* worst_pe,
+                              std::vector<std::string>* kept = nullptr) {
+  return WorstInsignificant(candidates, selection.prunable, selection.drop_correlation, worst_pe,
+                            kept);
+}
 
 /// The estimated and dropped parameters (fixed ones left out) of a fit, dropped ones with the
 /// value and σ they had in the last fit that still had them.

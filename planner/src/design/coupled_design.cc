@@ -7,10 +7,12 @@
 #include <random>
 #include <sstream>
 
+#include "design/sensor_information.h"
 #include "uuvplan/model/coupled_simulator.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/seed.h"
+#include "uuvplan/planner/design/centred_travel.h"
 #include "uuvplan/planner/design/thrust_limits.h"
 
 namespace uuvplan::planner {
@@ -53,12 +55,8 @@ std::vector<Output> Outputs(const model::Vehicle& vehicle, double dt) {
   for (int i = 0; i < 3; ++i) {
     const auto s = vehicle.sensors.find(model::kHorizontalDofs[i]);
     if (s == vehicle.sensors.end()) continue;
-    if (s->second.position) {
-      out.push_back({i, true, s->second.position->rate_hz * dt / std::pow(s->second.position->sigma, 2)});
-    }
-    if (s->second.velocity) {
-      out.push_back({i, false, s->second.velocity->rate_hz * dt / std::pow(s->second.velocity->sigma, 2)});
-    }
+    if (s->second.position) out.push_back({i, true, InformationOver(*s->second.position, dt)});
+    if (s->second.velocity) out.push_back({i, false, InformationOver(*s->second.velocity, dt)});
   }
   return out;
 }
@@ -539,8 +537,8 @@ void PlaceStart(const model::Pool& pool, double heading, CoupledDesign* d) {
   const double free_x = pool.FreeTravel(model::Dof::kSurge);
   const double free_y = pool.FreeTravel(model::Dof::kSway);
   const CoupledEnvelope& e = d->envelope;
-  d->start_x = pool.margin + 0.5 * (free_x - (e.x[1] - e.x[0])) - e.x[0];
-  d->start_y = pool.margin + 0.5 * (free_y - (e.y[1] - e.y[0])) - e.y[0];
+  d->start_x = pool.margin + CentreTravel(free_x - (e.x[1] - e.x[0]), e.x).start;
+  d->start_y = pool.margin + CentreTravel(free_y - (e.y[1] - e.y[0]), e.y).start;
   d->start_heading = heading;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::planner {
@@ -31,23 +32,14 @@ std::vector<int> InformedParameters(const Eigen::MatrixXd& M_rel) {
 
 namespace {
 
-Eigen::MatrixXd Sub(const Eigen::MatrixXd& M, const std::vector<int>& r,
-                    const std::vector<int>& c) {
-  Eigen::MatrixXd out(r.size(), c.size());
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    for (std::size_t j = 0; j < c.size(); ++j) out(i, j) = M(r[i], c[j]);
-  }
-  return out;
-}
-
 // Information on the interest block with the nuisance marginalised (Schur complement; a
 // pseudo-inverse of M_nn, so that a nuisance combination no trial reaches does not matter).
 Eigen::MatrixXd InterestInformation(const Eigen::MatrixXd& M, const std::vector<int>& s,
                                     const std::vector<int>& n) {
-  Eigen::MatrixXd Mss = Sub(M, s, s);
+  Eigen::MatrixXd Mss = ident::SubMatrix(M, s);
   if (n.empty()) return Mss;
-  const Eigen::MatrixXd Mnn = Sub(M, n, n);
-  const Eigen::MatrixXd Msn = Sub(M, s, n);
+  const Eigen::MatrixXd Mnn = ident::SubMatrix(M, n);
+  const Eigen::MatrixXd Msn = ident::SubMatrix(M, s, n);
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Mnn);
   const Eigen::VectorXd& lam = es.eigenvalues();
   Eigen::VectorXd inv(lam.size());
@@ -119,7 +111,7 @@ Eigen::VectorXd PredictedSigma(const Eigen::MatrixXd& M, const Eigen::VectorXd& 
   const Eigen::MatrixXd M_rel = RelativeInformation(M, theta);
   const std::vector<int> informed = InformedParameters(M_rel);
   if (informed.empty()) return sigma;
-  const Eigen::MatrixXd C = Sub(M_rel, informed, informed);
+  const Eigen::MatrixXd C = ident::SubMatrix(M_rel, informed);
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(C);
   const Eigen::VectorXd& lam = es.eigenvalues();
   const Eigen::MatrixXd& V = es.eigenvectors();

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "design/sensor_information.h"
 #include "options_check.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
@@ -135,12 +136,7 @@ DofContext::DofContext(const model::Vehicle& vehicle, const model::Pool& pool, m
   step_s_ = ChooseStep(tc_min_, options_.max_step_s);
   design_sensors_ = sensors_;
   for (auto* spec : {&design_sensors_.position, &design_sensors_.velocity}) {
-    if (!*spec) continue;
-    const double rate = 1.0 / step_s_;
-    if ((*spec)->rate_hz > rate) {
-      (*spec)->sigma *= std::sqrt(rate / (*spec)->rate_hz);
-      (*spec)->rate_hz = rate;
-    }
+    if (*spec) **spec = AtMostRate(**spec, 1.0 / step_s_);
   }
 }
 
@@ -282,6 +278,30 @@ std::vector<Eigen::MatrixXd> DofContext::Information(const model::TrialDesign& d
     out.push_back(tm.Embed(r.M, model_->num_parameters()));
   }
   return out;
+}
+
+std::vector<Eigen::MatrixXd> DofContext::DesignInformation(const TrialModel& tm,
+                                                           const model::Excitation& input,
+                                                           double duration,
+                                                           std::array<double, 2>* travel) const {
+  std::vector<Eigen::MatrixXd> out;
+  *travel = {0.0, 0.0};
+  for (const auto& th : tm.design_thetas) {
+    const TrialResponse r = SimulateTrial(*tm.model, th, input, design_sensors_, duration, step_s_,
+                                          true, options_.start_known);
+    (*travel)[0] = std::min((*travel)[0], r.position_min);
+    (*travel)[1] = std::max((*travel)[1], r.position_max);
+    out.push_back(tm.Embed(r.M, model_->num_parameters()));
+  }
+  return out;
+}
+
+std::vector<Eigen::MatrixXd> WithPrior(std::vector<Eigen::MatrixXd> information,
+                                       const std::vector<Eigen::MatrixXd>& prior) {
+  for (std::size_t j = 0; j < information.size() && j < prior.size(); ++j) {
+    if (prior[j].size() == information[j].size()) information[j] += prior[j];
+  }
+  return information;
 }
 
 std::vector<double> DofContext::CriterionValues(const std::vector<Eigen::MatrixXd>& M, Criterion c,

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "design/sensor_information.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/util/checked_count.h"
 
@@ -22,7 +23,7 @@ void AddSensor(const model::SensorSpec& spec, int channel, double duration,
   if (!(spec.rate_hz > 0) || !(spec.sigma > 0)) {
     throw std::invalid_argument("sensor rate and sigma must be > 0");
   }
-  const double inv_var = 1.0 / (spec.sigma * spec.sigma);
+  const double inv_var = SampleInformation(spec);
   const double span = duration * spec.rate_hz;
   const long whole = model::CheckedFloor(span, "sensor samples (duration × rate)",
                                          model::limits::kMaxTrialRows,

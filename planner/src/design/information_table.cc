@@ -5,23 +5,11 @@
 #include <limits>
 #include <memory>
 
+#include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/planner/design/criteria.h"
 #include "uuvplan/planner/design/dof_context.h"
 
 namespace uuvplan::planner {
-namespace {
-
-// M restricted to the rows and columns `P`.
-Eigen::MatrixXd Block(const Eigen::MatrixXd& M, const std::vector<int>& P) {
-  Eigen::MatrixXd S(P.size(), P.size());
-  for (std::size_t a = 0; a < P.size(); ++a) {
-    for (std::size_t b = 0; b < P.size(); ++b) S(a, b) = M(P[a], P[b]);
-  }
-  return S;
-}
-
-}  // namespace
-
 InformationSummary SummariseInformation(model::Dof dof, const std::vector<std::string>& names,
                                         const Eigen::VectorXd& theta, const Eigen::MatrixXd& M) {
   InformationSummary s;
@@ -40,7 +28,7 @@ InformationSummary SummariseInformation(model::Dof dof, const std::vector<std::s
   s.condition_number = std::numeric_limits<double>::infinity();
   if (!P.empty()) {
     const Eigen::VectorXd lambda =
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Block(R, P)).eigenvalues();
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(ident::SubMatrix(R, P)).eigenvalues();
     if (lambda.minCoeff() > kSingularThreshold) {
       s.condition_number = lambda.maxCoeff() / lambda.minCoeff();
     }

@@ -6,6 +6,8 @@
 #include <limits>
 #include <sstream>
 
+#include "design/sine_family_objective.h"
+#include "design/travel_margin.h"
 #include "options_check.h"
 
 #include "uuvplan/model/effects.h"
@@ -37,10 +39,6 @@ bool SineDesignOptions::IsValid(std::string* error) const {
 
 namespace {
 
-// Designs keep this far (m) inside the pool, so that the finer check (DofContext::Check, finer
-// step, denser box grid) agrees with the design's own travel.
-constexpr double kTravelSafety = 0.005;
-
 // Hull of the travel over several parameter points as the trial goes on: the first time the
 // span (max over points of position - min over points of position) exceeds `available`.
 // The point with the fastest steady speed is traced first over [0, t_max]; the others only up
@@ -59,7 +57,7 @@ double FirstOverflow(const DofContext& ctx, const model::DofModel& model,
   };
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return speed(thetas[a]) < speed(thetas[b]); });
-  const double avail = ctx.available() - kTravelSafety;
+  const double avail = ctx.available() - kSineTravelMargin;
   std::vector<double> lo, hi;
   double horizon = t_max;
   for (std::size_t n = 0; n < order.size(); ++n) {
@@ -110,13 +108,12 @@ class SineProblem {
  public:
   SineProblem(const DofContext& ctx, const SineDesignOptions& o,
               const std::vector<Eigen::MatrixXd>& prior, const Candidate& c, double t_max)
-      : ctx_(ctx), o_(o), prior_(prior), c_(c), t_max_(t_max) {
-    interest_ = ctx.Indices(o.interest);
-    const double mid = 0.5 * (c.range.min_abs + c.range.max_abs);
-    w_ = SineFrequencyRange(ctx, mid);
-    const double fixed = o.fixed_duration_s > 0 ? o.fixed_duration_s : t_max;
-    if (o.min_periods > 0) w_[0] = std::max(w_[0], 2 * M_PI * o.min_periods / fixed);
-    if (w_[1] <= w_[0]) w_[1] = 2.0 * w_[0];
+      : ctx_(ctx),
+        o_(o),
+        objective_(ctx, o, prior, 0.5 * (c.range.min_abs + c.range.max_abs),
+                   o.fixed_duration_s > 0 ? o.fixed_duration_s : t_max),
+        c_(c),
+        t_max_(t_max) {
     const double x_mid[3] = {0.5, 0.5, 0.5};
     tm_ = &ctx.ModelFor(Decode(x_mid));  // one direction throughout: the same model for all x
   }
@@ -134,7 +131,7 @@ class SineProblem {
     const double top = std::max(rho * depth, std::min(depth, hi - off));
     d.offset = c_.sign * off;
     d.amplitude = rho * depth + std::clamp(x[1], 0.0, 1.0) * (top - rho * depth);
-    d.omega = w_[0] * std::pow(w_[1] / w_[0], std::clamp(x[2], 0.0, 1.0));
+    d.omega = objective_.Omega(x[2]);
     return d;
   }
 
@@ -150,31 +147,15 @@ class SineProblem {
     return 1 + (o_.fixed_duration_s > 0 && std::isfinite(ctx_.available()) ? 1 : 0);
   }
 
-  bool Evaluate(const double* x, double* phi, double* g,
-                std::vector<Eigen::MatrixXd>* info = nullptr) const {
+  bool Evaluate(const double* x, double* phi, double* g) const {
     model::TrialDesign d = Decode(x);
     d.duration = Duration(d);
     if (!(d.duration > 0)) return false;
     const auto input = model::MakeExcitation(ctx_.vehicle(), d);
     // g0: at least min_periods periods, scaled by the longest trial.
     g[0] = (o_.min_periods * 2 * M_PI / d.omega - d.duration) / t_max_;
-    double lo = 0.0, hi = 0.0;
-    const auto& thetas = ctx_.design_thetas();
-    const int np = ctx_.model().num_parameters();
-    for (std::size_t j = 0; j < thetas.size(); ++j) {
-      TrialResponse r =
-          SimulateTrial(*tm_->model, tm_->design_thetas[j], *input, ctx_.design_sensors(),
-                        d.duration, ctx_.step_s(), true, ctx_.options().start_known);
-      lo = std::min(lo, r.position_min);
-      hi = std::max(hi, r.position_max);
-      Eigen::MatrixXd M = tm_->Embed(r.M, np);
-      if (info) info->push_back(M);
-      if (j < prior_.size() && prior_[j].size() == M.size()) M += prior_[j];
-      phi[j] = EvaluateCriterion(RelativeInformation(M, thetas[j]), o_.criterion, interest_).value;
-    }
-    if (num_constraints() > 1) {
-      g[1] = (hi - lo - (ctx_.available() - kTravelSafety)) / ctx_.available();
-    }
+    const double span = objective_.Criteria(*tm_, *input, d.duration, phi);
+    if (num_constraints() > 1) g[1] = objective_.TravelExcess(span);
     return true;
   }
 
@@ -187,25 +168,24 @@ class SineProblem {
               iq = ctx_.Index(model::param::kQuadraticDrag);
     const double k = ik >= 0 ? th[ik] : 0.0, kq = iq >= 0 ? th[iq] : 0.0;
     const double kl = LinearisedDrag(k, kq, SteadySpeed(k, kq, mid));
-    const double w = kl > 0 ? DOptimalSineFrequency(TimeConstant(th[0], kl)) : w_[0];
-    const double v = std::clamp(std::log(w / w_[0]) / std::log(w_[1] / w_[0]), 0.0, 1.0);
+    const std::array<double, 2>& range = objective_.omega_range();
+    const double w = kl > 0 ? DOptimalSineFrequency(TimeConstant(th[0], kl)) : range[0];
+    const double v = std::clamp(std::log(w / range[0]) / std::log(range[1] / range[0]), 0.0, 1.0);
     return {0.5, 1.0, v};
   }
 
  private:
   const DofContext& ctx_;
   const SineDesignOptions& o_;
-  const std::vector<Eigen::MatrixXd>& prior_;
+  SineFamilyObjective objective_;
   Candidate c_;
   double t_max_;
-  std::vector<int> interest_;
-  std::array<double, 2> w_;
   const DofContext::TrialModel* tm_ = nullptr;
 };
 
-}  // namespace
-
-std::array<double, 2> SineFrequencyRange(const DofContext& ctx, double force_abs) {
+// Ref 000 eq. 14's ω_opt = 1/(√3·t_c), t_c = m/k_L (eq. 13) at a force level, over the box's
+// design points, widened to [ω_min/4, 4·ω_max].
+std::array<double, 2> OptimalFrequencyRange(const DofContext& ctx, double force_abs) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   const int ik = ctx.Index(model::param::kLinearDrag), iq = ctx.Index(model::param::kQuadraticDrag);
   for (const auto& th : ctx.design_thetas()) {
@@ -218,6 +198,16 @@ std::array<double, 2> SineFrequencyRange(const DofContext& ctx, double force_abs
   }
   if (!std::isfinite(lo)) return {0.01, 10.0};
   return {lo / 4.0, hi * 4.0};
+}
+
+}  // namespace
+
+std::array<double, 2> SineFrequencyRange(const DofContext& ctx, double force_abs,
+                                         double min_periods, double duration) {
+  std::array<double, 2> w = OptimalFrequencyRange(ctx, force_abs);
+  if (min_periods > 0) w[0] = std::max(w[0], 2 * M_PI * min_periods / duration);
+  if (w[1] <= w[0]) w[1] = 2.0 * w[0];
+  return w;
 }
 
 double LongestFittingDuration(const DofContext& ctx, const model::TrialDesign& design,
@@ -345,15 +335,6 @@ void PlanFlatSineAsSteady(const DofContext& ctx, SineDesignResult* result) {
   if (d.id.size() > suffix.size() && model::EndsWith(d.id, suffix)) {
     d.id = d.id.substr(0, d.id.size() - suffix.size()) + "-long-steady";
   }
-}
-
-// The trial's information plus the prior, at each design point.
-std::vector<Eigen::MatrixXd> WithPrior(std::vector<Eigen::MatrixXd> information,
-                                       const std::vector<Eigen::MatrixXd>& prior) {
-  for (std::size_t j = 0; j < information.size() && j < prior.size(); ++j) {
-    if (prior[j].size() == information[j].size()) information[j] += prior[j];
-  }
-  return information;
 }
 
 // The reported information and criterion: the real sensors (design_sensors() approximates).

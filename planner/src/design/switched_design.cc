@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "design/sine_family_objective.h"
 #include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/fisher_information.h"
@@ -14,9 +15,6 @@
 namespace uuvplan::planner {
 namespace {
 
-// As the single sine (sine_design.cc): designs keep 5 mm inside the pool, so that the finer
-// check over the whole grid agrees with the design points' travel.
-constexpr double kTravelSafety = 0.005;
 // Shortest segment of a square wave (s): a shorter first or last piece is merged into its
 // neighbour. CHOSEN: two RK4 steps of the fastest DOF; a pool team cannot command less.
 constexpr double kShortestSegment = 0.2;
@@ -55,8 +53,12 @@ class SwitchedProblem {
   SwitchedProblem(const DofContext& ctx, model::InputFamily family, const SineDesignOptions& o,
                   const std::vector<Eigen::MatrixXd>& prior, const SwitchPair& pair,
                   double duration)
-      : ctx_(ctx), family_(family), o_(o), prior_(prior), pair_(pair), duration_(duration) {
-    interest_ = ctx.Indices(o.interest);
+      : ctx_(ctx),
+        family_(family),
+        objective_(ctx, o, prior, 0.5 * (pair.pos_range.max_abs + pair.neg_range.max_abs),
+                   duration),
+        pair_(pair),
+        duration_(duration) {
     if (pair.one_way == 0) {
       up_ = {pair.pos_range.min_abs, pair.pos_range.max_abs};
       down_ = {-pair.neg_range.min_abs, -pair.neg_range.max_abs};
@@ -65,10 +67,6 @@ class SwitchedProblem {
     }
     top_ = std::max({up_[0], up_[1], down_[0], down_[1]});
     bottom_ = std::min({up_[0], up_[1], down_[0], down_[1]});
-    const double mid = 0.5 * (pair.pos_range.max_abs + pair.neg_range.max_abs);
-    w_ = SineFrequencyRange(ctx, mid);
-    if (o.min_periods > 0) w_[0] = std::max(w_[0], 2 * M_PI * o.min_periods / duration);
-    if (w_[1] <= w_[0]) w_[1] = 2.0 * w_[0];
   }
 
   static int VariablesOf(model::InputFamily family) {
@@ -95,27 +93,10 @@ class SwitchedProblem {
     return d;
   }
 
-  bool Evaluate(const double* x, double* phi, double* g,
-                std::vector<Eigen::MatrixXd>* info = nullptr) const {
+  bool Evaluate(const double* x, double* phi, double* g) const {
     const model::TrialDesign d = Decode(x);
     const auto input = model::MakeExcitation(ctx_.vehicle(), d);
-    const DofContext::TrialModel& tm = ctx_.ModelFor(d);
-    const auto& thetas = ctx_.design_thetas();
-    const int np = ctx_.model().num_parameters();
-    double lo = 0.0, hi = 0.0;
-    for (std::size_t j = 0; j < thetas.size(); ++j) {
-      const TrialResponse r =
-          SimulateTrial(*tm.model, tm.design_thetas[j], *input, ctx_.design_sensors(),
-                        d.duration, ctx_.step_s(), true, ctx_.options().start_known);
-      lo = std::min(lo, r.position_min);
-      hi = std::max(hi, r.position_max);
-      Eigen::MatrixXd M = tm.Embed(r.M, np);
-      if (info) info->push_back(M);
-      if (j < prior_.size() && prior_[j].size() == M.size()) M += prior_[j];
-      phi[j] = EvaluateCriterion(RelativeInformation(M, thetas[j]), o_.criterion, interest_).value;
-    }
-    const double avail = ctx_.available();
-    g[0] = std::isfinite(avail) ? (hi - lo - (avail - kTravelSafety)) / avail : -1.0;
+    g[0] = objective_.TravelExcess(objective_.Criteria(ctx_.ModelFor(d), *input, d.duration, phi));
     return true;
   }
 
@@ -145,7 +126,6 @@ class SwitchedProblem {
   }
 
  private:
-  double Omega(double v) const { return w_[0] * std::pow(w_[1] / w_[0], std::clamp(v, 0.0, 1.0)); }
   static double Lerp(double a, double b, double u) { return a + std::clamp(u, 0.0, 1.0) * (b - a); }
 
   // Square wave: positive during the first δ of each period, the period's share ψ elapsed at 0.
@@ -153,7 +133,7 @@ class SwitchedProblem {
     d->kind = model::TrialKind::kSegments;
     const double up = Lerp(up_[0], up_[1], x[0]);
     const double down = Lerp(down_[0], down_[1], x[1]);
-    const double period = 2 * M_PI / Omega(x[2]);
+    const double period = 2 * M_PI / objective_.Omega(x[2]);
     const double duty = pair_.one_way != 0 ? Lerp(0.02, 0.98, x[3]) : Lerp(0.1, 0.9, x[3]);
     const double psi = std::clamp(x[4], 0.0, 1.0) * period;
     const std::string& neg = ctx_.vehicle().mappings[pair_.neg].name;
@@ -191,10 +171,10 @@ class SwitchedProblem {
     if (family_ == model::InputFamily::kSwitchedSine) {
       const double a = Lerp(0.0, 0.5 * (top - bottom), x[0]);
       d->offset = Lerp(bottom + a, top - a, x[1]);
-      d->components = {{a, Omega(x[2]), 2 * M_PI * std::clamp(x[3], 0.0, 1.0)}};
+      d->components = {{a, objective_.Omega(x[2]), 2 * M_PI * std::clamp(x[3], 0.0, 1.0)}};
       return;
     }
-    const double w = Omega(x[0]);
+    const double w = objective_.Omega(x[0]);
     for (int i = 0; i < kMultisineHarmonics; ++i) {
       d->components.push_back({std::clamp(x[1 + i], 1e-3, 1.0), (i + 1) * w,
                                2 * M_PI * std::clamp(x[1 + kMultisineHarmonics + i], 0.0, 1.0)});
@@ -210,12 +190,9 @@ class SwitchedProblem {
 
   const DofContext& ctx_;
   model::InputFamily family_;
-  const SineDesignOptions& o_;
-  const std::vector<Eigen::MatrixXd>& prior_;
+  SineFamilyObjective objective_;
   SwitchPair pair_;
   double duration_;
-  std::vector<int> interest_;
-  std::array<double, 2> w_;
   // Signed level ranges of the square's two halves (x = 0 → [0], x = 1 → [1]) and the
   // waves' crest bounds.
   std::array<double, 2> up_, down_;
@@ -227,12 +204,9 @@ void ScoreAndCheck(const DofContext& ctx, const SineDesignOptions& o,
                    const std::vector<Eigen::MatrixXd>& prior, SineDesignResult* r) {
   const model::TrialDesign& d = r->trial.design;
   r->information = ctx.Information(d);
-  std::vector<Eigen::MatrixXd> total = r->information;
-  for (std::size_t j = 0; j < total.size() && j < prior.size(); ++j) {
-    if (prior[j].size() == total[j].size()) total[j] += prior[j];
-  }
   bool singular = false;
-  r->criterion_per_point = ctx.CriterionValues(total, o.criterion, ctx.Indices(o.interest), &singular);
+  r->criterion_per_point = ctx.CriterionValues(WithPrior(r->information, prior), o.criterion,
+                                               ctx.Indices(o.interest), &singular);
   r->criterion = Aggregate(ctx.options().robustness, r->criterion_per_point);
   r->check = ctx.Check(d);
   r->trial.travel = r->check.travel;

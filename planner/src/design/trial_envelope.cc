@@ -100,8 +100,10 @@ TrialProfile SampleProfile(const model::Vehicle& vehicle, const model::TrialDesi
 StartPosition StartOf(const model::Pool& pool, model::Dof dof, const std::array<double, 2>& travel) {
   StartPosition s;
   const double free = pool.FreeTravel(dof), span = travel[1] - travel[0];
-  // Centred: the slack (free - span) split between both ends, the start -travel[0] above it.
-  const double from_end = (std::isfinite(free) ? std::max(0.0, free - span) / 2 : 0.0) - travel[0];
+  // A travel longer than the free one starts from the negative end; without a limit (an
+  // untethered rotation), from the heading the trial starts at.
+  const double slack = std::isfinite(free) ? std::max(0.0, free - span) : 0.0;
+  const double from_end = CentreTravel(slack, travel).start;
   if (model::IsRotational(dof)) {
     s.value = from_end * 180.0 / M_PI;
     s.unit = "deg";

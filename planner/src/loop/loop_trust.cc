@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "uuvplan/ident/stats/chi_square.h"
+#include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
 
@@ -72,13 +73,9 @@ ConsistencyTest TestConsistency(const ident::DofIdentification& previous,
     return t;
   }
   Eigen::VectorXd d(n);
-  Eigen::MatrixXd c(n, n);
-  for (int r = 0; r < n; ++r) {
-    d(r) = current.params[b[r]].value - previous.params[a[r]].value;
-    for (int k = 0; k < n; ++k) {
-      c(r, k) = previous.covariance(a[r], a[k]) + current.covariance(b[r], b[k]);
-    }
-  }
+  for (int r = 0; r < n; ++r) d(r) = current.params[b[r]].value - previous.params[a[r]].value;
+  const Eigen::MatrixXd c =
+      ident::SubMatrix(previous.covariance, a) + ident::SubMatrix(current.covariance, b);
   // Scaled to unit diagonal: parameters differ by orders of magnitude (kg against η).
   const Eigen::VectorXd s = c.diagonal().cwiseSqrt().cwiseInverse();
   const Eigen::VectorXd z = s.asDiagonal() * d;

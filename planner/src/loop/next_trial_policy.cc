@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "loop/loop_trust.h"
+#include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/parallel.h"
@@ -76,18 +77,17 @@ void DesignInputs(const model::Vehicle& vehicle, const ident::DofIdentification&
     names->push_back(p.name);
     idx.push_back(static_cast<int>(j));
   }
-  const int n = static_cast<int>(idx.size());
-  covariance->resize(n, n);
   const bool full = id.covariance.rows() == static_cast<int>(id.params.size()) &&
                     id.covariance.cols() == static_cast<int>(id.params.size());
+  if (full) {
+    *covariance = ident::SubMatrix(id.covariance, idx);
+    return;
+  }
+  const int n = static_cast<int>(idx.size());
+  *covariance = Eigen::MatrixXd::Zero(n, n);
   for (int a = 0; a < n; ++a) {
-    for (int b = 0; b < n; ++b) {
-      if (full) {
-        (*covariance)(a, b) = id.covariance(idx[a], idx[b]);
-      } else {
-        (*covariance)(a, b) = a == b ? id.params[idx[a]].sigma * id.params[idx[a]].sigma : 0.0;
-      }
-    }
+    const double sigma = id.params[idx[a]].sigma;
+    (*covariance)(a, a) = sigma * sigma;
   }
 }
 // The (mapping, direction) pairs a logged trial pushed in: the sign of its force_<dof> column
@@ -576,30 +576,71 @@ std::size_t PlanBatch(Planner& planner, const model::Campaign& campaign,
   return to;
 }
 
+// Each DOF's progress towards the target, judged against the loop's memory of it.
+std::vector<DofProgress> ProgressOfEach(const Planner& planner, const model::Campaign& campaign,
+                                        const std::vector<Dof>& dofs,
+                                        const ident::IdentifyResult& estimates,
+                                        const LoopMemory& memory) {
+  std::vector<DofProgress> progress;
+  for (Dof dof : dofs) {
+    const auto prev = memory.previous.find(dof);
+    progress.push_back(EvaluateProgress(planner.vehicle, dof, estimates.Find(dof),
+                                        FitTrials(campaign, dof), planner.options,
+                                        prev == memory.previous.end() ? nullptr : &prev->second));
+  }
+  return progress;
+}
+
+// The DOFs not converged, furthest above the target first; ties keep the order of `progress`.
+std::vector<const DofProgress*> FurthestFirst(const std::vector<DofProgress>& progress) {
+  std::vector<const DofProgress*> order;
+  for (const auto& p : progress) {
+    if (!p.converged) order.push_back(&p);
+  }
+  std::stable_sort(order.begin(), order.end(), [](const DofProgress* a, const DofProgress* b) {
+    return a->worst_percent > b->worst_percent;
+  });
+  return order;
+}
+
+// A DOF without a candidate trial stops: infeasible (the pool verdict's answer: no trial for a
+// DOF that has none yet), or stuck when its trials ran in this pool and no further trial fits
+// (at its estimates ± 2σ): held by a limit of this pool, with what stops the next trial.
+void StopUnplanned(const DofProgress& p, const Candidate& c, Decision* d) {
+  const std::string name(model::DofName(p.dof));
+  if (p.trials > 0) {
+    AddStop(p.dof, NextStatus::kStuck,
+            c.why + " (after " + std::to_string(p.trials) + " trial(s) of " + name +
+                " in this pool; a larger pool or a wider thrust range lifts it)",
+            d);
+  } else {
+    AddStop(p.dof, NextStatus::kInfeasible, c.why, d);
+  }
+}
+
+// Why the trial `tried` is next: its DOF is the furthest from the target.
+std::string NextTrialMessage(const DofProgress& p, const Decision& tried) {
+  std::ostringstream m;
+  m << model::DofName(p.dof) << " is furthest from the target (" << p.worst
+    << (std::isfinite(p.worst_percent) ? " at " + model::Significant(p.worst_percent, 3) + "%"
+                                       : std::string(" not estimated yet"))
+    << (p.precise && !p.doubts.empty() ? ", not trusted yet: " + p.doubts.front() : "")
+    << "): " << tried.source << " trial '" << tried.trial.design.id << "'";
+  return m.str();
+}
+
 }  // namespace
 
 Decision Decide(Planner& planner, const model::Campaign& campaign, const std::vector<Dof>& dofs,
                 const ident::IdentifyResult& estimates, const LoopMemory& memory) {
   Decision d;
-  for (Dof dof : dofs) {
-    const auto prev = memory.previous.find(dof);
-    d.progress.push_back(EvaluateProgress(planner.vehicle, dof, estimates.Find(dof),
-                                          FitTrials(campaign, dof), planner.options,
-                                          prev == memory.previous.end() ? nullptr : &prev->second));
-  }
-  std::vector<const DofProgress*> order;
-  for (const auto& p : d.progress) {
-    if (!p.converged) order.push_back(&p);
-  }
+  d.progress = ProgressOfEach(planner, campaign, dofs, estimates, memory);
+  const std::vector<const DofProgress*> order = FurthestFirst(d.progress);
   if (order.empty()) {
     d.status = NextStatus::kConverged;
     d.message = ConvergedMessage(planner.options);
     return d;
   }
-  // Furthest above the target first; ties keep the order of `dofs`.
-  std::stable_sort(order.begin(), order.end(), [](const DofProgress* a, const DofProgress* b) {
-    return a->worst_percent > b->worst_percent;
-  });
   // The DOFs that get a candidate (not stopped, not refused), planned in batches of Threads().
   std::vector<const DofProgress*> open;
   for (const DofProgress* p : order) {
@@ -623,17 +664,7 @@ Decision Decide(Planner& planner, const model::Campaign& campaign, const std::ve
     Decision tried = WithCandidate(d, c);
     if (!c.planned) {
       d.notes = tried.notes;
-      // Infeasible is the pool verdict's answer: no trial for a DOF that has none yet. A DOF
-      // whose trials ran in this pool and that no further trial fits (at its estimates ± 2σ)
-      // is held by a limit of this pool: stuck, with what stops the next trial.
-      if (p->trials > 0) {
-        AddStop(p->dof, NextStatus::kStuck,
-                c.why + " (after " + std::to_string(p->trials) + " trial(s) of " + name +
-                    " in this pool; a larger pool or a wider thrust range lifts it)",
-                &d);
-      } else {
-        AddStop(p->dof, NextStatus::kInfeasible, c.why, &d);
-      }
+      StopUnplanned(*p, c, &d);
       continue;
     }
     const CandidateGain& gain = c.gain;
@@ -645,18 +676,15 @@ Decision Decide(Planner& planner, const model::Campaign& campaign, const std::ve
               StuckReason(planner, campaign, *p, estimates.Find(p->dof), tried.trial, gain), &d);
       continue;
     }
-    std::ostringstream m;  // before `d` is replaced: `p` points into d.progress
-    m << name << " is furthest from the target (" << p->worst
-      << (std::isfinite(p->worst_percent) ? " at " + model::Significant(p->worst_percent, 3) + "%"
-                                          : std::string(" not estimated yet"))
-      << (p->precise && !p->doubts.empty() ? ", not trusted yet: " + p->doubts.front() : "")
-      << "): " << tried.source << " trial '" << tried.trial.design.id << "'";
+    // Before `d` is replaced: `p` points into d.progress.
+    std::string message = NextTrialMessage(*p, tried);
     d = std::move(tried);
     d.status = NextStatus::kTrial;
-    d.message = m.str();
+    d.message = std::move(message);
     return d;
   }
   NoTrial(&d);
   return d;
 }
+
 }  // namespace uuvplan::planner::internal

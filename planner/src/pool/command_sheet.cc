@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "uuvplan/model/trial_design.h"
+#include "uuvplan/planner/design/centred_travel.h"
 #include "uuvplan/planner/design/dof_context.h"
 #include "uuvplan/model/simulator.h"
 
@@ -43,10 +44,9 @@ std::vector<std::string> MappingsOf(const model::TrialDesign& d) {
 
 // Where the run starts and where it is aborted (command_sheet.h, "Start and abort").
 void PlaceStart(const model::Pool& pool, const PlannedTrial& trial, TrialCommands* c) {
-  const double lo = trial.travel[0], hi = trial.travel[1];
-  const double slack = pool.FreeTravel(c->dof) - (hi - lo);
+  const double slack = pool.FreeTravel(c->dof) - (trial.travel[1] - trial.travel[0]);
   c->travel = trial.travel;
-  c->abort = {lo - slack / 2, hi + slack / 2};
+  c->abort = CentreTravel(slack, trial.travel).ends;
   c->start = {pool.length / 2, pool.width / 2, pool.depth / 2};
   if (model::IsRotational(c->dof)) {
     c->start_twist = -pool.FreeTravel(c->dof) / 2 - c->abort[0];

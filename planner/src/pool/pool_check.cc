@@ -5,18 +5,16 @@
 #include <cmath>
 #include <memory>
 
+#include "uuvplan/ident/stats/sub_matrix.h"
+
 namespace uuvplan::planner {
 namespace {
 
 // D criterion on the parameters P only (relative units).
 double DOn(const Eigen::MatrixXd& R, const std::vector<int>& P) {
-  Eigen::MatrixXd S(P.size(), P.size());
-  for (std::size_t a = 0; a < P.size(); ++a) {
-    for (std::size_t b = 0; b < P.size(); ++b) S(a, b) = R(P[a], P[b]);
-  }
   std::vector<int> all(P.size());
   for (std::size_t a = 0; a < P.size(); ++a) all[a] = static_cast<int>(a);
-  return EvaluateCriterion(S, Criterion::kD, all).value;
+  return EvaluateCriterion(ident::SubMatrix(R, P), Criterion::kD, all).value;
 }
 
 }  // namespace

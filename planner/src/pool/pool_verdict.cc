@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "design/travel_margin.h"
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/parallel.h"
 
@@ -12,9 +13,6 @@ namespace uuvplan::planner {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The designs keep 5-10 mm inside the free travel (sine_design.cc, steady_design.cc): a need
-// within this of the free travel is a space limit.
-constexpr double kTravelSafety = 0.01;
 
 constexpr model::EnumNames<PoolLimit, 10> kLimitNames{{{
     {PoolLimit::kNone, "none"}, {PoolLimit::kLength, "length"}, {PoolLimit::kWidth, "width"},
@@ -64,12 +62,12 @@ PoolLimit LimitOfCheck(model::Dof dof, const TrialCheck& check) {
 model::Pool Offering(const model::Pool& pool, model::Dof dof, double free) {
   model::Pool p = pool;
   p.name = pool.name + "-enlarged";
-  const double wall = pool.WallToWallFor(free + kTravelSafety);
+  const double wall = pool.WallToWallFor(free + kLargestTravelMargin);
   switch (dof) {
     case model::Dof::kSurge: p.length = std::max(p.length, wall); break;
     case model::Dof::kSway: p.width = std::max(p.width, wall); break;
     case model::Dof::kHeave: p.depth = std::max(p.depth, wall); break;
-    default: p.max_turns = std::max(p.max_turns, (free + kTravelSafety) / (2 * M_PI));
+    default: p.max_turns = std::max(p.max_turns, (free + kLargestTravelMargin) / (2 * M_PI));
   }
   return p;
 }

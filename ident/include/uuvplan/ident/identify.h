@@ -33,6 +33,7 @@
 #include "uuvplan/ident/estimators/output_error.h"
 #include "uuvplan/ident/estimators/rls.h"
 #include "uuvplan/ident/estimators/steady_state.h"
+#include "uuvplan/ident/stats/model_selection_options.h"
 #include "uuvplan/ident/summary.h"
 #include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/ident/validation.h"
@@ -84,10 +85,11 @@ struct IdentifyOptions {
   RlsOptions rls;                    ///< Method::kRls (λ: `--forgetting`)
   Method method = Method::kChain;
   bool refine = true;                ///< run the output-error stage (Method::kChain only)
-  bool prune_insignificant = true;   ///< seed 000 §IV-D model selection (both stages)
-  /// Seed 000's rule as the seed applies it: drop an insignificant parameter even where it is
-  /// correlated with another (whose σ then assume it exactly 0; significance.h).
-  bool seed_selection = false;
+  /// The model selection of every stage (least squares, RLS, closed-loop IV, output error):
+  /// it replaces the stages' own `selection`. `identify --no-prune` turns it off,
+  /// `--seed-selection` drops whatever the correlation (kSeedDropCorrelation), whose σ then
+  /// assume the dropped parameters exactly 0 (significance.h).
+  ModelSelectionOptions selection;
   ClosedLoop closed_loop = ClosedLoop::kAuto;
   /// Threads for preparing the trials and fitting the DOFs (0: one per core); each job fills
   /// its own slot, so the result does not depend on it.

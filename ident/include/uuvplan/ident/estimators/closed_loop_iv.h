@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "uuvplan/ident/estimators/one_step_ls.h"
-#include "uuvplan/ident/stats/significance.h"
+#include "uuvplan/ident/stats/model_selection_options.h"
 #include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/model/dof_model.h"
 
@@ -46,11 +46,7 @@ struct ClosedLoopIvOptions {
   /// Two-step weights: each trial's rows by 1/(its mean squared first-pass residual), not by
   /// its sensor's noise (closed_loop_iv.cc WeightTrialsByResiduals; docs/identification.md).
   bool weight_by_residuals = true;
-  /// Seed 000 §IV-D model selection among `prunable` (identify's prune switch applies).
-  bool prune_insignificant = true;
-  /// An insignificant parameter correlated with another above this is kept (significance.h).
-  double drop_correlation = kDropCorrelation;
-  std::vector<std::string> prunable = {"k", "kq", "bias", "bias_step"};
+  ModelSelectionOptions selection;
   bool IsValid(std::string* error) const;
 };
 

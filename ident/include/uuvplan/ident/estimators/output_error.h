@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "uuvplan/ident/estimate.h"
-#include "uuvplan/ident/stats/significance.h"
+#include "uuvplan/ident/stats/model_selection_options.h"
 #include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/model/dof_model.h"
 
@@ -54,10 +54,7 @@ struct OutputErrorOptions {
   /// ((1 + ρ)/(1 − ρ) = 1.22 in variance, 95% intervals cover ~92%); lower would switch on the
   /// scatter of a white residual's lag-1 (±2/√n, 0.06 at 1000 residuals).
   double whiteness_threshold = 0.1;
-  bool prune_insignificant = true;
-  /// An insignificant parameter correlated with another above this is kept (significance.h).
-  double drop_correlation = kDropCorrelation;
-  std::vector<std::string> prunable = {"k", "kq", "bias", "bias_step"};
+  ModelSelectionOptions selection;
   double max_condition = 1e12;
   /// Multi-resolution start for long records: with more than 2× this many measurements, the
   /// fit first runs on bins of about duration/coarse_measurements s (RK4 step up to 5× step_s,

@@ -27,9 +27,9 @@
 
 #include "uuvplan/ident/estimate.h"
 #include "uuvplan/ident/estimators/least_squares.h"
-#include "uuvplan/ident/stats/significance.h"
+#include "uuvplan/ident/stats/model_selection_options.h"
+#include "uuvplan/ident/prepare/steady_detection.h"
 #include "uuvplan/ident/prepare/trial_data.h"
-#include "uuvplan/ident/prepare/velocity_estimation.h"
 #include "uuvplan/model/dof_model.h"
 
 namespace uuvplan::ident {
@@ -73,10 +73,7 @@ struct SteadyStateOptions {
   /// noise (ρ = 0.9: VSOR sd/σ 1.4–2.6 with kConservative, whose χ² test rarely fires on the
   /// few degrees of freedom of a steady-state fit).
   CovarianceKind covariance = CovarianceKind::kKnownNoiseAtLeast;
-  bool prune_insignificant = true;
-  /// An insignificant parameter correlated with another above this is kept (significance.h).
-  double drop_correlation = kDropCorrelation;
-  std::vector<std::string> prunable = {"k", "kq", "bias", "bias_step"};
+  ModelSelectionOptions selection;
   double max_condition = 1e8;
   int reweight_iterations = 3;
   bool IsValid(std::string* error) const;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "uuvplan/ident/prepare/outliers.h"
+#include "uuvplan/ident/prepare/steady_detection.h"
 #include "uuvplan/ident/prepare/velocity_estimation.h"
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/dof_model.h"

@@ -6,31 +6,18 @@
 //    edges (notes/pitfalls.md) and evaluated with the end polynomials;
 //  - numerical differentiation followed by a second-order Butterworth low-pass applied forwards
 //    and backwards (zero phase), as VSOR (seed 002 §6.1);
-//  - the least-squares constant speed of a steady-state segment from positions alone
-//    (seed 000 §III: < 3% σ at 3 Hz sonar), or the mean of measured velocities;
-//  - automatic detection of the steady-state part of each constant-force piece: the speed must
-//    have settled within the noise, tested on the data, never assumed after a fixed time.
+//  - the time scale of a logged input, and a sensor's noise from its samples.
+// The steady-state segments and their speeds (ref 000 §III) are steady_detection.h's.
 #pragma once
 
 #include <cstddef>
 #include <functional>
-#include <memory>
 #include <string>
 #include <vector>
 
-#include "uuvplan/ident/prepare/shared_times.h"
+#include "uuvplan/ident/prepare/signal.h"
 
 namespace uuvplan::ident {
-
-struct ColumnBasis;  // covariance.h
-
-/// Samples of one signal: times (s) and values, no NaN.
-struct Signal {
-  SharedTimes t;  ///< shared with the signals made from this one (a velocity estimate's)
-  std::vector<double> y;
-  std::size_t size() const { return t.size(); }
-  bool empty() const { return t.empty(); }
-};
 
 struct SavitzkyGolayOptions {
   int order = 4;    ///< polynomial order (seed 000: 4)
@@ -134,92 +121,6 @@ std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rat
 /// Butterworth low-pass; runs are split at gaps; irregular steps use the actual times.
 SmoothedSignal ButterworthVelocity(const Signal& position, double cutoff_hz,
                                    double gap_factor = 3.0);
-
-/// The least-squares constant speed of a segment: chi(t) = c + v·t (seed 000 §III), or, from
-/// velocity samples, their mean. sigma follows eqs. 11–12 (noise from the residuals) unless a
-/// known noise σ is given; when the residuals are positively autocorrelated beyond chance
-/// (lag-1 ρ > 2/√n), σ is inflated by √((1+ρ)/(1−ρ)).
-struct SpeedFit {
-  bool ok = false;
-  double speed = 0.0;
-  double sigma = 0.0;         ///< 1σ of the speed
-  double offset = 0.0;        ///< c at the segment's mean time (position fits)
-  double residual_sd = 0.0;   ///< standard deviation of the residuals
-  double lag1 = 0.0;          ///< lag-1 autocorrelation of the residuals
-  int n = 0;
-  double t0 = 0.0, t1 = 0.0;
-  int fitted = 0;                ///< coefficients fitted to the n samples
-  std::vector<double> weights;   ///< speed = Σ weights_i·y_i over the n samples (linearised)
-  /// An orthonormal basis of the fit's n × fitted columns (OrthonormalBasis; linearised):
-  /// what the pooled noise AR(1) needs of them (PooledNoiseAr1), shared.
-  std::shared_ptr<const ColumnBasis> basis;
-};
-SpeedFit ConstantSpeedFit(const Signal& position, double t0, double t1,
-                          double known_sigma = -1.0);
-SpeedFit MeanSpeedFit(const Signal& velocity, double t0, double t1, double known_sigma = -1.0);
-
-/// The steady speed of a segment that may still hold the tail of a transient: near a steady
-/// speed v∞ the model (3) is linear, ξ(t) = v∞ + A·e^{−(t−t0)/τ} (τ = m/k_L, seed 000 eq. 13),
-/// so chi(t) = c + v∞·(t − t̄) + B·e^{−(t−t0)/τ} (positions) or ξ(t) = v∞ + A·e^{−(t−t0)/τ}
-/// (velocities) is fitted, τ by a profile search, and σ(v∞) from the Gauss–Newton covariance
-/// of all four (three) parameters. A transient too small to detect by a constant-speed test
-/// still biases a constant-speed fit by several σ when the segment is a few τ long; this fit
-/// removes that bias. `tau`, `amplitude` describe the transient; chi2 = Σ r²/σ².
-struct SettlingFit : SpeedFit {
-  double tau = 0.0;
-  double amplitude = 0.0;
-  double amplitude_sigma = 0.0;
-  double chi2 = 0.0;
-  int dof = 0;
-};
-/// `fixed_tau` > 0 holds τ at that value (e.g. m/k_L from an identified model): the fit is
-/// then linear in the other parameters and far more precise.
-SettlingFit SettlingSpeedFit(const Signal& s, bool is_position, double t0, double t1,
-                             double known_sigma, double fixed_tau = -1.0);
-
-/// The AR(1) coefficient of a sensor's noise from the residuals of its steady-segment fits,
-/// pooled and freed of the fits' bias (covariance.h, Ar1FromFittedResiduals).
-double PooledNoiseAr1(const std::vector<const SpeedFit*>& fits);
-
-/// σ of a fit's speed under AR(1) noise of marginal sd `noise_sigma` (≤ 0: the residuals'
-/// sd) and coefficient ρ: σ² = noise_sigma²·wᵀΩw, Ω_ij = ρ^|i−j| (covariance.h,
-/// Ar1QuadraticForm), exact for any segment length where √((1+ρ)/(1−ρ)) is the long-segment limit.
-double Ar1SpeedSigma(const SpeedFit& fit, double rho, double noise_sigma);
-
-/// A time interval during which the commanded force and mapping are constant.
-struct ForcePiece {
-  double t0 = 0.0, t1 = 0.0;
-  double force = 0.0;
-  int mapping = -1;
-};
-
-struct SteadyDetectionOptions {
-  double min_duration_s = 5.0;  ///< shortest steady segment kept
-  int min_samples = 10;         ///< fewest samples in a steady segment
-  /// Settling test: the speed change across the segment (quadratic fit) and the difference of
-  /// the two halves' speeds must both lie within z·σ.
-  double z = 2.0;
-  /// Candidate starts are tried every `stride` samples (0: automatic, about 200 candidates).
-  int stride = 0;
-  /// Fit the tail of the transient (SettlingSpeedFit) instead of a constant speed: the start
-  /// is the first candidate whose settling fit is consistent with the noise (χ² within 2σ of
-  /// its degrees of freedom). False: seed 000's constant-speed fit after the settling tests.
-  bool transient_model = true;
-  bool IsValid(std::string* error) const;
-};
-
-struct SteadySegment {
-  int piece = -1;  ///< index into the pieces given
-  SpeedFit fit;
-  bool user_marked = false;
-};
-
-/// The settled tail of each constant-force piece, from positions (`is_position`) or measured
-/// velocities. `known_sigma` is the sensor's noise (negative: estimated from residuals).
-std::vector<SteadySegment> DetectSteadySegments(const Signal& s, bool is_position,
-                                                const std::vector<ForcePiece>& pieces,
-                                                const SteadyDetectionOptions& options,
-                                                double known_sigma = -1.0);
 
 /// Median of the steps t[i] − t[i−1] over [begin, end) (from at most ~20,000 evenly spread
 /// steps of a long record).

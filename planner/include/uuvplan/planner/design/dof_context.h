@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "uuvplan/model/dof_model.h"
+#include "uuvplan/model/excitation.h"
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/vehicle.h"
@@ -163,6 +164,12 @@ class DofContext {
 
   /// Fisher information of a trial (absolute units) at every design point.
   std::vector<Eigen::MatrixXd> Information(const model::TrialDesign& design) const;
+  /// As Information, as the optimisers see it: the trial `input` of `duration` s in its model
+  /// `tm` with the design sensors; *travel gets the span [min, max] of its position from the
+  /// start over the design points (at least [0, 0]).
+  std::vector<Eigen::MatrixXd> DesignInformation(const TrialModel& tm,
+                                                 const model::Excitation& input, double duration,
+                                                 std::array<double, 2>* travel) const;
   /// Criterion values at every design point of (trial information + extra), relative units.
   std::vector<double> CriterionValues(const std::vector<Eigen::MatrixXd>& M, Criterion c,
                                       const std::vector<int>& interest,
@@ -185,5 +192,10 @@ class DofContext {
   mutable std::mutex trial_models_mutex_;
   double step_s_ = 0.1, tc_min_ = 1.0, tc_max_ = 1.0;
 };
+
+/// Per design point, a trial's `information` plus the `prior` (a schedule's other trials, in
+/// the same layout) where the prior has that point at the same size.
+std::vector<Eigen::MatrixXd> WithPrior(std::vector<Eigen::MatrixXd> information,
+                                       const std::vector<Eigen::MatrixXd>& prior);
 
 }  // namespace uuvplan::planner

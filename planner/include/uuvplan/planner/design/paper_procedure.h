@@ -64,11 +64,11 @@ struct PaperProcedureOptions {
   PlannerOptions planner;
   std::uint64_t seed = 1;
   double command_rate_hz = 20.0;
-  /// Seed 000's identification as its authors ran it: its model selection too (seed_selection:
-  /// insignificant parameters dropped whatever their correlation).
+  /// Seed 000's identification as its authors ran it: its model selection too (insignificant
+  /// parameters dropped whatever their correlation).
   ident::IdentifyOptions identify = [] {
     ident::IdentifyOptions o;
-    o.seed_selection = true;
+    o.selection.drop_correlation = ident::kSeedDropCorrelation;
     return o;
   }();
   /// For the report: percentile errors are judged against this target (design_loop.h).

@@ -91,8 +91,11 @@ struct SineDesignResult {
 SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& options,
                             const std::vector<Eigen::MatrixXd>& prior, const std::string& id);
 
-/// The seed rule's frequency range [ω_lo, ω_hi] of the design variable v for a force level.
-std::array<double, 2> SineFrequencyRange(const DofContext& ctx, double force_abs);
+/// The frequency range [ω_lo, ω_hi] of the design variable v for a force level: ref 000
+/// eq. 14's ω_opt over the box, from a quarter of the least to 4 times the largest; ω_lo
+/// raised so that `min_periods` periods fit in `duration` s (ω_hi then at least 2·ω_lo).
+std::array<double, 2> SineFrequencyRange(const DofContext& ctx, double force_abs,
+                                         double min_periods, double duration);
 
 /// The longest duration (<= t_max) for which a trial keeps its travel over the box inside
 /// ctx.available(); t_max when the pool does not limit it (rotations).

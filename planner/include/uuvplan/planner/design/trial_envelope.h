@@ -9,6 +9,7 @@
 
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/trial_design.h"
+#include "uuvplan/planner/design/centred_travel.h"
 #include "uuvplan/planner/design/dof_context.h"
 #include "uuvplan/planner/schedule.h"
 

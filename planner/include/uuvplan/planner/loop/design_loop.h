@@ -46,15 +46,15 @@ namespace uuvplan::planner {
 inline constexpr double kInsignificantPercent = 51.02;
 
 /// The loop's identification: every parameter of the structure kept
-/// (IdentifyOptions::prune_insignificant = false). Seed 000 §IV-D's model selection refits
-/// without the parameters it finds insignificant, and the σ of that refit are conditional on
-/// the dropped ones being exactly 0: on random vehicles a dropped bias or linear drag that is
-/// small but not zero moved m, the drag and η by 4–281 of their σ while the loop converged
-/// (docs/validation.md, "The loop on every vehicle"). The loop judges precision by σ, so it
-/// needs the σ of the full model (as the coverage figures of identification do).
+/// (IdentifyOptions::selection.prune_insignificant = false). Seed 000 §IV-D's model selection
+/// refits without the parameters it finds insignificant, and the σ of that refit are
+/// conditional on the dropped ones being exactly 0: on random vehicles a dropped bias or linear
+/// drag that is small but not zero moved m, the drag and η by 4–281 of their σ while the loop
+/// converged (docs/validation.md, "The loop on every vehicle"). The loop judges precision by
+/// σ, so it needs the σ of the full model (as the coverage figures of identification do).
 inline ident::IdentifyOptions LoopIdentifyOptions() {
   ident::IdentifyOptions o;
-  o.prune_insignificant = false;
+  o.selection.prune_insignificant = false;
   return o;
 }
 

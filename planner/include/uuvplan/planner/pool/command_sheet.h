@@ -10,8 +10,9 @@
 // pool's free travel F along its DOF (walls less the margin at both ends; for a rotation the
 // tether's twist 2π·max_turns, centred on the untwisted tether). With slack = F − (hi − lo) the
 // margin lines lie at a_neg = lo − slack/2 and a_pos = hi + slack/2 from the start (a_pos − a_neg
-// = F): the run is aborted when the vehicle reaches either. The start is then margin − a_neg from
-// the wall behind (from the surface for heave), or a twist of −F/2 − a_neg for a rotation.
+// = F; trial_envelope.h, CentreTravel): the run is aborted when the vehicle reaches either.
+// The start is then margin − a_neg from the wall behind (from the surface for heave), or a
+// twist of −F/2 − a_neg for a rotation.
 #pragma once
 
 #include <Eigen/Dense>
