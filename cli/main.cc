@@ -59,8 +59,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("uuvplan ") + UUVPLAN_VERSION,
                        "the version (CMake project()) and exit");
   auto& commands = Registry();
-  std::sort(commands.begin(), commands.end(),
-            [](const Command& a, const Command& b) { return a.order < b.order; });
+  std::sort(commands.begin(), commands.end(), HelpOrder);
   app.fallthrough();  // a flag of uuvplan itself may follow the command's name
   std::function<int()> run;
   for (auto& c : commands) c.add(app, &run);

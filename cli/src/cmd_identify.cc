@@ -10,16 +10,16 @@
 #include <vector>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/cli/filter_window_flag.h"
 #include "uuvplan/cli/coupled_identify.h"
-#include "uuvplan/cli/identify_table.h"
+#include "uuvplan/cli/filter_window_flag.h"
 #include "uuvplan/cli/method_flags.h"
-#include "uuvplan/io/identify_json.h"
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/model/input_error.h"
+#include "uuvplan/io/identify_json.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/text/identify_table.h"
 
 namespace uuvplan::cli {
 namespace {
@@ -33,7 +33,7 @@ constexpr model::EnumNames<ident::ClosedLoop, 3> kClosedLoopNames{{{
     {ident::ClosedLoop::kNo, "no"},
 }}};
 
-struct IdentifyCommandOptions {
+struct IdentifyFlags {
   std::string campaign;
   std::string json;
   std::vector<std::string> dofs;
@@ -83,7 +83,7 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
 
 // `--model coupled` fits seed 003's model by its own estimator (joint_ls.h) on every DOF
 // at once: the options of the per-DOF chain do not apply, and one given would be ignored.
-void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
+void RefuseChainOptionsWithCoupled(const IdentifyFlags& co) {
   const ident::IdentifyOptions chain;
   std::vector<std::string> given;
   if (!co.dofs.empty()) given.push_back("--dof");
@@ -108,7 +108,7 @@ void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
   }
 }
 
-int RunIdentify(const IdentifyCommandOptions& co) {
+int RunIdentify(const IdentifyFlags& co) {
   if (co.model_kind == "coupled") RefuseChainOptionsWithCoupled(co);
   CheckFilterWindow(co.identify.data);
   model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
@@ -127,13 +127,13 @@ int RunIdentify(const IdentifyCommandOptions& co) {
   std::ostream& out = ReportStream(co.json);
   out << "Identification of " << co.campaign << " (vehicle '" << campaign.vehicle.name << "', "
       << campaign.trials.size() << " trials; method " << ident::MethodName(result.method) << ")\n\n";
-  PrintIdentifyTable(result, out);
+  text::PrintIdentifyTable(result, out);
   if (!co.json.empty()) WriteJson(co.json, io::IdentifyJson(result));
   PrintBriefOnTerminal(result.Summary().Brief());
   return result.status == ident::IdentifyStatus::kFailed ? kExitActionNeeded : kExitOk;
 }
 
-void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
+void BindIdentify(CLI::App* sub, IdentifyFlags* o) {
   sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")->required();
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_option("--dof", o->dofs,
@@ -168,7 +168,7 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
   AddThreadsOption(sub, {&o->identify.threads}, "preparing the trials and fitting the DOFs");
 }
 
-const CommandRegistration kRegistration(MakeCommand<IdentifyCommandOptions>(
+const CommandRegistration kRegistration(MakeCommand<IdentifyFlags>(
     "identify", 40,
     "Estimate every DOF's parameters (m, k, kq, bias, bias_step, eta) with standard "
     "deviations from a campaign, and score the identified model by free-run simulation "

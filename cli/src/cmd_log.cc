@@ -23,7 +23,7 @@
 namespace uuvplan::cli {
 namespace {
 
-struct LogCliOptions {
+struct LogFlags {
   std::string campaign;
   std::string csv;
   std::string id;
@@ -44,7 +44,7 @@ model::TrialDesign PlannedDesign(const std::string& path, const std::string& id)
   throw model::InputError(path + ": trials", "no trial '" + id + "' (--trial)");
 }
 
-io::LoggedTrial TrialOf(const LogCliOptions& o, const model::TrialDesign* design) {
+io::LoggedTrial TrialOf(const LogFlags& o, const model::TrialDesign* design) {
   io::LoggedTrial t;
   t.id = o.id;
   t.csv = o.csv;
@@ -79,7 +79,7 @@ void PrintGaps(const model::TrialEntry& e) {
             << "integrates across a gap, so the trial counts as shorter pieces\n";
 }
 
-int RunLog(const LogCliOptions& o) {
+int RunLog(const LogFlags& o) {
   std::optional<model::TrialDesign> design;
   if (!o.plan.empty()) design = PlannedDesign(o.plan, o.id);
   const io::LoggedTrial trial = TrialOf(o, design ? &*design : nullptr);
@@ -103,7 +103,7 @@ int RunLog(const LogCliOptions& o) {
   return kExitOk;
 }
 
-void BindLog(CLI::App* sub, LogCliOptions* o) {
+void BindLog(CLI::App* sub, LogFlags* o) {
   sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")
       ->required();
   sub->add_option("TRIAL", o->csv, "the trial's log (CSV, contract §Trial log); only read")
@@ -122,7 +122,7 @@ void BindLog(CLI::App* sub, LogCliOptions* o) {
   sub->add_option("--start", o->start, "start time on the campaign clock (s)");
 }
 
-const CommandRegistration kRegistration(MakeCommand<LogCliOptions>(
+const CommandRegistration kRegistration(MakeCommand<LogFlags>(
     "log", 44,
     "Append a trial logged at the pool to its campaign (checked against the plan with "
     "--plan), so that `next` can run between trials.",

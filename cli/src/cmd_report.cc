@@ -25,13 +25,14 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
 #include "uuvplan/report/report.h"
+#include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::cli {
 namespace {
 
 using model::InputError;
 
-struct ReportCommandOptions {
+struct ReportFlags {
   std::string input;
   std::string out;
   std::string vehicle;
@@ -51,7 +52,7 @@ bool IsJsonFile(const std::string& path) {
          std::filesystem::is_regular_file(path);
 }
 
-void AddVehicleAndPool(const ReportCommandOptions& o, report::ReportInputs* in) {
+void AddVehicleAndPool(const ReportFlags& o, report::ReportInputs* in) {
   if (!o.vehicle.empty()) {
     in->vehicle = io::ReadVehicle(o.vehicle);
     in->vehicle_source = o.vehicle;
@@ -62,7 +63,7 @@ void AddVehicleAndPool(const ReportCommandOptions& o, report::ReportInputs* in) 
   }
 }
 
-void AddSchedule(const ReportCommandOptions& o, report::ReportInputs* in) {
+void AddSchedule(const ReportFlags& o, report::ReportInputs* in) {
   if (o.vehicle.empty() || o.pool.empty()) {
     throw InputError(o.input,
                      "a schedule names neither its vehicle nor its pool: expected "
@@ -81,10 +82,11 @@ void AddSchedule(const ReportCommandOptions& o, report::ReportInputs* in) {
   planner::ScheduleOptions so;
   so.dofs = io::ScheduleDofs(o.input);
   const planner::PoolVerdict v = planner::JudgePool(*in->vehicle, *in->pool, so, &*in->schedule);
-  in->verdict = {v.hosted, planner::VerdictLines(v, *in->pool),
+  in->verdict = {v.hosted, text::VerdictLines(v, *in->pool),
                  "judged here as `check-pool VEHICLE --pool POOL --plan SCHEDULE --dof <its DOFs>` "
                  "would, with the default target and longest trial: the file holds no verdict "
-                 "for pool '" + in->pool->name + "'"};
+                 "for pool '" +
+                     in->pool->name + "'"};
 }
 
 // The free runs of the standard and the extended model of each diagnosed DOF, on the trials
@@ -111,7 +113,7 @@ void AddBeforeAfter(const model::Campaign& campaign, const ident::TrialDataOptio
   }
 }
 
-void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
+void AddCampaign(const ReportFlags& o, report::ReportInputs* in) {
   const model::Campaign campaign = ReadCampaignForIdentification(o.input, o.accept_units);
   in->title = "Campaign report: " + campaign.vehicle.name;
   if (!in->vehicle) in->vehicle = campaign.vehicle, in->vehicle_source = campaign.path;
@@ -135,7 +137,7 @@ void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
   AddBeforeAfter(campaign, identify.data, in);
 }
 
-int RunReport(const ReportCommandOptions& o) {
+int RunReport(const ReportFlags& o) {
   CheckFilterWindow(o.data);
   io::CheckNewDirectory(o.out, "-o");
   report::ReportInputs in;
@@ -169,7 +171,7 @@ int RunReport(const ReportCommandOptions& o) {
   return failed ? kExitActionNeeded : kExitOk;
 }
 
-void BindReport(CLI::App* sub, ReportCommandOptions* o) {
+void BindReport(CLI::App* sub, ReportFlags* o) {
   sub->add_option("INPUT", o->input,
                   "a schedule (schedule --json), a loop's JSON (loop --json), or a campaign "
                   "(campaign.yaml or its directory)")
@@ -185,7 +187,7 @@ void BindReport(CLI::App* sub, ReportCommandOptions* o) {
   AddAcceptUnitsFlag(sub, &o->accept_units);
 }
 
-const CommandRegistration kRegistration(MakeCommand<ReportCommandOptions>(
+const CommandRegistration kRegistration(MakeCommand<ReportFlags>(
     "report", 95,
     "Write a self-contained HTML report (vehicle, pool, schedule or estimates, validation, "
     "diagnosis, loop history; figures embedded) and its figures as PNG and SVG.",

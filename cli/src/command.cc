@@ -21,6 +21,10 @@ std::vector<Command>& Registry() {
   return commands;
 }
 
+bool HelpOrder(const Command& a, const Command& b) {
+  return a.order != b.order ? a.order < b.order : a.name < b.name;
+}
+
 namespace {
 
 // Whether `text` is a whole finite number in (0, most].

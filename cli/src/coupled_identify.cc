@@ -4,12 +4,16 @@
 #include <vector>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/cli/text_table.h"
 #include "uuvplan/ident/estimators/joint_ls.h"
 #include "uuvplan/io/joint_ls_json.h"
 #include "uuvplan/model/coupled_model.h"
+#include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/text_table.h"
 
 namespace uuvplan::cli {
+
+using text::Quantity;
+using text::TextTable;
 
 int RunCoupledIdentify(const model::Campaign& campaign, const std::string& campaign_path,
                        const std::string& json_path) {

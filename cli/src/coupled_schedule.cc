@@ -4,14 +4,18 @@
 #include <iostream>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/cli/text_table.h"
 #include "uuvplan/io/combined_design_json.h"
 #include "uuvplan/planner/design/coupled_design.h"
 #include "uuvplan/model/dof.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/text_table.h"
 
 namespace uuvplan::cli {
 namespace {
+
+using text::Quantity;
+using text::TextTable;
 
 void PrintInputs(const planner::CombinedDesign& d, std::ostream& out) {
   TextTable table({"DOF", "mapping", "offset", "amplitude", "ω", "period"});

@@ -8,10 +8,10 @@
 
 #include "identify_stages.h"
 #include "stats/model_selection.h"
-#include "number_text.h"
 #include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::stages {
 namespace {
@@ -124,9 +124,11 @@ void ChooseAnswer(const DofContext& c, Method method, LeastSquaresAnswer* ls, Do
   const bool m_estimated = e.state[im] == ParameterState::kEstimated;
   if (ls->steady_ok && method == Method::kLeastSquares) {
     r->estimator = FinalEstimator::kSteadyState;
-    r->notes.push_back("ls: m is not estimated by the steady-state least squares (held at its a "
-                       "priori " + Fmt(e.theta[im]) + " " + model::Unit(model::param::kMass, c.model.dof()) +
-                       "; the free runs use it)");
+    r->notes.push_back(
+        "ls: m is not estimated by the steady-state least squares (held at its a "
+        "priori " +
+        model::Significant(e.theta[im], 4) + " " + model::Unit(model::param::kMass, c.model.dof()) +
+        "; the free runs use it)");
   } else if (ls->steady_ok && (m_estimated || method == Method::kIntegral)) {
     if (m_estimated) r->estimator = FinalEstimator::kSteadyStateIntegral;
     else if (r->inertia) r->notes.push_back(r->inertia->message.empty() ? "integral method failed" : r->inertia->message);
@@ -184,8 +186,9 @@ LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofI
     ParameterEstimate e{f.names[j], 0.0, std::nan(""), ParameterState::kDropped, false,
                         candidates[worst].value, candidates[worst].sigma};
     dropped.push_back(e);
-    r->notes.push_back("rls: " + e.name + " = " + Fmt(e.value_before_drop) + " ± " +
-                       Fmt(e.sigma_before_drop) + " has a percentile error of " + Fmt(pe, 3) +
+    r->notes.push_back("rls: " + e.name + " = " + model::Significant(e.value_before_drop, 4) +
+                       " ± " + model::Significant(e.sigma_before_drop, 4) +
+                       " has a percentile error of " + model::Significant(pe, 3) +
                        "% > 51.02%: insignificant at 95%, dropped and the recursion rerun "
                        "(seed 000 §IV-D)");
     given[j] = 0.0;
@@ -237,7 +240,7 @@ LeastSquaresAnswer EstimateStage(const DofContext& c, const IdentifyOptions& o,
     if (r->steady_points.empty() && long_pieces > 0) {
       r->notes.push_back("steady state: no settled segment in " + std::to_string(long_pieces) +
                          " constant-force leg(s) of at least " +
-                         Fmt(c.steady.detection.min_duration_s) +
+                         model::Significant(c.steady.detection.min_duration_s, 4) +
                          " s (the speed did not settle within the noise; make the legs longer)");
     }
   }
@@ -262,7 +265,8 @@ void CheckMethodFits(model::Dof dof, const std::vector<TrialData>& trials, const
   throw model::InputError(
       "--method " + std::string(MethodName(o.method)),
       "the steady-state least squares (seed 000 eqs. 7–12) needs constant-force legs of at "
-      "least " + Fmt(o.steady.detection.min_duration_s) + " s, and the " +
+      "least " +
+          model::Significant(o.steady.detection.min_duration_s, 4) + " s, and the " +
           std::string(model::DofName(dof)) + " fit trials (" + files +
           ") have none; use --method one-step, rls or output-error, or mark windows with --steady");
 }

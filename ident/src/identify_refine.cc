@@ -6,7 +6,6 @@
 
 #include "drag_parameter.h"
 #include "identify_stages.h"
-#include "number_text.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/util/text.h"
 
@@ -100,13 +99,15 @@ void RefitHoldingUnidentifiable(const DofContext& c, RefineStart* s, OutputError
       r->unreliable.push_back(r->parameter_names[j]);
     }
   }
-  r->warnings.push_back("output error: not identifiable from these trials (held at their "
-                        "least-squares/a priori values): " + model::Join(fixed) +
-                        " (condition number " + Fmt(oe->condition_number, 3) +
-                        "; excite them, e.g. with forces of both signs on every mapping); "
-                        "the other estimates (" + model::Join(conditional) +
-                        ") are conditional on the held values and their σ does not include "
-                        "that: NOT reliable");
+  r->warnings.push_back(
+      "output error: not identifiable from these trials (held at their "
+      "least-squares/a priori values): " +
+      model::Join(fixed) + " (condition number " + model::Significant(oe->condition_number, 3) +
+      "; excite them, e.g. with forces of both signs on every mapping); "
+      "the other estimates (" +
+      model::Join(conditional) +
+      ") are conditional on the held values and their σ does not include "
+      "that: NOT reliable");
 }
 
 // The refinement is reported only when Levenberg–Marquardt converged to an admissible
@@ -134,9 +135,12 @@ StageEstimate Adopt(const DofContext& c, const LeastSquaresAnswer& ls, const Ref
   for (const std::string& n : s.reinstated) {
     const int j = c.model.ParameterIndex(n);
     if (e.state[j] == ParameterState::kEstimated) {
-      r->notes.push_back(n + " (dropped as insignificant by the least squares) is significant "
-                         "for the output error: " + Fmt(e.theta[j]) + " ± " +
-                         Fmt(std::sqrt(e.covariance(j, j))) + " (its own covariance)");
+      r->notes.push_back(n +
+                         " (dropped as insignificant by the least squares) is significant "
+                         "for the output error: " +
+                         model::Significant(e.theta[j], 4) + " ± " +
+                         model::Significant(std::sqrt(e.covariance(j, j)), 4) +
+                         " (its own covariance)");
     }
   }
   return e;

@@ -8,8 +8,8 @@
 
 #include "drag_parameter.h"
 #include "identify_stages.h"
-#include "number_text.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::stages {
 namespace {
@@ -56,9 +56,9 @@ void CheckAdmissible(DofIdentification* r) {
     if (e.state != ParameterState::kEstimated || !f) continue;
     const double outside = DistanceOutside(*f, e.value);
     if (!(outside > 0) && std::isfinite(e.value)) continue;
-    const std::string what = e.name + " = " + Fmt(e.value) + " ± " + Fmt(e.sigma) + " " +
-                             model::Unit(e.name, r->dof) + " is outside its admissible range (" +
-                             f->Expected() + ")";
+    const std::string what = e.name + " = " + model::Significant(e.value, 4) + " ± " +
+                             model::Significant(e.sigma, 4) + " " + model::Unit(e.name, r->dof) +
+                             " is outside its admissible range (" + f->Expected() + ")";
     const std::string why =
         IsDragParameter(e.name)
             ? " (drag only dissipates: the speed range may be too narrow to separate k and kq, "
@@ -183,14 +183,16 @@ void FailBelowPriorInertia(const DofContext& c, DofIdentification* r) {
     const double miss = std::abs(std::log(m->value * s.factor / std::sqrt(lo * hi)));
     if (miss > best) continue;
     best = miss;
-    likely = ": × " + Fmt(s.factor, 3) + " gives " + Fmt(m->value * s.factor, 3) + " " + unit +
+    likely = ": × " + model::Significant(s.factor, 3) + " gives " +
+             model::Significant(m->value * s.factor, 3) + " " + unit +
              ", near the range, so the log's " + std::string(model::DofName(r->dof)) +
              " positions and velocities are most likely in " + s.unit + " — convert them to " +
              (rotation ? "rad" : "m");
   }
-  Fail("m = " + Fmt(m->value) + " ± " + Fmt(m->sigma) + " " + unit + " is " +
-           Fmt(lo / m->value, 3) + "× below the vehicle's a priori range [" + Fmt(lo) + ", " +
-           Fmt(hi) + "] " + unit +
+  Fail("m = " + model::Significant(m->value, 4) + " ± " + model::Significant(m->sigma, 4) + " " +
+           unit + " is " + model::Significant(lo / m->value, 3) +
+           "× below the vehicle's a priori range [" + model::Significant(lo, 4) + ", " +
+           model::Significant(hi, 4) + "] " + unit +
            (likely.empty() ? ": check the log's units and the vehicle file's mass and inertia"
                            : likely),
        r);
@@ -210,8 +212,9 @@ void CheckFreeRun(DofIdentification* r) {
   auto check = [&](const char* trials, double model_mae, double zero_mae) {
     if (!(model_mae < zero_mae) && std::isfinite(zero_mae)) {
       Fail(std::string("no better than a zero-velocity model: free-run velocity MAE on the ") +
-               trials + " trials " + Fmt(model_mae) + " " + unit + " against " + Fmt(zero_mae) +
-               " " + unit + " for ν ≡ 0", r);
+               trials + " trials " + model::Significant(model_mae, 4) + " " + unit + " against " +
+               model::Significant(zero_mae, 4) + " " + unit + " for ν ≡ 0",
+           r);
     }
   };
   check("fit", r->fit.velocity_mae_fit, r->fit.zero_velocity_mae_fit);
@@ -224,7 +227,7 @@ void ReportEstimates(const DofContext& c, const LeastSquaresAnswer& ls,
                      const StageEstimate& e, DofIdentification* r) {
   for (const auto& n : ls.not_excited) {
     r->warnings.push_back(n + " is not excited by the fit trials (kept at " +
-                          Fmt(e.theta[c.model.ParameterIndex(n)]) + ")");
+                          model::Significant(e.theta[c.model.ParameterIndex(n)], 4) + ")");
   }
   r->theta = e.theta;
   r->covariance = e.covariance;
@@ -247,11 +250,12 @@ void ValidateStage(const DofContext& c, const ValidationOptions& o, DofIdentific
     r->fit = Summarize(std::move(fits));
     CheckFreeRun(r);
     if (r->output_error && r->output_error->ok() && r->output_error->residual_lag1 > 0.8) {
-      r->warnings.push_back("the identified model does not explain the measurements to their "
-                            "noise level (output-error residuals strongly correlated, lag-1 " +
-                            Fmt(r->output_error->residual_lag1, 3) +
-                            "): model error; σ are autocorrelation-robust and describe the fit "
-                            "of this model, not the truth (try `uuvplan diagnose`)");
+      r->warnings.push_back(
+          "the identified model does not explain the measurements to their "
+          "noise level (output-error residuals strongly correlated, lag-1 " +
+          model::Significant(r->output_error->residual_lag1, 3) +
+          "): model error; σ are autocorrelation-robust and describe the fit "
+          "of this model, not the truth (try `uuvplan diagnose`)");
     }
   }
   if (r->status != IdentifyStatus::kFailed) {

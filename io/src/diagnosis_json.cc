@@ -4,6 +4,7 @@
 
 #include "uuvplan/io/identify_json.h"
 #include "uuvplan/io/json_value.h"
+#include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::io {
 namespace {
@@ -76,14 +77,14 @@ json StaticMapsJson(const ident::Finding& f) {
   return out;
 }
 
-json FindingJson(const ident::Finding& f) {
+json FindingJson(const ident::DiagnosisResult& r, const ident::Finding& f) {
   json params = json::object();
   for (const auto& p : f.params) params[p.name] = {{"value", p.value}, {"sigma", p.sigma}};
   json maps = json::array();
   for (const auto& m : f.thrust_maps) maps.push_back(ThrustMapJson(m));
   return {{"effect", f.effect},
           {"dof", std::string(model::DofName(f.dof))},
-          {"what", f.what},
+          {"what", text::FindingSentence(r, f)},
           {"extension", {{"params", params}}},
           {"gain",
            {{"metric", f.gain.metric},
@@ -133,7 +134,7 @@ json BreakdownJson(const ident::ErrorBreakdown& b) {
 
 json DiagnosisJson(const ident::DiagnosisResult& r) {
   json findings = json::array(), tests = json::array(), breakdown = json::object();
-  for (const auto& f : r.findings) findings.push_back(FindingJson(f));
+  for (const auto& f : r.findings) findings.push_back(FindingJson(r, f));
   for (const auto& t : r.tests) tests.push_back(CandidateTestJson(t));
   json extended = json::object(), standard = json::object();
   for (const auto& e : r.extended) extended[std::string(model::DofName(e.dof))] = ModelJson(e);

@@ -81,7 +81,7 @@ json FigureJson(const json& per_trial, double fit, double validate, double overa
 
 json FitTrialJson(const ident::TrialFit& t) {
   return {{"file", t.name},
-          {"use", TrialUseName(t.use)},
+          {"use", std::string(model::TrialUseName(t.use))},
           {"velocity_mae", JsonNumber(t.velocity_mae)},
           {"zero_velocity_mae", JsonNumber(t.zero_velocity_mae)},
           {"velocity_reference", t.velocity_reference},
@@ -242,7 +242,7 @@ json TrialReportJson(const ident::TrialReport& t) {
   return {{"index", t.index},
           {"file", t.file},
           {"dof", std::string(model::DofName(t.dof))},
-          {"use", TrialUseName(t.use)},
+          {"use", std::string(model::TrialUseName(t.use))},
           {"outliers", outliers},
           {"gaps", gaps},
           {"notes", t.notes}};

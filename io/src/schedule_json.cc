@@ -13,8 +13,10 @@
 #include <set>
 #include <sstream>
 
+#include "uuvplan/io/information_json.h"
 #include "uuvplan/io/json_value.h"
 #include "uuvplan/io/plausibility.h"
+#include "uuvplan/io/pool_verdict_json.h"
 
 namespace uuvplan::io {
 
@@ -116,7 +118,7 @@ model::TrialKind KindOf(const JsonValue& v) {
 // A trial's or leg's duration: positive, and plausible for a pool trial (parameter.h).
 double PlausibleDuration(const JsonValue& v) {
   const double duration = PositiveNumber(v, "s");
-  CheckPlausible(v, duration, model::plausible::kDuration);
+  CheckPlausible(v, duration, plausible::kDuration);
   return duration;
 }
 
@@ -230,7 +232,7 @@ std::array<double, 2> TravelOf(const JsonValue& v) {
 
 std::string PredictedAssumptionOf(const JsonValue& predicted) {
   const auto a = predicted.Optional("assumption");
-  if (!a) return planner::kUnrecordedSigmaAssumption;
+  if (!a) return kUnrecordedSigmaAssumption;
   return String(*a, "the sentence saying what the predicted σ rest on");
 }
 
@@ -329,6 +331,35 @@ json ScheduleToJson(const Schedule& schedule) {
     predicted[std::string(model::DofName(dof))] = PredictedToJson(p);
   }
   return {{"trials", trials}, {"predicted", predicted}, {"pool_time", schedule.pool_time}};
+}
+
+json ScheduleResultJson(const planner::ScheduleResult& r,
+                        const planner::ScheduleInformation& information,
+                        const planner::PoolVerdict& verdict, const model::Pool& pool) {
+  json j = ScheduleToJson(r.schedule);
+  j["status"] = std::string(planner::PlanStatusName(r.status));
+  json notes = json::array();
+  json missing = json::object();
+  for (const auto& d : r.dofs) {
+    for (const auto& n : d.notes) notes.push_back(n);
+    if (!d.complete) missing[std::string(model::DofName(d.dof))] = {{"message", d.message}};
+  }
+  j["notes"] = notes;
+  if (!missing.empty()) j["not_planned"] = missing;
+  j["verdict"] = PoolVerdictJson(verdict, pool);
+  AddInformationJson(information, &j);
+  return j;
+}
+
+json UnplannedScheduleJson(const std::vector<PlannedTrial>& plan, const std::string& note) {
+  json trials = json::array();
+  for (const auto& t : plan) {
+    json j = TrialToJson(t);
+    j.erase("travel");
+    j.erase("thrust_min");
+    trials.push_back(j);
+  }
+  return {{"trials", trials}, {"note", note}};
 }
 
 PlannedTrial TrialFromJson(const JsonValue& j) {

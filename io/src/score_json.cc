@@ -14,7 +14,7 @@ json ScoreJson(const ident::ScoreResult& r, const std::string& vehicle,
     const ident::TrialFit& t = s.fit;
     trials.push_back({{"file", t.name},
                       {"dof", std::string(model::DofName(s.dof))},
-                      {"use", TrialUseName(t.use)},
+                      {"use", std::string(model::TrialUseName(t.use))},
                       {"velocity_mae", JsonNumber(t.velocity_mae)},
                       {"velocity_samples", t.velocity_samples},
                       {"position_rms", JsonNumber(t.position_rms)},

@@ -1,12 +1,11 @@
 // The built-in effects (contract §diagnose, plus thrust_map). Each entry: the physics, its
-// parameters (units, null value, admissible range), where it acts, how diagnosis proposes it
-// (starting values scaled by the data) and how a finding of it reads. Order matters: it is the
-// order in which the effects' parameters enter theta (dof_model.h).
+// parameters (units, null value, admissible range), where it acts and how diagnosis proposes
+// it (starting values scaled by the data); how a finding of it reads is the text layer's
+// (text/finding_text.h). Order matters: it is the order in which the effects' parameters enter
+// theta (dof_model.h).
 #include <cmath>
 #include <limits>
-#include <sstream>
 
-#include "uuvplan/model/coupled_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/force_term.h"
 #include "uuvplan/model/util/text.h"
@@ -17,37 +16,6 @@ namespace uuvplan::model::internal {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-std::string Percent(double r) {
-  std::ostringstream s;
-  s.precision(0);
-  s << std::fixed << std::abs(100.0 * r) << "%";
-  return s.str();
-}
-
-// A group's relative speed error exactly as the breakdown table prints it (signed, one decimal:
-// "+6.3%", "-0.1%"), so that a finding's sentence quotes the table's number, not a rounding of
-// it that can read "0%" or turn -0.6% into "1%".
-std::string SignedPercent(double r) {
-  std::ostringstream s;
-  s.precision(1);
-  s << std::fixed << std::showpos << 100.0 * r << "%";
-  return s.str();
-}
-
-// "0.082 ± 0.003 s" from the cross-correlation's lag and its σ (σ unknown: the value alone).
-std::string LagText(const ErrorBreakdown& b) {
-  std::string s = Significant(b.lag_s, 2);
-  if (std::isfinite(b.lag_sigma_s)) s += " ± " + Significant(b.lag_sigma_s, 2);
-  return s + " s";
-}
-
-std::string Fixed2(double x) {
-  std::ostringstream s;
-  s.precision(2);
-  s << std::fixed << x;
-  return s.str();
-}
 
 // "" when `q` is "<mapping>.<pos|neg>" with a mapping of the vehicle on `dof`.
 std::string EtaQualifier(std::string_view q, Dof dof, const Vehicle& vehicle) {
@@ -81,16 +49,6 @@ std::vector<Proposal> SingleIfAbsent(const ProposalContext& c, const char* name,
   return {p};
 }
 
-// "<cause> (the standard simulation's speed error <where>: +38.0%)", or the cause alone without
-// a group. The group's error is quoted as evidence beside the cause, not as its symptom: the
-// standard model's m, drag and bias are fitted to the data and absorb part of an effect, so
-// the error there can be small or even of the other sign (docs/diagnosis.md §2).
-std::string GroupSentence(const ErrorGroup* g, const std::string& where, const std::string& cause) {
-  if (!g) return cause;
-  return cause + " (the standard simulation's speed error " + where + ": " +
-         SignedPercent(g->relative) + ")";
-}
-
 // η < 1 (seed 000 eq. 3, Table I): the thrust of a mapping and direction that is not in open
 // water, one η per such direction present in the data.
 EffectEntry InstallationLoss() {
@@ -116,31 +74,6 @@ EffectEntry InstallationLoss() {
     }
     return p.start.empty() ? std::vector<Proposal>{} : std::vector<Proposal>{p};
   };
-  e.describe = [](const FindingContext& f) {
-    // The η that departs most from 1 names the mapping and direction. The fitted η says how
-    // much thrust is missing; the standard model's speed error there can be much smaller, when
-    // its m, drag and bias absorb part of the loss (seed 000 Fig. 6: the heave weight), so it
-    // is quoted second.
-    const ParameterValue* worst = nullptr;
-    for (const auto& p : f.params) {
-      if (!worst || std::abs(p.value - 1) > std::abs(worst->value - 1)) worst = &p;
-    }
-    if (!worst) return std::string("installation loss");
-    const std::string name(Qualifier(worst->name));  // "<mapping>.<pos|neg>"
-    const std::string mapping = name.substr(0, name.rfind('.'));
-    const std::string sign = name.substr(name.rfind('.') + 1) == "neg" ? "negative" : "positive";
-    std::string s = "thrust " + sign + " in mapping " + mapping + " delivers " +
-                    Significant(std::abs(100 * (1 - worst->value)), 3) + " ± " +
-                    Significant(100 * worst->sigma, 2) + "%" +
-                    (worst->value <= 1 ? " less" : " more") +
-                    " than the open-water model";
-    if (const ErrorGroup* g =
-            Labeled(f.breakdown.by_thrust, "thrust " + sign + " in " + mapping)) {
-      s += " (with eta = 1 the standard simulation's speed error there: " +
-           SignedPercent(g->relative) + ", its m, drag and bias absorbing part of the loss)";
-    }
-    return s;
-  };
   return e;
 }
 
@@ -157,7 +90,8 @@ EffectEntry AsymmetricDrag() {
   e.parameters[0].defaults_to = param::kLinearDrag;  // symmetric unless given
   e.parameters[1].defaults_to = param::kQuadraticDrag;
   e.propose = [](const ProposalContext& c) {
-    if (c.Has(param::kLinearDragNeg) || c.Has(param::kQuadraticDragNeg)) return std::vector<Proposal>{};
+    if (c.Has(param::kLinearDragNeg) || c.Has(param::kQuadraticDragNeg))
+      return std::vector<Proposal>{};
     Proposal p;
     // k_neg / kq_neg are compared with k / kq, not with 0: their null is the symmetric value.
     const std::pair<const char*, const char*> sides[] = {
@@ -168,10 +102,6 @@ EffectEntry AsymmetricDrag() {
       p.start.push_back({negative, p.null[negative]});
     }
     return p.start.empty() ? std::vector<Proposal>{} : std::vector<Proposal>{p};
-  };
-  e.describe = [](const FindingContext& f) {
-    const ErrorGroup* g = Largest(f.breakdown.by_motion);
-    return GroupSentence(g, g ? "in " + g->label : "", "drag differs between the two directions");
   };
   return e;
 }
@@ -189,14 +119,6 @@ EffectEntry ThrusterLag() {
   e.propose = [](const ProposalContext& c) {
     return SingleIfAbsent(c, param::kLag, 0.1 * c.time_constant_s);
   };
-  e.describe = [](const FindingContext& f) {
-    std::string s = "the response to every change of thrust comes late and smoothed";
-    // The cross-correlation resolves whole samples only; a lag below that is not quoted.
-    if (std::abs(f.breakdown.lag_s) > 0) {
-      s += " (measured velocity lags the simulation by " + LagText(f.breakdown) + ")";
-    }
-    return s;
-  };
   return e;
 }
 
@@ -211,10 +133,6 @@ EffectEntry Deadzone() {
   e.propose = [](const ProposalContext& c) {
     return SingleIfAbsent(c, param::kDeadzone, 0.02 * c.max_force);
   };
-  e.describe = [](const FindingContext& f) {
-    return GroupSentence(Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands),
-                         "for small commands", "no thrust below a threshold");
-  };
   return e;
 }
 
@@ -227,13 +145,7 @@ EffectEntry AdvanceSpeedLoss() {
   e.parameters = {{param::kAdvanceLoss, "advance-speed loss c_a", "N^½·s/m", "(N·m)^½·s/rad",
                    0.0, 0.0, kInf}};
   e.make_term = [](Dof, const std::vector<std::string>&) { return MakeAdvanceLossTerm(); };
-  e.propose = [](const ProposalContext& c) {
-    return SingleIfAbsent(c, param::kAdvanceLoss, 0.0);
-  };
-  e.describe = [](const FindingContext& f) {
-    const ErrorGroup* g = Largest(f.breakdown.by_speed);
-    return GroupSentence(g, g ? "at " + g->label : "", "thrust falls with the speed of advance");
-  };
+  e.propose = [](const ProposalContext& c) { return SingleIfAbsent(c, param::kAdvanceLoss, 0.0); };
   return e;
 }
 
@@ -272,17 +184,6 @@ EffectEntry Coupling() {
     }
     return out;
   };
-  e.describe = [](const FindingContext& f) {
-    std::string s = "errors follow the motion of other degrees of freedom (" +
-                    f.detail.substr(0, 1) + "·" + f.detail.substr(1, 1) + ")";
-    const CoriolisTerm coriolis = CoriolisTermOf(f.breakdown.dof);
-    if (!coriolis.pair.empty() && f.detail == coriolis.pair) {
-      s += ": the Coriolis term of seed 003's coupled surge–sway–yaw model (its coefficient is " +
-           coriolis.coefficient +
-           "); identify the three DOFs together with `uuvplan identify --model coupled`";
-    }
-    return s;
-  };
   return e;
 }
 
@@ -296,10 +197,6 @@ EffectEntry SensorDelay() {
   e.parameters[0].fit_lower = 0.0;  // the measurement cannot precede the motion
   e.propose = [](const ProposalContext& c) {
     return SingleIfAbsent(c, param::kSensorDelay, 0.05 * c.time_constant_s);
-  };
-  e.describe = [](const FindingContext& f) {
-    return "every measurement lags the simulated motion by a fixed time (" +
-           LagText(f.breakdown) + " at the best cross-correlation)";
   };
   return e;
 }
@@ -317,22 +214,6 @@ EffectEntry ParameterDrift() {
   e.propose = [](const ProposalContext& c) {
     // Drift needs trials spread over the campaign clock.
     return c.campaign_clock ? SingleIfAbsent(c, param::kDrift, 0.0) : std::vector<Proposal>{};
-  };
-  e.describe = [](const FindingContext& f) {
-    const double per_s = f.params.empty() ? 0.0 : f.params[0].value;
-    const double sigma_s = f.params.empty() ? 0.0 : f.params[0].sigma;
-    const double span_h = f.breakdown.campaign_span_h;
-    std::string s = "the thrust " + std::string(per_s >= 0 ? "grows" : "falls") + " by " +
-                    Percent(per_s * 3600.0 * span_h) + " from the first to the last trial (" +
-                    Fixed2(span_h) + " h apart, " +
-                    Significant(std::abs(100.0 * per_s * 3600.0), 3) + " ± " +
-                    Significant(100.0 * sigma_s * 3600.0, 2) + "% per hour)";
-    if (span_h > 24.0) {
-      s += ". The trials are days apart: ballast, battery or thrust map may differ between "
-           "sessions; if each session used its own command amplitude, a thrust map wrong in "
-           "shape looks the same (compare one amplitude across sessions)";
-    }
-    return s;
   };
   return e;
 }
@@ -361,23 +242,6 @@ EffectEntry ThrustMap() {
     p.start.push_back({param::kThrustExponent, 0.0});
     p.settings[param::kThrustReference] = c.max_force;  // η, m, k, kq keep their meaning there
     return std::vector<Proposal>{p};
-  };
-  e.describe = [](const FindingContext& f) {
-    // At a fifth of the largest command the force is 0.2^p of nominal.
-    const double p = f.params.empty() ? 0.0 : f.params[0].value;
-    const double sigma = f.params.empty() ? 0.0 : f.params[0].sigma;
-    const double fifth = std::pow(0.2, p) - 1.0;
-    std::string s = "the delivered force grows as |nominal force|^(" + Significant(1.0 + p, 3) +
-                    " ± " + Significant(sigma, 2) + ")" +
-                    ", not in proportion to the thrust table's force: at a fifth of the largest "
-                    "nominal force it is " +
-                    Percent(fifth) + (fifth >= 0 ? " above" : " below") +
-                    " what the thrust map says";
-    if (const ErrorGroup* g = Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands)) {
-      s += " (the standard simulation's speed error for small commands: " +
-           SignedPercent(g->relative) + ")";
-    }
-    return s + ": the thrust map is wrong in shape";
   };
   return e;
 }

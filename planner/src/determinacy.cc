@@ -5,12 +5,11 @@
 #include <cmath>
 #include <limits>
 
-#include "format.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/criteria.h"
-#include "uuvplan/planner/loop/design_loop.h"
 #include "uuvplan/planner/design/thrust_limits.h"
+#include "uuvplan/planner/loop/design_loop.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -117,8 +116,9 @@ Determinacy InterestDeterminacy(const DofContext& ctx, const std::vector<Eigen::
     }
     if (p <= kInsignificantPercent) continue;
     d.determined = false;
-    d.undetermined.push_back(
-        n + (std::isfinite(p) ? " (σ " + internal::Fmt(p) + "% of its value)" : " (no trial)"));
+    d.undetermined.push_back(n + (std::isfinite(p)
+                                      ? " (σ " + model::Significant(p, 3) + "% of its value)"
+                                      : " (no trial)"));
   }
   return d;
 }
@@ -151,16 +151,19 @@ Reach ReachOf(const Eigen::MatrixXd& info, const Eigen::MatrixXd& trial, const E
 }
 
 std::string ReachText(const TargetReach& r, const PrecisionGoal& goal) {
-  using internal::Fmt;
-  std::string s = r.parameter + " reaches " +
-                  (std::isfinite(r.per_trial_percent) ? Fmt(r.per_trial_percent) + "%"
-                                                      : std::string("no precision")) +
-                  " per trial here ('" + r.trial + "', the loop's D-optimal trial " +
-                  std::to_string(r.step) + " after the schedule; " + Fmt(r.now_percent) +
-                  "% before it); the target " + Fmt(goal.target_percent) + "% needs ≤ " + Fmt(r.needed_percent) + "% per trial";
-  if (std::isfinite(r.trials)) s += " (about " + Fmt(std::ceil(r.trials), 3) + " such trials";
+  std::string s =
+      r.parameter + " reaches " +
+      (std::isfinite(r.per_trial_percent) ? model::Significant(r.per_trial_percent, 3) + "%"
+                                          : std::string("no precision")) +
+      " per trial here ('" + r.trial + "', the loop's D-optimal trial " + std::to_string(r.step) +
+      " after the schedule; " + model::Significant(r.now_percent, 3) + "% before it); the target " +
+      model::Significant(goal.target_percent, 3) + "% needs ≤ " +
+      model::Significant(r.needed_percent, 3) + "% per trial";
+  if (std::isfinite(r.trials))
+    s += " (about " + model::Significant(std::ceil(r.trials), 3) + " such trials";
   else s += " (no number of such trials";
-  return s + ": the loop stops as stuck beyond " + Fmt(goal.max_trials_to_target) + ")";
+  return s + ": the loop stops as stuck beyond " +
+         model::Significant(goal.max_trials_to_target, 3) + ")";
 }
 
 // DesignNextTrial's choice on `info`: the better by robust D of the D-optimal sine on every

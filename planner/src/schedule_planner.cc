@@ -6,16 +6,15 @@
 #include <limits>
 #include <sstream>
 
-#include "format.h"
 #include "options_check.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/planner/determinacy.h"
 #include "uuvplan/planner/design/switched_design.h"
 #include "uuvplan/planner/design/trial_envelope.h"
+#include "uuvplan/planner/determinacy.h"
 
 namespace uuvplan::planner {
 
@@ -236,7 +235,8 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
   for (const auto& f : failures) plan.notes.push_back(name + ": " + f);
   if (plan.determinacy.determined && !plan.reach.reached) {
     plan.message = name + " is determined in pool '" + pool.name + "' but not to the target " +
-                   internal::Fmt(o.precision.target_percent) + "%: " + plan.reach.text + "." + m.str();
+                   model::Significant(o.precision.target_percent, 3) + "%: " + plan.reach.text +
+                   "." + m.str();
   } else if (!plan.complete) {
     plan.message = name + " only partly determined in pool '" + pool.name + "': " +
                    model::Join(plan.determinacy.undetermined) + " stay undetermined after " +

@@ -175,9 +175,9 @@ TEST(ScheduleJson, PredictedSigmaCarryWhatTheyRestOnAndOldFilesSaySo) {
                 .assumption,
             planner::kPredictedSigmaAssumption);
   j["predicted"]["surge"].erase("assumption");
-  EXPECT_EQ(ReadScheduleJson(TempFile("old.json", j.dump())).predicted.at(model::Dof::kSurge)
-                .assumption,
-            planner::kUnrecordedSigmaAssumption);
+  EXPECT_EQ(
+      ReadScheduleJson(TempFile("old.json", j.dump())).predicted.at(model::Dof::kSurge).assumption,
+      io::kUnrecordedSigmaAssumption);
   j["predicted"]["surge"]["assumption"] = 3;
   EXPECT_THAT(ErrorOf([&] { ReadScheduleJson(TempFile("bad.json", j.dump())); }),
               HasSubstr("predicted.surge.assumption"));
@@ -203,7 +203,7 @@ TEST(ScheduleJson, LoopHistoryCarriesWhatItsPredictedSigmaRestOn) {
   EXPECT_TRUE(std::isnan(now.series.at(model::Dof::kSurge).at("m").front().predicted));
   loop["iterations"][0]["predicted"]["surge"].erase("assumption");
   EXPECT_EQ(io::ReadLoopJson(TempFile("old-loop.json", loop.dump())).predicted_assumption,
-            planner::kUnrecordedSigmaAssumption);
+            io::kUnrecordedSigmaAssumption);
   // A schedule's predicted object with null σ and value reads back as NaN, not as an error.
   Schedule s;
   s.trials = {SteadyTrial()};

@@ -1,4 +1,4 @@
-// Units in the tables people read (issue #18 item 5, cli/include/uuvplan/cli/text_table.h): every table
+// Units in the tables people read (text/include/uuvplan/text/text_table.h): every table
 // printed by schedule, check-pool, identify, next, loop and diagnose starts with a DOF column,
 // is aligned (each column starts where its title does, after a gap), and every quantity column
 // has its unit — in its title, "σ (m/s)", or in every cell, "0.84 kg", "4:05 min". Label

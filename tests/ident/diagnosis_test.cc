@@ -3,6 +3,8 @@
 // by `build/tests/diagnose_validation` (docs/validation.md). Here a seeded subset of the same
 // generator: the draws are fixed, so every one of them must be diagnosed exactly; a change
 // that breaks the tests, the candidate fits or the generator's hiding fails it.
+#include "uuvplan/ident/diagnosis/diagnosis.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -12,8 +14,8 @@
 #include "support/hidden_effect.h"
 #include "support/real_data.h"
 #include "uuvplan/ident/stats/chi_square.h"
-#include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -53,7 +55,7 @@ TEST_P(HiddenEffectTest, NamesTheHiddenEffectAndOnlyIt) {
       // The extension must pay off where the effect was hidden (validate trials).
       EXPECT_GT(r.findings[0].gain.relative, 0.0) << "seed " << seed;
       EXPECT_EQ(r.findings[0].gain.on, "validate");
-      EXPECT_FALSE(r.findings[0].what.empty());
+      EXPECT_FALSE(text::FindingSentence(r, r.findings[0]).empty());
     }
   }
 }

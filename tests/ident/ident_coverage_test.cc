@@ -21,6 +21,7 @@
 
 #include "ident_cases.h"
 #include "uuvplan/ident/stats/monte_carlo.h"
+#include "uuvplan/text/monte_carlo_table.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -53,7 +54,7 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   model::Truth truth = testing::CaseTruth(c.truth);
   truth.defects.noise_ar1 = c.ar1;
   const MonteCarloReport rep = RunMonteCarlo(truth, c.designs, o);
-  std::cout << c.name << ", " << rep.repetitions << " repetitions\n" << rep.Table();
+  std::cout << c.name << ", " << rep.repetitions << " repetitions\n" << text::MonteCarloTable(rep);
   EXPECT_EQ(rep.failures, 0);
   // Per cell: the true coverage of a 95% interval must be at least 90% (the band). With
   // n repetitions the observed coverage of a 90% interval falls below 0.90 − 2.33·√(0.09/n)
@@ -129,7 +130,7 @@ TEST(IntegralInertiaCoverageTest, UrisYawPrbsMassIsUnbiasedAndItsSigmaMatchesThe
   const model::Truth truth = testing::CaseTruth("uris");
   const std::vector<model::TrialDesign> all = testing::UrisDesigns();
   const MonteCarloReport rep = RunMonteCarlo(truth, {all[2], all[3]}, o);
-  std::cout << rep.Table();
+  std::cout << text::MonteCarloTable(rep);
   const CoverageCell* cell = rep.Find("integral_inertia", Dof::kYaw, "m");
   ASSERT_NE(cell, nullptr);
   ASSERT_GE(cell->n, 0.9 * rep.repetitions);  // the steady state fails in a few draws
@@ -158,7 +159,7 @@ TEST(CramerRaoTest, OutputErrorSpreadIsWithin25PercentOfTheBoundOnTheRomeoSurgeS
   model::TrialDesign sine = testing::RomeoSurgeDesigns()[3];
   sine.duration = 260;  // two trials' worth: ten periods
   const MonteCarloReport rep = RunMonteCarlo(truth, {sine}, o);
-  std::cout << rep.Table();
+  std::cout << text::MonteCarloTable(rep);
   EXPECT_EQ(rep.failures, 0);
   for (const char* name : {"m", "k", "kq"}) {
     const CoverageCell* cell = rep.Find("output_error", Dof::kSurge, name);

@@ -11,6 +11,7 @@
 #include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/coupled_model.h"
+#include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -173,7 +174,8 @@ TEST(CoupledDiagnosis, NamesTheCoriolisCouplingOfEachDofOnA1DofFittedCampaign) {
     // goes (measured 82–95%).
     EXPECT_EQ(found->gain.on, "validate");
     EXPECT_GT(found->gain.relative, 0.5) << found->gain.before << " -> " << found->gain.after;
-    EXPECT_NE(found->what.find("--model coupled"), std::string::npos) << found->what;
+    const std::string what = text::FindingSentence(r, *found);
+    EXPECT_NE(what.find("--model coupled"), std::string::npos) << what;
   }
 }
 

@@ -1,6 +1,7 @@
 // docs/architecture.md, "How to add an effect", done in a test: a toy effect (cubic drag,
-// F = −c3·ξ³) registered through the public effect table, with its own force term and nothing
-// else, is simulated by the virtual pool, named by diagnosis and estimated within 3σ.
+// F = −c3·ξ³) registered through the public effect table, with its own force term and its
+// finding's sentence and nothing else, is simulated by the virtual pool, named by diagnosis
+// and estimated within 3σ.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/virtual_pool.h"
+#include "uuvplan/text/finding_text.h"
 
 namespace uuvplan {
 namespace {
@@ -49,10 +51,12 @@ model::EffectEntry CubicDrag() {
     p.start.push_back({"c3", 0.0});
     return std::vector<model::Proposal>{p};
   };
-  e.describe = [](const model::FindingContext&) {
-    return std::string("the simulation is too fast at high speed: drag grows faster than ξ²");
-  };
   return e;
+}
+
+// Step 2b: the finding's sentence.
+std::string CubicDragSentence(const text::FindingContext&) {
+  return "the simulation is too fast at high speed: drag grows faster than ξ²";
 }
 
 TEST(ToyEffectTest, VocabularyKnowsTheRegisteredEffect) {
@@ -97,6 +101,7 @@ double SteadySpeed(double k, double kq, double force) {
 
 TEST(ToyEffectTest, DiagnosisNamesAndEstimatesTheToyEffect) {
   const model::ScopedEffect toy(CubicDrag());
+  const text::ScopedFindingSentence sentence("cubic_drag", CubicDragSentence);
   for (std::uint64_t seed : {1u, 2u}) {
     testing::HiddenEffectCase c = testing::DrawHiddenEffectCase(std::nullopt, seed);
     auto& params = c.truth.dofs.at(c.dof).params;
@@ -115,7 +120,7 @@ TEST(ToyEffectTest, DiagnosisNamesAndEstimatesTheToyEffect) {
     EXPECT_TRUE(verdict.within_3_sigma) << "seed " << seed;
     ASSERT_FALSE(r.findings.empty());
     EXPECT_GT(r.findings[0].gain.relative, 0.0);
-    EXPECT_NE(r.findings[0].what.find("drag grows faster"), std::string::npos);
+    EXPECT_NE(text::FindingSentence(r, r.findings[0]).find("drag grows faster"), std::string::npos);
   }
 }
 

@@ -11,6 +11,7 @@
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
+#include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::testing {
 namespace {
@@ -89,7 +90,7 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
   c.hosted = verdict.hosted;
   c.hostability = verdict.hostability;
-  c.verdict = verdict.sentence;
+  c.verdict = text::VerdictSentence(verdict, pool);
   for (const auto& d : verdict.dofs) {
     c.reach += std::string(c.reach.empty() ? "" : "; ") + std::string(model::DofName(d.dof)) +
                " " + d.reach.parameter + " n " + Significant(d.reach.trials, 3) + " ('" +
@@ -106,14 +107,17 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   // interest and their trust.
   const bool verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
   for (const auto& d : verdict.dofs) {
-    if (verbose) std::cout << "  verdict " << model::DofName(d.dof) << ": " << d.reason << "\n";
+    if (verbose) {
+      std::cout << "  verdict " << model::DofName(d.dof) << ": "
+                << text::DofReason(verdict, d, pool) << "\n";
+    }
   }
   planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const auto& it) {
     if (verbose) std::cout << IterationText(truth, it) << std::endl;
   });
   planner::ReadLoopEnd(verdict, &r);  // as `uuvplan loop` reads it
   c.status = r.status;
-  c.message = r.message;
+  c.message = text::LoopEndMessage(r, verdict, pool);
   c.trials = static_cast<int>(r.iterations.size());
   c.pool_time_s = r.pool_time;
   switch (c.hostability) {

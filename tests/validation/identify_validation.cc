@@ -35,6 +35,7 @@
 #include "ident/ident_cases.h"
 #include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/text/monte_carlo_table.h"
 
 using namespace uuvplan;
 using model::Dof;
@@ -100,7 +101,7 @@ int main(int argc, char** argv) {
     }
     const ident::MonteCarloReport r = ident::RunMonteCarlo(truth, c.designs, o);
     std::printf("== %s: %d repetitions, %d failures, %.0f s\n%s", c.name.c_str(), r.repetitions,
-                r.failures, Seconds(t0), r.Table().c_str());
+                r.failures, Seconds(t0), text::MonteCarloTable(r).c_str());
     if (r.failures > 0) exit_code = 1;
     for (const ident::CoverageCell& cell : r.cells) {
       if (cell.estimator == "final") continue;  // the output error (or LS fallback), counted once
@@ -140,7 +141,7 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     const ident::MonteCarloReport r = ident::RunMonteCarlo(truth, {sine}, o);
     std::printf("== crb (ROMEO surge sine, 260 s): %d repetitions, %d failures, %.0f s\n%s",
-                r.repetitions, r.failures, Seconds(t0), r.Table().c_str());
+                r.repetitions, r.failures, Seconds(t0), text::MonteCarloTable(r).c_str());
     if (r.failures > 0) exit_code = 1;
     for (const char* name : {"m", "k", "kq", "bias"}) {
       const ident::CoverageCell* cell = r.Find("output_error", Dof::kSurge, name);

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 
-#include "../number_text.h"
 #include "diagnosis_internal.h"
 #include "uuvplan/ident/stats/chi_square.h"
 #include "uuvplan/model/util/median.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::diagnosis {
 
@@ -131,8 +131,8 @@ std::string NonPhysical(const StructureFit& base, const StructureFit& ext) {
     if (!family || family->Admissible(e.value)) continue;
     const auto b = base.values.find(e.name);
     if (b != base.values.end() && !family->Admissible(b->second)) continue;
-    return e.name + " = " + Fmt(e.value) + " " + model::Unit(e.name, ext.structure.dof) +
-           " (expected " + family->Expected() + ")";
+    return e.name + " = " + model::Significant(e.value, 4) + " " +
+           model::Unit(e.name, ext.structure.dof) + " (expected " + family->Expected() + ")";
   }
   return "";
 }
@@ -166,7 +166,7 @@ CandidateTest Test(const Candidate& c, const StructureFit& base, const Structure
     t.max_z = std::numeric_limits<double>::quiet_NaN();
     t.detail += (t.detail.empty() ? "" : "; ") +
                 std::string("the extension's fit ends worse than the model it extends (D = ") +
-                Fmt(d, 3) + " < 0: not at its optimum), no z";
+                model::Significant(d, 3) + " < 0: not at its optimum), no z";
     t.non_physical = NonPhysical(base, ext);
     return t;
   }
@@ -185,7 +185,7 @@ CandidateTest Test(const Candidate& c, const StructureFit& base, const Structure
   t.non_physical = NonPhysical(base, ext);
   for (const std::string& name : ext.held_at_bound) {
     t.detail += (t.detail.empty() ? "" : "; ") + name + " held at its bound " +
-                Fmt(ext.held.at(name));
+                model::Significant(ext.held.at(name), 4);
   }
   return t;
 }

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../number_text.h"
 #include "diagnosis_internal.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::diagnosis {
 
@@ -79,7 +79,7 @@ std::string ShapeName(double n, double range) {
   // Named when that power law stays within 20% of the fitted one over the commands used.
   if (std::pow(range, std::abs(n - 1.0)) <= 1.2) return "linear in the command";
   if (std::pow(range, std::abs(n - 2.0)) <= 1.2) return "square in the command";
-  return "a power of the command, |command|^" + Fmt(n, 3);
+  return "a power of the command, |command|^" + model::Significant(n, 3);
 }
 
 }  // namespace

@@ -5,12 +5,12 @@
 #include <limits>
 #include <sstream>
 
-#include "number_text.h"
 #include "options_check.h"
+#include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/ident/stats/sub_matrix.h"
-#include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 
@@ -514,7 +514,7 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
   if (!(r.condition_number < o.max_condition)) {
     r.status = FitStatus::kIllConditioned;
     r.message = "integral method: ill-conditioned regression (condition number " +
-                Fmt(r.condition_number, 3) +
+                model::Significant(r.condition_number, 3) +
                 ") — the velocity does not vary enough apart from a constant and a trend (excite "
                 "the DOF dynamically, e.g. a sine at the d-optimal frequency, seed 000 eq. 14)";
     return r;

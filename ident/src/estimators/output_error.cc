@@ -10,7 +10,6 @@
 #include "estimators/output_error_covariance.h"
 #include "estimators/output_error_levenberg_marquardt.h"
 #include "estimators/output_error_problem.h"
-#include "number_text.h"
 #include "options_check.h"
 #include "stats/model_selection.h"
 #include "uuvplan/ident/estimators/block_least_squares.h"
@@ -113,8 +112,9 @@ int DropWorst(const std::vector<int>& free, const OutputErrorOptions& o, Eigen::
   const int worst = free[c];
   (*before_value)[worst] = (*theta)[worst];
   (*before_sigma)[worst] = std::sqrt(res->covariance(worst, worst));
-  res->notes.push_back(res->names[worst] + " = " + Fmt((*theta)[worst]) + " ± " +
-                       Fmt((*before_sigma)[worst]) + " (" + Fmt(worst_pe, 3) +
+  res->notes.push_back(res->names[worst] + " = " + model::Significant((*theta)[worst], 4) + " ± " +
+                       model::Significant((*before_sigma)[worst], 4) + " (" +
+                       model::Significant(worst_pe, 3) +
                        "% > 51.02%): insignificant at 95%, dropped and the rest refitted");
   (*theta)[worst] = 0.0;
   res->state[worst] = ParameterState::kDropped;
@@ -195,10 +195,11 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
                         "gross errors");
   }
   if (res.hac_covariance) {
-    res.notes.push_back("output-error residuals are not white (mean lag-1 autocorrelation " +
-                        Fmt(res.residual_lag1, 3) +
-                        "): model error or coloured noise; σ from the scores prewhitened by an "
-                        "AR(1) of the residuals per trial and sensor, then batch means (a sandwich)");
+    res.notes.push_back(
+        "output-error residuals are not white (mean lag-1 autocorrelation " +
+        model::Significant(res.residual_lag1, 3) +
+        "): model error or coloured noise; σ from the scores prewhitened by an "
+        "AR(1) of the residuals per trial and sensor, then batch means (a sandwich)");
   }
   res.message = Message(res);
   return res;

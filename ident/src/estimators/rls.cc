@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "number_text.h"
 #include "options_check.h"
 #include "uuvplan/ident/estimators/regression.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -240,7 +240,7 @@ RlsDofResult RecursiveOneStep(const model::DofModel& model,
   r.state[0] = ParameterState::kEstimated;
   for (int j : r.free) r.state[j] = ParameterState::kEstimated;
   r.status = FitStatus::kOk;
-  r.message = "RLS (seed 004 eq. 15, λ = " + Fmt(o.lambda, 6) + ") on " +
+  r.message = "RLS (seed 004 eq. 15, λ = " + model::Significant(o.lambda, 6) + ") on " +
               std::to_string(steps) + " one-step rows" +
               (r.instrumental ? ", instruments from the simulated velocity (recursive IV)"
                               : ", plain least squares (no instruments)");

@@ -5,10 +5,8 @@
 #include <limits>
 #include <sstream>
 
-#include "number_text.h"
-#include "stats/model_selection.h"
-#include "number_text.h"
 #include "options_check.h"
+#include "stats/model_selection.h"
 #include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/ident/stats/significance.h"
 #include "uuvplan/ident/stats/sub_matrix.h"
@@ -315,7 +313,8 @@ void ReportSingular(const model::DofModel& model, const Eigen::MatrixXd& Hall,
   r->message = "steady-state regression is singular: the " + std::to_string(n) +
                " steady segments hold only " + std::to_string(d) +
                " distinct operating point(s) for " + std::to_string(p) + " unknowns (" +
-               model::Join(col_names) + "), condition number " + Fmt(r->condition_number, 3) +
+               model::Join(col_names) + "), condition number " +
+               model::Significant(r->condition_number, 3) +
                " of the measured rows; not identifiable: " + model::Join(null_names) +
                " (add steady legs at other force levels, in both directions and with each "
                "mapping)";
@@ -383,8 +382,9 @@ LinearFit FitWithSelection(const model::DofModel& model, const std::vector<Stead
     before_value[j] = fit.theta[worst];
     before_sigma[j] = std::sqrt(fit.covariance(worst, worst));
     theta[j] = 0.0;
-    r->notes.push_back(r->names[j] + " = " + Fmt(before_value[j]) + " ± " + Fmt(before_sigma[j]) +
-                       " has a percentile error of " + Fmt(worst_pe, 3) +
+    r->notes.push_back(r->names[j] + " = " + model::Significant(before_value[j], 4) + " ± " +
+                       model::Significant(before_sigma[j], 4) + " has a percentile error of " +
+                       model::Significant(worst_pe, 3) +
                        "% > 51.02%: insignificant at 95%, dropped and the rest refitted "
                        "(seed 000 §IV-D)");
     cols->erase(cols->begin() + worst);
@@ -432,13 +432,14 @@ SteadyStateResult SteadyStateFit(const model::DofModel& model,
   if (fit.status == FitStatus::kOk) {
     r.status = SteadyStatus::kOk;
     r.message = std::to_string(r.num_points) + " steady segments, condition number " +
-                Fmt(fit.condition_number, 3);
+                model::Significant(fit.condition_number, 3);
   } else {
     r.status = SteadyStatus::kIllConditioned;
-    r.message = "steady-state regression is ill-conditioned (condition number " +
-                Fmt(fit.condition_number, 3) + "); not identifiable from these segments: " +
-                JoinNames(fit.not_identifiable, col_names) +
-                " (add steady legs at other speeds / in the other direction / with other mappings)";
+    r.message =
+        "steady-state regression is ill-conditioned (condition number " +
+        model::Significant(fit.condition_number, 3) +
+        "); not identifiable from these segments: " + JoinNames(fit.not_identifiable, col_names) +
+        " (add steady legs at other speeds / in the other direction / with other mappings)";
   }
   return r;
 }

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "number_text.h"
 #include "options_check.h"
 #include "uuvplan/model/util/median.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -156,8 +156,8 @@ std::string OutlierFinding(const std::string& trial, const std::string& signal,
                            std::size_t excluded, std::size_t total, const OutlierOptions& o) {
   if (total == 0 || !(static_cast<double>(excluded) > o.finding_fraction * total)) return "";
   return trial + ": " + std::to_string(excluded) + " of " + std::to_string(total) + " " + signal +
-         " samples (" + Fmt(100.0 * excluded / total, 3) + "%) excluded as outliers, more than " +
-         Fmt(100.0 * o.finding_fraction, 3) +
+         " samples (" + model::Significant(100.0 * excluded / total, 3) +
+         "%) excluded as outliers, more than " + model::Significant(100.0 * o.finding_fraction, 3) +
          "%: a sensor fault, a unit or timing mistake, or motion the outlier test takes for "
          "noise — look at the log before trusting this fit (the excluded times are in --json)";
 }

@@ -6,12 +6,12 @@
 #include <sstream>
 #include <utility>
 
-#include "number_text.h"
 #include "options_check.h"
 #include "uuvplan/ident/prepare/speed_fit.h"
 #include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/median.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -301,17 +301,21 @@ Signal Clean(Signal s, double declared, const char* what, const TrialDataOptions
     }
     *out.outliers = DetectOutliers(s, test, declared, &steps);
     if (!out.outliers->empty()) {
-      d->notes.push_back(std::to_string(out.outliers->size()) + " " + what + " outlier(s) excluded (first at t = " +
-                         Fmt(out.outliers->front().t + d->time_offset) + " s, residual " +
-                         Fmt(out.outliers->front().residual) + ")");
+      d->notes.push_back(std::to_string(out.outliers->size()) + " " + what +
+                         " outlier(s) excluded (first at t = " +
+                         model::Significant(out.outliers->front().t + d->time_offset, 4) +
+                         " s, residual " + model::Significant(out.outliers->front().residual, 4) +
+                         ")");
       s = RemoveSamples(s, *out.outliers);
     }
   }
   *out.estimated = NoiseSigmaFromDifferences(s);
   *out.sigma = declared > 0 ? declared : *out.estimated;
   if (declared > 0 && *out.estimated > 0 && (*out.estimated > 3 * declared)) {
-    d->notes.push_back(std::string(what) + " noise estimated from the data (" + Fmt(*out.estimated) +
-                       ") is more than 3× the declared sensor sigma (" + Fmt(declared) + ")");
+    d->notes.push_back(std::string(what) + " noise estimated from the data (" +
+                       model::Significant(*out.estimated, 4) +
+                       ") is more than 3× the declared sensor sigma (" +
+                       model::Significant(declared, 4) + ")");
   }
   return s;
 }
@@ -373,7 +377,7 @@ void CleanMeasurements(Measurements m, const model::Vehicle& vehicle, const Tria
     for (const Gap& g : d->gaps) longest = std::max(longest, g.t1 - g.t0);
     d->notes.push_back(std::to_string(d->gaps.size()) + " gap(s) in the " +
                        (d->has_velocity() ? "velocity" : "position") + " samples (longest " +
-                       Fmt(longest) + " s); filters do not cross them");
+                       model::Significant(longest, 4) + " s); filters do not cross them");
   }
 }
 
@@ -476,9 +480,10 @@ double FirstForceTime(const model::TrialLog& log, Dof dof, TrialData* d) {
   std::size_t i = 0;
   while (i < f.size() && std::isnan(f[i])) ++i;
   if (i == 0 || i >= f.size()) return log.t.front();
-  d->notes.push_back("the first " + Fmt(log.t[i] - log.t.front()) +
-                     " s of the log precede its first force row (t = " + Fmt(log.t[i]) +
-                     " s): their measurements are not used (the force there was not logged)");
+  d->notes.push_back(
+      "the first " + model::Significant(log.t[i] - log.t.front(), 4) +
+      " s of the log precede its first force row (t = " + model::Significant(log.t[i], 4) +
+      " s): their measurements are not used (the force there was not logged)");
   return log.t[i];
 }
 

@@ -2,14 +2,13 @@
 
 #include <cmath>
 #include <map>
-#include <sstream>
 #include <tuple>
 
+#include "diagnosis/parallel.h"
+#include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/util/seed.h"
-#include "diagnosis/parallel.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -58,25 +57,6 @@ const CoverageCell* MonteCarloReport::Find(const std::string& estimator, model::
     if (c.estimator == estimator && c.dof == dof && c.name == name) return &c;
   }
   return nullptr;
-}
-
-std::string MonteCarloReport::Table() const {
-  std::ostringstream os;
-  os.precision(4);
-  os << "estimator              dof    param                 truth        mean         sd"
-        "   mean σ  sd/σ   cover  ≤3σ   crb σ    sd/crb   n\n";
-  for (const auto& c : cells) {
-    char line[512];
-    std::snprintf(line, sizeof line,
-                  "%-22s %-6s %-20s %11.5g %11.5g %10.4g %8.4g %5.2f  %5.1f%% %4.0f%% %8.4g %6.2f %4d\n",
-                  c.estimator.c_str(), std::string(model::DofName(c.dof)).c_str(), c.name.c_str(),
-                  c.truth, c.mean, c.sd, c.mean_sigma, c.mean_sigma > 0 ? c.sd / c.mean_sigma : 0.0,
-                  100.0 * c.coverage(), c.n > 0 ? 100.0 * c.within3 / c.n : 0.0, c.crb_sigma,
-                  c.crb_sigma > 0 ? c.sd / c.crb_sigma : 0.0, c.n);
-    os << line;
-  }
-  os << "repetitions " << repetitions << ", failures " << failures << "\n";
-  return os.str();
 }
 
 namespace {

@@ -8,13 +8,12 @@
 #include <stdexcept>
 
 #include "design/sensor_information.h"
-#include "format.h"
 #include "options_check.h"
-
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/mapping.h"
 #include "uuvplan/model/model_structure.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/fisher_information.h"
 #include "uuvplan/planner/design/seed_rules.h"
 #include "uuvplan/planner/design/thrust_limits.h"
@@ -323,7 +322,7 @@ namespace {
 // Why a travel from `lo` to `hi` over the box does not fit: the pool side and its free length,
 // or the tether's turns, with what would host it.
 std::string TravelReason(const model::Pool& pool, model::Dof dof, double lo, double hi) {
-  const auto F = [](double v) { return internal::Fmt(v, 4); };
+  const auto F = [](double v) { return model::Significant(v, 4); };
   std::ostringstream s;
   const double span = hi - lo, free = pool.FreeTravel(dof);
   if (model::IsRotational(dof)) {
@@ -353,6 +352,10 @@ TrialCheck DofContext::Check(const model::TrialDesign& design) const {
   c.thrust_min = tc.thrust_min;
   c.thrust_max_ratio = tc.thrust_max_ratio;
   c.reasons = tc.reasons;
+  c.reversal = tc.reversal;
+  c.thrust_out_of_range = tc.below_min || tc.overload;
+  c.exceeds_duration =
+      !(design.duration > 0) || design.duration > options_.max_trial_duration_s + 1e-9;
   if (!(design.duration > 0)) c.reasons.push_back("duration must be > 0 s");
   if (design.duration > options_.max_trial_duration_s + 1e-9) {
     std::ostringstream s;
@@ -373,6 +376,7 @@ TrialCheck DofContext::Check(const model::TrialDesign& design) const {
   c.travel = {lo, hi};
   c.span = hi - lo;
   if (std::isfinite(c.available) && c.span > c.available + 1e-9) {
+    c.exceeds_travel = true;
     c.reasons.push_back(TravelReason(pool_, dof_, lo, hi));
   }
   c.feasible = c.reasons.empty();

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <sstream>
 
-#include "format.h"
 #include "loop/next_trial_policy.h"
 #include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/model_structure.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/parameter_box.h"
 #include "uuvplan/planner/design/seed_rules.h"
 #include "uuvplan/planner/design/sine_design.h"
@@ -20,8 +20,6 @@ namespace uuvplan::planner {
 namespace {
 
 using model::Dof;
-
-using internal::Fmt;
 
 struct Leg {
   std::string mapping;
@@ -64,11 +62,11 @@ std::vector<Leg> MappingLegs(const model::Vehicle& v, const model::Pool& pool, D
       double f = k * speed + kq * speed * speed;
       if (f < r.min_abs || f > r.max_abs) {
         const double c = std::clamp(f, r.min_abs, r.max_abs);
-        notes->push_back(std::string(model::DofName(dof)) + ": " + name + " level " +
-                         std::to_string(j) + " needs " + Fmt(f) + " " +
-                         std::string(model::ForceUnit(dof)) +
-                         ", outside what its thrusters give [" + Fmt(r.min_abs) + ", " +
-                         Fmt(r.max_abs) + "]: " + Fmt(c) + " used");
+        notes->push_back(
+            std::string(model::DofName(dof)) + ": " + name + " level " + std::to_string(j) +
+            " needs " + model::Significant(f, 3) + " " + std::string(model::ForceUnit(dof)) +
+            ", outside what its thrusters give [" + model::Significant(r.min_abs, 3) + ", " +
+            model::Significant(r.max_abs, 3) + "]: " + model::Significant(c, 3) + " used");
         f = c;
       }
       const double xi = SteadySpeed(k, kq, f);
@@ -227,11 +225,13 @@ std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& v,
   std::unique_ptr<DofContext> ctx = DofContext::APriori(v, pool, dof, o.planner, &ctx_notes);
   s.duration = LongestFittingDuration(*ctx, s, o.sine_max_duration_s);
   s.duration = std::floor(s.duration * 10.0) / 10.0;
-  notes->push_back(name + ": seed 000 sine " + Fmt(s.offset) + " + " + Fmt(s.amplitude) +
-                   "·sin(2π t/" + Fmt(2 * M_PI / s.omega) + " s) in " + s.mapping + " for " +
-                   Fmt(s.duration) + " s (" + Fmt(s.duration * s.omega / (2 * M_PI)) +
-                   " periods, the longest the pool allows up to " + Fmt(o.sine_max_duration_s) +
-                   " s)");
+  notes->push_back(name + ": seed 000 sine " + model::Significant(s.offset, 3) + " + " +
+                   model::Significant(s.amplitude, 3) + "·sin(2π t/" +
+                   model::Significant(2 * M_PI / s.omega, 3) + " s) in " + s.mapping + " for " +
+                   model::Significant(s.duration, 3) + " s (" +
+                   model::Significant(s.duration * s.omega / (2 * M_PI), 3) +
+                   " periods, the longest the pool allows up to " +
+                   model::Significant(o.sine_max_duration_s, 3) + " s)");
   out.push_back(std::move(s));
   return out;
 }

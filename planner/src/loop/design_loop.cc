@@ -5,21 +5,19 @@
 
 #include <algorithm>
 #include <chrono>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
-#include "format.h"
 #include "loop/next_trial_policy.h"
 #include "options_check.h"
 #include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::planner {
 namespace {
-
-using internal::Fmt;
 using model::Dof;
 
 constexpr model::EnumNames<NextStatus, 5> kNextStatusNames{
@@ -149,11 +147,12 @@ std::string BudgetSpentMessage(const LoopOptions& options,
                                const std::vector<DofProgress>& progress) {
   std::ostringstream m;
   m << "trial budget of " << options.budget << " spent before the target of "
-    << Fmt(options.step.target_percent) << "%:";
+    << model::Significant(options.step.target_percent, 3) << "%:";
   for (const auto& p : progress) {
     if (p.converged) continue;
     m << " " << model::DofName(p.dof) << " " << p.worst << " at "
-      << (std::isfinite(p.worst_percent) ? Fmt(p.worst_percent) + "%" : "not estimated");
+      << (std::isfinite(p.worst_percent) ? model::Significant(p.worst_percent, 3) + "%"
+                                         : "not estimated");
     if (p.precise && !p.doubts.empty()) m << " but not trusted (" << p.doubts.front() << ")";
     m << ";";
   }
@@ -292,21 +291,23 @@ bool DesignLoopOptions::IsValid(std::string* error) const {
   internal::OptionsCheck check("DesignLoopOptions", error);
   check
       .Require(target_percent > 0 && std::isfinite(target_percent), "target_percent",
-               Fmt(target_percent), "0 < target_percent < inf")
-      .Require(usable_percent > 0, "usable_percent", Fmt(usable_percent), "usable_percent > 0")
+               model::Significant(target_percent, 3), "0 < target_percent < inf")
+      .Require(usable_percent > 0, "usable_percent", model::Significant(usable_percent, 3),
+               "usable_percent > 0")
       .Require(consistency_level > 0 && consistency_level < 1, "consistency_level",
-               Fmt(consistency_level), "0 < consistency_level < 1")
-      .Require(max_trials_to_target > 0, "max_trials_to_target", Fmt(max_trials_to_target),
-               "> 0")
-      .Require(min_information_ratio > 0, "min_information_ratio", Fmt(min_information_ratio),
-               "> 0");
+               model::Significant(consistency_level, 3), "0 < consistency_level < 1")
+      .Require(max_trials_to_target > 0, "max_trials_to_target",
+               model::Significant(max_trials_to_target, 3), "> 0")
+      .Require(min_information_ratio > 0, "min_information_ratio",
+               model::Significant(min_information_ratio, 3), "> 0");
   return check.ok() && schedule.IsValid(error) && identify.IsValid(error);
 }
 
 bool LoopOptions::IsValid(std::string* error) const {
   internal::OptionsCheck check("LoopOptions", error);
   check.Require(budget >= 1, "budget", budget, "budget >= 1")
-      .Require(command_rate_hz > 0, "command_rate_hz", Fmt(command_rate_hz), "> 0")
+      .Require(command_rate_hz > 0, "command_rate_hz", model::Significant(command_rate_hz, 3),
+               "> 0")
       .Require(max_repeats >= 0, "max_repeats", max_repeats, "max_repeats >= 0")
       .Require(max_inconsistent >= 1, "max_inconsistent", max_inconsistent,
                "max_inconsistent >= 1");

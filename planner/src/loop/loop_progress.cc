@@ -3,14 +3,13 @@
 #include <cmath>
 
 #include "loop/loop_trust.h"
-#include "format.h"
 #include "loop/next_trial_policy.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/model_structure.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/planner/loop/design_loop.h"
 #include "uuvplan/planner/design/thrust_limits.h"
+#include "uuvplan/planner/loop/design_loop.h"
 
 namespace uuvplan::planner {
 
@@ -99,7 +98,7 @@ void JudgeTrust(const ident::DofIdentification* id, const ident::DofIdentificati
   p->trusted = p->doubts.empty();
   if (p->precise && p->consistency.consistent && !wrong.empty()) {
     p->refusal = wrong.front() + " with every parameter of interest below " +
-                 internal::Fmt(options.target_percent) +
+                 model::Significant(options.target_percent, 3) +
                  "% and consistent across trials: more trials of this model will not change it "
                  "(the model misses an effect: try `uuvplan diagnose`)";
   }

@@ -9,7 +9,6 @@
 #include <set>
 #include <sstream>
 
-#include "format.h"
 #include "loop/loop_trust.h"
 #include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/effects.h"
@@ -54,21 +53,23 @@ void DesignInputs(const model::Vehicle& vehicle, const ident::DofIdentification&
                                           : std::numeric_limits<double>::infinity();
     const bool nuisance = p.name == model::param::kBias || p.name == model::param::kBiasStep;
     if (Held(id, p.name)) {
-      notes->push_back(p.name + " = " + Fmt(p.value) +
+      notes->push_back(p.name + " = " + model::Significant(p.value, 3) +
                        " is not reliable (an a priori fallback): the design keeps its a priori "
                        "value");
       continue;
     }
     std::string wrong = NonPhysical(vehicle, id.dof, p.name, p.value);
     if (wrong.empty() && p.name == model::param::kMass && p.value > m_max) {
-      wrong = "m = " + Fmt(p.value) + " is implausible (above twice the a priori bound)";
+      wrong = "m = " + model::Significant(p.value, 3) +
+              " is implausible (above twice the a priori bound)";
     }
     if (!wrong.empty()) {
       notes->push_back(wrong + ": the design keeps its a priori value");
       continue;
     }
     if (!nuisance && !(percent < max_percent)) {
-      notes->push_back(p.name + " = " + Fmt(p.value) + " ± " + Fmt(p.sigma) +
+      notes->push_back(p.name + " = " + model::Significant(p.value, 3) + " ± " +
+                       model::Significant(p.sigma, 3) +
                        " is insignificant: the design keeps its a priori value");
       continue;
     }
@@ -322,8 +323,8 @@ class DofTrialPolicy {
   }
 
   std::string NotUsableYet() const {
-    return "estimates not usable yet: " + progress_.worst + " at " + Fmt(progress_.worst_percent) +
-           "%";
+    return "estimates not usable yet: " + progress_.worst + " at " +
+           model::Significant(progress_.worst_percent, 3) + "%";
   }
 
   bool TakeAPriori(const PlannedTrial& t, const std::string& why_this) {
@@ -450,7 +451,7 @@ void NoTrial(Decision* d) {
 }
 
 std::string ConvergedMessage(const DesignLoopOptions& options) {
-  return "every parameter of interest is below " + Fmt(options.target_percent) +
+  return "every parameter of interest is below " + model::Significant(options.target_percent, 3) +
          "% percentile error, physical, not an a priori fallback, validated and consistent "
          "with the estimate before its newest trial: no further trial needed";
 }
@@ -621,7 +622,7 @@ void StopUnplanned(const DofProgress& p, const Candidate& c, Decision* d) {
 std::string NextTrialMessage(const DofProgress& p, const Decision& tried) {
   std::ostringstream m;
   m << model::DofName(p.dof) << " is furthest from the target (" << p.worst
-    << (std::isfinite(p.worst_percent) ? " at " + Fmt(p.worst_percent) + "%"
+    << (std::isfinite(p.worst_percent) ? " at " + model::Significant(p.worst_percent, 3) + "%"
                                        : std::string(" not estimated yet"))
     << (p.precise && !p.doubts.empty() ? ", not trusted yet: " + p.doubts.front() : "")
     << "): " << tried.source << " trial '" << tried.trial.design.id << "'";

@@ -9,11 +9,16 @@
 #include "uuvplan/model/dof.h"
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/trial_log.h"
+#include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/vehicle.h"
 
 namespace uuvplan::model {
 
 enum class TrialUse { kFit, kValidate };
+/// The name of a trial's use in the campaign file and in results: fit | validate.
+inline constexpr EnumNames<TrialUse, 2> kTrialUseNames{
+    {{{TrialUse::kFit, "fit"}, {TrialUse::kValidate, "validate"}}}};
+inline std::string_view TrialUseName(TrialUse use) { return kTrialUseNames.Name(use); }
 
 struct TrialEntry {
   std::string file;         ///< as written in the campaign (relative to it)

@@ -1,10 +1,10 @@
 // The physical effects beyond the standard 1-DOF model (contract §diagnose): one table, each
 // entry declaring its name, the physics, its parameters (with units, null value and admissible
 // range), where it acts in the model (its own force term, a standard term, the actuator path
-// or the sensor), how diagnosis may propose it and how a finding of it reads. Simulation,
-// identification, planning and diagnosis all read this table; adding an effect is one entry
-// (effect_table.cc) plus its force term and tests (docs/architecture.md, "How to add an
-// effect").
+// or the sensor) and how diagnosis may propose it. Simulation, identification, planning and
+// diagnosis all read this table; adding an effect is one entry (effect_table.cc) plus its
+// force term, its finding's sentence (text/finding_text.h) and tests (docs/architecture.md,
+// "How to add an effect").
 #pragma once
 
 #include <functional>
@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "uuvplan/model/dof.h"
-#include "uuvplan/model/error_breakdown.h"
 #include "uuvplan/model/force_term.h"
 #include "uuvplan/model/mapping.h"
 #include "uuvplan/model/parameter.h"
@@ -59,20 +58,6 @@ struct Proposal {
   std::map<std::string, double> null;
 };
 
-/// An estimated parameter, as a finding reports it.
-struct ParameterValue {
-  std::string name;
-  double value = 0.0;
-  double sigma = 0.0;
-};
-
-/// What a finding's sentence may quote.
-struct FindingContext {
-  const std::vector<ParameterValue>& params;
-  const ErrorBreakdown& breakdown;
-  const std::string& detail;
-};
-
 /// A setting of an effect in a truth file that is not a parameter (thrust_map's reference
 /// force): read from `file_key`, stored as the structure setting `setting`; required, > 0.
 struct EffectSetting {
@@ -96,8 +81,6 @@ struct EffectEntry {
   std::function<std::unique_ptr<ForceTerm>(Dof, const std::vector<std::string>&)> make_term;
   /// Diagnosis: the extensions of the current structure it proposes (none: not applicable).
   std::function<std::vector<Proposal>(const ProposalContext&)> propose;
-  /// Diagnosis: what the standard simulation gets wrong, in words, for a finding of it.
-  std::function<std::string(const FindingContext&)> describe;
 
   bool Owns(std::string_view parameter) const;
 };

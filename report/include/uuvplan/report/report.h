@@ -27,7 +27,7 @@ struct ReportInputs {
   std::optional<model::Pool> pool;
   std::string pool_source;
   std::optional<planner::Schedule> schedule;            ///< needs vehicle and pool for its figures
-  /// The pool verdict on the schedule (planner::VerdictLines, the sentence first) and where it
+  /// The pool verdict on the schedule (text::VerdictLines, the sentence first) and where it
   /// comes from.
   struct Verdict {
     bool hosted = false;

@@ -20,20 +20,21 @@
 // input noise) — and DiagnosisResult::Summary() gives them in the pipelines' shape (summary.h).
 #pragma once
 
+#include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
-#include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "uuvplan/ident/estimate.h"
-#include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/estimators/output_error.h"
+#include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/summary.h"
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/error_breakdown.h"
 #include "uuvplan/model/model_structure.h"
 
 namespace uuvplan::ident {
@@ -58,8 +59,6 @@ struct DiagnoseOptions {
   std::uint64_t seed = 1;  ///< of those redraws
   /// Effects to try, by name (model::Effects()); default: every one diagnosis may propose.
   std::vector<std::string> candidates = model::Effects().Diagnosable();
-  /// Print the standard model's fit on stderr (the CLI sets it from UUVPLAN_VERBOSE).
-  bool verbose = false;
   /// Threads for the candidate fits (0: one per core). The result does not depend on it.
   int threads = 0;
   /// Called at each stage of each DOF with a line saying what runs (the CLI prints it on
@@ -139,7 +138,7 @@ struct StaticMapCandidate {
 struct Finding {
   std::string effect;  ///< name in the effect table (model/effects.h)
   model::Dof dof = model::Dof::kSurge;
-  std::string what;                       ///< what the standard simulation gets wrong
+  std::string detail;                     ///< the proposal's detail (a coupling's pair)
   std::vector<ParameterEstimate> params;  ///< the extension's parameters
   double statistic = 0.0;                 ///< likelihood ratio D
   int added_parameters = 0;

@@ -68,8 +68,6 @@ struct MonteCarloReport {
   std::vector<std::string> notes;
   const CoverageCell* Find(const std::string& estimator, model::Dof dof,
                            const std::string& name) const;
-  /// A readable table, one line per cell.
-  std::string Table() const;
 };
 
 MonteCarloReport RunMonteCarlo(const model::Truth& truth,

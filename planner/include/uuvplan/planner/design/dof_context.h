@@ -90,6 +90,13 @@ struct PlannerOptions {
 struct TrialCheck {
   bool feasible = true;
   std::vector<std::string> reasons;       ///< each violated constraint, by how much
+  /// Which constraints are violated (each with its reason): the travel over the box (the pool's
+  /// side or the tether's turns), a thruster's reversal, a thruster below min_thrust or beyond
+  /// its range, the duration.
+  bool exceeds_travel = false;
+  bool reversal = false;
+  bool thrust_out_of_range = false;
+  bool exceeds_duration = false;
   std::array<double, 2> travel = {0, 0};  ///< excursion from the start over the box [min, max]
   double span = 0.0;                      ///< travel[1] - travel[0]
   double available = 0.0;                 ///< free travel of the pool for this DOF (inf: none)

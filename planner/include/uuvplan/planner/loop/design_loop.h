@@ -268,6 +268,9 @@ std::string_view LoopStatusName(LoopStatus s);
 struct LoopResult {
   LoopStatus status = LoopStatus::kInfeasible;
   std::string message;
+  /// The DOFs hosted for part of the a priori box that the loop left stuck: it met a vehicle
+  /// outside the hostable part (ReadLoopEnd, pool_verdict.h; then status kInfeasible).
+  std::vector<model::Dof> outside_part;
   bool converged = false;
   std::vector<LoopIteration> iterations;
   std::vector<DofProgress> progress;           ///< final

@@ -20,7 +20,8 @@
 // four (m, drag) corners (box_points.h): hosted at some of them, it is hosted for PART of the
 // box — the first trials decide, and `uuvplan loop` / `next` run there; at none, for none. A
 // loop run in a part pool that ends stuck on a part DOF has met a vehicle outside the hostable
-// part: ReadLoopEnd makes that the pool's answer (infeasible, exit 1) with that sentence.
+// part: ReadLoopEnd makes that the pool's answer (infeasible, exit 1). The verdict is data; its
+// sentences are the text layer's (text/verdict_text.h).
 #pragma once
 
 #include <limits>
@@ -62,7 +63,9 @@ struct DofVerdict {
   model::Dof dof = model::Dof::kSurge;
   bool hosted = false;
   PoolLimit limit = PoolLimit::kNone;
-  std::string reason;  ///< why not hosted (empty when hosted)
+  /// Why the planner's own schedule does not host it (DofPlan::message; empty when it does).
+  /// A given plan's failing trials are the verdict's `plan_checks` of this DOF.
+  std::string message;
   /// Largest travel span of the DOF's trials in this pool (planned and given), free travel:
   /// m for a translation, rad for a rotation.
   double extent = 0.0;
@@ -74,6 +77,11 @@ struct DofVerdict {
   /// least this pool's).
   double need_refuted = 0.0;
   bool need_searched = false;  ///< `need` is the smallest found (VerdictOptions::need_bisections)
+  /// Short of the target, and a pool offering `unlifted_travel` (free travel, m or rad) was
+  /// planned and does not lift it: the loop's stuck rule names what is left (`limit`: the
+  /// rotation rate of a rotation, no reversal of a translation).
+  bool unlifted = false;
+  double unlifted_travel = 0.0;
   /// The planner's own schedule is hosted here; only a given plan's trials fail (no larger
   /// pool is searched: `need` is the planner's extent, `extent` the plan's).
   bool only_plan_fails = false;
@@ -110,7 +118,8 @@ struct PoolVerdict {
   RequiredPool required;
   bool plan_given = false;
   std::vector<TrialPoolCheck> plan_checks;  ///< the given plan's trials, checked in this pool
-  std::string sentence;                     ///< one line: hosted or not, and why
+  /// Why nothing was planned (ScheduleResult::message when it planned no DOF).
+  std::string unplanned;
 };
 
 /// CHOSEN 6 with a 5% tolerance: the bracket shrinks up to 64×, to 5% for a first guess up to
@@ -154,17 +163,14 @@ PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
                       const ScheduleOptions& options, const Schedule* plan = nullptr,
                       const VerdictOptions& verdict = {});
 
-/// The verdict as readable lines (units on every number, free vs wall to wall said), the
-/// first being `sentence`; the same in every command.
-std::vector<std::string> VerdictLines(const PoolVerdict& verdict, const model::Pool& pool);
-
 /// Whether `uuvplan loop` (and `next`) may run trials: the pool hosts the DOFs for all or part
 /// of the box.
 inline bool LoopMayRun(const PoolVerdict& v) { return v.hostability != Hostability::kNone; }
 
 /// A loop's end read against the verdict it ran under: in a pool hosted for part of the box, a
 /// loop stuck with a part DOF short of the target has met a vehicle outside the hostable part —
-/// status kInfeasible (the pool cannot host this vehicle) with that sentence before the stop's.
+/// status kInfeasible (the pool cannot host this vehicle), those DOFs in
+/// `result->outside_part`.
 void ReadLoopEnd(const PoolVerdict& verdict, LoopResult* result);
 
 }  // namespace uuvplan::planner

@@ -1,4 +1,4 @@
-// How a trial design's commanded force reads in the tool's tables: the one printer of the
+// How a trial design reads in the commands' tables and lines: the one printer of the
 // three kinds (steady, sine, segments), so a kind prints the same way wherever it is listed.
 // Numbers are fixed-point with one decimal (segment durations whole seconds); the tables
 // differ only in what they show beside the forces (ForceTextStyle).
@@ -8,11 +8,11 @@
 
 #include "uuvplan/model/trial_design.h"
 
-namespace uuvplan::cli {
+namespace uuvplan::text {
 
 struct ForceTextStyle {
-  bool unit = false;        ///< the DOF's force unit after each force ("35.0 N")
-  bool sine_omega = false;  ///< sine: ", ω 0.262 (T 24.0 s)" rather than ", T 24.0 s"
+  bool unit = false;                   ///< the DOF's force unit after each force ("35.0 N")
+  bool sine_omega = false;             ///< sine: ", ω 0.262 (T 24.0 s)" rather than ", T 24.0 s"
   const char* segment_seconds = " s";  ///< after a segment's duration ("10 s" or "10s")
   /// Name every segment's mapping, or only one other than the trial's.
   bool every_segment_mapping = false;
@@ -30,4 +30,8 @@ std::string ForceText(const model::TrialDesign& d, const ForceTextStyle& style);
 /// "[0°, 1080°] (3 turns)".
 std::string TravelText(model::Dof dof, double lo, double hi);
 
-}  // namespace uuvplan::cli
+/// "sine     surge-front            2:00 min  35.0 ± 25.0 N, T 26.0 s" — kind, mapping,
+/// duration and force in fixed-width fields (the trial lines of `next` and `loop`).
+std::string TrialLine(const model::TrialDesign& d);
+
+}  // namespace uuvplan::text

@@ -1,4 +1,5 @@
-#include "uuvplan/cli/trial_text.h"
+// Trial designs for people (trial_text.h).
+#include "uuvplan/text/trial_text.h"
 
 #include <cmath>
 #include <iomanip>
@@ -6,14 +7,15 @@
 
 #include "uuvplan/model/util/text.h"
 
-namespace uuvplan::cli {
+namespace uuvplan::text {
 namespace {
 
-void SegmentsText(const model::TrialDesign& d, const ForceTextStyle& style,
-                  const std::string& unit, std::ostream& s) {
+void SegmentsText(const model::TrialDesign& d, const ForceTextStyle& style, const std::string& unit,
+                  std::ostream& s) {
   for (std::size_t i = 0; i < d.segments.size(); ++i) {
     const auto& g = d.segments[i];
-    const bool named = !g.mapping.empty() && (style.every_segment_mapping || g.mapping != d.mapping);
+    const bool named =
+        !g.mapping.empty() && (style.every_segment_mapping || g.mapping != d.mapping);
     s << (i ? " | " : "") << g.force << unit << " " << std::setprecision(0) << g.duration
       << style.segment_seconds << std::setprecision(1) << (named ? " " + g.mapping : "");
   }
@@ -70,4 +72,13 @@ std::string TravelText(model::Dof dof, double lo, double hi) {
   return text;
 }
 
-}  // namespace uuvplan::cli
+std::string TrialLine(const model::TrialDesign& d) {
+  std::ostringstream s;
+  s << std::left << std::setw(9) << model::TrialKindName(d.kind) << std::setw(22) << d.mapping
+    << std::right << std::setw(9) << model::DurationText(d.duration) << "  "
+    << ForceText(d, kLoopForceStyle);
+  if (d.ballast_steps != 0) s << ", ballast " << d.ballast_steps;
+  return s.str();
+}
+
+}  // namespace uuvplan::text

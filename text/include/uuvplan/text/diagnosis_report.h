@@ -5,9 +5,9 @@
 
 #include "uuvplan/ident/diagnosis/diagnosis.h"
 
-namespace uuvplan::cli {
+namespace uuvplan::text {
 
 /// The standard model's errors, the findings with their extension and gain, and the tests.
 void PrintDiagnosis(const ident::DiagnosisResult& result, std::ostream& out);
 
-}  // namespace uuvplan::cli
+}  // namespace uuvplan::text

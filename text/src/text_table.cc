@@ -1,21 +1,26 @@
 // Aligned tables (text_table.h).
-#include "uuvplan/cli/text_table.h"
+#include "uuvplan/text/text_table.h"
 
 #include <algorithm>
-#include <cmath>
 
-#include "uuvplan/model/util/text.h"
-
-namespace uuvplan::cli {
+namespace uuvplan::text {
 
 std::size_t TextWidth(const std::string& text) {
-  return static_cast<std::size_t>(std::count_if(
-      text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) {
+    return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  }));
 }
 
-std::string Quantity(double value, const std::string& unit, int digits) {
-  if (!std::isfinite(value)) return "-";
-  return model::Significant(value, digits) + (unit == "1" ? " (no unit)" : " " + unit);
+std::string FixedRow(const std::vector<FixedColumn>& columns,
+                     const std::vector<std::string>& cells) {
+  std::string line;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const std::size_t width = c < columns.size() ? columns[c].width : 0;
+    const std::string pad(width > cells[c].size() ? width - cells[c].size() : 0, ' ');
+    const bool right = c < columns.size() && columns[c].right;
+    line += right ? pad + cells[c] : cells[c] + pad;
+  }
+  return line;
 }
 
 void TextTable::Print(std::ostream& out, const std::string& indent) const {
@@ -39,4 +44,4 @@ void TextTable::Print(std::ostream& out, const std::string& indent) const {
   for (const auto& row : rows_) line(row);
 }
 
-}  // namespace uuvplan::cli
+}  // namespace uuvplan::text

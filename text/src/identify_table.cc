@@ -1,23 +1,18 @@
 // The `identify` result as a readable table (docs/cli.md), shared by the commands that print
 // identification results (identify, next, loop, diagnose).
-#include "uuvplan/cli/identify_table.h"
+#include "uuvplan/text/identify_table.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
-#include "uuvplan/cli/text_table.h"
-#include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/text_table.h"
 
-namespace uuvplan::cli {
-
-std::string Cell(double v, int precision) {
-  return std::isfinite(v) ? model::Significant(v, precision) : "-";
-}
-
+namespace uuvplan::text {
 namespace {
 
 // The parameters of a DOF: value, σ (each with its unit), percentile error and significance.
@@ -60,8 +55,8 @@ void PrintFit(const ident::DofIdentification& d, std::ostream& out) {
   const std::string v_unit(model::VelocityUnit(d.dof)), p_unit(rotation ? "°" : "m");
   out << "  fit: velocity MAE (seed 002 eq. 37) fit " << Cell(f.velocity_mae_fit) << ", validate "
       << Cell(f.velocity_mae_validate) << " " << v_unit << " (zero-velocity model "
-      << Cell(f.zero_velocity_mae_fit) << ", " << Cell(f.zero_velocity_mae_validate)
-      << " " << v_unit << "); position RMS fit " << Cell(p_scale * f.position_rms_fit) << ", validate "
+      << Cell(f.zero_velocity_mae_fit) << ", " << Cell(f.zero_velocity_mae_validate) << " "
+      << v_unit << "); position RMS fit " << Cell(p_scale * f.position_rms_fit) << ", validate "
       << Cell(p_scale * f.position_rms_validate) << " " << p_unit << "\n";
   TextTable table({"DOF", "trial", "use", "vel. MAE (" + v_unit + ")", "pos. RMS (" + p_unit + ")",
                    "residuals"});
@@ -69,13 +64,15 @@ void PrintFit(const ident::DofIdentification& d, std::ostream& out) {
     const bool position = t.residual_signal == "position";
     const std::string unit = position ? p_unit : v_unit;
     std::ostringstream res;
-    res << t.residual_signal << " mean " << Cell((position ? p_scale : 1.0) * t.residuals.mean, 3) << " " << unit << ", "
-        << (t.residuals.white ? "white" : "NOT white") << " (" << t.residuals.lags_outside << "/"
+    res << t.residual_signal << " mean " << Cell((position ? p_scale : 1.0) * t.residuals.mean, 3)
+        << " " << unit << ", " << (t.residuals.white ? "white" : "NOT white") << " ("
+        << t.residuals.lags_outside << "/"
         << (t.residuals.autocorrelation.empty() ? 0 : t.residuals.autocorrelation.size() - 1)
         << " lags outside ±" << Cell(t.residuals.bound95, 2) << ")"
         << (t.velocity_reference == "estimated" ? " [velocity estimated from positions]" : "");
-    table.AddRow({std::string(model::DofName(d.dof)), t.name, io::TrialUseName(t.use),
-                  Cell(t.velocity_mae), Cell(p_scale * t.position_rms), res.str()});
+    table.AddRow({std::string(model::DofName(d.dof)), t.name,
+                  std::string(model::TrialUseName(t.use)), Cell(t.velocity_mae),
+                  Cell(p_scale * t.position_rms), res.str()});
   }
   table.Print(out);
 }
@@ -88,9 +85,8 @@ void PrintOneStep(const ident::DofIdentification& d, std::ostream& out) {
         << (d.one_step->instrumental ? "; instrumental variables" : "") << "):";
     const char* sep = " ";
     for (const auto& e : d.one_step->estimates) {
-      const std::string unit = model::Unit(e.name, d.dof);
       out << sep << e.name << " = " << Cell(e.value, 4) << " ± " << Cell(e.sigma, 3)
-          << (unit == "1" ? "" : " " + unit);
+          << UnitSuffix(model::Unit(e.name, d.dof));
       sep = ", ";
     }
     out << "\n";
@@ -175,4 +171,4 @@ void PrintIdentifyTable(const ident::IdentifyResult& r, std::ostream& out) {
   out << r.message << " — status " << ident::IdentifyStatusName(r.status) << "\n";
 }
 
-}  // namespace uuvplan::cli
+}  // namespace uuvplan::text

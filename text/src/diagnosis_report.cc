@@ -1,26 +1,18 @@
 // A diagnosis as a readable report (docs/cli.md): the standard model's errors, the findings
 // with their extension and gain, and the candidate effects tested.
-#include "uuvplan/cli/diagnosis_report.h"
+#include "uuvplan/text/diagnosis_report.h"
 
 #include <cmath>
 #include <iomanip>
 
-#include "uuvplan/cli/identify_table.h"
-#include "uuvplan/cli/text_table.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/text/finding_text.h"
+#include "uuvplan/text/identify_table.h"
+#include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/text_table.h"
 
-namespace uuvplan::cli {
-
+namespace uuvplan::text {
 namespace {
-
-// " N·s/m", or nothing for a pure number (unit "1").
-std::string UnitText(const std::string& unit) { return unit == "1" ? "" : " " + unit; }
-
-// "0.082 ± 0.003 s" (3 significant digits of σ's order), or "0.082 s" when σ is unknown.
-std::string ValueSigma(double value, double sigma, const std::string& unit) {
-  if (!std::isfinite(sigma)) return model::Significant(value, 3) + " " + unit;
-  return model::Significant(value, 3) + " ± " + model::Significant(sigma, 2) + " " + unit;
-}
 
 // Where the standard model's free-run simulation goes wrong on one DOF.
 void PrintBreakdown(const ident::ErrorBreakdown& b, std::ostream& out) {
@@ -29,9 +21,9 @@ void PrintBreakdown(const ident::ErrorBreakdown& b, std::ostream& out) {
       << ", velocity MAE " << std::setprecision(4) << b.velocity_mae << " " << unit << "):\n";
   auto print = [&](const std::vector<ident::ErrorGroup>& groups) {
     for (const auto& g : groups) {
-      out << "  " << std::left << std::setw(48) << g.label << std::right << std::setprecision(1)
-          << std::showpos << 100.0 * g.relative << std::noshowpos << "% speed  (MAE "
-          << std::setprecision(4) << g.mae << " " << unit << ", " << g.samples << " samples)\n";
+      out << "  " << std::left << std::setw(48) << g.label << std::right
+          << SignedPercent(g.relative) << " speed  (MAE " << std::setprecision(4) << g.mae << " "
+          << unit << ", " << g.samples << " samples)\n";
     }
   };
   print(b.by_thrust);
@@ -61,13 +53,14 @@ void PrintStaticMaps(const ident::Finding& f, std::ostream& out) {
     for (const auto& p : c.params) {
       const bool held = p.state == ident::ParameterState::kFixed;
       out << ", " << p.name << " = " << Cell(p.value) << (held ? "" : " ± " + Cell(p.sigma))
-          << UnitText(model::Unit(p.name, f.dof)) << (held ? " (held at its bound)" : "");
+          << UnitSuffix(model::Unit(p.name, f.dof)) << (held ? " (held at its bound)" : "");
     }
     if (c.scored) {
       out << "; validate MAE " << model::Significant(c.validate_mae, 4)
-          << UnitText(std::string(model::VelocityUnit(f.dof))) << ", vs the power law "
+          << UnitSuffix(std::string(model::VelocityUnit(f.dof))) << ", vs the power law "
           << (c.vs_power_law >= 0 ? "+" : "") << model::Significant(c.vs_power_law, 3) << " ± "
-          << model::Significant(c.vs_power_law_sigma, 2) << UnitText(std::string(model::VelocityUnit(f.dof)));
+          << model::Significant(c.vs_power_law_sigma, 2)
+          << UnitSuffix(std::string(model::VelocityUnit(f.dof)));
     } else {
       out << "; not scored on held-out data" << (c.why.empty() ? "" : ": " + c.why);
     }
@@ -76,22 +69,29 @@ void PrintStaticMaps(const ident::Finding& f, std::ostream& out) {
   }
 }
 
+// command, nominal, power law, chosen map: the corrected thrust map's fixed columns.
+const std::vector<FixedColumn> kThrustMapColumns{{10, true}, {16, true}, {24, true}, {16, true}};
+
 // The corrected static thrust map of a thrust_map finding, per thruster command.
 void PrintThrustMap(const ident::CorrectedThrustMap& m, std::ostream& out) {
   out << "     corrected thrust map of " << m.mapping << " (thruster " << m.thruster
       << "; commands of the data " << model::Significant(m.smallest_command, 3) << " to "
-      << model::Significant(m.largest_command, 3) << " in the vehicle file's command unit): "
-      << m.shape << "\n       for the vehicle file: thrust: {model: poly2, a: "
+      << model::Significant(m.largest_command, 3)
+      << " in the vehicle file's command unit): " << m.shape
+      << "\n       for the vehicle file: thrust: {model: poly2, a: "
       << model::Significant(m.poly2_a, 4) << ", b: " << model::Significant(m.poly2_b, 4) << "}\n"
-      << "       " << std::setw(10) << "command" << std::setw(16) << "nominal (N)" << std::setw(24)
-      << "power law (N)" << std::setw(16) << "chosen map (N)" << "\n";
+      << "       "
+      << FixedRow(kThrustMapColumns, {"command", "nominal (N)", "power law (N)", "chosen map (N)"})
+      << "\n";
   for (std::size_t i = 0; i < m.rows.size(); ++i) {
     const auto& r = m.rows[i];
     const double chosen = i < m.chosen_force.size() ? m.chosen_force[i] : std::nan("");
-    out << "       " << std::setw(10) << model::Significant(r.command, 3) << std::setw(16)
-        << model::Significant(r.nominal, 4) << std::setw(24)
-        << (model::Significant(r.delivered, 4) + " ± " + model::Significant(r.sigma, 2))
-        << std::setw(16) << (std::isfinite(chosen) ? model::Significant(chosen, 4) : "-") << "\n";
+    out << "       "
+        << FixedRow(kThrustMapColumns,
+                    {model::Significant(r.command, 3), model::Significant(r.nominal, 4),
+                     model::Significant(r.delivered, 4) + " ± " + model::Significant(r.sigma, 2),
+                     Cell(chosen)})
+        << "\n";
   }
 }
 
@@ -100,18 +100,18 @@ void PrintFindings(const ident::DiagnosisResult& r, std::ostream& out) {
   int i = 0;
   for (const auto& f : r.findings) {
     out << "  " << ++i << ". " << f.effect << " (" << model::DofName(f.dof)
-        << "): " << f.what << "\n     extension:";
+        << "): " << FindingSentence(r, f) << "\n     extension:";
     for (const auto& p : f.params) {
       const bool held = p.state == ident::ParameterState::kFixed;
       out << " " << p.name << " = " << Cell(p.value) << (held ? "" : " ± " + Cell(p.sigma))
-          << UnitText(model::Unit(p.name, f.dof)) << (held ? " (held at its admissible bound)" : "");
+          << UnitSuffix(model::Unit(p.name, f.dof))
+          << (held ? " (held at its admissible bound)" : "");
     }
     out << "\n     evidence: likelihood ratio D = " << std::setprecision(1) << f.statistic << " on "
         << f.added_parameters << " parameter(s), p = " << std::scientific << std::setprecision(1)
         << f.p_value << std::fixed << "\n     gain: velocity MAE " << std::setprecision(4)
         << f.gain.before << " -> " << f.gain.after << " " << model::VelocityUnit(f.dof) << " ("
-        << std::setprecision(0)
-        << 100.0 * f.gain.relative << "% better) on " << f.gain.on << "\n";
+        << std::setprecision(0) << 100.0 * f.gain.relative << "% better) on " << f.gain.on << "\n";
     for (const auto& m : f.thrust_maps) PrintThrustMap(m, out);
     PrintStaticMaps(f, out);
   }
@@ -130,7 +130,7 @@ void PrintBaseline(const ident::DiagnosisResult& r, std::ostream& out) {
     for (const ident::ParameterEstimate& p : d.params) {
       const bool held = p.state == ident::ParameterState::kFixed;
       out << " " << p.name << " = " << Cell(p.value) << (held ? "" : " ± " + Cell(p.sigma))
-          << UnitText(model::Unit(p.name, d.dof)) << (held ? " (held at its bound)" : "") << ";";
+          << UnitSuffix(model::Unit(p.name, d.dof)) << (held ? " (held at its bound)" : "") << ";";
     }
     out << " velocity MAE fit " << model::Significant(d.fit.velocity_mae_fit, 4);
     if (std::isfinite(d.fit.velocity_mae_validate)) {
@@ -148,8 +148,9 @@ void PrintModels(const ident::DiagnosisResult& r, std::ostream& out) {
     const std::string unit(model::VelocityUnit(r.extended[i].dof));
     auto pair = [&](double x, double y) {
       return model::Significant(x, 4) + " -> " + model::Significant(y, 4) + " " + unit +
-             (x > 0 && std::isfinite(y) ? " (" + model::Significant(100 * (x - y) / x, 3) + "% better)"
-                                        : "");
+             (x > 0 && std::isfinite(y)
+                  ? " (" + model::Significant(100 * (x - y) / x, 3) + "% better)"
+                  : "");
     };
     out << "  " << model::DofName(r.extended[i].dof)
         << ": velocity MAE, standard (the baseline) -> extended: fit "
@@ -164,8 +165,8 @@ void PrintModels(const ident::DiagnosisResult& r, std::ostream& out) {
 // The candidates tested, one row each: DOF, round, effect, likelihood ratio D, largest z, the
 // held-out gain and the verdict.
 void PrintCandidateTests(const ident::DiagnosisResult& r, std::ostream& out) {
-  TextTable table({"DOF", "round", "effect", "detail", "D (no unit)", "z (σ)", "gain (%)",
-                   "verdict"});
+  TextTable table(
+      {"DOF", "round", "effect", "detail", "D (no unit)", "z (σ)", "gain (%)", "verdict"});
   for (const auto& t : r.tests) {
     std::string verdict = t.significant ? "significant" : "not significant";
     if (std::isfinite(t.gain)) {
@@ -222,4 +223,4 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
   for (const auto& n : r.notes) out << "note: " << n << "\n";
 }
 
-}  // namespace uuvplan::cli
+}  // namespace uuvplan::text
