@@ -42,7 +42,7 @@ void RefuseCountsOutOfRange(CLI::App& app) {
 // Blocks of 128 KiB and more (a long log's vectors) mapped on their own and given back to the
 // system when freed. By default glibc raises this threshold to the size of the largest such
 // block freed (up to 32 MiB); the vectors that follow then come from the heap, and the holes
-// they leave stay resident: 3–4 MB more peak RSS on issue #16's 1,000,000-row log
+// they leave stay resident: 3–4 MB more peak RSS on a 1,000,000-row log
 // (docs/performance.md, "Memory, round 10").
 void ReturnLargeBlocksWhenFreed() { mallopt(M_MMAP_THRESHOLD, 128 * 1024); }
 

@@ -1,8 +1,8 @@
 // `uuvplan demo [--cases DIR] [--out DIR] [--seed N]`: the built-in ROMEO story, no files
-// needed (issue #5 §3):
+// needed:
 //  1. the a priori surge schedule in ROMEO's pool and its pool check (planner);
 //  2. the design–identify loop on the virtual ROMEO until 5% percentile error (planner + ident);
-//  3. the heave campaign of seed 000 §IV-D (five ballast steps, up and down steady legs in
+//  3. the heave campaign of ref 000 §IV-D (five ballast steps, up and down steady legs in
 //     vertical-all, Fig. 4) on a vehicle with the paper's propeller–hull interaction
 //     (eta = 0.56 pulling up): the standard model's error, the cause named, the gain (diagnose).
 #include <algorithm>
@@ -50,16 +50,16 @@ struct DemoFlags {
 // Nominal heave force of each leg (N, z down: positive pushes ROMEO down, where the vertical
 // thrusters work in open water; negative pulls it up, where eta = 0.56, Table II). Three
 // levels each way, alternating down and up. Pulling up is weaker (eta), so each trial ends
-// 13-23 m deeper than it starts: like seed 000's heave trials it runs under the Antarctic ice,
+// 13-23 m deeper than it starts: like ref 000's heave trials it runs under the Antarctic ice,
 // not in a pool (cases/romeo/pool.yaml leaves 2 m for heave). The
 // largest, 180 N, is 45 N per thruster (6.6 V), well inside the +-10 V range; the smallest,
 // 60 N, keeps 15 N per thruster, far from the thrust inversion (min_thrust 2 N).
 constexpr double kLegForces[] = {60, -60, 120, -120, 180, -180};
 // Each leg lasts 20 s: the slowest linearised time constant m/(k + 2·kq·|w|) of the truth is
 // 720/(44.7 + 2·430.3·0.16) = 3.9 s (the slowest leg: ballast 4 pulling up, 18.7 N net, at
-// 0.16 m/s), so every leg ends in steady state (seed 000 §III-A needs the regime velocity).
+// 0.16 m/s), so every leg ends in steady state (ref 000 §III-A needs the regime velocity).
 constexpr double kLegS = 20.0;
-constexpr int kBallastSteps = 5;  // experiments 0-4 of seed 000 §IV-D
+constexpr int kBallastSteps = 5;  // experiments 0-4 of ref 000 §IV-D
 constexpr const char* kMapping = "vertical-all";
 
 // Trial budget of part 2's design–identify loop (the library's default is 40): ROMEO surge

@@ -46,8 +46,8 @@ bool WriteExtendedVehicle(const std::string& path, const std::string& campaign_p
     models[e.dof] = ident::ModelOf(e);
     const std::string problem = ident::Inadmissible(models[e.dof]);
     if (!problem.empty()) {
-      std::cerr << "uuvplan: diagnose: error: " << path << " not written: the " << model::DofName(e.dof)
-                << " model has " << problem << "\n";
+      std::cerr << "uuvplan: diagnose: error: " << path << " not written: the "
+                << model::DofName(e.dof) << " model has " << problem << "\n";
       return false;
     }
   }
@@ -55,11 +55,13 @@ bool WriteExtendedVehicle(const std::string& path, const std::string& campaign_p
     effects += (effects.empty() ? "" : ", ") + std::string(model::DofName(f.dof)) + " " + f.effect;
   }
   io::WriteVehicleYaml(path, vehicle, models,
-                       "written by `uuvplan diagnose " + campaign_path + " --write-vehicle`: the "
-                       "extended model (" + (effects.empty() ? "no effect found" : effects) +
-                       "),\nfitted by output error on the fit trials; sigma: 1σ of each "
-                       "parameter (0: held at its admissible bound).\nScore it on a campaign "
-                       "with `uuvplan score`.");
+                       "written by `uuvplan diagnose " + campaign_path +
+                           " --write-vehicle`: the "
+                           "extended model (" +
+                           (effects.empty() ? "no effect found" : effects) +
+                           "),\nfitted by output error on the fit trials; sigma: 1σ of each "
+                           "parameter (0: held at its admissible bound).\nScore it on a campaign "
+                           "with `uuvplan score`.");
   return true;
 }
 
@@ -73,14 +75,16 @@ int RunDiagnose(const DiagnoseFlags& co) {
   text::PrintDiagnosis(result, ReportStream(co.json));
   if (!co.json.empty()) WriteJson(co.json, io::DiagnosisJson(result));
   PrintBriefOnTerminal(result.Summary().Brief());
-  const bool written = co.write_vehicle.empty() ||
-                       WriteExtendedVehicle(co.write_vehicle, co.campaign, campaign.vehicle, result);
+  const bool written =
+      co.write_vehicle.empty() ||
+      WriteExtendedVehicle(co.write_vehicle, co.campaign, campaign.vehicle, result);
   // A DOF whose standard model failed is refused: a failure, as identify's (exit 1).
   return result.not_diagnosed.empty() && written ? kExitOk : kExitActionNeeded;
 }
 
 void BindDiagnose(CLI::App* sub, DiagnoseFlags* o) {
-  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")->required();
+  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")
+      ->required();
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_option("--dof", o->dofs, "diagnose only this DOF (repeatable)");
   AddAcceptUnitsFlag(sub, &o->accept_units);

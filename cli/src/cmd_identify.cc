@@ -2,9 +2,10 @@
 // [--no-prune] [--closed-loop yes|no|auto] [--method M [--forgetting λ]] [--sg-window N]
 // [--model dof|coupled] [--accept-units]`:
 // parameter estimates with standard deviations and the fit of the identified model
-// (ident/identify.h, docs/identification.md); --method runs one of the seeds' estimators alone.
+// (ident/identify.h, docs/identification.md); --method runs one of the papers' estimators alone.
 // Exit status 0 when every DOF was identified, 1 when some DOF failed (its FAILED line says
-// why), 2 on bad input — units or signs that look wrong among it (ident/prepare/input_sanity.h) unless
+// why), 2 on bad input — units or signs that look wrong among it (ident/prepare/input_sanity.h)
+// unless
 // --accept-units. On a terminal, the summary's Brief() line follows on stderr.
 #include <string>
 #include <vector>
@@ -41,7 +42,7 @@ struct IdentifyFlags {
   std::string closed_loop{kClosedLoopNames.Name(ident::IdentifyOptions{}.closed_loop)};
   MethodFlags method;  ///< --method, --forgetting
   bool accept_units = false;
-  std::string model_kind = "dof";  ///< --model: dof (one model per DOF) or coupled (seed 003)
+  std::string model_kind = "dof";   ///< --model: dof (one model per DOF) or coupled (ref 003)
   ident::IdentifyOptions identify;  ///< --no-refine, --no-prune bound here
 };
 
@@ -81,7 +82,7 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
   o->steady_windows[index].push_back({t0, t1});
 }
 
-// `--model coupled` fits seed 003's model by its own estimator (joint_ls.h) on every DOF
+// `--model coupled` fits ref 003's model by its own estimator (joint_ls.h) on every DOF
 // at once: the options of the per-DOF chain do not apply, and one given would be ignored.
 void RefuseChainOptionsWithCoupled(const IdentifyFlags& co) {
   const ident::IdentifyOptions chain;
@@ -126,7 +127,8 @@ int RunIdentify(const IdentifyFlags& co) {
 
   std::ostream& out = ReportStream(co.json);
   out << "Identification of " << co.campaign << " (vehicle '" << campaign.vehicle.name << "', "
-      << campaign.trials.size() << " trials; method " << ident::MethodName(result.method) << ")\n\n";
+      << campaign.trials.size() << " trials; method " << ident::MethodName(result.method)
+      << ")\n\n";
   text::PrintIdentifyTable(result, out);
   if (!co.json.empty()) WriteJson(co.json, io::IdentifyJson(result));
   PrintBriefOnTerminal(result.Summary().Brief());
@@ -134,7 +136,8 @@ int RunIdentify(const IdentifyFlags& co) {
 }
 
 void BindIdentify(CLI::App* sub, IdentifyFlags* o) {
-  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")->required();
+  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")
+      ->required();
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_option("--dof", o->dofs,
                   "identify only this DOF (repeatable; default: every DOF with fit trials)");

@@ -65,7 +65,7 @@ io::LoggedTrial TrialOf(const LogFlags& o, const model::TrialDesign* design) {
   return t;
 }
 
-// Drop-outs said when the trial is logged, not first by identify (seed 000 Fig. 14: a step
+// Drop-outs said when the trial is logged, not first by identify (ref 000 Fig. 14: a step
 // longer than 3× the median step is a gap; filters and integrals never cross one).
 void PrintGaps(const model::TrialEntry& e) {
   const std::vector<ident::Gap> gaps = ident::FindGaps(e.log.t);
@@ -74,8 +74,9 @@ void PrintGaps(const model::TrialEntry& e) {
     return a.t1 - a.t0 < b.t1 - b.t0;
   });
   std::cout << "note: " << gaps.size() << " gap(s) in the log (steps over 3× the median), the "
-            << "longest " << model::DurationText(longest->t1 - longest->t0) << " from t = "
-            << model::Significant(longest->t0, 6) << " s: identification neither filters nor "
+            << "longest " << model::DurationText(longest->t1 - longest->t0)
+            << " from t = " << model::Significant(longest->t0, 6)
+            << " s: identification neither filters nor "
             << "integrates across a gap, so the trial counts as shorter pieces\n";
 }
 
@@ -84,8 +85,8 @@ int RunLog(const LogFlags& o) {
   if (!o.plan.empty()) design = PlannedDesign(o.plan, o.id);
   const io::LoggedTrial trial = TrialOf(o, design ? &*design : nullptr);
   if (design) {
-    const auto problems = planner::CompareLogWithDesign(*design, trial.dof, trial.mapping,
-                                                        io::ReadTrialLog(o.csv));
+    const auto problems =
+        planner::CompareLogWithDesign(*design, trial.dof, trial.mapping, io::ReadTrialLog(o.csv));
     if (!problems.empty()) {
       throw model::InputError(o.csv, "not the planned trial " + o.id + " of " + o.plan + ": " +
                                          model::Join(problems, "; ") +

@@ -131,8 +131,8 @@ int RunLoopCommand(const LoopFlags& o) {
       << " trials, seed " << lo.seed << ")\n"
       << "Parameters of interest: m; kq where significant, else k; every η "
          "(* = above the target)\n\n";
-  // Before any trial: the pool verdict (planner/pool/pool_verdict.h) on the loop's DOFs; a pool that
-  // hosts them for no vehicle of the a priori box is refused with schedule's sentence and exit
+  // Before any trial: the pool verdict (planner/pool/pool_verdict.h) on the loop's DOFs; a pool
+  // that hosts them for no vehicle of the a priori box is refused with schedule's sentence and exit
   // status; one that hosts them for part of the box is run, and the loop's end read against it.
   planner::ScheduleOptions so = lo.step.ScheduleAtTarget();
   so.dofs = lo.step.dofs;
@@ -149,11 +149,10 @@ int RunLoopCommand(const LoopFlags& o) {
   }
   if (!verdict.hosted) out << "\n";
   const auto progress = TerminalProgress("loop");
-  planner::LoopResult r =
-      planner::RunLoop(truth, pool, lo, [&](const planner::LoopIteration& it) {
-        PrintIteration(it, target, o.verbose, out);
-        progress("trial " + std::to_string(it.index + 1) + " " + it.trial.design.id + " done");
-      });
+  planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const planner::LoopIteration& it) {
+    PrintIteration(it, target, o.verbose, out);
+    progress("trial " + std::to_string(it.index + 1) + " " + it.trial.design.id + " done");
+  });
   planner::ReadLoopEnd(verdict, &r);
   PrintLoopSummary(r, lo, truth, text::LoopEndMessage(r, verdict, pool), out);
   if (!o.json.empty()) {

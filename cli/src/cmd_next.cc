@@ -156,7 +156,9 @@ int RunNext(const NextFlags& o) {
 }
 
 void BindNext(CLI::App* sub, NextFlags* o) {
-  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml of the trials run so far, or its directory")->required();
+  sub->add_option("CAMPAIGN", o->campaign,
+                  "campaign.yaml of the trials run so far, or its directory")
+      ->required();
   sub->add_option("--pool", o->pool, "pool.yaml of the pool of the next trial")->required();
   sub->add_option("--dof", o->dofs,
                   "DOF to drive to the target (repeatable; default: the DOFs the campaign "

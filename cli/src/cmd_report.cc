@@ -1,9 +1,10 @@
 // `uuvplan report INPUT -o DIR [--vehicle V] [--pool P] [--loop LOOP.json] [--no-diagnosis
-// [--method M [--forgetting λ]]] [--sg-window N] [--accept-units]`: one self-contained HTML file (figures
-// embedded, no network) and the figures as PNG and SVG files (planner/report, docs/report.md).
-// INPUT is a schedule (`schedule --json`, with --vehicle and --pool), a loop's JSON (`loop
+// [--method M [--forgetting λ]]] [--sg-window N] [--accept-units]`: one self-contained HTML file
+// (figures embedded, no network) and the figures as PNG and SVG files (planner/report,
+// docs/report.md). INPUT is a schedule (`schedule --json`, with --vehicle and --pool), a loop's
+// JSON (`loop
 // --json`), or a campaign (identified and diagnosed here; with --method rls also the RLS
-// convergence, seed 004 Fig. 11). DIR is written whole or not at all. Exit status: 0 written;
+// convergence, ref 004 Fig. 11). DIR is written whole or not at all. Exit status: 0 written;
 // 1 written, but a DOF could not be identified or diagnosed, or the pool cannot host a
 // schedule's DOF, as `identify`, `diagnose` or `schedule` would say; 2 bad input.
 #include <filesystem>
@@ -39,7 +40,7 @@ struct ReportFlags {
   std::string pool;
   std::string loop;
   bool no_diagnosis = false;
-  MethodFlags method;  ///< --method, --forgetting (with --no-diagnosis)
+  MethodFlags method;            ///< --method, --forgetting (with --no-diagnosis)
   ident::TrialDataOptions data;  ///< --sg-window (a campaign)
   bool accept_units = false;
 };
@@ -125,7 +126,8 @@ void AddCampaign(const ReportFlags& o, report::ReportInputs* in) {
   if (identify.method != ident::Method::kChain && !o.no_diagnosis) {
     throw InputError("--method " + o.method.method,
                      "the diagnosis identifies with the default chain; give --no-diagnosis to "
-                     "report the estimates of method " + o.method.method);
+                     "report the estimates of method " +
+                         o.method.method);
   }
   // The estimates are `identify`'s (one campaign, one answer); the diagnosis's standard model
   // (every η = 1: the contract's baseline) stays in its own section.
@@ -144,8 +146,9 @@ int RunReport(const ReportFlags& o) {
   in.source = o.input;
   AddVehicleAndPool(o, &in);
   if (IsJsonFile(o.input) && o.data.sg_window > 0) {
-    throw InputError("--sg-window", "the velocity filter of a campaign's trials: a schedule or "
-                                    "a loop's JSON has no trials to filter; drop it");
+    throw InputError("--sg-window",
+                     "the velocity filter of a campaign's trials: a schedule or "
+                     "a loop's JSON has no trials to filter; drop it");
   }
   if (IsJsonFile(o.input) && io::IsLoopJson(o.input)) {
     in.title = "Loop report";
@@ -166,8 +169,7 @@ int RunReport(const ReportFlags& o) {
   // diagnose's (a DOF it could not diagnose), the schedule's (a DOF the pool cannot host).
   const bool failed =
       (in.identification && in.identification->status == ident::IdentifyStatus::kFailed) ||
-      (in.diagnosis && !in.diagnosis->not_diagnosed.empty()) ||
-      (in.verdict && !in.verdict->hosted);
+      (in.diagnosis && !in.diagnosis->not_diagnosed.empty()) || (in.verdict && !in.verdict->hosted);
   return failed ? kExitActionNeeded : kExitOk;
 }
 

@@ -16,12 +16,12 @@
 #include "uuvplan/cli/exit_status.h"
 #include "uuvplan/io/command_files.h"
 #include "uuvplan/io/io.h"
-#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/io/pool_verdict_json.h"
+#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/planner/design/coupled_design.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/planner/design/coupled_design.h"
 #include "uuvplan/planner/design/information_table.h"
 #include "uuvplan/planner/pool/command_sheet.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
@@ -43,7 +43,7 @@ struct ScheduleFlags {
   std::string commands;  ///< --commands DIR: per-thruster command files and the run sheet
   std::string robust{planner::RobustnessName(planner::ScheduleOptions{}.planner.robustness)};
   planner::ScheduleOptions schedule;  ///< --max-duration, --no-steady, --no-sine bound here
-  std::string model_kind = "dof";     ///< --model: dof (per DOF) or coupled (seed 003)
+  std::string model_kind = "dof";     ///< --model: dof (per DOF) or coupled (ref 003)
   std::string mode;                   ///< --mode: a combined mode (coupled only)
   bool duration_given = false;        ///< --max-duration on the command line
 };
@@ -56,14 +56,15 @@ planner::Robustness ParseRobustness(const std::string& s) {
   throw model::InputError("--robust", "expected maximin, average or nominal, got '" + s + "'");
 }
 
-// `--model coupled` plans one combined trial of seed 003's model (coupled_design.h): the
+// `--model coupled` plans one combined trial of ref 003's model (coupled_design.h): the
 // per-DOF planner's options do not apply, and one given would be ignored.
 void RefusePerDofOptionsWithCoupled(const ScheduleFlags& o) {
   const planner::ScheduleOptions per_dof;
   std::vector<std::string> given;
   if (!o.dofs.empty()) given.push_back("--dof");
   if (!o.commands.empty()) given.push_back("--commands");
-  if (o.schedule.precision.target_percent != per_dof.precision.target_percent) given.push_back("--target");
+  if (o.schedule.precision.target_percent != per_dof.precision.target_percent)
+    given.push_back("--target");
   if (o.schedule.steady_runs != per_dof.steady_runs) given.push_back("--no-steady");
   if (o.schedule.sine_trial != per_dof.sine_trial) given.push_back("--no-sine");
   if (!given.empty()) {
@@ -76,8 +77,9 @@ void RefusePerDofOptionsWithCoupled(const ScheduleFlags& o) {
 
 int RunCoupled(const ScheduleFlags& o, const model::Vehicle& vehicle, const model::Pool& pool) {
   planner::CombinedDesignOptions co =
-      o.mode.empty() ? planner::CoupledDesignOptions()
-                     : planner::CoupledDesignOptions(*model::ParseDofList(o.mode));  // checked by CLI11
+      o.mode.empty()
+          ? planner::CoupledDesignOptions()
+          : planner::CoupledDesignOptions(*model::ParseDofList(o.mode));  // checked by CLI11
   co.solver.robustness = ParseRobustness(o.robust);
   if (o.duration_given) co.duration_s = o.schedule.planner.max_trial_duration_s;
   return RunCoupledSchedule(vehicle, pool, co, o.json);
@@ -85,10 +87,10 @@ int RunCoupled(const ScheduleFlags& o, const model::Vehicle& vehicle, const mode
 
 void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
                    const model::Pool& pool, std::ostream& out) {
-  out << "Schedule for " << v.name << " in pool " << pool.name
-      << " (free, walls less 2·" << model::Significant(pool.margin, 4) << " m margin: "
-      << model::Significant(pool.FreeTravel(model::Dof::kSurge), 4) << " m length, "
-      << model::Significant(pool.FreeTravel(model::Dof::kSway), 4) << " m width, "
+  out << "Schedule for " << v.name << " in pool " << pool.name << " (free, walls less 2·"
+      << model::Significant(pool.margin, 4)
+      << " m margin: " << model::Significant(pool.FreeTravel(model::Dof::kSurge), 4)
+      << " m length, " << model::Significant(pool.FreeTravel(model::Dof::kSway), 4) << " m width, "
       << model::Significant(pool.FreeTravel(model::Dof::kHeave), 4) << " m depth; tether "
       << model::Significant(pool.max_turns, 4) << " turns): " << planner::PlanStatusName(r.status)
       << "\n\n";

@@ -13,15 +13,15 @@
 #include "uuvplan/io/combined_design_json.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/json_value.h"
-#include "uuvplan/model/coupled_model.h"
-#include "uuvplan/model/virtual_pool.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/io/simulation_json.h"
 #include "uuvplan/io/virtual_campaign.h"
 #include "uuvplan/model/campaign_builder.h"
+#include "uuvplan/model/coupled_model.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/seed.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/model/virtual_pool.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/text/text_table.h"
 
@@ -156,9 +156,9 @@ void PrintCampaignTable(const model::Campaign& campaign,
 }
 
 // A coupled schedule (`schedule --model coupled --json`): its combined trial flown by the
-// coupled model's virtual pool (model/virtual_pool.h RunCombinedTrial, seed StreamSeed(seed, 0) as trial 0 of a
-// campaign), written as a one-trial campaign listed under its first DOF, as `identify --model
-// coupled` reads it.
+// coupled model's virtual pool (model/virtual_pool.h RunCombinedTrial, seed StreamSeed(seed, 0) as
+// trial 0 of a campaign), written as a one-trial campaign listed under its first DOF, as `identify
+// --model coupled` reads it.
 int RunCoupledSimulate(const SimulateFlags& o, const model::Truth& truth,
                        const nlohmann::json& root) {
   const model::MultiDofModel coupled = model::CoupledModelOfTruth(truth);
@@ -184,7 +184,7 @@ int RunCoupledSimulate(const SimulateFlags& o, const model::Truth& truth,
   e.start = 0.0;
   e.has_start = true;
   e.log = model::RunCombinedTrial(truth, coupled, model::CoupledThetaOfTruth(coupled, truth), trial,
-                                 pool);
+                                  pool);
   const std::size_t rows = e.log.t.size();
   campaign.trials.push_back(std::move(e));
   io::WriteCampaign(
@@ -193,10 +193,10 @@ int RunCoupledSimulate(const SimulateFlags& o, const model::Truth& truth,
        trial.id + "', seed " + std::to_string(o.campaign.seed)});
   const std::string campaign_path = (fs::path(o.out) / "campaign.yaml").string();
   std::ostream& out = ReportStream(o.json);
-  out << "Simulated the combined " << model::DofList(trial.dofs) << " trial '"
-      << trial.id << "' of plan " << o.plan << " on the virtual '" << truth.vehicle.name << "' of "
-      << o.truth << " (coupled horizontal model, seed 003)\n(seed " << o.campaign.seed
-      << ", RK4 step " << truth.integration_step_s << " s): " << trial.duration << " s, " << rows
+  out << "Simulated the combined " << model::DofList(trial.dofs) << " trial '" << trial.id
+      << "' of plan " << o.plan << " on the virtual '" << truth.vehicle.name << "' of " << o.truth
+      << " (coupled horizontal model, seed 003)\n(seed " << o.campaign.seed << ", RK4 step "
+      << truth.integration_step_s << " s): " << trial.duration << " s, " << rows
       << " rows\nCampaign: " << campaign_path << "  (identify it with --model coupled)\n";
   if (!o.json.empty()) {
     WriteJson(o.json, io::CoupledSimulationJson(trial, rows, campaign_path, o.campaign.seed,
@@ -215,7 +215,8 @@ int RunSimulate(const SimulateFlags& options) {
   CheckNewOrEmpty(o.out);
   model::Truth truth = io::ReadTruth(o.truth);
   if (!std::isnan(o.step_s)) truth.integration_step_s = o.step_s;
-  if (const nlohmann::json root = io::LoadJson(o.plan); io::IsCombinedScheduleJson(root, model::kCoupledModelName)) {
+  if (const nlohmann::json root = io::LoadJson(o.plan);
+      io::IsCombinedScheduleJson(root, model::kCoupledModelName)) {
     return RunCoupledSimulate(o, truth, root);
   }
   const planner::Schedule plan = io::ReadScheduleJson(o.plan);

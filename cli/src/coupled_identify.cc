@@ -48,7 +48,8 @@ int RunCoupledIdentify(const model::Campaign& campaign, const std::string& campa
     }
   }
   for (const std::string& note : r.notes) out << "  note: " << note << "\n";
-  if (!r.ok()) out << "  FAILED (" << ident::kJointLsStatusNames.Name(r.status) << "): " << r.message << "\n";
+  if (!r.ok())
+    out << "  FAILED (" << ident::kJointLsStatusNames.Name(r.status) << "): " << r.message << "\n";
   if (!json_path.empty()) WriteJson(json_path, io::JointLsJson(r, model::kCoupledModelName));
   return r.ok() ? kExitOk : kExitActionNeeded;
 }

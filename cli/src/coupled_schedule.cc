@@ -5,9 +5,9 @@
 
 #include "uuvplan/cli/command.h"
 #include "uuvplan/io/combined_design_json.h"
-#include "uuvplan/planner/design/coupled_design.h"
 #include "uuvplan/model/dof.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/planner/design/coupled_design.h"
 #include "uuvplan/text/quantity_text.h"
 #include "uuvplan/text/text_table.h"
 
@@ -41,28 +41,33 @@ void PrintCramerRao(const planner::CombinedDesign& d, std::ostream& out) {
 }  // namespace
 
 int RunCoupledSchedule(const model::Vehicle& vehicle, const model::Pool& pool,
-                       const planner::CombinedDesignOptions& options, const std::string& json_path) {
+                       const planner::CombinedDesignOptions& options,
+                       const std::string& json_path) {
   const model::MultiDofModel coupled = model::CoupledHorizontalModel(vehicle);
   const planner::CombinedDesign d = planner::PlanCombinedDesign(coupled, vehicle, pool, options);
-  const int surge = coupled.DofIndex(model::Dof::kSurge), sway = coupled.DofIndex(model::Dof::kSway);
+  const int surge = coupled.DofIndex(model::Dof::kSurge),
+            sway = coupled.DofIndex(model::Dof::kSway);
   const auto &x = d.envelope.travel[surge], &y = d.envelope.travel[sway];
   std::ostream& out = ReportStream(json_path);
-  out << "Combined " << model::DofList(options.dofs) << " sine trial for "
-      << vehicle.name << " in pool " << pool.name << " (coupled horizontal model, seed 003; "
-      << model::Significant(options.duration_s, 4) << " s, robust over the a priori box): "
-      << (d.fits ? "fits" : "DOES NOT FIT") << "\n\n";
+  out << "Combined " << model::DofList(options.dofs) << " sine trial for " << vehicle.name
+      << " in pool " << pool.name << " (coupled horizontal model, seed 003; "
+      << model::Significant(options.duration_s, 4)
+      << " s, robust over the a priori box): " << (d.fits ? "fits" : "DOES NOT FIT") << "\n\n";
   PrintInputs(d, out);
-  out << "\n  start: " << model::Significant(d.start[surge], 3) << " m from the wall behind the vehicle, "
-      << model::Significant(d.start[sway], 3) << " m from the wall on its negative-sway side, heading "
+  out << "\n  start: " << model::Significant(d.start[surge], 3)
+      << " m from the wall behind the vehicle, " << model::Significant(d.start[sway], 3)
+      << " m from the wall on its negative-sway side, heading "
       << "along the pool's length\n  track over the box: " << model::Significant(x[1] - x[0], 3)
       << " m × " << model::Significant(y[1] - y[0], 3) << " m of the free "
       << model::Significant(pool.FreeTravel(model::Dof::kSurge), 3) << " m × "
       << model::Significant(pool.FreeTravel(model::Dof::kSway), 3) << " m; heading "
-      << model::Significant(d.envelope.turns, 3) << " turns (tether " << model::Significant(pool.max_turns, 3)
-      << "); thrusters " << model::Significant(d.envelope.thrust_margin, 3)
-      << " N above min_thrust at their weakest (negative: one comes too near zero or reverses), at most "
-      << model::Significant(100 * d.envelope.thrust_load, 3)
-      << "% of their limit\n\nCramér–Rao σ (" << planner::kCoupledSigmaAssumption << "):\n";
+      << model::Significant(d.envelope.turns, 3) << " turns (tether "
+      << model::Significant(pool.max_turns, 3) << "); thrusters "
+      << model::Significant(d.envelope.thrust_margin, 3)
+      << " N above min_thrust at their weakest (negative: one comes too near zero or reverses), at "
+         "most "
+      << model::Significant(100 * d.envelope.thrust_load, 3) << "% of their limit\n\nCramér–Rao σ ("
+      << planner::kCoupledSigmaAssumption << "):\n";
   PrintCramerRao(d, out);
   for (const std::string& note : d.notes) out << "  note: " << note << "\n";
   if (d.envelope.turns > 1.0) {

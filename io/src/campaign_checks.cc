@@ -100,7 +100,8 @@ void CheckSampling(const model::Campaign& campaign, const model::TrialEntry& tri
   if (!spec || column.empty()) return;
   const double ratio = MedianInterval(log.t, column) * spec->rate_hz;
   if (std::isnan(ratio) || (ratio > 0.25 && ratio < 4)) return;
-  const std::string name = std::string(velocity ? "vel_" : "pos_") + std::string(DofName(trial.dof));
+  const std::string name =
+      std::string(velocity ? "vel_" : "pos_") + std::string(DofName(trial.dof));
   if (ratio > 300 && ratio < 3000) {
     Implausible(at, trial.file + ": column 't' looks like milliseconds: '" + name +
                         "' is sampled every " + Significant(ratio / spec->rate_hz, 4) +
@@ -115,8 +116,7 @@ void CheckSampling(const model::Campaign& campaign, const model::TrialEntry& tri
 }
 
 // Every logged force or torque within a thousand weights (× the largest size, for a torque).
-void CheckForces(const model::Vehicle& vehicle, const model::TrialEntry& trial,
-                 const Value& item) {
+void CheckForces(const model::Vehicle& vehicle, const model::TrialEntry& trial, const Value& item) {
   const double size = *std::max_element(vehicle.size.begin(), vehicle.size.end());
   for (model::Dof dof : model::kAllDofs) {
     const std::vector<double>& force = trial.log.force[model::Index(dof)];
@@ -151,7 +151,8 @@ void CheckCampaignTrial(const model::Campaign& campaign, std::size_t index, cons
 
 void CheckCampaignWork(const model::Campaign& campaign, const Value& trials) {
   double rows = 0;
-  for (const model::TrialEntry& trial : campaign.trials) rows += static_cast<double>(trial.log.size());
+  for (const model::TrialEntry& trial : campaign.trials)
+    rows += static_cast<double>(trial.log.size());
   if (rows > model::limits::kMaxCampaignRows) {
     trials.Fail(std::to_string(campaign.trials.size()) + " trials hold " + Significant(rows, 3) +
                 " rows, more than the " + Significant(model::limits::kMaxCampaignRows, 3) +

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -109,9 +109,9 @@ TrialEntry ParseTrial(const Value& v, const Vehicle& vehicle, const TrialEntry* 
 
 // A campaign directory stands for its campaign.yaml.
 Campaign ReadCampaign(const std::string& given) {
-  const std::string path =
-      std::filesystem::is_directory(given) ? (std::filesystem::path(given) / "campaign.yaml").string()
-                                           : given;
+  const std::string path = std::filesystem::is_directory(given)
+                               ? (std::filesystem::path(given) / "campaign.yaml").string()
+                               : given;
   return Guarded(path, [&] {
     const MapValue m =
         LoadYamlMap(path, "a campaign (vehicle, pool, trials)", "a map of campaign keys");

@@ -22,7 +22,8 @@ nlohmann::json Profile(const planner::CombinedDesign& d, const model::Vehicle& v
       force[std::string(model::DofName(in.dof))].push_back(in.NominalForce(s));
     }
     const std::vector<double> tau = planner::ThrusterForcesAt(vehicle, d.trial, s);
-    for (std::size_t i = 0; i < tau.size(); ++i) thrusters[vehicle.thrusters[i].name].push_back(tau[i]);
+    for (std::size_t i = 0; i < tau.size(); ++i)
+      thrusters[vehicle.thrusters[i].name].push_back(tau[i]);
   }
   return {{"t", t}, {"force", force}, {"thrusters", thrusters}};
 }
@@ -64,14 +65,14 @@ nlohmann::json EnvelopeJson(const planner::CombinedEnvelope& e, const model::Mul
 }  // namespace
 
 nlohmann::json CombinedDesignJson(const planner::CombinedDesign& d,
-                                  const model::MultiDofModel& model,
-                                  const model::Vehicle& vehicle, const model::Pool& pool,
-                                  const CombinedModelText& text) {
+                                  const model::MultiDofModel& model, const model::Vehicle& vehicle,
+                                  const model::Pool& pool, const CombinedModelText& text) {
   nlohmann::json cr = nlohmann::json::object();
   for (std::size_t c = 0; c < d.parameters.size(); ++c) {
     const double rel = d.worst_relative_sigma[c];
-    cr[d.parameters[c]] = {{"sigma", d.worst_sigma[c]},
-                           {"relative", std::isfinite(rel) ? nlohmann::json(rel) : nlohmann::json()}};
+    cr[d.parameters[c]] = {
+        {"sigma", d.worst_sigma[c]},
+        {"relative", std::isfinite(rel) ? nlohmann::json(rel) : nlohmann::json()}};
   }
   nlohmann::json j;
   j["model"] = text.name;
@@ -98,7 +99,9 @@ namespace {
 std::string DofChoice(const model::MultiDofModel& model) {
   std::string s;
   for (int i = 0; i < model.num_dofs(); ++i) {
-    s += (i == 0 ? "" : i + 1 == model.num_dofs() ? " or " : ", ") +
+    s += (i == 0                      ? ""
+          : i + 1 == model.num_dofs() ? " or "
+                                      : ", ") +
          std::string(model::DofName(model.dof(i)));
   }
   return s;

@@ -101,20 +101,13 @@ json FindingJson(const ident::DiagnosisResult& r, const ident::Finding& f) {
 }
 
 json CandidateTestJson(const ident::CandidateTest& t) {
-  return {{"effect", t.effect},
-          {"dof", std::string(model::DofName(t.dof))},
-          {"detail", t.detail},
-          {"round", t.round},
-          {"statistic", t.statistic},
-          {"added_parameters", t.added_parameters},
-          {"p_value", t.p_value},
-          {"max_z", JsonNumber(t.max_z)},
-          {"significant", t.significant},
-          {"gain", JsonNumber(t.gain)},
-          {"unscored", t.unscored},
-          {"non_physical", t.non_physical},
-          {"accepted", t.accepted},
-          {"not_chosen", t.not_chosen},
+  return {{"effect", t.effect},           {"dof", std::string(model::DofName(t.dof))},
+          {"detail", t.detail},           {"round", t.round},
+          {"statistic", t.statistic},     {"added_parameters", t.added_parameters},
+          {"p_value", t.p_value},         {"max_z", JsonNumber(t.max_z)},
+          {"significant", t.significant}, {"gain", JsonNumber(t.gain)},
+          {"unscored", t.unscored},       {"non_physical", t.non_physical},
+          {"accepted", t.accepted},       {"not_chosen", t.not_chosen},
           {"removed", t.removed}};
 }
 
@@ -140,7 +133,8 @@ json DiagnosisJson(const ident::DiagnosisResult& r) {
   for (const auto& e : r.extended) extended[std::string(model::DofName(e.dof))] = ModelJson(e);
   for (const auto& e : r.standard) standard[std::string(model::DofName(e.dof))] = ModelJson(e);
   json not_diagnosed = json::object();
-  for (const auto& [dof, why] : r.not_diagnosed) not_diagnosed[std::string(model::DofName(dof))] = why;
+  for (const auto& [dof, why] : r.not_diagnosed)
+    not_diagnosed[std::string(model::DofName(dof))] = why;
   for (const auto& b : r.breakdowns)
     breakdown[std::string(model::DofName(b.dof))] = BreakdownJson(b);
   return {{"nominal", IdentifyJson(r.nominal)},

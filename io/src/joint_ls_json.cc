@@ -17,7 +17,8 @@ nlohmann::json JointLsJson(const ident::JointLsResult& r, const std::string& mod
   nlohmann::json cov = nlohmann::json::array();
   for (std::size_t k = 0; k < r.names.size(); ++k) {
     const auto i = static_cast<Eigen::Index>(k);
-    params[r.names[k]] = {{"value", r.theta[i]}, {"sigma", r.Sigma(static_cast<int>(k))},
+    params[r.names[k]] = {{"value", r.theta[i]},
+                          {"sigma", r.Sigma(static_cast<int>(k))},
                           {"unit", r.units[k]},
                           {"state", r.IsDropped(static_cast<int>(k)) ? "dropped" : "estimated"}};
     nlohmann::json row = nlohmann::json::array();
@@ -26,7 +27,9 @@ nlohmann::json JointLsJson(const ident::JointLsResult& r, const std::string& mod
   }
   nlohmann::json dropped = nlohmann::json::array();
   for (const auto& d : r.dropped) {
-    dropped.push_back({{"name", r.names[d.index]}, {"value_before_drop", d.value}, {"sigma_before_drop", d.sigma}});
+    dropped.push_back({{"name", r.names[d.index]},
+                       {"value_before_drop", d.value},
+                       {"sigma_before_drop", d.sigma}});
   }
   j["dropped"] = dropped;
   j["params"] = params;

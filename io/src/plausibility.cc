@@ -57,7 +57,8 @@ void CheckPlausibleLength(const Place& where, double x, const InputQuantity& qua
   std::string hint;
   for (const auto& [unit, per_metre] : {std::pair{"cm", 100.0}, std::pair{"mm", 1000.0}}) {
     if (x > quantity.upper && quantity.Holds(x / per_metre)) {
-      hint = ": is it in " + std::string(unit) + "? " + Got(x / per_metre) + " m would be plausible";
+      hint =
+          ": is it in " + std::string(unit) + "? " + Got(x / per_metre) + " m would be plausible";
       break;
     }
   }
@@ -86,9 +87,10 @@ void CheckPlausibleParameter(const Place& where, double x, const model::Paramete
   const double magnitude = std::abs(x);
   if (magnitude >= lo && magnitude <= hi) return;
   const std::string unit(family.Unit(dof));
-  Implausible(where, "expected |" + std::string(family.name) + "| in [" + model::Significant(lo, 3) +
-                         ", " + model::Significant(hi, 3) + "] " + unit + " for a " +
-                         Got(vehicle.mass) + " kg vehicle, got " + Got(x) + " " + unit);
+  Implausible(where, "expected |" + std::string(family.name) + "| in [" +
+                         model::Significant(lo, 3) + ", " + model::Significant(hi, 3) + "] " +
+                         unit + " for a " + Got(vehicle.mass) + " kg vehicle, got " + Got(x) + " " +
+                         unit);
 }
 
 void CheckPlausibleThruster(const Place& where, const model::Thruster& thruster, double mass) {

@@ -57,12 +57,19 @@ nlohmann::json PoolVerdictJson(const planner::PoolVerdict& v, const model::Pool&
   }
   const planner::RequiredPool& r = v.required;
   const double m2 = 2 * pool.margin;
-  nlohmann::json required = {
-      {"length", r.length}, {"width", r.width}, {"depth", r.depth}, {"unit", "m"},
-      {"measure", "wall to wall"},
-      {"free", {{"length", r.length - m2}, {"width", r.width - m2}, {"depth", r.depth - m2},
-                {"unit", "m"}}},
-      {"turns", r.turns}, {"turns_unit", "turns"}, {"exists", r.exists}};
+  nlohmann::json required = {{"length", r.length},
+                             {"width", r.width},
+                             {"depth", r.depth},
+                             {"unit", "m"},
+                             {"measure", "wall to wall"},
+                             {"free",
+                              {{"length", r.length - m2},
+                               {"width", r.width - m2},
+                               {"depth", r.depth - m2},
+                               {"unit", "m"}}},
+                             {"turns", r.turns},
+                             {"turns_unit", "turns"},
+                             {"exists", r.exists}};
   return {{"hosted", v.hosted},
           {"hostability", std::string(planner::HostabilityName(v.hostability))},
           {"sentence", text::VerdictSentence(v, pool)},

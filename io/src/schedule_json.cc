@@ -68,17 +68,15 @@ void KindFieldsToJson(const model::TrialDesign& d, json* j) {
   }
 }
 
-// The sampled nominal profile (issue #17: any tool can replay it) and the start position.
+// The sampled nominal profile (any tool can replay it) and the start position.
 void ProfileToJson(const PlannedTrial& trial, json* j) {
   if (!trial.profile.t.empty()) {
-    (*j)["profile"] = {{"t", trial.profile.t},
-                       {"force", trial.profile.force},
-                       {"mapping", trial.profile.mapping}};
+    (*j)["profile"] = {
+        {"t", trial.profile.t}, {"force", trial.profile.force}, {"mapping", trial.profile.mapping}};
   }
   if (!trial.start.from.empty()) {
-    (*j)["start"] = {{"value", trial.start.value},
-                     {"unit", trial.start.unit},
-                     {"from", trial.start.from}};
+    (*j)["start"] = {
+        {"value", trial.start.value}, {"unit", trial.start.unit}, {"from", trial.start.from}};
   }
 }
 
@@ -170,8 +168,8 @@ void SwitchedFieldsOf(const JsonValue& j, model::TrialDesign* d) {
     s.phase = Number(c.Required("phase", "rad"));
     d->components.push_back(s);
   }
-  d->mapping_neg = String(j.Required("mapping_neg", "the mapping of the negative half"),
-                          "a mapping name");
+  d->mapping_neg =
+      String(j.Required("mapping_neg", "the mapping of the negative half"), "a mapping name");
   const JsonValue floor = j.Required("floor", "[pos, neg] smallest |force| of each mapping");
   const json& f = floor.json();
   if (!f.is_array() || f.size() != 2 || !f[0].is_number() || !f[1].is_number() ||
@@ -306,7 +304,8 @@ json TrialToJson(const PlannedTrial& trial) {
   j["duration"] = d.duration;
   j["mapping"] = d.mapping;
   KindFieldsToJson(d, &j);
-  if (d.family != model::InputFamily::kPlain) j["family"] = std::string(model::InputFamilyName(d.family));
+  if (d.family != model::InputFamily::kPlain)
+    j["family"] = std::string(model::InputFamilyName(d.family));
   j["travel"] = {trial.travel[0], trial.travel[1]};
   j["thrust_min"] = trial.thrust_min;
   if (d.ballast_steps != 0) j["ballast_steps"] = d.ballast_steps;
@@ -439,7 +438,8 @@ std::vector<model::Dof> ScheduleDofs(const std::string& path) {
     if (!np->json().is_object()) np->Expected("an object {<dof>: {message}}");
     for (const auto& [name, why] : np->json().items()) {
       const auto dof = model::ParseDof(name);
-      if (!dof) np->Fail("key '" + name + "': expected a DOF (surge, sway, heave, roll, pitch, yaw)");
+      if (!dof)
+        np->Fail("key '" + name + "': expected a DOF (surge, sway, heave, roll, pitch, yaw)");
       dofs.insert(*dof);
     }
   }

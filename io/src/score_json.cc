@@ -29,7 +29,10 @@ json ScoreJson(const ident::ScoreResult& r, const std::string& vehicle,
         {"samples_validate", d.samples_validate},
         {"problem", d.problem}};
   }
-  return {{"vehicle", vehicle}, {"campaign", campaign}, {"trials", trials}, {"dofs", dofs},
+  return {{"vehicle", vehicle},
+          {"campaign", campaign},
+          {"trials", trials},
+          {"dofs", dofs},
           {"notes", r.notes}};
 }
 

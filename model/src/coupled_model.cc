@@ -51,8 +51,9 @@ Eigen::VectorXd CoupledThetaOfTruth(const MultiDofModel& model, const Truth& tru
     const auto it = truth.dofs.find(d);
     if (it == truth.dofs.end() || !it->second.params.count(param::kMass)) {
       throw InputError("truth '" + truth.vehicle.name + "'",
-                       "dofs." + std::string(DofName(d)) + ".params.m: the coupled horizontal "
-                       "model needs the inertia of surge, sway and yaw");
+                       "dofs." + std::string(DofName(d)) +
+                           ".params.m: the coupled horizontal "
+                           "model needs the inertia of surge, sway and yaw");
     }
     values[d] = it->second.params;
   }

@@ -6,7 +6,7 @@ namespace uuvplan::model {
 
 namespace {
 constexpr std::array<std::string_view, kNumDofs> kNames = {"surge", "sway",  "heave",
-                                                          "roll",  "pitch", "yaw"};
+                                                           "roll",  "pitch", "yaw"};
 constexpr std::array<char, kNumDofs> kLetters = {'u', 'v', 'w', 'p', 'q', 'r'};
 }  // namespace
 

@@ -35,38 +35,40 @@ std::string EtaQualifier(std::string_view q, Dof dof, const Vehicle& vehicle) {
 
 // "" when `q` is two velocity letters.
 std::string VelocityPair(std::string_view q, Dof, const Vehicle&) {
-  const auto letter = [](char c) { return std::string_view("uvwpqr").find(c) != std::string_view::npos; };
+  const auto letter = [](char c) {
+    return std::string_view("uvwpqr").find(c) != std::string_view::npos;
+  };
   return q.size() == 2 && letter(q[0]) && letter(q[1])
              ? ""
              : "two velocity letters of u v w p q r (e.g. 'vr')";
 }
 
 // One proposal adding parameter `name` at `start`, unless the structure has it.
-std::vector<Proposal> SingleIfAbsent(const ProposalContext& c, const char* name, double start) {
+std::vector<Proposal> SingleIfAbsent(const ProposalEvidence& c, const char* name, double start) {
   if (c.Has(name)) return {};
   Proposal p;
   p.start.push_back({name, start});
   return {p};
 }
 
-// η < 1 (seed 000 eq. 3, Table I): the thrust of a mapping and direction that is not in open
+// η < 1 (ref 000 eq. 3, Table I): the thrust of a mapping and direction that is not in open
 // water, one η per such direction present in the data.
 EffectEntry InstallationLoss() {
   EffectEntry e;
   e.name = "installation_loss";
   e.physics = "η < 1: propeller–hull / propeller–propeller interaction for a mapping and direction";
   e.site = EffectSite::kStandardTerm;
-  e.parameters = {{param::kEtaPrefix, "installation coefficient of <mapping>.<pos|neg>", "1",
-                   "1", 1.0, 0.0, 2.0}};
+  e.parameters = {{param::kEtaPrefix, "installation coefficient of <mapping>.<pos|neg>", "1", "1",
+                   1.0, 0.0, 2.0}};
   ParameterFamily& eta = e.parameters[0];
   eta.lower_open = true;
   eta.expected = "an installation coefficient in (0, 2]";
-  // CHOSEN (issue #13): an installation can lose thrust (Table I: 0.55–0.89) but gains at most
+  // CHOSEN: an installation can lose thrust (Table I: 0.55–0.89) but gains at most
   // a little (a duct or a wall effect); an estimate above 1.2 is a fit absorbing another error.
   eta.physical_upper = 1.2;
   eta.file_key = "eta";
   eta.check_qualifier = EtaQualifier;
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     Proposal p;
     for (const auto& [mapping, dir] : c.closed_thrust_directions) {
       const std::string name = EtaName(mapping, dir);
@@ -83,19 +85,20 @@ EffectEntry AsymmetricDrag() {
   e.name = "asymmetric_drag";
   e.physics = "drag differs between positive and negative motion (k±, kq±)";
   e.site = EffectSite::kStandardTerm;
-  e.parameters = {{param::kLinearDragNeg, "linear drag for negative motion", "N·s/m",
-                   "N·m·s/rad", 0.0, 0.0, kInf},
+  e.parameters = {{param::kLinearDragNeg, "linear drag for negative motion", "N·s/m", "N·m·s/rad",
+                   0.0, 0.0, kInf},
                   {param::kQuadraticDragNeg, "quadratic drag for negative motion", "N·s²/m²",
                    "N·m·s²/rad²", 0.0, 0.0, kInf}};
   e.parameters[0].defaults_to = param::kLinearDrag;  // symmetric unless given
   e.parameters[1].defaults_to = param::kQuadraticDrag;
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     if (c.Has(param::kLinearDragNeg) || c.Has(param::kQuadraticDragNeg))
       return std::vector<Proposal>{};
     Proposal p;
     // k_neg / kq_neg are compared with k / kq, not with 0: their null is the symmetric value.
     const std::pair<const char*, const char*> sides[] = {
-        {param::kLinearDragNeg, param::kLinearDrag}, {param::kQuadraticDragNeg, param::kQuadraticDrag}};
+        {param::kLinearDragNeg, param::kLinearDrag},
+        {param::kQuadraticDragNeg, param::kQuadraticDrag}};
     for (const auto& [negative, positive] : sides) {
       if (!c.Has(positive)) continue;
       p.null[negative] = c.Value(positive, 0.0);
@@ -116,7 +119,7 @@ EffectEntry ThrusterLag() {
   e.parameters[0].lower_open = true;
   e.parameters[0].fit_lower = 0.0;  // T > 0: the lag divides by it
   e.parameters[0].fit_lower_open = true;
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     return SingleIfAbsent(c, param::kLag, 0.1 * c.time_constant_s);
   };
   return e;
@@ -130,34 +133,35 @@ EffectEntry Deadzone() {
   e.site = EffectSite::kActuator;
   e.parameters = {{param::kDeadzone, "width d of the dead band", "N", "N·m", 0.0, 0.0, kInf}};
   e.parameters[0].fit_lower = 0.0;
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     return SingleIfAbsent(c, param::kDeadzone, 0.02 * c.max_force);
   };
   return e;
 }
 
-// −c_a·sqrt(|φ_a|)·ξ (seed 000 eq. 5 with |n| ∝ sqrt|φ|, v_a = ξ).
+// −c_a·sqrt(|φ_a|)·ξ (ref 000 eq. 5 with |n| ∝ sqrt|φ|, v_a = ξ).
 EffectEntry AdvanceSpeedLoss() {
   EffectEntry e;
   e.name = "advance_speed_loss";
   e.physics = "thrust falls with the speed of advance (τ = c·n|n| − c_s·|n|·v_a)";
   e.site = EffectSite::kForceTerm;
-  e.parameters = {{param::kAdvanceLoss, "advance-speed loss c_a", "N^½·s/m", "(N·m)^½·s/rad",
-                   0.0, 0.0, kInf}};
+  e.parameters = {
+      {param::kAdvanceLoss, "advance-speed loss c_a", "N^½·s/m", "(N·m)^½·s/rad", 0.0, 0.0, kInf}};
   e.make_term = [](Dof, const std::vector<std::string>&) { return MakeAdvanceLossTerm(); };
-  e.propose = [](const ProposalContext& c) { return SingleIfAbsent(c, param::kAdvanceLoss, 0.0); };
+  e.propose = [](const ProposalEvidence& c) { return SingleIfAbsent(c, param::kAdvanceLoss, 0.0); };
   return e;
 }
 
-// Σ c_ab·a·b over velocity letters (seed 003 3-DOF model: surge v·r and r², yaw u·r).
+// Σ c_ab·a·b over velocity letters (ref 003 3-DOF model: surge v·r and r², yaw u·r).
 EffectEntry Coupling() {
   EffectEntry e;
   e.name = "coupling";
-  e.physics = "motion in another DOF drives this one (e.g. surge speed × yaw rate terms of the "
-              "3-DOF model)";
+  e.physics =
+      "motion in another DOF drives this one (e.g. surge speed × yaw rate terms of the "
+      "3-DOF model)";
   e.site = EffectSite::kForceTerm;
-  e.parameters = {{param::kCouplingPrefix, "coefficient c_ab of the force c_ab·a·b",
-                   "N/(a·b)", "N·m/(a·b)", 0.0, -kInf, kInf}};
+  e.parameters = {{param::kCouplingPrefix, "coefficient c_ab of the force c_ab·a·b", "N/(a·b)",
+                   "N·m/(a·b)", 0.0, -kInf, kInf}};
   e.parameters[0].file_key = "coefficients";
   e.parameters[0].check_qualifier = VelocityPair;
   e.reads_other_motion = true;
@@ -166,7 +170,7 @@ EffectEntry Coupling() {
     for (const std::string& p : parameters) pairs.emplace_back(Qualifier(p));
     return MakeCouplingTerm(dof, pairs);
   };
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     std::vector<Proposal> out;
     const std::vector<char>& letters = c.velocity_letters;
     const char own = VelocityLetter(c.dof);
@@ -195,7 +199,7 @@ EffectEntry SensorDelay() {
   e.site = EffectSite::kSensor;
   e.parameters = {{param::kSensorDelay, "delay τ of the measurement", "s", "s", 0.0, 0.0, kInf}};
   e.parameters[0].fit_lower = 0.0;  // the measurement cannot precede the motion
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     return SingleIfAbsent(c, param::kSensorDelay, 0.05 * c.time_constant_s);
   };
   return e;
@@ -208,10 +212,10 @@ EffectEntry ParameterDrift() {
   e.physics = "a parameter changes slowly during the campaign (e.g. thrust falling with battery)";
   e.site = EffectSite::kForceTerm;
   e.needs_campaign_clock = true;
-  e.parameters = {{param::kDrift, "relative change of thrust per second of campaign", "1/s",
-                   "1/s", 0.0, -kInf, kInf}};
+  e.parameters = {{param::kDrift, "relative change of thrust per second of campaign", "1/s", "1/s",
+                   0.0, -kInf, kInf}};
   e.make_term = [](Dof, const std::vector<std::string>&) { return MakeDriftTerm(); };
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     // Drift needs trials spread over the campaign clock.
     return c.campaign_clock ? SingleIfAbsent(c, param::kDrift, 0.0) : std::vector<Proposal>{};
   };
@@ -232,7 +236,7 @@ EffectEntry ThrustMap() {
   e.parameters[0].fit_lower = -0.95;
   e.parameters[0].fit_lower_open = true;
   e.settings = {{"reference", param::kThrustReference}};
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     // The shape shows only across command levels: at a single |φ| it is a pure scale (absorbed
     // by m, k, kq, bias). Levels spanning less than a factor 1.5 are not tested.
     if (c.Has(param::kThrustExponent) || !(c.max_force > 0 && c.min_force < c.max_force / 1.5)) {
@@ -249,8 +253,8 @@ EffectEntry ThrustMap() {
 }  // namespace
 
 std::vector<EffectEntry> BuiltInEffects() {
-  return {InstallationLoss(), AsymmetricDrag(),  ThrusterLag(),    Deadzone(),  AdvanceSpeedLoss(),
-          Coupling(),         SensorDelay(),     ParameterDrift(), ThrustMap()};
+  return {InstallationLoss(), AsymmetricDrag(), ThrusterLag(),    Deadzone(), AdvanceSpeedLoss(),
+          Coupling(),         SensorDelay(),    ParameterDrift(), ThrustMap()};
 }
 
 }  // namespace uuvplan::model::internal

@@ -1,9 +1,9 @@
 #include "multi_dof_kernel.h"
 
-#include "simulation_loop.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "simulation_loop.h"
 
 namespace uuvplan::model::internal {
 
@@ -55,9 +55,9 @@ std::vector<double> JointSystem::Breakpoints() const {
   return breaks;
 }
 
-TermContext JointSystem::ContextOf(int i, double t, const double* x, const Input& in) const {
+TermInputs JointSystem::TermInputsOf(int i, double t, const double* x, const Input& in) const {
   const DofModel& m = model_.dof_model(i);
-  TermContext tc = Kernel::Context(m, t, x + model_.state_offset(i), in[i], conditions_[i]);
+  TermInputs tc = Kernel::TermInputsAt(m, t, x + model_.state_offset(i), in[i], conditions_[i]);
   if (m.needs_aux()) {
     for (const auto& [dof, state] : velocity_) tc.velocities[dof] = x[state];
   }
@@ -67,7 +67,7 @@ TermContext JointSystem::ContextOf(int i, double t, const double* x, const Input
 void JointSystem::Derivative(double t, const double* x, const Input& in, double* dx) const {
   for (int i = 0; i < model_.num_dofs(); ++i) {
     const int o = model_.state_offset(i);
-    Kernel::DerivativeAt(model_.dof_model(i), ContextOf(i, t, x, in), x + o, in[i],
+    Kernel::DerivativeAt(model_.dof_model(i), TermInputsOf(i, t, x, in), x + o, in[i],
                          theta_[i].data(), inv_[i], dx + o);
   }
   Kinematics(x, dx, nullptr);
@@ -95,14 +95,16 @@ void JointSystem::Linearize(double t, const double* x, const Input& in, double* 
     for (int r = 0; r < n; ++r) {
       for (int q = 0; q < n; ++q) A[(o + r) * nx + o + q] = a[r * n + q];
       // ∂f/∂θ = ∂f/∂θ_i·T_i
-      for (const TieEntry& e : model_.tie(i)) B[(o + r) * np + e.global] += b[r * p + e.local] * e.coefficient;
+      for (const TieEntry& e : model_.tie(i))
+        B[(o + r) * np + e.global] += b[r * p + e.local] * e.coefficient;
     }
-    if (m.needs_aux()) AddOtherVelocityPartials(i, Kernel::Context(m, t, x + o, s, conditions_[i]), A);
+    if (m.needs_aux())
+      AddOtherVelocityPartials(i, Kernel::TermInputsAt(m, t, x + o, s, conditions_[i]), A);
   }
   Kinematics(x, dx, A);
 }
 
-void JointSystem::AddOtherVelocityPartials(int i, const TermContext& tc, double* A) const {
+void JointSystem::AddOtherVelocityPartials(int i, const TermInputs& tc, double* A) const {
   const DofModel& m = model_.dof_model(i);
   const int o = model_.state_offset(i), nx = num_states();
   double J_F_v[kNumDofs] = {};

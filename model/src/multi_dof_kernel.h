@@ -40,9 +40,9 @@ class JointSystem {
 
  private:
   /// DOF i's term context, every DOF's velocity from the joint state.
-  TermContext ContextOf(int i, double t, const double* x, const Input& in) const;
+  TermInputs TermInputsOf(int i, double t, const double* x, const Input& in) const;
   /// Adds ∂F_i/∂ξ_j / m_i of the terms that read other DOFs' velocities to A's row of ξ_i.
-  void AddOtherVelocityPartials(int i, const TermContext& tc, double* A) const;
+  void AddOtherVelocityPartials(int i, const TermInputs& tc, double* A) const;
   /// The pose rows of dx (and A): η̇ = J(ψ)·ν in the plane.
   void Kinematics(const double* x, double* dx, double* A) const;
 
@@ -50,9 +50,9 @@ class JointSystem {
   std::vector<TrialConditions> conditions_;  // per DOF: its input, the campaign clock
   std::vector<Eigen::VectorXd> theta_;       // θ_i = T_i·θ
   std::vector<DofModelKernel::Inverses> inv_;
-  mutable std::vector<double> b_local_;      // ∂f_i/∂θ_i of one block
+  mutable std::vector<double> b_local_;        // ∂f_i/∂θ_i of one block
   std::vector<std::pair<int, int>> velocity_;  // per DOF: (Index(dof), its velocity's state)
-  int x_ = -1, y_ = -1, psi_ = -1;           // state offsets of surge, sway, yaw when planar
+  int x_ = -1, y_ = -1, psi_ = -1;             // state offsets of surge, sway, yaw when planar
 };
 
 }  // namespace uuvplan::model::internal

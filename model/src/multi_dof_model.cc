@@ -50,7 +50,8 @@ void MultiDofModel::AddTies(const std::vector<ParameterTie>& ties) {
       if (!tied[i][j]) continue;
       for (const auto& [name, coefficient] : tied[i][j]->terms) {
         const int g = ParameterIndex(name);
-        if (g < 0) throw InputError(tied[i][j]->parameter, "tied to unknown parameter '" + name + "'");
+        if (g < 0)
+          throw InputError(tied[i][j]->parameter, "tied to unknown parameter '" + name + "'");
         ties_[i].push_back({j, g, coefficient});
       }
     }
@@ -126,7 +127,7 @@ std::string MultiDofModel::Inadmissible(const Eigen::VectorXd& theta) const {
 Eigen::RowVectorXd MultiDofModel::EquationRegressor(
     int i, const Eigen::Ref<const Eigen::RowVectorXd>& nu) const {
   const DofModel& m = dofs_[i];
-  TermContext tc;
+  TermInputs tc;
   tc.xi = nu[i];
   for (int j = 0; j < num_dofs(); ++j) tc.velocities[Index(dof(j))] = nu[j];
   std::vector<double> h(m.num_parameters(), 0.0);

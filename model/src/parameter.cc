@@ -34,8 +34,7 @@ const std::vector<ParameterFamily>& StandardFamilies() {
         {param::kMass, "inertia including added mass", "kg", "kg·m²", 0.0, 0.0, kInf},
         {param::kLinearDrag, "linear drag", "N·s/m", "N·m·s/rad", 0.0, 0.0, kInf},
         {param::kQuadraticDrag, "quadratic drag", "N·s²/m²", "N·m·s²/rad²", 0.0, 0.0, kInf},
-        {param::kBias, "constant force (weight − buoyancy, tether)", "N", "N·m", 0.0, -kInf,
-         kInf},
+        {param::kBias, "constant force (weight − buoyancy, tether)", "N", "N·m", 0.0, -kInf, kInf},
         {param::kBiasStep, "force of one ballast step (seed 000 eq. 20)", "N", "N·m", 0.0, -kInf,
          kInf},
     };

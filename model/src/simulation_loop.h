@@ -40,7 +40,8 @@ inline void CheckOutputTimes(TimesView output_times, const SimulationOptions& op
 
 // The output trajectory, sized: x for every output time, S (with sensitivities) in place
 // (CheckOutputTimes first).
-inline Trajectory SizedOutput(int nx, int np, TimesView output_times, const SimulationOptions& options) {
+inline Trajectory SizedOutput(int nx, int np, TimesView output_times,
+                              const SimulationOptions& options) {
   CheckOutputTimes(output_times, options);
   Trajectory out;
   out.t = output_times.ToVector();
@@ -63,10 +64,9 @@ template <class System>
 // nx × np (row s: the sensitivities of state s); A (nx × nx) and B (nx × np) as the kernel
 // writes them; kNx: nx when known at compile time (0: the argument).
 template <int kNx>
-[[gnu::always_inline]] inline void SensitivitySlope(int n_states, const double* A,
-                                                    const double* B, const double* S,
-                                                    const double* k_prev, double c_prev, int np,
-                                                    double* St, double* K) {
+[[gnu::always_inline]] inline void SensitivitySlope(int n_states, const double* A, const double* B,
+                                                    const double* S, const double* k_prev,
+                                                    double c_prev, int np, double* St, double* K) {
   const int nx = kNx > 0 ? kNx : n_states;
   const int ns = nx * np;
   for (int j = 0; j < ns; ++j) St[j] = k_prev ? S[j] + c_prev * k_prev[j] : S[j];
@@ -111,11 +111,13 @@ template <class System>
 // (A = ∂f/∂x, B = ∂f/∂theta), with StateStep's stages, each linearised: S, the stage argument St,
 // the stage slopes K1–K4 (SensitivitySlope), B and A are the caller's buffers.
 template <class System>
-[[gnu::always_inline]] inline void SensitivityStep(
-    const System& sys, double ta, double tm, double te, double h,
-    const typename System::Input& in_a, const typename System::Input& in_m,
-    const typename System::Input& in_e, double* x, double* S, double* St, double* K1, double* K2,
-    double* K3, double* K4, double* B, double* A) {
+[[gnu::always_inline]] inline void SensitivityStep(const System& sys, double ta, double tm,
+                                                   double te, double h,
+                                                   const typename System::Input& in_a,
+                                                   const typename System::Input& in_m,
+                                                   const typename System::Input& in_e, double* x,
+                                                   double* S, double* St, double* K1, double* K2,
+                                                   double* K3, double* K4, double* B, double* A) {
   constexpr int kMax = System::kMaxStates;
   const int nx = StatesOf(sys), np = sys.num_parameters(), ns = nx * np;
   double k1[kMax], k2[kMax], k3[kMax], k4[kMax], xt[kMax];

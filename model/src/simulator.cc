@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "dof_model_kernel.h"
 #include "simulation_loop.h"

@@ -25,8 +25,8 @@ int MappingOf(const Vehicle& v, const std::string& name, const TrialDesign& d) {
   if (name.empty()) return -1;
   const int i = v.MappingIndex(name);
   if (i < 0) {
-    throw InputError("trial '" + d.id + "'", "mapping '" + name + "' is not a mapping of vehicle '" +
-                                                 v.name + "'");
+    throw InputError("trial '" + d.id + "'",
+                     "mapping '" + name + "' is not a mapping of vehicle '" + v.name + "'");
   }
   return i;
 }
@@ -58,8 +58,10 @@ double WaveSwing(const TrialDesign& d) {
 
 double TrialDesign::NominalForce(double t) const {
   switch (kind) {
-    case TrialKind::kSteady: return force;
-    case TrialKind::kSine: return offset + amplitude * std::sin(omega * t);
+    case TrialKind::kSteady:
+      return force;
+    case TrialKind::kSine:
+      return offset + amplitude * std::sin(omega * t);
     case TrialKind::kSegments: {
       const SegmentDesign* s = SegmentAt(*this, t);
       return s != nullptr ? s->force : 0.0;
@@ -85,7 +87,8 @@ const std::string& TrialDesign::MappingAt(double t) const {
 
 std::vector<ForceDemand> TrialDesign::Demands() const {
   switch (kind) {
-    case TrialKind::kSteady: return {{mapping, force, force}};
+    case TrialKind::kSteady:
+      return {{mapping, force, force}};
     case TrialKind::kSine:
       return {{mapping, offset - std::abs(amplitude), offset + std::abs(amplitude)}};
     case TrialKind::kSegments: {
@@ -98,7 +101,8 @@ std::vector<ForceDemand> TrialDesign::Demands() const {
     case TrialKind::kSwitched: {
       std::vector<ForceDemand> out;
       const double swing = WaveSwing(*this);
-      if (offset + swing >= 0) out.push_back({mapping, floor_pos, std::max(floor_pos, offset + swing)});
+      if (offset + swing >= 0)
+        out.push_back({mapping, floor_pos, std::max(floor_pos, offset + swing)});
       if (offset - swing < 0) {
         out.push_back({mapping_neg, std::min(-floor_neg, offset - swing), -floor_neg});
       }
@@ -118,17 +122,20 @@ bool TrialDesign::Pushes(const std::string& name, int sign) const {
 std::unique_ptr<Excitation> MakeExcitation(const Vehicle& vehicle, const TrialDesign& d) {
   const int mapping = MappingOf(vehicle, d.mapping, d);
   switch (d.kind) {
-    case TrialKind::kSteady: return MakeSteadyExcitation(d.force, mapping, d.duration);
+    case TrialKind::kSteady:
+      return MakeSteadyExcitation(d.force, mapping, d.duration);
     case TrialKind::kSine:
       return MakeSineExcitation(d.offset, d.amplitude, d.omega, mapping, d.duration);
     case TrialKind::kSegments: {
       std::vector<Segment> segs;
       for (const auto& s : d.segments) {
-        segs.push_back({s.force, s.duration, s.mapping.empty() ? mapping : MappingOf(vehicle, s.mapping, d)});
+        segs.push_back(
+            {s.force, s.duration, s.mapping.empty() ? mapping : MappingOf(vehicle, s.mapping, d)});
       }
       return MakeSegmentsExcitation(std::move(segs));
     }
-    case TrialKind::kSwitched: return MakeSwitchedExcitation(SwitchedWaveOf(vehicle, d), d.duration);
+    case TrialKind::kSwitched:
+      return MakeSwitchedExcitation(SwitchedWaveOf(vehicle, d), d.duration);
   }
   return nullptr;
 }

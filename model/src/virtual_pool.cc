@@ -4,13 +4,13 @@
 #include <cmath>
 #include <random>
 
+#include "pool_sampling.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/util/checked_count.h"
 #include "uuvplan/model/util/seed.h"
-#include "pool_sampling.h"
 
 namespace uuvplan::model {
 namespace {
@@ -112,8 +112,8 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
   const Dof dof = design.dof;
   const auto truth_it = truth.dofs.find(dof);
   if (truth_it == truth.dofs.end()) {
-    throw InputError("truth", "no dofs." + std::string(DofName(dof)) +
-                                  ".params for trial '" + design.id + "'");
+    throw InputError(
+        "truth", "no dofs." + std::string(DofName(dof)) + ".params for trial '" + design.id + "'");
   }
   const auto sensors_it = v.sensors.find(dof);
   if (sensors_it == v.sensors.end() ||
@@ -125,8 +125,10 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
 
   // The truth model; parameters it does not name take the standard model's neutral values.
   const DofModel model(v, TruthStructure(truth, dof));
-  const std::map<std::string, double> neutral = {{param::kBias, 0.0}, {param::kQuadraticDrag, 0.0},
-                                                 {param::kLinearDrag, 0.0}, {param::kBiasStep, 0.0}};
+  const std::map<std::string, double> neutral = {{param::kBias, 0.0},
+                                                 {param::kQuadraticDrag, 0.0},
+                                                 {param::kLinearDrag, 0.0},
+                                                 {param::kBiasStep, 0.0}};
   const Eigen::VectorXd theta = model.Theta(truth_it->second.params, &neutral);
 
   const Commands cmd = HeldCommands(v, design, options.command_rate_hz);
@@ -181,7 +183,9 @@ TrialLog RunCombinedTrial(const Truth& truth, const MultiDofModel& model,
   std::vector<std::vector<double>> grids;
   for (const TrialDesign& input : design.inputs) {
     const int i = model.DofIndex(input.dof);
-    if (i < 0) throw InputError(design.id, "moves " + std::string(DofName(input.dof)) + ", not in the model");
+    if (i < 0)
+      throw InputError(design.id,
+                       "moves " + std::string(DofName(input.dof)) + ", not in the model");
     TrialDesign whole = input;
     whole.duration = design.duration;
     cmd[i] = HeldCommands(truth.vehicle, whole, options.command_rate_hz);

@@ -1,4 +1,4 @@
-// `uuvplan identify CAMPAIGN --model coupled` (issue #19): a virtual combined-mode campaign of
+// `uuvplan identify CAMPAIGN --model coupled`: a virtual combined-mode campaign of
 // cases/asv written to disk, identified from the command line, its JSON within 3σ of the truth.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "support/coupled_campaign.h"
 #include "cli_test_util.h"
+#include "support/coupled_campaign.h"
 #include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/coupled_model.h"
@@ -37,8 +37,8 @@ TEST(CoupledIdentifyCli, IdentifiesACombinedModeCampaign) {
   }
   TempDir scratch;
   io::WriteCampaign(scratch / "campaign", campaign, truth.vehicle);
-  const ToolRun run = RunTool("identify '" + (scratch / "campaign") +
-                                  "' --model coupled --json '" + (scratch / "id.json") + "'",
+  const ToolRun run = RunTool("identify '" + (scratch / "campaign") + "' --model coupled --json '" +
+                                  (scratch / "id.json") + "'",
                               scratch);
   ASSERT_EQ(run.status, 0) << run.out << run.err;
   EXPECT_NE(run.out.find("coupled horizontal model"), std::string::npos) << run.out;

@@ -1,4 +1,4 @@
-// Diagnosis (issue #5). The statistical claim (≥ 95% of 200 draws per effect named correctly,
+// Diagnosis. The statistical claim (≥ 95% of 200 draws per effect named correctly,
 // ≤ 5% false findings on clean data, the hidden parameter within 3σ) is checked at full size
 // by `build/tests/diagnose_validation` (docs/validation.md). Here a seeded subset of the same
 // generator: the draws are fixed, so every one of them must be diagnosed exactly; a change
@@ -46,9 +46,8 @@ TEST_P(HiddenEffectTest, NamesTheHiddenEffectAndOnlyIt) {
     const model::Campaign campaign = testing::RunHiddenEffectCase(c, seed);
     const DiagnosisResult r = Diagnose(campaign, testing::DiagnoseOptionsFor(c));
     const testing::Verdict v = testing::Judge(c, r);
-    EXPECT_TRUE(v.correct) << "seed " << seed << ": hidden "
-                           << effect.value_or("none") << ", found ["
-                           << v.found << "]";
+    EXPECT_TRUE(v.correct) << "seed " << seed << ": hidden " << effect.value_or("none")
+                           << ", found [" << v.found << "]";
     if (effect) {
       EXPECT_TRUE(v.within_3_sigma) << "seed " << seed << ": parameter beyond 3σ of the truth";
       ASSERT_FALSE(r.findings.empty());
@@ -61,11 +60,11 @@ TEST_P(HiddenEffectTest, NamesTheHiddenEffectAndOnlyIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryEffectAndNone, HiddenEffectTest,
-                         ::testing::Range(-1, static_cast<int>(model::Effects().Diagnosable().size())),
+                         ::testing::Range(-1,
+                                          static_cast<int>(model::Effects().Diagnosable().size())),
                          [](const ::testing::TestParamInfo<int>& info) {
-                           return info.param < 0
-                                      ? std::string("none")
-                                      : model::Effects().Diagnosable()[info.param];
+                           return info.param < 0 ? std::string("none")
+                                                 : model::Effects().Diagnosable()[info.param];
                          });
 
 // Coupling draws 21 and 24 once gave a spurious second effect (drift; asymmetric drag and
@@ -109,7 +108,8 @@ TEST(DiagnosisTest, CouplingSigmaIncludesTheNoiseOfTheLoggedVelocities) {
   EXPECT_DOUBLE_EQ(a.findings[0].params[0].value, b.findings[0].params[0].value);
   EXPECT_GT(a.findings[0].params[0].sigma, b.findings[0].params[0].sigma);
   bool noted = false;
-  for (const auto& n : a.notes) noted = noted || n.find("noise of the logged velocities") != std::string::npos;
+  for (const auto& n : a.notes)
+    noted = noted || n.find("noise of the logged velocities") != std::string::npos;
   EXPECT_TRUE(noted);
 }
 
@@ -135,7 +135,6 @@ TEST(DiagnosisTest, RealBluerovYawRunsShowTheThrusterLag) {
   EXPECT_EQ(first.gain.on, "validate");
   EXPECT_GT(first.gain.relative, 0.10);
 }
-
 
 // The 13 runs of three sessions (campaign_all.yaml): diagnosis_model_test.cc
 // (DiagnosisModelTest.RealBluerovThrustMapShapeAndLagScored).

@@ -1,13 +1,14 @@
 // The joint one-step integral least squares (ident/estimators/joint_ls.h) of the coupled
 // horizontal model (model/coupled_model.h) on virtual combined-mode campaigns of the ASV
 // (cases/asv, ref 003).
+#include "uuvplan/ident/estimators/joint_ls.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
 #include "support/coupled_campaign.h"
-#include "uuvplan/ident/estimators/joint_ls.h"
 #include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/coupled_model.h"
@@ -57,7 +58,7 @@ TEST(CoupledLeastSquares, RecoversTheAsvCase) {
   }
 }
 
-// Issue #19 Done when: random coupling truths (seeded), 10 seeds, every coupled parameter within
+// Random coupling truths (seeded), 10 seeds, every coupled parameter within
 // 3σ of the truth for >= 90% of the 120 parameter estimates. With a σ that Monte Carlo confirms,
 // 99.7% fall within 3σ; a 90% floor fails when σ is too small by a third or more (then about
 // 87% or fewer fall within 3σ) or when an estimate is biased by a σ or more.
@@ -79,8 +80,8 @@ TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
       if (std::abs(z) < 3) {
         ++within;
       } else {
-        outside += " seed " + std::to_string(seed) + " " + r.names[j] + " z = " +
-                   std::to_string(z) + ";";
+        outside +=
+            " seed " + std::to_string(seed) + " " + r.names[j] + " z = " + std::to_string(z) + ";";
       }
     }
   }
@@ -140,10 +141,10 @@ model::Campaign OneDofCampaignOfCombinedModes(const model::Truth& truth) {
 }
 
 TEST(CoupledDiagnosis, NamesTheCoriolisCouplingOfEachDofOnA1DofFittedCampaign) {
-  // Issue #19: the 1-DOF standard model fitted to a 3-DOF campaign misses seed 003's Coriolis
+  // The 1-DOF standard model fitted to a 3-DOF campaign misses ref 003's Coriolis
   // terms; diagnosis names, in each DOF, exactly the product the coupled model has there, with
   // its coefficient (surge m_v·v·r, sway −m_u·u·r, yaw (m_u − m_v)·u·v), a held-out gain, and
-  // offers the coupled model. Measured (2026-11-27): v·r 511.2 ± 1.9 (m_v 510), u·r −330.2 ±
+  // offers the coupled model. Measured: v·r 511.2 ± 1.9 (m_v 510), u·r −330.2 ±
   // 1.3 (−m_u −330), u·v −178.8 ± 2.1 (m_u − m_v −180); validate velocity MAE 86%, 82%, 95%
   // better.
   const model::Truth truth = AsvTruth();

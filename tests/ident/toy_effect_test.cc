@@ -20,15 +20,15 @@ namespace {
 class CubicDragTerm final : public model::ForceTerm {
  public:
   CubicDragTerm() : ForceTerm({"c3"}) {}
-  double Value(const model::TermContext& c, const double* theta) const override {
+  double Value(const model::TermInputs& c, const double* theta) const override {
     return -theta[0] * c.xi * c.xi * c.xi;
   }
-  model::TermPartials Partials(const model::TermContext& c, const double* theta,
+  model::TermPartials Partials(const model::TermInputs& c, const double* theta,
                                double* J) const override {
     J[0] = -c.xi * c.xi * c.xi;
     return {theta[0] * J[0], -3.0 * theta[0] * c.xi * c.xi, 0.0};
   }
-  bool Regressor(const model::TermContext& c, double* h, double* h0) const override {
+  bool Regressor(const model::TermInputs& c, double* h, double* h0) const override {
     h[0] = -c.xi * c.xi * c.xi;
     *h0 = 0.0;
     return true;
@@ -45,7 +45,7 @@ model::EffectEntry CubicDrag() {
   e.make_term = [](model::Dof, const std::vector<std::string>&) {
     return std::make_unique<CubicDragTerm>();
   };
-  e.propose = [](const model::ProposalContext& c) {
+  e.propose = [](const model::ProposalEvidence& c) {
     if (c.Has("c3")) return std::vector<model::Proposal>{};
     model::Proposal p;
     p.start.push_back({"c3", 0.0});
@@ -55,7 +55,7 @@ model::EffectEntry CubicDrag() {
 }
 
 // Step 2b: the finding's sentence.
-std::string CubicDragSentence(const text::FindingContext&) {
+std::string CubicDragSentence(const text::FindingQuotes&) {
   return "the simulation is too fast at high speed: drag grows faster than ξ²";
 }
 
@@ -89,8 +89,8 @@ TEST(ToyEffectTest, DofModelCarriesItsTermAndPartials) {
   Eigen::MatrixXd A(2, 2), B(2, dm.num_parameters());
   const model::TrialConditions conditions;
   dm.Linearize(0.0, x, conditions, theta.data(), dx, A, B);
-  EXPECT_NEAR(dx[1], -7.0 * 0.125 / 100.0, 1e-12);       // −c3·ξ³/m
-  EXPECT_NEAR(B(1, i), -0.125 / 100.0, 1e-12);           // ∂(F/m)/∂c3
+  EXPECT_NEAR(dx[1], -7.0 * 0.125 / 100.0, 1e-12);         // −c3·ξ³/m
+  EXPECT_NEAR(B(1, i), -0.125 / 100.0, 1e-12);             // ∂(F/m)/∂c3
   EXPECT_NEAR(A(1, 1), -3.0 * 7.0 * 0.25 / 100.0, 1e-12);  // ∂(F/m)/∂ξ
 }
 

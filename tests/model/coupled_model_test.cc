@@ -1,12 +1,13 @@
 // The coupled horizontal model of ref 003 (model/coupled_model.h) as a multi-DOF model, its
 // simulation and its virtual pool trial.
+#include "uuvplan/model/coupled_model.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
 #include "uuvplan/io/truth_yaml.h"
-#include "uuvplan/model/coupled_model.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/virtual_pool.h"
@@ -16,7 +17,9 @@ namespace {
 
 using Horizontal = Eigen::Vector3d;
 
-Truth AsvTruth() { return io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/truth.yaml"); }
+Truth AsvTruth() {
+  return io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/truth.yaml");
+}
 
 // The ASV's parameters: [m, k, kq, bias] of surge, sway, yaw.
 Eigen::VectorXd AsvTheta() {
@@ -40,7 +43,7 @@ Horizontal Coriolis(const MultiDofModel& m, const Eigen::VectorXd& theta, const 
   for (int i = 0; i < 3; ++i) {
     const DofModel& d = m.dof_model(i);
     const Eigen::VectorXd local = m.LocalTheta(i, theta);
-    TermContext tc;
+    TermInputs tc;
     tc.xi = nu[i];
     for (int j = 0; j < 3; ++j) tc.velocities[Index(m.dof(j))] = nu[j];
     for (std::size_t k = 0; k < d.terms().size(); ++k) {
@@ -160,8 +163,8 @@ TEST(CoupledSimulator, SettlesInASteadyTurn) {
   const Horizontal nu(x.x(0, m.state_offset(0) + 1), x.x(0, m.state_offset(1) + 1),
                       x.x(0, m.state_offset(2) + 1));
   EXPECT_LT(Acceleration(m, theta, nu, tau).norm(), 1e-6);
-  EXPECT_GT(nu[2], 0.1);   // turning
-  EXPECT_LT(nu[1], -1e-3); // a surging, turning body side-slips outward (−m_u·u·r)
+  EXPECT_GT(nu[2], 0.1);    // turning
+  EXPECT_LT(nu[1], -1e-3);  // a surging, turning body side-slips outward (−m_u·u·r)
 }
 
 TrialDesign Steady(Dof dof, const char* mapping, double force) {
@@ -177,7 +180,9 @@ TEST(CoupledVirtualTrial, LogsEveryHorizontalColumnDeterministically) {
   const Truth truth = AsvTruth();
   const MultiDofModel m = CoupledModelOfTruth(truth);
   const Eigen::VectorXd theta = CoupledThetaOfTruth(m, truth);
-  const CombinedTrialDesign design{"t", {Dof::kSurge, Dof::kYaw}, 30.0,
+  const CombinedTrialDesign design{"t",
+                                   {Dof::kSurge, Dof::kYaw},
+                                   30.0,
                                    {Steady(Dof::kSurge, "horizontal-all-surge", 80),
                                     Steady(Dof::kYaw, "horizontal-all-yaw", 20)}};
   VirtualPoolOptions options;
@@ -189,7 +194,7 @@ TEST(CoupledVirtualTrial, LogsEveryHorizontalColumnDeterministically) {
     EXPECT_TRUE(a.HasForce(d) && a.HasVelocity(d)) << DofName(d);
   }
   EXPECT_TRUE(a.HasPosition(Dof::kYaw));
-  EXPECT_FALSE(a.HasPosition(Dof::kSurge));  // the ASV declares no surge position sensor
+  EXPECT_FALSE(a.HasPosition(Dof::kSurge));            // the ASV declares no surge position sensor
   EXPECT_EQ(a.force[Index(Dof::kSway)].front(), 0.0);  // sway is not pushed in surge+yaw
   // The sway velocity is not zero: the turn drives it (−m_u·u·r), measured with 0.02 m/s noise.
   double sum = 0.0;
@@ -205,8 +210,8 @@ TEST(CoupledVirtualTrial, LogsEveryHorizontalColumnDeterministically) {
 TEST(CoupledVirtualTrial, RefusesInputsThatDoNotMatchTheMode) {
   const Truth truth = AsvTruth();
   const MultiDofModel m = CoupledModelOfTruth(truth);
-  const CombinedTrialDesign design{"bad", {Dof::kSurge, Dof::kYaw}, 10.0,
-                                   {Steady(Dof::kSway, "horizontal-all-sway", 0)}};
+  const CombinedTrialDesign design{
+      "bad", {Dof::kSurge, Dof::kYaw}, 10.0, {Steady(Dof::kSway, "horizontal-all-sway", 0)}};
   try {
     RunCombinedTrial(truth, m, CoupledThetaOfTruth(m, truth), design, VirtualPoolOptions{});
     FAIL() << "no error";

@@ -12,7 +12,9 @@
 namespace uuvplan::model {
 namespace {
 
-Vehicle Asv() { return io::ReadVehicle(std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/vehicle.yaml"); }
+Vehicle Asv() {
+  return io::ReadVehicle(std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/vehicle.yaml");
+}
 
 Eigen::VectorXd AsvTheta() {
   Eigen::VectorXd theta(12);
@@ -90,7 +92,8 @@ TEST(MultiDofModel, JacobiansMatchFiniteDifferences) {
     xm[s] -= h;
     m.Derivative(3.0, xp.data(), sines.c, theta, fp.data());
     m.Derivative(3.0, xm.data(), sines.c, theta, fm.data());
-    EXPECT_LE(((fp - fm) / (2 * h) - A.col(s)).norm(), 1e-6 * (A.col(s).norm() + 1)) << "state " << s;
+    EXPECT_LE(((fp - fm) / (2 * h) - A.col(s)).norm(), 1e-6 * (A.col(s).norm() + 1))
+        << "state " << s;
   }
   for (int j = 0; j < np; ++j) {
     const double h = 1e-6 * std::max(1.0, std::abs(theta[j]));

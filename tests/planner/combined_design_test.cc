@@ -23,7 +23,9 @@ namespace {
 
 using Vec3 = std::array<double, 3>;
 
-std::string Case(const char* file) { return std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/" + file; }
+std::string Case(const char* file) {
+  return std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/" + file;
+}
 
 // Ref 003's 3-DOF equations (model/coupled_model.h's header), written out again here so that
 // the replay does not share the planner's simulator: θ = [m, k, kq, bias] per DOF.
@@ -33,7 +35,8 @@ Vec3 Acceleration(const std::array<double, 12>& th, const Vec3& nu, const Vec3& 
   Vec3 a;
   for (int i = 0; i < 3; ++i) {
     const double x = nu[i];
-    a[i] = (coriolis[i] - th[4 * i + 1] * x - th[4 * i + 2] * std::abs(x) * x + th[4 * i + 3] + tau[i]) /
+    a[i] = (coriolis[i] - th[4 * i + 1] * x - th[4 * i + 2] * std::abs(x) * x + th[4 * i + 3] +
+            tau[i]) /
            th[4 * i];
   }
   return a;
@@ -46,18 +49,20 @@ struct Replay {
 // RK4 on [x, y, ψ, u, v, r] with a 0.01 s step (the planner's is 0.2 s), the pose in the
 // pool frame from the planned start pose.
 int HorizontalIndex(model::Dof dof) {
-  return static_cast<int>(std::find(model::kHorizontalDofs.begin(), model::kHorizontalDofs.end(), dof) -
-                          model::kHorizontalDofs.begin());
+  return static_cast<int>(
+      std::find(model::kHorizontalDofs.begin(), model::kHorizontalDofs.end(), dof) -
+      model::kHorizontalDofs.begin());
 }
 
 Replay ReplayTrack(const std::array<double, 12>& th, const model::CombinedTrialDesign& trial,
-           const CombinedDesign& d) {
+                   const CombinedDesign& d) {
   auto f = [&](double t, const std::array<double, 6>& s) {
     Vec3 tau = {0, 0, 0};
     for (const auto& in : trial.inputs) tau[HorizontalIndex(in.dof)] = in.NominalForce(t);
     const Vec3 a = Acceleration(th, {s[3], s[4], s[5]}, tau);
     const double c = std::cos(s[2]), sn = std::sin(s[2]);
-    return std::array<double, 6>{c * s[3] - sn * s[4], sn * s[3] + c * s[4], s[5], a[0], a[1], a[2]};
+    return std::array<double, 6>{
+        c * s[3] - sn * s[4], sn * s[3] + c * s[4], s[5], a[0], a[1], a[2]};
   };
   std::array<double, 6> s = {d.start[0], d.start[1], d.start[2], 0, 0, 0};
   Replay r;
@@ -67,8 +72,8 @@ Replay ReplayTrack(const std::array<double, 12>& th, const model::CombinedTrialD
       for (int i = 0; i < 6; ++i) a[i] += w * b[i];
       return a;
     };
-    const auto k1 = f(t, s), k2 = f(t + h / 2, add(s, k1, h / 2)), k3 = f(t + h / 2, add(s, k2, h / 2)),
-               k4 = f(t + h, add(s, k3, h));
+    const auto k1 = f(t, s), k2 = f(t + h / 2, add(s, k1, h / 2)),
+               k3 = f(t + h / 2, add(s, k2, h / 2)), k4 = f(t + h, add(s, k3, h));
     for (int i = 0; i < 6; ++i) s[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
     r.x_min = std::min(r.x_min, s[0]);
     r.x_max = std::max(r.x_max, s[0]);
@@ -83,18 +88,20 @@ Replay ReplayTrack(const std::array<double, 12>& th, const model::CombinedTrialD
 // inputs' and whose thruster forces keep one sign, min_thrust clear of zero.
 void ExpectJsonProfileReplaysTheTrial(const CombinedDesign& d, const model::Vehicle& vehicle,
                                       const model::Pool& pool) {
-  const nlohmann::json j = io::CombinedDesignJson(
-      d, model::CoupledHorizontalModel(vehicle), vehicle, pool,
-      {model::kCoupledModelName, kCoupledSigmaAssumption});
+  const nlohmann::json j =
+      io::CombinedDesignJson(d, model::CoupledHorizontalModel(vehicle), vehicle, pool,
+                             {model::kCoupledModelName, kCoupledSigmaAssumption});
   const auto& profile = j.at("trial").at("profile");
   const auto t = profile.at("t").get<std::vector<double>>();
   ASSERT_GE(t.size(), 2u);
   EXPECT_NEAR(t.back(), d.trial.duration, 0.1);
   for (std::size_t k = 1; k < t.size(); ++k) EXPECT_LE(t[k] - t[k - 1], 0.1 + 1e-12);
   for (const auto& in : d.trial.inputs) {
-    const auto f = profile.at("force").at(std::string(model::DofName(in.dof))).get<std::vector<double>>();
+    const auto f =
+        profile.at("force").at(std::string(model::DofName(in.dof))).get<std::vector<double>>();
     ASSERT_EQ(f.size(), t.size());
-    for (std::size_t k = 0; k < t.size(); k += 97) EXPECT_DOUBLE_EQ(f[k], in.offset + in.amplitude * std::sin(in.omega * t[k]));
+    for (std::size_t k = 0; k < t.size(); k += 97)
+      EXPECT_DOUBLE_EQ(f[k], in.offset + in.amplitude * std::sin(in.omega * t[k]));
   }
   for (const auto& th : vehicle.thrusters) {
     const auto f = profile.at("thrusters").at(th.name).get<std::vector<double>>();
@@ -121,7 +128,7 @@ CombinedDesign PlannedAsvDesign(const std::string& mode) {
 // plan promises 0.5–0.9% at the box's worst for an efficient estimator; the one-step rows,
 // one Savitzky–Golay window apart, give 0.3–1.2%). The drag terms are not asserted: under the
 // spin a quadratic drag may be negative and insignificant and is then dropped, the linear one
-// taking its part (6 seeds, 2026-11-27: every inertia within 1.7σ).
+// taking its part (6 seeds on the earlier finite-difference plan: every inertia within 1.7σ).
 void ExpectPlannedTrialIdentifiesTheCoupledModel(const CombinedDesign& d) {
   const model::Truth truth = io::ReadTruth(Case("truth.yaml"));
   model::VirtualPoolOptions pool;
@@ -136,14 +143,17 @@ void ExpectPlannedTrialIdentifiesTheCoupledModel(const CombinedDesign& d) {
   ASSERT_TRUE(r.ok()) << r.message;
   for (int i = 0; i < 3; ++i) {
     const int j = 4 * i;  // m of surge, sway, yaw
-    std::cout << r.names[j] << " = " << r.theta[j] << " ± " << r.Sigma(j) << " (true " << want[j] << ")\n";
+    std::cout << r.names[j] << " = " << r.theta[j] << " ± " << r.Sigma(j) << " (true " << want[j]
+              << ")\n";
     EXPECT_LT(std::abs(r.theta[j] - want[j]), 3 * r.Sigma(j)) << r.names[j];
     EXPECT_LT(r.Sigma(j), 0.03 * want[j]) << r.names[j];
   }
   // What the rest of the fit may do: drop a negative, insignificant drag (joint_ls.h step 3).
   for (const auto& dropped : r.dropped) {
     EXPECT_LT(dropped.value, 0.0) << r.names[dropped.index];
-    EXPECT_GT(ident::PercentileError(dropped.value, dropped.sigma), ident::kInsignificantPercentileError) << r.names[dropped.index];
+    EXPECT_GT(ident::PercentileError(dropped.value, dropped.sigma),
+              ident::kInsignificantPercentileError)
+        << r.names[dropped.index];
   }
 }
 
@@ -151,7 +161,8 @@ class CoupledDesignModes : public ::testing::TestWithParam<std::string> {};
 
 // The box's centre, vertices and yaw drag sweep (the design's check points before the exchange),
 // and 30 seeded interior points other than the planner's probes (options.probe_seed).
-std::vector<Eigen::VectorXd> ReplayPoints(const model::MultiDofModel& coupled, const ParameterBox& box) {
+std::vector<Eigen::VectorXd> ReplayPoints(const model::MultiDofModel& coupled,
+                                          const ParameterBox& box) {
   std::vector<ParameterValues> points = {box.nominal};
   for (const ParameterValues& p : box.CheckPoints(2)) points.push_back(p);
   for (std::size_t a = 0; a < box.axes.size(); ++a) {
@@ -168,9 +179,9 @@ std::vector<Eigen::VectorXd> ReplayPoints(const model::MultiDofModel& coupled, c
   return thetas;
 }
 
-// Issue #19: "the planner's combined designs stay inside the pool over the prior box in an
-// independent simulation". The ASV's design of each combined mode, 120 s, replayed at every vertex of
-// the six-axis prior box, its centre and 30 seeded interior points (other than the planner's
+// "the planner's combined designs stay inside the pool over the prior box in an
+// independent simulation". The ASV's design of each combined mode, 120 s, replayed at every vertex
+// of the six-axis prior box, its centre and 30 seeded interior points (other than the planner's
 // probes): the track keeps the pool's
 // margin, the heading the tether's turns, and every thruster (its force from the design's
 // profile every 0.01 s) one sign, min_thrust clear of zero, within its limit; and the JSON's
@@ -190,8 +201,9 @@ TEST_P(CoupledDesignModes, AsvCombinedDesignStaysInThePoolOverThePriorBox) {
   for (model::Dof dof : model::kHorizontalDofs) {  // the replay spans the vehicle file's bounds
     const auto bounds = vehicle.InertiaBounds(dof);
     const std::string m = std::string(model::DofName(dof)) + ".m";
-    const auto axis = std::find_if(box.axes.begin(), box.axes.end(),
-                                   [&](const BoxAxis& a) { return a.params == std::vector<std::string>{m}; });
+    const auto axis = std::find_if(box.axes.begin(), box.axes.end(), [&](const BoxAxis& a) {
+      return a.params == std::vector<std::string>{m};
+    });
     ASSERT_NE(axis, box.axes.end()) << m;
     EXPECT_NEAR(box.Nominal(m) * axis->lo, bounds[0], 1e-9 * bounds[1]);
     EXPECT_NEAR(box.Nominal(m) * axis->hi, bounds[1], 1e-9 * bounds[1]);
@@ -220,7 +232,8 @@ TEST_P(CoupledDesignModes, AsvCombinedDesignStaysInThePoolOverThePriorBox) {
       hi = std::max(hi, tau);
     }
     const auto& th = vehicle.thrusters[i];
-    EXPECT_GE(std::max(lo, -hi), vehicle.min_thrust) << th.name << " in [" << lo << ", " << hi << "] N";
+    EXPECT_GE(std::max(lo, -hi), vehicle.min_thrust)
+        << th.name << " in [" << lo << ", " << hi << "] N";
     EXPECT_LE(hi, th.MaxForwardThrust()) << th.name;
     EXPECT_GE(lo, -th.MaxReverseThrust()) << th.name;
   }

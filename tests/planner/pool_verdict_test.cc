@@ -1,8 +1,9 @@
-// The one pool verdict (planner/pool/pool_verdict.h), issue #13: on ROMEO (own pool and a 6 × 6 × 3 m
+// The one pool verdict (planner/pool/pool_verdict.h): on ROMEO (own pool and a 6 × 6 × 3 m
 // pool), VSOR, URIS and seeded random vehicles, the verdict of the planner's own schedule and of
 // that schedule given back as a plan agree; `required` covers every trial's extent and every
 // DOF's need; and every planned trial stays inside the pool and the tether's turns when
-// simulated INDEPENDENTLY (model::Simulate at the corners of the prior box, not DofContext).
+// simulated INDEPENDENTLY (model::Simulate at the corners of the prior box, not
+// DofPlanningProblem).
 #include "uuvplan/planner/pool/pool_verdict.h"
 
 #include <gtest/gtest.h>
@@ -129,8 +130,7 @@ model::Pool CasePool(const std::string& c) {
 
 TEST(PoolVerdict, RomeoOwnPoolAgreesAcrossCommands) {
   const model::Vehicle v = testing::Romeo();
-  CheckVerdict(v, testing::RomeoPool(), {Dof::kSurge, Dof::kSway, Dof::kHeave, Dof::kYaw},
-               "romeo");
+  CheckVerdict(v, testing::RomeoPool(), {Dof::kSurge, Dof::kSway, Dof::kHeave, Dof::kYaw}, "romeo");
 }
 
 TEST(PoolVerdict, RomeoSixMetrePoolIsRefusedWithAConfirmedLargerNeed) {
@@ -207,7 +207,7 @@ TEST(PoolVerdict, APlanTooLongForAPoolThatHostsThePlannerIsThePlansFailureOnly) 
       << lines;
 }
 
-// "To this precision" (issue #13): the verdict judges at the loop's target. ROMEO heave in its
+// "To this precision": the verdict judges at the loop's target. ROMEO heave in its
 // own pool (2 m of free depth), over the whole a priori box, reaches 15% (hosted) but not 5%:
 // at some point of the box the loop's next trial gives the parameters still above the target
 // (η, kq) less than the target needs per trial, so the loop would
@@ -246,13 +246,13 @@ TEST(PoolVerdict, JudgedAtTheLoopsTarget) {
 }
 
 TEST(PoolVerdict, VsorAndUrisAgree) {
-  CheckVerdict(CaseVehicle("vsor"), CasePool("vsor"), {Dof::kSurge, Dof::kSway, Dof::kHeave,
-                                                       Dof::kYaw}, "vsor");
-  CheckVerdict(CaseVehicle("uris"), CasePool("uris"), {Dof::kSurge, Dof::kHeave, Dof::kPitch,
-                                                       Dof::kYaw}, "uris");
+  CheckVerdict(CaseVehicle("vsor"), CasePool("vsor"),
+               {Dof::kSurge, Dof::kSway, Dof::kHeave, Dof::kYaw}, "vsor");
+  CheckVerdict(CaseVehicle("uris"), CasePool("uris"),
+               {Dof::kSurge, Dof::kHeave, Dof::kPitch, Dof::kYaw}, "uris");
 }
 
-// Issue #13: the verdict of a pool that hosts a DOF for part of the a priori box says so, and a
+// The verdict of a pool that hosts a DOF for part of the a priori box says so, and a
 // point it calls hosted is hosted for that very vehicle (a degenerate box: every DOF kAll).
 void ExpectPart(const model::Vehicle& v, const model::Pool& pool, Dof dof,
                 const std::string& what) {
@@ -294,8 +294,8 @@ TEST(PoolVerdict, HeaveInASixMetrePoolIsPartOnlyOnTheStartKnownBound) {
   plain.need_checks = -1;
   plain.judge_points = false;
   for (const PointVerdict& p : heave.points) {  // none hosted with the start estimated
-    const PoolVerdict at = JudgePool(VehicleAt(v, Dof::kHeave, p.point), SixBySixByThree(), so,
-                                     nullptr, plain);
+    const PoolVerdict at =
+        JudgePool(VehicleAt(v, Dof::kHeave, p.point), SixBySixByThree(), so, nullptr, plain);
     EXPECT_FALSE(at.hosted) << text::BoxPointLabel(p.point, Dof::kHeave);
   }
 }
@@ -394,7 +394,7 @@ TEST(PoolVerdict, AStuckLoopInAPartPoolIsOutsideTheHostablePart) {
 }
 
 TEST(PoolVerdict, UrisRotationsPlanWithTheThrustScaledDrag) {
-  // Issue #13 item 6: without a drag prior URIS yaw fell back to k = 0.0041 (truth about 2) and
+  // Without a drag prior URIS yaw fell back to k = 0.0041 (truth about 2) and
   // could not be planned; the fallback from its 8 N·m of yaw thrust (1 rad/s terminal rate)
   // gives k = 0.727, kq = 7.27 and a plannable yaw and pitch.
   const model::Vehicle v = CaseVehicle("uris");

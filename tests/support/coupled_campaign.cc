@@ -5,8 +5,8 @@
 #include <string>
 
 #include "uuvplan/model/coupled_model.h"
-#include "uuvplan/model/virtual_pool.h"
 #include "uuvplan/model/util/seed.h"
+#include "uuvplan/model/virtual_pool.h"
 
 namespace uuvplan::testing {
 
@@ -47,9 +47,9 @@ std::vector<model::CombinedTrialDesign> CombinedModeDesigns(double duration_s) {
           {"all", {Dof::kSurge, Dof::kSway, Dof::kYaw}, duration_s, {surge, sway, yaw}}};
 }
 
-std::vector<model::TrialLog> RunCoupledCampaign(const model::Truth& truth,
-                                                const std::vector<model::CombinedTrialDesign>& designs,
-                                                std::uint64_t seed) {
+std::vector<model::TrialLog> RunCoupledCampaign(
+    const model::Truth& truth, const std::vector<model::CombinedTrialDesign>& designs,
+    std::uint64_t seed) {
   const model::MultiDofModel coupled = model::CoupledModelOfTruth(truth);
   const Eigen::VectorXd theta = model::CoupledThetaOfTruth(coupled, truth);
   std::vector<model::TrialLog> logs;

@@ -13,9 +13,9 @@
 
 namespace uuvplan::testing {
 
-/// `base` (cases/asv/truth.yaml) with the horizontal parameters drawn from `seed`: m_u, m_v, m_r uniform in the
-/// vehicle's a priori inertia bounds (added mass 5–100%), so the Coriolis coupling m_v·v·r,
-/// −m_u·u·r, (m_u − m_v)·u·v takes any sign and size a vehicle may have; k and kq the base
+/// `base` (cases/asv/truth.yaml) with the horizontal parameters drawn from `seed`: m_u, m_v, m_r
+/// uniform in the vehicle's a priori inertia bounds (added mass 5–100%), so the Coriolis coupling
+/// m_v·v·r, −m_u·u·r, (m_u − m_v)·u·v takes any sign and size a vehicle may have; k and kq the base
 /// values times a factor log-uniform in [0.5, 2]; bias uniform within ±2% of 300 N (±2% of
 /// 300 N·m in yaw), a pool's tether or current.
 model::Truth RandomCoupledTruth(const model::Truth& base, std::uint64_t seed);
@@ -25,8 +25,8 @@ model::Truth RandomCoupledTruth(const model::Truth& base, std::uint64_t seed);
 std::vector<model::CombinedTrialDesign> CombinedModeDesigns(double duration_s);
 
 /// The logs of `designs` run on `truth`, trial i from model::StreamSeed(seed, i).
-std::vector<model::TrialLog> RunCoupledCampaign(const model::Truth& truth,
-                                                const std::vector<model::CombinedTrialDesign>& designs,
-                                                std::uint64_t seed);
+std::vector<model::TrialLog> RunCoupledCampaign(
+    const model::Truth& truth, const std::vector<model::CombinedTrialDesign>& designs,
+    std::uint64_t seed);
 
 }  // namespace uuvplan::testing

@@ -39,7 +39,7 @@ std::vector<EstimateCheck> InterestChecks(const model::Truth& truth,
       c.sigma = q.sigma;
       c.truth = TruthOf(truth, p.dof, q.name);
       c.z = (c.value - c.truth) / c.sigma;
-      c.within3 = std::abs(c.z) <= 3.0;  // issue #13's criterion
+      c.within3 = std::abs(c.z) <= 3.0;  // the loop's criterion
       out.push_back(c);
     }
   }
@@ -92,10 +92,10 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   c.hostability = verdict.hostability;
   c.verdict = text::VerdictSentence(verdict, pool);
   for (const auto& d : verdict.dofs) {
-    c.reach += std::string(c.reach.empty() ? "" : "; ") + std::string(model::DofName(d.dof)) +
-               " " + d.reach.parameter + " n " + Significant(d.reach.trials, 3) + " ('" +
-               d.reach.trial + "' after " + Significant(d.reach.now_percent, 3) + "%: " +
-               Significant(d.reach.per_trial_percent, 3) + "% per trial, needs " +
+    c.reach += std::string(c.reach.empty() ? "" : "; ") + std::string(model::DofName(d.dof)) + " " +
+               d.reach.parameter + " n " + Significant(d.reach.trials, 3) + " ('" + d.reach.trial +
+               "' after " + Significant(d.reach.now_percent, 3) +
+               "%: " + Significant(d.reach.per_trial_percent, 3) + "% per trial, needs " +
                Significant(d.reach.needed_percent, 3) + "%)";
   }
   planner::VerdictOptions at_truth;
@@ -123,11 +123,15 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   switch (c.hostability) {
     // All, at the target: the loop neither ends infeasible nor stuck short of the target.
     case planner::Hostability::kAll:
-      c.agree = r.status != planner::LoopStatus::kInfeasible &&
-                r.status != planner::LoopStatus::kStuck;
+      c.agree =
+          r.status != planner::LoopStatus::kInfeasible && r.status != planner::LoopStatus::kStuck;
       break;
-    case planner::Hostability::kNone: c.agree = r.status != planner::LoopStatus::kConverged; break;
-    case planner::Hostability::kPart: c.agree = true; break;  // measured below
+    case planner::Hostability::kNone:
+      c.agree = r.status != planner::LoopStatus::kConverged;
+      break;
+    case planner::Hostability::kPart:
+      c.agree = true;
+      break;  // measured below
   }
   if (r.converged) c.interest = InterestChecks(truth, r.progress);
   c.most_repeats = planner::MostUninformativeRepeats(r.iterations);
@@ -170,7 +174,7 @@ void LoopTally::Add(const LoopCaseOutcome& c, int max_repeats) {
 }
 
 bool LoopTally::Pass() const {
-  // Issue #13: ≥ 95% of the parameters of converged vehicles within 3σ.
+  // ≥ 95% of the parameters of converged vehicles within 3σ.
   const bool coverage = interest == 0 || within3 >= 0.95 * interest;
   return failures.empty() && coverage;
 }
@@ -201,14 +205,13 @@ std::string TallyText(const LoopTally& t) {
   o << "cases " << t.cases << ", verdict all/part/none " << t.hosted << "/" << t.part << "/"
     << t.none << ", verdict and loop agree " << t.agree << "/" << t.cases
     << " (all: neither infeasible nor stuck " << t.hosted_agree << "/" << t.hosted
-    << "; part: converged "
-    << t.part_converged << ", infeasible outside the hostable part " << t.part_outside
-    << ", other " << t.part - t.part_converged - t.part_outside << "; none: not converged "
-    << t.refused_agree << "/" << t.none << "), converged " << t.converged
-    << "; verdict at the truth hosted: converged " << t.at_truth[1][1] << "/"
-    << t.at_truth[1][0] + t.at_truth[1][1] << ", not hosted: converged " << t.at_truth[0][1]
-    << "/" << t.at_truth[0][0] + t.at_truth[0][1] << "; parameters of interest within 3σ "
-    << t.within3 << "/" << t.interest;
+    << "; part: converged " << t.part_converged << ", infeasible outside the hostable part "
+    << t.part_outside << ", other " << t.part - t.part_converged - t.part_outside
+    << "; none: not converged " << t.refused_agree << "/" << t.none << "), converged "
+    << t.converged << "; verdict at the truth hosted: converged " << t.at_truth[1][1] << "/"
+    << t.at_truth[1][0] + t.at_truth[1][1] << ", not hosted: converged " << t.at_truth[0][1] << "/"
+    << t.at_truth[0][0] + t.at_truth[0][1] << "; parameters of interest within 3σ " << t.within3
+    << "/" << t.interest;
   if (t.interest > 0) o << " (" << Significant(100.0 * t.within3 / t.interest, 3) << "%)";
   o << "; most runs of one design without new information " << t.most_repeats;
   for (const auto& f : t.failures) o << "\n  FAIL " << f;

@@ -54,7 +54,7 @@ TEST(FindingText, AnEffectFromOutsideGivesItsSentenceOrReadsAsItsPhysics) {
   const model::ErrorBreakdown none;
   EXPECT_EQ(FindingSentence(FindingOf("toy_effect"), none), "a toy physics line");
   {
-    const ScopedFindingSentence sentence("toy_effect", [](const FindingContext& c) {
+    const ScopedFindingSentence sentence("toy_effect", [](const FindingQuotes& c) {
       return "toy with " + std::to_string(c.params.size()) + " parameter(s)";
     });
     EXPECT_EQ(FindingSentence(FindingOf("toy_effect"), none), "toy with 0 parameter(s)");

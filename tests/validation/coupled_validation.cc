@@ -1,10 +1,10 @@
-// Full-size validation of the coupled horizontal model's one-step least squares (issue #19,
-// ident/estimators/joint_ls.h): N random coupling truths of the ASV (cases/asv, seed 003), each run
+// Full-size validation of the coupled horizontal model's one-step least squares (
+// ident/estimators/joint_ls.h): N random coupling truths of the ASV (cases/asv, ref 003), each run
 // through the three combined modes in the virtual pool and identified. Prints per parameter the
 // share of estimates within 1σ, 2σ and 3σ of the truth (Gaussian: 68.3%, 95.4%, 99.7%), the
 // mean z = (θ̂ − θ)/σ (bias, in σ) and the standard deviation of z (1 when σ is right).
 // Run: build/coupled_validation [draws = 200] [first seed = 1] [trial duration s = 120]
-//      [instrumental-variable iterations = 2; 0: the seeds' plain least squares]
+//      [instrumental-variable iterations = 2; 0: the papers' plain least squares]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -25,8 +25,9 @@ int main(int argc, char** argv) {
   ident::JointLsOptions options;
   if (argc > 4) options.iv_iterations = std::atoi(argv[4]);
   if (draws <= 0 || first == 0 || !(duration > 0) || argc > 5 || !options.IsValid(nullptr)) {
-    std::fprintf(stderr, "usage: coupled_validation [draws > 0] [first seed > 0] [duration s] "
-                         "[iv iterations 0..20]\n");
+    std::fprintf(stderr,
+                 "usage: coupled_validation [draws > 0] [first seed > 0] [duration s] "
+                 "[iv iterations 0..20]\n");
     return 2;
   }
   const model::Truth base =
@@ -54,11 +55,9 @@ int main(int argc, char** argv) {
   }
   const std::vector<std::string> names =
       model::CoupledHorizontalModel(base.vehicle).parameter_names();
-  std::printf("%d draws from seed %llu, trials of %g s, %d IV iterations, %d failed fits\n",
-              draws, static_cast<unsigned long long>(first), duration, options.iv_iterations,
-              failed);
-  std::printf("%-12s %7s %7s %7s %8s %7s\n", "parameter", "1σ %", "2σ %", "3σ %", "mean z",
-              "sd z");
+  std::printf("%d draws from seed %llu, trials of %g s, %d IV iterations, %d failed fits\n", draws,
+              static_cast<unsigned long long>(first), duration, options.iv_iterations, failed);
+  std::printf("%-12s %7s %7s %7s %8s %7s\n", "parameter", "1σ %", "2σ %", "3σ %", "mean z", "sd z");
   int within3 = 0, total = 0;
   for (int j = 0; j < P; ++j) {
     int c1 = 0, c2 = 0, c3 = 0;

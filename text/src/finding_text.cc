@@ -41,7 +41,7 @@ std::string GroupSentence(const ErrorGroup* g, const std::string& where, const s
 // direction. The fitted η says how much thrust is missing; the standard model's speed error
 // there can be much smaller, when its m, drag and bias absorb part of the loss (ref 000 Fig. 6:
 // the heave weight), so it is quoted second.
-std::string InstallationLoss(const FindingContext& f) {
+std::string InstallationLoss(const FindingQuotes& f) {
   const ident::ParameterEstimate* worst = nullptr;
   for (const auto& p : f.params) {
     if (!worst || std::abs(p.value - 1) > std::abs(worst->value - 1)) worst = &p;
@@ -62,12 +62,12 @@ std::string InstallationLoss(const FindingContext& f) {
   return s;
 }
 
-std::string AsymmetricDrag(const FindingContext& f) {
+std::string AsymmetricDrag(const FindingQuotes& f) {
   const ErrorGroup* g = model::Largest(f.breakdown.by_motion);
   return GroupSentence(g, g ? "in " + g->label : "", "drag differs between the two directions");
 }
 
-std::string ThrusterLag(const FindingContext& f) {
+std::string ThrusterLag(const FindingQuotes& f) {
   std::string s = "the response to every change of thrust comes late and smoothed";
   // The cross-correlation resolves whole samples only; a lag below that is not quoted.
   if (std::abs(f.breakdown.lag_s) > 0) {
@@ -76,18 +76,18 @@ std::string ThrusterLag(const FindingContext& f) {
   return s;
 }
 
-std::string Deadzone(const FindingContext& f) {
+std::string Deadzone(const FindingQuotes& f) {
   return GroupSentence(model::Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands),
                        "for small commands", "no thrust below a threshold");
 }
 
-std::string AdvanceSpeedLoss(const FindingContext& f) {
+std::string AdvanceSpeedLoss(const FindingQuotes& f) {
   const ErrorGroup* g = model::Largest(f.breakdown.by_speed);
   return GroupSentence(g, g ? "at " + g->label : "", "thrust falls with the speed of advance");
 }
 
 // The coupled horizontal model of ref 003 names the Coriolis pair of each DOF.
-std::string Coupling(const FindingContext& f) {
+std::string Coupling(const FindingQuotes& f) {
   std::string s = "errors follow the motion of other degrees of freedom (" + f.detail.substr(0, 1) +
                   "·" + f.detail.substr(1, 1) + ")";
   const model::CoriolisTerm coriolis = model::CoriolisTermOf(f.breakdown.dof);
@@ -99,13 +99,13 @@ std::string Coupling(const FindingContext& f) {
   return s;
 }
 
-std::string SensorDelay(const FindingContext& f) {
+std::string SensorDelay(const FindingQuotes& f) {
   return "every measurement lags the simulated motion by a fixed time (" + LagText(f.breakdown) +
          " at the best cross-correlation)";
 }
 
 // The relative change of thrust per second of campaign, over the span of the campaign clock.
-std::string ParameterDrift(const FindingContext& f) {
+std::string ParameterDrift(const FindingQuotes& f) {
   const double per_s = f.params.empty() ? 0.0 : f.params[0].value;
   const double sigma_s = f.params.empty() ? 0.0 : f.params[0].sigma;
   const double span_h = f.breakdown.campaign_span_h;
@@ -123,7 +123,7 @@ std::string ParameterDrift(const FindingContext& f) {
 }
 
 // u = u0·(|u0|/u_ref)^p: at a fifth of the largest command the force is 0.2^p of nominal.
-std::string ThrustMap(const FindingContext& f) {
+std::string ThrustMap(const FindingQuotes& f) {
   const double p = f.params.empty() ? 0.0 : f.params[0].value;
   const double sigma = f.params.empty() ? 0.0 : f.params[0].sigma;
   const double fifth = std::pow(0.2, p) - 1.0;

@@ -49,7 +49,7 @@ void PrintParameters(const ident::DofIdentification& d, std::ostream& out) {
 // The fit figures of a DOF, overall and per trial with its residual analysis.
 void PrintFit(const ident::DofIdentification& d, std::ostream& out) {
   const auto& f = d.fit;
-  // Angles for people in degrees (docs/cli.md); rates stay in rad/s, as the seeds report them.
+  // Angles for people in degrees (docs/cli.md); rates stay in rad/s, as the papers report them.
   const bool rotation = model::IsRotational(d.dof);
   const double p_scale = rotation ? 180.0 / M_PI : 1.0;
   const std::string v_unit(model::VelocityUnit(d.dof)), p_unit(rotation ? "°" : "m");
@@ -77,7 +77,7 @@ void PrintFit(const ident::DofIdentification& d, std::ostream& out) {
   table.Print(out);
 }
 
-// The seeds' one-step integral LS beside the reported estimate, when that is another's.
+// The papers' one-step integral LS beside the reported estimate, when that is another's.
 void PrintOneStep(const ident::DofIdentification& d, std::ostream& out) {
   if (!d.one_step || !d.one_step->ok()) return;
   if (d.estimator != ident::FinalEstimator::kOneStep) {
@@ -98,7 +98,7 @@ void PrintOneStep(const ident::DofIdentification& d, std::ostream& out) {
   }
 }
 
-// Seed 004 Fig. 11 as a table: the estimated parameters ± σ after the updates at about 10%,
+// Ref 004 Fig. 11 as a table: the estimated parameters ± σ after the updates at about 10%,
 // 25%, 50%, 75% and 100% of the rows (the whole trace is in the JSON).
 void PrintRlsConvergence(const ident::DofIdentification& d, std::ostream& out) {
   if (!d.rls || !d.rls->ok()) return;

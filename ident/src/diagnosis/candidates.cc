@@ -75,9 +75,9 @@ bool SpansCampaignClock(const Trials& trials, bool campaign_clock) {
   return campaign_clock && trials.size() >= 2 && t1 - t0 > 0;
 }
 
-model::ProposalContext Context(const model::Vehicle& vehicle, const StructureFit& base,
-                               const Trials& trials, bool campaign_clock) {
-  model::ProposalContext c;
+model::ProposalEvidence EvidenceOf(const model::Vehicle& vehicle, const StructureFit& base,
+                                   const Trials& trials, bool campaign_clock) {
+  model::ProposalEvidence c;
   c.dof = base.structure.dof;
   c.parameters = &base.structure.parameters;
   c.values = &base.values;
@@ -110,7 +110,7 @@ std::vector<Candidate> CandidatesFor(const std::string& name, const model::Vehic
   std::vector<Candidate> out;
   const model::EffectEntry* effect = model::Effects().Find(name);
   if (!effect || !effect->propose) return out;
-  for (model::Proposal& p : effect->propose(Context(vehicle, base, trials, campaign_clock))) {
+  for (model::Proposal& p : effect->propose(EvidenceOf(vehicle, base, trials, campaign_clock))) {
     Candidate c{effect, p, base.structure, {}};
     for (const auto& [parameter, start] : p.start) {
       c.structure.Add(parameter);

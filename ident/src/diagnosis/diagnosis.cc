@@ -65,7 +65,6 @@ void Progress(const DiagnoseOptions& options, const std::string& line) {
   if (options.progress) options.progress(line);
 }
 
-
 std::vector<std::unique_ptr<TrialData>> PrepareAll(const model::Campaign& campaign,
                                                    const TrialDataOptions& data) {
   std::vector<std::unique_ptr<TrialData>> prepared;
@@ -146,15 +145,14 @@ std::vector<Significant> TestCandidates(const model::Vehicle& vehicle,
   diagnosis::ParallelFor(candidates.size(), options.threads, [&](std::size_t i) {
     Values s = d.current.values;
     for (const auto& [n, v0] : candidates[i].proposal.start) s[n] = v0;
-    fits[i] = diagnosis::FitPhysical(vehicle, candidates[i].structure, d.fit, s,
-                                     d.current.dropped, options.output_error, d.current.values,
-                                     d.current.held);
+    fits[i] = diagnosis::FitPhysical(vehicle, candidates[i].structure, d.fit, s, d.current.dropped,
+                                     options.output_error, d.current.values, d.current.held);
   });
   std::vector<Significant> significant;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     CandidateTest t = diagnosis::Test(candidates[i], d.current, fits[i], round);
-    t.significant = t.p_value < options.significance && t.max_z >= options.min_z &&
-                    t.non_physical.empty();
+    t.significant =
+        t.p_value < options.significance && t.max_z >= options.min_z && t.non_physical.empty();
     result->tests.push_back(t);
     if (t.significant) {
       significant.push_back({candidates[i], std::move(fits[i]), result->tests.size() - 1});
@@ -167,8 +165,8 @@ std::vector<Significant> TestCandidates(const model::Vehicle& vehicle,
 }
 
 // Stage "extend": the accepted candidate becomes the current structure, and a finding.
-void Accept(Significant* sig, const DiagnosisGain& g, std::set<std::string>* used,
-            DofDiagnosis* d, DiagnosisResult* result) {
+void Accept(Significant* sig, const DiagnosisGain& g, std::set<std::string>* used, DofDiagnosis* d,
+            DiagnosisResult* result) {
   CandidateTest& test = result->tests[sig->test];
   test.accepted = true;
   Finding f{test.effect,
@@ -260,14 +258,16 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
                 int round, std::set<std::string>* used, DofDiagnosis* d, DiagnosisResult* result,
                 StageClock* clock) {
   const std::string dof(model::DofName(d->dof));
-  Progress(options, dof + ": round " + std::to_string(round + 1) + ", fitting the candidate effects");
+  Progress(options,
+           dof + ": round " + std::to_string(round + 1) + ", fitting the candidate effects");
   std::vector<Significant> significant =
       TestCandidates(vehicle, options, campaign_clock, round, *used, *d, result);
   clock->Lap("test");
   std::vector<int> order(significant.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return AicGain(result->tests[significant[a].test]) > AicGain(result->tests[significant[b].test]);
+    return AicGain(result->tests[significant[a].test]) >
+           AicGain(result->tests[significant[b].test]);
   });
   std::vector<DiagnosisGain> gains(significant.size());
   int best = -1;
@@ -276,8 +276,8 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
     if (best >= 0 && AicGain(result->tests[significant[best].test]) - AicGain(t) > 2) break;
     Progress(options, dof + ": held-out gain of " + t.effect);
     ReleaseHeld(vehicle, options, *d, &significant[i].fit);
-    gains[i] = diagnosis::HeldOutGain(vehicle, d->current, significant[i].fit, d->fit,
-                                      d->validate, options.output_error, options.threads);
+    gains[i] = diagnosis::HeldOutGain(vehicle, d->current, significant[i].fit, d->fit, d->validate,
+                                      options.output_error, options.threads);
     result->tests[significant[i].test].gain = gains[i].relative;
     result->tests[significant[i].test].unscored = gains[i].unscored;
     if (best < 0 && gains[i].scored && gains[i].relative >= options.min_gain) best = i;
@@ -342,8 +342,8 @@ double ZFromNull(const Candidate& c, const StructureFit& f, const std::string& n
 // (tartan heave's asymmetric drag: kq_neg 421 ± 156 against kq = 177, 0.7σ of the
 // difference). The weakest effect that fails is removed and the rest refitted, until every one
 // passes (backward elimination); a note says what was removed and why.
-void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& options,
-                    DofDiagnosis* d, DiagnosisResult* result) {
+void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& options, DofDiagnosis* d,
+                    DiagnosisResult* result) {
   while (!d->found.empty()) {
     int weakest = -1;
     double weakest_z = options.min_z;
@@ -399,12 +399,12 @@ void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& option
 }
 
 // Coupling terms read other DOFs' noisy logs: add that noise to the σ (input_noise.cc).
-void AddInputNoise(const model::Campaign& campaign, const DiagnoseOptions& options,
-                   DofDiagnosis* d, DiagnosisResult* result) {
+void AddInputNoise(const model::Campaign& campaign, const DiagnoseOptions& options, DofDiagnosis* d,
+                   DiagnosisResult* result) {
   if (d->current.structure.WithPrefix(model::param::kCouplingPrefix).empty()) return;
-  diagnosis::AddInputNoiseCovariance(campaign, d->fit, options.identify.data,
-                                     options.output_error, options.input_noise_replicates,
-                                     options.seed, options.threads, &d->current, &result->notes);
+  diagnosis::AddInputNoiseCovariance(campaign, d->fit, options.identify.data, options.output_error,
+                                     options.input_noise_replicates, options.seed, options.threads,
+                                     &d->current, &result->notes);
 }
 
 // Every finding's parameters as the final extended model estimates them. A finding accepted
@@ -552,9 +552,8 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
   Progress(options, "identifying the standard model");
   result.nominal = IdentifyNominal(campaign, prepared, dofs, options.identify);
   clock.Lap("screen");
-  const bool campaign_clock =
-      std::all_of(campaign.trials.begin(), campaign.trials.end(),
-                  [](const model::TrialEntry& e) { return e.has_start; });
+  const bool campaign_clock = std::all_of(campaign.trials.begin(), campaign.trials.end(),
+                                          [](const model::TrialEntry& e) { return e.has_start; });
   for (Dof dof : dofs) {
     const DofIdentification* nominal = result.nominal.Find(dof);
     // A standard model that is only non-physical is diagnosed: the extension is the remedy.
@@ -568,8 +567,9 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
     Progress(options, std::string(model::DofName(dof)) + ": testing the effects");
     DiagnoseDof(campaign, options, prepared, *nominal, campaign_clock, &result, &clock);
   }
-  std::stable_sort(result.findings.begin(), result.findings.end(),
-                   [](const Finding& a, const Finding& b) { return a.gain.relative > b.gain.relative; });
+  std::stable_sort(
+      result.findings.begin(), result.findings.end(),
+      [](const Finding& a, const Finding& b) { return a.gain.relative > b.gain.relative; });
   clock.Lap("extend");
   result.timing = clock.times();
   return result;

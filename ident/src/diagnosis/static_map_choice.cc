@@ -175,7 +175,8 @@ void ChooseStaticMap(const model::Campaign& campaign, const TrialDataOptions& da
     c.validate_mae = PooledVelocityMae(*f.model, f.oe.theta, validate_p, oe.step_s, &c.why);
     c.scored = std::isfinite(c.validate_mae) && !validate.empty();
     held_out.push_back(PerTrialMae(f, validate_p, oe.step_s));
-    if (c.scored) PairedDifference(held_out.back(), power_law, &c.vs_power_law, &c.vs_power_law_sigma);
+    if (c.scored)
+      PairedDifference(held_out.back(), power_law, &c.vs_power_law, &c.vs_power_law_sigma);
     finding->static_maps.push_back(std::move(c));
   }
   finding->chosen_map = Choose(finding->static_maps, held_out);

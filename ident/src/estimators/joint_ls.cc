@@ -100,7 +100,8 @@ void Instrumental(const std::vector<JointTrialData>& trials, const JointLsOption
     }
     std::vector<Eigen::MatrixXd> simulated;
     for (const JointTrialData& d : trials) {
-      simulated.push_back(internal::SimulatedVelocities(d, *fit->model, fit->theta, options.step_s));
+      simulated.push_back(
+          internal::SimulatedVelocities(d, *fit->model, fit->theta, options.step_s));
     }
     const Eigen::MatrixXd Z = internal::BuildJointRows(*fit->model, trials, simulated).H;
     const Eigen::VectorXd theta =
@@ -115,7 +116,8 @@ void Instrumental(const std::vector<JointTrialData>& trials, const JointLsOption
     }
     fit->Z = Z;
     fit->theta = theta;
-    fit->w = EquationWeights(fit->rows, fit->rows.y - fit->rows.H * fit->theta, fit->model->num_dofs());
+    fit->w =
+        EquationWeights(fit->rows, fit->rows.y - fit->rows.H * fit->theta, fit->model->num_dofs());
     result->instrumental = true;
   }
 }
@@ -189,7 +191,8 @@ bool FitAndPrune(const std::vector<JointTrialData>& data, const JointLsOptions& 
     const Eigen::MatrixXd Z = sw.asDiagonal() * SelectedColumns(fit->Z, fit->cols);
     result->covariance =
         Expand(Ma1Covariance(H, Z, sw.cwiseProduct(r), fit->rows.group), fit->cols, fit->np());
-    const int drop = options.prune ? NegativeInsignificantDrag(*fit->model, *result, fit->cols) : -1;
+    const int drop =
+        options.prune ? NegativeInsignificantDrag(*fit->model, *result, fit->cols) : -1;
     if (drop < 0) return true;
     result->dropped.push_back({drop, result->theta[drop], result->Sigma(drop)});
     fit->cols.erase(std::find(fit->cols.begin(), fit->cols.end(), drop));
@@ -203,8 +206,8 @@ bool JointLsOptions::IsValid(std::string* error) const {
   return Require(sg_order >= 1 && sg_order <= 8, "JointLsOptions::sg_order: 1..8", error) &&
          Require(sg_window == 0 || (sg_window >= sg_order + 2 && sg_window % 2 == 1),
                  "JointLsOptions::sg_window: 0 or odd and >= sg_order + 2", error) &&
-         Require(iv_iterations >= 0 && iv_iterations <= 20,
-                 "JointLsOptions::iv_iterations: 0..20", error) &&
+         Require(iv_iterations >= 0 && iv_iterations <= 20, "JointLsOptions::iv_iterations: 0..20",
+                 error) &&
          Require(step_s > 0 && step_s <= 1, "JointLsOptions::step_s: in (0, 1] s", error);
 }
 

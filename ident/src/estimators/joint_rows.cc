@@ -51,8 +51,9 @@ std::string ReadForces(const model::TrialLog& log, model::Dof dof, const std::st
                        std::vector<double>* t, std::vector<double>* force) {
   const std::string name(model::DofName(dof));
   if (!log.HasVelocity(dof)) {
-    return where + ": no vel_" + name + " column (a joint model needs the measured velocity of "
-                   "each of its DOFs)";
+    return where + ": no vel_" + name +
+           " column (a joint model needs the measured velocity of "
+           "each of its DOFs)";
   }
   if (!log.HasForce(dof)) return where + ": no force_" + name + " column";
   for (std::size_t k = 0; k < log.size(); ++k) {
@@ -85,7 +86,8 @@ std::string PrepareJointTrial(const model::TrialLog& log, int index,
   out->force.resize(n);
   double input_scale = 0.0;
   for (int i = 0; i < n; ++i) {
-    const std::string error = ReadForces(log, model.dof(i), where, &out->force_t[i], &out->force[i]);
+    const std::string error =
+        ReadForces(log, model.dof(i), where, &out->force_t[i], &out->force[i]);
     if (!error.empty()) return error;
     const double scale = InputTimeScale(out->force_t[i], out->force[i]);
     if (scale > 0) input_scale = input_scale > 0 ? std::min(input_scale, scale) : scale;

@@ -19,7 +19,7 @@ namespace uuvplan::ident::internal {
 
 /// One trial, per DOF of the model (its index).
 struct JointTrialData {
-  std::vector<SmoothedSignal> velocity;          ///< smoothed ξ_i
+  std::vector<SmoothedSignal> velocity;             ///< smoothed ξ_i
   std::vector<std::vector<double>> force_t, force;  ///< the logged rows (NaN dropped)
   std::vector<double> grid;       ///< knots and the integration sub-steps between them
   std::vector<std::size_t> knot;  ///< grid index of each knot

@@ -1,5 +1,5 @@
 // Unit and sign sanity of a campaign's logs (input_sanity.h). The comparisons are on the
-// Savitzky–Golay smoothed signals (seed 000 §IV-D window at the log's rate), so that the noise
+// Savitzky–Golay smoothed signals (ref 000 §IV-D window at the log's rate), so that the noise
 // of a differentiated position does not decide; where it still does, the rate's integral is
 // compared with the raw position's changes over windows (RateAgainstIncrements).
 #include "uuvplan/ident/prepare/input_sanity.h"
@@ -28,8 +28,9 @@ constexpr std::size_t kMinSamples = 30;  // fewer aligned samples: no verdict
 Signal Finite(model::TimesView t, const std::vector<double>& y) {
   Signal s;
   const std::size_t n = std::min(t.size(), y.size());
-  const auto finite = static_cast<std::size_t>(
-      std::count_if(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(n), [](double v) { return std::isfinite(v); }));
+  const auto finite =
+      static_cast<std::size_t>(std::count_if(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(n),
+                                             [](double v) { return std::isfinite(v); }));
   s.t.reserve(finite);
   s.y.reserve(finite);
   for (std::size_t i = 0; i < n; ++i) {
@@ -41,7 +42,7 @@ Signal Finite(model::TimesView t, const std::vector<double>& y) {
   return s;
 }
 
-// A log column's finite samples with the Savitzky–Golay filter seed 000 would smooth them with
+// A log column's finite samples with the Savitzky–Golay filter ref 000 would smooth them with
 // (window at the log's rate). The smoothed signal is computed when a check needs it, stored
 // (Smoothed) or streamed (ForEachSmoothed): a long log's check holds no per-sample copy.
 struct Smoothable {
@@ -65,7 +66,7 @@ std::optional<Smoothable> SmoothableOf(const Signal& s, double input_time_scale)
 // unchanged when this object goes: every all-finite column, the times shared; or, when there is
 // none, the one column with few gaps (non-finite cells in at most 1/8 of the rows), compacted in
 // place with the rows it drops kept aside. A million-row log's check then holds no second copy
-// of it (issue #16).
+// of it.
 class OwnColumns {
  public:
   // `lender`, when given, is `log` itself.
@@ -370,7 +371,7 @@ void CheckRateAgainstPosition(TrialCheck& c) {
              "the two columns have opposite sign conventions: negate the one that is wrong "
              "(contract §Conventions)");
   } else if (!from_windows && (std::abs(ratio) > c.o.unit_ratio_limit ||
-                                std::abs(ratio) < 1.0 / c.o.unit_ratio_limit)) {
+                               std::abs(ratio) < 1.0 / c.o.unit_ratio_limit)) {
     c.Report(c.vel_name, seen,
              "the two columns are in different units: expected " + PositionUnitOf(c.dof) + " and " +
                  RateUnitOf(c.dof));
@@ -514,9 +515,12 @@ bool InputSanityOptions::IsValid(std::string* error) const {
                  error);
 }
 
-std::string InputProblem::Text() const { return file + ": column " + column + ": " + finding + " — " + fix; }
+std::string InputProblem::Text() const {
+  return file + ": column " + column + ": " + finding + " — " + fix;
+}
 
-std::vector<InputProblem> CheckInputSanity(const model::Campaign& campaign, const InputSanityOptions& o) {
+std::vector<InputProblem> CheckInputSanity(const model::Campaign& campaign,
+                                           const InputSanityOptions& o) {
   std::vector<InputProblem> out;
   for (const model::TrialEntry& e : campaign.trials) CheckTrial(e, nullptr, o, &out);
   return out;

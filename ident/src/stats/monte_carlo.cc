@@ -37,8 +37,10 @@ double TrueParameter(const model::Truth& truth, model::Dof dof, const std::strin
   const auto it = truth.dofs.find(dof);
   if (it != truth.dofs.end()) {
     if (auto p = it->second.params.find(name); p != it->second.params.end()) return p->second;
-    if (name == model::param::kLinearDragNeg) return TrueParameter(truth, dof, model::param::kLinearDrag);
-    if (name == model::param::kQuadraticDragNeg) return TrueParameter(truth, dof, model::param::kQuadraticDrag);
+    if (name == model::param::kLinearDragNeg)
+      return TrueParameter(truth, dof, model::param::kLinearDrag);
+    if (name == model::param::kQuadraticDragNeg)
+      return TrueParameter(truth, dof, model::param::kQuadraticDrag);
   }
   return name.rfind(model::param::kEtaPrefix, 0) == 0 ? 1.0 : 0.0;
 }
@@ -120,7 +122,8 @@ class CoverageTally {
       c.sd = a.n > 1 ? std::sqrt(std::max(0.0, (a.sum2 - a.sum * a.sum / a.n) / (a.n - 1))) : 0.0;
       c.mean_sigma = a.sum_sigma / a.n;
       if (c.estimator == "output_error" || c.estimator == "final") {
-        if (auto it = crb.find({std::get<1>(key), c.name}); it != crb.end()) c.crb_sigma = it->second;
+        if (auto it = crb.find({std::get<1>(key), c.name}); it != crb.end())
+          c.crb_sigma = it->second;
       }
       cells.push_back(c);
     }
@@ -143,7 +146,8 @@ std::map<std::pair<int, std::string>, double> CramerRaoSigmas(const model::Truth
   std::map<std::pair<int, std::string>, double> crb;
   std::vector<TrialData> trials;
   for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
-    trials.push_back(PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.identify.data));
+    trials.push_back(
+        PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.identify.data));
   }
   for (const DofIdentification& d : res.dofs) {
     if (!d.output_error || !d.output_error->ok()) continue;
@@ -199,7 +203,8 @@ MonteCarloReport RunMonteCarlo(const model::Truth& truth,
   if (o.threads != 1) identify.threads = 1;  // the repetitions share the cores
   diagnosis::ParallelFor(slots.size(), o.threads, [&](std::size_t rep) {
     try {
-      slots[rep].result = Identify(model::BuildVirtualCampaign(truth, designs, pool_of(int(rep))), identify);
+      slots[rep].result =
+          Identify(model::BuildVirtualCampaign(truth, designs, pool_of(int(rep))), identify);
     } catch (const std::exception& ex) {
       slots[rep].error = ex.what();
     }
@@ -211,7 +216,8 @@ MonteCarloReport RunMonteCarlo(const model::Truth& truth,
     const Slot& s = slots[rep];
     if (!s.error.empty()) {
       ++report.failures;
-      if (report.notes.size() < 5) report.notes.push_back("repetition " + std::to_string(rep) + ": " + s.error);
+      if (report.notes.size() < 5)
+        report.notes.push_back("repetition " + std::to_string(rep) + ": " + s.error);
       continue;
     }
     for (const DofIdentification& d : s.result.dofs) {
@@ -219,7 +225,8 @@ MonteCarloReport RunMonteCarlo(const model::Truth& truth,
     }
     if (o.cramer_rao && !crb_done) {
       crb_done = true;  // the first good repetition's campaign, rebuilt from its seed
-      crb = CramerRaoSigmas(truth, model::BuildVirtualCampaign(truth, designs, pool_of(rep)), s.result, o);
+      crb = CramerRaoSigmas(truth, model::BuildVirtualCampaign(truth, designs, pool_of(rep)),
+                            s.result, o);
     }
   }
   report.cells = tally.Cells(crb);

@@ -19,8 +19,7 @@ BoxPoint Point(double m, double drag_factor, const model::DragPrior& drag) {
 std::vector<BoxPoint> VerdictPoints(const model::Vehicle& vehicle, model::Dof dof,
                                     const BoxOptions& options) {
   const auto mb = vehicle.InertiaBounds(dof);
-  const model::DragPrior drag =
-      model::DragOf(vehicle, dof, options.fallback_drag_rel_sigma).drag;
+  const model::DragPrior drag = model::DragOf(vehicle, dof, options.fallback_drag_rel_sigma).drag;
   // The drag axis of APrioriBox: k and kq together × [1 − n·rs, 1 + n·rs] (at least 0.05).
   const double half = options.drag_sigmas * drag.rel_sigma;
   const double lo = std::max(0.05, 1.0 - half), hi = 1.0 + half;

@@ -68,8 +68,8 @@ struct Setup {
   }
   // S·F·S of the covered parameters at θ (the others known).
   Eigen::MatrixXd InformationAt(const Eigen::VectorXd& theta, const CombinedInputs& in) const {
-    const Eigen::MatrixXd M = JointInformation(model, theta, in.conditions, vehicle.sensors,
-                                               o.duration_s, o.step_s);
+    const Eigen::MatrixXd M =
+        JointInformation(model, theta, in.conditions, vehicle.sensors, o.duration_s, o.step_s);
     Eigen::MatrixXd F(covered.size(), covered.size());
     for (std::size_t a = 0; a < covered.size(); ++a) {
       for (std::size_t b = 0; b < covered.size(); ++b) {
@@ -83,9 +83,11 @@ struct Setup {
 // The box's points as θ: the criterion's (its design points) and the constraints' (centre,
 // every vertex, the swept axis inside).
 void AddBoxPoints(const ParameterBox& box, Setup* s) {
-  for (const ParameterValues& p : box.DesignPoints()) s->design_points.push_back(ThetaAt(s->model, p));
+  for (const ParameterValues& p : box.DesignPoints())
+    s->design_points.push_back(ThetaAt(s->model, p));
   s->check_points = {ThetaAt(s->model, box.nominal)};
-  for (const ParameterValues& p : box.CheckPoints(2)) s->check_points.push_back(ThetaAt(s->model, p));
+  for (const ParameterValues& p : box.CheckPoints(2))
+    s->check_points.push_back(ThetaAt(s->model, p));
   for (std::size_t a = 0; a < box.axes.size(); ++a) {
     if (box.axes[a].name != s->o.swept_axis) continue;
     constexpr int kSweep = 17;
@@ -121,14 +123,17 @@ Setup MakeSetup(const model::MultiDofModel& model, const model::Vehicle& vehicle
     const auto d = std::find(s.moved.begin(), s.moved.end(), i);
     if (d == s.moved.end()) continue;
     s.covered.push_back(j);
-    scale.push_back(nominal[j] != 0 ? std::abs(nominal[j]) : 0.01 * s.force_max[d - s.moved.begin()]);
+    scale.push_back(nominal[j] != 0 ? std::abs(nominal[j])
+                                    : 0.01 * s.force_max[d - s.moved.begin()]);
   }
   s.scale = Eigen::Map<Eigen::VectorXd>(scale.data(), static_cast<Eigen::Index>(scale.size()));
   bool measured = false;
-  for (int i = 0; i < model.num_dofs(); ++i) measured = measured || vehicle.sensors.count(model.dof(i));
+  for (int i = 0; i < model.num_dofs(); ++i)
+    measured = measured || vehicle.sensors.count(model.dof(i));
   if (!measured) {
     throw model::InputError("vehicle '" + vehicle.name + "' declares no sensor of " +
-                            model::DofList(o.dofs) + ": a combined design has nothing to measure "
+                            model::DofList(o.dofs) +
+                            ": a combined design has nothing to measure "
                             "(sensors.<dof> in the vehicle file)");
   }
   AddBoxPoints(box, &s);
@@ -172,8 +177,9 @@ DesignProblem ProblemOf(const Setup& s) {
 void PlaceStart(const Setup& s, CombinedDesign* d) {
   for (int i = 0; i < s.model.num_dofs(); ++i) {
     const model::Dof dof = s.model.dof(i);
-    d->start.push_back(model::IsRotational(dof) ? s.o.start_heading_rad
-                                                : StartOf(s.pool, dof, d->envelope.travel[i]).value);
+    d->start.push_back(model::IsRotational(dof)
+                           ? s.o.start_heading_rad
+                           : StartOf(s.pool, dof, d->envelope.travel[i]).value);
   }
 }
 
@@ -194,8 +200,9 @@ void AddCramerRao(const Setup& s, CombinedDesign* d) {
     if (llt.info() != Eigen::Success) {
       d->worst_sigma.assign(p, std::numeric_limits<double>::infinity());
       d->worst_relative_sigma.assign(p, std::numeric_limits<double>::infinity());
-      d->reasons.push_back("the trial does not determine every parameter of the DOFs it moves "
-                           "(singular Fisher information at a point of the box)");
+      d->reasons.push_back(
+          "the trial does not determine every parameter of the DOFs it moves "
+          "(singular Fisher information at a point of the box)");
       return;
     }
     const Eigen::MatrixXd cov = llt.solve(Eigen::MatrixXd::Identity(F.rows(), F.cols()));
@@ -203,9 +210,8 @@ void AddCramerRao(const Setup& s, CombinedDesign* d) {
       const double sigma = std::sqrt(std::max(cov(c, c), 0.0)) * s.scale[c];
       const double value = std::abs(theta[s.covered[c]]);
       d->worst_sigma[c] = std::max(d->worst_sigma[c], sigma);
-      d->worst_relative_sigma[c] =
-          value > 0 ? std::max(d->worst_relative_sigma[c], sigma / value)
-                    : std::numeric_limits<double>::quiet_NaN();
+      d->worst_relative_sigma[c] = value > 0 ? std::max(d->worst_relative_sigma[c], sigma / value)
+                                             : std::numeric_limits<double>::quiet_NaN();
     }
   }
 }
@@ -273,7 +279,8 @@ CombinedDesign PlanCombinedDesign(const model::MultiDofModel& model, const model
   const ParameterBox box = JointAPrioriBox(vehicle, model, o.box, &out.notes);
   Setup s = MakeSetup(model, vehicle, pool, o, box);
   std::vector<Eigen::VectorXd> probes;
-  for (const ParameterValues& p : box.Sample(o.probe_points, o.probe_seed)) probes.push_back(ThetaAt(model, p));
+  for (const ParameterValues& p : box.Sample(o.probe_points, o.probe_seed))
+    probes.push_back(ThetaAt(model, p));
   DesignProblem problem = ProblemOf(s);
   SolverOptions solver = o.solver;
   for (int round = 0; round <= o.exchange_rounds; ++round) {

@@ -26,7 +26,8 @@ std::vector<bool> WorkingThrusters(const model::Vehicle& vehicle,
                                    const model::CombinedTrialDesign& trial) {
   std::vector<bool> works(vehicle.thrusters.size(), false);
   for (const model::TrialDesign& in : trial.inputs) {
-    for (const auto& [ti, share] : MappingOf(vehicle, in).shares) works[ti] = works[ti] || share != 0.0;
+    for (const auto& [ti, share] : MappingOf(vehicle, in).shares)
+      works[ti] = works[ti] || share != 0.0;
   }
   return works;
 }
@@ -44,8 +45,9 @@ void ThrustEnvelope(const model::Vehicle& vehicle, const model::CombinedTrialDes
   for (double t : internal::Grid(trial.duration, step_s)) {
     for (const model::TrialDesign& in : trial.inputs) {
       const double phi = in.NominalForce(t);
-      if (phi != 0.0 && !MappingOf(vehicle, in).IsOpenWater(phi > 0 ? model::Direction::kPos
-                                                                    : model::Direction::kNeg)) {
+      if (phi != 0.0 &&
+          !MappingOf(vehicle, in)
+               .IsOpenWater(phi > 0 ? model::Direction::kPos : model::Direction::kNeg)) {
         e->closed_water_force = std::max(e->closed_water_force, std::abs(phi));
       }
     }
@@ -78,7 +80,7 @@ int CombinedMappingOf(const model::Vehicle& vehicle, model::Dof dof) {
 }
 
 std::vector<double> ThrusterForcesAt(const model::Vehicle& vehicle,
-                                   const model::CombinedTrialDesign& trial, double t) {
+                                     const model::CombinedTrialDesign& trial, double t) {
   std::vector<double> tau(vehicle.thrusters.size(), 0.0);
   for (const model::TrialDesign& in : trial.inputs) {
     const double phi = in.NominalForce(t);

@@ -25,9 +25,9 @@ void AddSensor(const model::SensorSpec& spec, int channel, double duration,
   }
   const double inv_var = SampleInformation(spec);
   const double span = duration * spec.rate_hz;
-  const long whole = model::CheckedFloor(span, "sensor samples (duration × rate)",
-                                         model::limits::kMaxTrialRows,
-                                         "a shorter trial or a lower sensor rate");
+  const long whole =
+      model::CheckedFloor(span, "sensor samples (duration × rate)", model::limits::kMaxTrialRows,
+                          "a shorter trial or a lower sensor rate");
   for (long k = 0; k <= whole; ++k) samples->push_back({k / spec.rate_hz, channel, inv_var});
   const double frac = span - whole;
   if (frac > 1e-9) samples->push_back({(whole + 1) / spec.rate_hz, channel, frac * inv_var});
@@ -50,7 +50,8 @@ SampleGrid GridOf(std::vector<Sample> samples, double duration) {
             [](const Sample& a, const Sample& b) { return a.t < b.t; });
   g.row.resize(g.samples.size());
   for (std::size_t i = 0; i < g.samples.size(); ++i) {
-    if (g.times.empty() || g.samples[i].t > g.times.back() + 1e-12) g.times.push_back(g.samples[i].t);
+    if (g.times.empty() || g.samples[i].t > g.times.back() + 1e-12)
+      g.times.push_back(g.samples[i].t);
     g.row[i] = static_cast<int>(g.times.size()) - 1;
   }
   return g;
@@ -81,8 +82,7 @@ void AddExtremes(const model::Trajectory& traj, const std::vector<double>& times
 Eigen::MatrixXd ProfiledOut(const Eigen::MatrixXd& full, int np) {
   const int nn = static_cast<int>(full.rows()) - np;
   const Eigen::MatrixXd Mtn = full.topRightCorner(np, nn);
-  const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> Mnn(
-      full.bottomRightCorner(nn, nn));
+  const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> Mnn(full.bottomRightCorner(nn, nn));
   const Eigen::MatrixXd M = full.topLeftCorner(np, np) - Mtn * Mnn.solve(Mtn.transpose());
   return 0.5 * (M + M.transpose());
 }
@@ -109,17 +109,19 @@ TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd&
   model::SimulationOptions options;
   options.step_s = step_s;
   options.sensitivities = with_information;
-  const model::Trajectory traj = model::SimulateMeasured(model, theta, conditions, g.times, options);
+  const model::Trajectory traj =
+      model::SimulateMeasured(model, theta, conditions, g.times, options);
   TrialResponse r;
   AddExtremes(traj, g.times, duration, &r);
   if (!with_information) return r;
 
-  // The information the identification can use: its output error (ident/src/estimators/output_error.cc)
-  // fits each trial's initial state with θ — the initial position χ0 whenever a position sensor
-  // is used, the initial velocity ξ0 unless the log is judged to start at rest — as seed 000's
-  // integral method (eqs. 16-19) fits m·ξ0 + k·χ0. Known exactly here, they lent a steady run
-  // the position lag v·m/k_L of its whole plateau as information on m (payload60 yaw-next-15:
-  // σ(m) predicted 0.053, achieved 0.50 kg·m²). So they are nuisance parameters, profiled out:
+  // The information the identification can use: its output error
+  // (ident/src/estimators/output_error.cc) fits each trial's initial state with θ — the initial
+  // position χ0 whenever a position sensor is used, the initial velocity ξ0 unless the log is
+  // judged to start at rest — as ref 000's integral method (eqs. 16-19) fits m·ξ0 + k·χ0. Known
+  // exactly here, they lent a steady run the position lag v·m/k_L of its whole plateau as
+  // information on m (payload60 yaw-next-15: σ(m) predicted 0.053, achieved 0.50 kg·m²). So they
+  // are nuisance parameters, profiled out:
   //   M = Mθθ − Mθn·Mnn⁺·Mnθ   of the information of (θ, χ0, ξ0),
   // with ∂y/∂χ0 = (1, 0) (no force depends on the position) and ∂y/∂ξ0 by a forward
   // difference, as the output error takes it. ξ0 is profiled out even where the output error

@@ -8,8 +8,8 @@
 #include <nlopt.hpp>
 
 #include "design/design_evaluator.h"
-#include "uuvplan/planner/design/solver.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/planner/design/solver.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -108,10 +108,13 @@ void LocalConstraints(unsigned m, double* result, unsigned n, const double* z, d
   }
 }
 
-constexpr model::EnumNames<nlopt::result, 6> kResultNames{{{
-    {nlopt::SUCCESS, "SUCCESS"}, {nlopt::STOPVAL_REACHED, "STOPVAL_REACHED"},
-    {nlopt::FTOL_REACHED, "FTOL_REACHED"}, {nlopt::XTOL_REACHED, "XTOL_REACHED"},
-    {nlopt::MAXEVAL_REACHED, "MAXEVAL_REACHED"}, {nlopt::MAXTIME_REACHED, "MAXTIME_REACHED"}}}};
+constexpr model::EnumNames<nlopt::result, 6> kResultNames{
+    {{{nlopt::SUCCESS, "SUCCESS"},
+      {nlopt::STOPVAL_REACHED, "STOPVAL_REACHED"},
+      {nlopt::FTOL_REACHED, "FTOL_REACHED"},
+      {nlopt::XTOL_REACHED, "XTOL_REACHED"},
+      {nlopt::MAXEVAL_REACHED, "MAXEVAL_REACHED"},
+      {nlopt::MAXTIME_REACHED, "MAXTIME_REACHED"}}}};
 
 // NLopt's name of a result; the failures by number.
 std::string ResultName(nlopt::result r) {

@@ -1,4 +1,4 @@
-// Seed 000's procedure on ROMEO as virtual trials (paper_procedure.h).
+// Ref 000's procedure on ROMEO as virtual trials (paper_procedure.h).
 #include "uuvplan/planner/design/paper_procedure.h"
 
 #include <algorithm>
@@ -34,7 +34,7 @@ double TravelFromRest(double v, double tau, double T) {
 }
 
 // The steady legs of one mapping (both directions it can hold), alternating direction at each
-// level (seed 000 §IV-D: "forwards and backwards"; Fig. 4: up and down).
+// level (ref 000 §IV-D: "forwards and backwards"; Fig. 4: up and down).
 std::vector<Leg> MappingLegs(const model::Vehicle& v, const model::Pool& pool, Dof dof, int mi,
                              double k, double kq, const PaperProcedureOptions& o,
                              std::vector<std::string>* notes) {
@@ -58,7 +58,7 @@ std::vector<Leg> MappingLegs(const model::Vehicle& v, const model::Pool& pool, D
         }
         continue;
       }
-      // Seed 000 eq. 7 with eta = 1 and no bias (what the pool team knows before the runs).
+      // Ref 000 eq. 7 with eta = 1 and no bias (what the pool team knows before the runs).
       double f = k * speed + kq * speed * speed;
       if (f < r.min_abs || f > r.max_abs) {
         const double c = std::clamp(f, r.min_abs, r.max_abs);
@@ -123,7 +123,7 @@ std::vector<model::TrialDesign> PackLegs(Dof dof, const std::string& id_prefix,
   return out;
 }
 
-// The mapping of `dof` that is open water in direction `sign` (seed 000 Table I), or -1.
+// The mapping of `dof` that is open water in direction `sign` (ref 000 Table I), or -1.
 int OpenWaterMapping(const model::Vehicle& v, Dof dof, int sign) {
   for (int i : v.MappingsOf(dof)) {
     const model::OpenWater ow = v.mappings[i].open_water;
@@ -175,7 +175,7 @@ std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& v,
   const double k = box.Nominal("k"), kq = box.Nominal("kq");
 
   std::vector<model::TrialDesign> out;
-  // 1. Steady runs, seed 000 §III-A.
+  // 1. Steady runs, ref 000 §III-A.
   if (dof == Dof::kHeave) {
     std::vector<Leg> legs;
     for (int i : v.MappingsOf(dof)) {
@@ -195,7 +195,7 @@ std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& v,
       out.insert(out.end(), t.begin(), t.end());
     }
   }
-  // 2. The sine of seed 000 §IV-D.
+  // 2. The sine of ref 000 §IV-D.
   model::TrialDesign s;
   s.dof = dof;
   s.kind = model::TrialKind::kSine;
@@ -222,7 +222,8 @@ std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& v,
   s.id = "paper-" + name + "-sine";
   s.mapping = v.mappings[mi].name;
   std::vector<std::string> ctx_notes;
-  std::unique_ptr<DofContext> ctx = DofContext::APriori(v, pool, dof, o.planner, &ctx_notes);
+  std::unique_ptr<DofPlanningProblem> ctx =
+      DofPlanningProblem::APriori(v, pool, dof, o.planner, &ctx_notes);
   s.duration = LongestFittingDuration(*ctx, s, o.sine_max_duration_s);
   s.duration = std::floor(s.duration * 10.0) / 10.0;
   notes->push_back(name + ": seed 000 sine " + model::Significant(s.offset, 3) + " + " +
@@ -247,8 +248,8 @@ PaperProcedureResult RunPaperProcedure(const model::Truth& truth, const model::P
   for (Dof d : dofs) {
     auto designs = PaperProcedureDesigns(truth.vehicle, pool, d, o, &r.notes);
     std::vector<std::string> ctx_notes;
-    std::unique_ptr<DofContext> ctx =
-        DofContext::APriori(truth.vehicle, pool, d, o.planner, &ctx_notes);
+    std::unique_ptr<DofPlanningProblem> ctx =
+        DofPlanningProblem::APriori(truth.vehicle, pool, d, o.planner, &ctx_notes);
     for (const auto& design : designs) {
       PlannedTrial t;
       t.design = design;

@@ -26,11 +26,8 @@ double NominalWithoutValue(const std::string& name, const BoxOptions& options) {
 // installation coefficients, their axis over the options' eta range.
 void AddDragAndEtaAxes(double drag_lo, double drag_hi, const std::vector<std::string>& etas,
                        const BoxOptions& options, ParameterBox* box) {
-  box->axes.push_back({"drag",
-                       {model::param::kLinearDrag, model::param::kQuadraticDrag},
-                       drag_lo,
-                       drag_hi,
-                       true});
+  box->axes.push_back(
+      {"drag", {model::param::kLinearDrag, model::param::kQuadraticDrag}, drag_lo, drag_hi, true});
   if (!etas.empty()) {
     box->axes.push_back({"eta", etas, options.eta_range[0] / options.eta_nominal,
                          options.eta_range[1] / options.eta_nominal, false});
@@ -116,7 +113,7 @@ std::vector<ParameterValues> ParameterBox::CheckPoints(int per_axis) const {
 }
 
 // Centred on the model's nominal values (model/prior.h), except η: the box is centred on
-// options.eta_nominal, a planning assumption (installation losses are expected, seed 000
+// options.eta_nominal, a planning assumption (installation losses are expected, ref 000
 // Table III), not a prior.
 ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
                         const std::vector<std::string>& names, const BoxOptions& options,

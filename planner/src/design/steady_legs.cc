@@ -30,8 +30,8 @@ double SteadyLegTimer::HoldTime(double speed) const {
   const double target = o_.speed_rel_sigma * std::max(std::abs(speed), 1e-6);
   double t = std::numeric_limits<double>::infinity();
   if (s.position) {  // LS slope of N = rate·T positions: σ² = 12σ_p²/(rate·T³)
-    t = std::min(t, std::cbrt(12.0 * NoiseVariance(*s.position) /
-                              (s.position->rate_hz * target * target)));
+    t = std::min(
+        t, std::cbrt(12.0 * NoiseVariance(*s.position) / (s.position->rate_hz * target * target)));
   }
   if (s.velocity) {  // mean of N = rate·T velocities
     t = std::min(t, NoiseVariance(*s.velocity) / (s.velocity->rate_hz * target * target));
@@ -53,7 +53,7 @@ SteadyLegTimer::Timing SteadyLegTimer::TimeLeg(const std::vector<model::SegmentD
   d.segments.push_back({leg.force, horizon, leg.mapping});
   d.duration = t0 + horizon;
   const auto input = model::MakeExcitation(ctx_.vehicle(), d);
-  const DofContext::TrialModel& tm = ctx_.ModelFor(d);
+  const DofPlanningProblem::TrialModel& tm = ctx_.ModelFor(d);
   const model::DofModel& m = *tm.model;
   const int ik = m.ParameterIndex(model::param::kLinearDrag);
   const int iq = m.ParameterIndex(model::param::kQuadraticDrag);
@@ -110,7 +110,7 @@ bool SteadyLegTimer::MakeLeg(const std::string& mapping, int sign, double force_
                              SteadyLeg* leg) const {
   leg->mapping = mapping;
   leg->force = sign * force_abs;
-  // Horizon: twice the settling time of the slowest linearised response (seed 000 eq. 13,
+  // Horizon: twice the settling time of the slowest linearised response (ref 000 eq. 13,
   // t_c = m/k_L at the heaviest, least-dragged box point) plus the longest hold; the full
   // trial limit only if that was not enough.
   const double t_max = ctx_.options().max_trial_duration_s;
@@ -172,7 +172,7 @@ model::TrialDesign LegDesign(const SteadyLeg& leg, model::Dof dof, const std::st
   return d;
 }
 
-SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignOptions& o) {
+SteadyCandidates MakeSteadyCandidates(const DofPlanningProblem& ctx, const SteadyDesignOptions& o) {
   SteadyCandidates out;
   const auto& v = ctx.vehicle();
   internal::SteadyLegTimer sp(ctx, o);

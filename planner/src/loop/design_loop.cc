@@ -163,7 +163,7 @@ std::string BudgetSpentMessage(const LoopOptions& options,
 // Whether the loop stops before running the decided trial; if so, sets the result's status.
 bool LoopEnds(const internal::Decision& d, const LoopOptions& options, LoopResult* result) {
   if (d.status != NextStatus::kTrial) {
-    result->status = d.status == NextStatus::kConverged   ? LoopStatus::kConverged
+    result->status = d.status == NextStatus::kConverged    ? LoopStatus::kConverged
                      : d.status == NextStatus::kInfeasible ? LoopStatus::kInfeasible
                      : d.status == NextStatus::kStuck      ? LoopStatus::kStuck
                                                            : LoopStatus::kRefused;
@@ -248,7 +248,7 @@ LoopIteration RunIteration(internal::Decision d, const LoopOptions& options,
   return it;
 }
 
-// Issue #13: a design never runs again after `max_repeats` runs without new information; its
+// A design never runs again after `max_repeats` runs without new information; its
 // DOF is stuck (with the limit that keeps the planner on that design). True when it stopped.
 bool StopRepeat(internal::Planner& planner, const internal::Decision& d, const LoopResult& result,
                 const model::Campaign& campaign, const LoopOptions& options,
@@ -260,10 +260,9 @@ bool StopRepeat(internal::Planner& planner, const internal::Decision& d, const L
   if (idle < options.max_repeats) return false;
   const DofProgress* p = ProgressOf(d.progress, d.dof);
   CandidateGain gain = d.candidates.empty() ? CandidateGain{} : d.candidates.back();
-  std::string reason = "this design ran " + std::to_string(idle) +
-                       " times without new information; " +
-                       internal::StuckReason(planner, campaign, *p,
-                                             result.estimates.Find(d.dof), d.trial, gain);
+  std::string reason =
+      "this design ran " + std::to_string(idle) + " times without new information; " +
+      internal::StuckReason(planner, campaign, *p, result.estimates.Find(d.dof), d.trial, gain);
   memory->stopped[d.dof] = {d.dof, NextStatus::kStuck, reason};
   return true;
 }
@@ -277,11 +276,11 @@ void TrackConsistency(const LoopIteration& it, const LoopOptions& options,
   int& n = (*streak)[it.dof];
   n = p->consistency.consistent ? 0 : n + 1;
   if (n >= options.max_inconsistent) {
-    memory->stopped[it.dof] = {
-        it.dof, NextStatus::kRefused,
-        "estimates inconsistent across " + std::to_string(n) + " consecutive trials (last: " +
-            p->consistency.text + "): the model does not explain every trial, or its σ are "
-            "overconfident (try `uuvplan diagnose`)"};
+    memory->stopped[it.dof] = {it.dof, NextStatus::kRefused,
+                               "estimates inconsistent across " + std::to_string(n) +
+                                   " consecutive trials (last: " + p->consistency.text +
+                                   "): the model does not explain every trial, or its σ are "
+                                   "overconfident (try `uuvplan diagnose`)"};
   }
 }
 

@@ -45,7 +45,7 @@ InterestParameter Interest(const model::Vehicle& vehicle, Dof dof,
   return q;
 }
 
-// Contract issue #5: "m, k (or kq where significant) and every η" — every η of the DOF's
+// "m, k (or kq where significant) and every η" — every η of the DOF's
 // mappings in a direction the thrusters can hold (the planner's model).
 std::vector<InterestParameter> InterestParameters(const model::Vehicle& vehicle, Dof dof,
                                                   const ident::DofIdentification* id) {
@@ -70,7 +70,7 @@ std::vector<InterestParameter> InterestParameters(const model::Vehicle& vehicle,
   return out;
 }
 
-// Why the DOF's estimates are not trusted yet (issue #13), and whether more trials of this
+// Why the DOF's estimates are not trusted yet, and whether more trials of this
 // model can change that (the refusal: precise and consistent, yet non-physical or invalid).
 void JudgeTrust(const ident::DofIdentification* id, const ident::DofIdentification* previous,
                 const DesignLoopOptions& options, DofProgress* p) {

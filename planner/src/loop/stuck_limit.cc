@@ -85,7 +85,8 @@ std::string StuckReason(Planner& planner, const model::Campaign& campaign,
       return m.str();
     }
     pool_note = planned ? "; a pool with twice the free travel would not lift it (its best trial "
-                          "would " + GainText(g2) + ")"
+                          "would " +
+                              GainText(g2) + ")"
                         : "";
   }
   const std::string thrust = ThrustLimit(planner.vehicle, trial, unit);

@@ -14,22 +14,31 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-constexpr model::EnumNames<PoolLimit, 10> kLimitNames{{{
-    {PoolLimit::kNone, "none"}, {PoolLimit::kLength, "length"}, {PoolLimit::kWidth, "width"},
-    {PoolLimit::kDepth, "depth"}, {PoolLimit::kTether, "tether"},
-    {PoolLimit::kThrust, "thrust range"}, {PoolLimit::kNoReversal, "no reversal"},
-    {PoolLimit::kDuration, "duration"}, {PoolLimit::kInformation, "information"},
-    {PoolLimit::kRotationRate, "rotation rate"}}}};
+constexpr model::EnumNames<PoolLimit, 10> kLimitNames{
+    {{{PoolLimit::kNone, "none"},
+      {PoolLimit::kLength, "length"},
+      {PoolLimit::kWidth, "width"},
+      {PoolLimit::kDepth, "depth"},
+      {PoolLimit::kTether, "tether"},
+      {PoolLimit::kThrust, "thrust range"},
+      {PoolLimit::kNoReversal, "no reversal"},
+      {PoolLimit::kDuration, "duration"},
+      {PoolLimit::kInformation, "information"},
+      {PoolLimit::kRotationRate, "rotation rate"}}}};
 
-constexpr model::EnumNames<Hostability, 3> kHostabilityNames{{{
-    {Hostability::kAll, "all"}, {Hostability::kPart, "part"}, {Hostability::kNone, "none"}}}};
+constexpr model::EnumNames<Hostability, 3> kHostabilityNames{
+    {{{Hostability::kAll, "all"}, {Hostability::kPart, "part"}, {Hostability::kNone, "none"}}}};
 
 PoolLimit SpaceLimit(model::Dof dof) {
   switch (dof) {
-    case model::Dof::kSurge: return PoolLimit::kLength;
-    case model::Dof::kSway: return PoolLimit::kWidth;
-    case model::Dof::kHeave: return PoolLimit::kDepth;
-    default: return PoolLimit::kTether;
+    case model::Dof::kSurge:
+      return PoolLimit::kLength;
+    case model::Dof::kSway:
+      return PoolLimit::kWidth;
+    case model::Dof::kHeave:
+      return PoolLimit::kDepth;
+    default:
+      return PoolLimit::kTether;
   }
 }
 
@@ -49,7 +58,7 @@ PoolLimit LimitOfMessage(model::Dof dof, const std::string& text) {
   return PoolLimit::kInformation;
 }
 
-// The limit a given plan's trial check names (DofContext::Check), the pool's space first.
+// The limit a given plan's trial check names (DofPlanningProblem::Check), the pool's space first.
 PoolLimit LimitOfCheck(model::Dof dof, const TrialCheck& check) {
   if (check.exceeds_travel) return SpaceLimit(dof);
   if (check.reversal) return PoolLimit::kNoReversal;
@@ -64,10 +73,17 @@ model::Pool Offering(const model::Pool& pool, model::Dof dof, double free) {
   p.name = pool.name + "-enlarged";
   const double wall = pool.WallToWallFor(free + kLargestTravelMargin);
   switch (dof) {
-    case model::Dof::kSurge: p.length = std::max(p.length, wall); break;
-    case model::Dof::kSway: p.width = std::max(p.width, wall); break;
-    case model::Dof::kHeave: p.depth = std::max(p.depth, wall); break;
-    default: p.max_turns = std::max(p.max_turns, (free + kLargestTravelMargin) / (2 * M_PI));
+    case model::Dof::kSurge:
+      p.length = std::max(p.length, wall);
+      break;
+    case model::Dof::kSway:
+      p.width = std::max(p.width, wall);
+      break;
+    case model::Dof::kHeave:
+      p.depth = std::max(p.depth, wall);
+      break;
+    default:
+      p.max_turns = std::max(p.max_turns, (free + kLargestTravelMargin) / (2 * M_PI));
   }
   return p;
 }
@@ -119,8 +135,8 @@ std::vector<char> HostedPoints(const model::Vehicle& vehicle, const model::Pool&
                                const std::vector<BoxPoint>& points) {
   std::vector<char> hosted(points.size(), 0);  // each point on its own (PlannerOptions::threads)
   model::ParallelFor(points.size(), so.planner.Threads(), [&](std::size_t i) {
-    hosted[i] = PlanSchedule(VehicleAt(vehicle, dof, points[i]), pool, so).status ==
-                PlanStatus::kOk;
+    hosted[i] =
+        PlanSchedule(VehicleAt(vehicle, dof, points[i]), pool, so).status == PlanStatus::kOk;
   });
   return hosted;
 }
@@ -210,8 +226,8 @@ void BelowTargetUnlifted(DofVerdict* v) {
   v->need = kInf;
 }
 
-// A given plan's trials of `v.dof`: each must pass DofContext::Check in this pool. False when
-// one fails (the failing checks are the verdict's plan_checks).
+// A given plan's trials of `v.dof`: each must pass DofPlanningProblem::Check in this pool. False
+// when one fails (the failing checks are the verdict's plan_checks).
 bool JudgePlanTrials(const std::vector<TrialPoolCheck>& checks, DofVerdict* v) {
   bool fits = true;
   for (const auto& c : checks) {

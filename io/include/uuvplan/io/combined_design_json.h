@@ -26,9 +26,8 @@ struct CombinedModelText {
 };
 
 nlohmann::json CombinedDesignJson(const planner::CombinedDesign& design,
-                                  const model::MultiDofModel& model,
-                                  const model::Vehicle& vehicle, const model::Pool& pool,
-                                  const CombinedModelText& text);
+                                  const model::MultiDofModel& model, const model::Vehicle& vehicle,
+                                  const model::Pool& pool, const CombinedModelText& text);
 
 /// Whether the JSON file's top level is a combined schedule of the model named `model_name`
 /// ({"model": "coupled-horizontal"}).

@@ -9,7 +9,6 @@
 
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/trial_design.h"
-#include "uuvplan/model/trial_design.h"
 
 namespace uuvplan::io {
 

@@ -21,13 +21,13 @@ inline constexpr EnumNames<TrialUse, 2> kTrialUseNames{
 inline std::string_view TrialUseName(TrialUse use) { return kTrialUseNames.Name(use); }
 
 struct TrialEntry {
-  std::string file;         ///< as written in the campaign (relative to it)
-  std::string path;         ///< resolved path
+  std::string file;  ///< as written in the campaign (relative to it)
+  std::string path;  ///< resolved path
   Dof dof = Dof::kSurge;
-  std::string mapping;      ///< default mapping of the trial
-  int ballast_steps = 0;    ///< known equal ballast steps added (heave weight tests)
+  std::string mapping;    ///< default mapping of the trial
+  int ballast_steps = 0;  ///< known equal ballast steps added (heave weight tests)
   TrialUse use = TrialUse::kFit;
-  double start = 0.0;       ///< start time on the campaign clock (s)
+  double start = 0.0;  ///< start time on the campaign clock (s)
   bool has_start = false;
   TrialLog log;
 };

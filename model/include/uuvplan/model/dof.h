@@ -13,7 +13,7 @@ namespace uuvplan::model {
 enum class Dof { kSurge = 0, kSway, kHeave, kRoll, kPitch, kYaw };
 
 inline constexpr int kNumDofs = 6;
-inline constexpr std::array<Dof, kNumDofs> kAllDofs = {Dof::kSurge, Dof::kSway, Dof::kHeave,
+inline constexpr std::array<Dof, kNumDofs> kAllDofs = {Dof::kSurge, Dof::kSway,  Dof::kHeave,
                                                        Dof::kRoll,  Dof::kPitch, Dof::kYaw};
 
 /// "surge", "sway", "heave", "roll", "pitch", "yaw".

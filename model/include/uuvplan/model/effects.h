@@ -31,9 +31,9 @@ enum class EffectSite {
 };
 
 /// What diagnosis knows of the data and of the current fit when it proposes an effect.
-struct ProposalContext {
+struct ProposalEvidence {
   Dof dof = Dof::kSurge;
-  const std::vector<std::string>* parameters = nullptr;  ///< of the current structure
+  const std::vector<std::string>* parameters = nullptr;   ///< of the current structure
   const std::map<std::string, double>* values = nullptr;  ///< current estimates
   double time_constant_s = 1.0;  ///< m / (k + 2·kq·|ξ|) at the typical speed
   double max_force = 0.0;        ///< largest |φⁿ| in the data (N or N·m)
@@ -41,7 +41,7 @@ struct ProposalContext {
   /// Mapping and direction of φⁿ present in the data, for thrust not in open water there.
   std::vector<std::pair<std::string, Direction>> closed_thrust_directions;
   std::vector<char> velocity_letters;  ///< measured in every trial, the own DOF's first
-  bool campaign_clock = false;  ///< every trial has a start, and they span some time
+  bool campaign_clock = false;         ///< every trial has a start, and they span some time
 
   bool Has(std::string_view parameter) const;
   double Value(std::string_view parameter, double fallback) const;
@@ -49,7 +49,7 @@ struct ProposalContext {
 
 /// One way diagnosis may extend a structure with an effect.
 struct Proposal {
-  std::string detail;                      ///< e.g. the coupling pair; empty for most
+  std::string detail;  ///< e.g. the coupling pair; empty for most
   /// The new parameters, in the order they enter theta, and their starting values.
   std::vector<std::pair<std::string, double>> start;
   std::map<std::string, double> settings;  ///< structure settings it needs (thrust_reference)
@@ -80,7 +80,7 @@ struct EffectEntry {
   /// kForceTerm: the term, given the DOF and the structure's parameters of this effect.
   std::function<std::unique_ptr<ForceTerm>(Dof, const std::vector<std::string>&)> make_term;
   /// Diagnosis: the extensions of the current structure it proposes (none: not applicable).
-  std::function<std::vector<Proposal>(const ProposalContext&)> propose;
+  std::function<std::vector<Proposal>(const ProposalEvidence&)> propose;
 
   bool Owns(std::string_view parameter) const;
 };

@@ -5,7 +5,7 @@
 //
 //  - the state: the DOFs' states stacked, block i = [χ_i, ξ_i(, φ_a,i)] from state_offset(i);
 //  - motion: a term that reads another DOF's velocity (the coupling term c_ab·a·b,
-//    TermContext::velocities) reads it from the joint state, so that its partial ∂F/∂ξ_j
+//    TermInputs::velocities) reads it from the joint state, so that its partial ∂F/∂ξ_j
 //    (ForceTerm::OtherVelocityPartials) enters the Jacobian A;
 //  - kinematics: χ̇_i = ξ_i, except that with surge, sway and yaw together the three positions
 //    are the pose in the pool frame, η̇ = J(ψ)·ν (ref 003, J₁ reduced to the plane):
@@ -98,21 +98,20 @@ class MultiDofModel {
   Eigen::RowVectorXd EquationRegressor(int i, const Eigen::Ref<const Eigen::RowVectorXd>& nu) const;
 
   /// dx/dt of the joint state at time t.
-  void Derivative(double t, const double* x, const JointConditions& c,
-                  const Eigen::VectorXd& theta, double* dx) const;
+  void Derivative(double t, const double* x, const JointConditions& c, const Eigen::VectorXd& theta,
+                  double* dx) const;
   /// dx/dt and its Jacobians A = ∂f/∂x (nx × nx) and B = ∂f/∂θ (nx × np, global θ).
-  void Linearize(double t, const double* x, const JointConditions& c,
-                 const Eigen::VectorXd& theta, double* dx, Eigen::Ref<Eigen::MatrixXd> A,
-                 Eigen::Ref<Eigen::MatrixXd> B) const;
+  void Linearize(double t, const double* x, const JointConditions& c, const Eigen::VectorXd& theta,
+                 double* dx, Eigen::Ref<Eigen::MatrixXd> A, Eigen::Ref<Eigen::MatrixXd> B) const;
 
  private:
   void AddTies(const std::vector<ParameterTie>& ties);
 
   std::vector<DofModel> dofs_;
-  std::vector<int> offsets_;                  ///< state offsets, then the number of states
-  std::vector<std::string> names_;            ///< global θ
-  std::vector<std::pair<int, int>> owner_;    ///< global j -> (DOF index, local index)
-  std::vector<std::vector<TieEntry>> ties_;   ///< T_i
+  std::vector<int> offsets_;                 ///< state offsets, then the number of states
+  std::vector<std::string> names_;           ///< global θ
+  std::vector<std::pair<int, int>> owner_;   ///< global j -> (DOF index, local index)
+  std::vector<std::vector<TieEntry>> ties_;  ///< T_i
   bool planar_ = false;
 };
 

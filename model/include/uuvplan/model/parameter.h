@@ -1,7 +1,7 @@
 // The parameter vocabulary: every parameter of a DOF model is named by a family, plain ("m",
 // "lag") or qualified ("eta.<mapping>.<pos|neg>", "coupling.<ab>"). A family declares its
 // unit, its null value (the value that means "no effect") and its admissible range. The
-// standard model's families are listed here (contract §Conventions, seed 000 eq. 3 and
+// standard model's families are listed here (contract §Conventions, ref 000 eq. 3 and
 // eq. 20); each effect declares its own in the effect table (effects.h). Identification,
 // planning and diagnosis ask this vocabulary, never a hand-written list of names.
 #pragma once
@@ -23,7 +23,7 @@ struct ParameterFamily {
   /// Unit for a translational / rotational DOF (N, N·m, ...); "1" for a pure number.
   std::string_view unit_linear{};
   std::string_view unit_rotational{};
-  double null_value = 0.0;  ///< "no effect" (eta: 1)
+  double null_value = 0.0;                                  ///< "no effect" (eta: 1)
   double lower = -std::numeric_limits<double>::infinity();  ///< admissible range
   double upper = std::numeric_limits<double>::infinity();
   /// Value before any fit where the null value cannot serve (a lag of 0 s has no 1/T);
@@ -44,7 +44,7 @@ struct ParameterFamily {
   /// Where a fit may go: the model is undefined (or unidentifiable) below this; NaN: anywhere.
   double fit_lower = std::numeric_limits<double>::quiet_NaN();
   bool fit_lower_open = false;
-  /// Physically admissible identified values (issue #13: drag >= 0, 0 < η <= 1.2, m above the
+  /// Physically admissible identified values (drag >= 0, 0 < η <= 1.2, m above the
   /// dry mass), where narrower than the file range [lower, upper]: the largest value a vehicle
   /// can have (NaN: `upper`), and whether a translational value must exceed the vehicle's dry
   /// mass (a rotational inertia in a vehicle file is computed, not weighed: no bound). An
@@ -78,7 +78,7 @@ struct ParameterFamily {
 
 namespace param {
 // The standard model (contract §Conventions): m·dξ/dt = −k·ξ − kq·ξ|ξ| + η·φⁿ + bias
-// (+ bias_step per ballast step, seed 000 eq. 20).
+// (+ bias_step per ballast step, ref 000 eq. 20).
 inline constexpr const char* kMass = "m";
 inline constexpr const char* kLinearDrag = "k";
 inline constexpr const char* kQuadraticDrag = "kq";

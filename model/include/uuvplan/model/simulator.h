@@ -16,8 +16,8 @@
 namespace uuvplan::model {
 
 struct SimulationOptions {
-  double step_s = 0.01;       ///< largest RK4 step (s); steps also end at every breakpoint
-  bool sensitivities = false; ///< also integrate S = ∂x/∂theta
+  double step_s = 0.01;        ///< largest RK4 step (s); steps also end at every breakpoint
+  bool sensitivities = false;  ///< also integrate S = ∂x/∂theta
 };
 
 struct Trajectory {

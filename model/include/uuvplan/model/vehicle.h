@@ -39,12 +39,12 @@ struct DofPrior {
 
 struct Vehicle {
   std::string name;
-  double mass = 0.0;                          ///< kg in air
-  std::array<double, 3> size = {0, 0, 0};     ///< m: length, width, height
-  std::map<Dof, double> inertia;              ///< kg·m², rigid body, optional per rotational DOF
+  double mass = 0.0;                       ///< kg in air
+  std::array<double, 3> size = {0, 0, 0};  ///< m: length, width, height
+  std::map<Dof, double> inertia;           ///< kg·m², rigid body, optional per rotational DOF
   std::array<double, 2> added_mass = {0.1, 1.0};  ///< default a priori bounds (fraction)
   std::vector<Thruster> thrusters;
-  double min_thrust = 0.0;                    ///< N: smallest |tau| of a working thruster
+  double min_thrust = 0.0;  ///< N: smallest |tau| of a working thruster
   std::vector<ThrustMapping> mappings;
   std::map<Dof, DofPrior> priors;
   std::map<Dof, DofSensors> sensors;
@@ -54,7 +54,7 @@ struct Vehicle {
   std::vector<Dof> dofs_with_parameters;
 
   /// Rigid-body inertia of a DOF: the mass for translations; for rotations the given
-  /// inertia or that of a uniform box of `size` (seed 000 §IV-D: I_z = m(l² + w²)/12).
+  /// inertia or that of a uniform box of `size` (ref 000 §IV-D: I_z = m(l² + w²)/12).
   double RigidInertia(Dof dof) const;
   /// A priori added-mass bounds of a DOF as fractions (per-DOF value or the default).
   std::array<double, 2> AddedMassBounds(Dof dof) const;

@@ -12,7 +12,7 @@
 
 namespace uuvplan::planner {
 
-/// The nominal input sampled for replay (issue #17): phi_n (N or N·m) and the mapping in force
+/// The nominal input sampled for replay: phi_n (N or N·m) and the mapping in force
 /// at times at most 0.1 s apart, plus both sides of every jump.
 struct TrialProfile {
   std::vector<double> t;  ///< s from the trial start

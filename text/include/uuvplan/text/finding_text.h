@@ -16,13 +16,13 @@ namespace uuvplan::text {
 /// What a finding's sentence may quote: the extension's parameters (final estimates, σ 0 for
 /// one held at its admissible bound), the breakdown of the finding's DOF and the proposal's
 /// detail (the coupling's velocity letters).
-struct FindingContext {
+struct FindingQuotes {
   const std::vector<ident::ParameterEstimate>& params;
   const model::ErrorBreakdown& breakdown;
   const std::string& detail;
 };
 
-using FindingSentenceRule = std::function<std::string(const FindingContext&)>;
+using FindingSentenceRule = std::function<std::string(const FindingQuotes&)>;
 
 /// Gives effect `effect` the sentence `rule` for the lifetime of the object (an effect
 /// registered through model::ScopedEffect).

@@ -1,4 +1,4 @@
-// Diagnosis (issue #5): what the standard model's simulation gets wrong, which physical effect
+// Diagnosis: what the standard model's simulation gets wrong, which physical effect
 // causes it, the extended model, and what the extension gains.
 //
 //  1. The standard model (contract: all η = 1, symmetric drag, no extra terms) is identified.
@@ -12,7 +12,7 @@
 //     (Bonferroni over the candidates), AND a new parameter at least `min_z` standard deviations
 //     from its null value (η = 1, others 0). Effects are added greedily, largest D first, and the
 //     rest re-tested against the extended model, so several effects can be combined.
-//  4. The gain of each finding is the velocity MAE (seed 002 eq. 37) of the free-run simulation
+//  4. The gain of each finding is the velocity MAE (ref 002 eq. 37) of the free-run simulation
 //     before and after adding it, on the `validate` trials, or by 2-fold cross-validation across
 //     trials when none is marked.
 // The driver times its stages — screen (the standard model identified, fitted and broken down),
@@ -66,8 +66,8 @@ struct DiagnoseOptions {
   std::function<void(const std::string&)> progress;
   /// DOFs to diagnose; empty: every DOF with a fit trial.
   std::vector<model::Dof> dofs;
-  IdentifyOptions identify;        ///< for the nominal (standard-model) identification
-  OutputErrorOptions output_error; ///< for the candidate fits
+  IdentifyOptions identify;         ///< for the nominal (standard-model) identification
+  OutputErrorOptions output_error;  ///< for the candidate fits
   bool IsValid(std::string* error) const;
 };
 
@@ -222,7 +222,6 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
 /// The standard structure of the contract for a DOF: all η = 1 (no free η), symmetric drag,
 /// no effects; bias_step when the trials' ballast differs.
 model::ModelStructure NominalStructure(const model::Vehicle& vehicle, model::Dof dof,
-                                       const std::vector<std::string>& mappings_used,
-                                       bool ballast);
+                                       const std::vector<std::string>& mappings_used, bool ballast);
 
 }  // namespace uuvplan::ident

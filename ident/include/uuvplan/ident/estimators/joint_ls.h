@@ -80,7 +80,8 @@ struct JointLsResult {
   };
   std::vector<Dropped> dropped;
   bool IsDropped(int j) const {
-    return std::any_of(dropped.begin(), dropped.end(), [j](const Dropped& d) { return d.index == j; });
+    return std::any_of(dropped.begin(), dropped.end(),
+                       [j](const Dropped& d) { return d.index == j; });
   }
   std::vector<std::string> notes;
   bool ok() const { return status == JointLsStatus::kOk; }

@@ -1,4 +1,4 @@
-// Points of the a priori box as vehicles (issue #13, the three-valued pool verdict): a vehicle
+// Points of the a priori box as vehicles (the three-valued pool verdict): a vehicle
 // whose a priori box on a DOF is one point — its inertia bounds and drag prior shrunk to that
 // point (added-mass fraction m/rigid − 1 both ways, drag k, kq with rel_sigma 0) — so the
 // planner's own schedule and checks, unchanged, say whether a pool hosts that vehicle. The

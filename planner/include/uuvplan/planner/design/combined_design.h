@@ -109,7 +109,7 @@ int CombinedMappingOf(const model::Vehicle& vehicle, model::Dof dof);
 
 /// Thruster forces τ_i(t) = Σ_ξ share_iξ·φ_ξ(t) of a combined trial at time t (N).
 std::vector<double> ThrusterForcesAt(const model::Vehicle& vehicle,
-                                   const model::CombinedTrialDesign& trial, double t);
+                                     const model::CombinedTrialDesign& trial, double t);
 
 /// The envelope of `trial` over the box points `thetas`, simulated from rest (the travel and
 /// turns), and of its thrusters from its profile every `options.profile_step_s`.

@@ -16,8 +16,9 @@
 namespace uuvplan::planner {
 
 /// The options of the coupled model's combined trial moving `dofs` (a combined mode).
-CombinedDesignOptions CoupledDesignOptions(
-    std::vector<model::Dof> dofs = {model::kHorizontalDofs.begin(), model::kHorizontalDofs.end()});
+CombinedDesignOptions CoupledDesignOptions(std::vector<model::Dof> dofs = {
+                                               model::kHorizontalDofs.begin(),
+                                               model::kHorizontalDofs.end()});
 
 /// What the combined trial's Cramér–Rao σ rest on, printed and written beside them.
 inline constexpr const char* kCoupledSigmaAssumption =

@@ -14,7 +14,7 @@
 // from the strictly discrete information by at most one sample.
 //
 // The trial's initial state is not known to the identification: its output error fits the
-// initial position (position sensor) and velocity of every trial with θ (seed 000 eqs. 16-19
+// initial position (position sensor) and velocity of every trial with θ (ref 000 eqs. 16-19
 // fit m·ξ0 + k·χ0 likewise). M is the information on θ with those two profiled out (the Schur
 // complement of the information of θ, χ0, ξ0), so that a steady run's constant position lag
 // behind its start, which a free χ0 absorbs, is not counted as information on m.
@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "uuvplan/model/dof_model.h"
-#include "uuvplan/model/multi_dof_model.h"
 #include "uuvplan/model/excitation.h"
+#include "uuvplan/model/multi_dof_model.h"
 #include "uuvplan/model/vehicle.h"
 
 namespace uuvplan::planner {

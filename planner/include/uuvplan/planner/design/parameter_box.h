@@ -1,4 +1,4 @@
-// The a priori uncertainty of a DOF's parameters as a box (seed 000 §III-B): the inertia between
+// The a priori uncertainty of a DOF's parameters as a box (ref 000 §III-B): the inertia between
 // its added-mass bounds, the drag within its relative uncertainty, the installation coefficients
 // of non-open-water directions within their plausible range. Robust designs optimise the worst
 // case or the average over the box's vertices and centre; hard constraints are checked on a
@@ -51,10 +51,10 @@ struct ParameterBox {
 struct BoxOptions {
   /// Half-width of the drag axis in units of the prior's rel_sigma: k, kq × [1 - n·rs, 1 + n·rs].
   double drag_sigmas = 1.0;
-  /// Nominal installation coefficient of a non-open-water direction. CHOSEN: seed 000 Tables
+  /// Nominal installation coefficient of a non-open-water direction. CHOSEN: ref 000 Tables
   /// II-IV report 0.56-0.89; 0.8 is the middle of that range rounded up.
   double eta_nominal = 0.8;
-  /// Range of eta in constraint checks (seed 000: 0.56-0.89; 1 = open water).
+  /// Range of eta in constraint checks (ref 000: 0.56-0.89; 1 = open water).
   std::array<double, 2> eta_range = {0.5, 1.0};
   /// Relative uncertainty assumed when a DOF has no a priori drag (model::DragOf's fallback).
   double fallback_drag_rel_sigma = 0.5;

@@ -7,15 +7,14 @@
 // interest (its steady runs, its sine and the loop's families, schedule_planner.h), lets the
 // loop bring them to its target before its stuck rule stops it (ReachTarget, determinacy.h:
 // "to this precision", ScheduleOptions::precision, `--target`) and, for a
-// given plan, every trial of the plan passes the hard constraints (DofContext::Check: thrusters,
-// no reversal, free length/width/depth over the a priori box, tether turns, duration). Otherwise
-// the limit that stops it and the DOF's need: the free travel (m, or rad of a rotation) with
-// which it would be hosted, checked by planning it again in a pool that offers it.
-// `required` covers EVERY DOF asked for, planned or not: per axis the largest of every trial's
-// extent (planned and given) and every DOF's need, wall to wall (+ 2·margin); for rotations
-// the tether's turns.
+// given plan, every trial of the plan passes the hard constraints (DofPlanningProblem::Check:
+// thrusters, no reversal, free length/width/depth over the a priori box, tether turns, duration).
+// Otherwise the limit that stops it and the DOF's need: the free travel (m, or rad of a rotation)
+// with which it would be hosted, checked by planning it again in a pool that offers it. `required`
+// covers EVERY DOF asked for, planned or not: per axis the largest of every trial's extent (planned
+// and given) and every DOF's need, wall to wall (+ 2·margin); for rotations the tether's turns.
 //
-// Three-valued (issue #13): the schedule is robust, planned for every vehicle of the a priori
+// Three-valued: the schedule is robust, planned for every vehicle of the a priori
 // box. A DOF it cannot host over the whole box is planned again at the box's centre and at its
 // four (m, drag) corners (box_points.h): hosted at some of them, it is hosted for PART of the
 // box — the first trials decide, and `uuvplan loop` / `next` run there; at none, for none. A
@@ -44,8 +43,18 @@ namespace uuvplan::planner {
 /// reversal, the trial duration limit, information (trials fit but do not determine it), or
 /// the rotation-rate limit (a rotation's drag, too slow to reach the target: the loop's stuck
 /// rule names it, stuck_limit.cc).
-enum class PoolLimit { kNone, kLength, kWidth, kDepth, kTether, kThrust, kNoReversal, kDuration,
-                       kInformation, kRotationRate };
+enum class PoolLimit {
+  kNone,
+  kLength,
+  kWidth,
+  kDepth,
+  kTether,
+  kThrust,
+  kNoReversal,
+  kDuration,
+  kInformation,
+  kRotationRate
+};
 std::string_view PoolLimitName(PoolLimit limit);
 
 /// For how much of the a priori box the pool hosts a DOF (or every DOF asked for): every
@@ -85,7 +94,7 @@ struct DofVerdict {
   /// The planner's own schedule is hosted here; only a given plan's trials fail (no larger
   /// pool is searched: `need` is the planner's extent, `extent` the plan's).
   bool only_plan_fails = false;
-  Determinacy determinacy;     ///< of the planner's own schedule in this pool
+  Determinacy determinacy;  ///< of the planner's own schedule in this pool
   /// Determined, but the loop's target is out of reach of its trials in this pool
   /// (TargetReach of the schedule: the loop would end stuck).
   bool below_target = false;
@@ -105,7 +114,7 @@ struct DofVerdict {
 /// fills the room it is given: a smaller pool may host it too, not searched).
 struct RequiredPool {
   double length = 0.0, width = 0.0, depth = 0.0;  ///< m, wall to wall (free + 2·margin)
-  double turns = 0.0;                              ///< full turns about roll, pitch or yaw
+  double turns = 0.0;                             ///< full turns about roll, pitch or yaw
   bool exists = true;  ///< false: some DOF is limited by something no pool size lifts
 };
 

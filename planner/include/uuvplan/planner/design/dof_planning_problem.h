@@ -58,7 +58,7 @@ struct PlannerOptions {
     return o;
   }();
   /// Longest trial (s). CHOSEN: 4 minutes, about a pool team's battery-safe open-loop run;
-  /// seed 000's trials last 1-2 minutes.
+  /// ref 000's trials last 1-2 minutes.
   double max_trial_duration_s = 240.0;
   /// Pause between trials for pool time (repositioning, s); as the virtual pool's default.
   double pause_s = 60.0;
@@ -68,10 +68,10 @@ struct PlannerOptions {
   int check_grid = 3;
   /// Largest steady speed a design may ask for (0: no limit), at the fastest point of the box.
   /// Translations are limited by the pool. Rotations are not, and the a priori drag fits hold
-  /// only where they were measured. CHOSEN 0.35 rad/s: seed 000 Fig. 11 spans ±20 °/s.
+  /// only where they were measured. CHOSEN 0.35 rad/s: ref 000 Fig. 11 spans ±20 °/s.
   double max_translation_speed = 0.0;
   double max_rotation_rate = 0.35;
-  /// Threads that plan independent designs at once (0: one per core; issue #16): the DOFs of a
+  /// Threads that plan independent designs at once (0: one per core): the DOFs of a
   /// schedule, the verdict's box points, the loop's a priori schedules and candidate trials of
   /// several DOFs. The results do not depend on it: each design is planned on its own and
   /// taken in the serial order.
@@ -89,7 +89,7 @@ struct PlannerOptions {
 /// Outcome of the hard-constraint check of one trial (contract §check-pool).
 struct TrialCheck {
   bool feasible = true;
-  std::vector<std::string> reasons;       ///< each violated constraint, by how much
+  std::vector<std::string> reasons;  ///< each violated constraint, by how much
   /// Which constraints are violated (each with its reason): the travel over the box (the pool's
   /// side or the tether's turns), a thruster's reversal, a thruster below min_thrust or beyond
   /// its range, the duration.
@@ -104,16 +104,17 @@ struct TrialCheck {
   double thrust_max_ratio = 0.0;
 };
 
-class DofContext {
+class DofPlanningProblem {
  public:
   /// The a priori context of `dof` (box from the vehicle file); notes on assumptions made are
   /// appended to `notes`. Throws model::InputError if the DOF has no sensor or no mapping.
-  static std::unique_ptr<DofContext> APriori(const model::Vehicle& vehicle, const model::Pool& pool,
-                                             model::Dof dof, const PlannerOptions& options,
-                                             std::vector<std::string>* notes);
+  static std::unique_ptr<DofPlanningProblem> APriori(const model::Vehicle& vehicle,
+                                                     const model::Pool& pool, model::Dof dof,
+                                                     const PlannerOptions& options,
+                                                     std::vector<std::string>* notes);
   /// A context with a given box (e.g. about current estimates).
-  DofContext(const model::Vehicle& vehicle, const model::Pool& pool, model::Dof dof,
-             ParameterBox box, const PlannerOptions& options);
+  DofPlanningProblem(const model::Vehicle& vehicle, const model::Pool& pool, model::Dof dof,
+                     ParameterBox box, const PlannerOptions& options);
 
   const model::Vehicle& vehicle() const { return vehicle_; }
   const model::Pool& pool() const { return pool_; }

@@ -1,5 +1,5 @@
-// The per-DOF design context (see dof_context.h).
-#include "uuvplan/planner/design/dof_context.h"
+// The per-DOF design context (see dof_planning_problem.h).
+#include "uuvplan/planner/design/dof_planning_problem.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,18 +84,20 @@ void RequireDesignable(const model::Vehicle& v, model::Dof dof) {
 
 }  // namespace
 
-std::unique_ptr<DofContext> DofContext::APriori(const model::Vehicle& vehicle,
-                                                const model::Pool& pool, model::Dof dof,
-                                                const PlannerOptions& options,
-                                                std::vector<std::string>* notes) {
+std::unique_ptr<DofPlanningProblem> DofPlanningProblem::APriori(const model::Vehicle& vehicle,
+                                                                const model::Pool& pool,
+                                                                model::Dof dof,
+                                                                const PlannerOptions& options,
+                                                                std::vector<std::string>* notes) {
   RequireDesignable(vehicle, dof);
   const model::DofModel probe(vehicle, StructureFor(vehicle, dof));
   ParameterBox box = APrioriBox(vehicle, dof, probe.parameter_names(), options.box, notes);
-  return std::make_unique<DofContext>(vehicle, pool, dof, std::move(box), options);
+  return std::make_unique<DofPlanningProblem>(vehicle, pool, dof, std::move(box), options);
 }
 
-DofContext::DofContext(const model::Vehicle& vehicle, const model::Pool& pool, model::Dof dof,
-                       ParameterBox box, const PlannerOptions& options)
+DofPlanningProblem::DofPlanningProblem(const model::Vehicle& vehicle, const model::Pool& pool,
+                                       model::Dof dof, ParameterBox box,
+                                       const PlannerOptions& options)
     : vehicle_(vehicle), pool_(pool), dof_(dof), box_(std::move(box)), options_(options) {
   RequireDesignable(vehicle, dof);
   model_ = std::make_unique<model::DofModel>(vehicle, StructureFor(vehicle, dof));
@@ -107,7 +109,7 @@ DofContext::DofContext(const model::Vehicle& vehicle, const model::Pool& pool, m
   for (const auto& p : box_.CheckPoints(options_.check_grid)) {
     check_thetas_.push_back(model_->Theta(p));
   }
-  // Time constants m/k_L (seed 000 eq. 13) over the box, from rest to the largest force any
+  // Time constants m/k_L (ref 000 eq. 13) over the box, from rest to the largest force any
   // mapping of the DOF can give.
   double phi_max = 0.0, phi_min = std::numeric_limits<double>::infinity();
   for (int mi : vehicle.MappingsOf(dof)) {
@@ -140,7 +142,7 @@ DofContext::DofContext(const model::Vehicle& vehicle, const model::Pool& pool, m
   }
 }
 
-ForceRange DofContext::ForceRangeFor(int mapping, int sign) const {
+ForceRange DofPlanningProblem::ForceRangeFor(int mapping, int sign) const {
   ForceRange r = DirectionForceRange(vehicle_, mapping, sign);
   const double limit =
       model::IsRotational(dof_) ? options_.max_rotation_rate : options_.max_translation_speed;
@@ -165,7 +167,8 @@ ForceRange DofContext::ForceRangeFor(int mapping, int sign) const {
       s << "mapping '" << vehicle_.mappings[mapping].name << "' "
         << (sign > 0 ? "positive" : "negative") << ": min_thrust needs |phi| >= " << r.min_abs
         << ", which drives " << model::DofName(dof_) << " beyond the speed limit " << limit
-        << (model::IsRotational(dof_) ? " rad/s (max_rotation_rate)" : " m/s (max_translation_speed)")
+        << (model::IsRotational(dof_) ? " rad/s (max_rotation_rate)"
+                                      : " m/s (max_translation_speed)")
         << " at the lowest a priori drag (k = " << k_low << ", kq = " << kq_low
         << "; the limit is reached at |phi| = " << phi
         << "): give the vehicle file an a priori drag fit for " << model::DofName(dof_)
@@ -176,7 +179,7 @@ ForceRange DofContext::ForceRangeFor(int mapping, int sign) const {
   return r;
 }
 
-std::vector<int> DofContext::Indices(const std::vector<std::string>& names) const {
+std::vector<int> DofPlanningProblem::Indices(const std::vector<std::string>& names) const {
   std::vector<int> out;
   for (const auto& n : names) {
     const int i = Index(n);
@@ -185,7 +188,7 @@ std::vector<int> DofContext::Indices(const std::vector<std::string>& names) cons
   return out;
 }
 
-Eigen::MatrixXd DofContext::PriorMatrix(const PriorInformation* prior) const {
+Eigen::MatrixXd DofPlanningProblem::PriorMatrix(const PriorInformation* prior) const {
   const int np = model_->num_parameters();
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(np, np);
   if (!prior || prior->names.empty()) return M;
@@ -206,7 +209,7 @@ Eigen::MatrixXd DofContext::PriorMatrix(const PriorInformation* prior) const {
   return M;
 }
 
-Eigen::MatrixXd DofContext::TrialModel::Embed(const Eigen::MatrixXd& M, int np) const {
+Eigen::MatrixXd DofPlanningProblem::TrialModel::Embed(const Eigen::MatrixXd& M, int np) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(np, np);
   for (int a = 0; a < M.rows(); ++a) {
     for (int b = 0; b < M.cols(); ++b) out(to_dof[a], to_dof[b]) = M(a, b);
@@ -239,7 +242,8 @@ std::vector<std::string> UsedEtas(const model::Vehicle& v, const model::TrialDes
 }
 }  // namespace
 
-const DofContext::TrialModel& DofContext::ModelFor(const model::TrialDesign& design) const {
+const DofPlanningProblem::TrialModel& DofPlanningProblem::ModelFor(
+    const model::TrialDesign& design) const {
   const std::vector<std::string> etas = UsedEtas(vehicle_, design);
   std::string key;
   for (const auto& e : etas) key += e + ";";
@@ -267,23 +271,22 @@ const DofContext::TrialModel& DofContext::ModelFor(const model::TrialDesign& des
   return *(trial_models_[key] = std::move(tm));
 }
 
-std::vector<Eigen::MatrixXd> DofContext::Information(const model::TrialDesign& design) const {
+std::vector<Eigen::MatrixXd> DofPlanningProblem::Information(
+    const model::TrialDesign& design) const {
   const auto input = model::MakeExcitation(vehicle_, design);
   const TrialModel& tm = ModelFor(design);
   std::vector<Eigen::MatrixXd> out;
   for (const auto& th : tm.design_thetas) {
-    const TrialResponse r =
-        SimulateTrial(*tm.model, th, *input, sensors_, design.duration, step_s_, true,
-                      options_.start_known);
+    const TrialResponse r = SimulateTrial(*tm.model, th, *input, sensors_, design.duration, step_s_,
+                                          true, options_.start_known);
     out.push_back(tm.Embed(r.M, model_->num_parameters()));
   }
   return out;
 }
 
-std::vector<Eigen::MatrixXd> DofContext::DesignInformation(const TrialModel& tm,
-                                                           const model::Excitation& input,
-                                                           double duration,
-                                                           std::array<double, 2>* travel) const {
+std::vector<Eigen::MatrixXd> DofPlanningProblem::DesignInformation(
+    const TrialModel& tm, const model::Excitation& input, double duration,
+    std::array<double, 2>* travel) const {
   std::vector<Eigen::MatrixXd> out;
   *travel = {0.0, 0.0};
   for (const auto& th : tm.design_thetas) {
@@ -304,9 +307,10 @@ std::vector<Eigen::MatrixXd> WithPrior(std::vector<Eigen::MatrixXd> information,
   return information;
 }
 
-std::vector<double> DofContext::CriterionValues(const std::vector<Eigen::MatrixXd>& M, Criterion c,
-                                                const std::vector<int>& interest,
-                                                bool* any_singular) const {
+std::vector<double> DofPlanningProblem::CriterionValues(const std::vector<Eigen::MatrixXd>& M,
+                                                        Criterion c,
+                                                        const std::vector<int>& interest,
+                                                        bool* any_singular) const {
   std::vector<double> out;
   if (any_singular) *any_singular = false;
   for (std::size_t j = 0; j < M.size() && j < design_thetas_.size(); ++j) {
@@ -327,24 +331,21 @@ std::string TravelReason(const model::Pool& pool, model::Dof dof, double lo, dou
   const double span = hi - lo, free = pool.FreeTravel(dof);
   if (model::IsRotational(dof)) {
     s << "rotation " << F(span) << " rad (" << F(span / (2 * M_PI))
-      << " turns) over the a priori box (from " << F(lo) << " to "
-      << F(hi) << " rad) exceeds the tether limit of " << F(free)
-      << " rad (max_turns " << F(pool.max_turns) << "): needs max_turns "
-      << F(pool.ExtentFor(dof, span));
+      << " turns) over the a priori box (from " << F(lo) << " to " << F(hi)
+      << " rad) exceeds the tether limit of " << F(free) << " rad (max_turns " << F(pool.max_turns)
+      << "): needs max_turns " << F(pool.ExtentFor(dof, span));
     return s.str();
   }
   const std::string_view side = model::Pool::SideName(dof);
-  s << "travel " << F(span) << " m over the a priori box (from "
-    << F(lo) << " to " << F(hi) << " m) exceeds the "
-    << F(free) << " m of free " << side << " (" << F(pool.WallToWall(dof))
-    << " m wall to wall - 2·" << F(pool.margin) << " m margin) by "
-    << F(span - free) << " m: needs a pool " << side << " of "
-    << F(pool.WallToWallFor(span)) << " m wall to wall";
+  s << "travel " << F(span) << " m over the a priori box (from " << F(lo) << " to " << F(hi)
+    << " m) exceeds the " << F(free) << " m of free " << side << " (" << F(pool.WallToWall(dof))
+    << " m wall to wall - 2·" << F(pool.margin) << " m margin) by " << F(span - free)
+    << " m: needs a pool " << side << " of " << F(pool.WallToWallFor(span)) << " m wall to wall";
   return s.str();
 }
 }  // namespace
 
-TrialCheck DofContext::Check(const model::TrialDesign& design) const {
+TrialCheck DofPlanningProblem::Check(const model::TrialDesign& design) const {
   TrialCheck c;
   c.available = available();
   const auto input = model::MakeExcitation(vehicle_, design);
