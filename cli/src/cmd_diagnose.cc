@@ -13,6 +13,7 @@
 
 #include "uuvplan/cli/command.h"
 #include "uuvplan/cli/filter_window_flag.h"
+#include "uuvplan/cli/model_vehicle_file.h"
 #include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/ident/score.h"
 #include "uuvplan/io/diagnosis_json.h"
@@ -34,35 +35,21 @@ struct DiagnoseFlags {
   ident::DiagnoseOptions diagnose;  // the flags bound to it keep its defaults
 };
 
-// The extended model of every diagnosed DOF into the vehicle file `path` (the campaign's
-// vehicle plus dofs.<dof>.params, effects and sigma). False, and nothing written, when a DOF's
-// model has a parameter the file readers would refuse (a standard model fitted outside the
-// admissible ranges).
+// The extended model of every diagnosed DOF into the vehicle file `path`.
 bool WriteExtendedVehicle(const std::string& path, const std::string& campaign_path,
                           const model::Vehicle& vehicle, const ident::DiagnosisResult& r) {
-  std::map<model::Dof, model::DofTruth> models;
+  std::vector<const ident::DofIdentification*> dofs;
+  for (const ident::DofIdentification& e : r.extended) dofs.push_back(&e);
   std::string effects;
-  for (const ident::DofIdentification& e : r.extended) {
-    models[e.dof] = ident::ModelOf(e);
-    const std::string problem = ident::Inadmissible(models[e.dof]);
-    if (!problem.empty()) {
-      std::cerr << "uuvplan: diagnose: error: " << path << " not written: the "
-                << model::DofName(e.dof) << " model has " << problem << "\n";
-      return false;
-    }
-  }
   for (const ident::Finding& f : r.findings) {
     effects += (effects.empty() ? "" : ", ") + std::string(model::DofName(f.dof)) + " " + f.effect;
   }
-  io::WriteVehicleYaml(path, vehicle, models,
-                       "written by `uuvplan diagnose " + campaign_path +
-                           " --write-vehicle`: the "
-                           "extended model (" +
-                           (effects.empty() ? "no effect found" : effects) +
-                           "),\nfitted by output error on the fit trials; sigma: 1σ of each "
-                           "parameter (0: held at its admissible bound).\nScore it on a campaign "
-                           "with `uuvplan score`.");
-  return true;
+  return WriteModelVehicle("diagnose", path, campaign_path, vehicle, dofs,
+                           "the extended model (" +
+                               (effects.empty() ? "no effect found" : effects) +
+                               "),\nfitted by output error on the fit trials; sigma: 1σ of each "
+                               "parameter (0: held at its admissible bound).\nScore it on a "
+                               "campaign with `uuvplan score`.");
 }
 
 int RunDiagnose(const DiagnoseFlags& co) {

@@ -1,12 +1,13 @@
 // `uuvplan identify CAMPAIGN [--json F] [--dof D]... [--steady TRIAL:T0:T1]... [--no-refine]
 // [--no-prune] [--closed-loop yes|no|auto] [--method M [--forgetting λ]] [--sg-window N]
-// [--model dof|coupled] [--accept-units]`:
+// [--model dof|coupled] [--accept-units] [--write-vehicle OUT]`:
 // parameter estimates with standard deviations and the fit of the identified model
 // (ident/identify.h, docs/identification.md); --method runs one of the papers' estimators alone.
 // Exit status 0 when every DOF was identified, 1 when some DOF failed (its FAILED line says
 // why), 2 on bad input — units or signs that look wrong among it (ident/prepare/input_sanity.h)
 // unless
 // --accept-units. On a terminal, the summary's Brief() line follows on stderr.
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "uuvplan/cli/coupled_identify.h"
 #include "uuvplan/cli/filter_window_flag.h"
 #include "uuvplan/cli/method_flags.h"
+#include "uuvplan/cli/model_vehicle_file.h"
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/io/identify_json.h"
 #include "uuvplan/io/io.h"
@@ -37,6 +39,7 @@ constexpr model::EnumNames<ident::ClosedLoop, 3> kClosedLoopNames{{{
 struct IdentifyFlags {
   std::string campaign;
   std::string json;
+  std::string write_vehicle;
   std::vector<std::string> dofs;
   std::vector<std::string> steady;
   std::string closed_loop{kClosedLoopNames.Name(ident::IdentifyOptions{}.closed_loop)};
@@ -109,6 +112,25 @@ void RefuseChainOptionsWithCoupled(const IdentifyFlags& co) {
   }
 }
 
+// The identified model of every DOF into --write-vehicle's file; nothing written (false) when
+// a DOF failed: the file would mix an identified model with a failed one's a priori box.
+bool WriteIdentifiedVehicle(const IdentifyFlags& co, const model::Vehicle& vehicle,
+                            const ident::IdentifyResult& result) {
+  std::vector<const ident::DofIdentification*> dofs;
+  for (const ident::DofIdentification& d : result.dofs) {
+    if (d.status == ident::IdentifyStatus::kFailed) {
+      std::cerr << "uuvplan: identify: error: " << co.write_vehicle
+                << " not written: " << model::DofName(d.dof) << " was not identified\n";
+      return false;
+    }
+    dofs.push_back(&d);
+  }
+  return WriteModelVehicle("identify", co.write_vehicle, co.campaign, vehicle, dofs,
+                           "the identified model,\nsigma: 1σ of each parameter (0: held, not "
+                           "estimated).\nEvery command reads it: schedule, next and loop plan "
+                           "about these estimates.");
+}
+
 int RunIdentify(const IdentifyFlags& co) {
   if (co.model_kind == "coupled") RefuseChainOptionsWithCoupled(co);
   CheckFilterWindow(co.identify.data);
@@ -132,13 +154,19 @@ int RunIdentify(const IdentifyFlags& co) {
   text::PrintIdentifyTable(result, out);
   if (!co.json.empty()) WriteJson(co.json, io::IdentifyJson(result));
   PrintBriefOnTerminal(result.Summary().Brief());
-  return result.status == ident::IdentifyStatus::kFailed ? kExitActionNeeded : kExitOk;
+  const bool written =
+      co.write_vehicle.empty() || WriteIdentifiedVehicle(co, campaign.vehicle, result);
+  return result.status == ident::IdentifyStatus::kFailed || !written ? kExitActionNeeded : kExitOk;
 }
 
 void BindIdentify(CLI::App* sub, IdentifyFlags* o) {
   sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")
       ->required();
   AddJsonOption(sub, &o->json, "also write the result");
+  sub->add_option("--write-vehicle", o->write_vehicle,
+                  "write the identified model (every parameter with sigma) into this vehicle "
+                  "file: schedule, next and loop then plan about the estimates")
+      ->check(OutputFile());
   sub->add_option("--dof", o->dofs,
                   "identify only this DOF (repeatable; default: every DOF with fit trials)");
   sub->add_option("--steady", o->steady,

@@ -42,16 +42,16 @@ constexpr model::EnumNames<Method, 6> kMethodNames{{{
     {Method::kOutputError, "output-error"},
 }}};
 
-// A vehicle file that gives a DOF's parameters (a model written by `diagnose
-// --write-vehicle`) is read by `score` and `simulate`; estimation does not start from it.
-void NoteParametersNotUsed(const model::Vehicle& vehicle, Dof dof, DofIdentification* r) {
-  const auto& given = vehicle.dofs_with_parameters;
-  if (std::find(given.begin(), given.end(), dof) == given.end()) return;
+// A vehicle file that gives a DOF's parameters (a model written by `identify` or `diagnose
+// --write-vehicle`): the standard parameters are estimated afresh, any effect it adds is
+// refitted from its values (FitWrittenModel).
+void NoteWrittenModel(const model::Vehicle& vehicle, Dof dof, DofIdentification* r) {
+  if (!vehicle.models.count(dof)) return;
   const std::string name(model::DofName(dof));
   r->notes.push_back("the vehicle file gives " + name + " parameters (dofs." + name +
-                     ".params and any effects): not used — identification starts from the a priori "
-                     "values and fits the parameters listed; `uuvplan score` scores the file's "
-                     "model on this campaign");
+                     ".params and any effects): the standard ones are estimated afresh from the a "
+                     "priori values, any effect is refitted from the file's values; `uuvplan "
+                     "score` scores the file's model on this campaign as written");
 }
 
 // One DOF through the four stages; `prepare_s` is the time its trials took to prepare.
@@ -80,7 +80,7 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
                         model.ParameterIndex(model::param::kMass)};
   c.steady.selection = c.output_error.selection = o.selection;
   r.closed_loop_suspected = stages::SuspectClosedLoop(trials.fit, o.closed_loop);
-  NoteParametersNotUsed(campaign.vehicle, dof, &r);
+  NoteWrittenModel(campaign.vehicle, dof, &r);
   r.timing.push_back({"prepare", prepare_s + watch.Lap()});
 
   if (o.method != Method::kChain) {
@@ -92,7 +92,20 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
   const stages::StageEstimate final_estimate = stages::RefineStage(c, ls, o, &r);
   r.timing.push_back({"refine", watch.Lap()});
   stages::ReportEstimates(c, ls, final_estimate, &r);
-  stages::ValidateStage(c, o.validation, &r);
+  const bool refit = o.written_model && o.method == Method::kChain && o.refine;
+  if (const auto written = refit ? stages::FitWrittenModel(c, &r) : nullptr) {
+    r.timing.push_back({"written model", watch.Lap()});
+    const stages::StageInputs in_written{c.vehicle,
+                                         c.trials,
+                                         *written,
+                                         r.theta,
+                                         c.steady,
+                                         c.output_error,
+                                         written->ParameterIndex(model::param::kMass)};
+    stages::ValidateStage(in_written, o.validation, &r);
+  } else {
+    stages::ValidateStage(c, o.validation, &r);
+  }
   r.timing.push_back({"validate", watch.Lap()});
   return r;
 }

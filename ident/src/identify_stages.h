@@ -5,12 +5,14 @@
 //   estimate  (identify_estimate.cc)  steady state + integral method (ref 000 eqs. 7–12,
 //                                      16–19) or one-step least squares (refs 002/004)
 //   refine    (identify_refine.cc)    output-error refinement from the least-squares answer
+//   written   (identify_written_model.cc)  the vehicle file's model with effects, refitted
 //   validate  (identify_validate.cc)  the reported estimates, plausibility warnings, free runs
 //
 // IdentifyDof (identify.cc) runs them in order and times each.
 #pragma once
 
 #include <Eigen/Dense>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -75,6 +77,14 @@ LeastSquaresAnswer EstimateStage(const StageInputs& c, const IdentifyOptions& o,
 // refine
 StageEstimate RefineStage(const StageInputs& c, const LeastSquaresAnswer& ls,
                           const IdentifyOptions& o, DofIdentification* r);
+
+// written model (identify_written_model.cc)
+/// When the vehicle file gives the DOF a model with parameters beyond `r`'s structure (the
+/// effects `diagnose --write-vehicle` found), `r` refitted in that structure by output error —
+/// its estimates as the start, the effects from the file's values — within the admissible
+/// ranges; returns the model to validate. Null when there is no such model, or when the fit
+/// fails (a warning says why and `r` keeps the standard model's answer).
+std::shared_ptr<const model::DofModel> FitWrittenModel(const StageInputs& c, DofIdentification* r);
 
 // validate
 void ReportEstimates(const StageInputs& c, const LeastSquaresAnswer& ls,

@@ -60,7 +60,7 @@ model::DofTruth ModelOf(const DofIdentification& identification) {
   return m;
 }
 
-std::string Inadmissible(const model::DofTruth& m) {
+std::string Inadmissible(const model::DofParameters& m) {
   for (const auto& [name, value] : m.params) {
     const model::ParameterFamily* family = model::FamilyOf(name);
     if (family && !family->Admissible(value)) {

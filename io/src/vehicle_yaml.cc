@@ -261,13 +261,12 @@ Vehicle ReadVehicle(const std::string& path) {
     const MapValue root = LoadYamlMap(
         path, "a vehicle (name, mass, size, thrusters, mappings, ...)", "a map of vehicle keys");
     Vehicle vehicle = ParseVehicle(root, false);
-    // A model written into the vehicle file is checked here too: every command that reads
-    // the file reports its faults, though only `score` and `simulate` use it.
+    // A model written into the vehicle file (dofs.<dof>.params, effects, sigma).
     if (const Value v = root.Optional("dofs"); !v.absent()) {
       const MapValue dofs(v, "a map of DOFs");
       for (const MapValue::Entry& e : dofs.entries()) {
-        if (ParseTruthDof(e.value, DofKey(e), vehicle)) {
-          vehicle.dofs_with_parameters.push_back(DofKey(e));
+        if (auto model = ParseTruthDof(e.value, DofKey(e), vehicle)) {
+          vehicle.models[DofKey(e)] = std::move(*model);
         }
       }
     }

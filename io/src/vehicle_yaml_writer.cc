@@ -1,6 +1,8 @@
-// Writes a vehicle file (contract §Vehicle) that ReadVehicle reads back to the same vehicle:
-// the virtual pool stores the truth's vehicle beside the campaign it simulates. Numbers are
-// written with 17 significant digits, enough to read back exactly.
+// Writes a vehicle file (contract §Vehicle) that ReadVehicle reads back to the vehicle it
+// printed: the virtual pool stores the truth's vehicle beside the campaign it simulates;
+// `identify` and `diagnose --write-vehicle` add the identified model. Numbers as people read
+// them (number_text.h): the shortest exact text of at most 10 digits, estimates rounded from
+// their σ.
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include <utility>
 
 #include "uuvplan/io/files.h"
+#include "uuvplan/io/number_text.h"
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/parameter.h"
@@ -27,12 +30,22 @@ using Key = std::pair<const char*, double>;
 // {k1: v1, k2: v2, ...} on one line.
 void EmitFlowMap(YAML::Emitter& out, std::initializer_list<Key> items) {
   out << YAML::Flow << YAML::BeginMap;
-  for (const auto& [key, value] : items) out << YAML::Key << key << YAML::Value << value;
+  for (const auto& [key, value] : items) {
+    out << YAML::Key << key << YAML::Value << FileNumber(value);
+  }
   out << YAML::EndMap;
 }
 
 void EmitPair(YAML::Emitter& out, const std::array<double, 2>& p) {
-  out << YAML::Flow << YAML::BeginSeq << p[0] << p[1] << YAML::EndSeq;
+  out << YAML::Flow << YAML::BeginSeq << FileNumber(p[0]) << FileNumber(p[1]) << YAML::EndSeq;
+}
+
+// {name: σ, ...}, each σ to 2 significant digits.
+void EmitSigmas(YAML::Emitter& out, const std::map<std::string, double>& sigmas) {
+  out << YAML::BeginMap;
+  for (const auto& [key, sigma] : sigmas)
+    out << YAML::Key << key << YAML::Value << SigmaNumber(sigma);
+  out << YAML::EndMap;
 }
 
 void EmitSensor(YAML::Emitter& out, const char* key, const std::optional<SensorSpec>& s) {
@@ -59,13 +72,14 @@ void EmitThruster(YAML::Emitter& out, const Thruster& t) {
   out << YAML::Key << "thrust" << YAML::Value << YAML::BeginMap;
   if (t.model.kind == ThrustModel::Kind::kSquare) {
     out << YAML::Key << "model" << YAML::Value << "square" << YAML::Key << "c_pos" << YAML::Value
-        << t.model.c_pos << YAML::Key << "c_neg" << YAML::Value << t.model.c_neg;
+        << FileNumber(t.model.c_pos) << YAML::Key << "c_neg" << YAML::Value
+        << FileNumber(t.model.c_neg);
   } else {
     out << YAML::Key << "model" << YAML::Value << "poly2" << YAML::Key << "a" << YAML::Value
-        << t.model.a << YAML::Key << "b" << YAML::Value << t.model.b;
+        << FileNumber(t.model.a) << YAML::Key << "b" << YAML::Value << FileNumber(t.model.b);
   }
   if (t.model.deduction != 0.0) {
-    out << YAML::Key << "deduction" << YAML::Value << t.model.deduction;
+    out << YAML::Key << "deduction" << YAML::Value << FileNumber(t.model.deduction);
   }
   out << YAML::EndMap << YAML::Key << "command" << YAML::Value;
   EmitPair(out, {t.command_min, t.command_max});
@@ -79,7 +93,7 @@ void EmitMappings(YAML::Emitter& out, const Vehicle& v) {
     out << YAML::Key << "dof" << YAML::Value << std::string(DofName(m.dof));
     out << YAML::Key << "shares" << YAML::Value << YAML::Flow << YAML::BeginMap;
     for (const auto& [index, share] : m.shares) {
-      out << YAML::Key << v.thrusters.at(index).name << YAML::Value << share;
+      out << YAML::Key << v.thrusters.at(index).name << YAML::Value << FileNumber(share);
     }
     out << YAML::EndMap;
     out << YAML::Key << "open_water" << YAML::Value << std::string(OpenWaterName(m.open_water));
@@ -90,13 +104,13 @@ void EmitMappings(YAML::Emitter& out, const Vehicle& v) {
 
 void EmitBody(YAML::Emitter& out, const Vehicle& v) {
   out << YAML::Key << "name" << YAML::Value << v.name;
-  out << YAML::Key << "mass" << YAML::Value << v.mass;
-  out << YAML::Key << "size" << YAML::Value << YAML::Flow << YAML::BeginSeq << v.size[0]
-      << v.size[1] << v.size[2] << YAML::EndSeq;
+  out << YAML::Key << "mass" << YAML::Value << FileNumber(v.mass);
+  out << YAML::Key << "size" << YAML::Value << YAML::Flow << YAML::BeginSeq << FileNumber(v.size[0])
+      << FileNumber(v.size[1]) << FileNumber(v.size[2]) << YAML::EndSeq;
   if (!v.inertia.empty()) {
     out << YAML::Key << "inertia" << YAML::Value << YAML::Flow << YAML::BeginMap;
     for (const auto& [dof, value] : v.inertia) {
-      out << YAML::Key << std::string(DofName(dof)) << YAML::Value << value;
+      out << YAML::Key << std::string(DofName(dof)) << YAML::Value << FileNumber(value);
     }
     out << YAML::EndMap;
   }
@@ -104,25 +118,36 @@ void EmitBody(YAML::Emitter& out, const Vehicle& v) {
   EmitPair(out, v.added_mass);
 }
 
+// A parameter's value as the file gives it: an estimate rounded from its σ, else exact.
+std::string ParameterNumber(const DofParameters& model, const std::string& name, double value) {
+  const auto sigma = model.sigma.find(name);
+  return sigma == model.sigma.end() ? FileNumber(value) : EstimateNumber(value, sigma->second);
+}
+
 // {m, k, kq, bias, bias_step, eta: {<mapping>.<dir>: v}} and {<effect>: {<key>: v, ...}} of a
 // model (truth_yaml.cc and truth_effects.cc read them back): each parameter where its family
 // puts it in a truth file.
-void EmitModel(YAML::Emitter& out, const DofTruth& model) {
-  std::map<std::string, double> eta;
-  std::map<std::string, std::map<std::string, double>> plain;  // effect -> key -> value
-  std::map<std::string, std::map<std::string, std::map<std::string, double>>> qualified;
+void EmitModel(YAML::Emitter& out, const DofParameters& model) {
+  using Texts = std::map<std::string, std::string>;
+  Texts eta;
+  std::map<std::string, Texts> plain;  // effect -> key -> value
+  std::map<std::string, std::map<std::string, Texts>> qualified;
+  if (model.identified()) {
+    out << YAML::Comment("identified: estimates, rounded from their 1σ (sigma)");
+  }
   out << YAML::Key << "params" << YAML::Value << YAML::BeginMap;
   for (const auto& [name, value] : model.params) {
     const EffectEntry* owner = Effects().OwnerOf(name);
     const ParameterFamily* family = FamilyOf(name);
+    const std::string text = ParameterNumber(model, name, value);
     if (family && family->name == param::kEtaPrefix) {
-      eta[std::string(Qualifier(name))] = value;
+      eta[std::string(Qualifier(name))] = text;
     } else if (!owner || !family) {
-      out << YAML::Key << name << YAML::Value << value;
+      out << YAML::Key << name << YAML::Value << text;
     } else if (family->qualified()) {
-      qualified[owner->name][std::string(family->file_key)][std::string(Qualifier(name))] = value;
+      qualified[owner->name][std::string(family->file_key)][std::string(Qualifier(name))] = text;
     } else {
-      plain[owner->name][name] = value;
+      plain[owner->name][name] = text;
     }
   }
   if (!eta.empty()) out << YAML::Key << "eta" << YAML::Value << eta;
@@ -131,7 +156,8 @@ void EmitModel(YAML::Emitter& out, const DofTruth& model) {
     if (!plain.count(e.name) && !qualified.count(e.name)) continue;
     for (const EffectSetting& setting : e.settings) {
       const auto it = model.settings.find(std::string(setting.setting));
-      if (it != model.settings.end()) plain[e.name][std::string(setting.file_key)] = it->second;
+      if (it == model.settings.end()) continue;
+      plain[e.name][std::string(setting.file_key)] = FileNumber(it->second);
     }
   }
   if (plain.empty() && qualified.empty()) return;
@@ -146,16 +172,17 @@ void EmitModel(YAML::Emitter& out, const DofTruth& model) {
   out << YAML::EndMap;
 }
 
-void EmitDofs(YAML::Emitter& out, const Vehicle& v, const std::map<Dof, DofTruth>& models) {
+void EmitDofs(YAML::Emitter& out, const Vehicle& v) {
   std::map<Dof, bool> dofs;
   for (const auto& [dof, prior] : v.priors) dofs[dof] = true;
-  for (const auto& [dof, model] : models) dofs[dof] = true;
+  for (const auto& [dof, model] : v.models) dofs[dof] = true;
   if (dofs.empty()) return;
   out << YAML::Key << "dofs" << YAML::Value << YAML::BeginMap;
   for (const auto& [dof, unused] : dofs) {
     out << YAML::Key << std::string(DofName(dof)) << YAML::Value << YAML::BeginMap;
     if (const auto p = v.priors.find(dof); p != v.priors.end() && p->second.drag) {
       const DragPrior& d = *p->second.drag;
+      out << YAML::Comment("a priori");
       out << YAML::Key << "drag" << YAML::Value;
       EmitFlowMap(out, {{"k", d.k}, {"kq", d.kq}, {"rel_sigma", d.rel_sigma}});
     }
@@ -163,9 +190,13 @@ void EmitDofs(YAML::Emitter& out, const Vehicle& v, const std::map<Dof, DofTruth
       out << YAML::Key << "added_mass" << YAML::Value;
       EmitPair(out, *p->second.added_mass);
     }
-    if (const auto m = models.find(dof); m != models.end()) {
-      EmitModel(out, m->second);
-      if (!m->second.sigma.empty()) out << YAML::Key << "sigma" << YAML::Value << m->second.sigma;
+    if (const auto m = v.models.find(dof); m != v.models.end()) {
+      const DofParameters& model = m->second;
+      EmitModel(out, model);
+      if (model.identified()) {
+        out << YAML::Key << "sigma" << YAML::Value;
+        EmitSigmas(out, model.sigma);
+      }
     }
     out << YAML::EndMap;
   }
@@ -174,22 +205,16 @@ void EmitDofs(YAML::Emitter& out, const Vehicle& v, const std::map<Dof, DofTruth
 
 }  // namespace
 
-void WriteVehicleYaml(const std::string& path, const Vehicle& v) {
-  WriteVehicleYaml(path, v, {}, "written by uuvplan");
-}
-
-void WriteVehicleYaml(const std::string& path, const Vehicle& v,
-                      const std::map<Dof, DofTruth>& models, const std::string& comment) {
+void WriteVehicleYaml(const std::string& path, const Vehicle& v, const std::string& comment) {
   YAML::Emitter out;
-  out.SetDoublePrecision(17);
   out << YAML::BeginMap;
   EmitBody(out, v);
   out << YAML::Key << "thrusters" << YAML::Value << YAML::BeginSeq;
   for (const auto& t : v.thrusters) EmitThruster(out, t);
   out << YAML::EndSeq;
-  out << YAML::Key << "min_thrust" << YAML::Value << v.min_thrust;
+  out << YAML::Key << "min_thrust" << YAML::Value << FileNumber(v.min_thrust);
   EmitMappings(out, v);
-  EmitDofs(out, v, models);
+  EmitDofs(out, v);
   EmitPerDof(out, "sensors", v.sensors, [&out](const DofSensors& s) {
     EmitSensor(out, "position", s.position);
     EmitSensor(out, "velocity", s.velocity);

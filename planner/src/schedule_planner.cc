@@ -126,37 +126,15 @@ std::vector<Eigen::MatrixXd> PriorPerPoint(const DofPlanningProblem& ctx,
 }
 
 // The box about the estimates (± box_sigmas σ); an axis whose parameters have no estimate with
-// a σ keeps its a priori range.
+// a σ keeps the range of the box the vehicle gives (PlanningBox).
 ParameterBox BoxAboutEstimates(const model::Vehicle& vehicle, const model::Pool& pool,
                                model::Dof dof, const ParameterValues& estimates,
                                const ParameterValues& sigmas, const NextTrialOptions& o,
                                std::vector<std::string>* notes) {
-  // The DOF's parameter names (the standard structure of the a priori context).
   std::unique_ptr<DofPlanningProblem> probe =
       DofPlanningProblem::APriori(vehicle, pool, dof, o.schedule.planner, notes);
-  ParameterValues centre = probe->box().nominal;
-  for (const auto& [k, val] : estimates) {
-    if (centre.count(k)) centre[k] = val;
-  }
-  ParameterBox box = EstimateBox(centre, sigmas, probe->model().parameter_names(), o.box_sigmas,
-                                 o.schedule.planner.box);
-  // An axis whose parameters have no estimate with a σ keeps its a priori range.
-  for (auto& axis : box.axes) {
-    bool estimated = false;
-    for (const auto& p : axis.params)
-      estimated = estimated || (estimates.count(p) && sigmas.count(p));
-    if (estimated) continue;
-    for (const auto& a : probe->box().axes) {
-      if (a.name != axis.name) continue;
-      // Factors of the a priori range about the (a priori) centre.
-      const std::string& ref = axis.params.front();
-      const double scale =
-          box.Nominal(ref) != 0.0 ? probe->box().Nominal(ref) / box.Nominal(ref) : 1.0;
-      axis.lo = a.lo * scale;
-      axis.hi = a.hi * scale;
-    }
-  }
-  return box;
+  return planner::BoxAboutEstimates(probe->box(), probe->model().parameter_names(), estimates,
+                                    sigmas, o.box_sigmas, o.schedule.planner.box);
 }
 
 // The DOF's trial families, each designed on the information of the prior and of the trials

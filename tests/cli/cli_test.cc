@@ -303,6 +303,37 @@ TEST(Cli, DiagnoseWritesTheModelAndScoreScoresIt) {
   EXPECT_FALSE(fs::exists(dir / "d.json"));
 }
 
+// `identify --write-vehicle` writes the identified model, headed by the command, the campaign
+// and the date; `schedule` on that file plans about the estimates and says so. A failed DOF
+// leaves no file (exit 1).
+TEST(Cli, IdentifyWritesTheModelAndScheduleUsesIt) {
+  const TempDir dir;
+  const std::string plan = dir.Write("plan.json",
+                                     R"({"trials": [
+  {"id": "a", "dof": "surge", "kind": "segments", "duration": 40, "mapping": "surge-front",
+   "segments": [{"force": 60, "duration": 20, "mapping": "surge-front"},
+                {"force": 20, "duration": 20, "mapping": "surge-front"}]},
+  {"id": "b", "dof": "surge", "kind": "sine", "duration": 52, "mapping": "surge-front",
+   "offset": 35, "amplitude": 25, "omega": 0.2417}]})");
+  ASSERT_EQ(RunTool("simulate --truth '" + kRomeoTruth + "' --plan '" + plan + "' --out '" +
+                        (dir / "c") + "' --seed 3",
+                    dir)
+                .status,
+            0);
+  const std::string model = dir / "identified.yaml";
+  const ToolRun i = RunTool("identify '" + (dir / "c") + "' --write-vehicle '" + model + "'", dir);
+  ASSERT_EQ(i.status, 0) << i.out << i.err;
+  const std::string text = ReadText(model);
+  EXPECT_THAT(text, HasSubstr("# written by `uuvplan identify " + (dir / "c")));
+  EXPECT_THAT(text, HasSubstr("# identified"));
+  EXPECT_THAT(text, HasSubstr("sigma:"));
+  const ToolRun s = RunTool("schedule '" + model + "' --pool '" + std::string(UUVPLAN_SOURCE_DIR) +
+                                "/cases/romeo/pool.yaml' --dof surge",
+                            dir);
+  EXPECT_EQ(s.status, 0) << s.out << s.err;
+  EXPECT_THAT(s.out, HasSubstr("surge: planned about the identified model of the vehicle file"));
+}
+
 TEST(Cli, SimulateMalformedPlanExitsTwoNamingFileTrialAndKey) {
   const TempDir dir;
   struct Case {

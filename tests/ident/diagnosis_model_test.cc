@@ -40,13 +40,15 @@ struct TempDir {
 // and as `score` does (model), and scores `campaign` with it: the DOF's pooled validate MAE.
 double ScoreWritten(const model::Campaign& campaign, const std::vector<DofIdentification>& models,
                     const fs::path& file, double step_s) {
-  std::map<model::Dof, model::DofTruth> written;
-  for (const DofIdentification& d : models) written[d.dof] = ModelOf(d);
-  io::WriteVehicleYaml(file.string(), campaign.vehicle, written, "test");
+  model::Vehicle written = campaign.vehicle;
+  for (const DofIdentification& d : models) written.models[d.dof] = ModelOf(d);
+  io::WriteVehicleYaml(file.string(), written, "test");
   EXPECT_NO_THROW(io::ReadVehicle(file.string()));  // loadable by every command
   const model::Truth read = io::ReadTruth(file.string());
-  for (const auto& [dof, m] : written) {
-    EXPECT_EQ(read.dofs.at(dof).sigma, m.sigma);  // every parameter with its σ
+  for (const auto& [dof, m] : written.models) {
+    for (const auto& [name, sigma] : m.sigma) {  // every parameter with its σ, 2 digits
+      EXPECT_NEAR(read.dofs.at(dof).sigma.at(name), sigma, 0.05 * sigma) << name;
+    }
   }
   ScoreOptions o;
   o.step_s = step_s;
@@ -65,8 +67,10 @@ void ExpectPhysical(const DiagnosisResult& r) {
   }
 }
 
-// Scoring the written models must give diagnosis's own figures: the same free runs of the same
-// parameters (written with 17 digits), pooled in another order: 1e-9 relative. Findings are
+// Scoring the written models must give diagnosis's own figures: the same free runs of the
+// same parameters, rounded in the file at their σ's second digit (at most σ/20 away). At the
+// output-error optimum the cost is flat to first order, so such a shift moves the free-run
+// error by a second-order amount, (1/20)² of one σ-unit: 1e-3 relative bounds it. Findings are
 // listed by gain; each accepted one lowers the validate MAE, so the first accepted has the
 // largest `before` (the standard model's) and the last the smallest `after` (the extended's).
 void ExpectScoreReproducesGains(const model::Campaign& campaign, const DiagnosisResult& r,
@@ -80,9 +84,41 @@ void ExpectScoreReproducesGains(const model::Campaign& campaign, const Diagnosis
   TempDir dir(name);
   const double standard = ScoreWritten(campaign, r.standard, dir.path / "standard.yaml", step_s);
   const double extended = ScoreWritten(campaign, r.extended, dir.path / "extended.yaml", step_s);
-  EXPECT_NEAR(standard, before, 1e-9 * standard);
-  EXPECT_NEAR(extended, after, 1e-9 * extended);
-  EXPECT_NEAR(extended, r.extended[0].fit.velocity_mae_validate, 1e-9 * extended);
+  EXPECT_NEAR(standard, before, 1e-3 * standard);
+  EXPECT_NEAR(extended, after, 1e-3 * extended);
+  EXPECT_NEAR(extended, r.extended[0].fit.velocity_mae_validate, 1e-3 * extended);
+}
+
+// `identify` on the campaign whose vehicle file carries diagnosis's extended model (written
+// and read back) fits that model: every finding's parameter estimated again with a σ, within
+// one of diagnosis's own σ of its value (the same structure fitted on the same trials from the
+// written values: the same optimum up to the file's rounding, σ/20), with the validate MAE that
+// `score` gives the written model (1e-3 relative: ExpectScoreReproducesGains's reason).
+void ExpectIdentifyRefitsWrittenModel(const model::Campaign& campaign, const DiagnosisResult& r,
+                                      const std::string& name, double step_s) {
+  ASSERT_EQ(r.extended.size(), 1u);
+  TempDir dir(name + "-identify");
+  const fs::path file = dir.path / "extended.yaml";
+  const double scored = ScoreWritten(campaign, r.extended, file, step_s);
+  model::Campaign with_model = campaign;
+  with_model.vehicle = io::ReadVehicle(file.string());
+  IdentifyOptions o;
+  o.dofs = {r.extended[0].dof};
+  const IdentifyResult id = Identify(with_model, o);
+  ASSERT_EQ(id.dofs.size(), 1u);
+  const DofIdentification& d = id.dofs[0];
+  ASSERT_NE(d.status, IdentifyStatus::kFailed) << d.message;
+  EXPECT_THAT(d.notes, ::testing::Contains(::testing::HasSubstr("fitted in the vehicle file's")));
+  for (const Finding& f : r.findings) {
+    for (const ParameterEstimate& p : f.params) {
+      const ParameterEstimate* q = d.Param(p.name);
+      ASSERT_NE(q, nullptr) << p.name;
+      EXPECT_EQ(q->state, ParameterState::kEstimated) << p.name;
+      EXPECT_GT(q->sigma, 0.0) << p.name;
+      EXPECT_NEAR(q->value, p.value, p.sigma) << p.name;
+    }
+  }
+  EXPECT_NEAR(d.fit.velocity_mae_validate, scored, 1e-3 * scored);
 }
 
 const Finding* Named(const DiagnosisResult& r, const std::string& effect) {
@@ -140,6 +176,7 @@ TEST(DiagnosisModelTest, ThrustMapAndLagWrittenOutAndScored) {
   EXPECT_GT(r.breakdowns[0].drift_sigma_per_hour, 0.0);
   ExpectPhysical(r);
   ExpectScoreReproducesGains(campaign, r, "thrust-map-lag", o.output_error.step_s);
+  ExpectIdentifyRefitsWrittenModel(campaign, r, "thrust-map-lag", o.output_error.step_s);
 }
 
 // The 13 BlueROV runs (campaign_all.yaml; README defects 1 and 2): the thrust table is wrong in
@@ -175,6 +212,7 @@ TEST(DiagnosisModelTest, RealBluerovThrustMapShapeAndLagScored) {
   EXPECT_EQ(r.findings[0].chosen_map, "linear");
   ExpectPhysical(r);
   ExpectScoreReproducesGains(campaign, r, "bluerov-all", o.output_error.step_s);
+  ExpectIdentifyRefitsWrittenModel(campaign, r, "bluerov-all", o.output_error.step_s);
 }
 
 // cases/romeo/truth-effects.yaml (ref 000 Table IV: η 0.73/0.80/0.89, asymmetric surge drag),

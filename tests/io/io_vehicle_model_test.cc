@@ -9,6 +9,7 @@
 
 #include "io_test_util.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/io/number_text.h"
 
 namespace uuvplan::model::testing {
 namespace {
@@ -32,20 +33,65 @@ TEST(VehicleModelIo, WrittenModelReadsBackWithSigmaEffectsAndSettings) {
   m.settings = {{"thrust_reference", 120.0}};
   for (const auto& [name, value] : m.params) m.sigma[name] = 0.01 * std::abs(value);
   const std::string path = dir.Path("model.yaml");
-  io::WriteVehicleYaml(path, truth.vehicle, {{Dof::kSurge, m}}, "a model\nof surge");
+  Vehicle written = truth.vehicle;
+  written.models[Dof::kSurge] = m;
+  io::WriteVehicleYaml(path, written, "a model\nof surge");
   EXPECT_THAT(ReadText(path), HasSubstr("# a model\n# of surge\n"));
   const Vehicle v = io::ReadVehicle(path);  // every command reads it as a vehicle
   EXPECT_EQ(v.name, truth.vehicle.name);
   EXPECT_EQ(v.priors.count(Dof::kSurge), truth.vehicle.priors.count(Dof::kSurge));
-  // identification notes that it does not start from the written model
-  EXPECT_EQ(v.dofs_with_parameters, std::vector<Dof>{Dof::kSurge});
+  ASSERT_EQ(v.models.size(), 1u);
+  EXPECT_TRUE(v.models.at(Dof::kSurge).identified());
   const Truth read = io::ReadTruth(path);
   ASSERT_EQ(read.dofs.count(Dof::kSurge), 1u);
-  std::map<std::string, double> expected = m.params;
-  expected["bias_step"] = 0.0;  // the truth reader's default (one ballast level)
-  EXPECT_EQ(read.dofs.at(Dof::kSurge).params, expected);  // 17 digits: exact
-  EXPECT_EQ(read.dofs.at(Dof::kSurge).sigma, m.sigma);
-  EXPECT_EQ(read.dofs.at(Dof::kSurge).settings, m.settings);
+  const DofTruth& back = read.dofs.at(Dof::kSurge);
+  EXPECT_EQ(back.params.at("bias_step"), 0.0);  // the truth reader's default (one ballast level)
+  for (const auto& [name, value] : m.params) {
+    // An estimate is rounded at its σ's second significant digit: at most 5% of σ away.
+    EXPECT_NEAR(back.params.at(name), value, 0.05 * m.sigma.at(name)) << name;
+    // σ to 2 significant digits: at most 5% of itself away.
+    EXPECT_NEAR(back.sigma.at(name), m.sigma.at(name), 0.05 * m.sigma.at(name)) << name;
+    EXPECT_EQ(v.models.at(Dof::kSurge).params.at(name), back.params.at(name)) << name;
+  }
+  EXPECT_EQ(back.settings, m.settings);
+}
+
+// A file people read: an estimate with the digits its σ carries, σ with two, the user's a
+// priori values as they wrote them, and no number longer than 10 significant digits.
+TEST(VehicleModelIo, WrittenNumbersAreRoundedFromSigmaAndShort) {
+  ScratchDir dir;
+  Vehicle v = io::ReadTruth(dir.Path("truth.yaml")).vehicle;
+  v.mass = 6.6210000000000004;  // 6.621 as a double prints 17 digits at %.17g
+  DofParameters m;
+  m.params = {{"m", 0.575123456}, {"k", 4.2912345678}, {"kq", 1.0 / 3.0}};
+  m.sigma = {{"m", 0.0731234}, {"k", 0.1}};  // kq held (no σ): written exactly, 10 digits
+  v.models[Dof::kSurge] = m;
+  const std::string path = dir.Path("readable.yaml");
+  io::WriteVehicleYaml(path, v, "readable");
+  const std::string text = ReadText(path);
+  EXPECT_THAT(text, HasSubstr("mass: 6.621\n"));
+  EXPECT_THAT(text, HasSubstr("m: 0.575\n"));  // σ 0.073: the thousandths
+  EXPECT_THAT(text, HasSubstr("k: 4.29\n"));   // σ 0.10: the hundredths
+  EXPECT_THAT(text, HasSubstr("m: 0.073\n"));  // σ, two digits
+  EXPECT_THAT(text, HasSubstr("kq: 0.3333333333\n"));
+  EXPECT_THAT(text, HasSubstr("# identified"));  // the identified part is labelled
+  EXPECT_THAT(text, HasSubstr("# a priori"));
+  const Vehicle back = io::ReadVehicle(path);
+  EXPECT_EQ(back.mass, 6.621);
+  EXPECT_EQ(back.models.at(Dof::kSurge).params.at("m"), 0.575);
+}
+
+TEST(FileNumbers, EstimateDigitsFollowSigma) {
+  EXPECT_EQ(io::EstimateNumber(890.4321, 25.0), "890");
+  EXPECT_EQ(io::EstimateNumber(0.57512, 0.073), "0.575");
+  EXPECT_EQ(io::EstimateNumber(-3.14159, 0.0012), "-3.1416");
+  EXPECT_EQ(io::EstimateNumber(0.003, 0.5), "0");        // below σ's second digit: 0.00 ± 0.50
+  EXPECT_EQ(io::EstimateNumber(12345.0, 0.0), "12345");  // held: exact
+  EXPECT_EQ(io::SigmaNumber(0.0731234), "0.073");
+  EXPECT_EQ(io::SigmaNumber(0.0), "0");
+  EXPECT_EQ(io::FileNumber(0.1), "0.1");
+  EXPECT_EQ(io::FileNumber(1.0 / 3.0), "0.3333333333");
+  EXPECT_EQ(io::FileNumber(2.5e-7), "2.5e-07");
 }
 
 TEST(VehicleModelIo, ModelFaultsInAVehicleFileNameFileLineAndKey) {
@@ -55,8 +101,10 @@ TEST(VehicleModelIo, ModelFaultsInAVehicleFileNameFileLineAndKey) {
   DofTruth m;
   m.params = {{"m", 10.0}, {"k", 1.0}};
   m.sigma = {{"m", 0.1}};
-  io::WriteVehicleYaml(dir.Path("model.yaml"), truth.vehicle, {{Dof::kSurge, m}}, "test");
-  dir.Edit("model.yaml", "      m: 0.10000000000000001", "      nope: 0.1");
+  Vehicle written = truth.vehicle;
+  written.models[Dof::kSurge] = m;
+  io::WriteVehicleYaml(dir.Path("model.yaml"), written, "test");
+  dir.Edit("model.yaml", "      m: 0.1\n", "      nope: 0.1\n");
   const std::string e1 = ErrorOf([&] { io::ReadVehicle(dir.Path("model.yaml")); });
   EXPECT_THAT(e1, HasSubstr("model.yaml:"));
   EXPECT_THAT(e1, HasSubstr("dofs.surge.sigma"));

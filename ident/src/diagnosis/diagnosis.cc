@@ -57,7 +57,6 @@ bool DiagnoseOptions::IsValid(std::string* error) const {
 namespace {
 
 using diagnosis::Candidate;
-using diagnosis::StructureFit;
 using diagnosis::Trials;
 using diagnosis::Values;
 
@@ -93,6 +92,7 @@ IdentifyResult IdentifyNominal(const model::Campaign& campaign,
                                const std::vector<std::unique_ptr<TrialData>>& prepared,
                                const std::vector<Dof>& dofs, IdentifyOptions options) {
   options.dofs = dofs;
+  options.written_model = false;  // the baseline: effects are what diagnosis tests
   for (Dof dof : dofs) {
     std::vector<std::string> mappings;
     std::set<int> ballast;
@@ -145,8 +145,8 @@ std::vector<Significant> TestCandidates(const model::Vehicle& vehicle,
   diagnosis::ParallelFor(candidates.size(), options.threads, [&](std::size_t i) {
     Values s = d.current.values;
     for (const auto& [n, v0] : candidates[i].proposal.start) s[n] = v0;
-    fits[i] = diagnosis::FitPhysical(vehicle, candidates[i].structure, d.fit, s, d.current.dropped,
-                                     options.output_error, d.current.values, d.current.held);
+    fits[i] = FitPhysical(vehicle, candidates[i].structure, d.fit, s, d.current.dropped,
+                          options.output_error, d.current.values, d.current.held);
   });
   std::vector<Significant> significant;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -198,8 +198,8 @@ void Accept(Significant* sig, const DiagnosisGain& g, std::set<std::string>* use
 void ReleaseHeld(const model::Vehicle& vehicle, const DiagnoseOptions& options,
                  const DofDiagnosis& d, StructureFit* fit) {
   if (fit->held.empty()) return;
-  StructureFit free = diagnosis::FitPhysical(vehicle, fit->structure, d.fit, fit->values,
-                                             fit->dropped, options.output_error, d.current.values);
+  StructureFit free = FitPhysical(vehicle, fit->structure, d.fit, fit->values, fit->dropped,
+                                  options.output_error, d.current.values);
   if (free.oe.ok() && free.oe.cost <= fit->oe.cost) *fit = std::move(free);
 }
 
@@ -375,8 +375,8 @@ void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& option
       start.erase(name);
     }
     for (const auto& [key, v] : c.proposal.settings) without.settings.erase(key);
-    StructureFit refit = diagnosis::FitPhysical(vehicle, without, d->fit, start, d->current.dropped,
-                                                options.output_error, d->current.values);
+    StructureFit refit = FitPhysical(vehicle, without, d->fit, start, d->current.dropped,
+                                     options.output_error, d->current.values);
     const std::string name = std::string(model::DofName(d->dof)) + ": " + c.effect->name;
     if (!refit.oe.ok()) {
       result->notes.push_back(
@@ -457,32 +457,6 @@ void AddCaveats(const DofIdentification& nominal, const DiagnoseOptions& options
   }
 }
 
-// The nominal identification with `f`'s structure and output-error estimate, and the free run
-// of every trial in `trials` with it (validation.h, the scores of `uuvplan score`).
-DofIdentification AsIdentification(const DofIdentification& nominal, const StructureFit& f,
-                                   const Trials& trials, double step_s) {
-  DofIdentification ext = nominal;
-  ext.structure = f.structure;
-  ext.parameter_names = f.model->parameter_names();
-  ext.theta = f.oe.theta;
-  ext.covariance = f.oe.covariance;
-  ext.params = f.oe.estimates;
-  for (const auto& [name, value] : f.held) {
-    if (FindEstimate(ext.params, name) < 0) {
-      ext.params.push_back({name, value, 0.0, ParameterState::kFixed});
-    }
-  }
-  ext.estimator = FinalEstimator::kOutputError;
-  ValidationOptions vo;
-  vo.step_s = step_s;
-  std::vector<TrialFit> fits;
-  for (const TrialData* t : trials) fits.push_back(ValidateTrial(*f.model, f.oe.theta, *t, vo));
-  std::sort(fits.begin(), fits.end(),
-            [](const TrialFit& a, const TrialFit& b) { return a.trial < b.trial; });
-  ext.fit = Summarize(std::move(fits));
-  return ext;
-}
-
 // Stages 2–4 for one DOF whose standard model was identified.
 void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options,
                  const std::vector<std::unique_ptr<TrialData>>& prepared,
@@ -501,7 +475,7 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   }
   const OutputErrorOptions& oe = options.output_error;
   // Within the admissible ranges too: the standard model with a negative drag is no model.
-  d.current = diagnosis::FitPhysical(campaign.vehicle, nominal.structure, d.fit, start, {}, oe, {});
+  d.current = FitPhysical(campaign.vehicle, nominal.structure, d.fit, start, {}, oe, {});
   const std::string name(model::DofName(d.dof));
   if (!d.current.oe.ok()) {
     result->not_diagnosed[d.dof] =

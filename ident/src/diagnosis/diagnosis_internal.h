@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "estimators/structure_fit.h"
 #include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/ident/estimators/output_error.h"
 #include "uuvplan/ident/prepare/trial_data.h"
@@ -22,31 +23,6 @@ namespace uuvplan::ident::diagnosis {
 
 using Values = std::map<std::string, double>;
 using Trials = std::vector<const TrialData*>;
-
-/// A structure fitted by output error on the fit trials.
-struct StructureFit {
-  model::ModelStructure structure;
-  std::shared_ptr<model::DofModel> model;
-  OutputErrorResult oe;
-  Values values;  ///< by parameter name
-  std::set<std::string> dropped;
-  int free_parameters = 0;  ///< model parameters + nuisance initial states
-  Values held;              ///< parameters held at a value (FitPhysical: at an admissible bound)
-  std::set<std::string> held_at_bound;  ///< those the free fit put outside their range
-};
-
-StructureFit FitStructure(const model::Vehicle& vehicle, const model::ModelStructure& structure,
-                          const Trials& trials, const Values& start,
-                          const std::set<std::string>& dropped, const OutputErrorOptions& options,
-                          const Values& fixed = {});
-
-/// FitStructure within the families' admissible ranges (model/parameter.h): a parameter the fit
-/// puts outside its range (and `base` had inside) is held at the bound and the rest refitted;
-/// one that cannot be held (an open bound) is left for the test to call non-physical.
-StructureFit FitPhysical(const model::Vehicle& vehicle, const model::ModelStructure& structure,
-                         const Trials& trials, const Values& start,
-                         const std::set<std::string>& dropped, const OutputErrorOptions& options,
-                         const Values& base, Values held = {});
 
 /// A candidate extension of the current structure: an effect's proposal applied to it.
 struct Candidate {

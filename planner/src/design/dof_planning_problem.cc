@@ -91,7 +91,7 @@ std::unique_ptr<DofPlanningProblem> DofPlanningProblem::APriori(const model::Veh
                                                                 std::vector<std::string>* notes) {
   RequireDesignable(vehicle, dof);
   const model::DofModel probe(vehicle, StructureFor(vehicle, dof));
-  ParameterBox box = APrioriBox(vehicle, dof, probe.parameter_names(), options.box, notes);
+  ParameterBox box = PlanningBox(vehicle, dof, probe.parameter_names(), options.box, notes);
   return std::make_unique<DofPlanningProblem>(vehicle, pool, dof, std::move(box), options);
 }
 

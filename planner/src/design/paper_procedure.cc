@@ -171,7 +171,7 @@ std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& v,
   }
   // A priori drag: the vehicle's dofs.<dof>.drag (else model::DragOf's thrust-scaled fallback).
   const model::DofModel full(v, model::ModelStructure::Standard(v, dof, mappings, false));
-  const ParameterBox box = APrioriBox(v, dof, full.parameter_names(), o.planner.box, notes);
+  const ParameterBox box = PlanningBox(v, dof, full.parameter_names(), o.planner.box, notes);
   const double k = box.Nominal("k"), kq = box.Nominal("kq");
 
   std::vector<model::TrialDesign> out;

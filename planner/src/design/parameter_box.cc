@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/parameter.h"
 #include "uuvplan/model/prior.h"
 #include "uuvplan/model/util/seed.h"
 #include "uuvplan/model/util/text.h"
@@ -183,6 +184,68 @@ ParameterBox EstimateBox(const ParameterValues& estimates, const ParameterValues
   const double rd = std::max(rel(model::param::kLinearDrag), rel(model::param::kQuadraticDrag));
   AddDragAndEtaAxes(1.0 - rd, 1.0 + rd, etas, options, &box);
   return box;
+}
+
+ParameterBox BoxAboutEstimates(const ParameterBox& apriori, const std::vector<std::string>& names,
+                               const ParameterValues& estimates, const ParameterValues& sigmas,
+                               double n_sigma, const BoxOptions& options) {
+  ParameterValues centre = apriori.nominal;
+  for (const auto& [name, value] : estimates) {
+    if (centre.count(name)) centre[name] = value;
+  }
+  ParameterBox box = EstimateBox(centre, sigmas, names, n_sigma, options);
+  for (BoxAxis& axis : box.axes) {
+    bool estimated = false;
+    for (const auto& p : axis.params) {
+      estimated = estimated || (estimates.count(p) && sigmas.count(p));
+    }
+    if (estimated) continue;
+    for (const BoxAxis& a : apriori.axes) {
+      if (a.name != axis.name) continue;
+      // The a priori factors, about the a priori centre.
+      const std::string& ref = axis.params.front();
+      const double scale = box.Nominal(ref) != 0.0 ? apriori.Nominal(ref) / box.Nominal(ref) : 1.0;
+      axis.lo = a.lo * scale;
+      axis.hi = a.hi * scale;
+    }
+  }
+  return box;
+}
+
+namespace {
+
+// "m = 0.575 ± 0.073 kg·m², k = 4.29 ± 0.1 N·m·s/rad": the estimates a box is centred on.
+std::string EstimatesText(model::Dof dof, const model::DofParameters& model,
+                          const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) {
+    const auto value = model.params.find(name);
+    const auto sigma = model.sigma.find(name);
+    if (value == model.params.end() || sigma == model.sigma.end()) continue;
+    text += (text.empty() ? "" : ", ") + name + " = " + model::Significant(value->second, 4) +
+            " ± " + model::Significant(sigma->second, 2) + " " + model::Unit(name, dof);
+  }
+  return text;
+}
+
+}  // namespace
+
+ParameterBox PlanningBox(const model::Vehicle& vehicle, model::Dof dof,
+                         const std::vector<std::string>& names, const BoxOptions& options,
+                         std::vector<std::string>* notes) {
+  const auto model = vehicle.models.find(dof);
+  if (model == vehicle.models.end() || !model->second.identified()) {
+    return APrioriBox(vehicle, dof, names, options, notes);
+  }
+  const ParameterBox apriori = APrioriBox(vehicle, dof, names, options, nullptr);
+  if (notes) {
+    notes->push_back(std::string(model::DofName(dof)) +
+                     ": planned about the identified model of the vehicle file ± " +
+                     model::Significant(options.estimate_sigmas, 3) + "σ (" +
+                     EstimatesText(dof, model->second, names) + ")");
+  }
+  return BoxAboutEstimates(apriori, names, model->second.params, model->second.sigma,
+                           options.estimate_sigmas, options);
 }
 
 }  // namespace uuvplan::planner

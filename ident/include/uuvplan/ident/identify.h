@@ -85,6 +85,10 @@ struct IdentifyOptions {
   RlsOptions rls;  ///< Method::kRls (λ: `--forgetting`)
   Method method = Method::kChain;
   bool refine = true;  ///< run the output-error stage (Method::kChain only)
+  /// Refit the effects a model in the vehicle file gives (identify_stages.h FitWrittenModel;
+  /// Method::kChain with refine only). Diagnosis turns it off: its baseline is the standard
+  /// model.
+  bool written_model = true;
   /// The model selection of every stage (least squares, RLS, closed-loop IV, output error):
   /// it replaces the stages' own `selection`. `identify --no-prune` turns it off,
   /// `--seed-selection` drops whatever the correlation (kSeedDropCorrelation), whose σ then

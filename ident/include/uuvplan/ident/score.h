@@ -25,7 +25,7 @@ model::DofTruth ModelOf(const struct DofIdentification& identification);
 
 /// "" when every parameter of `model` lies in its family's admissible range (a file reader
 /// would accept it), else the first that does not, e.g. "k = -0.31 (expected a number >= 0)".
-std::string Inadmissible(const model::DofTruth& model);
+std::string Inadmissible(const model::DofParameters& model);
 
 /// Velocity MAE of the free runs of `trials` pooled over their samples (trials without a
 /// velocity sample add nothing). NaN, with the reason in `why`, when a free run cannot be

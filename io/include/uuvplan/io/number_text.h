@@ -42,4 +42,20 @@ inline bool ParseNumber(std::string_view text, double* value) {
 /// Appends `value` as %.<digits>g would, without the locale.
 void AppendGeneral(double value, int digits, std::string* out);
 
+/// Significant digits a file keeps of a number: a person reads it, and 10 digits are 1e-10
+/// relative, far below any measurement the files hold.
+constexpr int kFileDigits = 10;
+
+/// A number in a file people read: the shortest text that reads back exactly when that has at
+/// most kFileDigits significant digits ("0.1", "6.621"), else kFileDigits digits.
+std::string FileNumber(double value);
+
+/// The 1σ of an estimate in a file: 2 significant digits ("0.073"), 0 as "0".
+std::string SigmaNumber(double sigma);
+
+/// An estimate in a file, rounded to the place of its σ's second significant digit
+/// ("0.575" for 0.57512 ± 0.073): the digits that carry information, the rounding error at
+/// most 5% of σ. A σ that is 0 or not finite leaves FileNumber(value).
+std::string EstimateNumber(double value, double sigma);
+
 }  // namespace uuvplan::io

@@ -13,15 +13,12 @@ namespace uuvplan::io {
 
 model::Vehicle ReadVehicle(const std::string& path);
 
-/// Writes a vehicle file that ReadVehicle reads back to the same vehicle (atomically).
-void WriteVehicleYaml(const std::string& path, const model::Vehicle& vehicle);
-
-/// Writes a vehicle file with a model of some DOFs: per DOF its parameters (dofs.<dof>.params
-/// and .effects, as a truth file gives them, docs/formats.md) and their σ (dofs.<dof>.sigma).
-/// Every command reads it as a vehicle; ReadTruth reads the model back (`score`, `simulate`).
-/// `comment` heads the file (one "# " line per line).
+/// Writes a vehicle file that ReadVehicle reads back to the vehicle it prints (atomically),
+/// headed by `comment` (one "# " line per line). A DOF's model (vehicle.models: its parameters
+/// as dofs.<dof>.params and .effects, as a truth file gives them, and their σ as
+/// dofs.<dof>.sigma, docs/formats.md) is written beside the a priori keys; ReadTruth reads it
+/// back too (`score`, `simulate`).
 void WriteVehicleYaml(const std::string& path, const model::Vehicle& vehicle,
-                      const std::map<model::Dof, model::DofTruth>& models,
-                      const std::string& comment);
+                      const std::string& comment = "written by uuvplan");
 
 }  // namespace uuvplan::io

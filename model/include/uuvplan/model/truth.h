@@ -29,16 +29,11 @@ struct SensorDefects {
   double noise_ar1 = 0.0;
 };
 
-struct DofTruth {
-  /// True parameter values by vocabulary name (parameter.h), e.g. {"m": 890, "k": 46.9, ...}.
-  std::map<std::string, double> params;
+/// The true model of a DOF: its parameters (vehicle.h DofParameters, e.g. {"m": 890, "k":
+/// 46.9, ...}) and what the virtual pool needs besides.
+struct DofTruth : DofParameters {
   /// Other DOFs' velocities during this DOF's trials (for coupling), by velocity letter.
   std::map<char, AuxMotion> aux_motion;
-  /// Structure settings of its effects (effects.h EffectSetting), e.g. "thrust_reference".
-  std::map<std::string, double> settings;
-  /// σ of identified parameters by name (a model written by `diagnose --write-vehicle`);
-  /// empty in a hand-written truth.
-  std::map<std::string, double> sigma;
 };
 
 struct Truth {

@@ -37,6 +37,18 @@ struct DofPrior {
   std::optional<std::array<double, 2>> added_mass;  ///< fraction of rigid-body value [lo, hi]
 };
 
+/// A DOF's model as a file gives it (dofs.<dof>.params, .effects and .sigma): the truth of a
+/// virtual pool, or the identified model `identify --write-vehicle` or `diagnose
+/// --write-vehicle` writes into a vehicle file.
+struct DofParameters {
+  std::map<std::string, double> params;    ///< values by vocabulary name (parameter.h)
+  std::map<std::string, double> settings;  ///< structure settings of its effects (effects.h)
+  /// 1σ of identified parameters by name; empty in a hand-written truth.
+  std::map<std::string, double> sigma;
+  /// An identified model: its values are estimates with a σ.
+  bool identified() const { return !sigma.empty(); }
+};
+
 struct Vehicle {
   std::string name;
   double mass = 0.0;                       ///< kg in air
@@ -48,10 +60,11 @@ struct Vehicle {
   std::vector<ThrustMapping> mappings;
   std::map<Dof, DofPrior> priors;
   std::map<Dof, DofSensors> sensors;
-  /// DOFs whose parameter values the file also gives (`dofs.<dof>.params` and effects, as
-  /// `diagnose --write-vehicle` writes them). `score` and `simulate` use those values;
+  /// The model of each DOF whose parameters the file also gives (`dofs.<dof>.params`, effects
+  /// and σ, as `identify`/`diagnose --write-vehicle` write them). The planner centres its box
+  /// on an identified model (planner/design/parameter_box.h); `score` and `simulate` use it;
   /// identification starts from the a priori values and fits the standard model.
-  std::vector<Dof> dofs_with_parameters;
+  std::map<Dof, DofParameters> models;
 
   /// Rigid-body inertia of a DOF: the mass for translations; for rotations the given
   /// inertia or that of a uniform box of `size` (ref 000 §IV-D: I_z = m(l² + w²)/12).

@@ -58,6 +58,10 @@ struct BoxOptions {
   std::array<double, 2> eta_range = {0.5, 1.0};
   /// Relative uncertainty assumed when a DOF has no a priori drag (model::DragOf's fallback).
   double fallback_drag_rel_sigma = 0.5;
+  /// Half-width, in σ, of the box about an identified model the vehicle file gives
+  /// (model::DofParameters): ± 3σ holds the true value of a Gaussian estimate with 99.7%
+  /// probability, so a robust design over it holds for the vehicle as identified.
+  double estimate_sigmas = 3.0;
 };
 
 /// The a priori box of `dof` for a model with parameters `parameter_names` (DofModel order).
@@ -80,5 +84,19 @@ ParameterBox JointAPrioriBox(const model::Vehicle& vehicle, const model::MultiDo
 ParameterBox EstimateBox(const ParameterValues& estimates, const ParameterValues& sigmas,
                          const std::vector<std::string>& parameter_names, double n_sigma,
                          const BoxOptions& options);
+
+/// EstimateBox about the estimates that `apriori` (a box over `parameter_names`) has a value
+/// for, with every axis whose parameters have no estimate with a σ kept at `apriori`'s range.
+ParameterBox BoxAboutEstimates(const ParameterBox& apriori,
+                               const std::vector<std::string>& parameter_names,
+                               const ParameterValues& estimates, const ParameterValues& sigmas,
+                               double n_sigma, const BoxOptions& options);
+
+/// The box a design of `dof` starts from: about the identified model the vehicle file gives
+/// for it (vehicle.models, ± options.estimate_sigmas σ) when it has one, with a note naming
+/// the estimates; else APrioriBox.
+ParameterBox PlanningBox(const model::Vehicle& vehicle, model::Dof dof,
+                         const std::vector<std::string>& parameter_names, const BoxOptions& options,
+                         std::vector<std::string>* notes);
 
 }  // namespace uuvplan::planner

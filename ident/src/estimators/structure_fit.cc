@@ -1,13 +1,18 @@
+#include "estimators/structure_fit.h"
+
+#include <algorithm>
 #include <cmath>
 
-#include "diagnosis_internal.h"
+#include "uuvplan/ident/estimate.h"
+#include "uuvplan/ident/validation.h"
+#include "uuvplan/model/parameter.h"
 
-namespace uuvplan::ident::diagnosis {
+namespace uuvplan::ident {
 
 // Every parameter starts at `start` where given, else at its null value ("no effect"); those in
 // `fixed` are held at their value there.
 StructureFit FitStructure(const model::Vehicle& vehicle, const model::ModelStructure& structure,
-                          const Trials& trials, const Values& start,
+                          const std::vector<const TrialData*>& trials, const Values& start,
                           const std::set<std::string>& dropped, const OutputErrorOptions& options,
                           const Values& fixed) {
   StructureFit f;
@@ -41,9 +46,9 @@ StructureFit FitStructure(const model::Vehicle& vehicle, const model::ModelStruc
   return f;
 }
 
-}  // namespace uuvplan::ident::diagnosis
+}  // namespace uuvplan::ident
 
-namespace uuvplan::ident::diagnosis {
+namespace uuvplan::ident {
 
 // The parameters of `f` outside their family's admissible range that `base` had inside it (or
 // did not have), with the bound each is held at; `blocked` when one cannot be held (an open
@@ -69,7 +74,7 @@ Values OutOfRange(const StructureFit& f, const Values& base, bool* blocked) {
 // Maximum likelihood within the admissible ranges by an active set: a parameter the free fit
 // puts outside its range is held at the bound it crossed, and the rest refitted.
 StructureFit FitPhysical(const model::Vehicle& vehicle, const model::ModelStructure& structure,
-                         const Trials& trials, const Values& start,
+                         const std::vector<const TrialData*>& trials, const Values& start,
                          const std::set<std::string>& dropped, const OutputErrorOptions& options,
                          const Values& base, Values held) {
   StructureFit f = FitStructure(vehicle, structure, trials, start, dropped, options, held);
@@ -88,4 +93,33 @@ StructureFit FitPhysical(const model::Vehicle& vehicle, const model::ModelStruct
   return f;
 }
 
-}  // namespace uuvplan::ident::diagnosis
+DofIdentification WithStructureFit(const DofIdentification& nominal, const StructureFit& f) {
+  DofIdentification ext = nominal;
+  ext.structure = f.structure;
+  ext.parameter_names = f.model->parameter_names();
+  ext.theta = f.oe.theta;
+  ext.covariance = f.oe.covariance;
+  ext.params = f.oe.estimates;
+  for (const auto& [name, value] : f.held) {
+    if (FindEstimate(ext.params, name) < 0) {
+      ext.params.push_back({name, value, 0.0, ParameterState::kFixed});
+    }
+  }
+  ext.estimator = FinalEstimator::kOutputError;
+  return ext;
+}
+
+DofIdentification AsIdentification(const DofIdentification& nominal, const StructureFit& f,
+                                   const std::vector<const TrialData*>& trials, double step_s) {
+  DofIdentification ext = WithStructureFit(nominal, f);
+  ValidationOptions vo;
+  vo.step_s = step_s;
+  std::vector<TrialFit> fits;
+  for (const TrialData* t : trials) fits.push_back(ValidateTrial(*f.model, f.oe.theta, *t, vo));
+  std::sort(fits.begin(), fits.end(),
+            [](const TrialFit& a, const TrialFit& b) { return a.trial < b.trial; });
+  ext.fit = Summarize(std::move(fits));
+  return ext;
+}
+
+}  // namespace uuvplan::ident

@@ -1,0 +1,47 @@
+#include "uuvplan/cli/model_vehicle_file.h"
+
+#include <cstdlib>
+#include <ctime>
+#include <iostream>
+
+#include "uuvplan/ident/score.h"
+#include "uuvplan/io/vehicle_yaml.h"
+
+namespace uuvplan::cli {
+namespace {
+
+// Today as YYYY-MM-DD (UTC), or SOURCE_DATE_EPOCH's day when that is set
+// (reproducible-builds.org's convention for a fixed date).
+std::string Today() {
+  std::time_t now = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) now = std::atoll(epoch);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[16];
+  std::strftime(text, sizeof text, "%Y-%m-%d", &utc);
+  return text;
+}
+
+}  // namespace
+
+bool WriteModelVehicle(const std::string& command, const std::string& path,
+                       const std::string& campaign_path, model::Vehicle vehicle,
+                       const std::vector<const ident::DofIdentification*>& dofs,
+                       const std::string& comment) {
+  for (const ident::DofIdentification* d : dofs) {
+    const model::DofTruth m = ident::ModelOf(*d);
+    const std::string problem = ident::Inadmissible(m);
+    if (!problem.empty()) {
+      std::cerr << "uuvplan: " << command << ": error: " << path << " not written: the "
+                << model::DofName(d->dof) << " model has " << problem << "\n";
+      return false;
+    }
+    vehicle.models[d->dof] = m;
+  }
+  io::WriteVehicleYaml(path, vehicle,
+                       "written by `uuvplan " + command + " " + campaign_path +
+                           " --write-vehicle` on " + Today() + ": " + comment);
+  return true;
+}
+
+}  // namespace uuvplan::cli

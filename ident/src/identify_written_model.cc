@@ -1,0 +1,59 @@
+// The written-model stage of identify (identify_stages.h): the vehicle file's model of a DOF
+// (dofs.<dof>.params with effects, as `diagnose --write-vehicle` writes it) refitted on this
+// campaign, so that what a diagnosis found is estimated again rather than dropped.
+#include <string>
+#include <vector>
+
+#include "estimators/structure_fit.h"
+#include "identify_stages.h"
+#include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/text.h"
+
+namespace uuvplan::ident::stages {
+namespace {
+
+// The standard structure `base` extended by every parameter and setting of `written` it lacks.
+model::ModelStructure WrittenStructure(const model::ModelStructure& base,
+                                       const model::DofParameters& written,
+                                       std::vector<std::string>* added) {
+  model::ModelStructure s = base;
+  for (const auto& [name, value] : written.params) {
+    if (name == model::param::kMass || s.Has(name) || name == model::param::kBiasStep) continue;
+    if (model::StartsWith(name, model::param::kEtaPrefix)) continue;  // η: the campaign's mappings
+    s.Add(name);
+    added->push_back(name);
+  }
+  for (const auto& [key, value] : written.settings) s.settings.emplace(key, value);
+  return s;
+}
+
+}  // namespace
+
+std::shared_ptr<const model::DofModel> FitWrittenModel(const StageInputs& c, DofIdentification* r) {
+  const auto written = c.vehicle.models.find(r->dof);
+  if (written == c.vehicle.models.end() || r->status == IdentifyStatus::kFailed) return nullptr;
+  std::vector<std::string> added;
+  const model::ModelStructure structure = WrittenStructure(r->structure, written->second, &added);
+  if (added.empty()) return nullptr;
+  Values start = written->second.params;  // the effects from the file's values
+  for (std::size_t i = 0; i < r->parameter_names.size(); ++i) {
+    start[r->parameter_names[i]] = r->theta[static_cast<Eigen::Index>(i)];  // the rest estimated
+  }
+  const std::string list = model::Join(added, ", ");
+  const StructureFit fit =
+      FitPhysical(c.vehicle, structure, c.trials.fit, start, {}, c.output_error, start);
+  if (!fit.oe.ok()) {
+    r->warnings.push_back("the vehicle file's model (with " + list +
+                          ") could not be fitted on this campaign: " + fit.oe.message +
+                          "; the standard model's estimates are reported");
+    return nullptr;
+  }
+  *r = WithStructureFit(*r, fit);
+  r->output_error = fit.oe;
+  r->notes.push_back("fitted in the vehicle file's model: " + list +
+                     " added to the standard model and estimated by output error from the "
+                     "file's values, within the admissible ranges");
+  return fit.model;
+}
+
+}  // namespace uuvplan::ident::stages
