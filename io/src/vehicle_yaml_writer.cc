@@ -15,6 +15,7 @@
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/parameter.h"
+#include "thruster_installation_yaml.h"
 
 namespace uuvplan::io {
 
@@ -67,8 +68,10 @@ void EmitThruster(YAML::Emitter& out, const Thruster& t) {
   if (t.model.deduction != 0.0) {
     out << YAML::Key << "deduction" << YAML::Value << t.model.deduction;
   }
+  if (t.model.dead_band != 0.0) out << YAML::Key << "dead_band" << YAML::Value << t.model.dead_band;
   out << YAML::EndMap << YAML::Key << "command" << YAML::Value;
   EmitPair(out, {t.command_min, t.command_max});
+  EmitThrusterInstallation(out, t);
   out << YAML::EndMap;
 }
 

@@ -10,6 +10,7 @@
 
 #include "uuvplan/model/dof.h"
 #include "uuvplan/model/mapping.h"
+#include "uuvplan/model/mapping_derivation_options.h"
 #include "uuvplan/model/thruster.h"
 
 namespace uuvplan::model {
@@ -45,7 +46,8 @@ struct Vehicle {
   std::array<double, 2> added_mass = {0.1, 1.0};  ///< default a priori bounds (fraction)
   std::vector<Thruster> thrusters;
   double min_thrust = 0.0;                    ///< N: smallest |tau| of a working thruster
-  std::vector<ThrustMapping> mappings;
+  std::vector<ThrustMapping> mappings;  ///< the file's table, then those derived (derived_mappings.h)
+  MappingDerivationOptions mapping_derivation;  ///< jet_clearance, restoring
   std::map<Dof, DofPrior> priors;
   std::map<Dof, DofSensors> sensors;
   /// DOFs whose parameter values the file also gives (`dofs.<dof>.params` and effects, as
