@@ -11,6 +11,7 @@
 #include "uuvplan/io/plausibility.h"
 #include "uuvplan/model/util/text.h"
 #include "derived_mapping_keys.h"
+#include "speed_limit_keys.h"
 #include "thruster_installation_yaml.h"
 #include "vehicle_keys.h"
 
@@ -218,10 +219,12 @@ DofSensors ParseDofSensors(const Value& v, double size) {
 Vehicle ParseVehicle(const MapValue& root, bool truth) {
   if (truth) {
     root.AllowOnly({"name", "mass", "size", "inertia", "added_mass", "thrusters", "min_thrust",
-                    "mappings", "jet_clearance", "restoring", "dofs", "sensors", "virtual_pool"});
+                    "mappings", "jet_clearance", "restoring", "max_translation_speed",
+                    "max_rotation_rate", "dofs", "sensors", "virtual_pool"});
   } else {
     root.AllowOnly({"name", "mass", "size", "inertia", "added_mass", "thrusters", "min_thrust",
-                    "mappings", "jet_clearance", "restoring", "dofs", "sensors"});
+                    "mappings", "jet_clearance", "restoring", "max_translation_speed",
+                    "max_rotation_rate", "dofs", "sensors"});
   }
   Vehicle vehicle;
   vehicle.name = Name(root.Required("name"), "a vehicle name");
@@ -244,6 +247,7 @@ Vehicle ParseVehicle(const MapValue& root, bool truth) {
   }
   vehicle.thrusters = ParseThrusters(root.Required("thrusters"), vehicle.mass, vehicle.size);
   if (const Value v = root.Optional("min_thrust"); !v.absent()) vehicle.min_thrust = NonNegative(v);
+  vehicle.speed_limits = ParseSpeedLimits(root);
   if (const Value v = root.Optional("mappings"); !v.absent()) {
     vehicle.mappings = ParseMappings(v, vehicle.thrusters);
   }

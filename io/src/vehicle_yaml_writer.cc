@@ -15,6 +15,7 @@
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/parameter.h"
+#include "speed_limit_keys.h"
 #include "thruster_installation_yaml.h"
 
 namespace uuvplan::io {
@@ -191,6 +192,7 @@ void WriteVehicleYaml(const std::string& path, const Vehicle& v,
   for (const auto& t : v.thrusters) EmitThruster(out, t);
   out << YAML::EndSeq;
   out << YAML::Key << "min_thrust" << YAML::Value << v.min_thrust;
+  EmitSpeedLimits(out, v.speed_limits);
   EmitMappings(out, v);
   EmitDofs(out, v, models);
   EmitPerDof(out, "sensors", v.sensors, [&out](const DofSensors& s) {
