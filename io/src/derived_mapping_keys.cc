@@ -29,8 +29,9 @@ void CheckGeometryOfEveryThruster(const MapValue& root, const Vehicle& vehicle) 
   const std::vector<Value> items = List(root.Required("thrusters"), "a list of thrusters");
   for (std::size_t i = 0; i < vehicle.thrusters.size() && i < items.size(); ++i) {
     if (vehicle.thrusters[i].geometry) continue;
-    items[i].Fail("missing position and direction: other thrusters give theirs, and the "
-                  "mappings derived from the geometry need every thruster's (give all or none)");
+    items[i].Fail(
+        "missing position and direction: other thrusters give theirs, and the "
+        "mappings derived from the geometry need every thruster's (give all or none)");
   }
 }
 
@@ -42,7 +43,8 @@ MappingDerivationOptions ParseMappingDerivation(const MapValue& root) {
     options.jet_clearance = Positive(c);
   }
   if (const Value r = root.Optional("restoring"); !r.absent()) {
-    for (const Value& item : List(r, "a list of DOFs held by hydrostatic restoring (roll, pitch)")) {
+    for (const Value& item :
+         List(r, "a list of DOFs held by hydrostatic restoring (roll, pitch)")) {
       const Dof dof = DofValue(item);
       if (dof != Dof::kRoll && dof != Dof::kPitch) {
         item.Expected("roll or pitch (only they have a hydrostatic restoring moment)");
@@ -71,8 +73,10 @@ void AddDerivedMappings(const MapValue& root, Vehicle* vehicle) {
     if (vehicle->MappingIndex(m.name) < 0) vehicle->mappings.push_back(m);
   }
   if (vehicle->mappings.empty()) {
-    root.self().Fail("no mapping: the file has no mappings table and no DOF is driven alone by "
-                     "the thrusters' geometry (" + Join(derived.unreachable, "; ") + ")");
+    root.self().Fail(
+        "no mapping: the file has no mappings table and no DOF is driven alone by "
+        "the thrusters' geometry (" +
+        Join(derived.unreachable, "; ") + ")");
   }
 }
 

@@ -31,8 +31,9 @@ std::array<double, 3> Triple(const Value& v, const std::string& expectation) {
 std::array<double, 3> ParsePosition(const Value& v, const std::array<double, 3>& size) {
   const std::string expectation =
       "a position [x, y, z] in m (body frame: x forward, y starboard, z down), each within the "
-      "vehicle's size [" + model::Significant(size[0], 4) + ", " + model::Significant(size[1], 4) +
-      ", " + model::Significant(size[2], 4) + "] of its centre";
+      "vehicle's size [" +
+      model::Significant(size[0], 4) + ", " + model::Significant(size[1], 4) + ", " +
+      model::Significant(size[2], 4) + "] of its centre";
   const std::array<double, 3> p = Triple(v, expectation);
   for (int i = 0; i < 3; ++i) {
     if (!(std::abs(p[i]) <= size[i])) v.Expected(expectation);
@@ -58,16 +59,16 @@ void ParseDeadBand(const MapValue& m, Thruster* t) {
   const Value band = thrust.Optional("dead_band");
   if (band.absent()) return;
   const double reach = std::max(std::abs(t->command_min), std::abs(t->command_max));
-  t->model.dead_band = NumberIf(
-      band, "a dead band >= 0 in command units, below the command range's reach " +
-                model::Significant(reach, 4),
-      [reach](double x) { return x >= 0 && x < reach; });
+  t->model.dead_band =
+      NumberIf(band,
+               "a dead band >= 0 in command units, below the command range's reach " +
+                   model::Significant(reach, 4),
+               [reach](double x) { return x >= 0 && x < reach; });
 }
 
 }  // namespace
 
-void ParseThrusterInstallation(const MapValue& m, const std::array<double, 3>& size,
-                               Thruster* t) {
+void ParseThrusterInstallation(const MapValue& m, const std::array<double, 3>& size, Thruster* t) {
   const Value position = m.Optional("position"), direction = m.Optional("direction");
   if (position.absent() != direction.absent()) {
     m.self().Fail(std::string("expected both position and direction (or neither), got only ") +
@@ -86,8 +87,8 @@ void EmitThrusterInstallation(YAML::Emitter& out, const Thruster& t) {
   if (t.geometry) {
     for (const auto& [key, v] : {std::pair{"position", t.geometry->position},
                                  std::pair{"direction", t.geometry->direction}}) {
-      out << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq << v[0] << v[1]
-          << v[2] << YAML::EndSeq;
+      out << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq << v[0] << v[1] << v[2]
+          << YAML::EndSeq;
     }
   }
   if (t.reversible) out << YAML::Key << "reversible" << YAML::Value << true;

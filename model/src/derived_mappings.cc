@@ -66,7 +66,8 @@ struct Allocation {
 Allocation Allocate(const Problem& p, const std::vector<int>& columns, double tolerance,
                     bool full_rank) {
   MatrixXd a(p.scaled.rows(), static_cast<Eigen::Index>(columns.size()));
-  for (std::size_t c = 0; c < columns.size(); ++c) a.col(Eigen::Index(c)) = p.scaled.col(columns[c]);
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    a.col(Eigen::Index(c)) = p.scaled.col(columns[c]);
   Eigen::JacobiSVD<MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
   svd.setThreshold(kRankThreshold);
   Allocation out;
@@ -86,7 +87,8 @@ Allocation Allocate(const Problem& p, const std::vector<int>& columns, double to
   }
   if (out.worst_residual > tolerance) return out;
   double physical = 0.0;  // the DOF's force of s (N or N·m): divide it out for phi = 1
-  for (std::size_t c = 0; c < columns.size(); ++c) physical += p.physical_row(columns[c]) * s(Eigen::Index(c));
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    physical += p.physical_row(columns[c]) * s(Eigen::Index(c));
   out.shares = s / physical;
   return out;
 }
@@ -156,8 +158,8 @@ std::string UnreachableText(const Problem& p, const Allocation& all) {
          "gives " + std::string(DofName(all.worst_dof)) + " " +
          Significant(100.0 * all.worst_residual, 3) + "% of it" +
          (IsRotational(all.worst_dof) || IsRotational(p.dof) ? ", moments as forces at the mean "
-                                                                "half-side of the size box)"
-                                                              : ")");
+                                                               "half-side of the size box)"
+                                                             : ")");
 }
 
 }  // namespace

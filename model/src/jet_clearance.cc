@@ -30,8 +30,8 @@ bool JetIsClear(const std::vector<Thruster>& thrusters, int index, double thrust
   const Thruster& t = thrusters.at(static_cast<std::size_t>(index));
   if (!t.geometry || thrust_sign == 0) return true;
   const Eigen::Vector3d p(t.geometry->position.data());
-  const Eigen::Vector3d jet = -(thrust_sign > 0 ? 1.0 : -1.0) *
-                              Eigen::Vector3d(t.geometry->direction.data()).normalized();
+  const Eigen::Vector3d jet =
+      -(thrust_sign > 0 ? 1.0 : -1.0) * Eigen::Vector3d(t.geometry->direction.data()).normalized();
   if (InJet(p, jet, Eigen::Vector3d::Zero(), clearance)) return false;
   for (std::size_t j = 0; j < thrusters.size(); ++j) {
     if (static_cast<int>(j) == index || !thrusters[j].geometry) continue;

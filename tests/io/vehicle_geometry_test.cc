@@ -12,8 +12,8 @@
 namespace uuvplan::model {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::ErrorOf;
+using ::testing::HasSubstr;
 using testing::ScratchDir;
 
 // Two thrusters on the beam (y = ±0.2 m) pushing forward, one vertical at the centre.
@@ -21,12 +21,14 @@ std::string Vehicle3(const std::string& first_direction = "[1, 0, 0]",
                      const std::string& extra = "") {
   return "name: geo\nmass: 20\nsize: [1.0, 0.6, 0.4]\nthrusters:\n"
          "  - {name: L, thrust: {model: square, c_pos: 20, c_neg: 15, dead_band: 0.05},\n"
-         "     command: [-1, 1], position: [-0.3, -0.2, 0], direction: " + first_direction +
+         "     command: [-1, 1], position: [-0.3, -0.2, 0], direction: " +
+         first_direction +
          ", reversible: true}\n"
          "  - {name: R, thrust: {model: square, c_pos: 20, c_neg: 15}, command: [-1, 1],\n"
          "     position: [-0.3, 0.2, 0], direction: [1, 0, 0]}\n"
          "  - {name: V, thrust: {model: square, c_pos: 20, c_neg: 15}, command: [-1, 1],\n"
-         "     position: [0, 0, 0], direction: [0, 0, 1]}\n" + extra;
+         "     position: [0, 0, 0], direction: [0, 0, 1]}\n" +
+         extra;
 }
 
 TEST(VehicleGeometry, GeometryOnlyVehicleGetsDerivedMappings) {

@@ -1,6 +1,8 @@
 // Mappings derived from thruster geometry (model/derived_mappings.h): ROMEO's derived mappings
 // contain seed 000 Table I's (as cases/romeo/vehicle.yaml writes them), the BlueROV2's are the
 // vectored frame's pairs, and geometries that cannot drive a DOF alone say so without NaN.
+#include "uuvplan/model/derived_mappings.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/configuration_matrix.h"
-#include "uuvplan/model/derived_mappings.h"
 #include "uuvplan/model/jet_clearance.h"
 
 namespace uuvplan::model {
@@ -34,10 +35,10 @@ Thruster At(const std::string& name, std::array<double, 3> r, std::array<double,
 // z = −0.2 m (the propulsion sits in the upper sections, §IV-A), pushing down (+z) for positive
 // thrust ("vertical all pitch, roll, heave": VFL = (−L − M + Z)/4).
 std::vector<Thruster> RomeoThrusters() {
-  return {At("HFL", {0.55, -0.35, 0}, {kC, kC, 0}),    At("HFR", {0.55, 0.35, 0}, {kC, -kC, 0}),
-          At("HRL", {-0.55, -0.35, 0}, {-kC, kC, 0}),  At("HRR", {-0.55, 0.35, 0}, {-kC, -kC, 0}),
-          At("VFL", {0.55, -0.35, -0.2}, {0, 0, 1}),   At("VFR", {0.55, 0.35, -0.2}, {0, 0, 1}),
-          At("VRL", {-0.55, -0.35, -0.2}, {0, 0, 1}),  At("VRR", {-0.55, 0.35, -0.2}, {0, 0, 1})};
+  return {At("HFL", {0.55, -0.35, 0}, {kC, kC, 0}),   At("HFR", {0.55, 0.35, 0}, {kC, -kC, 0}),
+          At("HRL", {-0.55, -0.35, 0}, {-kC, kC, 0}), At("HRR", {-0.55, 0.35, 0}, {-kC, -kC, 0}),
+          At("VFL", {0.55, -0.35, -0.2}, {0, 0, 1}),  At("VFR", {0.55, 0.35, -0.2}, {0, 0, 1}),
+          At("VRL", {-0.55, -0.35, -0.2}, {0, 0, 1}), At("VRR", {-0.55, 0.35, -0.2}, {0, 0, 1})};
 }
 constexpr std::array<double, 3> kRomeoSize = {1.3, 0.9, 1.0};
 
@@ -132,10 +133,9 @@ TEST(DerivedMappings, RomeoNamesAndOrderAreDeterministic) {
   std::vector<std::string> names;
   for (const auto& m : d.mappings) names.push_back(m.name);
   const std::vector<std::string> expected = {
-      "surge-all",   "surge-HFL-HFR", "surge-HRL-HRR", "sway-all",     "sway-HFL-HRL",
-      "sway-HFR-HRR", "heave-all",    "heave-VFL-VRR", "heave-VFR-VRL", "roll-all",
-      "roll-VFL-VFR", "roll-VRL-VRR", "pitch-all",     "pitch-VFL-VRL", "pitch-VFR-VRR",
-      "yaw-all",      "yaw-HFL-HRR",  "yaw-HFR-HRL"};
+      "surge-all", "surge-HFL-HFR", "surge-HRL-HRR", "sway-all", "sway-HFL-HRL", "sway-HFR-HRR",
+      "heave-all", "heave-VFL-VRR", "heave-VFR-VRL", "roll-all", "roll-VFL-VFR", "roll-VRL-VRR",
+      "pitch-all", "pitch-VFL-VRL", "pitch-VFR-VRR", "yaw-all",  "yaw-HFL-HRR",  "yaw-HFR-HRL"};
   EXPECT_EQ(names, expected);
   EXPECT_TRUE(d.unreachable.empty());
   // Table I's vertical all: Z/4 on each thruster, open water pushing down (jets up, clear).

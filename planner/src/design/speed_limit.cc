@@ -19,8 +19,8 @@ std::string_view SpeedLimitKey(model::Dof dof) {
   return model::IsRotational(dof) ? "max_rotation_rate" : "max_translation_speed";
 }
 
-std::string SpeedLimitRefusal(const std::string& mapping, int sign, model::Dof dof,
-                              double min_abs, double limit, const LowestDrag& drag) {
+std::string SpeedLimitRefusal(const std::string& mapping, int sign, model::Dof dof, double min_abs,
+                              double limit, const LowestDrag& drag) {
   const std::string unit = model::IsRotational(dof) ? "rad/s" : "m/s";
   // The steady speed of min_thrust's least force at the lowest drag (seed 000 eq. 3 at rest:
   // k·v + kq·v² = phi); the limit must exceed it for any force range to remain: 1% above,
@@ -33,11 +33,10 @@ std::string SpeedLimitRefusal(const std::string& mapping, int sign, model::Dof d
     << ") at the lowest a priori drag (k = " << drag.k << ", kq = " << drag.kq
     << "; the limit is reached at |phi| = " << drag.phi_at_limit << "): ";
   if (std::isfinite(needed) && needed > 0) {
-    s << "'" << SpeedLimitKey(dof) << ": " << model::Significant(1.01 * needed, 3)
-      << "' (" << unit << ") in the vehicle file, ";
+    s << "'" << SpeedLimitKey(dof) << ": " << model::Significant(1.01 * needed, 3) << "' (" << unit
+      << ") in the vehicle file, ";
   }
-  s << "a lower min_thrust or an a priori drag fit for " << model::DofName(dof)
-    << " would lift it";
+  s << "a lower min_thrust or an a priori drag fit for " << model::DofName(dof) << " would lift it";
   return s.str();
 }
 

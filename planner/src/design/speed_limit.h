@@ -27,7 +27,7 @@ struct LowestDrag {
 /// "mapping 'M' positive: min_thrust needs |phi| >= A, which drives yaw beyond the speed limit
 /// 0.35 rad/s (max_rotation_rate) ...: max_rotation_rate: V in the vehicle file ... would lift
 /// it", V the steady speed min_thrust's |phi| reaches at the lowest drag, rounded up.
-std::string SpeedLimitRefusal(const std::string& mapping, int sign, model::Dof dof,
-                              double min_abs, double limit, const LowestDrag& drag);
+std::string SpeedLimitRefusal(const std::string& mapping, int sign, model::Dof dof, double min_abs,
+                              double limit, const LowestDrag& drag);
 
 }  // namespace uuvplan::planner

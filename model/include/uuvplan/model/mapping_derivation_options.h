@@ -27,8 +27,8 @@ struct MappingDerivationOptions {
   int max_subset_thrusters = 12;
 
   bool IsValid() const {
-    return (!jet_clearance || *jet_clearance > 0) && purity_tolerance > 0 &&
-           purity_tolerance < 1 && max_subset_thrusters >= 0 && max_subset_thrusters <= 20;
+    return (!jet_clearance || *jet_clearance > 0) && purity_tolerance > 0 && purity_tolerance < 1 &&
+           max_subset_thrusters >= 0 && max_subset_thrusters <= 20;
   }
 };
 
