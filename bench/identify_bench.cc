@@ -29,8 +29,8 @@
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/stats/monte_carlo.h"  // TrueParameter
 #include "uuvplan/io/io.h"
-#include "uuvplan/model/trial_design.h"
 #include "uuvplan/io/virtual_campaign.h"
+#include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/virtual_pool.h"
 
 namespace {

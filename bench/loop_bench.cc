@@ -1,8 +1,8 @@
-// The full-size comparison of issue #5: the design–identify loop (planner/loop/design_loop.h) against
-// seed 000's own procedure (planner/design/paper_procedure.h) on the virtual ROMEO, same truth, pool,
-// sensors, pauses and identification. Prints every loop iteration, the final percentile errors
-// (and the true errors) of every parameter of interest for both, the pool times, and the wall
-// time per loop iteration.
+// The full-size comparison of the design–identify loop (planner/loop/design_loop.h) against
+// ref 000's own procedure (planner/design/paper_procedure.h) on the virtual ROMEO, same truth,
+// pool, sensors, pauses and identification. Prints every loop iteration, the final percentile
+// errors (and the true errors) of every parameter of interest for both, the pool times, and the
+// wall time per loop iteration.
 //
 // Run: build/bench/loop_bench [--dof D]... [--seed N] [--budget N] [--target PCT]
 //                             [--truth FILE] [--pool FILE] [--no-paper] [--no-loop]
@@ -19,8 +19,8 @@
 
 #include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/io/io.h"
-#include "uuvplan/planner/loop/design_loop.h"
 #include "uuvplan/planner/design/paper_procedure.h"
+#include "uuvplan/planner/loop/design_loop.h"
 
 using namespace uuvplan;
 using planner::DofProgress;

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue #15's load test: a campaign of N trials, each a copy of one real 2,926-row BlueROV yaw
+# The load test of many trials: a campaign of N trials, each a copy of one real 2,926-row BlueROV yaw
 # log (../shared/data/bluerov-yaw-2016/trials/yaw_1.csv, 125 Hz gyro), half of them fit and half
 # validate, identified by `uuvplan identify`; prints wall, CPU and peak RSS (/usr/bin/time -v).
 # Memory must grow with the rows (N × 2,926), not with N². The copies are the same log, which

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The plain NumPy/SciPy identification issue #16 compares `uuvplan identify` with.
+"""The plain NumPy/SciPy identification docs/performance.md compares `uuvplan identify` with.
 
     python3 bench/plain_identify.py CAMPAIGN_DIR_OR_CSV
 

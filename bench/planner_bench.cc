@@ -1,12 +1,12 @@
-// Benchmark of the planner (issue #4 targets, single-threaded): a robust single-DOF sine design
-// in under 200 ms and the whole ROMEO schedule in under 2 s. Reports the best of N runs in wall
-// time and in process CPU time (CPU time is what the 2-core CI machine shares out; wall time on
-// a loaded machine overstates it).
+// Benchmark of the planner (docs/performance.md targets, single-threaded): a robust single-DOF sine
+// design in under 200 ms and the whole ROMEO schedule in under 2 s. Reports the best of N runs in
+// wall time and in process CPU time (CPU time is what the 2-core CI machine shares out; wall time
+// on a loaded machine overstates it).
 //
 // Run: build/bench/planner_bench [repetitions] [--budgets]
 //   --budgets  also prints the sine design's robust criterion against the solver budget
 //              (DIRECT-L evaluations / COBYLA evaluations), the figures behind the defaults in
-//              planner/design/dof_context.h.
+//              planner/design/dof_planning_problem.h.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,8 +17,8 @@
 #include <string>
 
 #include "uuvplan/io/io.h"
-#include "uuvplan/planner/schedule_planner.h"
 #include "uuvplan/planner/design/sine_design.h"
+#include "uuvplan/planner/schedule_planner.h"
 
 using namespace uuvplan;
 using namespace uuvplan::planner;
@@ -69,7 +69,8 @@ int main(int argc, char** argv) {
 
   SineDesignResult sine;
   const Timing t_sine = Best(reps, [&] {
-    const auto ctx = DofContext::APriori(v, pool, model::Dof::kSurge, PlannerOptions{}, nullptr);
+    const auto ctx =
+        DofPlanningProblem::APriori(v, pool, model::Dof::kSurge, PlannerOptions{}, nullptr);
     sine = DesignSine(*ctx, SineDesignOptions{}, {}, "surge-sine");
   });
   Print("robust sine design, surge, 20 m, duration fitted to the pool", t_sine, 200);
@@ -81,13 +82,15 @@ int main(int argc, char** argv) {
   SineDesignOptions fixed;
   fixed.fixed_duration_s = 52.0;
   const Timing t_fixed = Best(reps, [&] {
-    const auto ctx = DofContext::APriori(v, pool, model::Dof::kSurge, PlannerOptions{}, nullptr);
+    const auto ctx =
+        DofPlanningProblem::APriori(v, pool, model::Dof::kSurge, PlannerOptions{}, nullptr);
     sine = DesignSine(*ctx, fixed, {}, "surge-sine");
   });
   Print("robust sine design, surge, 20 m, 52 s (the seed's duration)", t_fixed, 200);
 
   const Timing t_yaw = Best(reps, [&] {
-    const auto ctx = DofContext::APriori(v, pool, model::Dof::kYaw, PlannerOptions{}, nullptr);
+    const auto ctx =
+        DofPlanningProblem::APriori(v, pool, model::Dof::kYaw, PlannerOptions{}, nullptr);
     sine = DesignSine(*ctx, SineDesignOptions{}, {}, "yaw-sine");
   });
   Print("robust sine design, yaw, 120 s at 10 Hz", t_yaw, 200);
@@ -108,7 +111,7 @@ int main(int argc, char** argv) {
       po.solver.max_global_evaluations = g;
       po.solver.max_local_evaluations = l;
       const Timing t = Best(1, [&] {
-        const auto ctx = DofContext::APriori(v, pool, model::Dof::kSurge, po, nullptr);
+        const auto ctx = DofPlanningProblem::APriori(v, pool, model::Dof::kSurge, po, nullptr);
         sine = DesignSine(*ctx, SineDesignOptions{}, {}, "surge-sine");
       });
       std::printf("  DIRECT-L %4d + COBYLA 2x%4d: %.5f  (%d evaluations, %.0f ms cpu)\n", g, l,

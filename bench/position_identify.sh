@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue #16's comparison on one machine, in one run: `uuvplan identify` against the plain
+# The long-log comparison on one machine, in one run: `uuvplan identify` against the plain
 # NumPy/SciPy script (bench/plain_identify.py) on the 1,000,000-row position-only surge trial
 # (bench/position_identify_bench --write, seeded), alternating, best of N runs of each (the
 # machine is shared: the best run is the least disturbed one). Prints wall and CPU seconds and

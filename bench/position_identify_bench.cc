@@ -1,4 +1,4 @@
-// Benchmark of `identify` on a long position-only surge trial (issue #16): the case a new user
+// Benchmark of `identify` on a long position-only surge trial: the case a new user
 // tried, a sonar-like position sensor alone at 100 Hz (σ 1 cm), columns t, force_surge,
 // pos_surge, truth m 900 kg, k 47 N·s/m, kq 306 N·s²/m², bias −2 N
 // (bench/cases/position_surge_truth.yaml), run on uuvplan's virtual pool with seed 16.
@@ -67,8 +67,8 @@ model::TrialDesign LegDesign(double duration) {
 
 /// Writes the campaign of a trial of `rows` samples into `dir` (must be new or empty).
 std::string WriteCase(long rows, const fs::path& dir) {
-  const model::Truth truth = io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) +
-                                           "/bench/cases/position_surge_truth.yaml");
+  const model::Truth truth =
+      io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/bench/cases/position_surge_truth.yaml");
   model::VirtualCampaignOptions vo;
   vo.seed = 16;
   // rows samples at 100 Hz span (rows − 1)/100 s; the last sample lands on the end.
@@ -83,9 +83,9 @@ struct Timed {
 };
 
 Timed TimeSize(long rows, int repeat) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("uuvplan_position_bench_" + std::to_string(::getpid()) + "_" +
-                        std::to_string(rows));
+  const fs::path dir =
+      fs::temp_directory_path() /
+      ("uuvplan_position_bench_" + std::to_string(::getpid()) + "_" + std::to_string(rows));
   fs::remove_all(dir);
   const std::string campaign = WriteCase(rows, dir);
   Timed t;
@@ -110,7 +110,8 @@ Timed TimeSize(long rows, int repeat) {
 bool ReportEstimates(const Timed& t) {
   const ident::DofIdentification& y = t.result.dofs.at(0);
   bool restarted = false;
-  for (const auto& [stage, sec] : y.timing) std::printf("  stage %-22s %.3f s\n", stage.c_str(), sec);
+  for (const auto& [stage, sec] : y.timing)
+    std::printf("  stage %-22s %.3f s\n", stage.c_str(), sec);
   for (const auto& n : y.notes) {
     std::printf("  note: %s\n", n.c_str());
     restarted = restarted || n.find("restarted") != std::string::npos;
@@ -141,7 +142,8 @@ int Run(std::vector<long> sizes, int repeat) {
       std::snprintf(exponent, sizeof exponent, "%.2f",
                     std::log(t.best_s / p.best_s) / std::log(double(t.rows) / double(p.rows)));
     }
-    std::printf("  %10ld %10.3f %14.3f %10s\n", t.rows, t.best_s, 1e6 * t.best_s / t.rows, exponent);
+    std::printf("  %10ld %10.3f %14.3f %10s\n", t.rows, t.best_s, 1e6 * t.best_s / t.rows,
+                exponent);
     std::fflush(stdout);
   }
   if (timed.size() > 1) {

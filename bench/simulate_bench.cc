@@ -1,5 +1,5 @@
 // Benchmark: simulate a 10-minute trial at 100 Hz with every force term and effect on
-// (issue #2 target: under 5 ms), and the same with forward sensitivities.
+// (target: under 5 ms), and the same with forward sensitivities.
 // The target case is the virtual pool's: commands held at the controller rate (20 Hz) and the
 // coupling's yaw rate held from its 10 Hz log, as a real trial is run and logged. A continuous
 // sine input and yaw rate (libm sin at every RK4 stage) is reported beside it.
@@ -64,21 +64,41 @@ int main(int argc, char** argv) {
   ModelStructure s;
   s.dof = Dof::kSurge;
   // Every effect of the table on (docs/performance.md).
-  s.parameters = {"k",          "k_neg",        "kq",          "kq_neg",      "bias",
-                  "bias_step",  "eta.front.neg", "eta.rear.pos", "lag",        "deadzone",
-                  "advance_loss", "coupling.vr", "coupling.rr", "sensor_delay", "drift",
+  s.parameters = {"k",
+                  "k_neg",
+                  "kq",
+                  "kq_neg",
+                  "bias",
+                  "bias_step",
+                  "eta.front.neg",
+                  "eta.rear.pos",
+                  "lag",
+                  "deadzone",
+                  "advance_loss",
+                  "coupling.vr",
+                  "coupling.rr",
+                  "sensor_delay",
+                  "drift",
                   "thrust_exponent"};
   s.settings["thrust_reference"] = 60.0;
   const DofModel model(v, s);
-  const std::map<std::string, double> named = {{"m", 890},        {"k", 46.9},
-                                              {"k_neg", 57.9},  {"kq", 306.2},
-                                              {"kq_neg", 331.4}, {"bias", 1.5},
-                                              {"bias_step", 0.7}, {"eta.front.neg", 0.89},
-                                              {"eta.rear.pos", 0.73}, {"advance_loss", 2.0},
-                                              {"coupling.vr", 100.0}, {"coupling.rr", 30.0},
-                                              {"drift", -2e-4}, {"lag", 0.4},
-                                              {"deadzone", 3.0}, {"sensor_delay", 0.3},
-                                              {"thrust_exponent", -0.3}};
+  const std::map<std::string, double> named = {{"m", 890},
+                                               {"k", 46.9},
+                                               {"k_neg", 57.9},
+                                               {"kq", 306.2},
+                                               {"kq_neg", 331.4},
+                                               {"bias", 1.5},
+                                               {"bias_step", 0.7},
+                                               {"eta.front.neg", 0.89},
+                                               {"eta.rear.pos", 0.73},
+                                               {"advance_loss", 2.0},
+                                               {"coupling.vr", 100.0},
+                                               {"coupling.rr", 30.0},
+                                               {"drift", -2e-4},
+                                               {"lag", 0.4},
+                                               {"deadzone", 3.0},
+                                               {"sensor_delay", 0.3},
+                                               {"thrust_exponent", -0.3}};
   const Eigen::VectorXd theta = model.Theta(named);
   const double duration = 600.0, rate = 100.0;
   const auto sine = MakeSineExcitation(35.0, 25.0, 2 * M_PI / 26, 0, duration);
@@ -98,7 +118,8 @@ int main(int argc, char** argv) {
   o.step_s = 1.0 / rate;
 
   double sink = 0.0;
-  const double ms = BestMs(reps, [&] { sink += SimulateMeasured(model, theta, c, times, o).x(100, 1); });
+  const double ms =
+      BestMs(reps, [&] { sink += SimulateMeasured(model, theta, c, times, o).x(100, 1); });
   if (state_only) {
     std::printf("simulate: held 20 Hz commands, state only  best of %d: %.2f ms\n", reps, ms);
     return sink == 12345.0;
@@ -106,7 +127,7 @@ int main(int argc, char** argv) {
   const double ms_sine =
       BestMs(reps, [&] { sink += SimulateMeasured(model, theta, c_sine, times, o).x(100, 1); });
   // The thrust map's shape costs an exp and a log per input sample: once per breakpoint of a
-  // held input, twice per step of a continuous one. Issue #2's terms are all but that one.
+  // held input, twice per step of a continuous one. The standard terms are all but that one.
   ModelStructure s2 = s;
   s2.Remove("thrust_exponent");
   const DofModel model2(v, s2);
@@ -114,10 +135,12 @@ int main(int argc, char** argv) {
   const double ms_sine2 =
       BestMs(reps, [&] { sink += SimulateMeasured(model2, theta2, c_sine, times, o).x(100, 1); });
   o.sensitivities = true;
-  const double ms_s =
-      BestMs(std::max(1, reps / 4), [&] { sink += SimulateMeasured(model, theta, c, times, o).x(100, 1); });
-  std::printf("simulate: 600 s at 100 Hz (60001 outputs, RK4 step 0.01 s), %d params, all terms on\n",
-              model.num_parameters());
+  const double ms_s = BestMs(std::max(1, reps / 4), [&] {
+    sink += SimulateMeasured(model, theta, c, times, o).x(100, 1);
+  });
+  std::printf(
+      "simulate: 600 s at 100 Hz (60001 outputs, RK4 step 0.01 s), %d params, all terms on\n",
+      model.num_parameters());
   std::printf("simulate: held 20 Hz commands, state only  best of %d: %.2f ms (target < 5 ms)\n",
               reps, ms);
   std::printf("simulate: continuous sine, state only      best of %d: %.2f ms\n", reps, ms_sine);

@@ -42,7 +42,7 @@ void RefuseCountsOutOfRange(CLI::App& app) {
 // Blocks of 128 KiB and more (a long log's vectors) mapped on their own and given back to the
 // system when freed. By default glibc raises this threshold to the size of the largest such
 // block freed (up to 32 MiB); the vectors that follow then come from the heap, and the holes
-// they leave stay resident: 3–4 MB more peak RSS on issue #16's 1,000,000-row log
+// they leave stay resident: 3–4 MB more peak RSS on a 1,000,000-row log
 // (docs/performance.md, "Memory, round 10").
 void ReturnLargeBlocksWhenFreed() { mallopt(M_MMAP_THRESHOLD, 128 * 1024); }
 
@@ -59,8 +59,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("uuvplan ") + UUVPLAN_VERSION,
                        "the version (CMake project()) and exit");
   auto& commands = Registry();
-  std::sort(commands.begin(), commands.end(),
-            [](const Command& a, const Command& b) { return a.order < b.order; });
+  std::sort(commands.begin(), commands.end(), HelpOrder);
   app.fallthrough();  // a flag of uuvplan itself may follow the command's name
   std::function<int()> run;
   for (auto& c : commands) c.add(app, &run);

@@ -35,7 +35,7 @@ mkdir -p "$build/findings"
 status=0
 for t in "${targets[@]}"; do
   echo "fuzz_$t: ${seconds} s on $(ls "$build/corpus/$t" | wc -l) inputs"
-  # -rss_limit_mb: issue #15's 2 GB; -timeout: one input may take 10 s at most.
+  # -rss_limit_mb: 2 GB, the work limit; -timeout: one input may take 10 s at most.
   if ! (cd "$build" && nice "./fuzz/fuzz_$t" "corpus/$t" -max_total_time="$seconds" \
       -rss_limit_mb=2048 -timeout=10 -max_len=65536 -print_final_stats=1 \
       -artifact_prefix="findings/$t-" >"fuzz-$t.log" 2>&1); then

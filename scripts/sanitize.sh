@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The sanitizer stage of CI (issue #15): builds uuvplan and the test programs with clang 14,
+# The sanitizer stage of CI: builds uuvplan and the test programs with clang 14,
 # AddressSanitizer and UBSan (float-cast-overflow too; any finding aborts) in build-fuzz/ (the
 # fuzz targets share it), runs the io-layer tests there, then FUZZ_SECONDS (default 60; CI's
 # test.sh gives 20) of each fuzz target (scripts/fuzz.sh). Which tests, and why not all:

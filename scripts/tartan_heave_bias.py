@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The figures of docs/validation.md, "tartan heave bias" (issue #14): why campaign.yaml's heave
+"""The figures of docs/validation.md, "tartan heave bias": why campaign.yaml's heave
 rows do not give the force that holds depth to ±1 N.
 
     python3 scripts/tartan_heave_bias.py [DATA_DIR]    # default ../shared/data/tartan-pool-2022

@@ -11,23 +11,24 @@
 #include <vector>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/cli/text_table.h"
-#include "uuvplan/cli/trial_text.h"
-#include "uuvplan/model/input_error.h"
+#include "uuvplan/cli/exit_status.h"
+#include "uuvplan/io/check_pool_json.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
-#include "uuvplan/planner/pool/pool_check.h"
-#include "uuvplan/planner/schedule.h"
-#include "uuvplan/planner/pool/pool_verdict.h"
-#include "uuvplan/planner/schedule_planner.h"
-#include "uuvplan/io/pool_verdict_json.h"
+#include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/cli/verdict_text.h"
+#include "uuvplan/planner/pool/pool_check.h"
+#include "uuvplan/planner/pool/pool_verdict.h"
+#include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/schedule_planner.h"
+#include "uuvplan/text/text_table.h"
+#include "uuvplan/text/trial_text.h"
+#include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::cli {
 namespace {
 
-struct CheckPoolCliOptions {
+struct CheckPoolFlags {
   std::string vehicle;
   std::string pool;
   std::string plan;
@@ -60,7 +61,7 @@ void CheckPlanMappings(const planner::Schedule& plan, const model::Vehicle& vehi
   }
 }
 
-TrialsToCheck ChooseTrials(const CheckPoolCliOptions& o, const model::Vehicle& vehicle,
+TrialsToCheck ChooseTrials(const CheckPoolFlags& o, const model::Vehicle& vehicle,
                            const model::Pool& pool, const planner::ScheduleOptions& so) {
   TrialsToCheck t;
   t.plan_given = !o.plan.empty();
@@ -74,10 +75,10 @@ TrialsToCheck ChooseTrials(const CheckPoolCliOptions& o, const model::Vehicle& v
 }
 
 void PrintTrialChecks(const planner::PoolCheckResult& r, std::ostream& out) {
-  TextTable table({"DOF", "trial", "fits", "travel", "|τ|min (N)"});
+  text::TextTable table({"DOF", "trial", "fits", "travel", "|τ|min (N)"});
   for (const auto& t : r.trials) {
     table.AddRow({std::string(model::DofName(t.dof)), t.id, t.check.feasible ? "yes" : "NO",
-                  TravelText(t.dof, t.check.travel[0], t.check.travel[1]),
+                  text::TravelText(t.dof, t.check.travel[0], t.check.travel[1]),
                   model::Significant(t.check.thrust_min, 3)});
   }
   table.Print(out);
@@ -90,7 +91,7 @@ void PrintAlternative(const planner::PoolCheckResult& r, std::ostream& out) {
   out << "\nBest schedule that fits this pool: " << planner::PlanStatusName(r.alternative.status)
       << ", " << r.alternative.schedule.trials.size() << " trials, pool time "
       << model::DurationText(r.alternative.schedule.pool_time) << "\n";
-  TextTable table({"DOF", "trial", "kind", "mapping", "duration"});
+  text::TextTable table({"DOF", "trial", "kind", "mapping", "duration"});
   for (const auto& t : r.alternative.schedule.trials) {
     table.AddRow({std::string(model::DofName(t.design.dof)), t.design.id,
                   std::string(model::TrialKindName(t.design.kind)), t.design.mapping,
@@ -106,44 +107,7 @@ void PrintAlternative(const planner::PoolCheckResult& r, std::ostream& out) {
   }
 }
 
-// {"feasible", "trials": [...], "required": {...}, "verdict": {...}, "fits"?: {...}}.
-nlohmann::json CheckPoolJson(const planner::PoolCheckResult& r,
-                             const planner::PoolVerdict& verdict, const model::Pool& pool) {
-  nlohmann::json trials = nlohmann::json::array();
-  for (const auto& t : r.trials) {
-    trials.push_back({{"id", t.id},
-                      {"dof", std::string(model::DofName(t.dof))},
-                      {"feasible", t.check.feasible},
-                      {"reasons", t.check.reasons},
-                      {"travel", {t.check.travel[0], t.check.travel[1]}},
-                      {"travel_unit", std::string(model::PositionUnit(t.dof))},
-                      {"thrust_min", t.check.thrust_min}});
-  }
-  nlohmann::json v = io::PoolVerdictJson(verdict, pool);
-  nlohmann::json j = {{"feasible", verdict.hosted}, {"trials", trials},
-                      {"required", v["required"]}, {"verdict", v}};
-  if (r.has_alternative) {
-    nlohmann::json alt = io::ScheduleToJson(r.alternative.schedule);
-    alt["status"] = std::string(planner::PlanStatusName(r.alternative.status));
-    nlohmann::json loss = nlohmann::json::object();
-    for (const auto& [dof, l] : r.information_loss) loss[std::string(model::DofName(dof))] = l;
-    j["fits"] = {{"schedule", alt}, {"information_loss", loss}};
-  }
-  return j;
-}
-
-// The headline in the verdict's own words (one question, one answer): a pool hosting part of
-// the a priori box is not "CANNOT".
-std::string HeadlineWord(planner::Hostability h) {
-  switch (h) {
-    case planner::Hostability::kAll: return "CAN host it";
-    case planner::Hostability::kPart: return "can host it for PART of the a priori box only";
-    case planner::Hostability::kNone: break;
-  }
-  return "CANNOT host it";
-}
-
-int RunCheckPool(const CheckPoolCliOptions& o) {
+int RunCheckPool(const CheckPoolFlags& o) {
   const model::Vehicle vehicle = io::ReadVehicle(o.vehicle);
   const model::Pool pool = io::ReadPool(o.pool);
   planner::PoolCheckOptions check = o.check;
@@ -160,15 +124,15 @@ int RunCheckPool(const CheckPoolCliOptions& o) {
   std::ostream& out = ReportStream(o.json);
   out << "Pool " << pool.name << " for " << vehicle.name << ", "
       << (o.plan.empty() ? "the planner's own schedule" : "plan " + o.plan) << ": "
-      << HeadlineWord(verdict.hostability) << "\n\n";
+      << text::VerdictAnswer(verdict.hostability) << "\n\n";
   PrintTrialChecks(r, out);
-  PrintVerdict(verdict, pool, out);
+  text::PrintVerdict(verdict, pool, out);
   if (r.has_alternative) PrintAlternative(r, out);
-  if (!o.json.empty()) WriteJson(o.json, CheckPoolJson(r, verdict, pool));
+  if (!o.json.empty()) WriteJson(o.json, io::CheckPoolJson(r, verdict, pool));
   return VerdictExit(verdict);
 }
 
-void BindCheckPool(CLI::App* sub, CheckPoolCliOptions* o) {
+void BindCheckPool(CLI::App* sub, CheckPoolFlags* o) {
   sub->add_option("VEHICLE", o->vehicle, "vehicle file (YAML)")->required();
   sub->add_option("--pool", o->pool, "pool file (YAML)")->required();
   sub->add_option("--plan", o->plan, "schedule JSON (`uuvplan schedule --json`)");
@@ -183,7 +147,7 @@ void BindCheckPool(CLI::App* sub, CheckPoolCliOptions* o) {
       ->check(TrialDuration());
 }
 
-const CommandRegistration kRegistration(MakeCommand<CheckPoolCliOptions>(
+const CommandRegistration kRegistration(MakeCommand<CheckPoolFlags>(
     "check-pool", 20,
     "Can this pool host the trials (a plan, or the planner's own schedule), and if not "
     "what would: the smallest pool and the best schedule that fits (exit 1 if not).",

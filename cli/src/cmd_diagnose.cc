@@ -1,11 +1,10 @@
-// `uuvplan diagnose CAMPAIGN [--json F] [--dof D]... [--write-vehicle OUT.yaml] [--sg-window N]`: what the standard model's simulation
-// gets wrong, the physical effect that causes it, the extended model and its gain
-// (ident/diagnosis/diagnosis.h, docs/diagnosis.md). Exit 0 (findings are results, not errors), 1 when a
-// DOF could not be diagnosed (its standard model's identification or fit failed: the report
-// says why), 2 on bad input. Progress lines on stderr once a run has taken 2 s. UUVPLAN_VERBOSE (set, any value) also prints the standard model's fit on stderr. On a
-// terminal, the summary's Brief() line follows on stderr.
+// `uuvplan diagnose CAMPAIGN [--json F] [--dof D]... [--write-vehicle OUT.yaml] [--sg-window N]`:
+// what the standard model's simulation gets wrong, the physical effect that causes it, the extended
+// model and its gain (ident/diagnosis/diagnosis.h, docs/diagnosis.md). Exit 0 (findings are
+// results, not errors), 1 when a DOF could not be diagnosed (its standard model's identification or
+// fit failed: the report says why), 2 on bad input. Progress lines on stderr once a run has taken 2
+// s. On a terminal, the summary's Brief() line follows on stderr.
 #include <chrono>
-#include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -14,19 +13,19 @@
 
 #include "uuvplan/cli/command.h"
 #include "uuvplan/cli/filter_window_flag.h"
-#include "uuvplan/model/effects.h"
-#include "uuvplan/cli/diagnosis_report.h"
-#include "uuvplan/io/diagnosis_json.h"
 #include "uuvplan/ident/diagnosis/diagnosis.h"
+#include "uuvplan/ident/score.h"
+#include "uuvplan/io/diagnosis_json.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/vehicle_yaml.h"
-#include "uuvplan/ident/score.h"
+#include "uuvplan/model/effects.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/text/diagnosis_report.h"
 
 namespace uuvplan::cli {
 namespace {
 
-struct DiagnoseCommandOptions {
+struct DiagnoseFlags {
   std::string campaign;
   std::string json;
   std::string write_vehicle;
@@ -47,8 +46,8 @@ bool WriteExtendedVehicle(const std::string& path, const std::string& campaign_p
     models[e.dof] = ident::ModelOf(e);
     const std::string problem = ident::Inadmissible(models[e.dof]);
     if (!problem.empty()) {
-      std::cerr << "uuvplan: diagnose: error: " << path << " not written: the " << model::DofName(e.dof)
-                << " model has " << problem << "\n";
+      std::cerr << "uuvplan: diagnose: error: " << path << " not written: the "
+                << model::DofName(e.dof) << " model has " << problem << "\n";
       return false;
     }
   }
@@ -56,33 +55,36 @@ bool WriteExtendedVehicle(const std::string& path, const std::string& campaign_p
     effects += (effects.empty() ? "" : ", ") + std::string(model::DofName(f.dof)) + " " + f.effect;
   }
   io::WriteVehicleYaml(path, vehicle, models,
-                       "written by `uuvplan diagnose " + campaign_path + " --write-vehicle`: the "
-                       "extended model (" + (effects.empty() ? "no effect found" : effects) +
-                       "),\nfitted by output error on the fit trials; sigma: 1σ of each "
-                       "parameter (0: held at its admissible bound).\nScore it on a campaign "
-                       "with `uuvplan score`.");
+                       "written by `uuvplan diagnose " + campaign_path +
+                           " --write-vehicle`: the "
+                           "extended model (" +
+                           (effects.empty() ? "no effect found" : effects) +
+                           "),\nfitted by output error on the fit trials; sigma: 1σ of each "
+                           "parameter (0: held at its admissible bound).\nScore it on a campaign "
+                           "with `uuvplan score`.");
   return true;
 }
 
-int RunDiagnose(const DiagnoseCommandOptions& co) {
+int RunDiagnose(const DiagnoseFlags& co) {
   CheckFilterWindow(co.diagnose.identify.data);
   const model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
   ident::DiagnoseOptions o = co.diagnose;
   o.dofs = ParseDofFlags(co.dofs);
-  o.verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
   o.progress = TerminalProgress("diagnose");
   const ident::DiagnosisResult result = ident::Diagnose(campaign, o);
-  PrintDiagnosis(result, ReportStream(co.json));
+  text::PrintDiagnosis(result, ReportStream(co.json));
   if (!co.json.empty()) WriteJson(co.json, io::DiagnosisJson(result));
   PrintBriefOnTerminal(result.Summary().Brief());
-  const bool written = co.write_vehicle.empty() ||
-                       WriteExtendedVehicle(co.write_vehicle, co.campaign, campaign.vehicle, result);
+  const bool written =
+      co.write_vehicle.empty() ||
+      WriteExtendedVehicle(co.write_vehicle, co.campaign, campaign.vehicle, result);
   // A DOF whose standard model failed is refused: a failure, as identify's (exit 1).
   return result.not_diagnosed.empty() && written ? kExitOk : kExitActionNeeded;
 }
 
-void BindDiagnose(CLI::App* sub, DiagnoseCommandOptions* o) {
-  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")->required();
+void BindDiagnose(CLI::App* sub, DiagnoseFlags* o) {
+  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")
+      ->required();
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_option("--dof", o->dofs, "diagnose only this DOF (repeatable)");
   AddAcceptUnitsFlag(sub, &o->accept_units);
@@ -98,10 +100,11 @@ void BindDiagnose(CLI::App* sub, DiagnoseCommandOptions* o) {
       ->check(CLI::NonNegativeNumber);
 }
 
-const CommandRegistration kRegistration(MakeCommand<DiagnoseCommandOptions>(
-    "diagnose", 80,
+const CommandRegistration kRegistration(MakeCommand<DiagnoseFlags>(
+    "diagnose", 82,
     "What the standard model's simulation gets wrong on measured trials, which physical "
-    "effect causes it (" + model::Effects().NameList() + "), the extended model and its gain.",
+    "effect causes it (" +
+        model::Effects().NameList() + "), the extended model and its gain.",
     BindDiagnose, RunDiagnose));
 
 }  // namespace

@@ -2,24 +2,25 @@
 // [--no-prune] [--closed-loop yes|no|auto] [--method M [--forgetting λ]] [--sg-window N]
 // [--model dof|coupled] [--accept-units]`:
 // parameter estimates with standard deviations and the fit of the identified model
-// (ident/identify.h, docs/identification.md); --method runs one of the seeds' estimators alone.
+// (ident/identify.h, docs/identification.md); --method runs one of the papers' estimators alone.
 // Exit status 0 when every DOF was identified, 1 when some DOF failed (its FAILED line says
-// why), 2 on bad input — units or signs that look wrong among it (ident/prepare/input_sanity.h) unless
+// why), 2 on bad input — units or signs that look wrong among it (ident/prepare/input_sanity.h)
+// unless
 // --accept-units. On a terminal, the summary's Brief() line follows on stderr.
 #include <string>
 #include <vector>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/cli/filter_window_flag.h"
 #include "uuvplan/cli/coupled_identify.h"
-#include "uuvplan/cli/identify_table.h"
+#include "uuvplan/cli/filter_window_flag.h"
 #include "uuvplan/cli/method_flags.h"
-#include "uuvplan/io/identify_json.h"
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/model/input_error.h"
+#include "uuvplan/io/identify_json.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/text/identify_table.h"
 
 namespace uuvplan::cli {
 namespace {
@@ -33,7 +34,7 @@ constexpr model::EnumNames<ident::ClosedLoop, 3> kClosedLoopNames{{{
     {ident::ClosedLoop::kNo, "no"},
 }}};
 
-struct IdentifyCommandOptions {
+struct IdentifyFlags {
   std::string campaign;
   std::string json;
   std::vector<std::string> dofs;
@@ -41,7 +42,7 @@ struct IdentifyCommandOptions {
   std::string closed_loop{kClosedLoopNames.Name(ident::IdentifyOptions{}.closed_loop)};
   MethodFlags method;  ///< --method, --forgetting
   bool accept_units = false;
-  std::string model_kind = "dof";  ///< --model: dof (one model per DOF) or coupled (seed 003)
+  std::string model_kind = "dof";   ///< --model: dof (one model per DOF) or coupled (ref 003)
   ident::IdentifyOptions identify;  ///< --no-refine, --no-prune bound here
 };
 
@@ -81,9 +82,9 @@ void AddSteadyWindow(const std::string& spec, const model::Campaign& c, ident::I
   o->steady_windows[index].push_back({t0, t1});
 }
 
-// `--model coupled` fits seed 003's model by its own estimator (coupled_ls.h) on every DOF
+// `--model coupled` fits ref 003's model by its own estimator (joint_ls.h) on every DOF
 // at once: the options of the per-DOF chain do not apply, and one given would be ignored.
-void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
+void RefuseChainOptionsWithCoupled(const IdentifyFlags& co) {
   const ident::IdentifyOptions chain;
   std::vector<std::string> given;
   if (!co.dofs.empty()) given.push_back("--dof");
@@ -108,7 +109,7 @@ void RefuseChainOptionsWithCoupled(const IdentifyCommandOptions& co) {
   }
 }
 
-int RunIdentify(const IdentifyCommandOptions& co) {
+int RunIdentify(const IdentifyFlags& co) {
   if (co.model_kind == "coupled") RefuseChainOptionsWithCoupled(co);
   CheckFilterWindow(co.identify.data);
   model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
@@ -126,15 +127,17 @@ int RunIdentify(const IdentifyCommandOptions& co) {
 
   std::ostream& out = ReportStream(co.json);
   out << "Identification of " << co.campaign << " (vehicle '" << campaign.vehicle.name << "', "
-      << campaign.trials.size() << " trials; method " << ident::MethodName(result.method) << ")\n\n";
-  PrintIdentifyTable(result, out);
+      << campaign.trials.size() << " trials; method " << ident::MethodName(result.method)
+      << ")\n\n";
+  text::PrintIdentifyTable(result, out);
   if (!co.json.empty()) WriteJson(co.json, io::IdentifyJson(result));
   PrintBriefOnTerminal(result.Summary().Brief());
   return result.status == ident::IdentifyStatus::kFailed ? kExitActionNeeded : kExitOk;
 }
 
-void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
-  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")->required();
+void BindIdentify(CLI::App* sub, IdentifyFlags* o) {
+  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")
+      ->required();
   AddJsonOption(sub, &o->json, "also write the result");
   sub->add_option("--dof", o->dofs,
                   "identify only this DOF (repeatable; default: every DOF with fit trials)");
@@ -168,7 +171,7 @@ void BindIdentify(CLI::App* sub, IdentifyCommandOptions* o) {
   AddThreadsOption(sub, {&o->identify.threads}, "preparing the trials and fitting the DOFs");
 }
 
-const CommandRegistration kRegistration(MakeCommand<IdentifyCommandOptions>(
+const CommandRegistration kRegistration(MakeCommand<IdentifyFlags>(
     "identify", 40,
     "Estimate every DOF's parameters (m, k, kq, bias, bias_step, eta) with standard "
     "deviations from a campaign, and score the identified model by free-run simulation "

@@ -23,7 +23,7 @@
 namespace uuvplan::cli {
 namespace {
 
-struct LogCliOptions {
+struct LogFlags {
   std::string campaign;
   std::string csv;
   std::string id;
@@ -44,7 +44,7 @@ model::TrialDesign PlannedDesign(const std::string& path, const std::string& id)
   throw model::InputError(path + ": trials", "no trial '" + id + "' (--trial)");
 }
 
-io::LoggedTrial TrialOf(const LogCliOptions& o, const model::TrialDesign* design) {
+io::LoggedTrial TrialOf(const LogFlags& o, const model::TrialDesign* design) {
   io::LoggedTrial t;
   t.id = o.id;
   t.csv = o.csv;
@@ -65,7 +65,7 @@ io::LoggedTrial TrialOf(const LogCliOptions& o, const model::TrialDesign* design
   return t;
 }
 
-// Drop-outs said when the trial is logged, not first by identify (seed 000 Fig. 14: a step
+// Drop-outs said when the trial is logged, not first by identify (ref 000 Fig. 14: a step
 // longer than 3× the median step is a gap; filters and integrals never cross one).
 void PrintGaps(const model::TrialEntry& e) {
   const std::vector<ident::Gap> gaps = ident::FindGaps(e.log.t);
@@ -74,18 +74,19 @@ void PrintGaps(const model::TrialEntry& e) {
     return a.t1 - a.t0 < b.t1 - b.t0;
   });
   std::cout << "note: " << gaps.size() << " gap(s) in the log (steps over 3× the median), the "
-            << "longest " << model::DurationText(longest->t1 - longest->t0) << " from t = "
-            << model::Significant(longest->t0, 6) << " s: identification neither filters nor "
+            << "longest " << model::DurationText(longest->t1 - longest->t0)
+            << " from t = " << model::Significant(longest->t0, 6)
+            << " s: identification neither filters nor "
             << "integrates across a gap, so the trial counts as shorter pieces\n";
 }
 
-int RunLog(const LogCliOptions& o) {
+int RunLog(const LogFlags& o) {
   std::optional<model::TrialDesign> design;
   if (!o.plan.empty()) design = PlannedDesign(o.plan, o.id);
   const io::LoggedTrial trial = TrialOf(o, design ? &*design : nullptr);
   if (design) {
-    const auto problems = planner::CompareLogWithDesign(*design, trial.dof, trial.mapping,
-                                                        io::ReadTrialLog(o.csv));
+    const auto problems =
+        planner::CompareLogWithDesign(*design, trial.dof, trial.mapping, io::ReadTrialLog(o.csv));
     if (!problems.empty()) {
       throw model::InputError(o.csv, "not the planned trial " + o.id + " of " + o.plan + ": " +
                                          model::Join(problems, "; ") +
@@ -103,7 +104,7 @@ int RunLog(const LogCliOptions& o) {
   return kExitOk;
 }
 
-void BindLog(CLI::App* sub, LogCliOptions* o) {
+void BindLog(CLI::App* sub, LogFlags* o) {
   sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml or the directory that holds it")
       ->required();
   sub->add_option("TRIAL", o->csv, "the trial's log (CSV, contract §Trial log); only read")
@@ -122,7 +123,7 @@ void BindLog(CLI::App* sub, LogCliOptions* o) {
   sub->add_option("--start", o->start, "start time on the campaign clock (s)");
 }
 
-const CommandRegistration kRegistration(MakeCommand<LogCliOptions>(
+const CommandRegistration kRegistration(MakeCommand<LogFlags>(
     "log", 44,
     "Append a trial logged at the pool to its campaign (checked against the plan with "
     "--plan), so that `next` can run between trials.",

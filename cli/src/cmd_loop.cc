@@ -15,26 +15,25 @@
 #include <vector>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/planner/pool/pool_verdict.h"
-#include "uuvplan/cli/verdict_text.h"
-#include "uuvplan/cli/identify_table.h"
-#include "uuvplan/io/identify_json.h"
-#include "uuvplan/cli/loop_report.h"
-#include "uuvplan/model/input_error.h"
+#include "uuvplan/cli/exit_status.h"
 #include "uuvplan/io/io.h"
-#include "uuvplan/io/pool_verdict_json.h"
-#include "uuvplan/io/schedule_json.h"
+#include "uuvplan/io/loop_json.h"
+#include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/loop/design_loop.h"
+#include "uuvplan/planner/pool/pool_verdict.h"
+#include "uuvplan/text/loop_text.h"
+#include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/trial_text.h"
+#include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::cli {
 namespace {
 
 using model::InputError;
-using nlohmann::json;
 
-struct LoopCliOptions {
+struct LoopFlags {
   std::string truth;
   std::string pool;
   std::vector<std::string> dofs;
@@ -43,17 +42,15 @@ struct LoopCliOptions {
   planner::LoopOptions loop;  ///< --target, --budget, --seed bound here
 };
 
-
 // "σ predicted → achieved: m 31.2 → 29.8 kg, kq 120 → 98.4 N·s²/m²".
 std::string SigmaLine(const planner::LoopIteration& it) {
   std::ostringstream s;
   s << "σ predicted → achieved:";
   const char* sep = " ";
   for (const auto& [name, pa] : it.sigma) {
-    const std::string unit = model::Unit(name, it.dof);
     s << sep << name << " " << model::Significant(pa[0], 3) << " → "
       << (std::isfinite(pa[1]) ? model::Significant(pa[1], 3) : std::string("—"))
-      << (unit == "1" ? "" : " " + unit);
+      << text::UnitSuffix(model::Unit(name, it.dof));
     sep = ", ";
   }
   return s.str();
@@ -63,13 +60,13 @@ void PrintIteration(const planner::LoopIteration& it, double target, bool verbos
                     std::ostream& out) {
   const auto& d = it.trial.design;
   out << "#" << std::left << std::setw(3) << it.index + 1 << std::setw(6) << model::DofName(d.dof)
-      << std::setw(20) << d.id << TrialLine(d) << "\n     " << it.source << "; pool time "
-      << model::DurationText(it.pool_time)
-      << (it.new_information ? "" : "; no new information") << "\n";
+      << std::setw(20) << d.id << text::TrialLine(d) << "\n     " << it.source << "; pool time "
+      << model::DurationText(it.pool_time) << (it.new_information ? "" : "; no new information")
+      << "\n";
   for (const auto& p : it.progress) {
     if (p.dof != it.dof) continue;
     out << "     ";
-    for (const auto& q : p.interest) out << " " << InterestText(p.dof, q, target);
+    for (const auto& q : p.interest) out << " " << text::InterestText(p.dof, q, target);
     out << "\n";
     for (const auto& q : p.interest) {
       if (!q.physical) out << "      ! " << q.flag << "\n";
@@ -83,36 +80,6 @@ void PrintIteration(const planner::LoopIteration& it, double target, bool verbos
   out.flush();
 }
 
-json SigmaJson(const planner::LoopIteration& it) {
-  json j = json::object();
-  for (const auto& [name, pa] : it.sigma) {
-    j[name] = {{"predicted", io::JsonNumber(pa[0])}, {"achieved", io::JsonNumber(pa[1])},
-               {"unit", model::Unit(name, it.dof)}};
-  }
-  return j;
-}
-
-json IterationJson(const planner::LoopIteration& it) {
-  json params = json::object();
-  for (const auto& [dof, estimates] : it.params) {
-    json p = json::object();
-    for (const auto& e : estimates) p[e.name] = {{"value", io::JsonNumber(e.value)}, {"sigma", io::JsonNumber(e.sigma)}};
-    params[std::string(model::DofName(dof))] = p;
-  }
-  return {{"trial", io::TrialToJson(it.trial)},
-          {"params", params},
-          {"dof", std::string(model::DofName(it.dof))},
-          {"source", it.source},
-          {"start", it.start},
-          {"pool_time", it.pool_time},
-          {"predicted", PredictedJson(it.dof, it.predicted)},
-          {"sigma", SigmaJson(it)},
-          {"candidates", CandidatesJson(it.candidates)},
-          {"new_information", it.new_information},
-          {"progress", ProgressJson(it.progress)},
-          {"notes", it.notes}};
-}
-
 // Before any file is read: a budget the loop can spend (--target is checked by its option).
 void CheckLoopFlags(const planner::LoopOptions& lo) {
   if (lo.budget < 1) {
@@ -122,7 +89,7 @@ void CheckLoopFlags(const planner::LoopOptions& lo) {
 }
 
 // The DOFs of --dof, each one the truth has the parameters to simulate.
-std::vector<model::Dof> SimulableDofs(const LoopCliOptions& o, const model::Truth& truth) {
+std::vector<model::Dof> SimulableDofs(const LoopFlags& o, const model::Truth& truth) {
   const std::vector<model::Dof> dofs = ParseDofFlags(o.dofs);
   for (const model::Dof dof : dofs) {
     const std::string n(model::DofName(dof));
@@ -135,10 +102,11 @@ std::vector<model::Dof> SimulableDofs(const LoopCliOptions& o, const model::Trut
 }
 
 void PrintLoopSummary(const planner::LoopResult& r, const planner::LoopOptions& lo,
-                      const model::Truth& truth, std::ostream& out) {
+                      const model::Truth& truth, const std::string& message, std::ostream& out) {
   out << "\n"
-      << (r.converged ? "Converged" : "NOT converged (" + std::string(planner::LoopStatusName(r.status)) + ")")
-      << " after " << r.iterations.size() << " trial(s): " << r.message << "\n"
+      << (r.converged ? "Converged"
+                      : "NOT converged (" + std::string(planner::LoopStatusName(r.status)) + ")")
+      << " after " << r.iterations.size() << " trial(s): " << message << "\n"
       << "Pool time: " << model::DurationText(r.pool_time) << " ("
       << model::DurationText(lo.step.schedule.planner.pause_s)
       << " pauses between trials included)";
@@ -147,29 +115,10 @@ void PrintLoopSummary(const planner::LoopResult& r, const planner::LoopOptions& 
   }
   out << "\nassumption: " << planner::kPredictedSigmaAssumption;
   out << "\n\nFinal estimates against the truth:\n";
-  PrintProgress(r.progress, lo.step.target_percent, out, &truth);
+  text::PrintProgress(r.progress, lo.step.target_percent, out, &truth);
 }
 
-json LoopJson(const planner::LoopResult& r, const planner::LoopOptions& lo) {
-  json iterations = json::array();
-  for (const auto& it : r.iterations) iterations.push_back(IterationJson(it));
-  json dof_time = json::object();
-  for (const auto& [dof, t] : r.dof_pool_time) dof_time[std::string(model::DofName(dof))] = t;
-  return {{"iterations", iterations},
-          {"converged", r.converged},
-          {"pool_time", r.pool_time},
-          {"status", std::string(planner::LoopStatusName(r.status))},
-          {"exit_status", ExitStatus(r.status)},
-          {"message", r.message},
-          {"target", lo.step.target_percent},
-          {"budget", lo.budget},
-          {"seed", lo.seed},
-          {"dof_pool_time", dof_time},
-          {"progress", ProgressJson(r.progress)},
-          {"estimates", io::IdentifyJson(r.estimates)}};
-}
-
-int RunLoopCommand(const LoopCliOptions& o) {
+int RunLoopCommand(const LoopFlags& o) {
   CheckLoopFlags(o.loop);
   const model::Truth truth = io::ReadTruth(o.truth);
   const model::Pool pool = io::ReadPool(o.pool);
@@ -182,8 +131,8 @@ int RunLoopCommand(const LoopCliOptions& o) {
       << " trials, seed " << lo.seed << ")\n"
       << "Parameters of interest: m; kq where significant, else k; every η "
          "(* = above the target)\n\n";
-  // Before any trial: the pool verdict (planner/pool/pool_verdict.h) on the loop's DOFs; a pool that
-  // hosts them for no vehicle of the a priori box is refused with schedule's sentence and exit
+  // Before any trial: the pool verdict (planner/pool/pool_verdict.h) on the loop's DOFs; a pool
+  // that hosts them for no vehicle of the a priori box is refused with schedule's sentence and exit
   // status; one that hosts them for part of the box is run, and the loop's end read against it.
   planner::ScheduleOptions so = lo.step.ScheduleAtTarget();
   so.dofs = lo.step.dofs;
@@ -191,37 +140,28 @@ int RunLoopCommand(const LoopCliOptions& o) {
     for (const auto& [dof, params] : truth.dofs) so.dofs.push_back(dof);
   }
   const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
-  if (!verdict.hosted) PrintVerdict(verdict, pool, out);
+  if (!verdict.hosted) text::PrintVerdict(verdict, pool, out);
   if (!planner::LoopMayRun(verdict)) {
     if (!o.json.empty()) {
-      WriteJson(o.json, {{"iterations", json::array()},
-                         {"converged", false},
-                         {"status", std::string(planner::LoopStatusName(
-                                        planner::LoopStatus::kInfeasible))},
-                         {"exit_status", VerdictExit(verdict)},
-                         {"message", verdict.sentence},
-                         {"verdict", io::PoolVerdictJson(verdict, pool)}});
+      WriteJson(o.json, io::RefusedLoopJson(verdict, pool, VerdictExit(verdict)));
     }
     return VerdictExit(verdict);
   }
   if (!verdict.hosted) out << "\n";
   const auto progress = TerminalProgress("loop");
-  planner::LoopResult r =
-      planner::RunLoop(truth, pool, lo, [&](const planner::LoopIteration& it) {
-        PrintIteration(it, target, o.verbose, out);
-        progress("trial " + std::to_string(it.index + 1) + " " + it.trial.design.id + " done");
-      });
+  planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const planner::LoopIteration& it) {
+    PrintIteration(it, target, o.verbose, out);
+    progress("trial " + std::to_string(it.index + 1) + " " + it.trial.design.id + " done");
+  });
   planner::ReadLoopEnd(verdict, &r);
-  PrintLoopSummary(r, lo, truth, out);
+  PrintLoopSummary(r, lo, truth, text::LoopEndMessage(r, verdict, pool), out);
   if (!o.json.empty()) {
-    json j = LoopJson(r, lo);
-    j["verdict"] = io::PoolVerdictJson(verdict, pool);
-    WriteJson(o.json, j);
+    WriteJson(o.json, io::LoopResultJson(r, lo, verdict, pool, ExitStatus(r.status)));
   }
   return ExitStatus(r.status);
 }
 
-void BindLoop(CLI::App* sub, LoopCliOptions* o) {
+void BindLoop(CLI::App* sub, LoopFlags* o) {
   sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")->required();
   sub->add_option("--pool", o->pool, "pool.yaml")->required();
   AddTargetOption(sub, &o->loop.step.target_percent);
@@ -238,7 +178,7 @@ void BindLoop(CLI::App* sub, LoopCliOptions* o) {
                    "planning the DOFs' candidate trials and each iteration's identification");
 }
 
-const CommandRegistration kRegistration(MakeCommand<LoopCliOptions>(
+const CommandRegistration kRegistration(MakeCommand<LoopFlags>(
     "loop", 46,
     "Design → run (virtual) → identify → re-plan until every parameter of interest's "
     "percentile error is below the target, or the trial budget is spent.",

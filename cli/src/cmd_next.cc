@@ -18,25 +18,24 @@
 #include <vector>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/cli/identify_table.h"
-#include "uuvplan/cli/text_table.h"
-#include "uuvplan/cli/trial_text.h"
-#include "uuvplan/io/identify_json.h"
-#include "uuvplan/cli/loop_report.h"
-#include "uuvplan/model/input_error.h"
+#include "uuvplan/cli/exit_status.h"
 #include "uuvplan/io/io.h"
-#include "uuvplan/io/schedule_json.h"
-#include "uuvplan/io/pool_verdict_json.h"
+#include "uuvplan/io/next_json.h"
+#include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/loop/design_loop.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
-#include "uuvplan/cli/verdict_text.h"
+#include "uuvplan/text/identify_table.h"
+#include "uuvplan/text/loop_text.h"
+#include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/trial_text.h"
+#include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::cli {
 namespace {
 
-struct NextCliOptions {
+struct NextFlags {
   std::string campaign;
   std::string pool;
   std::vector<std::string> dofs;
@@ -49,13 +48,13 @@ struct NextCliOptions {
 void PrintNextTrial(const planner::NextStepResult& r, std::ostream& out) {
   const auto& d = r.trial.design;
   out << "Next: " << d.id << " (" << model::DofName(d.dof) << ", " << r.source << ")\n  "
-      << TrialLine(d) << "\n  travel " << TravelText(d.dof, r.trial.travel[0], r.trial.travel[1])
-      << ", smallest thrust " << model::Significant(r.trial.thrust_min, 3) << " N\n  "
-      << r.message << "\n";
+      << text::TrialLine(d) << "\n  travel "
+      << text::TravelText(d.dof, r.trial.travel[0], r.trial.travel[1]) << ", smallest thrust "
+      << model::Significant(r.trial.thrust_min, 3) << " N\n  " << r.message << "\n";
   if (!r.predicted.sigma.empty()) {
     out << "  predicted σ after it:";
     for (const auto& [name, s] : r.predicted.sigma) {
-      out << "  " << name << " " << Quantity(s, model::Unit(name, d.dof));
+      out << "  " << name << " " << text::Quantity(s, model::Unit(name, d.dof));
     }
     out << "\n  assumption: " << planner::kPredictedSigmaAssumption << "\n";
   }
@@ -77,16 +76,16 @@ std::string NoBottleneck(const std::vector<planner::DofProgress>& progress, mode
 }
 
 void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& campaign,
-                   const model::Pool& pool, const NextCliOptions& o, std::ostream& out) {
+                   const model::Pool& pool, const NextFlags& o, std::ostream& out) {
   const double target = o.design.target_percent;
   out << "Next trial for " << campaign.vehicle.name << " in pool " << pool.name << " after "
       << campaign.trials.size() << " trial(s) of " << o.campaign << "\n\n";
   if (!r.estimates.dofs.empty()) {
-    PrintIdentifyTable(r.estimates, out);
+    text::PrintIdentifyTable(r.estimates, out);
     out << "\n";
   }
   out << "Parameters of interest (m; kq where significant, else k; every η):\n";
-  PrintProgress(r.progress, target, out);
+  text::PrintProgress(r.progress, target, out);
   out << "\n";
   switch (r.status) {
     case planner::NextStatus::kTrial:
@@ -113,8 +112,9 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
     }
     const std::string unit = model::Unit(c.parameter, c.dof);
     out << "Candidate " << c.trial << " (" << model::DofName(c.dof) << "): σ(" << c.parameter
-        << ") " << (std::isinf(c.sigma_now) ? "not determined yet" : Quantity(c.sigma_now, unit))
-        << " → " << Quantity(c.sigma_after, unit)
+        << ") "
+        << (std::isinf(c.sigma_now) ? "not determined yet" : text::Quantity(c.sigma_now, unit))
+        << " → " << text::Quantity(c.sigma_after, unit)
         << (c.first_estimate ? ": this trial determines it (the next is planned from its estimate)"
                              : ", about " + model::Significant(c.trials_to_target, 3) +
                                    " such trials to the target")
@@ -126,26 +126,7 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
   }
 }
 
-// {"estimates", "trial" (null unless planned), "predicted", "status", "message", "source",
-//  "target", "progress", "notes"}.
-nlohmann::json NextStepJson(const planner::NextStepResult& r, double target) {
-  const bool planned = r.status == planner::NextStatus::kTrial;
-  nlohmann::json j;
-  j["estimates"] = io::IdentifyJson(r.estimates);
-  j["trial"] = planned ? io::TrialToJson(r.trial) : nlohmann::json(nullptr);
-  j["predicted"] = planned ? PredictedJson(r.dof, r.predicted) : nlohmann::json::object();
-  j["status"] = std::string(planner::NextStatusName(r.status));
-  j["message"] = r.message;
-  j["source"] = r.source;
-  j["target"] = target;
-  j["progress"] = ProgressJson(r.progress);
-  j["candidates"] = CandidatesJson(r.candidates);
-  j["exit_status"] = ExitStatus(r.status);
-  j["notes"] = r.notes;
-  return j;
-}
-
-int RunNext(const NextCliOptions& o) {
+int RunNext(const NextFlags& o) {
   const model::Campaign campaign = ReadCampaignForIdentification(o.campaign, o.accept_units);
   const model::Pool pool = io::ReadPool(o.pool);
   planner::DesignLoopOptions options = o.design;
@@ -165,25 +146,19 @@ int RunNext(const NextCliOptions& o) {
   if (pool_refuses) exit_status = VerdictExit(verdict);
   std::ostream& out = ReportStream(o.json);
   PrintNextStep(r, campaign, pool, o, out);
-  PrintVerdict(verdict, pool, out);
+  text::PrintVerdict(verdict, pool, out);
   if (!o.json.empty()) {
-    nlohmann::json j = NextStepJson(r, o.design.target_percent);
-    j["verdict"] = io::PoolVerdictJson(verdict, pool);
-    j["exit_status"] = exit_status;
-    // The pool's answer is the status a script reads (as `loop`'s): the best next trial, if
-    // any, is still given for reference.
-    if (pool_refuses && exit_status != 0) {
-      j["status"] = std::string(planner::NextStatusName(planner::NextStatus::kInfeasible));
-      const bool stuck = r.status == planner::NextStatus::kStuck && !r.message.empty();
-      j["message"] = verdict.sentence + (stuck ? "; " + r.message : std::string());
-    }
-    WriteJson(o.json, j);
+    // The pool's answer is the status a script reads (as `loop`'s).
+    WriteJson(o.json, io::NextStepJson(r, o.design.target_percent, verdict, pool, exit_status,
+                                       pool_refuses && exit_status != 0));
   }
   return exit_status;
 }
 
-void BindNext(CLI::App* sub, NextCliOptions* o) {
-  sub->add_option("CAMPAIGN", o->campaign, "campaign.yaml of the trials run so far, or its directory")->required();
+void BindNext(CLI::App* sub, NextFlags* o) {
+  sub->add_option("CAMPAIGN", o->campaign,
+                  "campaign.yaml of the trials run so far, or its directory")
+      ->required();
   sub->add_option("--pool", o->pool, "pool.yaml of the pool of the next trial")->required();
   sub->add_option("--dof", o->dofs,
                   "DOF to drive to the target (repeatable; default: the DOFs the campaign "
@@ -195,7 +170,7 @@ void BindNext(CLI::App* sub, NextCliOptions* o) {
                    "identifying (trials and DOFs) and planning the DOFs' candidate trials");
 }
 
-const CommandRegistration kRegistration(MakeCommand<NextCliOptions>(
+const CommandRegistration kRegistration(MakeCommand<NextFlags>(
     "next", 45,
     "Identify from the trials so far, then plan the single most informative next trial "
     "(sequential design: box = estimates ± 2σ, prior information = covariance⁻¹).",

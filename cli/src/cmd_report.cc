@@ -1,9 +1,10 @@
 // `uuvplan report INPUT -o DIR [--vehicle V] [--pool P] [--loop LOOP.json] [--no-diagnosis
-// [--method M [--forgetting λ]]] [--sg-window N] [--accept-units]`: one self-contained HTML file (figures
-// embedded, no network) and the figures as PNG and SVG files (planner/report, docs/report.md).
-// INPUT is a schedule (`schedule --json`, with --vehicle and --pool), a loop's JSON (`loop
+// [--method M [--forgetting λ]]] [--sg-window N] [--accept-units]`: one self-contained HTML file
+// (figures embedded, no network) and the figures as PNG and SVG files (planner/report,
+// docs/report.md). INPUT is a schedule (`schedule --json`, with --vehicle and --pool), a loop's
+// JSON (`loop
 // --json`), or a campaign (identified and diagnosed here; with --method rls also the RLS
-// convergence, seed 004 Fig. 11). DIR is written whole or not at all. Exit status: 0 written;
+// convergence, ref 004 Fig. 11). DIR is written whole or not at all. Exit status: 0 written;
 // 1 written, but a DOF could not be identified or diagnosed, or the pool cannot host a
 // schedule's DOF, as `identify`, `diagnose` or `schedule` would say; 2 bad input.
 #include <filesystem>
@@ -25,20 +26,21 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
 #include "uuvplan/report/report.h"
+#include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::cli {
 namespace {
 
 using model::InputError;
 
-struct ReportCommandOptions {
+struct ReportFlags {
   std::string input;
   std::string out;
   std::string vehicle;
   std::string pool;
   std::string loop;
   bool no_diagnosis = false;
-  MethodFlags method;  ///< --method, --forgetting (with --no-diagnosis)
+  MethodFlags method;            ///< --method, --forgetting (with --no-diagnosis)
   ident::TrialDataOptions data;  ///< --sg-window (a campaign)
   bool accept_units = false;
 };
@@ -51,7 +53,7 @@ bool IsJsonFile(const std::string& path) {
          std::filesystem::is_regular_file(path);
 }
 
-void AddVehicleAndPool(const ReportCommandOptions& o, report::ReportInputs* in) {
+void AddVehicleAndPool(const ReportFlags& o, report::ReportInputs* in) {
   if (!o.vehicle.empty()) {
     in->vehicle = io::ReadVehicle(o.vehicle);
     in->vehicle_source = o.vehicle;
@@ -62,7 +64,7 @@ void AddVehicleAndPool(const ReportCommandOptions& o, report::ReportInputs* in) 
   }
 }
 
-void AddSchedule(const ReportCommandOptions& o, report::ReportInputs* in) {
+void AddSchedule(const ReportFlags& o, report::ReportInputs* in) {
   if (o.vehicle.empty() || o.pool.empty()) {
     throw InputError(o.input,
                      "a schedule names neither its vehicle nor its pool: expected "
@@ -81,10 +83,11 @@ void AddSchedule(const ReportCommandOptions& o, report::ReportInputs* in) {
   planner::ScheduleOptions so;
   so.dofs = io::ScheduleDofs(o.input);
   const planner::PoolVerdict v = planner::JudgePool(*in->vehicle, *in->pool, so, &*in->schedule);
-  in->verdict = {v.hosted, planner::VerdictLines(v, *in->pool),
+  in->verdict = {v.hosted, text::VerdictLines(v, *in->pool),
                  "judged here as `check-pool VEHICLE --pool POOL --plan SCHEDULE --dof <its DOFs>` "
                  "would, with the default target and longest trial: the file holds no verdict "
-                 "for pool '" + in->pool->name + "'"};
+                 "for pool '" +
+                     in->pool->name + "'"};
 }
 
 // The free runs of the standard and the extended model of each diagnosed DOF, on the trials
@@ -111,7 +114,7 @@ void AddBeforeAfter(const model::Campaign& campaign, const ident::TrialDataOptio
   }
 }
 
-void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
+void AddCampaign(const ReportFlags& o, report::ReportInputs* in) {
   const model::Campaign campaign = ReadCampaignForIdentification(o.input, o.accept_units);
   in->title = "Campaign report: " + campaign.vehicle.name;
   if (!in->vehicle) in->vehicle = campaign.vehicle, in->vehicle_source = campaign.path;
@@ -123,7 +126,8 @@ void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
   if (identify.method != ident::Method::kChain && !o.no_diagnosis) {
     throw InputError("--method " + o.method.method,
                      "the diagnosis identifies with the default chain; give --no-diagnosis to "
-                     "report the estimates of method " + o.method.method);
+                     "report the estimates of method " +
+                         o.method.method);
   }
   // The estimates are `identify`'s (one campaign, one answer); the diagnosis's standard model
   // (every η = 1: the contract's baseline) stays in its own section.
@@ -135,15 +139,16 @@ void AddCampaign(const ReportCommandOptions& o, report::ReportInputs* in) {
   AddBeforeAfter(campaign, identify.data, in);
 }
 
-int RunReport(const ReportCommandOptions& o) {
+int RunReport(const ReportFlags& o) {
   CheckFilterWindow(o.data);
   io::CheckNewDirectory(o.out, "-o");
   report::ReportInputs in;
   in.source = o.input;
   AddVehicleAndPool(o, &in);
   if (IsJsonFile(o.input) && o.data.sg_window > 0) {
-    throw InputError("--sg-window", "the velocity filter of a campaign's trials: a schedule or "
-                                    "a loop's JSON has no trials to filter; drop it");
+    throw InputError("--sg-window",
+                     "the velocity filter of a campaign's trials: a schedule or "
+                     "a loop's JSON has no trials to filter; drop it");
   }
   if (IsJsonFile(o.input) && io::IsLoopJson(o.input)) {
     in.title = "Loop report";
@@ -164,12 +169,11 @@ int RunReport(const ReportCommandOptions& o) {
   // diagnose's (a DOF it could not diagnose), the schedule's (a DOF the pool cannot host).
   const bool failed =
       (in.identification && in.identification->status == ident::IdentifyStatus::kFailed) ||
-      (in.diagnosis && !in.diagnosis->not_diagnosed.empty()) ||
-      (in.verdict && !in.verdict->hosted);
+      (in.diagnosis && !in.diagnosis->not_diagnosed.empty()) || (in.verdict && !in.verdict->hosted);
   return failed ? kExitActionNeeded : kExitOk;
 }
 
-void BindReport(CLI::App* sub, ReportCommandOptions* o) {
+void BindReport(CLI::App* sub, ReportFlags* o) {
   sub->add_option("INPUT", o->input,
                   "a schedule (schedule --json), a loop's JSON (loop --json), or a campaign "
                   "(campaign.yaml or its directory)")
@@ -185,7 +189,7 @@ void BindReport(CLI::App* sub, ReportCommandOptions* o) {
   AddAcceptUnitsFlag(sub, &o->accept_units);
 }
 
-const CommandRegistration kRegistration(MakeCommand<ReportCommandOptions>(
+const CommandRegistration kRegistration(MakeCommand<ReportFlags>(
     "report", 95,
     "Write a self-contained HTML report (vehicle, pool, schedule or estimates, validation, "
     "diagnosis, loop history; figures embedded) and its figures as PNG and SVG.",

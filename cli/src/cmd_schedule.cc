@@ -13,27 +13,29 @@
 
 #include "uuvplan/cli/command.h"
 #include "uuvplan/cli/coupled_schedule.h"
-#include "uuvplan/cli/text_table.h"
-#include "uuvplan/cli/trial_text.h"
-#include "uuvplan/model/input_error.h"
+#include "uuvplan/cli/exit_status.h"
 #include "uuvplan/io/command_files.h"
-#include "uuvplan/io/information_json.h"
 #include "uuvplan/io/io.h"
-#include "uuvplan/io/schedule_json.h"
-#include "uuvplan/planner/pool/command_sheet.h"
-#include "uuvplan/planner/design/information_table.h"
-#include "uuvplan/planner/schedule.h"
-#include "uuvplan/planner/pool/pool_verdict.h"
-#include "uuvplan/planner/schedule_planner.h"
 #include "uuvplan/io/pool_verdict_json.h"
+#include "uuvplan/io/schedule_json.h"
+#include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/cli/verdict_text.h"
+#include "uuvplan/planner/design/coupled_design.h"
+#include "uuvplan/planner/design/information_table.h"
+#include "uuvplan/planner/pool/command_sheet.h"
+#include "uuvplan/planner/pool/pool_verdict.h"
+#include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/schedule_planner.h"
+#include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/text_table.h"
+#include "uuvplan/text/trial_text.h"
+#include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::cli {
 namespace {
 
-struct ScheduleCliOptions {
+struct ScheduleFlags {
   std::string vehicle;
   std::string pool;
   std::vector<std::string> dofs;
@@ -41,11 +43,10 @@ struct ScheduleCliOptions {
   std::string commands;  ///< --commands DIR: per-thruster command files and the run sheet
   std::string robust{planner::RobustnessName(planner::ScheduleOptions{}.planner.robustness)};
   planner::ScheduleOptions schedule;  ///< --max-duration, --no-steady, --no-sine bound here
-  std::string model_kind = "dof";     ///< --model: dof (per DOF) or coupled (seed 003)
+  std::string model_kind = "dof";     ///< --model: dof (per DOF) or coupled (ref 003)
   std::string mode;                   ///< --mode: a combined mode (coupled only)
   bool duration_given = false;        ///< --max-duration on the command line
 };
-
 
 planner::Robustness ParseRobustness(const std::string& s) {
   for (const auto r : {planner::Robustness::kMaximin, planner::Robustness::kAverage,
@@ -55,14 +56,15 @@ planner::Robustness ParseRobustness(const std::string& s) {
   throw model::InputError("--robust", "expected maximin, average or nominal, got '" + s + "'");
 }
 
-// `--model coupled` plans one combined trial of seed 003's model (coupled_design.h): the
+// `--model coupled` plans one combined trial of ref 003's model (coupled_design.h): the
 // per-DOF planner's options do not apply, and one given would be ignored.
-void RefusePerDofOptionsWithCoupled(const ScheduleCliOptions& o) {
+void RefusePerDofOptionsWithCoupled(const ScheduleFlags& o) {
   const planner::ScheduleOptions per_dof;
   std::vector<std::string> given;
   if (!o.dofs.empty()) given.push_back("--dof");
   if (!o.commands.empty()) given.push_back("--commands");
-  if (o.schedule.precision.target_percent != per_dof.precision.target_percent) given.push_back("--target");
+  if (o.schedule.precision.target_percent != per_dof.precision.target_percent)
+    given.push_back("--target");
   if (o.schedule.steady_runs != per_dof.steady_runs) given.push_back("--no-steady");
   if (o.schedule.sine_trial != per_dof.sine_trial) given.push_back("--no-sine");
   if (!given.empty()) {
@@ -73,41 +75,44 @@ void RefusePerDofOptionsWithCoupled(const ScheduleCliOptions& o) {
   }
 }
 
-int RunCoupled(const ScheduleCliOptions& o, const model::Vehicle& vehicle, const model::Pool& pool) {
-  planner::CoupledDesignOptions co;
+int RunCoupled(const ScheduleFlags& o, const model::Vehicle& vehicle, const model::Pool& pool) {
+  planner::CombinedDesignOptions co =
+      o.mode.empty()
+          ? planner::CoupledDesignOptions()
+          : planner::CoupledDesignOptions(*model::ParseDofList(o.mode));  // checked by CLI11
   co.solver.robustness = ParseRobustness(o.robust);
-  if (!o.mode.empty()) co.mode = *model::kCombinedModeNames.Parse(o.mode);  // checked by CLI11
   if (o.duration_given) co.duration_s = o.schedule.planner.max_trial_duration_s;
   return RunCoupledSchedule(vehicle, pool, co, o.json);
 }
 
 void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
                    const model::Pool& pool, std::ostream& out) {
-  out << "Schedule for " << v.name << " in pool " << pool.name
-      << " (free, walls less 2·" << model::Significant(pool.margin, 4) << " m margin: "
-      << model::Significant(pool.FreeTravel(model::Dof::kSurge), 4) << " m length, "
-      << model::Significant(pool.FreeTravel(model::Dof::kSway), 4) << " m width, "
+  out << "Schedule for " << v.name << " in pool " << pool.name << " (free, walls less 2·"
+      << model::Significant(pool.margin, 4)
+      << " m margin: " << model::Significant(pool.FreeTravel(model::Dof::kSurge), 4)
+      << " m length, " << model::Significant(pool.FreeTravel(model::Dof::kSway), 4) << " m width, "
       << model::Significant(pool.FreeTravel(model::Dof::kHeave), 4) << " m depth; tether "
       << model::Significant(pool.max_turns, 4) << " turns): " << planner::PlanStatusName(r.status)
       << "\n\n";
-  TextTable trials({"DOF", "trial", "kind", "mapping", "duration", "travel", "|τ|min (N)",
-                    "force"});
+  text::TextTable trials(
+      {"DOF", "trial", "kind", "mapping", "duration", "travel", "|τ|min (N)", "force"});
   for (const auto& t : r.schedule.trials) {
     const auto& d = t.design;
-    trials.AddRow({std::string(model::DofName(d.dof)), d.id,
-                   std::string(model::TrialKindName(d.kind)), d.mapping,
-                   model::DurationText(d.duration), TravelText(d.dof, t.travel[0], t.travel[1]),
-                   model::Significant(t.thrust_min, 3), ForceText(d, kScheduleForceStyle)});
+    trials.AddRow(
+        {std::string(model::DofName(d.dof)), d.id, std::string(model::TrialKindName(d.kind)),
+         d.mapping, model::DurationText(d.duration),
+         text::TravelText(d.dof, t.travel[0], t.travel[1]), model::Significant(t.thrust_min, 3),
+         text::ForceText(d, text::kScheduleForceStyle)});
   }
   trials.Print(out);
   out << "\nPredicted 1σ (worst over the a priori box) and robust D criterion (log det of the "
          "relative information):\n";
-  TextTable predicted({"DOF", "D (no unit)", "parameter", "σ"});
+  text::TextTable predicted({"DOF", "D (no unit)", "parameter", "σ"});
   for (const auto& [dof, p] : r.schedule.predicted) {
     std::string criterion = model::Significant(p.criterion_value, 4);
     for (const auto& [name, s] : p.sigma) {
       predicted.AddRow({std::string(model::DofName(dof)), criterion, name,
-                        Quantity(s, model::Unit(name, dof))});
+                        text::Quantity(s, model::Unit(name, dof))});
       criterion = "";
     }
   }
@@ -128,25 +133,7 @@ void PrintSchedule(const planner::ScheduleResult& r, const model::Vehicle& v,
   }
 }
 
-// {schedule..., "status", "notes": [...], "not_planned": {<dof>: {"message"}}, "verdict": {...}}
-// (docs/cli.md; the needs and the required pool, with units, are the verdict's).
-nlohmann::json ScheduleResultJson(const planner::ScheduleResult& r,
-                                  const planner::PoolVerdict& verdict, const model::Pool& pool) {
-  nlohmann::json j = io::ScheduleToJson(r.schedule);
-  j["status"] = std::string(planner::PlanStatusName(r.status));
-  nlohmann::json notes = nlohmann::json::array();
-  nlohmann::json missing = nlohmann::json::object();
-  for (const auto& d : r.dofs) {
-    for (const auto& n : d.notes) notes.push_back(n);
-    if (!d.complete) missing[std::string(model::DofName(d.dof))] = {{"message", d.message}};
-  }
-  j["notes"] = notes;
-  if (!missing.empty()) j["not_planned"] = missing;
-  j["verdict"] = io::PoolVerdictJson(verdict, pool);
-  return j;
-}
-
-int RunSchedule(const ScheduleCliOptions& o) {
+int RunSchedule(const ScheduleFlags& o) {
   if (o.model_kind == "coupled") RefusePerDofOptionsWithCoupled(o);
   if (o.model_kind != "coupled" && !o.mode.empty()) {
     throw model::InputError("--mode " + o.mode, "a combined mode is planned with --model coupled");
@@ -164,11 +151,10 @@ int RunSchedule(const ScheduleCliOptions& o) {
   const planner::PoolVerdict verdict = planner::JudgePool(vehicle, pool, so, r, nullptr);
   std::ostream& out = ReportStream(o.json);
   PrintSchedule(r, vehicle, pool, out);
-  PrintVerdict(verdict, pool, out);
+  text::PrintVerdict(verdict, pool, out);
   if (!o.json.empty()) {
-    nlohmann::json j = ScheduleResultJson(r, verdict, pool);
-    io::AddInformationJson(planner::InformationOf(vehicle, pool, r.schedule, so), &j);
-    WriteJson(o.json, j);
+    WriteJson(o.json, io::ScheduleResultJson(
+                          r, planner::InformationOf(vehicle, pool, r.schedule, so), verdict, pool));
   }
   if (!o.commands.empty()) {
     planner::CommandSheetOptions co;
@@ -179,7 +165,7 @@ int RunSchedule(const ScheduleCliOptions& o) {
   return VerdictExit(verdict);
 }
 
-void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {
+void BindSchedule(CLI::App* sub, ScheduleFlags* o) {
   sub->add_option("VEHICLE", o->vehicle, "vehicle file (YAML)")->required();
   sub->add_option("--pool", o->pool, "pool file (YAML)")->required();
   sub->add_option("--dof", o->dofs,
@@ -212,7 +198,7 @@ void BindSchedule(CLI::App* sub, ScheduleCliOptions* o) {
       "--no-sine", [o] { o->schedule.sine_trial = false; }, "plan no sine trial");
 }
 
-const CommandRegistration kRegistration(MakeCommand<ScheduleCliOptions>(
+const CommandRegistration kRegistration(MakeCommand<ScheduleFlags>(
     "schedule", 10,
     "The test schedule of a vehicle in a pool: steady runs and legs for drag and "
     "installation coefficients, a sine trial for the inertia, robust over the a priori "

@@ -4,24 +4,26 @@
 // DIR/trials/<id>.csv. DIR must be new or empty; it is written whole or not at all.
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <sstream>
 #include <string>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/model/util/text.h"
-#include "uuvplan/model/input_error.h"
-#include "uuvplan/io/coupled_design_json.h"
+#include "uuvplan/io/combined_design_json.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/json_value.h"
-#include "uuvplan/model/coupled_virtual_trial.h"
-#include "uuvplan/model/util/seed.h"
 #include "uuvplan/io/schedule_json.h"
+#include "uuvplan/io/simulation_json.h"
 #include "uuvplan/io/virtual_campaign.h"
 #include "uuvplan/model/campaign_builder.h"
+#include "uuvplan/model/coupled_model.h"
+#include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/seed.h"
+#include "uuvplan/model/util/text.h"
+#include "uuvplan/model/virtual_pool.h"
 #include "uuvplan/planner/schedule.h"
+#include "uuvplan/text/text_table.h"
 
 namespace uuvplan::cli {
 namespace {
@@ -29,7 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 using model::InputError;
 
-struct SimulateOptions {
+struct SimulateFlags {
   std::string truth;
   std::string plan;
   std::string out;
@@ -136,72 +138,31 @@ void CheckNewOrEmpty(const std::string& out) {
   }
 }
 
-// Figures of the simulated campaign, for the table's last line and the JSON.
-struct CampaignTotals {
-  std::size_t rows = 0;
-  double trial_time = 0.0;  ///< s of trials
-  double clock = 0.0;       ///< s of pool time, pauses included
-};
-
-CampaignTotals Totals(const model::Campaign& campaign,
-                      const std::vector<model::TrialDesign>& designs) {
-  CampaignTotals t;
-  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
-    t.rows += campaign.trials[i].log.size();
-    t.trial_time += designs[i].duration;
-  }
-  if (!campaign.trials.empty()) t.clock = campaign.trials.back().start + designs.back().duration;
-  return t;
-}
-
 void PrintCampaignTable(const model::Campaign& campaign,
                         const std::vector<model::TrialDesign>& designs, std::ostream& out) {
-  out << std::left << std::setw(22) << "trial" << std::setw(7) << "dof" << std::setw(10) << "kind"
-      << std::setw(24) << "mapping" << std::right << std::setw(10) << "duration" << std::setw(8)
-      << "rows"
+  // trial, dof, kind, mapping, duration, rows; then the file, unpadded.
+  const std::vector<text::FixedColumn> columns{{22}, {7}, {10}, {24}, {10, true}, {8, true}};
+  out << text::FixedRow(columns, {"trial", "dof", "kind", "mapping", "duration", "rows"})
       << "  file\n";
   for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
     const auto& e = campaign.trials[i];
     const auto& d = designs[i];
-    std::ostringstream dur;
-    dur << std::fixed << std::setprecision(1) << d.duration << " s";
-    out << std::left << std::setw(22) << d.id << std::setw(7) << model::DofName(d.dof)
-        << std::setw(10) << model::TrialKindName(d.kind) << std::setw(24) << d.mapping << std::right
-        << std::setw(10) << dur.str() << std::setw(8) << e.log.size() << "  " << e.file << "\n";
+    out << text::FixedRow(
+               columns,
+               {d.id, std::string(model::DofName(d.dof)), std::string(model::TrialKindName(d.kind)),
+                d.mapping, model::Decimals(d.duration, 1) + " s", std::to_string(e.log.size())})
+        << "  " << e.file << "\n";
   }
-}
-
-nlohmann::json SimulationJson(const model::Campaign& campaign,
-                              const std::vector<model::TrialDesign>& designs,
-                              const SimulateOptions& o, double step_s) {
-  nlohmann::json trials = nlohmann::json::array();
-  for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
-    const auto& e = campaign.trials[i];
-    const auto& d = designs[i];
-    trials.push_back({{"id", d.id},
-                      {"dof", std::string(model::DofName(d.dof))},
-                      {"file", e.file},
-                      {"rows", e.log.size()},
-                      {"duration", d.duration},
-                      {"start", e.start}});
-  }
-  const CampaignTotals totals = Totals(campaign, designs);
-  return {{"campaign", (fs::path(o.out) / "campaign.yaml").string()},
-          {"seed", o.campaign.seed},
-          {"step", step_s},
-          {"trials", trials},
-          {"rows", totals.rows},
-          {"trial_time", totals.trial_time},
-          {"pool_time", totals.clock}};
 }
 
 // A coupled schedule (`schedule --model coupled --json`): its combined trial flown by the
-// coupled virtual pool (model/coupled_virtual_trial.h, seed StreamSeed(seed, 0) as trial 0 of a
-// campaign), written as a one-trial campaign listed under its first DOF, as `identify --model
-// coupled` reads it.
-int RunCoupledSimulate(const SimulateOptions& o, const model::Truth& truth,
+// coupled model's virtual pool (model/virtual_pool.h RunCombinedTrial, seed StreamSeed(seed, 0) as
+// trial 0 of a campaign), written as a one-trial campaign listed under its first DOF, as `identify
+// --model coupled` reads it.
+int RunCoupledSimulate(const SimulateFlags& o, const model::Truth& truth,
                        const nlohmann::json& root) {
-  const model::CoupledTrialDesign trial = io::CoupledTrialOfJson(root, o.plan);
+  const model::MultiDofModel coupled = model::CoupledModelOfTruth(truth);
+  const model::CombinedTrialDesign trial = io::CombinedTrialOfJson(root, o.plan, coupled);
   for (const model::TrialDesign& in : trial.inputs) {
     const int m = truth.vehicle.MappingIndex(in.mapping);
     if (m < 0 || truth.vehicle.mappings[m].dof != in.dof) {
@@ -222,30 +183,30 @@ int RunCoupledSimulate(const SimulateOptions& o, const model::Truth& truth,
   e.mapping = trial.inputs.front().mapping;
   e.start = 0.0;
   e.has_start = true;
-  e.log = model::RunCoupledVirtualTrial(truth, trial, pool);
+  e.log = model::RunCombinedTrial(truth, coupled, model::CoupledThetaOfTruth(coupled, truth), trial,
+                                  pool);
   const std::size_t rows = e.log.t.size();
   campaign.trials.push_back(std::move(e));
-  io::WriteCampaign(o.out, std::move(campaign), truth.vehicle,
-                    {"uuvplan virtual pool: truth vehicle '" + truth.vehicle.name +
-                     "', combined trial '" + trial.id + "', seed " + std::to_string(o.campaign.seed)});
+  io::WriteCampaign(
+      o.out, std::move(campaign), truth.vehicle,
+      {"uuvplan virtual pool: truth vehicle '" + truth.vehicle.name + "', combined trial '" +
+       trial.id + "', seed " + std::to_string(o.campaign.seed)});
   const std::string campaign_path = (fs::path(o.out) / "campaign.yaml").string();
   std::ostream& out = ReportStream(o.json);
-  out << "Simulated the combined " << model::kCombinedModeNames.Name(trial.mode) << " trial '"
-      << trial.id << "' of plan " << o.plan << " on the virtual '" << truth.vehicle.name
-      << "' of " << o.truth << " (coupled horizontal model, seed 003)\n(seed " << o.campaign.seed
-      << ", RK4 step " << truth.integration_step_s << " s): " << trial.duration << " s, " << rows
+  out << "Simulated the combined " << model::DofList(trial.dofs) << " trial '" << trial.id
+      << "' of plan " << o.plan << " on the virtual '" << truth.vehicle.name << "' of " << o.truth
+      << " (coupled horizontal model, seed 003)\n(seed " << o.campaign.seed << ", RK4 step "
+      << truth.integration_step_s << " s): " << trial.duration << " s, " << rows
       << " rows\nCampaign: " << campaign_path << "  (identify it with --model coupled)\n";
   if (!o.json.empty()) {
-    WriteJson(o.json, {{"campaign", campaign_path}, {"seed", o.campaign.seed},
-                       {"step", truth.integration_step_s}, {"model", "coupled-horizontal"},
-                       {"trials", {{{"id", trial.id}, {"mode", std::string(model::kCombinedModeNames.Name(trial.mode))},
-                                    {"duration", trial.duration}, {"rows", rows}}}}});
+    WriteJson(o.json, io::CoupledSimulationJson(trial, rows, campaign_path, o.campaign.seed,
+                                                truth.integration_step_s));
   }
   return kExitOk;
 }
 
-int RunSimulate(const SimulateOptions& options) {
-  SimulateOptions o = options;
+int RunSimulate(const SimulateFlags& options) {
+  SimulateFlags o = options;
   o.out = DirectoryName(o.out);
   if (!std::isnan(o.step_s) && !(o.step_s > 0 && std::isfinite(o.step_s))) {
     throw InputError("--step",
@@ -254,7 +215,8 @@ int RunSimulate(const SimulateOptions& options) {
   CheckNewOrEmpty(o.out);
   model::Truth truth = io::ReadTruth(o.truth);
   if (!std::isnan(o.step_s)) truth.integration_step_s = o.step_s;
-  if (const nlohmann::json root = io::LoadJson(o.plan); io::IsCoupledScheduleJson(root)) {
+  if (const nlohmann::json root = io::LoadJson(o.plan);
+      io::IsCombinedScheduleJson(root, model::kCoupledModelName)) {
     return RunCoupledSimulate(o, truth, root);
   }
   const planner::Schedule plan = io::ReadScheduleJson(o.plan);
@@ -273,19 +235,21 @@ int RunSimulate(const SimulateOptions& options) {
       << "(seed " << o.campaign.seed << ", RK4 step " << truth.integration_step_s << " s, "
       << o.campaign.pause_s << " s pause between trials)\n\n";
   PrintCampaignTable(campaign, designs, out);
-  const CampaignTotals totals = Totals(campaign, designs);
+  const io::CampaignTotals totals = io::Totals(campaign, designs);
+  const std::string campaign_path = (fs::path(o.out) / "campaign.yaml").string();
   out << "\n"
       << campaign.trials.size() << " trials, " << totals.rows << " rows, "
       << model::DurationText(totals.trial_time) << " of trials, "
       << model::DurationText(totals.clock) << " of pool time with pauses\n"
-      << "Campaign: " << (fs::path(o.out) / "campaign.yaml").string() << "\n";
+      << "Campaign: " << campaign_path << "\n";
   if (!o.json.empty()) {
-    WriteJson(o.json, SimulationJson(campaign, designs, o, truth.integration_step_s));
+    WriteJson(o.json, io::SimulationJson(campaign, designs, campaign_path, o.campaign.seed,
+                                         truth.integration_step_s));
   }
   return kExitOk;
 }
 
-void BindSimulate(CLI::App* sub, SimulateOptions* o) {
+void BindSimulate(CLI::App* sub, SimulateFlags* o) {
   sub->add_option("--truth", o->truth, "truth file: a vehicle plus dofs.<dof>.params")->required();
   sub->add_option("--plan", o->plan,
                   "plan JSON: a `schedule --json` result (also `--model coupled`), or a `next "
@@ -293,15 +257,14 @@ void BindSimulate(CLI::App* sub, SimulateOptions* o) {
       ->required();
   sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
       ->required();
-  sub->add_option("--seed", o->campaign.seed,
-                  "seed of the sensor noise, drop-outs and outliers")
+  sub->add_option("--seed", o->campaign.seed, "seed of the sensor noise, drop-outs and outliers")
       ->capture_default_str();
   sub->add_option("--step", o->step_s,
                   "RK4 integration step in s (default: the truth's virtual_pool.step, else 0.01)");
   AddJsonOption(sub, &o->json, "also write a summary", /*check_now=*/false);
 }
 
-const CommandRegistration kRegistration(MakeCommand<SimulateOptions>(
+const CommandRegistration kRegistration(MakeCommand<SimulateFlags>(
     "simulate", 30,
     "Run a plan on the virtual vehicle of a truth file and write the campaign (campaign.yaml, "
     "vehicle.yaml, trials/<id>.csv) as a pool team would log it.",

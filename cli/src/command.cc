@@ -1,17 +1,18 @@
 // What every command shares (command.h): the registry, the `--json` flag and its output, `--dof`.
 #include "uuvplan/cli/command.h"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <unistd.h>
+#include <limits>
 
 #include "uuvplan/ident/prepare/input_sanity.h"
-#include "uuvplan/model/input_error.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::cli {
@@ -19,6 +20,10 @@ namespace uuvplan::cli {
 std::vector<Command>& Registry() {
   static std::vector<Command> commands;
   return commands;
+}
+
+bool HelpOrder(const Command& a, const Command& b) {
+  return a.order != b.order ? a.order < b.order : a.name < b.name;
 }
 
 namespace {
@@ -43,7 +48,7 @@ CLI::Validator PositiveNumber(const std::string& what) {
       "NUMBER > 0");
 }
 
-// A pool is booked by the hour; the seeds' trials last 0.5–4 min. A longer "trial" is a unit
+// A pool is booked by the hour; the papers' trials last 0.5–4 min. A longer "trial" is a unit
 // slip (ms for s) and would only meet the simulation's work limit further on.
 constexpr double kMaxTrialSeconds = 3600.0;
 
@@ -53,7 +58,8 @@ CLI::Validator TrialDuration() {
         return NumberInRange(text, kMaxTrialSeconds)
                    ? ""
                    : "expected a trial's duration in (0, 3600] s (a pool is booked by the hour), "
-                     "got '" + text + "'";
+                     "got '" +
+                         text + "'";
       },
       "SECONDS in (0, 3600]");
 }
@@ -66,8 +72,10 @@ CLI::Validator OutputFile() {
         if (!std::filesystem::is_directory(dir)) {
           return "expected a file in an existing directory: " + dir.string() + " does not exist";
         }
-        if (access(dir.c_str(), W_OK) != 0) return "the directory " + dir.string() + " is not writable";
-        if (std::filesystem::is_directory(path)) return "expected a file, " + path + " is a directory";
+        if (access(dir.c_str(), W_OK) != 0)
+          return "the directory " + dir.string() + " is not writable";
+        if (std::filesystem::is_directory(path))
+          return "expected a file, " + path + " is a directory";
         if (std::filesystem::exists(path) && access(path.c_str(), W_OK) != 0) {
           return path + " exists and is not writable";
         }
@@ -158,7 +166,10 @@ std::vector<model::Dof> ParseDofFlags(const std::vector<std::string>& names) {
 
 void AddThreadsOption(CLI::App* sub, const std::vector<int*>& targets, const std::string& what) {
   sub->add_option_function<int>(
-         "--threads", [targets](int n) { for (int* t : targets) *t = n; },
+         "--threads",
+         [targets](int n) {
+           for (int* t : targets) *t = n;
+         },
          "threads for " + what + " (default 0: one per core; the results do not depend on it)")
       ->check(CLI::NonNegativeNumber);
 }

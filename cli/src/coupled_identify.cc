@@ -4,11 +4,16 @@
 #include <vector>
 
 #include "uuvplan/cli/command.h"
-#include "uuvplan/cli/text_table.h"
-#include "uuvplan/ident/estimators/coupled_ls.h"
-#include "uuvplan/io/coupled_json.h"
+#include "uuvplan/ident/estimators/joint_ls.h"
+#include "uuvplan/io/joint_ls_json.h"
+#include "uuvplan/model/coupled_model.h"
+#include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/text_table.h"
 
 namespace uuvplan::cli {
+
+using text::Quantity;
+using text::TextTable;
 
 int RunCoupledIdentify(const model::Campaign& campaign, const std::string& campaign_path,
                        const std::string& json_path) {
@@ -16,13 +21,13 @@ int RunCoupledIdentify(const model::Campaign& campaign, const std::string& campa
   for (const model::TrialEntry& t : campaign.trials) {
     if (t.use == model::TrialUse::kFit) logs.push_back(&t.log);
   }
-  const ident::CoupledLsResult r =
-      ident::CoupledOneStepLeastSquares(logs, ident::CoupledLsOptions{});
+  const ident::JointLsResult r = ident::JointOneStepLeastSquares(
+      model::CoupledHorizontalModel(campaign.vehicle), logs, ident::JointLsOptions{});
   std::ostream& out = ReportStream(json_path);
   out << "Identification of " << campaign_path << " (vehicle '" << campaign.vehicle.name << "', "
       << logs.size() << " combined-mode trial(s); coupled horizontal model, seed 003; one-step "
       << (r.instrumental ? "instrumental-variable" : "least-squares") << " estimate)\n\n";
-  if (r.ok() || r.status == ident::CoupledStatus::kNonPhysical) {
+  if (r.ok() || r.status == ident::JointLsStatus::kNonPhysical) {
     TextTable table({"DOF", "parameter", "value", "σ", "state"});
     for (std::size_t j = 0; j < r.names.size(); ++j) {
       const std::string& name = r.names[j];
@@ -43,8 +48,9 @@ int RunCoupledIdentify(const model::Campaign& campaign, const std::string& campa
     }
   }
   for (const std::string& note : r.notes) out << "  note: " << note << "\n";
-  if (!r.ok()) out << "  FAILED (" << ident::kCoupledStatusNames.Name(r.status) << "): " << r.message << "\n";
-  if (!json_path.empty()) WriteJson(json_path, io::CoupledIdentifyJson(r));
+  if (!r.ok())
+    out << "  FAILED (" << ident::kJointLsStatusNames.Name(r.status) << "): " << r.message << "\n";
+  if (!json_path.empty()) WriteJson(json_path, io::JointLsJson(r, model::kCoupledModelName));
   return r.ok() ? kExitOk : kExitActionNeeded;
 }
 

@@ -30,8 +30,10 @@ void ApplyMethodFlags(const MethodFlags& flags, ident::IdentifyOptions* o) {
   }
   o->method = *method;
   if (flags.forgetting_given && o->method != ident::Method::kRls) {
-    throw model::InputError("--forgetting", "the forgetting factor belongs to --method rls (seed "
-                                            "004 eq. 15), not to method " + flags.method);
+    throw model::InputError("--forgetting",
+                            "the forgetting factor belongs to --method rls (seed "
+                            "004 eq. 15), not to method " +
+                                flags.method);
   }
   o->rls.lambda = flags.forgetting;
 }

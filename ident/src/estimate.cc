@@ -17,7 +17,8 @@ std::string_view ParameterStateName(ParameterState s) {
 }
 
 double ParameterEstimate::percentile_error() const {
-  if (state == ParameterState::kDropped) return PercentileError(value_before_drop, sigma_before_drop);
+  if (state == ParameterState::kDropped)
+    return PercentileError(value_before_drop, sigma_before_drop);
   return PercentileError(value, sigma);
 }
 

@@ -71,8 +71,13 @@ DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
   r.structure = stages::ChooseStructure(campaign.vehicle, dof, trials, o);
   const model::DofModel model(campaign.vehicle, r.structure);
   r.parameter_names = model.parameter_names();
-  stages::DofContext c{campaign.vehicle, trials, model, PriorTheta(campaign.vehicle, model, o.initial_guess),
-                       o.steady, o.output_error, model.ParameterIndex(model::param::kMass)};
+  stages::StageInputs c{campaign.vehicle,
+                        trials,
+                        model,
+                        PriorTheta(campaign.vehicle, model, o.initial_guess),
+                        o.steady,
+                        o.output_error,
+                        model.ParameterIndex(model::param::kMass)};
   c.steady.selection = c.output_error.selection = o.selection;
   r.closed_loop_suspected = stages::SuspectClosedLoop(trials.fit, o.closed_loop);
   NoteParametersNotUsed(campaign.vehicle, dof, &r);
@@ -214,9 +219,10 @@ IdentifyResult IdentifyCampaign(const model::Campaign& campaign, model::Campaign
       result.status = IdentifyStatus::kWarnings;
     }
   }
-  result.message = std::to_string(result.dofs.size()) + " DOF(s) identified from " +
-                   std::to_string(trials.size()) + " trial(s)" +
-                   (failed.empty() ? "" : "; failed: " + failed + " (the reason on each DOF's FAILED line)");
+  result.message =
+      std::to_string(result.dofs.size()) + " DOF(s) identified from " +
+      std::to_string(trials.size()) + " trial(s)" +
+      (failed.empty() ? "" : "; failed: " + failed + " (the reason on each DOF's FAILED line)");
   return result;
 }
 

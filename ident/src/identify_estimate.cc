@@ -1,23 +1,23 @@
 // Stage 2 of identifying a DOF, estimate: the least-squares answer that starts the refinement.
 // Steady-state segments give the drag, bias, ballast step and installation coefficients
-// (seed 000 eqs. 7–12, 20) and, with the drag known, the integral method gives m (eqs. 16–19);
-// the one-step integral least squares of every regressor-linear parameter (seeds 002/004)
+// (ref 000 eqs. 7–12, 20) and, with the drag known, the integral method gives m (eqs. 16–19);
+// the one-step integral least squares of every regressor-linear parameter (refs 002/004)
 // answers when there is no steady state, and supplies m when the integral method fails.
 #include <algorithm>
 #include <cmath>
 
 #include "identify_stages.h"
 #include "stats/model_selection.h"
-#include "number_text.h"
 #include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::stages {
 namespace {
 
 // No least-squares answer yet: the a priori values, every parameter held.
-LeastSquaresAnswer PriorAnswer(const DofContext& c) {
+LeastSquaresAnswer PriorAnswer(const StageInputs& c) {
   const int np = c.model.num_parameters();
   LeastSquaresAnswer ls;
   ls.estimate = {c.prior, Eigen::MatrixXd::Zero(np, np),
@@ -27,13 +27,14 @@ LeastSquaresAnswer PriorAnswer(const DofContext& c) {
 
 // The steady points of every fit trial (detected, or in the user's windows); returns the
 // number of constant-force legs long enough to settle, for the note when none did.
-int CollectSteadyPoints(const DofContext& c, const IdentifyOptions& o, DofIdentification* r) {
+int CollectSteadyPoints(const StageInputs& c, const IdentifyOptions& o, DofIdentification* r) {
   int long_pieces = 0;
   for (const TrialData* d : c.trials.fit) {
     const auto w = o.steady_windows.find(d->index);
     std::vector<std::pair<double, double>> windows;
     if (w != o.steady_windows.end()) {
-      for (const auto& [a, b] : w->second) windows.push_back({a - d->time_offset, b - d->time_offset});
+      for (const auto& [a, b] : w->second)
+        windows.push_back({a - d->time_offset, b - d->time_offset});
     }
     auto pts = SteadyPoints(*d, c.steady.detection, o.data.force_tolerance,
                             windows.empty() ? nullptr : &windows);
@@ -45,7 +46,7 @@ int CollectSteadyPoints(const DofContext& c, const IdentifyOptions& o, DofIdenti
   return long_pieces;
 }
 
-// The integral method is meant for the dynamic (sine) trials (seed 000 §III-B): the filtered
+// The integral method is meant for the dynamic (sine) trials (ref 000 §III-B): the filtered
 // velocity follows smooth inputs well, while every command step distorts it. Steps are used
 // only when there is no smooth dynamic trial.
 std::vector<const TrialData*> InertiaTrials(const std::vector<const TrialData*>& fit) {
@@ -56,10 +57,10 @@ std::vector<const TrialData*> InertiaTrials(const std::vector<const TrialData*>&
   return dynamic.empty() ? fit : dynamic;
 }
 
-// Seed 000 eqs. 7–12 and, with the drag known, the integral method (eqs. 16–19) for m. The
+// Ref 000 eqs. 7–12 and, with the drag known, the integral method (eqs. 16–19) for m. The
 // notes are kept from the final pass only.
-LeastSquaresAnswer SteadyAndInertia(const DofContext& c, const IdentifyOptions& o,
-                                    bool final_pass, DofIdentification* r) {
+LeastSquaresAnswer SteadyAndInertia(const StageInputs& c, const IdentifyOptions& o, bool final_pass,
+                                    DofIdentification* r) {
   const int np = c.model.num_parameters();
   const int im = c.mass_index;
   LeastSquaresAnswer ls = PriorAnswer(c);
@@ -84,8 +85,8 @@ LeastSquaresAnswer SteadyAndInertia(const DofContext& c, const IdentifyOptions& 
   e.theta = r->steady->theta;
   e.covariance = r->steady->covariance;
   if (o.method == Method::kLeastSquares) return ls;  // m stays a priori
-  r->inertia = IntegralInertiaFit(c.model, InertiaTrials(c.trials.fit), e.theta, &e.covariance,
-                                  o.inertia);
+  r->inertia =
+      IntegralInertiaFit(c.model, InertiaTrials(c.trials.fit), e.theta, &e.covariance, o.inertia);
   if (r->inertia->ok() && r->inertia->m > 0) {
     e.theta[im] = r->inertia->m;
     e.covariance(im, im) = r->inertia->sigma * r->inertia->sigma;
@@ -94,10 +95,10 @@ LeastSquaresAnswer SteadyAndInertia(const DofContext& c, const IdentifyOptions& 
   return ls;
 }
 
-// Seeds 002/004: one-step integral least squares on every regressor-linear parameter the
+// Refs 002/004: one-step integral least squares on every regressor-linear parameter the
 // steady state did not drop; its unexcited parameters (those the steady state did not excite
 // either, when it answered).
-void OneStep(const DofContext& c, const IdentifyOptions& o, LeastSquaresAnswer* ls,
+void OneStep(const StageInputs& c, const IdentifyOptions& o, LeastSquaresAnswer* ls,
              DofIdentification* r) {
   OneStepDofInput in;
   in.model = &c.model;
@@ -117,22 +118,29 @@ void OneStep(const DofContext& c, const IdentifyOptions& o, LeastSquaresAnswer* 
 // The least-squares answer of the chain: steady state + integral method (m from the one-step
 // fit when the integral method failed), else the one-step fit. A single method (--method)
 // answers with its own estimate or not at all.
-void ChooseAnswer(const DofContext& c, Method method, LeastSquaresAnswer* ls, DofIdentification* r) {
+void ChooseAnswer(const StageInputs& c, Method method, LeastSquaresAnswer* ls,
+                  DofIdentification* r) {
   const int im = c.mass_index;
   StageEstimate& e = ls->estimate;
   const bool one_step_ok = r->one_step && r->one_step->ok();
   const bool m_estimated = e.state[im] == ParameterState::kEstimated;
   if (ls->steady_ok && method == Method::kLeastSquares) {
     r->estimator = FinalEstimator::kSteadyState;
-    r->notes.push_back("ls: m is not estimated by the steady-state least squares (held at its a "
-                       "priori " + Fmt(e.theta[im]) + " " + model::Unit(model::param::kMass, c.model.dof()) +
-                       "; the free runs use it)");
+    r->notes.push_back(
+        "ls: m is not estimated by the steady-state least squares (held at its a "
+        "priori " +
+        model::Significant(e.theta[im], 4) + " " + model::Unit(model::param::kMass, c.model.dof()) +
+        "; the free runs use it)");
   } else if (ls->steady_ok && (m_estimated || method == Method::kIntegral)) {
-    if (m_estimated) r->estimator = FinalEstimator::kSteadyStateIntegral;
-    else if (r->inertia) r->notes.push_back(r->inertia->message.empty() ? "integral method failed" : r->inertia->message);
+    if (m_estimated)
+      r->estimator = FinalEstimator::kSteadyStateIntegral;
+    else if (r->inertia)
+      r->notes.push_back(r->inertia->message.empty() ? "integral method failed"
+                                                     : r->inertia->message);
   } else if (ls->steady_ok) {
     if (r->inertia) {
-      r->notes.push_back(r->inertia->message.empty() ? "integral method failed" : r->inertia->message);
+      r->notes.push_back(r->inertia->message.empty() ? "integral method failed"
+                                                     : r->inertia->message);
     }
     if (one_step_ok && r->one_step->theta[im] > 0) {
       e.theta[im] = r->one_step->theta[im];
@@ -154,12 +162,12 @@ void ChooseAnswer(const DofContext& c, Method method, LeastSquaresAnswer* ls, Do
   }
 }
 
-// Seed 004 eq. 15 on the one-step rows of every fit trial, in campaign time: the estimate
+// Ref 004 eq. 15 on the one-step rows of every fit trial, in campaign time: the estimate
 // after the last row, with its covariance (rls.h). Model selection as the other estimators
-// (seed 000 §IV-D; seed 004 §5.2 set β = 0 for "no significant improvement"): while a
+// (ref 000 §IV-D; ref 004 §5.2 set β = 0 for "no significant improvement"): while a
 // prunable parameter's percentile error exceeds 51.02%, the worst is dropped (held at 0) and
 // the recursion rerun.
-LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofIdentification* r) {
+LeastSquaresAnswer RlsAnswer(const StageInputs& c, const IdentifyOptions& o, DofIdentification* r) {
   LeastSquaresAnswer ls = PriorAnswer(c);
   std::vector<int> free = LinearParameters(c.model);
   Eigen::VectorXd given = c.prior;
@@ -181,11 +189,17 @@ LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofI
                           : -1;
     if (worst < 0) break;
     const int j = f.free[worst];
-    ParameterEstimate e{f.names[j], 0.0, std::nan(""), ParameterState::kDropped, false,
-                        candidates[worst].value, candidates[worst].sigma};
+    ParameterEstimate e{f.names[j],
+                        0.0,
+                        std::nan(""),
+                        ParameterState::kDropped,
+                        false,
+                        candidates[worst].value,
+                        candidates[worst].sigma};
     dropped.push_back(e);
-    r->notes.push_back("rls: " + e.name + " = " + Fmt(e.value_before_drop) + " ± " +
-                       Fmt(e.sigma_before_drop) + " has a percentile error of " + Fmt(pe, 3) +
+    r->notes.push_back("rls: " + e.name + " = " + model::Significant(e.value_before_drop, 4) +
+                       " ± " + model::Significant(e.sigma_before_drop, 4) +
+                       " has a percentile error of " + model::Significant(pe, 3) +
                        "% > 51.02%: insignificant at 95%, dropped and the recursion rerun "
                        "(seed 000 §IV-D)");
     given[j] = 0.0;
@@ -208,7 +222,7 @@ LeastSquaresAnswer RlsAnswer(const DofContext& c, const IdentifyOptions& o, DofI
 
 // Under feedback (closed_loop_iv.h): the instrumental-variable estimate of m and every
 // regressor-linear parameter, the non-linear ones at the least-squares answer's values.
-void ClosedLoop(const DofContext& c, const IdentifyOptions& o, const LeastSquaresAnswer& ls,
+void ClosedLoop(const StageInputs& c, const IdentifyOptions& o, const LeastSquaresAnswer& ls,
                 DofIdentification* r) {
   if (!r->closed_loop_suspected) return;
   ClosedLoopIvOptions iv = o.closed_loop_iv;
@@ -221,7 +235,7 @@ void ClosedLoop(const DofContext& c, const IdentifyOptions& o, const LeastSquare
 
 }  // namespace
 
-LeastSquaresAnswer EstimateStage(const DofContext& c, const IdentifyOptions& o,
+LeastSquaresAnswer EstimateStage(const StageInputs& c, const IdentifyOptions& o,
                                  DofIdentification* r) {
   if (o.method == Method::kRls) return RlsAnswer(c, o, r);
   if (o.method == Method::kOutputError) return PriorAnswer(c);
@@ -237,7 +251,7 @@ LeastSquaresAnswer EstimateStage(const DofContext& c, const IdentifyOptions& o,
     if (r->steady_points.empty() && long_pieces > 0) {
       r->notes.push_back("steady state: no settled segment in " + std::to_string(long_pieces) +
                          " constant-force leg(s) of at least " +
-                         Fmt(c.steady.detection.min_duration_s) +
+                         model::Significant(c.steady.detection.min_duration_s, 4) +
                          " s (the speed did not settle within the noise; make the legs longer)");
     }
   }
@@ -247,7 +261,8 @@ LeastSquaresAnswer EstimateStage(const DofContext& c, const IdentifyOptions& o,
   return ls;
 }
 
-void CheckMethodFits(model::Dof dof, const std::vector<TrialData>& trials, const IdentifyOptions& o) {
+void CheckMethodFits(model::Dof dof, const std::vector<TrialData>& trials,
+                     const IdentifyOptions& o) {
   if (o.method != Method::kLeastSquares && o.method != Method::kIntegral) return;
   std::string files;
   for (const TrialData& d : trials) {
@@ -262,7 +277,8 @@ void CheckMethodFits(model::Dof dof, const std::vector<TrialData>& trials, const
   throw model::InputError(
       "--method " + std::string(MethodName(o.method)),
       "the steady-state least squares (seed 000 eqs. 7–12) needs constant-force legs of at "
-      "least " + Fmt(o.steady.detection.min_duration_s) + " s, and the " +
+      "least " +
+          model::Significant(o.steady.detection.min_duration_s, 4) + " s, and the " +
           std::string(model::DofName(dof)) + " fit trials (" + files +
           ") have none; use --method one-step, rls or output-error, or mark windows with --steady");
 }

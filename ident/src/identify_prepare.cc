@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "identify_stages.h"
-#include "number_text.h"
 #include "uuvplan/model/util/median.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 
@@ -50,9 +50,10 @@ void WarnAboutData(const TrialData& d, const OutlierOptions& outliers, DofIdenti
     if (!w.empty()) r->warnings.push_back(w);
   }
   if (d.force_gap_t1 > d.force_gap_t0) {
-    r->warnings.push_back(d.name + ": no force value for " + Fmt(d.force_gap_t1 - d.force_gap_t0) +
-                          " s (t = " + Fmt(d.force_gap_t0 + d.time_offset) + " to " +
-                          Fmt(d.force_gap_t1 + d.time_offset) +
+    r->warnings.push_back(d.name + ": no force value for " +
+                          model::Significant(d.force_gap_t1 - d.force_gap_t0, 4) +
+                          " s (t = " + model::Significant(d.force_gap_t0 + d.time_offset, 4) +
+                          " to " + model::Significant(d.force_gap_t1 + d.time_offset, 4) +
                           " s of the log): the last command is held across it (zero-order "
                           "hold); if it changed there, the estimates are biased");
   }

@@ -6,7 +6,6 @@
 
 #include "drag_parameter.h"
 #include "identify_stages.h"
-#include "number_text.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/util/text.h"
 
@@ -23,9 +22,9 @@ struct RefineStart {
 // Parameters the least squares dropped as insignificant are free again here: significance is
 // a property of an estimator's own covariance, and the output error's is much smaller
 // (integrated positions make a small bias, invisible to the steady speeds, highly
-// significant). The output error re-tests them with its own σ (51.02%, seed 000 §IV-D) and
+// significant). The output error re-tests them with its own σ (51.02%, ref 000 §IV-D) and
 // drops them again only if they are still insignificant.
-RefineStart StartFrom(const DofContext& c, const LeastSquaresAnswer& ls) {
+RefineStart StartFrom(const StageInputs& c, const LeastSquaresAnswer& ls) {
   const int np = c.model.num_parameters();
   const auto& names = c.model.parameter_names();
   RefineStart s{ls.estimate.theta, std::vector<ParameterState>(np, ParameterState::kEstimated), {}};
@@ -43,7 +42,7 @@ RefineStart StartFrom(const DofContext& c, const LeastSquaresAnswer& ls) {
 
 // A fit in a poor local minimum (residuals above the noise: s² more than 4 standard errors
 // √(2/dof) above 1, or a negative drag) or nowhere.
-bool Suspicious(const DofContext& c, const OutputErrorResult& f) {
+bool Suspicious(const StageInputs& c, const OutputErrorResult& f) {
   if (!f.ok()) return true;
   const int np = c.model.num_parameters();
   const int dof = std::max(1, f.num_residuals - np);
@@ -60,7 +59,7 @@ bool Suspicious(const DofContext& c, const OutputErrorResult& f) {
 
 // A least-squares start far from the answer can lead Levenberg–Marquardt to a poor local
 // minimum or nowhere: restart from the a priori values and keep the better fit.
-OutputErrorResult FitWithRestart(const DofContext& c, const LeastSquaresAnswer& ls,
+OutputErrorResult FitWithRestart(const StageInputs& c, const LeastSquaresAnswer& ls,
                                  const RefineStart& s, bool from_prior, DofIdentification* r) {
   OutputErrorResult oe = OutputErrorFit(c.model, c.trials.fit, s.theta, s.state, c.output_error);
   if (from_prior || !Suspicious(c, oe)) return oe;
@@ -70,8 +69,10 @@ OutputErrorResult FitWithRestart(const DofContext& c, const LeastSquaresAnswer& 
   }
   OutputErrorResult retry = OutputErrorFit(c.model, c.trials.fit, alt, s.state, c.output_error);
   if (retry.ok() && (!oe.ok() || retry.cost < oe.cost)) {
-    r->notes.push_back("output error restarted from the a priori values (from the "
-                       "least-squares answer: " + oe.message + ")");
+    r->notes.push_back(
+        "output error restarted from the a priori values (from the "
+        "least-squares answer: " +
+        oe.message + ")");
     oe = std::move(retry);
   }
   return oe;
@@ -81,7 +82,7 @@ OutputErrorResult FitWithRestart(const DofContext& c, const LeastSquaresAnswer& 
 // conditional on the held values: were those wrong (a priori guesses), the rest absorb the
 // difference with a σ that does not show it (ROMEO heave with W and η held at 0 and 1: kq twice
 // its true value at "±4%"). They are reported but marked unreliable.
-void RefitHoldingUnidentifiable(const DofContext& c, RefineStart* s, OutputErrorResult* oe,
+void RefitHoldingUnidentifiable(const StageInputs& c, RefineStart* s, OutputErrorResult* oe,
                                 DofIdentification* r) {
   std::vector<std::string> fixed;
   for (const auto& n : oe->not_identifiable) {
@@ -100,25 +101,28 @@ void RefitHoldingUnidentifiable(const DofContext& c, RefineStart* s, OutputError
       r->unreliable.push_back(r->parameter_names[j]);
     }
   }
-  r->warnings.push_back("output error: not identifiable from these trials (held at their "
-                        "least-squares/a priori values): " + model::Join(fixed) +
-                        " (condition number " + Fmt(oe->condition_number, 3) +
-                        "; excite them, e.g. with forces of both signs on every mapping); "
-                        "the other estimates (" + model::Join(conditional) +
-                        ") are conditional on the held values and their σ does not include "
-                        "that: NOT reliable");
+  r->warnings.push_back(
+      "output error: not identifiable from these trials (held at their "
+      "least-squares/a priori values): " +
+      model::Join(fixed) + " (condition number " + model::Significant(oe->condition_number, 3) +
+      "; excite them, e.g. with forces of both signs on every mapping); "
+      "the other estimates (" +
+      model::Join(conditional) +
+      ") are conditional on the held values and their σ does not include "
+      "that: NOT reliable");
 }
 
 // The refinement is reported only when Levenberg–Marquardt converged to an admissible
 // minimum. Otherwise (iteration limit, failed simulation, singular information) its numbers
 // are not an estimate: the least-squares answer is reported instead, with a warning — or,
 // when there is no least-squares answer, the output error's with a warning.
-StageEstimate Adopt(const DofContext& c, const LeastSquaresAnswer& ls, const RefineStart& s,
+StageEstimate Adopt(const StageInputs& c, const LeastSquaresAnswer& ls, const RefineStart& s,
                     const OutputErrorResult& oe, DofIdentification* r) {
   const bool have_ls = r->estimator != FinalEstimator::kNone;
   const bool converged = oe.status == OutputErrorStatus::kConverged;
   if (!converged && !(!have_ls && oe.ok())) {
-    r->warnings.push_back(oe.message + " — the output-error refinement did not converge; the "
+    r->warnings.push_back(oe.message +
+                          " — the output-error refinement did not converge; the "
                           "least-squares estimates (" +
                           std::string(FinalEstimatorName(r->estimator)) + ") are reported");
     return ls.estimate;
@@ -134,9 +138,12 @@ StageEstimate Adopt(const DofContext& c, const LeastSquaresAnswer& ls, const Ref
   for (const std::string& n : s.reinstated) {
     const int j = c.model.ParameterIndex(n);
     if (e.state[j] == ParameterState::kEstimated) {
-      r->notes.push_back(n + " (dropped as insignificant by the least squares) is significant "
-                         "for the output error: " + Fmt(e.theta[j]) + " ± " +
-                         Fmt(std::sqrt(e.covariance(j, j))) + " (its own covariance)");
+      r->notes.push_back(n +
+                         " (dropped as insignificant by the least squares) is significant "
+                         "for the output error: " +
+                         model::Significant(e.theta[j], 4) + " ± " +
+                         model::Significant(std::sqrt(e.covariance(j, j)), 4) +
+                         " (its own covariance)");
     }
   }
   return e;
@@ -150,14 +157,15 @@ bool AdoptClosedLoop(DofIdentification* r, StageEstimate* e) {
   const OneStepDofResult& f = r->closed_loop_iv->fit;
   *e = {f.theta, f.covariance, f.state};
   r->estimator = FinalEstimator::kClosedLoopIv;
-  r->notes.push_back("closed loop: " + f.message + "; the output error is not run (under "
+  r->notes.push_back("closed loop: " + f.message +
+                     "; the output error is not run (under "
                      "feedback the command correlates with the measurement noise)");
   return true;
 }
 
 }  // namespace
 
-StageEstimate RefineStage(const DofContext& c, const LeastSquaresAnswer& ls,
+StageEstimate RefineStage(const StageInputs& c, const LeastSquaresAnswer& ls,
                           const IdentifyOptions& o, DofIdentification* r) {
   StageEstimate closed_loop;
   if (AdoptClosedLoop(r, &closed_loop)) return closed_loop;

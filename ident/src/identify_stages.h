@@ -2,8 +2,8 @@
 //
 //   prepare   (identify_prepare.cc)   the DOF's trials, model structure, start values,
 //                                      closed-loop check
-//   estimate  (identify_estimate.cc)  steady state + integral method (seed 000 eqs. 7–12,
-//                                      16–19) or one-step least squares (seeds 002/004)
+//   estimate  (identify_estimate.cc)  steady state + integral method (ref 000 eqs. 7–12,
+//                                      16–19) or one-step least squares (refs 002/004)
 //   refine    (identify_refine.cc)    output-error refinement from the least-squares answer
 //   validate  (identify_validate.cc)  the reported estimates, plausibility warnings, free runs
 //
@@ -28,7 +28,7 @@ struct DofTrials {
 
 /// Everything the later stages share: the trials, the model, the start values and the
 /// estimators' options with the identify-level pruning switch applied.
-struct DofContext {
+struct StageInputs {
   const model::Vehicle& vehicle;
   const DofTrials& trials;
   const model::DofModel& model;
@@ -48,9 +48,9 @@ struct StageEstimate {
 /// The least-squares answer handed to the refinement.
 struct LeastSquaresAnswer {
   StageEstimate estimate;
-  bool steady_ok = false;                  ///< the steady-state fit succeeded
+  bool steady_ok = false;  ///< the steady-state fit succeeded
   std::set<std::string> not_excited_steady;
-  std::set<std::string> not_excited;       ///< by the fit trials (kept at their start value)
+  std::set<std::string> not_excited;  ///< by the fit trials (kept at their start value)
 };
 
 // prepare
@@ -65,18 +65,20 @@ bool SuspectClosedLoop(const std::vector<const TrialData*>& fit, ClosedLoop sett
 // estimate
 /// Throws model::InputError when the method cannot run on the DOF's fit trials (ls and integral
 /// without a constant-force leg long enough for a steady state, nor a --steady window).
-void CheckMethodFits(model::Dof dof, const std::vector<TrialData>& trials, const IdentifyOptions& o);
-/// The least-squares answer of the chain, or the single method's estimate (IdentifyOptions::method).
-LeastSquaresAnswer EstimateStage(const DofContext& c, const IdentifyOptions& o,
+void CheckMethodFits(model::Dof dof, const std::vector<TrialData>& trials,
+                     const IdentifyOptions& o);
+/// The least-squares answer of the chain, or the single method's estimate
+/// (IdentifyOptions::method).
+LeastSquaresAnswer EstimateStage(const StageInputs& c, const IdentifyOptions& o,
                                  DofIdentification* r);
 
 // refine
-StageEstimate RefineStage(const DofContext& c, const LeastSquaresAnswer& ls,
+StageEstimate RefineStage(const StageInputs& c, const LeastSquaresAnswer& ls,
                           const IdentifyOptions& o, DofIdentification* r);
 
 // validate
-void ReportEstimates(const DofContext& c, const LeastSquaresAnswer& ls,
+void ReportEstimates(const StageInputs& c, const LeastSquaresAnswer& ls,
                      const StageEstimate& final_estimate, DofIdentification* r);
-void ValidateStage(const DofContext& c, const ValidationOptions& o, DofIdentification* r);
+void ValidateStage(const StageInputs& c, const ValidationOptions& o, DofIdentification* r);
 
 }  // namespace uuvplan::ident::stages

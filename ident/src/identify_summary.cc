@@ -27,15 +27,15 @@ IdentifySummary IdentifyResult::Summary() const {
 }
 
 PipelineSummary IdentifySummary::Shape() const {
-  PipelineSummary s{"identify", std::string(IdentifyStatusName(status)), message, num_trials,
-                    stages, {}};
+  PipelineSummary s{
+      "identify", std::string(IdentifyStatusName(status)), message, num_trials, stages, {}};
   for (const DofLine& d : dofs) {
-    s.dofs.push_back(
-        {d.dof, std::string(FinalEstimatorName(d.estimator)),
-         std::string(IdentifyStatusName(d.status)) + ", " + std::to_string(d.num_parameters) +
-             " parameter(s) from " + std::to_string(d.num_fit_trials) + " fit and " +
-             std::to_string(d.num_validate_trials) + " validate trial(s), " +
-             std::to_string(d.num_warnings) + " warning(s); " + d.message});
+    s.dofs.push_back({d.dof, std::string(FinalEstimatorName(d.estimator)),
+                      std::string(IdentifyStatusName(d.status)) + ", " +
+                          std::to_string(d.num_parameters) + " parameter(s) from " +
+                          std::to_string(d.num_fit_trials) + " fit and " +
+                          std::to_string(d.num_validate_trials) + " validate trial(s), " +
+                          std::to_string(d.num_warnings) + " warning(s); " + d.message});
   }
   return s;
 }

@@ -2,20 +2,20 @@
 // doubtful (not excited, closed loop) and what makes the fit a failure (docs/identification.md,
 // "Failure statuses": non-physical, nothing or no dynamics significant, a free run that
 // diverges or does no better than ν ≡ 0), and the free-run simulation of every trial with the
-// identified model (velocity MAE, seed 002 eq. 37; position RMS; residual whiteness).
+// identified model (velocity MAE, ref 002 eq. 37; position RMS; residual whiteness).
 #include <algorithm>
 #include <cmath>
 
 #include "drag_parameter.h"
 #include "identify_stages.h"
-#include "number_text.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::stages {
 namespace {
 
 // Dropped parameters carry the estimate they had before being dropped.
-void KeepValuesBeforeDrop(const DofContext& c, const std::vector<ParameterEstimate>& src,
+void KeepValuesBeforeDrop(const StageInputs& c, const std::vector<ParameterEstimate>& src,
                           const std::vector<ParameterState>& state, DofIdentification* r) {
   for (const auto& e : src) {
     const int j = c.model.ParameterIndex(e.name);
@@ -48,7 +48,7 @@ double DistanceOutside(const model::ParameterFamily& f, double value) {
 // Non-physical estimates (model/parameter.h, each family's admissible range: drag ≥ 0, m > 0,
 // 0 < η ≤ 2, …): outside the range by more than 3σ is a failed fit; outside but within 3σ, a
 // warning and the parameter unreliable. 3σ, not 1.96σ: a true value on the bound (kq = 0 on
-// URIS, seed 004 Table 4) then fails 0.13% of fits, not 2.5% (one-sided normal tail).
+// URIS, ref 004 Table 4) then fails 0.13% of fits, not 2.5% (one-sided normal tail).
 void CheckAdmissible(DofIdentification* r) {
   constexpr double kMargin = 3.0;  // σ
   for (const auto& e : r->params) {
@@ -56,9 +56,9 @@ void CheckAdmissible(DofIdentification* r) {
     if (e.state != ParameterState::kEstimated || !f) continue;
     const double outside = DistanceOutside(*f, e.value);
     if (!(outside > 0) && std::isfinite(e.value)) continue;
-    const std::string what = e.name + " = " + Fmt(e.value) + " ± " + Fmt(e.sigma) + " " +
-                             model::Unit(e.name, r->dof) + " is outside its admissible range (" +
-                             f->Expected() + ")";
+    const std::string what = e.name + " = " + model::Significant(e.value, 4) + " ± " +
+                             model::Significant(e.sigma, 4) + " " + model::Unit(e.name, r->dof) +
+                             " is outside its admissible range (" + f->Expected() + ")";
     const std::string why =
         IsDragParameter(e.name)
             ? " (drag only dissipates: the speed range may be too narrow to separate k and kq, "
@@ -69,13 +69,17 @@ void CheckAdmissible(DofIdentification* r) {
     // the range even within 3σ there is then no physical answer at all (bluerov yaw: the
     // output error drops kq = −0.56 ± 0.35 as insignificant and does not converge without it;
     // the least squares keep kq = −0.32 ± 0.33).
-    const bool fallback = r->output_error && r->output_error->status != OutputErrorStatus::kConverged &&
+    const bool fallback = r->output_error &&
+                          r->output_error->status != OutputErrorStatus::kConverged &&
                           r->estimator != FinalEstimator::kOutputError;
     if (!std::isfinite(e.value) || !(outside <= kMargin * e.sigma)) {
       Fail("non-physical fit: " + what + ", by more than 3σ" + why, r, /*non_physical=*/true);
     } else if (fallback) {
-      Fail("non-physical fit: " + what + ", and the output-error refinement did not converge: "
-           "no physical estimate" + why, r, /*non_physical=*/true);
+      Fail("non-physical fit: " + what +
+               ", and the output-error refinement did not converge: "
+               "no physical estimate" +
+               why,
+           r, /*non_physical=*/true);
     } else {
       r->warnings.push_back(what + ", within 3σ of it: not to be trusted" + why);
     }
@@ -100,22 +104,28 @@ bool Significant(const ParameterEstimate& e) {
 void FailWithoutEstimate(DofIdentification* r) {
   const ParameterEstimate* m = r->Param(model::param::kMass);
   if (r->estimator == FinalEstimator::kNone) {
-    Fail("no estimate: no estimator could fit these trials (see the warnings); they do not "
-         "excite the model (longer trials, steady runs at several levels, a sine)", r);
+    Fail(
+        "no estimate: no estimator could fit these trials (see the warnings); they do not "
+        "excite the model (longer trials, steady runs at several levels, a sine)",
+        r);
   } else if (std::none_of(r->params.begin(), r->params.end(), Significant)) {
-    // Seed 000 §IV-D: every estimate has a percentile error above 51.02% — numbers, but no
+    // Ref 000 §IV-D: every estimate has a percentile error above 51.02% — numbers, but no
     // usable estimate (e.g. a trial far too short for the model).
-    Fail("no parameter is identified: every estimate is insignificant (percentile error above "
-         "51.02%); the trials do not excite the model (longer trials, steady runs at several "
-         "levels, a sine)", r);
+    Fail(
+        "no parameter is identified: every estimate is insignificant (percentile error above "
+        "51.02%); the trials do not excite the model (longer trials, steady runs at several "
+        "levels, a sine)",
+        r);
   } else if (m && m->state == ParameterState::kEstimated && !m->significant &&
              std::none_of(r->params.begin(), r->params.end(), [](const ParameterEstimate& e) {
                return IsDragParameter(e.name) && Significant(e);
              })) {
     // A constant force alone is no model of the dynamics: inertia and every drag insignificant.
-    Fail("no dynamics identified: m and every drag coefficient are insignificant (percentile "
-         "error above 51.02%); only a constant force is — the trials do not excite the "
-         "dynamics (steady runs at several levels, a sine, open-loop)", r);
+    Fail(
+        "no dynamics identified: m and every drag coefficient are insignificant (percentile "
+        "error above 51.02%); only a constant force is — the trials do not excite the "
+        "dynamics (steady runs at several levels, a sine, open-loop)",
+        r);
   }
 }
 
@@ -125,7 +135,7 @@ void FailWithoutEstimate(DofIdentification* r) {
 struct ForceKinds {
   bool any = false, known = false;
 };
-ForceKinds FitForces(const DofContext& c) {
+ForceKinds FitForces(const StageInputs& c) {
   ForceKinds k;
   for (const TrialData* d : c.trials.fit) {
     for (std::size_t i = 0; i < d->force.size() && !k.known; ++i) {
@@ -145,15 +155,17 @@ ForceKinds FitForces(const DofContext& c) {
 
 // Without a force of known size the model is homogeneous in its parameters: (m, k, kq, bias,
 // η) and c·(m, k, kq, bias, η) give the same motion, so no estimate is determined, whatever
-// values are held (seed 000 §II-A: η must be known for at least one mapping and direction).
+// values are held (ref 000 §II-A: η must be known for at least one mapping and direction).
 // (No thrust at all, or no estimate, fails for its own reason.)
-void FailWithoutKnownForce(const DofContext& c, DofIdentification* r) {
+void FailWithoutKnownForce(const StageInputs& c, DofIdentification* r) {
   const ForceKinds k = FitForces(c);
   if (k.known || !k.any || r->estimator == FinalEstimator::kNone) return;
-  Fail("no force of known size: every fit trial's force goes through a mapping and direction "
-       "whose installation coefficient η is unknown (not open water), so the parameters are "
-       "determined only up to a common scale (seed 000 §II-A) and the values printed rest on the "
-       "η held at 1 — add fit legs in a mapping and direction declared open water", r);
+  Fail(
+      "no force of known size: every fit trial's force goes through a mapping and direction "
+      "whose installation coefficient η is unknown (not open water), so the parameters are "
+      "determined only up to a common scale (seed 000 §II-A) and the values printed rest on the "
+      "η held at 1 — add fit legs in a mapping and direction declared open water",
+      r);
 }
 
 // An inertia ten times below the vehicle's a priori range is no vehicle's: most often a unit
@@ -165,10 +177,10 @@ struct UnitSlip {
   const char* unit;
   bool rotation;
 };
-constexpr UnitSlip kUnitSlips[] = {{180 / M_PI, "degrees", true}, {100, "cm", false},
-                                   {1000, "mm", false}};
+constexpr UnitSlip kUnitSlips[] = {
+    {180 / M_PI, "degrees", true}, {100, "cm", false}, {1000, "mm", false}};
 
-void FailBelowPriorInertia(const DofContext& c, DofIdentification* r) {
+void FailBelowPriorInertia(const StageInputs& c, DofIdentification* r) {
   const ParameterEstimate* m = r->Param(model::param::kMass);
   if (!m || m->state != ParameterState::kEstimated || !m->significant || !(m->value > 0)) return;
   const auto [lo, hi] = c.vehicle.InertiaBounds(r->dof);
@@ -183,26 +195,29 @@ void FailBelowPriorInertia(const DofContext& c, DofIdentification* r) {
     const double miss = std::abs(std::log(m->value * s.factor / std::sqrt(lo * hi)));
     if (miss > best) continue;
     best = miss;
-    likely = ": × " + Fmt(s.factor, 3) + " gives " + Fmt(m->value * s.factor, 3) + " " + unit +
+    likely = ": × " + model::Significant(s.factor, 3) + " gives " +
+             model::Significant(m->value * s.factor, 3) + " " + unit +
              ", near the range, so the log's " + std::string(model::DofName(r->dof)) +
              " positions and velocities are most likely in " + s.unit + " — convert them to " +
              (rotation ? "rad" : "m");
   }
-  Fail("m = " + Fmt(m->value) + " ± " + Fmt(m->sigma) + " " + unit + " is " +
-           Fmt(lo / m->value, 3) + "× below the vehicle's a priori range [" + Fmt(lo) + ", " +
-           Fmt(hi) + "] " + unit +
+  Fail("m = " + model::Significant(m->value, 4) + " ± " + model::Significant(m->sigma, 4) + " " +
+           unit + " is " + model::Significant(lo / m->value, 3) +
+           "× below the vehicle's a priori range [" + model::Significant(lo, 4) + ", " +
+           model::Significant(hi, 4) + "] " + unit +
            (likely.empty() ? ": check the log's units and the vehicle file's mass and inertia"
                            : likely),
        r);
 }
 
-// A usable model's free run beats ν ≡ 0 (the velocity MAE of seed 002 eq. 37) on its fit
+// A usable model's free run beats ν ≡ 0 (the velocity MAE of ref 002 eq. 37) on its fit
 // trials and on its validate trials; a free run that diverges is no model at all.
 void CheckFreeRun(DofIdentification* r) {
   for (const auto& t : r->fit.trials) {
     if (!std::isfinite(t.velocity_mae)) {
       Fail("diverged: the free-run simulation of " + t.name +
-           " with the identified model diverges — the model is not usable for simulation", r);
+               " with the identified model diverges — the model is not usable for simulation",
+           r);
       return;
     }
   }
@@ -210,8 +225,9 @@ void CheckFreeRun(DofIdentification* r) {
   auto check = [&](const char* trials, double model_mae, double zero_mae) {
     if (!(model_mae < zero_mae) && std::isfinite(zero_mae)) {
       Fail(std::string("no better than a zero-velocity model: free-run velocity MAE on the ") +
-               trials + " trials " + Fmt(model_mae) + " " + unit + " against " + Fmt(zero_mae) +
-               " " + unit + " for ν ≡ 0", r);
+               trials + " trials " + model::Significant(model_mae, 4) + " " + unit + " against " +
+               model::Significant(zero_mae, 4) + " " + unit + " for ν ≡ 0",
+           r);
     }
   };
   check("fit", r->fit.velocity_mae_fit, r->fit.zero_velocity_mae_fit);
@@ -220,11 +236,11 @@ void CheckFreeRun(DofIdentification* r) {
 
 }  // namespace
 
-void ReportEstimates(const DofContext& c, const LeastSquaresAnswer& ls,
-                     const StageEstimate& e, DofIdentification* r) {
+void ReportEstimates(const StageInputs& c, const LeastSquaresAnswer& ls, const StageEstimate& e,
+                     DofIdentification* r) {
   for (const auto& n : ls.not_excited) {
     r->warnings.push_back(n + " is not excited by the fit trials (kept at " +
-                          Fmt(e.theta[c.model.ParameterIndex(n)]) + ")");
+                          model::Significant(e.theta[c.model.ParameterIndex(n)], 4) + ")");
   }
   r->theta = e.theta;
   r->covariance = e.covariance;
@@ -239,19 +255,21 @@ void ReportEstimates(const DofContext& c, const LeastSquaresAnswer& ls,
   FailBelowPriorInertia(c, r);
 }
 
-void ValidateStage(const DofContext& c, const ValidationOptions& o, DofIdentification* r) {
+void ValidateStage(const StageInputs& c, const ValidationOptions& o, DofIdentification* r) {
   if (r->estimator != FinalEstimator::kNone) {
     std::vector<TrialFit> fits;
     for (const TrialData* d : c.trials.fit) fits.push_back(ValidateTrial(c.model, r->theta, *d, o));
-    for (const TrialData* d : c.trials.validate) fits.push_back(ValidateTrial(c.model, r->theta, *d, o));
+    for (const TrialData* d : c.trials.validate)
+      fits.push_back(ValidateTrial(c.model, r->theta, *d, o));
     r->fit = Summarize(std::move(fits));
     CheckFreeRun(r);
     if (r->output_error && r->output_error->ok() && r->output_error->residual_lag1 > 0.8) {
-      r->warnings.push_back("the identified model does not explain the measurements to their "
-                            "noise level (output-error residuals strongly correlated, lag-1 " +
-                            Fmt(r->output_error->residual_lag1, 3) +
-                            "): model error; σ are autocorrelation-robust and describe the fit "
-                            "of this model, not the truth (try `uuvplan diagnose`)");
+      r->warnings.push_back(
+          "the identified model does not explain the measurements to their "
+          "noise level (output-error residuals strongly correlated, lag-1 " +
+          model::Significant(r->output_error->residual_lag1, 3) +
+          "): model error; σ are autocorrelation-robust and describe the fit "
+          "of this model, not the truth (try `uuvplan diagnose`)");
     }
   }
   if (r->status != IdentifyStatus::kFailed) {

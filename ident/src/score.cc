@@ -6,8 +6,8 @@
 
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/util/text.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/model/virtual_pool.h"
 
 namespace uuvplan::ident {
@@ -53,9 +53,8 @@ model::DofTruth ModelOf(const DofIdentification& identification) {
     const std::string& name = identification.parameter_names[i];
     m.params[name] = identification.theta[static_cast<Eigen::Index>(i)];
     const ParameterEstimate* e = identification.Param(name);
-    m.sigma[name] = e && e->state == ParameterState::kEstimated && std::isfinite(e->sigma)
-                        ? e->sigma
-                        : 0.0;
+    m.sigma[name] =
+        e && e->state == ParameterState::kEstimated && std::isfinite(e->sigma) ? e->sigma : 0.0;
   }
   m.settings = identification.structure.settings;
   return m;
@@ -104,8 +103,8 @@ ScoreResult ScoreCampaign(const model::Campaign& campaign, const model::Truth& g
   std::map<model::Dof, std::vector<TrialData>> prepared;
   for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
     const model::Dof dof = campaign.trials[i].dof;
-    const bool asked = options.dofs.empty() ||
-                       std::find(options.dofs.begin(), options.dofs.end(), dof) != options.dofs.end();
+    const bool asked = options.dofs.empty() || std::find(options.dofs.begin(), options.dofs.end(),
+                                                         dof) != options.dofs.end();
     if (!asked) continue;
     if (!given.dofs.count(dof)) {
       result.notes.push_back(campaign.trials[i].file + ": not scored: the model gives no dofs." +

@@ -36,7 +36,7 @@ ResidualAnalysis AnalyzeResiduals(const std::vector<Real>& r, int max_lag, int b
   m3 /= a.n;
   m4 /= a.n;
   a.std = a.n > 1 ? std::sqrt(m2 * a.n / (a.n - 1)) : 0.0;
-  // Normalised autocorrelation (seed 004 Fig. 4) with 95% bounds for white noise.
+  // Normalised autocorrelation (ref 004 Fig. 4) with 95% bounds for white noise.
   const int L = std::min(max_lag, a.n - 1);
   a.autocorrelation.assign(L + 1, 0.0);
   a.bound95 = 1.959963984540054 / std::sqrt(static_cast<double>(a.n));
@@ -74,7 +74,8 @@ ResidualAnalysis AnalyzeResiduals(const std::vector<Real>& r, int max_lag, int b
     for (int b = 0; b <= bins; ++b) a.histogram.edges[b] = lo + (hi - lo) * b / bins;
     a.histogram.counts.assign(bins, 0);
     for (double v : r) {
-      const int b = std::clamp(static_cast<int>(std::floor((v - lo) / (hi - lo) * bins)), 0, bins - 1);
+      const int b =
+          std::clamp(static_cast<int>(std::floor((v - lo) / (hi - lo) * bins)), 0, bins - 1);
       ++a.histogram.counts[b];
     }
   }
@@ -127,7 +128,8 @@ SampleTimes MergedTimes(model::TimesView a, model::TimesView b, std::vector<doub
 template <class Visit>
 void ForEachVelocityReference(const TrialData& trial, const Visit& visit) {
   if (trial.has_velocity()) {
-    for (std::size_t i = 0; i < trial.velocity.size(); ++i) visit(trial.velocity.t[i], trial.velocity.y[i]);
+    for (std::size_t i = 0; i < trial.velocity.size(); ++i)
+      visit(trial.velocity.t[i], trial.velocity.y[i]);
     return;
   }
   const SmoothedSignal& v = trial.velocity_estimate;
@@ -209,8 +211,8 @@ class FreeRun {
 
  private:
   bool dense_ = false;
-  std::vector<double> times_;                 ///< the simulated times
-  std::vector<double> position_, velocity_;   ///< the free run at times_
+  std::vector<double> times_;                ///< the simulated times
+  std::vector<double> position_, velocity_;  ///< the free run at times_
   std::size_t g_ = 0;
 };
 
@@ -222,7 +224,7 @@ bool SimulatedAtPositionTimes(const TrialData& trial, double step_s) {
   return span.count > 0 && span.count == trial.position.size() && !Dense(span, step_s);
 }
 
-// The free run's errors, summed: seed 002 eq. 37's velocity MAE (and the zero-velocity model's
+// The free run's errors, summed: ref 002 eq. 37's velocity MAE (and the zero-velocity model's
 // on the same samples) and the position RMS, the position errors kept (float) for the residual
 // analysis.
 struct FreeRunErrors {
@@ -295,7 +297,8 @@ void ScoreStoredFreeRun(const model::DofModel& model, const Eigen::VectorXd& the
   if (trial.has_position()) {
     perr->reserve(trial.position.size());
     for (std::size_t k = 0; k < trial.position.size(); ++k) {
-      if (trial.position.t[k] >= 0) errors.AddPosition(trial.position.y[k], run.At(trial.position.t[k], 0));
+      if (trial.position.t[k] >= 0)
+        errors.AddPosition(trial.position.y[k], run.At(trial.position.t[k], 0));
     }
   }
   errors.Fill(f);

@@ -86,7 +86,7 @@ void CheckSampling(const model::Campaign& campaign, const model::TrialEntry& tri
   const Place at(item.file(), item.line(), item.KeyPath("file"));
   const auto& log = trial.log;
   const double span = log.t.back() - log.t.front();
-  if (span > model::plausible::kDuration.upper) {
+  if (span > plausible::kDuration.upper) {
     Implausible(at, trial.file + ": column 't' spans " + Significant(span, 4) +
                         " s, expected a trial of at most a day (is t in ms?)");
   }
@@ -100,7 +100,8 @@ void CheckSampling(const model::Campaign& campaign, const model::TrialEntry& tri
   if (!spec || column.empty()) return;
   const double ratio = MedianInterval(log.t, column) * spec->rate_hz;
   if (std::isnan(ratio) || (ratio > 0.25 && ratio < 4)) return;
-  const std::string name = std::string(velocity ? "vel_" : "pos_") + std::string(DofName(trial.dof));
+  const std::string name =
+      std::string(velocity ? "vel_" : "pos_") + std::string(DofName(trial.dof));
   if (ratio > 300 && ratio < 3000) {
     Implausible(at, trial.file + ": column 't' looks like milliseconds: '" + name +
                         "' is sampled every " + Significant(ratio / spec->rate_hz, 4) +
@@ -115,14 +116,14 @@ void CheckSampling(const model::Campaign& campaign, const model::TrialEntry& tri
 }
 
 // Every logged force or torque within a thousand weights (× the largest size, for a torque).
-void CheckForces(const model::Vehicle& vehicle, const model::TrialEntry& trial,
-                 const Value& item) {
+void CheckForces(const model::Vehicle& vehicle, const model::TrialEntry& trial, const Value& item) {
   const double size = *std::max_element(vehicle.size.begin(), vehicle.size.end());
   for (model::Dof dof : model::kAllDofs) {
     const std::vector<double>& force = trial.log.force[model::Index(dof)];
-    const double scale = model::plausible::kGravity * vehicle.mass * (model::IsRotational(dof) ? size : 1.0);
+    const double scale =
+        plausible::kGravity * vehicle.mass * (model::IsRotational(dof) ? size : 1.0);
     for (std::size_t i = 0; i < force.size(); ++i) {
-      if (model::plausible::kForceRatio.Holds(std::abs(force[i]) / scale) || std::isnan(force[i])) {
+      if (plausible::kForceRatio.Holds(std::abs(force[i]) / scale) || std::isnan(force[i])) {
         continue;
       }
       const std::string unit(model::ForceUnit(dof));
@@ -130,9 +131,9 @@ void CheckForces(const model::Vehicle& vehicle, const model::TrialEntry& trial,
                   trial.file + ": column 'force_" + std::string(model::DofName(dof)) +
                       "' at t = " + model::ShortestNumber(trial.log.t[i]) + " s (data row " +
                       std::to_string(i + 1) + "): expected at most " +
-                      Significant(model::plausible::kForceRatio.upper * scale, 3) + " " + unit +
-                      " (" + Significant(model::plausible::kForceRatio.upper, 4) +
-                      " × the vehicle's weight, " + Significant(scale, 3) + " " + unit +
+                      Significant(plausible::kForceRatio.upper * scale, 3) + " " + unit + " (" +
+                      Significant(plausible::kForceRatio.upper, 4) + " × the vehicle's weight, " +
+                      Significant(scale, 3) + " " + unit +
                       (model::IsRotational(dof) ? " × its largest size" : "") + "), got " +
                       model::ShortestNumber(force[i]) + " " + unit);
       break;
@@ -150,7 +151,8 @@ void CheckCampaignTrial(const model::Campaign& campaign, std::size_t index, cons
 
 void CheckCampaignWork(const model::Campaign& campaign, const Value& trials) {
   double rows = 0;
-  for (const model::TrialEntry& trial : campaign.trials) rows += static_cast<double>(trial.log.size());
+  for (const model::TrialEntry& trial : campaign.trials)
+    rows += static_cast<double>(trial.log.size());
   if (rows > model::limits::kMaxCampaignRows) {
     trials.Fail(std::to_string(campaign.trials.size()) + " trials hold " + Significant(rows, 3) +
                 " rows, more than the " + Significant(model::limits::kMaxCampaignRows, 3) +

@@ -1,4 +1,4 @@
-// Cross-checks of a campaign's trials (issue #15), beyond each file's own format: what makes
+// Cross-checks of a campaign's trials, beyond each file's own format: what makes
 // identification silently meaningless. Run by ReadCampaign on each trial as it is read.
 //  - work: all rows of the campaign within the work limits (model/work_limits.h; refused
 //    whatever the user accepts);

@@ -7,8 +7,8 @@
 #include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/io/files.h"
 #include "uuvplan/io/trial_log_csv.h"
-#include "uuvplan/model/util/text.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::io {
 
@@ -20,13 +20,14 @@ namespace {
 void CheckNewId(const model::Campaign& campaign, const std::string& id, const std::string& file,
                 const fs::path& dir) {
   if (id.empty() || id.find_first_of("/\\") != std::string::npos || id[0] == '.') {
-    throw model::InputError("--trial " + id, "expected a trial id without '/' (it names "
-                                             "trials/<id>.csv)");
+    throw model::InputError("--trial " + id,
+                            "expected a trial id without '/' (it names "
+                            "trials/<id>.csv)");
   }
   for (const model::TrialEntry& t : campaign.trials) {
     if (t.file == file || fs::path(t.path).lexically_normal() == (dir / file).lexically_normal()) {
-      throw model::InputError(campaign.path + ": trials", "trial " + id +
-                                                              " is already logged (" + file + ")");
+      throw model::InputError(campaign.path + ": trials",
+                              "trial " + id + " is already logged (" + file + ")");
     }
   }
   if (fs::exists(dir / file)) {
@@ -44,9 +45,8 @@ void CheckLog(const model::Vehicle& vehicle, const LoggedTrial& trial) {
   const std::string dof(model::DofName(trial.dof));
   if (!trial.mapping.empty() &&
       std::find(names.begin(), names.end(), trial.mapping) == names.end()) {
-    throw model::InputError("--mapping " + trial.mapping,
-                            "expected a mapping of the vehicle on " + dof + ": " +
-                                model::Join(names));
+    throw model::InputError("--mapping " + trial.mapping, "expected a mapping of the vehicle on " +
+                                                              dof + ": " + model::Join(names));
   }
   if (trial.mapping.empty() && names.size() != 1) {
     throw model::InputError("--mapping", "required: the vehicle has " +
@@ -55,8 +55,10 @@ void CheckLog(const model::Vehicle& vehicle, const LoggedTrial& trial) {
   }
   const model::TrialLog log = ReadTrialLog(trial.csv, names);
   if (!log.HasForce(trial.dof)) {
-    throw model::InputError(trial.csv, "no force_" + dof + " column: expected the nominal force "
-                                       "of the trial's DOF (--dof " + dof + ")");
+    throw model::InputError(trial.csv, "no force_" + dof +
+                                           " column: expected the nominal force "
+                                           "of the trial's DOF (--dof " +
+                                           dof + ")");
   }
   if (!log.HasPosition(trial.dof) && !log.HasVelocity(trial.dof)) {
     throw model::InputError(trial.csv, "no pos_" + dof + " or vel_" + dof + " column");
@@ -98,8 +100,8 @@ model::Campaign AppendLoggedTrial(const std::string& campaign_path, const Logged
     for (std::size_t at; (at = message.find(next.string())) != std::string::npos;) {
       message.replace(at, next.string().size(), yaml.string());
     }
-    throw model::InputError(trial.csv, "not logged (" + yaml.string() +
-                                           " is unchanged): with it, " + message);
+    throw model::InputError(trial.csv,
+                            "not logged (" + yaml.string() + " is unchanged): with it, " + message);
   } catch (...) {
     fs::remove(next, ec);
     fs::remove(dir / file, ec);

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -107,13 +107,11 @@ TrialEntry ParseTrial(const Value& v, const Vehicle& vehicle, const TrialEntry* 
 
 }  // namespace
 
-const char* TrialUseName(TrialUse use) { return use == TrialUse::kFit ? "fit" : "validate"; }
-
 // A campaign directory stands for its campaign.yaml.
 Campaign ReadCampaign(const std::string& given) {
-  const std::string path =
-      std::filesystem::is_directory(given) ? (std::filesystem::path(given) / "campaign.yaml").string()
-                                           : given;
+  const std::string path = std::filesystem::is_directory(given)
+                               ? (std::filesystem::path(given) / "campaign.yaml").string()
+                               : given;
   return Guarded(path, [&] {
     const MapValue m =
         LoadYamlMap(path, "a campaign (vehicle, pool, trials)", "a map of campaign keys");
@@ -156,7 +154,7 @@ void WriteCampaignYaml(const std::string& path, const Campaign& campaign) {
     out << YAML::Key << "dof" << YAML::Value << std::string(DofName(trial.dof));
     if (!trial.mapping.empty()) out << YAML::Key << "mapping" << YAML::Value << trial.mapping;
     out << YAML::Key << "ballast_steps" << YAML::Value << trial.ballast_steps;
-    out << YAML::Key << "use" << YAML::Value << TrialUseName(trial.use);
+    out << YAML::Key << "use" << YAML::Value << std::string(TrialUseName(trial.use));
     if (trial.has_start) out << YAML::Key << "start" << YAML::Value << ShortestNumber(trial.start);
     out << YAML::EndMap;
   }

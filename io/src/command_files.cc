@@ -32,9 +32,9 @@ std::string HeadingText(const planner::TrialCommands& t) {
 std::string RunSheetRow(int order, const planner::TrialCommands& t) {
   std::ostringstream row;
   row << "| " << order << " | " << t.id << " | " << model::DofName(t.dof) << " | "
-      << model::TrialKindName(t.kind) << " | " << model::Join(t.mappings) << " | "
-      << StartText(t) << " | " << HeadingText(t) << " | " << model::DurationText(t.duration)
-      << " | " << Along(t.dof, t.travel[0]) << " to " << Along(t.dof, t.travel[1]) << " | "
+      << model::TrialKindName(t.kind) << " | " << model::Join(t.mappings) << " | " << StartText(t)
+      << " | " << HeadingText(t) << " | " << model::DurationText(t.duration) << " | "
+      << Along(t.dof, t.travel[0]) << " to " << Along(t.dof, t.travel[1]) << " | "
       << Signed(t.dof, t.abort[0]) << " / " << Signed(t.dof, t.abort[1]) << " | " << t.id
       << ".csv |\n";
   return row.str();

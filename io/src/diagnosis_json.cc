@@ -4,6 +4,7 @@
 
 #include "uuvplan/io/identify_json.h"
 #include "uuvplan/io/json_value.h"
+#include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::io {
 namespace {
@@ -76,14 +77,14 @@ json StaticMapsJson(const ident::Finding& f) {
   return out;
 }
 
-json FindingJson(const ident::Finding& f) {
+json FindingJson(const ident::DiagnosisResult& r, const ident::Finding& f) {
   json params = json::object();
   for (const auto& p : f.params) params[p.name] = {{"value", p.value}, {"sigma", p.sigma}};
   json maps = json::array();
   for (const auto& m : f.thrust_maps) maps.push_back(ThrustMapJson(m));
   return {{"effect", f.effect},
           {"dof", std::string(model::DofName(f.dof))},
-          {"what", f.what},
+          {"what", text::FindingSentence(r, f)},
           {"extension", {{"params", params}}},
           {"gain",
            {{"metric", f.gain.metric},
@@ -100,20 +101,13 @@ json FindingJson(const ident::Finding& f) {
 }
 
 json CandidateTestJson(const ident::CandidateTest& t) {
-  return {{"effect", t.effect},
-          {"dof", std::string(model::DofName(t.dof))},
-          {"detail", t.detail},
-          {"round", t.round},
-          {"statistic", t.statistic},
-          {"added_parameters", t.added_parameters},
-          {"p_value", t.p_value},
-          {"max_z", JsonNumber(t.max_z)},
-          {"significant", t.significant},
-          {"gain", JsonNumber(t.gain)},
-          {"unscored", t.unscored},
-          {"non_physical", t.non_physical},
-          {"accepted", t.accepted},
-          {"not_chosen", t.not_chosen},
+  return {{"effect", t.effect},           {"dof", std::string(model::DofName(t.dof))},
+          {"detail", t.detail},           {"round", t.round},
+          {"statistic", t.statistic},     {"added_parameters", t.added_parameters},
+          {"p_value", t.p_value},         {"max_z", JsonNumber(t.max_z)},
+          {"significant", t.significant}, {"gain", JsonNumber(t.gain)},
+          {"unscored", t.unscored},       {"non_physical", t.non_physical},
+          {"accepted", t.accepted},       {"not_chosen", t.not_chosen},
           {"removed", t.removed}};
 }
 
@@ -133,13 +127,14 @@ json BreakdownJson(const ident::ErrorBreakdown& b) {
 
 json DiagnosisJson(const ident::DiagnosisResult& r) {
   json findings = json::array(), tests = json::array(), breakdown = json::object();
-  for (const auto& f : r.findings) findings.push_back(FindingJson(f));
+  for (const auto& f : r.findings) findings.push_back(FindingJson(r, f));
   for (const auto& t : r.tests) tests.push_back(CandidateTestJson(t));
   json extended = json::object(), standard = json::object();
   for (const auto& e : r.extended) extended[std::string(model::DofName(e.dof))] = ModelJson(e);
   for (const auto& e : r.standard) standard[std::string(model::DofName(e.dof))] = ModelJson(e);
   json not_diagnosed = json::object();
-  for (const auto& [dof, why] : r.not_diagnosed) not_diagnosed[std::string(model::DofName(dof))] = why;
+  for (const auto& [dof, why] : r.not_diagnosed)
+    not_diagnosed[std::string(model::DofName(dof))] = why;
   for (const auto& b : r.breakdowns)
     breakdown[std::string(model::DofName(b.dof))] = BreakdownJson(b);
   return {{"nominal", IdentifyJson(r.nominal)},

@@ -81,7 +81,7 @@ json FigureJson(const json& per_trial, double fit, double validate, double overa
 
 json FitTrialJson(const ident::TrialFit& t) {
   return {{"file", t.name},
-          {"use", TrialUseName(t.use)},
+          {"use", std::string(model::TrialUseName(t.use))},
           {"velocity_mae", JsonNumber(t.velocity_mae)},
           {"zero_velocity_mae", JsonNumber(t.zero_velocity_mae)},
           {"velocity_reference", t.velocity_reference},
@@ -104,8 +104,9 @@ json FitJson(const ident::FitSummary& f) {
            FigureJson(mae_trials, f.velocity_mae_fit, f.velocity_mae_validate, f.velocity_mae_all)},
           {"position_rms",
            FigureJson(rms_trials, f.position_rms_fit, f.position_rms_validate, f.position_rms_all)},
-          {"zero_velocity_mae", {{"fit", JsonNumber(f.zero_velocity_mae_fit)},
-                                 {"validate", JsonNumber(f.zero_velocity_mae_validate)}}},
+          {"zero_velocity_mae",
+           {{"fit", JsonNumber(f.zero_velocity_mae_fit)},
+            {"validate", JsonNumber(f.zero_velocity_mae_validate)}}},
           {"trials", trials}};
 }
 
@@ -192,7 +193,7 @@ json OutputErrorStageJson(const ident::OutputErrorResult& oe) {
           {"params", EstimatesJson(oe.estimates)}};
 }
 
-// Seed 004 eq. 15 with its whole trace: the physical parameters and their σ after every
+// Ref 004 eq. 15 with its whole trace: the physical parameters and their σ after every
 // update (rows in campaign time), the final estimate with its covariance.
 json RlsStageJson(const ident::RlsDofResult& r) {
   json estimated = json::array();
@@ -201,16 +202,17 @@ json RlsStageJson(const ident::RlsDofResult& r) {
       estimated.push_back(r.names[j]);
     }
   }
-  return {{"status", std::string(ident::FitStatusName(r.status))},
-          {"message", r.message},
-          {"forgetting", r.lambda},
-          {"rows", r.psi.t.size()},
-          {"parameter_names", r.names},
-          {"estimated", estimated},
-          {"not_excited", r.not_excited},
-          {"residual_autocovariance", {JsonNumber(r.psi.gamma0), JsonNumber(r.psi.gamma1)}},
-          {"covariance", MatrixJson(r.covariance)},
-          {"trace", {{"t", r.psi.t}, {"theta", MatrixJson(r.theta)}, {"sigma", MatrixJson(r.sigma)}}}};
+  return {
+      {"status", std::string(ident::FitStatusName(r.status))},
+      {"message", r.message},
+      {"forgetting", r.lambda},
+      {"rows", r.psi.t.size()},
+      {"parameter_names", r.names},
+      {"estimated", estimated},
+      {"not_excited", r.not_excited},
+      {"residual_autocovariance", {JsonNumber(r.psi.gamma0), JsonNumber(r.psi.gamma1)}},
+      {"covariance", MatrixJson(r.covariance)},
+      {"trace", {{"t", r.psi.t}, {"theta", MatrixJson(r.theta)}, {"sigma", MatrixJson(r.sigma)}}}};
 }
 
 json StagesJson(const ident::DofIdentification& d) {
@@ -242,7 +244,7 @@ json TrialReportJson(const ident::TrialReport& t) {
   return {{"index", t.index},
           {"file", t.file},
           {"dof", std::string(model::DofName(t.dof))},
-          {"use", TrialUseName(t.use)},
+          {"use", std::string(model::TrialUseName(t.use))},
           {"outliers", outliers},
           {"gaps", gaps},
           {"notes", t.notes}};

@@ -35,11 +35,13 @@ void AddInformationJson(const planner::ScheduleInformation& info, nlohmann::json
     trials[i]["information"] = InformationJson(info.trials[i]);
   }
   nlohmann::json dofs = nlohmann::json::object();
-  for (const auto& [dof, s] : info.dofs) dofs[std::string(model::DofName(dof))] = InformationJson(s);
+  for (const auto& [dof, s] : info.dofs)
+    dofs[std::string(model::DofName(dof))] = InformationJson(s);
   (*j)["information"] = {
       {"point", "the nominal parameters (centre of the a priori box)"},
-      {"criteria", "relative information M_rel = D·M·D, D = diag(|theta|): D = log det, "
-                   "A = -log tr M_rel^-1, E = log lambda_min (natural log, larger is better)"},
+      {"criteria",
+       "relative information M_rel = D·M·D, D = diag(|theta|): D = log det, "
+       "A = -log tr M_rel^-1, E = log lambda_min (natural log, larger is better)"},
       {"assumption", planner::kPredictedSigmaAssumption},
       {"dofs", dofs}};
 }

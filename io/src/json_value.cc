@@ -113,7 +113,8 @@ json LoadJson(const std::string& path) {
   } catch (const json::exception& e) {
     // A number beyond the double range ("2e+308": out_of_range.406, found by fuzz_plan).
     std::string why = e.what();
-    if (const auto bracket = why.find("] "); bracket != std::string::npos) why = why.substr(bracket + 2);
+    if (const auto bracket = why.find("] "); bracket != std::string::npos)
+      why = why.substr(bracket + 2);
     throw model::InputError(path, "not valid JSON: " + WithoutQuotedInput(why));
   }
 }

@@ -1,13 +1,153 @@
+// The loop's JSON (loop_json.h).
 #include "uuvplan/io/loop_json.h"
 
 #include <cmath>
 #include <limits>
 
+#include "uuvplan/io/identify_json.h"
 #include "uuvplan/io/json_value.h"
+#include "uuvplan/io/pool_verdict_json.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/parameter.h"
+#include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::io {
+
+using nlohmann::json;
+
+// ---------------------------------------------------------------------------------------------
+// Writing.
+
+json CandidatesJson(const std::vector<planner::CandidateGain>& candidates) {
+  json j = json::array();
+  for (const auto& c : candidates) {
+    j.push_back({{"dof", std::string(model::DofName(c.dof))},
+                 {"trial", c.trial},
+                 {"parameter", c.parameter},
+                 {"sigma_now", JsonNumber(c.sigma_now)},
+                 {"sigma_after", JsonNumber(c.sigma_after)},
+                 {"gain", JsonNumber(c.gain)},
+                 {"trials_to_target", JsonNumber(c.trials_to_target)},
+                 {"first_estimate", c.first_estimate},
+                 {"negligible", c.negligible}});
+  }
+  return j;
+}
+
+json ProgressJson(const std::vector<planner::DofProgress>& progress) {
+  json j = json::object();
+  for (const auto& p : progress) {
+    json interest = json::object();
+    for (const auto& q : p.interest) {
+      interest[q.name] = std::isfinite(q.value) ? json{{"value", JsonNumber(q.value)},
+                                                       {"sigma", JsonNumber(q.sigma)},
+                                                       {"percent", JsonNumber(q.percent)},
+                                                       {"unit", model::Unit(q.name, p.dof)},
+                                                       {"held", q.held},
+                                                       {"physical", q.physical},
+                                                       {"flag", q.flag}}
+                                                : json(nullptr);
+    }
+    json consistency = nullptr;
+    if (p.consistency.tested) {
+      consistency = {{"chi2", JsonNumber(p.consistency.chi2)},
+                     {"dof", p.consistency.dof},
+                     {"p_value", JsonNumber(p.consistency.p_value)},
+                     {"level", p.consistency.level},
+                     {"consistent", p.consistency.consistent},
+                     {"worst", p.consistency.worst},
+                     {"worst_sigmas", JsonNumber(p.consistency.worst_sigmas)}};
+    }
+    j[std::string(model::DofName(p.dof))] = {{"converged", p.converged},
+                                             {"worst", p.worst},
+                                             {"worst_percent", JsonNumber(p.worst_percent)},
+                                             {"trials", p.trials},
+                                             {"usable", p.usable},
+                                             {"status", p.status},
+                                             {"precise", p.precise},
+                                             {"trusted", p.trusted},
+                                             {"doubts", p.doubts},
+                                             {"refusal", p.refusal},
+                                             {"consistency", consistency},
+                                             {"interest", interest}};
+  }
+  return j;
+}
+
+json PredictedJson(model::Dof dof, const planner::PredictedPrecision& p) {
+  return {{std::string(model::DofName(dof)), PredictedToJson(p)}};
+}
+
+namespace {
+
+json SigmaJson(const planner::LoopIteration& it) {
+  json j = json::object();
+  for (const auto& [name, pa] : it.sigma) {
+    j[name] = {{"predicted", JsonNumber(pa[0])},
+               {"achieved", JsonNumber(pa[1])},
+               {"unit", model::Unit(name, it.dof)}};
+  }
+  return j;
+}
+
+json IterationJson(const planner::LoopIteration& it) {
+  json params = json::object();
+  for (const auto& [dof, estimates] : it.params) {
+    json p = json::object();
+    for (const auto& e : estimates)
+      p[e.name] = {{"value", JsonNumber(e.value)}, {"sigma", JsonNumber(e.sigma)}};
+    params[std::string(model::DofName(dof))] = p;
+  }
+  return {{"trial", TrialToJson(it.trial)},
+          {"params", params},
+          {"dof", std::string(model::DofName(it.dof))},
+          {"source", it.source},
+          {"start", it.start},
+          {"pool_time", it.pool_time},
+          {"predicted", PredictedJson(it.dof, it.predicted)},
+          {"sigma", SigmaJson(it)},
+          {"candidates", CandidatesJson(it.candidates)},
+          {"new_information", it.new_information},
+          {"progress", ProgressJson(it.progress)},
+          {"notes", it.notes}};
+}
+
+}  // namespace
+
+json LoopResultJson(const planner::LoopResult& r, const planner::LoopOptions& lo,
+                    const planner::PoolVerdict& verdict, const model::Pool& pool, int exit_status) {
+  json iterations = json::array();
+  for (const auto& it : r.iterations) iterations.push_back(IterationJson(it));
+  json dof_time = json::object();
+  for (const auto& [dof, t] : r.dof_pool_time) dof_time[std::string(model::DofName(dof))] = t;
+  return {{"iterations", iterations},
+          {"converged", r.converged},
+          {"pool_time", r.pool_time},
+          {"status", std::string(planner::LoopStatusName(r.status))},
+          {"exit_status", exit_status},
+          {"message", text::LoopEndMessage(r, verdict, pool)},
+          {"target", lo.step.target_percent},
+          {"budget", lo.budget},
+          {"seed", lo.seed},
+          {"dof_pool_time", dof_time},
+          {"progress", ProgressJson(r.progress)},
+          {"estimates", IdentifyJson(r.estimates)},
+          {"verdict", PoolVerdictJson(verdict, pool)}};
+}
+
+json RefusedLoopJson(const planner::PoolVerdict& verdict, const model::Pool& pool,
+                     int exit_status) {
+  return {{"iterations", json::array()},
+          {"converged", false},
+          {"status", std::string(planner::LoopStatusName(planner::LoopStatus::kInfeasible))},
+          {"exit_status", exit_status},
+          {"message", text::VerdictSentence(verdict, pool)},
+          {"verdict", PoolVerdictJson(verdict, pool)}};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading.
 
 namespace {
 

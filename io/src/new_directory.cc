@@ -46,9 +46,10 @@ void MoveIntoPlace(const fs::path& tmp, const fs::path& out, const std::string& 
                    const std::string& what) {
   // Durable before visible: every directory of `tmp` synced, then one rename(2) over the empty
   // `out` (it replaces an empty directory atomically; the OutputClaim on `out`, when the caller
-  // holds one, keeps other runs away), then the parent synced (issue #15).
+  // holds one, keeps other runs away), then the parent synced.
   std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(tmp, ec); !ec && it != fs::end(it); it.increment(ec)) {
+  for (auto it = fs::recursive_directory_iterator(tmp, ec); !ec && it != fs::end(it);
+       it.increment(ec)) {
     if (it->is_directory(ec)) SyncDirectory(it->path().string());
   }
   SyncDirectory(tmp.string());

@@ -48,25 +48,29 @@ OutputClaim::OutputClaim(const std::string& dir) : path_(Normal(dir)) {
   if (Claimed().count(path_)) return;  // nested
   std::error_code ec;
   if (fs::exists(path_, ec) && !IsEmptyDirectory(path_)) {
-    throw model::InputError(dir, "output directory exists and is not empty; choose a new --out "
-                                 "(nothing is overwritten)");
+    throw model::InputError(dir,
+                            "output directory exists and is not empty; choose a new --out "
+                            "(nothing is overwritten)");
   }
   if (const fs::path parent = fs::path(path_).parent_path(); !parent.empty()) {
     fs::create_directories(parent, ec);
   }
   created_ = ::mkdir(path_.c_str(), 0777) == 0;
   fd_ = ::open(path_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd_ < 0) throw model::InputError(dir, "cannot create the output directory: " + std::string(std::strerror(errno)));
+  if (fd_ < 0)
+    throw model::InputError(
+        dir, "cannot create the output directory: " + std::string(std::strerror(errno)));
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     ::close(fd_);
-    throw model::InputError(dir, "another run is writing " + dir +
-                                     "; wait for it to finish or choose another --out");
+    throw model::InputError(
+        dir, "another run is writing " + dir + "; wait for it to finish or choose another --out");
   }
   // Claimed; another run may have finished its campaign here since the check above.
   if (!IsEmptyDirectory(path_)) {
     ::close(fd_);
-    throw model::InputError(dir, "another run wrote a campaign there; choose a new --out "
-                                 "(nothing is overwritten)");
+    throw model::InputError(dir,
+                            "another run wrote a campaign there; choose a new --out "
+                            "(nothing is overwritten)");
   }
   Claimed().insert(path_);
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "uuvplan/text/verdict_text.h"
+
 namespace uuvplan::io {
 namespace {
 
@@ -25,8 +27,11 @@ nlohmann::json TravelJson(const model::Pool& pool, model::Dof dof, double free) 
 nlohmann::json PointsJson(const planner::DofVerdict& d) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& p : d.points) {
-    out.push_back({{"m", p.point.m}, {"k", p.point.k}, {"kq", p.point.kq},
-                   {"label", p.point.label}, {"hosted", p.hosted}});
+    out.push_back({{"m", p.point.m},
+                   {"k", p.point.k},
+                   {"kq", p.point.kq},
+                   {"label", text::BoxPointLabel(p.point, d.dof)},
+                   {"hosted", p.hosted}});
   }
   return out;
 }
@@ -39,11 +44,12 @@ nlohmann::json PoolVerdictJson(const planner::PoolVerdict& v, const model::Pool&
     dofs[std::string(model::DofName(d.dof))] = {
         {"hosted", d.hosted},
         {"limit", std::string(planner::PoolLimitName(d.limit))},
-        {"reason", d.reason},
+        {"reason", text::DofReason(v, d, pool)},
         {"extent", TravelJson(pool, d.dof, d.extent)},
         {"need", TravelJson(pool, d.dof, d.need)},
         {"need_verified", d.need_verified},
-        {"need_refuted", d.need_verified ? TravelJson(pool, d.dof, d.need_refuted) : nlohmann::json()},
+        {"need_refuted",
+         d.need_verified ? TravelJson(pool, d.dof, d.need_refuted) : nlohmann::json()},
         {"undetermined", d.determinacy.undetermined},
         {"hostability", std::string(planner::HostabilityName(d.hostability))},
         {"points", PointsJson(d)},
@@ -51,16 +57,24 @@ nlohmann::json PoolVerdictJson(const planner::PoolVerdict& v, const model::Pool&
   }
   const planner::RequiredPool& r = v.required;
   const double m2 = 2 * pool.margin;
-  nlohmann::json required = {
-      {"length", r.length}, {"width", r.width}, {"depth", r.depth}, {"unit", "m"},
-      {"measure", "wall to wall"},
-      {"free", {{"length", r.length - m2}, {"width", r.width - m2}, {"depth", r.depth - m2},
-                {"unit", "m"}}},
-      {"turns", r.turns}, {"turns_unit", "turns"}, {"exists", r.exists}};
+  nlohmann::json required = {{"length", r.length},
+                             {"width", r.width},
+                             {"depth", r.depth},
+                             {"unit", "m"},
+                             {"measure", "wall to wall"},
+                             {"free",
+                              {{"length", r.length - m2},
+                               {"width", r.width - m2},
+                               {"depth", r.depth - m2},
+                               {"unit", "m"}}},
+                             {"turns", r.turns},
+                             {"turns_unit", "turns"},
+                             {"exists", r.exists}};
   return {{"hosted", v.hosted},
           {"hostability", std::string(planner::HostabilityName(v.hostability))},
-          {"sentence", v.sentence},
-          {"lines", planner::VerdictLines(v, pool)}, {"dofs", dofs},
+          {"sentence", text::VerdictSentence(v, pool)},
+          {"lines", text::VerdictLines(v, pool)},
+          {"dofs", dofs},
           {"required", required}};
 }
 

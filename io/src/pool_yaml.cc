@@ -14,8 +14,8 @@ namespace fs = std::filesystem;
 
 Pool ReadPool(const std::string& path) {
   return Guarded(path, [&] {
-    const MapValue m =
-        LoadYamlMap(path, "a pool (name, length, width, depth, margin, max_turns)", "a map of pool keys");
+    const MapValue m = LoadYamlMap(path, "a pool (name, length, width, depth, margin, max_turns)",
+                                   "a map of pool keys");
     m.AllowOnly({"name", "length", "width", "depth", "margin", "max_turns"});
     Pool pool;
     const Value name = m.Optional("name");

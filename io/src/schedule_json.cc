@@ -13,8 +13,10 @@
 #include <set>
 #include <sstream>
 
+#include "uuvplan/io/information_json.h"
 #include "uuvplan/io/json_value.h"
 #include "uuvplan/io/plausibility.h"
+#include "uuvplan/io/pool_verdict_json.h"
 
 namespace uuvplan::io {
 
@@ -66,17 +68,15 @@ void KindFieldsToJson(const model::TrialDesign& d, json* j) {
   }
 }
 
-// The sampled nominal profile (issue #17: any tool can replay it) and the start position.
+// The sampled nominal profile (any tool can replay it) and the start position.
 void ProfileToJson(const PlannedTrial& trial, json* j) {
   if (!trial.profile.t.empty()) {
-    (*j)["profile"] = {{"t", trial.profile.t},
-                       {"force", trial.profile.force},
-                       {"mapping", trial.profile.mapping}};
+    (*j)["profile"] = {
+        {"t", trial.profile.t}, {"force", trial.profile.force}, {"mapping", trial.profile.mapping}};
   }
   if (!trial.start.from.empty()) {
-    (*j)["start"] = {{"value", trial.start.value},
-                     {"unit", trial.start.unit},
-                     {"from", trial.start.from}};
+    (*j)["start"] = {
+        {"value", trial.start.value}, {"unit", trial.start.unit}, {"from", trial.start.from}};
   }
 }
 
@@ -116,7 +116,7 @@ model::TrialKind KindOf(const JsonValue& v) {
 // A trial's or leg's duration: positive, and plausible for a pool trial (parameter.h).
 double PlausibleDuration(const JsonValue& v) {
   const double duration = PositiveNumber(v, "s");
-  CheckPlausible(v, duration, model::plausible::kDuration);
+  CheckPlausible(v, duration, plausible::kDuration);
   return duration;
 }
 
@@ -168,8 +168,8 @@ void SwitchedFieldsOf(const JsonValue& j, model::TrialDesign* d) {
     s.phase = Number(c.Required("phase", "rad"));
     d->components.push_back(s);
   }
-  d->mapping_neg = String(j.Required("mapping_neg", "the mapping of the negative half"),
-                          "a mapping name");
+  d->mapping_neg =
+      String(j.Required("mapping_neg", "the mapping of the negative half"), "a mapping name");
   const JsonValue floor = j.Required("floor", "[pos, neg] smallest |force| of each mapping");
   const json& f = floor.json();
   if (!f.is_array() || f.size() != 2 || !f[0].is_number() || !f[1].is_number() ||
@@ -230,7 +230,7 @@ std::array<double, 2> TravelOf(const JsonValue& v) {
 
 std::string PredictedAssumptionOf(const JsonValue& predicted) {
   const auto a = predicted.Optional("assumption");
-  if (!a) return planner::kUnrecordedSigmaAssumption;
+  if (!a) return kUnrecordedSigmaAssumption;
   return String(*a, "the sentence saying what the predicted σ rest on");
 }
 
@@ -304,7 +304,8 @@ json TrialToJson(const PlannedTrial& trial) {
   j["duration"] = d.duration;
   j["mapping"] = d.mapping;
   KindFieldsToJson(d, &j);
-  if (d.family != model::InputFamily::kPlain) j["family"] = std::string(model::InputFamilyName(d.family));
+  if (d.family != model::InputFamily::kPlain)
+    j["family"] = std::string(model::InputFamilyName(d.family));
   j["travel"] = {trial.travel[0], trial.travel[1]};
   j["thrust_min"] = trial.thrust_min;
   if (d.ballast_steps != 0) j["ballast_steps"] = d.ballast_steps;
@@ -329,6 +330,35 @@ json ScheduleToJson(const Schedule& schedule) {
     predicted[std::string(model::DofName(dof))] = PredictedToJson(p);
   }
   return {{"trials", trials}, {"predicted", predicted}, {"pool_time", schedule.pool_time}};
+}
+
+json ScheduleResultJson(const planner::ScheduleResult& r,
+                        const planner::ScheduleInformation& information,
+                        const planner::PoolVerdict& verdict, const model::Pool& pool) {
+  json j = ScheduleToJson(r.schedule);
+  j["status"] = std::string(planner::PlanStatusName(r.status));
+  json notes = json::array();
+  json missing = json::object();
+  for (const auto& d : r.dofs) {
+    for (const auto& n : d.notes) notes.push_back(n);
+    if (!d.complete) missing[std::string(model::DofName(d.dof))] = {{"message", d.message}};
+  }
+  j["notes"] = notes;
+  if (!missing.empty()) j["not_planned"] = missing;
+  j["verdict"] = PoolVerdictJson(verdict, pool);
+  AddInformationJson(information, &j);
+  return j;
+}
+
+json UnplannedScheduleJson(const std::vector<PlannedTrial>& plan, const std::string& note) {
+  json trials = json::array();
+  for (const auto& t : plan) {
+    json j = TrialToJson(t);
+    j.erase("travel");
+    j.erase("thrust_min");
+    trials.push_back(j);
+  }
+  return {{"trials", trials}, {"note", note}};
 }
 
 PlannedTrial TrialFromJson(const JsonValue& j) {
@@ -408,7 +438,8 @@ std::vector<model::Dof> ScheduleDofs(const std::string& path) {
     if (!np->json().is_object()) np->Expected("an object {<dof>: {message}}");
     for (const auto& [name, why] : np->json().items()) {
       const auto dof = model::ParseDof(name);
-      if (!dof) np->Fail("key '" + name + "': expected a DOF (surge, sway, heave, roll, pitch, yaw)");
+      if (!dof)
+        np->Fail("key '" + name + "': expected a DOF (surge, sway, heave, roll, pitch, yaw)");
       dofs.insert(*dof);
     }
   }

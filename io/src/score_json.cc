@@ -14,7 +14,7 @@ json ScoreJson(const ident::ScoreResult& r, const std::string& vehicle,
     const ident::TrialFit& t = s.fit;
     trials.push_back({{"file", t.name},
                       {"dof", std::string(model::DofName(s.dof))},
-                      {"use", TrialUseName(t.use)},
+                      {"use", std::string(model::TrialUseName(t.use))},
                       {"velocity_mae", JsonNumber(t.velocity_mae)},
                       {"velocity_samples", t.velocity_samples},
                       {"position_rms", JsonNumber(t.position_rms)},
@@ -29,7 +29,10 @@ json ScoreJson(const ident::ScoreResult& r, const std::string& vehicle,
         {"samples_validate", d.samples_validate},
         {"problem", d.problem}};
   }
-  return {{"vehicle", vehicle}, {"campaign", campaign}, {"trials", trials}, {"dofs", dofs},
+  return {{"vehicle", vehicle},
+          {"campaign", campaign},
+          {"trials", trials},
+          {"dofs", dofs},
           {"notes", r.notes}};
 }
 

@@ -33,17 +33,24 @@ void CheckInputText(const std::string& path, const std::string& text, bool hash_
     }
     if (comment) continue;
     if (quote) {
-      if (c == '\\' && quote == '"') ++i;  // an escaped character
-      else if (c == static_cast<unsigned char>(quote)) quote = 0;
+      if (c == '\\' && quote == '"')
+        ++i;  // an escaped character
+      else if (c == static_cast<unsigned char>(quote))
+        quote = 0;
       continue;
     }
-    if (c == '"' || c == '\'') quote = static_cast<char>(c);
-    else if (c == '#' && hash_comments) comment = true;
-    else if (c == '[' || c == '{') ++depth;
-    else if ((c == ']' || c == '}') && depth > 0) --depth;
+    if (c == '"' || c == '\'')
+      quote = static_cast<char>(c);
+    else if (c == '#' && hash_comments)
+      comment = true;
+    else if (c == '[' || c == '{')
+      ++depth;
+    else if ((c == ']' || c == '}') && depth > 0)
+      --depth;
     if (depth > kMaxNesting) {
       throw model::InputError(path + ":" + std::to_string(line),
-                              "brackets [ ] or { } nested more than " + std::to_string(kMaxNesting) +
+                              "brackets [ ] or { } nested more than " +
+                                  std::to_string(kMaxNesting) +
                                   " deep: expected a uuvplan file (they nest at most 4 deep)");
     }
   }

@@ -1,4 +1,4 @@
-// Checks of an input file's text before a YAML or JSON parser sees it (issue #15): the parsers
+// Checks of an input file's text before a YAML or JSON parser sees it: the parsers
 // report a NUL byte or 100,000 nested brackets as "unknown escape character" or "bad file",
 // and may echo what they read. These name what is wrong and where, and never quote the file.
 #pragma once

@@ -136,9 +136,10 @@ class TrialLogParser {
   TrialLog Parse() {
     const std::size_t max_rows = CountNewlines(path_) + 1;
     if (static_cast<double>(max_rows) > model::limits::kMaxLogRows) {
-      Place(path_, 0, "").Fail(std::to_string(max_rows) + " lines, more than the " +
-                               Significant(model::limits::kMaxLogRows, 3) +
-                               " rows a trial log may have: split the trial");
+      Place(path_, 0, "")
+          .Fail(std::to_string(max_rows) + " lines, more than the " +
+                Significant(model::limits::kMaxLogRows, 3) +
+                " rows a trial log may have: split the trial");
     }
     LineReader reader(path_);
     std::string_view line;
@@ -152,7 +153,8 @@ class TrialLogParser {
     }
     const int header_line = reader.line_number();
     // A UTF-8 byte order mark (spreadsheet exports) is not part of the first column's name.
-    if (header_line == 1 && StartsWith(line, kByteOrderMark)) line.remove_prefix(kByteOrderMark.size());
+    if (header_line == 1 && StartsWith(line, kByteOrderMark))
+      line.remove_prefix(kByteOrderMark.size());
     ReadHeader(line, header_line);
     Reserve(max_rows);
     while (reader.Next(&line)) {
@@ -210,7 +212,8 @@ class TrialLogParser {
     }
     std::vector<std::string> names;
     for (const Column& c : columns_) names.push_back(Quoted(c.name));
-    Place(path_, line_number, "header").Expected("a 't' column (time, s)", "columns " + Join(names));
+    Place(path_, line_number, "header")
+        .Expected("a 't' column (time, s)", "columns " + Join(names));
   }
 
   void AddColumn(std::string name, int line_number) {

@@ -2,12 +2,11 @@
 // each effect's keys read into the true parameters of the DOF.
 #include "truth_effects.h"
 
+#include <algorithm>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <algorithm>
 
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/util/text.h"
@@ -23,15 +22,15 @@ void SetParam(DofTruth* truth, const std::string& name, double value, const Valu
 }
 
 // A qualified family's map in a truth file, {<qualifier>: value} (e.g. eta:
-// {<mapping>.<pos|neg>: v}, seed 000 eq. 3), each qualifier and value checked by the family.
+// {<mapping>.<pos|neg>: v}, ref 000 eq. 3), each qualifier and value checked by the family.
 void ParseQualified(const ParameterFamily& family, const Value& v, Dof dof, const Vehicle& vehicle,
                     DofTruth* truth) {
   const MapValue m(v, "a map {<" + std::string(family.meaning) + ">: value}");
   for (const MapValue::Entry& e : m.entries()) {
     const std::string problem = family.check_qualifier(e.key, dof, vehicle);
     if (!problem.empty()) e.key_value.Expected(problem);
-    const double x = NumberIf(e.value, family.Expected(),
-                              [&family](double y) { return family.Admissible(y); });
+    const double x =
+        NumberIf(e.value, family.Expected(), [&family](double y) { return family.Admissible(y); });
     SetParam(truth, std::string(family.name) + e.key, x, e.value);
   }
   if (m.entries().empty()) v.Expected("at least one entry");
@@ -72,13 +71,14 @@ std::vector<std::string> SettingKeys(const EffectEntry& effect) {
 // dofs.<dof>.effects.<effect>: {settings}, as the effect table declares them (effects.h):
 // each parameter in its admissible range (a value not given defaults to its `defaults_to`
 // parameter's, else is required), each setting a positive number.
-void ParseEffectSettings(const EffectEntry& effect, const Value& v, Dof dof,
-                         const Vehicle& vehicle, DofTruth* truth) {
+void ParseEffectSettings(const EffectEntry& effect, const Value& v, Dof dof, const Vehicle& vehicle,
+                         DofTruth* truth) {
   const MapValue m(v, "the settings of effect " + effect.name);
   const std::vector<std::string> keys = SettingKeys(effect);
   m.AllowOnly(std::vector<std::string_view>(keys.begin(), keys.end()));
-  const bool all_default = std::all_of(effect.parameters.begin(), effect.parameters.end(),
-                                       [](const ParameterFamily& f) { return !f.defaults_to.empty(); });
+  const bool all_default =
+      std::all_of(effect.parameters.begin(), effect.parameters.end(),
+                  [](const ParameterFamily& f) { return !f.defaults_to.empty(); });
   if (m.entries().empty() && all_default) m.self().Expected(model::Join(keys, " and/or "));
   for (const ParameterFamily& f : effect.parameters) {
     if (f.qualified()) {

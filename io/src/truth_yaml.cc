@@ -23,7 +23,7 @@ namespace {
 void ParseParams(const Value& v, Dof dof, const Vehicle& vehicle, DofTruth* truth) {
   const MapValue m(v, "a map {m, k, kq, bias, bias_step, eta}");
   m.AllowOnly({"m", "k", "kq", "bias", "bias_step", "eta"});
-  // Each value also against its family's plausible ratio to the vehicle (parameter.h).
+  // Each value also against its family's plausible ratio to the vehicle (plausibility.h).
   const auto plausible = [&](const Value& x, double value, const char* name) {
     CheckPlausibleParameter(x, value, *FamilyNamed(name), dof, vehicle);
     return value;

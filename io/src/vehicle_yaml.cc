@@ -8,11 +8,11 @@
 #include <utility>
 #include <vector>
 
-#include "uuvplan/io/plausibility.h"
-#include "uuvplan/model/util/text.h"
 #include "derived_mapping_keys.h"
 #include "speed_limit_keys.h"
 #include "thruster_installation_yaml.h"
+#include "uuvplan/io/plausibility.h"
+#include "uuvplan/model/util/text.h"
 #include "vehicle_keys.h"
 
 namespace uuvplan::io {
@@ -34,13 +34,13 @@ ThrustModel ParseThrust(const Value& v) {
   ThrustModel model;
   const Value kind = m.Required("model");
   if (Choice(kind, {"square", "poly2"}, "a thrust model") == 0) {
-    // seed 000 eq. 6: tau = c·V|V|, c by sign of V.
+    // ref 000 eq. 6: tau = c·V|V|, c by sign of V.
     m.AllowOnly({"model", "c_pos", "c_neg", "deduction", "dead_band"});
     model.kind = ThrustModel::Kind::kSquare;
     model.c_pos = Positive(m.Required("c_pos"));
     model.c_neg = Positive(m.Required("c_neg"));
   } else {
-    // seed 002 eq. 1: tau = a·V² + b·V for V >= 0, which must grow to give thrust at all.
+    // ref 002 eq. 1: tau = a·V² + b·V for V >= 0, which must grow to give thrust at all.
     m.AllowOnly({"model", "a", "b", "deduction", "dead_band"});
     model.kind = ThrustModel::Kind::kPoly2;
     model.a = NonNegative(m.Required("a"));
@@ -97,7 +97,7 @@ std::vector<std::string> ThrusterNames(const std::vector<Thruster>& thrusters) {
   return names;
 }
 
-// shares: {thruster: share}, tau_i = share_i·phi (seed 000 Table I).
+// shares: {thruster: share}, tau_i = share_i·phi (ref 000 Table I).
 std::vector<std::pair<int, double>> ParseShares(const Value& v,
                                                 const std::vector<Thruster>& thrusters) {
   const MapValue m(v, "a map {thruster: share}");
@@ -207,8 +207,10 @@ DofSensors ParseDofSensors(const Value& v, double size) {
   const MapValue m(v, "a map {position: {rate, sigma}, velocity: {rate, sigma}}");
   m.AllowOnly({"position", "velocity"});
   DofSensors sensors;
-  if (const Value p = m.Optional("position"); !p.absent()) sensors.position = ParseSensorSpec(p, size);
-  if (const Value s = m.Optional("velocity"); !s.absent()) sensors.velocity = ParseSensorSpec(s, size);
+  if (const Value p = m.Optional("position"); !p.absent())
+    sensors.position = ParseSensorSpec(p, size);
+  if (const Value s = m.Optional("velocity"); !s.absent())
+    sensors.velocity = ParseSensorSpec(s, size);
   if (!sensors.position && !sensors.velocity) v.Expected("a position and/or a velocity sensor");
   return sensors;
 }
@@ -271,8 +273,8 @@ Vehicle ParseVehicle(const MapValue& root, bool truth) {
 
 Vehicle ReadVehicle(const std::string& path) {
   return Guarded(path, [&] {
-    const MapValue root = LoadYamlMap(path, "a vehicle (name, mass, size, thrusters, mappings, ...)",
-                                      "a map of vehicle keys");
+    const MapValue root = LoadYamlMap(
+        path, "a vehicle (name, mass, size, thrusters, mappings, ...)", "a map of vehicle keys");
     Vehicle vehicle = ParseVehicle(root, false);
     // A model written into the vehicle file is checked here too: every command that reads
     // the file reports its faults, though only `score` and `simulate` use it.

@@ -5,18 +5,18 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <initializer_list>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
 
+#include "speed_limit_keys.h"
+#include "thruster_installation_yaml.h"
 #include "uuvplan/io/files.h"
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/parameter.h"
-#include "speed_limit_keys.h"
-#include "thruster_installation_yaml.h"
 
 namespace uuvplan::io {
 

@@ -33,11 +33,11 @@ void CheckSimulationWork(const model::Truth& truth, const std::vector<model::Tri
     const std::string key = "plan: trials[" + std::to_string(i) + "] '" + d.id + "'";
     const double steps = d.duration / truth.integration_step_s;
     if (!(steps <= model::limits::kMaxSimulationSteps)) {
-      throw model::InputError(key, "duration " + Significant(d.duration, 4) + " s / integration step " +
-                                       Significant(truth.integration_step_s, 4) +
-                                       " s (virtual_pool.step or --step) needs " + Significant(steps, 3) +
-                                       " RK4 steps, at most " +
-                                       Significant(model::limits::kMaxSimulationSteps, 3));
+      throw model::InputError(
+          key, "duration " + Significant(d.duration, 4) + " s / integration step " +
+                   Significant(truth.integration_step_s, 4) +
+                   " s (virtual_pool.step or --step) needs " + Significant(steps, 3) +
+                   " RK4 steps, at most " + Significant(model::limits::kMaxSimulationSteps, 3));
     }
     rows += d.duration * rate;
     if (!(rows <= model::limits::kMaxCampaignRows)) {
@@ -62,8 +62,8 @@ model::Campaign SimulateCampaign(const model::Truth& truth,
   std::vector<std::string> comments;
   for (std::size_t i = 0; i < designs.size(); ++i) {
     campaign.trials[i].file = "trials/" + designs[i].id + ".csv";
-    comments.push_back("uuvplan virtual pool: truth vehicle '" + truth.vehicle.name +
-                       "', trial '" + designs[i].id + "', seed " + std::to_string(options.seed));
+    comments.push_back("uuvplan virtual pool: truth vehicle '" + truth.vehicle.name + "', trial '" +
+                       designs[i].id + "', seed " + std::to_string(options.seed));
   }
   return WriteCampaign(dir, std::move(campaign), truth.vehicle, comments);
 }

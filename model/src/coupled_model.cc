@@ -1,118 +1,72 @@
 #include "uuvplan/model/coupled_model.h"
 
-#include <cmath>
-#include <cstring>
-
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
-#include "uuvplan/model/util/text.h"
+#include "uuvplan/model/virtual_pool.h"
 
 namespace uuvplan::model {
+namespace {
 
-int HorizontalIndex(Dof dof) {
-  for (int i = 0; i < 3; ++i) {
-    if (kHorizontalDofs[i] == dof) return i;
-  }
-  return -1;
+// Each DOF's Coriolis product and its coefficient in the global inertias (header).
+struct Coriolis {
+  Dof dof;
+  const char* pair;
+  const char* coefficient;
+  std::vector<std::pair<std::string, double>> inertias;
+};
+const std::array<Coriolis, 3>& CoriolisTerms() {
+  static const std::array<Coriolis, 3> terms = {{
+      {Dof::kSurge, "vr", "m_v", {{"sway.m", 1.0}}},
+      {Dof::kSway, "ur", "−m_u", {{"surge.m", -1.0}}},
+      {Dof::kYaw, "uv", "m_u − m_v", {{"surge.m", 1.0}, {"sway.m", -1.0}}},
+  }};
+  return terms;
 }
 
-int CoupledIndex(int i, const char* parameter) {
-  for (int p = 0; p < 4; ++p) {
-    if (std::strcmp(kCoupledDofParameters[p], parameter) == 0) return 4 * i + p;
+}  // namespace
+
+MultiDofModel CoupledHorizontalModel(const Vehicle& vehicle,
+                                     std::vector<ModelStructure> structures) {
+  structures.resize(kHorizontalDofs.size());
+  std::vector<ParameterTie> ties;
+  for (std::size_t i = 0; i < kHorizontalDofs.size(); ++i) {
+    const Coriolis& c = CoriolisTerms()[i];
+    const std::string coupling = param::kCouplingPrefix + std::string(c.pair);
+    structures[i].dof = c.dof;
+    structures[i].Add(coupling);
+    ties.push_back({c.dof, coupling, c.inertias});
   }
-  return -1;
+  return MultiDofModel(vehicle, structures, ties);
 }
 
-std::vector<std::string> CoupledParameterNames() {
-  std::vector<std::string> names;
+MultiDofModel CoupledModelOfTruth(const Truth& truth) {
+  std::vector<ModelStructure> structures;
+  for (Dof d : kHorizontalDofs) structures.push_back(TruthStructure(truth, d));
+  return CoupledHorizontalModel(truth.vehicle, structures);
+}
+
+Eigen::VectorXd CoupledThetaOfTruth(const MultiDofModel& model, const Truth& truth) {
+  std::map<Dof, std::map<std::string, double>> values;
   for (Dof d : kHorizontalDofs) {
-    for (const char* p : kCoupledDofParameters) names.push_back(std::string(DofName(d)) + "." + p);
+    const auto it = truth.dofs.find(d);
+    if (it == truth.dofs.end() || !it->second.params.count(param::kMass)) {
+      throw InputError("truth '" + truth.vehicle.name + "'",
+                       "dofs." + std::string(DofName(d)) +
+                           ".params.m: the coupled horizontal "
+                           "model needs the inertia of surge, sway and yaw");
+    }
+    values[d] = it->second.params;
   }
-  return names;
-}
-
-std::string CoupledParameterUnit(int j) {
-  return Unit(kCoupledDofParameters[j % 4], kHorizontalDofs[j / 4]);
-}
-
-Horizontal CoupledHorizontalModel::Coriolis(const Horizontal& nu) const {
-  const double m_u = Inertia(0), m_v = Inertia(1);
-  const double u = nu[0], v = nu[1], r = nu[2];
-  return {m_v * v * r, -m_u * u * r, (m_u - m_v) * u * v};
+  const std::map<std::string, double> neutral = {
+      {param::kLinearDrag, 0.0}, {param::kQuadraticDrag, 0.0}, {param::kBias, 0.0}};
+  return model.Theta(values, &neutral);
 }
 
 CoriolisTerm CoriolisTermOf(Dof dof) {
-  switch (dof) {
-    case Dof::kSurge: return {"vr", "m_v"};
-    case Dof::kSway: return {"ur", "−m_u"};
-    case Dof::kYaw: return {"uv", "m_u − m_v"};
-    default: return {};
+  for (const Coriolis& c : CoriolisTerms()) {
+    if (c.dof == dof) return {c.pair, c.coefficient};
   }
-}
-
-Horizontal CoupledHorizontalModel::DragAndBias(const Horizontal& nu) const {
-  Horizontal f;
-  for (int i = 0; i < 3; ++i) {
-    const double x = nu[i];
-    f[i] = -theta[4 * i + 1] * x - theta[4 * i + 2] * std::abs(x) * x + theta[4 * i + 3];
-  }
-  return f;
-}
-
-Horizontal CoupledHorizontalModel::Acceleration(const Horizontal& nu,
-                                                const Horizontal& tau) const {
-  const Horizontal f = Coriolis(nu) + DragAndBias(nu) + tau;
-  return {f[0] / Inertia(0), f[1] / Inertia(1), f[2] / Inertia(2)};
-}
-
-bool CoupledHorizontalModel::Admissible(std::string* why) const {
-  const std::vector<std::string> names = CoupledParameterNames();
-  for (int j = 0; j < kCoupledParameterCount; ++j) {
-    const ParameterFamily* family = FamilyOf(kCoupledDofParameters[j % 4]);
-    if (family && family->Admissible(theta[j])) continue;
-    if (why) {
-      *why = names[j] + " = " + Significant(theta[j], 4) + " " + CoupledParameterUnit(j) +
-             " is not " + (family ? family->Expected() : "in the vocabulary");
-    }
-    return false;
-  }
-  return true;
-}
-
-Eigen::Matrix<double, kCoupledParameterCount, 1> CoupledRegressor(int i, const Horizontal& nu) {
-  Eigen::Matrix<double, kCoupledParameterCount, 1> h =
-      Eigen::Matrix<double, kCoupledParameterCount, 1>::Zero();
-  const double u = nu[0], v = nu[1], r = nu[2];
-  // The Coriolis terms moved to the left-hand side (seed 003 speed and steering equations).
-  if (i == 0) h[CoupledIndex(1, "m")] = -v * r;
-  if (i == 1) h[CoupledIndex(0, "m")] = u * r;
-  if (i == 2) {
-    h[CoupledIndex(0, "m")] = -u * v;
-    h[CoupledIndex(1, "m")] = u * v;
-  }
-  const double x = nu[i];
-  h[CoupledIndex(i, "k")] = x;
-  h[CoupledIndex(i, "kq")] = std::abs(x) * x;
-  h[CoupledIndex(i, "bias")] = -1.0;
-  return h;
-}
-
-CoupledHorizontalModel CoupledModelOfTruth(const Truth& truth) {
-  CoupledHorizontalModel model;
-  for (int i = 0; i < 3; ++i) {
-    const std::string dof(DofName(kHorizontalDofs[i]));
-    const auto it = truth.dofs.find(kHorizontalDofs[i]);
-    if (it == truth.dofs.end() || !it->second.params.count(param::kMass)) {
-      throw InputError("truth '" + truth.vehicle.name + "'",
-                       "dofs." + dof + ".params.m: the coupled horizontal model needs the "
-                       "inertia of surge, sway and yaw");
-    }
-    for (int p = 0; p < 4; ++p) {
-      const auto value = it->second.params.find(kCoupledDofParameters[p]);
-      model.theta[4 * i + p] = value == it->second.params.end() ? 0.0 : value->second;
-    }
-  }
-  return model;
+  return {};
 }
 
 }  // namespace uuvplan::model

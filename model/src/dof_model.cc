@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "uuvplan/model/effects.h"
 #include "dof_model_kernel.h"
 #include "force_terms_impl.h"
+#include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::model {
@@ -18,7 +18,7 @@ void DofModel::Adopt(std::unique_ptr<T> term, Typed<T>* typed) {
   terms_.push_back(std::move(term));
 }
 
-// The standard terms (seed 000 eq. 3): drag, constant force, thrust. Asymmetric drag's k_neg,
+// The standard terms (ref 000 eq. 3): drag, constant force, thrust. Asymmetric drag's k_neg,
 // kq_neg and the free η of installation loss enter these terms (EffectSite::kStandardTerm).
 void DofModel::AdoptStandardTerms(const Vehicle& vehicle) {
   const ModelStructure& s = structure_;
@@ -82,9 +82,9 @@ DofModel::DofModel(const Vehicle& vehicle, const ModelStructure& s) : structure_
   thrust_exponent_index_ = ParameterIndex(param::kThrustExponent);
   thrust_reference_ = s.Setting(param::kThrustReference, 1.0);
   if (thrust_exponent_index_ >= 0 && !(thrust_reference_ > 0 && std::isfinite(thrust_reference_))) {
-    throw InputError(std::string(DofName(s.dof)),
-                     "thrust reference force " + std::to_string(thrust_reference_) +
-                         ": expected a positive number");
+    throw InputError(std::string(DofName(s.dof)), "thrust reference force " +
+                                                      std::to_string(thrust_reference_) +
+                                                      ": expected a positive number");
   }
 }
 
@@ -118,12 +118,12 @@ InputSample DofModel::SampleInput(double t, const TrialConditions& c, const doub
   return internal::DofModelKernel::SampleInput(*this, t, c, theta);
 }
 
-TermContext DofModel::Context(double t, const double* x, const InputSample& in,
-                              const TrialConditions& c) const {
-  return internal::DofModelKernel::Context(*this, t, x, in, c);
+TermInputs DofModel::TermInputsAt(double t, const double* x, const InputSample& in,
+                                  const TrialConditions& c) const {
+  return internal::DofModelKernel::TermInputsAt(*this, t, x, in, c);
 }
 
-double DofModel::TotalForce(const TermContext& tc, const double* theta) const {
+double DofModel::TotalForce(const TermInputs& tc, const double* theta) const {
   return internal::DofModelKernel::TotalForce(*this, tc, theta);
 }
 
@@ -133,9 +133,9 @@ void DofModel::Derivative(double t, const double* x, const InputSample& in,
                                        internal::DofModelKernel::Invert(*this, theta), dx);
 }
 
-void DofModel::Linearize(double t, const double* x, const InputSample& in,
-                         const TrialConditions& c, const double* theta, double* dx,
-                         Eigen::Ref<Eigen::MatrixXd> A, Eigen::Ref<Eigen::MatrixXd> B) const {
+void DofModel::Linearize(double t, const double* x, const InputSample& in, const TrialConditions& c,
+                         const double* theta, double* dx, Eigen::Ref<Eigen::MatrixXd> A,
+                         Eigen::Ref<Eigen::MatrixXd> B) const {
   using Kernel = internal::DofModelKernel;
   const int nx = num_states(), np = num_parameters();
   double a[9];

@@ -11,10 +11,11 @@
 namespace uuvplan::model::internal {
 
 struct DofModelKernel {
-  /// The actuator path (effects beyond the seeds), evaluated once per input sample (not per RK4
+  /// The actuator path (effects beyond the papers), evaluated once per input sample (not per RK4
   /// stage: a held input is sampled once per step):
   ///   u0 = sign(phi_n)·max(|phi_n| − d, 0)     dead zone;      ∂u0/∂d = −sign(phi_n) outside it
-  ///   u  = u0·r^p,  r = |u0|/u_ref              thrust map;     ∂u/∂u0 = (1 + p)·r^p, ∂u/∂p = u·ln r
+  ///   u  = u0·r^p,  r = |u0|/u_ref              thrust map;     ∂u/∂u0 = (1 + p)·r^p, ∂u/∂p = u·ln
+  ///   r
   static void Actuate(const DofModel& m, const double* theta, InputSample* in) {
     const double phi_n = in->phi_n;
     const int dz = m.deadzone_index_, tm = m.thrust_exponent_index_;
@@ -52,9 +53,10 @@ struct DofModelKernel {
     return in;
   }
 
-  [[gnu::always_inline]] static TermContext Context(const DofModel& m, double t, const double* x,
-                                                    const InputSample& in, const TrialConditions& c) {
-    TermContext tc;
+  [[gnu::always_inline]] static TermInputs TermInputsAt(const DofModel& m, double t,
+                                                        const double* x, const InputSample& in,
+                                                        const TrialConditions& c) {
+    TermInputs tc;
     tc.xi = x[1];
     tc.phi = m.has_lag() ? x[2] : in.u;
     tc.mapping = in.mapping;
@@ -64,7 +66,7 @@ struct DofModelKernel {
     return tc;
   }
 
-  [[gnu::noinline]] static double OtherForces(const DofModel& m, const TermContext& tc,
+  [[gnu::noinline]] static double OtherForces(const DofModel& m, const TermInputs& tc,
                                               const double* theta) {
     double f = 0.0;
     for (const auto& typed : m.others_) f += typed.term->Value(tc, theta + typed.offset);
@@ -74,7 +76,8 @@ struct DofModelKernel {
   /// kOthers: the model has terms of registered effects (DofModel::has_registered_terms());
   /// without them the simulation loop is instantiated with no call that could clobber memory.
   template <bool kOthers = true>
-  [[gnu::always_inline]] static double TotalForce(const DofModel& m, const TermContext& tc, const double* theta) {
+  [[gnu::always_inline]] static double TotalForce(const DofModel& m, const TermInputs& tc,
+                                                  const double* theta) {
     // Summed as a tree, not left to right: the state-dependent terms (drag, advance loss,
     // coupling) then meet the others after two additions instead of five.
     auto value = [&](const auto& typed) {
@@ -103,7 +106,15 @@ struct DofModelKernel {
                                                 const InputSample& in, const TrialConditions& c,
                                                 const double* theta, const Inverses& inv,
                                                 double* dx) {
-    const TermContext tc = Context(m, t, x, in, c);
+    DerivativeAt<kOthers>(m, TermInputsAt(m, t, x, in, c), x, in, theta, inv, dx);
+  }
+  /// The same at a term context already made (a joint model's: the other DOFs' velocities
+  /// from its state, multi_dof_kernel.h).
+  template <bool kOthers = true>
+  [[gnu::always_inline]] static void DerivativeAt(const DofModel& m, const TermInputs& tc,
+                                                  const double* x, const InputSample& in,
+                                                  const double* theta, const Inverses& inv,
+                                                  double* dx) {
     dx[0] = x[1];
     dx[1] = TotalForce<kOthers>(m, tc, theta) * inv.mass;
     if (m.has_lag()) dx[2] = (in.u - x[2]) * inv.lag;
@@ -117,7 +128,7 @@ struct DofModelKernel {
                         const TrialConditions& c, const double* theta, const Inverses& inv,
                         double* dx, double* A, double* B) {
     const int np = m.num_parameters();
-    const TermContext tc = Context(m, t, x, in, c);
+    const TermInputs tc = TermInputsAt(m, t, x, in, c);
     for (int i = 0; i < NX * NX; ++i) A[i] = 0.0;
     for (int i = 0; i < NX * np; ++i) B[i] = 0.0;
     double* b1 = B + np;

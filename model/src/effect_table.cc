@@ -1,12 +1,11 @@
 // The built-in effects (contract §diagnose, plus thrust_map). Each entry: the physics, its
-// parameters (units, null value, admissible range), where it acts, how diagnosis proposes it
-// (starting values scaled by the data) and how a finding of it reads. Order matters: it is the
-// order in which the effects' parameters enter theta (dof_model.h).
+// parameters (units, null value, admissible range), where it acts and how diagnosis proposes
+// it (starting values scaled by the data); how a finding of it reads is the text layer's
+// (text/finding_text.h). Order matters: it is the order in which the effects' parameters enter
+// theta (dof_model.h).
 #include <cmath>
 #include <limits>
-#include <sstream>
 
-#include "uuvplan/model/coupled_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/force_term.h"
 #include "uuvplan/model/util/text.h"
@@ -17,37 +16,6 @@ namespace uuvplan::model::internal {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-std::string Percent(double r) {
-  std::ostringstream s;
-  s.precision(0);
-  s << std::fixed << std::abs(100.0 * r) << "%";
-  return s.str();
-}
-
-// A group's relative speed error exactly as the breakdown table prints it (signed, one decimal:
-// "+6.3%", "-0.1%"), so that a finding's sentence quotes the table's number, not a rounding of
-// it that can read "0%" or turn -0.6% into "1%".
-std::string SignedPercent(double r) {
-  std::ostringstream s;
-  s.precision(1);
-  s << std::fixed << std::showpos << 100.0 * r << "%";
-  return s.str();
-}
-
-// "0.082 ± 0.003 s" from the cross-correlation's lag and its σ (σ unknown: the value alone).
-std::string LagText(const ErrorBreakdown& b) {
-  std::string s = Significant(b.lag_s, 2);
-  if (std::isfinite(b.lag_sigma_s)) s += " ± " + Significant(b.lag_sigma_s, 2);
-  return s + " s";
-}
-
-std::string Fixed2(double x) {
-  std::ostringstream s;
-  s.precision(2);
-  s << std::fixed << x;
-  return s.str();
-}
 
 // "" when `q` is "<mapping>.<pos|neg>" with a mapping of the vehicle on `dof`.
 std::string EtaQualifier(std::string_view q, Dof dof, const Vehicle& vehicle) {
@@ -67,79 +35,46 @@ std::string EtaQualifier(std::string_view q, Dof dof, const Vehicle& vehicle) {
 
 // "" when `q` is two velocity letters.
 std::string VelocityPair(std::string_view q, Dof, const Vehicle&) {
-  const auto letter = [](char c) { return std::string_view("uvwpqr").find(c) != std::string_view::npos; };
+  const auto letter = [](char c) {
+    return std::string_view("uvwpqr").find(c) != std::string_view::npos;
+  };
   return q.size() == 2 && letter(q[0]) && letter(q[1])
              ? ""
              : "two velocity letters of u v w p q r (e.g. 'vr')";
 }
 
 // One proposal adding parameter `name` at `start`, unless the structure has it.
-std::vector<Proposal> SingleIfAbsent(const ProposalContext& c, const char* name, double start) {
+std::vector<Proposal> SingleIfAbsent(const ProposalEvidence& c, const char* name, double start) {
   if (c.Has(name)) return {};
   Proposal p;
   p.start.push_back({name, start});
   return {p};
 }
 
-// "<cause> (the standard simulation's speed error <where>: +38.0%)", or the cause alone without
-// a group. The group's error is quoted as evidence beside the cause, not as its symptom: the
-// standard model's m, drag and bias are fitted to the data and absorb part of an effect, so
-// the error there can be small or even of the other sign (docs/diagnosis.md §2).
-std::string GroupSentence(const ErrorGroup* g, const std::string& where, const std::string& cause) {
-  if (!g) return cause;
-  return cause + " (the standard simulation's speed error " + where + ": " +
-         SignedPercent(g->relative) + ")";
-}
-
-// η < 1 (seed 000 eq. 3, Table I): the thrust of a mapping and direction that is not in open
+// η < 1 (ref 000 eq. 3, Table I): the thrust of a mapping and direction that is not in open
 // water, one η per such direction present in the data.
 EffectEntry InstallationLoss() {
   EffectEntry e;
   e.name = "installation_loss";
   e.physics = "η < 1: propeller–hull / propeller–propeller interaction for a mapping and direction";
   e.site = EffectSite::kStandardTerm;
-  e.parameters = {{param::kEtaPrefix, "installation coefficient of <mapping>.<pos|neg>", "1",
-                   "1", 1.0, 0.0, 2.0}};
+  e.parameters = {{param::kEtaPrefix, "installation coefficient of <mapping>.<pos|neg>", "1", "1",
+                   1.0, 0.0, 2.0}};
   ParameterFamily& eta = e.parameters[0];
   eta.lower_open = true;
   eta.expected = "an installation coefficient in (0, 2]";
-  // CHOSEN (issue #13): an installation can lose thrust (Table I: 0.55–0.89) but gains at most
+  // CHOSEN: an installation can lose thrust (Table I: 0.55–0.89) but gains at most
   // a little (a duct or a wall effect); an estimate above 1.2 is a fit absorbing another error.
   eta.physical_upper = 1.2;
   eta.file_key = "eta";
   eta.check_qualifier = EtaQualifier;
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     Proposal p;
     for (const auto& [mapping, dir] : c.closed_thrust_directions) {
       const std::string name = EtaName(mapping, dir);
       if (!c.Has(name)) p.start.push_back({name, 1.0});
     }
     return p.start.empty() ? std::vector<Proposal>{} : std::vector<Proposal>{p};
-  };
-  e.describe = [](const FindingContext& f) {
-    // The η that departs most from 1 names the mapping and direction. The fitted η says how
-    // much thrust is missing; the standard model's speed error there can be much smaller, when
-    // its m, drag and bias absorb part of the loss (seed 000 Fig. 6: the heave weight), so it
-    // is quoted second.
-    const ParameterValue* worst = nullptr;
-    for (const auto& p : f.params) {
-      if (!worst || std::abs(p.value - 1) > std::abs(worst->value - 1)) worst = &p;
-    }
-    if (!worst) return std::string("installation loss");
-    const std::string name(Qualifier(worst->name));  // "<mapping>.<pos|neg>"
-    const std::string mapping = name.substr(0, name.rfind('.'));
-    const std::string sign = name.substr(name.rfind('.') + 1) == "neg" ? "negative" : "positive";
-    std::string s = "thrust " + sign + " in mapping " + mapping + " delivers " +
-                    Significant(std::abs(100 * (1 - worst->value)), 3) + " ± " +
-                    Significant(100 * worst->sigma, 2) + "%" +
-                    (worst->value <= 1 ? " less" : " more") +
-                    " than the open-water model";
-    if (const ErrorGroup* g =
-            Labeled(f.breakdown.by_thrust, "thrust " + sign + " in " + mapping)) {
-      s += " (with eta = 1 the standard simulation's speed error there: " +
-           SignedPercent(g->relative) + ", its m, drag and bias absorbing part of the loss)";
-    }
-    return s;
   };
   return e;
 }
@@ -150,28 +85,26 @@ EffectEntry AsymmetricDrag() {
   e.name = "asymmetric_drag";
   e.physics = "drag differs between positive and negative motion (k±, kq±)";
   e.site = EffectSite::kStandardTerm;
-  e.parameters = {{param::kLinearDragNeg, "linear drag for negative motion", "N·s/m",
-                   "N·m·s/rad", 0.0, 0.0, kInf},
+  e.parameters = {{param::kLinearDragNeg, "linear drag for negative motion", "N·s/m", "N·m·s/rad",
+                   0.0, 0.0, kInf},
                   {param::kQuadraticDragNeg, "quadratic drag for negative motion", "N·s²/m²",
                    "N·m·s²/rad²", 0.0, 0.0, kInf}};
   e.parameters[0].defaults_to = param::kLinearDrag;  // symmetric unless given
   e.parameters[1].defaults_to = param::kQuadraticDrag;
-  e.propose = [](const ProposalContext& c) {
-    if (c.Has(param::kLinearDragNeg) || c.Has(param::kQuadraticDragNeg)) return std::vector<Proposal>{};
+  e.propose = [](const ProposalEvidence& c) {
+    if (c.Has(param::kLinearDragNeg) || c.Has(param::kQuadraticDragNeg))
+      return std::vector<Proposal>{};
     Proposal p;
     // k_neg / kq_neg are compared with k / kq, not with 0: their null is the symmetric value.
     const std::pair<const char*, const char*> sides[] = {
-        {param::kLinearDragNeg, param::kLinearDrag}, {param::kQuadraticDragNeg, param::kQuadraticDrag}};
+        {param::kLinearDragNeg, param::kLinearDrag},
+        {param::kQuadraticDragNeg, param::kQuadraticDrag}};
     for (const auto& [negative, positive] : sides) {
       if (!c.Has(positive)) continue;
       p.null[negative] = c.Value(positive, 0.0);
       p.start.push_back({negative, p.null[negative]});
     }
     return p.start.empty() ? std::vector<Proposal>{} : std::vector<Proposal>{p};
-  };
-  e.describe = [](const FindingContext& f) {
-    const ErrorGroup* g = Largest(f.breakdown.by_motion);
-    return GroupSentence(g, g ? "in " + g->label : "", "drag differs between the two directions");
   };
   return e;
 }
@@ -186,16 +119,8 @@ EffectEntry ThrusterLag() {
   e.parameters[0].lower_open = true;
   e.parameters[0].fit_lower = 0.0;  // T > 0: the lag divides by it
   e.parameters[0].fit_lower_open = true;
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     return SingleIfAbsent(c, param::kLag, 0.1 * c.time_constant_s);
-  };
-  e.describe = [](const FindingContext& f) {
-    std::string s = "the response to every change of thrust comes late and smoothed";
-    // The cross-correlation resolves whole samples only; a lag below that is not quoted.
-    if (std::abs(f.breakdown.lag_s) > 0) {
-      s += " (measured velocity lags the simulation by " + LagText(f.breakdown) + ")";
-    }
-    return s;
   };
   return e;
 }
@@ -208,44 +133,35 @@ EffectEntry Deadzone() {
   e.site = EffectSite::kActuator;
   e.parameters = {{param::kDeadzone, "width d of the dead band", "N", "N·m", 0.0, 0.0, kInf}};
   e.parameters[0].fit_lower = 0.0;
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     return SingleIfAbsent(c, param::kDeadzone, 0.02 * c.max_force);
-  };
-  e.describe = [](const FindingContext& f) {
-    return GroupSentence(Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands),
-                         "for small commands", "no thrust below a threshold");
   };
   return e;
 }
 
-// −c_a·sqrt(|φ_a|)·ξ (seed 000 eq. 5 with |n| ∝ sqrt|φ|, v_a = ξ).
+// −c_a·sqrt(|φ_a|)·ξ (ref 000 eq. 5 with |n| ∝ sqrt|φ|, v_a = ξ).
 EffectEntry AdvanceSpeedLoss() {
   EffectEntry e;
   e.name = "advance_speed_loss";
   e.physics = "thrust falls with the speed of advance (τ = c·n|n| − c_s·|n|·v_a)";
   e.site = EffectSite::kForceTerm;
-  e.parameters = {{param::kAdvanceLoss, "advance-speed loss c_a", "N^½·s/m", "(N·m)^½·s/rad",
-                   0.0, 0.0, kInf}};
+  e.parameters = {
+      {param::kAdvanceLoss, "advance-speed loss c_a", "N^½·s/m", "(N·m)^½·s/rad", 0.0, 0.0, kInf}};
   e.make_term = [](Dof, const std::vector<std::string>&) { return MakeAdvanceLossTerm(); };
-  e.propose = [](const ProposalContext& c) {
-    return SingleIfAbsent(c, param::kAdvanceLoss, 0.0);
-  };
-  e.describe = [](const FindingContext& f) {
-    const ErrorGroup* g = Largest(f.breakdown.by_speed);
-    return GroupSentence(g, g ? "at " + g->label : "", "thrust falls with the speed of advance");
-  };
+  e.propose = [](const ProposalEvidence& c) { return SingleIfAbsent(c, param::kAdvanceLoss, 0.0); };
   return e;
 }
 
-// Σ c_ab·a·b over velocity letters (seed 003 3-DOF model: surge v·r and r², yaw u·r).
+// Σ c_ab·a·b over velocity letters (ref 003 3-DOF model: surge v·r and r², yaw u·r).
 EffectEntry Coupling() {
   EffectEntry e;
   e.name = "coupling";
-  e.physics = "motion in another DOF drives this one (e.g. surge speed × yaw rate terms of the "
-              "3-DOF model)";
+  e.physics =
+      "motion in another DOF drives this one (e.g. surge speed × yaw rate terms of the "
+      "3-DOF model)";
   e.site = EffectSite::kForceTerm;
-  e.parameters = {{param::kCouplingPrefix, "coefficient c_ab of the force c_ab·a·b",
-                   "N/(a·b)", "N·m/(a·b)", 0.0, -kInf, kInf}};
+  e.parameters = {{param::kCouplingPrefix, "coefficient c_ab of the force c_ab·a·b", "N/(a·b)",
+                   "N·m/(a·b)", 0.0, -kInf, kInf}};
   e.parameters[0].file_key = "coefficients";
   e.parameters[0].check_qualifier = VelocityPair;
   e.reads_other_motion = true;
@@ -254,7 +170,7 @@ EffectEntry Coupling() {
     for (const std::string& p : parameters) pairs.emplace_back(Qualifier(p));
     return MakeCouplingTerm(dof, pairs);
   };
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     std::vector<Proposal> out;
     const std::vector<char>& letters = c.velocity_letters;
     const char own = VelocityLetter(c.dof);
@@ -272,17 +188,6 @@ EffectEntry Coupling() {
     }
     return out;
   };
-  e.describe = [](const FindingContext& f) {
-    std::string s = "errors follow the motion of other degrees of freedom (" +
-                    f.detail.substr(0, 1) + "·" + f.detail.substr(1, 1) + ")";
-    const CoriolisTerm coriolis = CoriolisTermOf(f.breakdown.dof);
-    if (!coriolis.pair.empty() && f.detail == coriolis.pair) {
-      s += ": the Coriolis term of seed 003's coupled surge–sway–yaw model (its coefficient is " +
-           coriolis.coefficient +
-           "); identify the three DOFs together with `uuvplan identify --model coupled`";
-    }
-    return s;
-  };
   return e;
 }
 
@@ -294,12 +199,8 @@ EffectEntry SensorDelay() {
   e.site = EffectSite::kSensor;
   e.parameters = {{param::kSensorDelay, "delay τ of the measurement", "s", "s", 0.0, 0.0, kInf}};
   e.parameters[0].fit_lower = 0.0;  // the measurement cannot precede the motion
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     return SingleIfAbsent(c, param::kSensorDelay, 0.05 * c.time_constant_s);
-  };
-  e.describe = [](const FindingContext& f) {
-    return "every measurement lags the simulated motion by a fixed time (" +
-           LagText(f.breakdown) + " at the best cross-correlation)";
   };
   return e;
 }
@@ -311,28 +212,12 @@ EffectEntry ParameterDrift() {
   e.physics = "a parameter changes slowly during the campaign (e.g. thrust falling with battery)";
   e.site = EffectSite::kForceTerm;
   e.needs_campaign_clock = true;
-  e.parameters = {{param::kDrift, "relative change of thrust per second of campaign", "1/s",
-                   "1/s", 0.0, -kInf, kInf}};
+  e.parameters = {{param::kDrift, "relative change of thrust per second of campaign", "1/s", "1/s",
+                   0.0, -kInf, kInf}};
   e.make_term = [](Dof, const std::vector<std::string>&) { return MakeDriftTerm(); };
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     // Drift needs trials spread over the campaign clock.
     return c.campaign_clock ? SingleIfAbsent(c, param::kDrift, 0.0) : std::vector<Proposal>{};
-  };
-  e.describe = [](const FindingContext& f) {
-    const double per_s = f.params.empty() ? 0.0 : f.params[0].value;
-    const double sigma_s = f.params.empty() ? 0.0 : f.params[0].sigma;
-    const double span_h = f.breakdown.campaign_span_h;
-    std::string s = "the thrust " + std::string(per_s >= 0 ? "grows" : "falls") + " by " +
-                    Percent(per_s * 3600.0 * span_h) + " from the first to the last trial (" +
-                    Fixed2(span_h) + " h apart, " +
-                    Significant(std::abs(100.0 * per_s * 3600.0), 3) + " ± " +
-                    Significant(100.0 * sigma_s * 3600.0, 2) + "% per hour)";
-    if (span_h > 24.0) {
-      s += ". The trials are days apart: ballast, battery or thrust map may differ between "
-           "sessions; if each session used its own command amplitude, a thrust map wrong in "
-           "shape looks the same (compare one amplitude across sessions)";
-    }
-    return s;
   };
   return e;
 }
@@ -351,7 +236,7 @@ EffectEntry ThrustMap() {
   e.parameters[0].fit_lower = -0.95;
   e.parameters[0].fit_lower_open = true;
   e.settings = {{"reference", param::kThrustReference}};
-  e.propose = [](const ProposalContext& c) {
+  e.propose = [](const ProposalEvidence& c) {
     // The shape shows only across command levels: at a single |φ| it is a pure scale (absorbed
     // by m, k, kq, bias). Levels spanning less than a factor 1.5 are not tested.
     if (c.Has(param::kThrustExponent) || !(c.max_force > 0 && c.min_force < c.max_force / 1.5)) {
@@ -362,31 +247,14 @@ EffectEntry ThrustMap() {
     p.settings[param::kThrustReference] = c.max_force;  // η, m, k, kq keep their meaning there
     return std::vector<Proposal>{p};
   };
-  e.describe = [](const FindingContext& f) {
-    // At a fifth of the largest command the force is 0.2^p of nominal.
-    const double p = f.params.empty() ? 0.0 : f.params[0].value;
-    const double sigma = f.params.empty() ? 0.0 : f.params[0].sigma;
-    const double fifth = std::pow(0.2, p) - 1.0;
-    std::string s = "the delivered force grows as |nominal force|^(" + Significant(1.0 + p, 3) +
-                    " ± " + Significant(sigma, 2) + ")" +
-                    ", not in proportion to the thrust table's force: at a fifth of the largest "
-                    "nominal force it is " +
-                    Percent(fifth) + (fifth >= 0 ? " above" : " below") +
-                    " what the thrust map says";
-    if (const ErrorGroup* g = Labeled(f.breakdown.by_command, ErrorBreakdown::kSmallCommands)) {
-      s += " (the standard simulation's speed error for small commands: " +
-           SignedPercent(g->relative) + ")";
-    }
-    return s + ": the thrust map is wrong in shape";
-  };
   return e;
 }
 
 }  // namespace
 
 std::vector<EffectEntry> BuiltInEffects() {
-  return {InstallationLoss(), AsymmetricDrag(),  ThrusterLag(),    Deadzone(),  AdvanceSpeedLoss(),
-          Coupling(),         SensorDelay(),     ParameterDrift(), ThrustMap()};
+  return {InstallationLoss(), AsymmetricDrag(), ThrusterLag(),    Deadzone(), AdvanceSpeedLoss(),
+          Coupling(),         SensorDelay(),    ParameterDrift(), ThrustMap()};
 }
 
 }  // namespace uuvplan::model::internal

@@ -7,12 +7,12 @@
 
 namespace uuvplan::model {
 
-bool ProposalContext::Has(std::string_view parameter) const {
+bool ProposalEvidence::Has(std::string_view parameter) const {
   return parameters &&
          std::find(parameters->begin(), parameters->end(), parameter) != parameters->end();
 }
 
-double ProposalContext::Value(std::string_view parameter, double fallback) const {
+double ProposalEvidence::Value(std::string_view parameter, double fallback) const {
   if (!values) return fallback;
   const auto it = values->find(std::string(parameter));
   return it == values->end() ? fallback : it->second;

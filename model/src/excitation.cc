@@ -27,7 +27,10 @@ class SteadyExcitation final : public Excitation {
 class SineExcitation final : public Excitation {
  public:
   SineExcitation(double offset, double amplitude, double omega, int mapping, double duration)
-      : offset_(offset), amplitude_(amplitude), sine_(omega, 0.0), mapping_(mapping),
+      : offset_(offset),
+        amplitude_(amplitude),
+        sine_(omega, 0.0),
+        mapping_(mapping),
         duration_(duration) {}
   double Force(double t) const override { return offset_ + amplitude_ * sine_.At(t); }
   int Mapping(double) const override { return mapping_; }
@@ -45,7 +48,9 @@ class HeldExcitation final : public Excitation {
  public:
   HeldExcitation(std::vector<double> t, std::vector<double> force, std::vector<int> mapping,
                  double duration)
-      : t_(std::move(t)), force_(std::move(force)), mapping_(std::move(mapping)),
+      : t_(std::move(t)),
+        force_(std::move(force)),
+        mapping_(std::move(mapping)),
         duration_(duration) {}
   double Force(double t) const override { return t_.empty() ? 0.0 : force_[Find(t)]; }
   int Mapping(double t) const override { return t_.empty() ? -1 : mapping_[Find(t)]; }
@@ -94,7 +99,9 @@ class HeldExcitation final : public Excitation {
 class SwitchedExcitation final : public Excitation {
  public:
   SwitchedExcitation(SwitchedWave wave, double duration)
-      : wave_(std::move(wave)), duration_(duration), switches_(wave_.Switches(duration)),
+      : wave_(std::move(wave)),
+        duration_(duration),
+        switches_(wave_.Switches(duration)),
         rotating_(wave_) {}
   SwitchedExcitation(const SwitchedExcitation&) = delete;  // rotating_ refers to wave_
   SwitchedExcitation& operator=(const SwitchedExcitation&) = delete;
@@ -198,7 +205,7 @@ std::unique_ptr<Excitation> MakeHeldExcitation(TimesView t, const std::vector<do
                                                const std::vector<int>& mapping, double duration) {
   // Drop samples without a force value: the previous command holds (zero-order hold). A row
   // that repeats the previous command changes nothing and is not kept (a log at 100 Hz of
-  // legs of 10–40 s holds 1,000–4,000 rows per command; issue #16).
+  // legs of 10–40 s holds 1,000–4,000 rows per command).
   std::vector<double> tt, ff;
   std::vector<int> mm;
   for (std::size_t i = 0; i < t.size(); ++i) {

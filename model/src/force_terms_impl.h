@@ -4,8 +4,8 @@
 #pragma once
 
 #include <array>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -17,7 +17,7 @@
 
 namespace uuvplan::model::internal {
 
-// -k·xi - kq·xi·|xi| (seed 000 eq. 3); asymmetric: (k, kq) for xi >= 0, (k_neg, kq_neg) below.
+// -k·xi - kq·xi·|xi| (ref 000 eq. 3); asymmetric: (k, kq) for xi >= 0, (k_neg, kq_neg) below.
 class DragTerm final : public ForceTerm {
  public:
   DragTerm(bool linear, bool quadratic, bool asymmetric)
@@ -26,7 +26,7 @@ class DragTerm final : public ForceTerm {
         quad_(quadratic ? (linear ? (asymmetric ? 2 : 1) : 0) : -1),
         asym_(asymmetric) {}
 
-  double Value(const TermContext& c, const double* theta) const override {
+  double Value(const TermInputs& c, const double* theta) const override {
     // Both sides' coefficients are loaded before the sign of xi selects one, so the select
     // (not an indexed load) sits on the simulation's dependency chain.
     const bool neg = c.xi < 0;
@@ -35,7 +35,7 @@ class DragTerm final : public ForceTerm {
     if (quad_ >= 0) f -= Select(theta, quad_, neg) * c.xi * std::abs(c.xi);
     return f;
   }
-  TermPartials Partials(const TermContext& c, const double* theta, double* J) const override {
+  TermPartials Partials(const TermInputs& c, const double* theta, double* J) const override {
     for (int i = 0; i < num_parameters(); ++i) J[i] = 0.0;
     const int side = asym_ && c.xi < 0 ? 1 : 0;
     TermPartials p;
@@ -51,7 +51,7 @@ class DragTerm final : public ForceTerm {
     }
     return p;
   }
-  bool Regressor(const TermContext& c, double* h, double* h0) const override {
+  bool Regressor(const TermInputs& c, double* h, double* h0) const override {
     for (int i = 0; i < num_parameters(); ++i) h[i] = 0.0;
     const int side = asym_ && c.xi < 0 ? 1 : 0;
     if (lin_ >= 0) h[lin_ + side] = -c.xi;
@@ -78,24 +78,24 @@ class DragTerm final : public ForceTerm {
   bool asym_;
 };
 
-// eta(mu, sign phi)·phi (seed 000 eq. 3); eta = 1 in open water, else a parameter.
+// eta(mu, sign phi)·phi (ref 000 eq. 3); eta = 1 in open water, else a parameter.
 class ThrustTerm final : public ForceTerm {
  public:
   ThrustTerm(std::vector<std::string> names, std::vector<std::array<int, 2>> index)
       : ForceTerm(std::move(names)), index_(std::move(index)) {}
 
-  double Value(const TermContext& c, const double* theta) const override {
+  double Value(const TermInputs& c, const double* theta) const override {
     const int j = ParamFor(c);
     return (j < 0 ? 1.0 : theta[j]) * c.phi;
   }
-  TermPartials Partials(const TermContext& c, const double* theta, double* J) const override {
+  TermPartials Partials(const TermInputs& c, const double* theta, double* J) const override {
     for (int i = 0; i < num_parameters(); ++i) J[i] = 0.0;
     const int j = ParamFor(c);
     const double eta = j < 0 ? 1.0 : theta[j];
     if (j >= 0) J[j] = c.phi;
     return {eta * c.phi, 0.0, eta};
   }
-  bool Regressor(const TermContext& c, double* h, double* h0) const override {
+  bool Regressor(const TermInputs& c, double* h, double* h0) const override {
     for (int i = 0; i < num_parameters(); ++i) h[i] = 0.0;
     const int j = ParamFor(c);
     if (j < 0) {
@@ -108,30 +108,32 @@ class ThrustTerm final : public ForceTerm {
   }
 
  private:
-  int ParamFor(const TermContext& c) const {
+  int ParamFor(const TermInputs& c) const {
     if (c.mapping < 0 || c.mapping >= static_cast<int>(index_.size())) return -1;
     return index_[c.mapping][c.phi >= 0 ? 0 : 1];
   }
   std::vector<std::array<int, 2>> index_;  // [mapping][pos, neg] -> parameter or -1
 };
 
-// bias + bias_step·ballast_steps (seed 000 eq. 7, eq. 20).
+// bias + bias_step·ballast_steps (ref 000 eq. 7, eq. 20).
 class ConstantTerm final : public ForceTerm {
  public:
   ConstantTerm(bool bias, bool ballast)
-      : ForceTerm(Names(bias, ballast)), bias_(bias ? 0 : -1), step_(ballast ? (bias ? 1 : 0) : -1) {}
-  double Value(const TermContext& c, const double* theta) const override {
+      : ForceTerm(Names(bias, ballast)),
+        bias_(bias ? 0 : -1),
+        step_(ballast ? (bias ? 1 : 0) : -1) {}
+  double Value(const TermInputs& c, const double* theta) const override {
     double f = 0.0;
     if (bias_ >= 0) f += theta[bias_];
     if (step_ >= 0) f += theta[step_] * c.ballast_steps;
     return f;
   }
-  TermPartials Partials(const TermContext& c, const double* theta, double* J) const override {
+  TermPartials Partials(const TermInputs& c, const double* theta, double* J) const override {
     double h0;
     Regressor(c, J, &h0);
     return {Value(c, theta), 0.0, 0.0};
   }
-  bool Regressor(const TermContext& c, double* h, double* h0) const override {
+  bool Regressor(const TermInputs& c, double* h, double* h0) const override {
     if (bias_ >= 0) h[bias_] = 1.0;
     if (step_ >= 0) h[step_] = c.ballast_steps;
     *h0 = 0.0;
@@ -148,22 +150,22 @@ class ConstantTerm final : public ForceTerm {
   int bias_, step_;
 };
 
-// -c_a·sqrt(|phi_a|)·xi: seed 000 eq. 5 with |n| ∝ sqrt(|phi|) and v_a = xi. |phi| is
+// -c_a·sqrt(|phi_a|)·xi: ref 000 eq. 5 with |n| ∝ sqrt(|phi|) and v_a = xi. |phi| is
 // smoothed as sqrt(phi² + eps²) so the partial in phi stays finite at phi = 0.
 class AdvanceLossTerm final : public ForceTerm {
  public:
   AdvanceLossTerm() : ForceTerm({param::kAdvanceLoss}) {}
-  double Value(const TermContext& c, const double* theta) const override {
+  double Value(const TermInputs& c, const double* theta) const override {
     return -theta[0] * Root(c.phi) * c.xi;
   }
-  TermPartials Partials(const TermContext& c, const double* theta, double* J) const override {
+  TermPartials Partials(const TermInputs& c, const double* theta, double* J) const override {
     const double r = Root(c.phi);
     J[0] = -r * c.xi;
     const double a = std::sqrt(c.phi * c.phi + kEps * kEps);
     const double dr_dphi = 0.5 / r * c.phi / a;
     return {-theta[0] * r * c.xi, -theta[0] * r, -theta[0] * c.xi * dr_dphi};
   }
-  bool Regressor(const TermContext& c, double* h, double* h0) const override {
+  bool Regressor(const TermInputs& c, double* h, double* h0) const override {
     h[0] = -Root(c.phi) * c.xi;
     *h0 = 0.0;
     return true;
@@ -174,7 +176,7 @@ class AdvanceLossTerm final : public ForceTerm {
   static double Root(double phi) { return std::sqrt(std::sqrt(phi * phi + kEps * kEps)); }
 };
 
-// Σ c_ab·a·b with a, b velocities (seed 003: surge (m - Y_v̇)·v·r, (m·x_g - Y_ṙ)·r²;
+// Σ c_ab·a·b with a, b velocities (ref 003: surge (m - Y_v̇)·v·r, (m·x_g - Y_ṙ)·r²;
 // yaw -(m·x_g - Y_ṙ)·u·r, -(X_u̇ - Y_v̇)·u·v).
 class CouplingTerm final : public ForceTerm {
  public:
@@ -186,12 +188,12 @@ class CouplingTerm final : public ForceTerm {
     }
   }
   bool NeedsOtherVelocities() const override { return true; }
-  double Value(const TermContext& c, const double* theta) const override {
+  double Value(const TermInputs& c, const double* theta) const override {
     double f = 0.0;
     for (std::size_t j = 0; j < pairs_.size(); ++j) f += theta[j] * Product(c, j);
     return f;
   }
-  TermPartials Partials(const TermContext& c, const double* theta, double* J) const override {
+  TermPartials Partials(const TermInputs& c, const double* theta, double* J) const override {
     TermPartials p;
     for (std::size_t j = 0; j < pairs_.size(); ++j) {
       J[j] = Product(c, j);
@@ -203,7 +205,16 @@ class CouplingTerm final : public ForceTerm {
     }
     return p;
   }
-  bool Regressor(const TermContext& c, double* h, double* h0) const override {
+  void OtherVelocityPartials(const TermInputs& c, const double* theta,
+                             double* J_F_v) const override {
+    // d(a·b)/d(other velocity): each factor that is not the own DOF contributes the other one.
+    for (std::size_t j = 0; j < pairs_.size(); ++j) {
+      const auto [a, b] = pairs_[j];
+      if (a != own_) J_F_v[a] += theta[j] * V(c, b);
+      if (b != own_) J_F_v[b] += theta[j] * V(c, a);
+    }
+  }
+  bool Regressor(const TermInputs& c, double* h, double* h0) const override {
     for (std::size_t j = 0; j < pairs_.size(); ++j) h[j] = Product(c, j);
     *h0 = 0.0;
     return true;
@@ -221,10 +232,8 @@ class CouplingTerm final : public ForceTerm {
     }
     throw std::invalid_argument(std::string("unknown velocity letter '") + l + "'");
   }
-  double V(const TermContext& c, int i) const {
-    return i == own_ ? c.xi : c.velocities[i];
-  }
-  double Product(const TermContext& c, std::size_t j) const {
+  double V(const TermInputs& c, int i) const { return i == own_ ? c.xi : c.velocities[i]; }
+  double Product(const TermInputs& c, std::size_t j) const {
     return V(c, pairs_[j].first) * V(c, pairs_[j].second);
   }
   int own_;
@@ -235,14 +244,14 @@ class CouplingTerm final : public ForceTerm {
 class DriftTerm final : public ForceTerm {
  public:
   DriftTerm() : ForceTerm({param::kDrift}) {}
-  double Value(const TermContext& c, const double* theta) const override {
+  double Value(const TermInputs& c, const double* theta) const override {
     return theta[0] * c.t_campaign * c.phi;
   }
-  TermPartials Partials(const TermContext& c, const double* theta, double* J) const override {
+  TermPartials Partials(const TermInputs& c, const double* theta, double* J) const override {
     J[0] = c.t_campaign * c.phi;
     return {theta[0] * J[0], 0.0, theta[0] * c.t_campaign};
   }
-  bool Regressor(const TermContext& c, double* h, double* h0) const override {
+  bool Regressor(const TermInputs& c, double* h, double* h0) const override {
     h[0] = c.t_campaign * c.phi;
     *h0 = 0.0;
     return true;

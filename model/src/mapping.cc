@@ -8,10 +8,14 @@ std::string EtaName(const std::string& mapping, Direction d) {
 
 std::string_view OpenWaterName(OpenWater ow) {
   switch (ow) {
-    case OpenWater::kPositive: return "positive";
-    case OpenWater::kNegative: return "negative";
-    case OpenWater::kBoth: return "both";
-    case OpenWater::kNone: return "none";
+    case OpenWater::kPositive:
+      return "positive";
+    case OpenWater::kNegative:
+      return "negative";
+    case OpenWater::kBoth:
+      return "both";
+    case OpenWater::kNone:
+      return "none";
   }
   return "both";
 }

@@ -1,7 +1,7 @@
 // How the virtual pool logs a trial (virtual_pool.h): sensor sample times at a declared rate,
-// noisy samples with drop-outs and multipath outliers (seed 000 Fig. 14), the commands held at
+// noisy samples with drop-outs and multipath outliers (ref 000 Fig. 14), the commands held at
 // the controller's rate, and the merge of every grid into the log's rows. Shared by the 1-DOF
-// trials (virtual_pool.cc) and the coupled 3-DOF ones (coupled_virtual_trial.cc).
+// trials and the combined ones of a multi-DOF model (virtual_pool.cc).
 #pragma once
 
 #include <Eigen/Dense>

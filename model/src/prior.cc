@@ -16,12 +16,18 @@ double BluffBodyQuadraticDrag(const Vehicle& vehicle, Dof dof) {
   const double l = vehicle.size[0], w = vehicle.size[1], h = vehicle.size[2];
   constexpr double kRho = 1000.0, kCd = 1.0;
   switch (dof) {
-    case Dof::kSurge: return 0.5 * kRho * kCd * w * h;
-    case Dof::kSway: return 0.5 * kRho * kCd * l * h;
-    case Dof::kHeave: return 0.5 * kRho * kCd * l * w;
-    case Dof::kRoll: return kRho * kCd * l * std::pow(std::max(w, h), 4) / 64.0;
-    case Dof::kPitch: return kRho * kCd * w * std::pow(std::max(l, h), 4) / 64.0;
-    case Dof::kYaw: return kRho * kCd * h * std::pow(std::max(l, w), 4) / 64.0;
+    case Dof::kSurge:
+      return 0.5 * kRho * kCd * w * h;
+    case Dof::kSway:
+      return 0.5 * kRho * kCd * l * h;
+    case Dof::kHeave:
+      return 0.5 * kRho * kCd * l * w;
+    case Dof::kRoll:
+      return kRho * kCd * l * std::pow(std::max(w, h), 4) / 64.0;
+    case Dof::kPitch:
+      return kRho * kCd * w * std::pow(std::max(l, h), 4) / 64.0;
+    case Dof::kYaw:
+      return kRho * kCd * h * std::pow(std::max(l, w), 4) / 64.0;
   }
   return 0.0;
 }
@@ -86,9 +92,9 @@ std::string DragAssumption(Dof dof, const APrioriDrag& drag) {
       s << name << ": no a priori drag (dofs." << name << ".drag in the vehicle file); assumed "
         << "that the largest thrust, " << drag.thrust << " " << ForceUnit(dof)
         << ", holds the vehicle at " << TerminalSpeed(dof) << (rot ? " rad/s" : " m/s")
-        << ": k = " << drag.drag.k << " " << Unit(param::kLinearDrag, dof) << ", kq = " << drag.drag.kq
-        << " " << Unit(param::kQuadraticDrag, dof) << " (k·v = 0.1·kq·v² there), ±"
-        << 100 * drag.drag.rel_sigma << "%";
+        << ": k = " << drag.drag.k << " " << Unit(param::kLinearDrag, dof)
+        << ", kq = " << drag.drag.kq << " " << Unit(param::kQuadraticDrag, dof)
+        << " (k·v = 0.1·kq·v² there), ±" << 100 * drag.drag.rel_sigma << "%";
       break;
     case DragSource::kBluffBody:
       s << name << ": no a priori drag and no thruster on " << name << "; a bluff body of `size` "

@@ -31,7 +31,7 @@ class RotatingSine {
       // and at most 1.25e-13 a rotation at the tolerance's edge (|e| = 1e-6·ω·delta_, ω·delta_
       // ≤ 0.5 for an RK4 half step well inside a period). A tighter tolerance re-anchors more
       // often and moves the planner's numbers in the ninth digit, enough for DIRECT to choose
-      // other multisines (measured 2026-11-28): kept at the single sine's 1e-6.
+      // other multisines: kept at the single sine's 1e-6.
       const double e = omega_ * (delta - delta_);
       const double cd = cos_delta_ - e * sin_delta_, sd = sin_delta_ + e * cos_delta_;
       const double s = sin_ * cd + cos_ * sd;
@@ -69,7 +69,8 @@ class RotatingWave {
   }
   double At(double t) {
     double w = wave_.offset;
-    for (std::size_t i = 0; i < sines_.size(); ++i) w += wave_.components[i].amplitude * sines_[i].At(t);
+    for (std::size_t i = 0; i < sines_.size(); ++i)
+      w += wave_.components[i].amplitude * sines_[i].At(t);
     return w;
   }
 

@@ -8,26 +8,26 @@ namespace uuvplan::model {
 double ThrustModel::Thrust(double v) const {
   double tau = 0.0;
   switch (kind) {
-    case Kind::kSquare:  // seed 000 eq. 6
+    case Kind::kSquare:  // ref 000 eq. 6
       tau = (v >= 0 ? c_pos : c_neg) * v * std::abs(v);
       break;
-    case Kind::kPoly2: {  // seed 002 eq. 1, odd extension
+    case Kind::kPoly2: {  // ref 002 eq. 1, odd extension
       const double av = std::abs(v);
       tau = std::copysign(a * av * av + b * av, v);
       break;
     }
   }
-  return (1.0 - deduction) * tau;  // seed 003: T_a = (1 - t)·T
+  return (1.0 - deduction) * tau;  // ref 003: T_a = (1 - t)·T
 }
 
 double ThrustModel::Command(double thrust) const {
-  const double y = std::abs(thrust) / (1.0 - deduction);  // seed 003: T = T_a / (1 - t)
+  const double y = std::abs(thrust) / (1.0 - deduction);  // ref 003: T = T_a / (1 - t)
   double v = 0.0;
   switch (kind) {
-    case Kind::kSquare:  // seed 000 eq. 6 inverted: |V| = sqrt(|tau|/c)
+    case Kind::kSquare:  // ref 000 eq. 6 inverted: |V| = sqrt(|tau|/c)
       v = std::sqrt(y / (thrust >= 0 ? c_pos : c_neg));
       break;
-    case Kind::kPoly2:  // seed 002 eq. 1 inverted: a·V² + b·V = |tau|, V >= 0
+    case Kind::kPoly2:  // ref 002 eq. 1 inverted: a·V² + b·V = |tau|, V >= 0
       v = a > 0 ? (-b + std::sqrt(b * b + 4 * a * y)) / (2 * a) : y / b;
       break;
   }

@@ -1,5 +1,6 @@
 #include "uuvplan/model/trial_design.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "uuvplan/model/input_error.h"
@@ -24,8 +25,8 @@ int MappingOf(const Vehicle& v, const std::string& name, const TrialDesign& d) {
   if (name.empty()) return -1;
   const int i = v.MappingIndex(name);
   if (i < 0) {
-    throw InputError("trial '" + d.id + "'", "mapping '" + name + "' is not a mapping of vehicle '" +
-                                                 v.name + "'");
+    throw InputError("trial '" + d.id + "'",
+                     "mapping '" + name + "' is not a mapping of vehicle '" + v.name + "'");
   }
   return i;
 }
@@ -57,8 +58,10 @@ double WaveSwing(const TrialDesign& d) {
 
 double TrialDesign::NominalForce(double t) const {
   switch (kind) {
-    case TrialKind::kSteady: return force;
-    case TrialKind::kSine: return offset + amplitude * std::sin(omega * t);
+    case TrialKind::kSteady:
+      return force;
+    case TrialKind::kSine:
+      return offset + amplitude * std::sin(omega * t);
     case TrialKind::kSegments: {
       const SegmentDesign* s = SegmentAt(*this, t);
       return s != nullptr ? s->force : 0.0;
@@ -84,7 +87,8 @@ const std::string& TrialDesign::MappingAt(double t) const {
 
 std::vector<ForceDemand> TrialDesign::Demands() const {
   switch (kind) {
-    case TrialKind::kSteady: return {{mapping, force, force}};
+    case TrialKind::kSteady:
+      return {{mapping, force, force}};
     case TrialKind::kSine:
       return {{mapping, offset - std::abs(amplitude), offset + std::abs(amplitude)}};
     case TrialKind::kSegments: {
@@ -97,7 +101,8 @@ std::vector<ForceDemand> TrialDesign::Demands() const {
     case TrialKind::kSwitched: {
       std::vector<ForceDemand> out;
       const double swing = WaveSwing(*this);
-      if (offset + swing >= 0) out.push_back({mapping, floor_pos, std::max(floor_pos, offset + swing)});
+      if (offset + swing >= 0)
+        out.push_back({mapping, floor_pos, std::max(floor_pos, offset + swing)});
       if (offset - swing < 0) {
         out.push_back({mapping_neg, std::min(-floor_neg, offset - swing), -floor_neg});
       }
@@ -117,17 +122,20 @@ bool TrialDesign::Pushes(const std::string& name, int sign) const {
 std::unique_ptr<Excitation> MakeExcitation(const Vehicle& vehicle, const TrialDesign& d) {
   const int mapping = MappingOf(vehicle, d.mapping, d);
   switch (d.kind) {
-    case TrialKind::kSteady: return MakeSteadyExcitation(d.force, mapping, d.duration);
+    case TrialKind::kSteady:
+      return MakeSteadyExcitation(d.force, mapping, d.duration);
     case TrialKind::kSine:
       return MakeSineExcitation(d.offset, d.amplitude, d.omega, mapping, d.duration);
     case TrialKind::kSegments: {
       std::vector<Segment> segs;
       for (const auto& s : d.segments) {
-        segs.push_back({s.force, s.duration, s.mapping.empty() ? mapping : MappingOf(vehicle, s.mapping, d)});
+        segs.push_back(
+            {s.force, s.duration, s.mapping.empty() ? mapping : MappingOf(vehicle, s.mapping, d)});
       }
       return MakeSegmentsExcitation(std::move(segs));
     }
-    case TrialKind::kSwitched: return MakeSwitchedExcitation(SwitchedWaveOf(vehicle, d), d.duration);
+    case TrialKind::kSwitched:
+      return MakeSwitchedExcitation(SwitchedWaveOf(vehicle, d), d.duration);
   }
   return nullptr;
 }
@@ -137,6 +145,28 @@ SwitchedWave SwitchedWaveOf(const Vehicle& vehicle, const TrialDesign& d) {
   w.mapping_pos = MappingOf(vehicle, d.mapping, d);
   w.mapping_neg = MappingOf(vehicle, d.mapping_neg, d);
   return w;
+}
+
+std::string CombinedTrialDesign::Check() const {
+  const std::string where = "combined trial '" + id + "' (" + DofList(dofs) + ")";
+  if (!(duration > 0)) return where + ": duration must be a positive number of seconds";
+  for (Dof d : kAllDofs) {
+    const long n = std::count_if(inputs.begin(), inputs.end(),
+                                 [&](const TrialDesign& in) { return in.dof == d; });
+    const long want = std::count(dofs.begin(), dofs.end(), d);
+    if (n != want) {
+      return where + ": expected " + (want ? "one input" : "no input") + " for " +
+             std::string(DofName(d)) + ", found " + std::to_string(n);
+    }
+  }
+  return "";
+}
+
+const TrialDesign* CombinedTrialDesign::InputOf(Dof dof) const {
+  for (const TrialDesign& in : inputs) {
+    if (in.dof == dof) return &in;
+  }
+  return nullptr;
 }
 
 }  // namespace uuvplan::model

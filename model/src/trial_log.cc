@@ -81,9 +81,10 @@ void UnwrapAngles(TrialLog* log) {
     if (!WrappedTo(range, 2.0 * kPi, 1e-3)) {
       if (WrappedTo(range, 360.0, 0.05) && JumpsOver(angle, 180.0) > 0) {
         const int jumps = Unwrap(&angle, 360.0);
-        log->notes.push_back("unwrapped " + name + " as degrees (its values lie outside one "
-                             "turn in rad and wrap at 360): " + std::to_string(jumps) +
-                             " jump(s) of more than 180");
+        log->notes.push_back("unwrapped " + name +
+                             " as degrees (its values lie outside one "
+                             "turn in rad and wrap at 360): " +
+                             std::to_string(jumps) + " jump(s) of more than 180");
       }
       continue;
     }

@@ -5,12 +5,15 @@ namespace uuvplan::model {
 double Vehicle::RigidInertia(Dof dof) const {
   if (!IsRotational(dof)) return mass;
   if (auto it = inertia.find(dof); it != inertia.end()) return it->second;
-  // Uniform box (seed 000 §IV-D): I = m·(a² + b²)/12 over the two sides normal to the axis.
+  // Uniform box (ref 000 §IV-D): I = m·(a² + b²)/12 over the two sides normal to the axis.
   const double l = size[0], w = size[1], h = size[2];
   switch (dof) {
-    case Dof::kRoll: return mass * (w * w + h * h) / 12.0;
-    case Dof::kPitch: return mass * (l * l + h * h) / 12.0;
-    default: return mass * (l * l + w * w) / 12.0;  // yaw
+    case Dof::kRoll:
+      return mass * (w * w + h * h) / 12.0;
+    case Dof::kPitch:
+      return mass * (l * l + h * h) / 12.0;
+    default:
+      return mass * (l * l + w * w) / 12.0;  // yaw
   }
 }
 

@@ -4,13 +4,13 @@
 #include <cmath>
 #include <random>
 
+#include "pool_sampling.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/util/checked_count.h"
 #include "uuvplan/model/util/seed.h"
-#include "pool_sampling.h"
 
 namespace uuvplan::model {
 namespace {
@@ -70,6 +70,27 @@ std::vector<MeasuredVelocity> MeasureAuxMotion(const Vehicle& v, Dof dof,
   return out;
 }
 
+// One sensor of DOF i of a joint trial: its sample times and corrupted values of the state it
+// sees (position: the DOF's position state, an angle wrapped; velocity: its velocity).
+struct Sampled {
+  std::vector<double> t, y;
+};
+Sampled MeasureJoint(const MultiDofModel& model, const Eigen::VectorXd& theta,
+                     const JointConditions& conditions, int i, bool position,
+                     const SensorSpec& spec, const Truth& truth, double duration,
+                     std::mt19937_64& rng) {
+  Sampled s;
+  s.t = SampleTimes(spec.rate_hz, duration);
+  SimulationOptions sim;
+  sim.step_s = truth.integration_step_s;
+  const Trajectory x = Simulate(model, theta, conditions, s.t, sim);
+  s.y = Corrupt(x.x.col(model.state_offset(i) + (position ? 0 : 1)), spec, truth.defects, rng);
+  if (position && IsRotational(model.dof(i))) {
+    for (double& a : s.y) a = std::isnan(a) ? a : WrapAngle(a);
+  }
+  return s;
+}
+
 }  // namespace
 
 ModelStructure TruthStructure(const Truth& truth, Dof dof) {
@@ -91,8 +112,8 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
   const Dof dof = design.dof;
   const auto truth_it = truth.dofs.find(dof);
   if (truth_it == truth.dofs.end()) {
-    throw InputError("truth", "no dofs." + std::string(DofName(dof)) +
-                                  ".params for trial '" + design.id + "'");
+    throw InputError(
+        "truth", "no dofs." + std::string(DofName(dof)) + ".params for trial '" + design.id + "'");
   }
   const auto sensors_it = v.sensors.find(dof);
   if (sensors_it == v.sensors.end() ||
@@ -104,8 +125,10 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
 
   // The truth model; parameters it does not name take the standard model's neutral values.
   const DofModel model(v, TruthStructure(truth, dof));
-  const std::map<std::string, double> neutral = {{param::kBias, 0.0}, {param::kQuadraticDrag, 0.0},
-                                                 {param::kLinearDrag, 0.0}, {param::kBiasStep, 0.0}};
+  const std::map<std::string, double> neutral = {{param::kBias, 0.0},
+                                                 {param::kQuadraticDrag, 0.0},
+                                                 {param::kLinearDrag, 0.0},
+                                                 {param::kBiasStep, 0.0}};
   const Eigen::VectorXd theta = model.Theta(truth_it->second.params, &neutral);
 
   const Commands cmd = HeldCommands(v, design, options.command_rate_hz);
@@ -145,6 +168,55 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
   if (sensors.velocity) log.velocity[Index(dof)] = OnRows(log.t, vel_t, vel_y);
   for (const auto& a : aux_measured) log.velocity[Index(a.dof)] = OnRows(log.t, a.t, a.y);
   LogMappingColumn(v, cmd, &log);
+  return log;
+}
+
+TrialLog RunCombinedTrial(const Truth& truth, const MultiDofModel& model,
+                          const Eigen::VectorXd& theta, const CombinedTrialDesign& design,
+                          const VirtualPoolOptions& options) {
+  if (const std::string error = design.Check(); !error.empty()) throw InputError(error);
+  const int n = model.num_dofs();
+  std::vector<Commands> cmd(n);
+  std::vector<std::unique_ptr<Excitation>> held(n);
+  JointConditions conditions;
+  conditions.inputs.assign(n, nullptr);
+  std::vector<std::vector<double>> grids;
+  for (const TrialDesign& input : design.inputs) {
+    const int i = model.DofIndex(input.dof);
+    if (i < 0)
+      throw InputError(design.id,
+                       "moves " + std::string(DofName(input.dof)) + ", not in the model");
+    TrialDesign whole = input;
+    whole.duration = design.duration;
+    cmd[i] = HeldCommands(truth.vehicle, whole, options.command_rate_hz);
+    held[i] = MakeHeldExcitation(cmd[i].t, cmd[i].force, cmd[i].mapping, design.duration);
+    conditions.inputs[i] = held[i].get();
+  }
+  for (const Commands& c : cmd) {
+    if (!c.t.empty()) grids.push_back(c.t);
+  }
+  std::mt19937_64 rng(SplitMix64(options.seed));
+  std::vector<Sampled> pos(n), vel(n);
+  for (int i = 0; i < n; ++i) {
+    const auto sensors = truth.vehicle.sensors.find(model.dof(i));
+    if (sensors == truth.vehicle.sensors.end()) continue;
+    for (const bool position : {true, false}) {
+      const auto& spec = position ? sensors->second.position : sensors->second.velocity;
+      if (!spec) continue;
+      Sampled& s = position ? pos[i] : vel[i];
+      s = MeasureJoint(model, theta, conditions, i, position, *spec, truth, design.duration, rng);
+      grids.push_back(s.t);
+    }
+  }
+  TrialLog log;
+  log.t = MergeTimes(grids);
+  for (int i = 0; i < n; ++i) {
+    const int column = Index(model.dof(i));
+    log.force[column] = cmd[i].t.empty() ? std::vector<double>(log.t.size(), 0.0)
+                                         : OnRows(log.t, cmd[i].t, cmd[i].force);
+    if (!pos[i].t.empty()) log.position[column] = OnRows(log.t, pos[i].t, pos[i].y);
+    if (!vel[i].t.empty()) log.velocity[column] = OnRows(log.t, vel[i].t, vel[i].y);
+  }
   return log;
 }
 

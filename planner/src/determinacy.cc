@@ -5,12 +5,11 @@
 #include <cmath>
 #include <limits>
 
-#include "format.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/criteria.h"
-#include "uuvplan/planner/loop/design_loop.h"
 #include "uuvplan/planner/design/thrust_limits.h"
+#include "uuvplan/planner/loop/design_loop.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -19,7 +18,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // 100·(worst σ over the design points)/(smallest |θ| there) of parameter i; +inf when a point
 // leaves it unreached (NaN σ) or unidentifiable (+inf σ), or its a priori value is 0.
-double WorstPercent(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info, int i) {
+double WorstPercent(const DofPlanningProblem& ctx, const std::vector<Eigen::MatrixXd>& info,
+                    int i) {
   double worst = 0.0, nominal = kInf;
   for (std::size_t j = 0; j < info.size() && j < ctx.design_thetas().size(); ++j) {
     const Eigen::VectorXd& th = ctx.design_thetas()[j];
@@ -33,7 +33,7 @@ double WorstPercent(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& i
 // The parameters of interest (determinacy.h): m, the drag of interest, the holdable η. The
 // drag of interest is kq when it is determined over the box, or with `point` ≥ 0 at that design
 // point alone (the loop's choice at a vehicle: kq when its identification finds it significant).
-std::vector<std::string> InterestNames(const DofContext& ctx,
+std::vector<std::string> InterestNames(const DofPlanningProblem& ctx,
                                        const std::vector<Eigen::MatrixXd>& info, int point = -1) {
   std::vector<std::string> names = {model::param::kMass};
   const int iq = ctx.Index(model::param::kQuadraticDrag);
@@ -45,7 +45,7 @@ std::vector<std::string> InterestNames(const DofContext& ctx,
   }
   const bool kq = kq_percent <= kInsignificantPercent;
   names.push_back(kq || ctx.Index(model::param::kLinearDrag) < 0 ? model::param::kQuadraticDrag
-                                                                  : model::param::kLinearDrag);
+                                                                 : model::param::kLinearDrag);
   const model::Vehicle& v = ctx.vehicle();
   for (const auto& n : ctx.model().parameter_names()) {
     if (!model::StartsWith(n, model::param::kEtaPrefix)) continue;
@@ -66,14 +66,14 @@ struct Candidate {
   double criterion = -kInf;
 };
 
-double RobustD(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
+double RobustD(const DofPlanningProblem& ctx, const std::vector<Eigen::MatrixXd>& info,
                const std::vector<Eigen::MatrixXd>& add) {
   std::vector<Eigen::MatrixXd> total = info;
   for (std::size_t j = 0; j < total.size(); ++j) total[j] += add[j];
   return Aggregate(ctx.options().robustness, ctx.CriterionValues(total, Criterion::kD, {}));
 }
 
-void ConsiderSine(const DofContext& ctx, SineDesignOptions so,
+void ConsiderSine(const DofPlanningProblem& ctx, SineDesignOptions so,
                   const std::vector<Eigen::MatrixXd>& info, const std::string& id,
                   Candidate* best) {
   so.criterion = Criterion::kD;
@@ -85,7 +85,7 @@ void ConsiderSine(const DofContext& ctx, SineDesignOptions so,
   *best = {sn.trial, sn.check, sn.information, c};
 }
 
-void ConsiderSteadyLegs(const DofContext& ctx, const SteadyDesignOptions& o,
+void ConsiderSteadyLegs(const DofPlanningProblem& ctx, const SteadyDesignOptions& o,
                         const std::vector<Eigen::MatrixXd>& info, const std::string& id,
                         Candidate* best) {
   for (const SteadyLeg& leg : MakeSteadyCandidates(ctx, o).legs) {
@@ -105,7 +105,8 @@ void ConsiderSteadyLegs(const DofContext& ctx, const SteadyDesignOptions& o,
 
 }  // namespace
 
-Determinacy InterestDeterminacy(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info) {
+Determinacy InterestDeterminacy(const DofPlanningProblem& ctx,
+                                const std::vector<Eigen::MatrixXd>& info) {
   Determinacy d;
   d.determined = true;
   d.worst_percent = -1.0;
@@ -117,8 +118,9 @@ Determinacy InterestDeterminacy(const DofContext& ctx, const std::vector<Eigen::
     }
     if (p <= kInsignificantPercent) continue;
     d.determined = false;
-    d.undetermined.push_back(
-        n + (std::isfinite(p) ? " (σ " + internal::Fmt(p) + "% of its value)" : " (no trial)"));
+    d.undetermined.push_back(n + (std::isfinite(p)
+                                      ? " (σ " + model::Significant(p, 3) + "% of its value)"
+                                      : " (no trial)"));
   }
   return d;
 }
@@ -142,8 +144,8 @@ Reach ReachOf(const Eigen::MatrixXd& info, const Eigen::MatrixXd& trial, const E
   r.now = std::isnan(s_now) ? kInf : 100.0 * s_now / value;
   if (i_now >= i_target) return r;  // already at the target: n = 0
   const double s_after = PredictedSigma(info + trial, th)[i];
-  const double gain = std::isfinite(s_after) && s_after > 0 ? 1.0 / (s_after * s_after) - i_now
-                                                            : 0.0;
+  const double gain =
+      std::isfinite(s_after) && s_after > 0 ? 1.0 / (s_after * s_after) - i_now : 0.0;
   r.needed = 100.0 * std::sqrt(goal.max_trials_to_target / (i_target - i_now)) / value;
   r.per_trial = gain > 0 ? 100.0 / (std::sqrt(gain) * value) : kInf;
   r.n = gain > 0 ? (i_target - i_now) / gain : kInf;
@@ -151,21 +153,25 @@ Reach ReachOf(const Eigen::MatrixXd& info, const Eigen::MatrixXd& trial, const E
 }
 
 std::string ReachText(const TargetReach& r, const PrecisionGoal& goal) {
-  using internal::Fmt;
-  std::string s = r.parameter + " reaches " +
-                  (std::isfinite(r.per_trial_percent) ? Fmt(r.per_trial_percent) + "%"
-                                                      : std::string("no precision")) +
-                  " per trial here ('" + r.trial + "', the loop's D-optimal trial " +
-                  std::to_string(r.step) + " after the schedule; " + Fmt(r.now_percent) +
-                  "% before it); the target " + Fmt(goal.target_percent) + "% needs ≤ " + Fmt(r.needed_percent) + "% per trial";
-  if (std::isfinite(r.trials)) s += " (about " + Fmt(std::ceil(r.trials), 3) + " such trials";
-  else s += " (no number of such trials";
-  return s + ": the loop stops as stuck beyond " + Fmt(goal.max_trials_to_target) + ")";
+  std::string s =
+      r.parameter + " reaches " +
+      (std::isfinite(r.per_trial_percent) ? model::Significant(r.per_trial_percent, 3) + "%"
+                                          : std::string("no precision")) +
+      " per trial here ('" + r.trial + "', the loop's D-optimal trial " + std::to_string(r.step) +
+      " after the schedule; " + model::Significant(r.now_percent, 3) + "% before it); the target " +
+      model::Significant(goal.target_percent, 3) + "% needs ≤ " +
+      model::Significant(r.needed_percent, 3) + "% per trial";
+  if (std::isfinite(r.trials))
+    s += " (about " + model::Significant(std::ceil(r.trials), 3) + " such trials";
+  else
+    s += " (no number of such trials";
+  return s + ": the loop stops as stuck beyond " +
+         model::Significant(goal.max_trials_to_target, 3) + ")";
 }
 
 // DesignNextTrial's choice on `info`: the better by robust D of the D-optimal sine on every
 // parameter and every steady leg from rest (criterion -inf: none fits).
-Candidate LoopChoice(const DofContext& ctx, const SineDesignOptions& sine,
+Candidate LoopChoice(const DofPlanningProblem& ctx, const SineDesignOptions& sine,
                      const SteadyDesignOptions& steady, const std::vector<Eigen::MatrixXd>& info,
                      const std::string& id) {
   Candidate best;
@@ -177,10 +183,10 @@ Candidate LoopChoice(const DofContext& ctx, const SineDesignOptions& sine,
 // The loop's stuck test of one candidate at design point j, judged on its bottleneck (the
 // parameter of interest with the largest n). The loop itself judges the parameter the candidate
 // brings nearest to the target (CandidateGain); the bottleneck is the more cautious choice for a
-// promise made before any trial — measured (loop_validation 30 1 2 1, 2026-11-28, with the
+// promise made before any trial — measured (loop_validation 30 1 2 1, with the
 // start then counted as known): the loop's rule here judged one more pool of 34 "all" and agreed
 // with the loop no better.
-TargetReach Bottleneck(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
+TargetReach Bottleneck(const DofPlanningProblem& ctx, const std::vector<Eigen::MatrixXd>& info,
                        const Eigen::MatrixXd& trial, int j, const PrecisionGoal& goal) {
   TargetReach here;
   here.trials = -1.0;
@@ -198,7 +204,7 @@ TargetReach Bottleneck(const DofContext& ctx, const std::vector<Eigen::MatrixXd>
 
 }  // namespace
 
-TargetReach ReachTarget(const DofContext& ctx, const SineDesignOptions& sine,
+TargetReach ReachTarget(const DofPlanningProblem& ctx, const SineDesignOptions& sine,
                         const SteadyDesignOptions& steady, std::vector<Eigen::MatrixXd> info,
                         const PrecisionGoal& goal, const std::string& id) {
   const std::size_t points = std::min(info.size(), ctx.design_thetas().size());
@@ -236,7 +242,8 @@ TargetReach ReachTarget(const DofContext& ctx, const SineDesignOptions& sine,
   return out;
 }
 
-CompletionResult CompleteWithLoopFamilies(const DofContext& ctx, const SineDesignOptions& sine,
+CompletionResult CompleteWithLoopFamilies(const DofPlanningProblem& ctx,
+                                          const SineDesignOptions& sine,
                                           const SteadyDesignOptions& steady,
                                           std::vector<Eigen::MatrixXd>* info,
                                           const std::string& id_prefix, int max_trials) {
@@ -248,7 +255,8 @@ CompletionResult CompleteWithLoopFamilies(const DofContext& ctx, const SineDesig
     Candidate best;
     // An undetermined η first, in its own direction (the loop's step 2), else D on all.
     for (const std::string& u : det.undetermined) {
-      if (!model::StartsWith(u, model::param::kEtaPrefix) || std::isfinite(best.criterion)) continue;
+      if (!model::StartsWith(u, model::param::kEtaPrefix) || std::isfinite(best.criterion))
+        continue;
       const std::string name = u.substr(0, u.find(' '));
       const std::string rest = name.substr(std::string(model::param::kEtaPrefix).size());
       SineDesignOptions so = sine;
@@ -257,10 +265,9 @@ CompletionResult CompleteWithLoopFamilies(const DofContext& ctx, const SineDesig
       so.open_water_only = false;
       ConsiderSine(ctx, so, *info, id, &best);
     }
-    const bool only_etas = std::all_of(det.undetermined.begin(), det.undetermined.end(),
-                                       [](const std::string& u) {
-                                         return model::StartsWith(u, model::param::kEtaPrefix);
-                                       });
+    const bool only_etas = std::all_of(
+        det.undetermined.begin(), det.undetermined.end(),
+        [](const std::string& u) { return model::StartsWith(u, model::param::kEtaPrefix); });
     // No trial pushes the way an undetermined η needs: no other family reaches it either.
     if (!std::isfinite(best.criterion) && only_etas) break;
     if (!std::isfinite(best.criterion)) {
@@ -271,7 +278,8 @@ CompletionResult CompleteWithLoopFamilies(const DofContext& ctx, const SineDesig
     for (std::size_t j = 0; j < info->size(); ++j) (*info)[j] += best.information[j];
     out.notes.push_back(std::string(model::DofName(ctx.dof())) + ": '" + id + "' (" +
                         std::string(model::TrialKindName(best.trial.design.kind)) +
-                        ", the loop's next-trial design) added for " + model::Join(det.undetermined));
+                        ", the loop's next-trial design) added for " +
+                        model::Join(det.undetermined));
     out.trials.push_back(best.trial);
     out.checks.push_back(best.check);
   }

@@ -6,22 +6,22 @@
 #include <limits>
 #include <sstream>
 
-#include "format.h"
 #include "options_check.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/planner/determinacy.h"
 #include "uuvplan/planner/design/switched_design.h"
 #include "uuvplan/planner/design/trial_envelope.h"
+#include "uuvplan/planner/determinacy.h"
 
 namespace uuvplan::planner {
 
-constexpr model::EnumNames<PlanStatus, 3> kPlanStatusNames{{{
-    {PlanStatus::kOk, "ok"}, {PlanStatus::kPartial, "partial"},
-    {PlanStatus::kInfeasible, "infeasible"}}}};
+constexpr model::EnumNames<PlanStatus, 3> kPlanStatusNames{
+    {{{PlanStatus::kOk, "ok"},
+      {PlanStatus::kPartial, "partial"},
+      {PlanStatus::kInfeasible, "infeasible"}}}};
 
 std::string_view PlanStatusName(PlanStatus s) { return kPlanStatusNames.Name(s); }
 
@@ -37,18 +37,17 @@ bool ScheduleOptions::IsValid(std::string* error) const {
       return false;
     }
   }
-  const bool goal = internal::OptionsCheck("ScheduleOptions", error)
-                        .Require(precision.target_percent > 0 &&
-                                     std::isfinite(precision.target_percent),
-                                 "precision.target_percent", precision.target_percent, "> 0")
-                        .Require(precision.max_trials_to_target > 0,
-                                 "precision.max_trials_to_target",
-                                 precision.max_trials_to_target, "> 0")
-                        .ok();
+  const bool goal =
+      internal::OptionsCheck("ScheduleOptions", error)
+          .Require(precision.target_percent > 0 && std::isfinite(precision.target_percent),
+                   "precision.target_percent", precision.target_percent, "> 0")
+          .Require(precision.max_trials_to_target > 0, "precision.max_trials_to_target",
+                   precision.max_trials_to_target, "> 0")
+          .ok();
   return goal && planner.IsValid(error) && steady.IsValid(error) && sine.IsValid(error);
 }
 
-std::vector<Eigen::MatrixXd> TrialsInformation(const DofContext& ctx,
+std::vector<Eigen::MatrixXd> TrialsInformation(const DofPlanningProblem& ctx,
                                                const std::vector<PlannedTrial>& trials,
                                                const PriorInformation* prior) {
   const Eigen::MatrixXd M0 = ctx.PriorMatrix(prior);
@@ -61,7 +60,8 @@ std::vector<Eigen::MatrixXd> TrialsInformation(const DofContext& ctx,
   return total;
 }
 
-PredictedPrecision PredictPrecision(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
+PredictedPrecision PredictPrecision(const DofPlanningProblem& ctx,
+                                    const std::vector<Eigen::MatrixXd>& info,
                                     std::vector<std::string>* notes) {
   PredictedPrecision p;
   p.criterion = std::string(CriterionName(Criterion::kD));
@@ -90,7 +90,7 @@ PredictedPrecision PredictPrecision(const DofContext& ctx, const std::vector<Eig
       }
     } else {
       p.sigma[names[i]] = worst[i];
-      // Seed 000 §IV-D: a percentile error above 51.02% means the parameter is statistically
+      // Ref 000 §IV-D: a percentile error above 51.02% means the parameter is statistically
       // insignificant at 95% (indistinguishable from zero).
       double nominal = std::numeric_limits<double>::infinity();
       for (const auto& th : ctx.design_thetas()) nominal = std::min(nominal, std::abs(th[i]));
@@ -120,7 +120,8 @@ std::vector<model::Dof> DofsToPlan(const model::Vehicle& v, const ScheduleOption
   return out;
 }
 
-std::vector<Eigen::MatrixXd> PriorPerPoint(const DofContext& ctx, const PriorInformation* prior) {
+std::vector<Eigen::MatrixXd> PriorPerPoint(const DofPlanningProblem& ctx,
+                                           const PriorInformation* prior) {
   return std::vector<Eigen::MatrixXd>(ctx.design_thetas().size(), ctx.PriorMatrix(prior));
 }
 
@@ -131,8 +132,8 @@ ParameterBox BoxAboutEstimates(const model::Vehicle& vehicle, const model::Pool&
                                const ParameterValues& sigmas, const NextTrialOptions& o,
                                std::vector<std::string>* notes) {
   // The DOF's parameter names (the standard structure of the a priori context).
-  std::unique_ptr<DofContext> probe =
-      DofContext::APriori(vehicle, pool, dof, o.schedule.planner, notes);
+  std::unique_ptr<DofPlanningProblem> probe =
+      DofPlanningProblem::APriori(vehicle, pool, dof, o.schedule.planner, notes);
   ParameterValues centre = probe->box().nominal;
   for (const auto& [k, val] : estimates) {
     if (centre.count(k)) centre[k] = val;
@@ -162,8 +163,8 @@ ParameterBox BoxAboutEstimates(const model::Vehicle& vehicle, const model::Pool&
 // before it (in `info`, which gains theirs): steady runs, the sine, then the loop's families
 // completing the schedule. Their trials, checks and notes go to `plan`; why a family could not
 // be designed to `failures`.
-void DesignFamilies(const DofContext& ctx, const ScheduleOptions& o, const std::string& name,
-                    std::vector<Eigen::MatrixXd>* info, DofPlan* plan,
+void DesignFamilies(const DofPlanningProblem& ctx, const ScheduleOptions& o,
+                    const std::string& name, std::vector<Eigen::MatrixXd>* info, DofPlan* plan,
                     std::vector<std::string>* failures) {
   if (o.steady_runs) {
     SteadyDesignResult st = DesignSteady(ctx, o.steady, *info, name + "-steady");
@@ -192,8 +193,8 @@ void DesignFamilies(const DofContext& ctx, const ScheduleOptions& o, const std::
     }
   }
   if (o.max_completion_trials > 0) {
-    CompletionResult extra = CompleteWithLoopFamilies(ctx, o.sine, o.steady, info,
-                                                      name + "-more", o.max_completion_trials);
+    CompletionResult extra = CompleteWithLoopFamilies(ctx, o.sine, o.steady, info, name + "-more",
+                                                      o.max_completion_trials);
     for (std::size_t i = 0; i < extra.trials.size(); ++i) {
       plan->trials.push_back(extra.trials[i]);
       plan->checks.push_back(extra.checks[i]);
@@ -209,7 +210,8 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
   DofPlan plan;
   plan.dof = dof;
   const std::string name(model::DofName(dof));
-  std::unique_ptr<DofContext> ctx = DofContext::APriori(vehicle, pool, dof, o.planner, &plan.notes);
+  std::unique_ptr<DofPlanningProblem> ctx =
+      DofPlanningProblem::APriori(vehicle, pool, dof, o.planner, &plan.notes);
   auto pit = o.prior.find(dof);
   const PriorInformation* user_prior = pit == o.prior.end() ? nullptr : &pit->second;
   std::vector<Eigen::MatrixXd> info = PriorPerPoint(*ctx, user_prior);
@@ -236,11 +238,13 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
   for (const auto& f : failures) plan.notes.push_back(name + ": " + f);
   if (plan.determinacy.determined && !plan.reach.reached) {
     plan.message = name + " is determined in pool '" + pool.name + "' but not to the target " +
-                   internal::Fmt(o.precision.target_percent) + "%: " + plan.reach.text + "." + m.str();
+                   model::Significant(o.precision.target_percent, 3) + "%: " + plan.reach.text +
+                   "." + m.str();
   } else if (!plan.complete) {
-    plan.message = name + " only partly determined in pool '" + pool.name + "': " +
-                   model::Join(plan.determinacy.undetermined) + " stay undetermined after " +
-                   std::to_string(plan.trials.size()) + " trials." + m.str();
+    plan.message = name + " only partly determined in pool '" + pool.name +
+                   "': " + model::Join(plan.determinacy.undetermined) +
+                   " stay undetermined after " + std::to_string(plan.trials.size()) + " trials." +
+                   m.str();
   }
   for (const auto& t : plan.trials) {
     if (!plan.complete) {
@@ -256,7 +260,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The ranking of DesignNextTrial's candidates; the best so far is in the result's trial.
 struct NextCandidates {
-  const DofContext& ctx;
+  const DofPlanningProblem& ctx;
   const NextTrialOptions& o;
   const std::vector<Eigen::MatrixXd>& M0;  // prior information at each design point
   double criterion_before;
@@ -316,7 +320,8 @@ ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& po
                      "' has no DOF with both a thrust mapping and a sensor: nothing to plan";
     return result;
   }
-  // Each DOF is planned on its own (DofContext per DOF), on PlannerOptions::Threads threads.
+  // Each DOF is planned on its own (DofPlanningProblem per DOF), on PlannerOptions::Threads
+  // threads.
   std::vector<DofPlan> plans(dofs.size());
   model::ParallelFor(dofs.size(), o.planner.Threads(),
                      [&](std::size_t i) { plans[i] = PlanDof(vehicle, pool, dofs[i], o); });
@@ -369,7 +374,7 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
     sigmas[names[i]] = std::sqrt(std::max(0.0, covariance(i, i)));
   }
   ParameterBox box = BoxAboutEstimates(vehicle, pool, dof, estimates, sigmas, o, &result.notes);
-  DofContext ctx(vehicle, pool, dof, std::move(box), o.schedule.planner);
+  DofPlanningProblem ctx(vehicle, pool, dof, std::move(box), o.schedule.planner);
   const PriorInformation prior = PriorInformation::FromCovariance(names, covariance);
   const std::vector<Eigen::MatrixXd> M0 = PriorPerPoint(ctx, &prior);
   result.criterion_before =

@@ -143,7 +143,8 @@ Figure RlsConvergenceFigure(const ident::DofIdentification& dof, const std::stri
     Panel p;
     p.title = r.coefficient_names[j] + (r.coefficient_names[j] == "gamma" ? " = 1/m" : "");
     p.x_label = "campaign time (s)";
-    p.y_label = r.coefficient_names[j] + " (" + CoefficientUnit(r.coefficient_names[j], dof.dof) + ")";
+    p.y_label =
+        r.coefficient_names[j] + " (" + CoefficientUnit(r.coefficient_names[j], dof.dof) + ")";
     Series band{"±1σ", Style::kBand, Colour::kSky, {}, {}, {}, {}};
     Series line{"estimate", Style::kLine, Colour::kBlue, {}, {}, {}, {}};
     const int col = static_cast<int>(j);

@@ -75,10 +75,11 @@ ReportFiles BuildReport(const ReportInputs& in) {
   if (!out.notes.empty()) doc.sections.push_back({"notes", "Notes", out.notes, {}, {}});
   doc.sections.insert(
       doc.sections.begin(),
-      SummarySection(in.schedule ? &*in.schedule : nullptr,
-                     in.verdict && !in.verdict->lines.empty() ? &in.verdict->lines.front() : nullptr,
-                     in.identification ? &*in.identification : nullptr,
-                     in.diagnosis ? &*in.diagnosis : nullptr, in.loop ? &*in.loop : nullptr));
+      SummarySection(
+          in.schedule ? &*in.schedule : nullptr,
+          in.verdict && !in.verdict->lines.empty() ? &in.verdict->lines.front() : nullptr,
+          in.identification ? &*in.identification : nullptr,
+          in.diagnosis ? &*in.diagnosis : nullptr, in.loop ? &*in.loop : nullptr));
   out.files["report.html"] = Html(doc);
   return out;
 }

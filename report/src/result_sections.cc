@@ -4,6 +4,7 @@
 #include "figure_parts.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/report/sections.h"
+#include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::report {
 
@@ -85,9 +86,10 @@ Table FindingTable(const ident::DiagnosisResult& r) {
       params += (params.empty() ? "" : "; ") + p.name + " = " + Number(p.value) + " ± " +
                 Number(p.sigma) + " " + model::Unit(p.name, f.dof);
     }
-    t.rows.push_back({f.effect, DofText(f.dof), f.what, params, Number(f.gain.before),
-                      Number(f.gain.after), std::string(model::VelocityUnit(f.dof)),
-                      Number(100 * f.gain.relative), f.gain.on});
+    t.rows.push_back({f.effect, DofText(f.dof), text::FindingSentence(r, f), params,
+                      Number(f.gain.before), Number(f.gain.after),
+                      std::string(model::VelocityUnit(f.dof)), Number(100 * f.gain.relative),
+                      f.gain.on});
   }
   return t;
 }

@@ -37,7 +37,7 @@ std::vector<Level> PoolLevels(const model::Pool& pool, Dof dof, double lo, doubl
           {free_lo + free + pool.margin, wall, Colour::kBlack, Style::kLine}};
 }
 
-Panel PositionPanel(const planner::DofContext& ctx, const planner::PlannedTrial& trial) {
+Panel PositionPanel(const planner::DofPlanningProblem& ctx, const planner::PlannedTrial& trial) {
   const model::TrialDesign& d = trial.design;
   planner::PositionEnvelope e = planner::EnvelopeOf(ctx, d, kPoints);
   const double lo = *std::min_element(e.low.begin(), e.low.end());
@@ -127,7 +127,8 @@ std::vector<Panel> ThrustPanels(const model::Vehicle& v, const model::TrialDesig
   return {thrusters, input};
 }
 
-Figure TrialFigure(const planner::DofContext& ctx, const planner::PlannedTrial& trial, int index) {
+Figure TrialFigure(const planner::DofPlanningProblem& ctx, const planner::PlannedTrial& trial,
+                   int index) {
   const model::TrialDesign& d = trial.design;
   Figure f;
   char number[16];
@@ -153,12 +154,13 @@ std::vector<Figure> ScheduleFigures(const model::Vehicle& vehicle, const model::
                                     const planner::Schedule& schedule,
                                     const planner::PlannerOptions& options,
                                     std::vector<std::string>* notes) {
-  std::map<Dof, std::unique_ptr<planner::DofContext>> contexts;
+  std::map<Dof, std::unique_ptr<planner::DofPlanningProblem>> contexts;
   std::vector<Figure> figures;
   for (std::size_t i = 0; i < schedule.trials.size(); ++i) {
     const planner::PlannedTrial& t = schedule.trials[i];
     auto& ctx = contexts[t.design.dof];
-    if (!ctx) ctx = planner::DofContext::APriori(vehicle, pool, t.design.dof, options, notes);
+    if (!ctx)
+      ctx = planner::DofPlanningProblem::APriori(vehicle, pool, t.design.dof, options, notes);
     figures.push_back(TrialFigure(*ctx, t, static_cast<int>(i)));
   }
   return figures;

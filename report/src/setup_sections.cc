@@ -117,7 +117,8 @@ Section ScheduleSection(const planner::Schedule& schedule,
     trials.rows.push_back({std::to_string(i + 1), d.id, std::string(model::DofName(d.dof)),
                            std::string(model::TrialKindName(d.kind)), d.mapping, Number(d.duration),
                            Number(t.travel[0] * scale), Number(t.travel[1] * scale),
-                           turn ? "°" : std::string(model::PositionUnit(d.dof)), Number(t.thrust_min)});
+                           turn ? "°" : std::string(model::PositionUnit(d.dof)),
+                           Number(t.thrust_min)});
   }
   s.tables.push_back(std::move(trials));
   Table predicted{"Predicted precision (" + PredictedAssumptions(schedule) + ")",

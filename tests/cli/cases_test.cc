@@ -1,6 +1,6 @@
 // The built-in cases (cases/romeo, cases/vsor, cases/uris): every file loads with the readers,
 // each truth file repeats its vehicle file, the thrust mappings give exactly the DOF force of
-// the seeds' control matrices, and the true parameters reproduce the numbers the seeds print
+// the papers' control matrices, and the true parameters reproduce the numbers the papers print
 // (so a typo or a sign slip in a case file fails here, not in a Monte Carlo three areas away).
 #include <gtest/gtest.h>
 
@@ -17,9 +17,9 @@
 namespace uuvplan::model {
 namespace {
 
-using io::ReadVehicle;
 using io::ReadPool;
 using io::ReadTruth;
+using io::ReadVehicle;
 
 const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/cases/";
 constexpr double kPi = 3.14159265358979323846;
@@ -150,7 +150,7 @@ std::map<std::string, double> UnitForces(const Vehicle& v, const std::string& ma
 // times the largest lever factor (b = 0.64) — 1e-4 bounds it with margin.
 constexpr double kShareTolerance = 1e-4;
 
-// Seed 000 §IV-B: phi_H = B_H·tau_H with phi_H = [F_u/cos(alpha), F_v/sin(alpha), T_r/b] and
+// Ref 000 §IV-B: phi_H = B_H·tau_H with phi_H = [F_u/cos(alpha), F_v/sin(alpha), T_r/b] and
 // phi_V = B_V·tau_V with phi_V = [T_p/c, T_q/d, F_w]. With alpha = 45° and b = 0.9·sin 45°
 // (cases/romeo/vehicle.yaml), each mapping of a DOF must give exactly a unit force on it and
 // nothing on the other DOFs of its plane; its open-water direction is Table I's.
@@ -203,7 +203,7 @@ double SteadySpeed(double k, double kq, double force) {
 
 double Deg(double rad) { return rad * 180.0 / kPi; }
 
-// The ROMEO truth against the numbers seed 000 §IV-D derives from it.
+// The ROMEO truth against the numbers ref 000 §IV-D derives from it.
 TEST(Cases, RomeoTruthReproducesSeed000) {
   const Truth truth = ReadTruth(Case("romeo", "truth.yaml"));
   const auto& surge = truth.dofs.at(Dof::kSurge).params;
@@ -239,7 +239,7 @@ TEST(Cases, RomeoTruthReproducesSeed000) {
   EXPECT_NEAR(dw / 9.81, 0.7, 0.05);
 }
 
-// VSOR: the contract parameters give back Table 5's coefficients of seed 002 eq. 4 (Table 2:
+// VSOR: the contract parameters give back Table 5's coefficients of ref 002 eq. 4 (Table 2:
 // alpha = -d_L/m, beta = -d_Q/m, gamma = 1/m, delta = -b/m; bias = -b). Tolerances are half a
 // unit of the last printed digit, plus the rounding of d_Q and m for beta.
 TEST(Cases, VsorTruthReproducesTable5) {
@@ -251,7 +251,7 @@ TEST(Cases, VsorTruthReproducesTable5) {
   EXPECT_NEAR(p.at("bias") / p.at("m"), 0.068256, 5e-6);
 }
 
-// VSOR mappings against seed 002 eq. 5 with beta = 45°, R = 1.1·sin 45° (vehicle.yaml).
+// VSOR mappings against ref 002 eq. 5 with beta = 45°, R = 1.1·sin 45° (vehicle.yaml).
 TEST(Cases, VsorMappingsReproduceEquation5) {
   const Vehicle v = ReadVehicle(Case("vsor", "vehicle.yaml"));
   const double beta = kPi / 4, r = 1.1 * std::sin(kPi / 4);
@@ -265,7 +265,7 @@ TEST(Cases, VsorMappingsReproduceEquation5) {
   EXPECT_NEAR((t["HT1"] + t["HT7"]) * r, 1.0, kShareTolerance);  // tau_4
 }
 
-// URIS: the contract parameters give back Table 4 of seed 004 (dx/dt = -alpha·x + gamma·tau +
+// URIS: the contract parameters give back Table 4 of ref 004 (dx/dt = -alpha·x + gamma·tau +
 // delta, see cases/uris/truth.yaml). Half a unit of the last printed digit.
 TEST(Cases, UrisTruthReproducesTable4) {
   const Truth truth = ReadTruth(Case("uris", "truth.yaml"));
@@ -293,9 +293,9 @@ TEST(Cases, UrisTruthReproducesTable4) {
 }
 
 // Where the truth lies against the a priori inertia box of its vehicle file. Inside, except
-// where the seeds' own a priori missed (documented in the case files): ROMEO's yaw (84 kg·m²
-// measured against a 93.75 uniform box, seed 000 §IV-D) and VSOR's yaw (136.66 against
-// 60·(1 + 100%), seed 002 §7). A planner must cope with both.
+// where the papers' own a priori missed (documented in the case files): ROMEO's yaw (84 kg·m²
+// measured against a 93.75 uniform box, ref 000 §IV-D) and VSOR's yaw (136.66 against
+// 60·(1 + 100%), ref 002 §7). A planner must cope with both.
 TEST(Cases, TruthsAgainstTheirAPrioriInertiaBoxes) {
   const std::vector<std::pair<std::string, Dof>> misses = {{"romeo", Dof::kYaw},
                                                            {"vsor", Dof::kYaw}};

@@ -1,4 +1,4 @@
-// The command line's habits (issue #18 item 6, docs/cli.md "Common rules"): --version from
+// The command line's habits (docs/cli.md "Common rules"): --version from
 // CMake's project(), an unknown command or option named with the closest known name by edit
 // distance, every error — CLI11's own parse errors included — starting with "uuvplan:", and
 // the same exit status (2) for every usage error of every command.
@@ -49,7 +49,8 @@ TEST(CliHabits, UnknownCommandNamesTheClosestOne) {
   EXPECT_THAT(foo.err, StartsWith("uuvplan: unknown command 'foo' (did you mean 'loop'?)\n"));
   const ToolRun typo = RunTool("scedule x --pool y", scratch);
   EXPECT_EQ(typo.status, 2);
-  EXPECT_THAT(typo.err, StartsWith("uuvplan: unknown command 'scedule' (did you mean 'schedule'?)"));
+  EXPECT_THAT(typo.err,
+              StartsWith("uuvplan: unknown command 'scedule' (did you mean 'schedule'?)"));
   const ToolRun far = RunTool("xyzzyplugh", scratch);
   EXPECT_EQ(far.status, 2);
   EXPECT_THAT(far.err, StartsWith("uuvplan: unknown command 'xyzzyplugh'\n"));  // no guess
@@ -67,11 +68,13 @@ TEST(CliHabits, UnknownOptionOfEveryCommandIsAUsageError) {
   }
   const ToolRun typo = RunTool("schedule v.yaml --pool p.yaml --jsn x", scratch);
   EXPECT_EQ(typo.status, 2);
-  EXPECT_THAT(typo.err,
-              StartsWith("uuvplan: unknown option '--jsn' for 'schedule' (did you mean '--json'?)"));
+  EXPECT_THAT(
+      typo.err,
+      StartsWith("uuvplan: unknown option '--jsn' for 'schedule' (did you mean '--json'?)"));
   const ToolRun top = RunTool("--verison", scratch);
   EXPECT_EQ(top.status, 2);
-  EXPECT_THAT(top.err, StartsWith("uuvplan: unknown option '--verison' (did you mean '--version'?)"));
+  EXPECT_THAT(top.err,
+              StartsWith("uuvplan: unknown option '--verison' (did you mean '--version'?)"));
 }
 
 TEST(CliHabits, ParserErrorsStartWithTheProgramName) {
@@ -106,8 +109,9 @@ TEST(CliHabits, BadInputOfEveryFileCommandStartsWithTheProgramName) {
   const TempDir scratch;
   const std::string missing = scratch / "missing.yaml";
   for (const std::string& args :
-       {"schedule " + missing + " --pool " + missing, "check-pool " + missing + " --pool " + missing,
-        "identify " + missing, "next " + missing + " --pool " + missing, "diagnose " + missing,
+       {"schedule " + missing + " --pool " + missing,
+        "check-pool " + missing + " --pool " + missing, "identify " + missing,
+        "next " + missing + " --pool " + missing, "diagnose " + missing,
         "score " + missing + " " + missing, "loop --truth " + missing + " --pool " + missing,
         "simulate --truth " + missing + " --plan " + missing + " --out " + (scratch / "out"),
         "log " + missing + " " + missing + " --trial a --dof surge"}) {

@@ -15,8 +15,8 @@
 
 #include "cli_test_util.h"
 #include "uuvplan/io/io.h"
-#include "uuvplan/model/util/text.h"
 #include "uuvplan/io/schedule_json.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::cli_test {
@@ -28,14 +28,14 @@ namespace fs = std::filesystem;
 
 const std::string kRomeoTruth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/truth.yaml";
 const std::string kVsorTruth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/vsor/truth.yaml";
-// The contract's commands, uuvplan's `score` (issue #14: compare two models on one campaign)
-// `report` (issue #18: the HTML report and its figures) and `log` (issue #18: grow a campaign at
+// The contract's commands, uuvplan's `score` (compare two models on one campaign)
+// `report` (the HTML report and its figures) and `log` (grow a campaign at
 // the pool).
 const std::set<std::string> kContractCommands = {"schedule", "check-pool", "simulate", "identify",
                                                  "next",     "loop",       "diagnose", "demo",
                                                  "score",    "report",     "log"};
 
-// A small ROMEO plan: one trial of each kind (seed 000 §IV-D flavours, short).
+// A small ROMEO plan: one trial of each kind (ref 000 §IV-D flavours, short).
 std::string SmallPlan() {
   return R"({"trials": [
   {"id": "surge_steady", "dof": "surge", "kind": "steady", "duration": 20,
@@ -178,7 +178,8 @@ TEST(Cli, SimulateIsDeterministicPerSeedAndHonoursStep) {
                                    "' --out '" + (dir / "f") + "' --seed 18446744073709551616",
                                dir);
   EXPECT_EQ(huge.status, 2);
-  EXPECT_THAT(huge.err, HasSubstr("--seed: expected a whole number from 0 to 18446744073709551615"));
+  EXPECT_THAT(huge.err,
+              HasSubstr("--seed: expected a whole number from 0 to 18446744073709551615"));
 }
 
 // --target is a percentage > 0: 0, NaN and words are refused with the option's name and what it
@@ -187,9 +188,9 @@ TEST(Cli, TargetOtherThanAPositivePercentageIsRefusedByName) {
   const TempDir dir;
   const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
   for (const std::string target : {"0", "nan", "-5", "five"}) {
-    const ToolRun r = RunTool("check-pool '" + romeo + "vehicle.yaml' --pool '" + romeo +
-                                  "pool.yaml' --target " + target,
-                              dir);
+    const ToolRun r = RunTool(
+        "check-pool '" + romeo + "vehicle.yaml' --pool '" + romeo + "pool.yaml' --target " + target,
+        dir);
     EXPECT_EQ(r.status, 2) << target;
     EXPECT_THAT(r.err, HasSubstr("--target: expected a percentage > 0, got '" + target + "'"));
   }
@@ -228,11 +229,12 @@ TEST(Cli, DiagnoseWithNothingDiagnosableExitsOneAndSaysSo) {
   // nothing is diagnosed. That is a result to act on (exit 1), not "the model explains the data".
   const TempDir dir;
   fs::create_directories(dir / "trials");
-  fs::copy_file(std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/vehicle.yaml", dir / "vehicle.yaml");
+  fs::copy_file(std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/vehicle.yaml",
+                dir / "vehicle.yaml");
   dir.Write("trials/a.csv", "t,force_surge,pos_surge\n0,1,0\n1,1,0.1\n2,1,0.2\n");
-  const std::string campaign = dir.Write(
-      "campaign.yaml",
-      "vehicle: vehicle.yaml\ntrials:\n  - file: trials/a.csv\n    dof: surge\n    mapping: surge-front\n");
+  const std::string campaign = dir.Write("campaign.yaml",
+                                         "vehicle: vehicle.yaml\ntrials:\n  - file: trials/a.csv\n "
+                                         "   dof: surge\n    mapping: surge-front\n");
   const ToolRun r = RunTool("diagnose '" + campaign + "'", dir);
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_THAT(r.out, HasSubstr("none: no DOF could be diagnosed"));
@@ -244,9 +246,8 @@ TEST(Cli, DiagnoseWithNothingDiagnosableExitsOneAndSaysSo) {
 // without a model is refused by `score` with the key it needs (exit 2).
 TEST(Cli, DiagnoseWritesTheModelAndScoreScoresIt) {
   const TempDir dir;
-  const std::string plan = dir.Write(
-      "plan.json",
-      R"({"trials": [
+  const std::string plan = dir.Write("plan.json",
+                                     R"({"trials": [
   {"id": "a", "dof": "surge", "kind": "segments", "duration": 40, "mapping": "surge-front",
    "segments": [{"force": 60, "duration": 20, "mapping": "surge-front"},
                 {"force": 20, "duration": 20, "mapping": "surge-front"}]},
@@ -267,9 +268,8 @@ TEST(Cli, DiagnoseWritesTheModelAndScoreScoresIt) {
                     dir)
                 .status,
             0);  // the vehicle file with a model is a vehicle file
-  const ToolRun s = RunTool("score '" + model + "' '" + (dir / "c") + "' --json '" +
-                                (dir / "score.json") + "'",
-                            dir);
+  const ToolRun s = RunTool(
+      "score '" + model + "' '" + (dir / "c") + "' --json '" + (dir / "score.json") + "'", dir);
   ASSERT_EQ(s.status, 0) << s.out << s.err;
   // The fit trials' pooled MAE, as diagnose printed it for the extended model (4 digits).
   const auto json = nlohmann::json::parse(ReadText(dir / "score.json"));
@@ -280,10 +280,12 @@ TEST(Cli, DiagnoseWritesTheModelAndScoreScoresIt) {
   const std::string from = "standard (the baseline) -> extended: fit ";
   const std::size_t at = d.out.find(from);
   ASSERT_NE(at, std::string::npos) << d.out;
-  const std::string before = d.out.substr(at + from.size(), d.out.find(' ', at + from.size()) - at - from.size());
+  const std::string before =
+      d.out.substr(at + from.size(), d.out.find(' ', at + from.size()) - at - from.size());
   EXPECT_THAT(d.out, HasSubstr("Baseline of the comparisons"));
   EXPECT_THAT(d.out, HasSubstr("; velocity MAE fit " + before));
-  const ToolRun bad = RunTool("score '" + (dir / "c/vehicle.yaml") + "' '" + (dir / "c") + "'", dir);
+  const ToolRun bad =
+      RunTool("score '" + (dir / "c/vehicle.yaml") + "' '" + (dir / "c") + "'", dir);
   EXPECT_EQ(bad.status, 2);
   EXPECT_THAT(bad.err, HasSubstr("dofs.<dof>.params"));
   // The campaign identified with the model as its vehicle: the file's parameters are not
@@ -345,7 +347,7 @@ TEST(Cli, SimulateMalformedPlanExitsTwoNamingFileTrialAndKey) {
 
 TEST(Cli, SimulateTrialWithoutTruthForItsDofExitsTwo) {
   const TempDir dir;
-  // VSOR's truth has yaw and heave only (seed 002 publishes yaw): a surge trial cannot run.
+  // VSOR's truth has yaw and heave only (ref 002 publishes yaw): a surge trial cannot run.
   const std::string plan = dir.Write("plan.json", R"({"trials": [{"id": "s", "dof": "surge",
       "kind": "steady", "duration": 10, "mapping": "surge-ht1-ht6", "force": 50}]})");
   const ToolRun r = RunTool(
@@ -394,15 +396,15 @@ TEST(Cli, DemoTellsTheRomeoStory) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_LT(seconds, 60.0);  // the issue: "under a minute"
-  // The story of issue #5 §3: the loop converges and the diagnosis names the paper's
-  // propeller-hull interaction (eta = 0.56 pulling up, seed 000 Table II).
+  // The demo story: the loop converges and the diagnosis names the paper's
+  // propeller-hull interaction (eta = 0.56 pulling up, ref 000 Table II).
   EXPECT_THAT(r.out, HasSubstr("converged after"));
   EXPECT_THAT(r.out, HasSubstr("installation_loss (heave)"));
   EXPECT_THAT(r.out, HasSubstr("eta.vertical-all.neg = 0.56"));
   // Its predicted σ say what they rest on (ScheduleInformation.RomeoTablesAgreeWithTheirMatrices).
   EXPECT_THAT(r.out, HasSubstr(planner::kPredictedSigmaAssumption));
 
-  // Seed 000 §IV-D: five experiments, 0-4 ballast steps, up and down legs in vertical-all.
+  // Ref 000 §IV-D: five experiments, 0-4 ballast steps, up and down legs in vertical-all.
   const model::Campaign c = io::ReadCampaign(dir / "demo/campaign.yaml");
   ASSERT_EQ(c.trials.size(), 5u);
   for (int i = 0; i < 5; ++i) {

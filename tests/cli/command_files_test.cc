@@ -1,4 +1,4 @@
-// `schedule --commands DIR` (issue #18 item 3): the command files replayed through the
+// `schedule --commands DIR`: the command files replayed through the
 // simulator at the corners of the a priori box (the DOF's ParameterBox) as the pool
 // would run them — each thruster's command held until the next row, turned into thrust by the
 // thruster's model and into the DOF's force through the mapping the working thrusters form —
@@ -20,7 +20,7 @@
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/excitation.h"
 #include "uuvplan/model/simulator.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/schedule_planner.h"
 
 namespace uuvplan::cli_test {
@@ -49,7 +49,8 @@ CommandRows ReadCommandCsv(const std::string& path) {
 // behind, or the depth) or, for a rotation, the tether's start twist (rad).
 std::map<std::string, double> StartsFromRunSheet(const std::string& text) {
   std::map<std::string, double> starts;
-  const std::regex row(R"(\| \d+ \| (\S+) \| (\w+) \|[^|]*\|[^|]*\| x (\S+) m, y (\S+) m, z (\S+) m \| 0°(, tether twisted ([-+0-9.e]+)°)?)");
+  const std::regex row(
+      R"(\| \d+ \| (\S+) \| (\w+) \|[^|]*\|[^|]*\| x (\S+) m, y (\S+) m, z (\S+) m \| 0°(, tether twisted ([-+0-9.e]+)°)?)");
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     std::smatch m;
@@ -65,7 +66,7 @@ std::map<std::string, double> StartsFromRunSheet(const std::string& text) {
 }
 
 // φ_n and the mapping the non-idle thrusters of a row form: the mapping of `dof` whose thrusters
-// are exactly those, φ_n = Σ share_i·τ_i / Σ share_i² (τ_i = share_i·φ_n, seed 000 Table I).
+// are exactly those, φ_n = Σ share_i·τ_i / Σ share_i² (τ_i = share_i·φ_n, ref 000 Table I).
 void ForceOfRow(const model::Vehicle& v, model::Dof dof, const std::vector<double>& row,
                 double* phi, int* mapping) {
   *phi = 0.0;
@@ -120,8 +121,8 @@ std::array<double, 2> ReplayOverBox(const model::Vehicle& v, const model::Pool& 
   const double duration = t.back();
   const auto input = model::MakeHeldExcitation(t, phi, mapping, duration);
   std::vector<std::string> notes;
-  const auto ctx = planner::DofContext::APriori(v, pool, dof, planner::ScheduleOptions{}.planner,
-                                                &notes);
+  const auto ctx = planner::DofPlanningProblem::APriori(v, pool, dof,
+                                                        planner::ScheduleOptions{}.planner, &notes);
   // Output at every row (the held commands change only there). An extreme of the position falls
   // where the velocity crosses zero, so rows 50 ms apart miss at most ½·a·(25 ms)², under 1 mm
   // at these vehicles' accelerations (< 1 m/s²).
@@ -144,10 +145,10 @@ std::array<double, 2> ReplayOverBox(const model::Vehicle& v, const model::Pool& 
 void ReplayCase(const std::string& name) {
   const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + name;
   const TempDir scratch;
-  const ToolRun run = RunTool("schedule '" + dir + "/vehicle.yaml' --pool '" + dir +
-                                  "/pool.yaml' --json '" + (scratch / "plan.json") +
-                                  "' --commands '" + (scratch / "commands") + "'",
-                              scratch);
+  const ToolRun run =
+      RunTool("schedule '" + dir + "/vehicle.yaml' --pool '" + dir + "/pool.yaml' --json '" +
+                  (scratch / "plan.json") + "' --commands '" + (scratch / "commands") + "'",
+              scratch);
   ASSERT_TRUE(run.status == 0 || run.status == 1) << run.err;
   const model::Vehicle v = io::ReadVehicle(dir + "/vehicle.yaml");
   const model::Pool pool = io::ReadPool(dir + "/pool.yaml");

@@ -1,4 +1,4 @@
-// Outputs that never lose data (issue #15): concurrent runs on one --out, and a user's
+// Outputs that never lose data: concurrent runs on one --out, and a user's
 // directory with the name of an old temporary directory.
 #include <gtest/gtest.h>
 

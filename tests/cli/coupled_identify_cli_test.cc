@@ -1,4 +1,4 @@
-// `uuvplan identify CAMPAIGN --model coupled` (issue #19): a virtual combined-mode campaign of
+// `uuvplan identify CAMPAIGN --model coupled`: a virtual combined-mode campaign of
 // cases/asv written to disk, identified from the command line, its JSON within 3σ of the truth.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "support/coupled_campaign.h"
 #include "cli_test_util.h"
+#include "support/coupled_campaign.h"
 #include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/coupled_model.h"
@@ -37,20 +37,21 @@ TEST(CoupledIdentifyCli, IdentifiesACombinedModeCampaign) {
   }
   TempDir scratch;
   io::WriteCampaign(scratch / "campaign", campaign, truth.vehicle);
-  const ToolRun run = RunTool("identify '" + (scratch / "campaign") +
-                                  "' --model coupled --json '" + (scratch / "id.json") + "'",
+  const ToolRun run = RunTool("identify '" + (scratch / "campaign") + "' --model coupled --json '" +
+                                  (scratch / "id.json") + "'",
                               scratch);
   ASSERT_EQ(run.status, 0) << run.out << run.err;
   EXPECT_NE(run.out.find("coupled horizontal model"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("kg·m²"), std::string::npos) << run.out;  // units on every number
   const nlohmann::json j = nlohmann::json::parse(ReadText(scratch / "id.json"));
   ASSERT_EQ(j.at("status"), "ok");
-  const model::CoupledHorizontalModel want = model::CoupledModelOfTruth(truth);
-  const std::vector<std::string> names = model::CoupledParameterNames();
-  for (int k = 0; k < model::kCoupledParameterCount; ++k) {
+  const model::MultiDofModel coupled = model::CoupledHorizontalModel(truth.vehicle);
+  const Eigen::VectorXd want = model::CoupledThetaOfTruth(coupled, truth);
+  const std::vector<std::string>& names = coupled.parameter_names();
+  ASSERT_EQ(names.size(), 12u);
+  for (std::size_t k = 0; k < names.size(); ++k) {
     const auto& p = j.at("params").at(names[k]);
-    EXPECT_LT(std::abs(p.at("value").get<double>() - want.theta[k]),
-              3 * p.at("sigma").get<double>())
+    EXPECT_LT(std::abs(p.at("value").get<double>() - want[k]), 3 * p.at("sigma").get<double>())
         << names[k];
   }
 }

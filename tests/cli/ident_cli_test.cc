@@ -4,6 +4,8 @@
 // Needs the uuvplan executable (built with the tool target).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -18,8 +20,6 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "ident/ident_cases.h"
 #include "support/real_data.h"
@@ -55,7 +55,8 @@ RunResult RunUuvplan(const std::string& args, bool merge_stderr = true) {
 }
 
 fs::path TempDir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("uuvplan_ident_cli_" + name + "_" + std::to_string(::getpid()));
+  const fs::path p =
+      fs::temp_directory_path() / ("uuvplan_ident_cli_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(p);
   return p;
 }
@@ -66,7 +67,8 @@ TEST(IdentifyCliTest, SimulatedCampaignGivesTheContractJson) {
   vo.seed = 3;
   io::SimulateCampaign(testing::CaseTruth("romeo"), testing::RomeoSurgeDesigns(), dir.string(), vo);
   const fs::path out = dir / "identify.json";
-  const RunResult r = RunUuvplan("identify " + (dir / "campaign.yaml").string() + " --json " + out.string());
+  const RunResult r =
+      RunUuvplan("identify " + (dir / "campaign.yaml").string() + " --json " + out.string());
   ASSERT_EQ(r.status, 0) << r.out;
   // The readable table names each parameter with value, σ, percentile error and significance.
   EXPECT_NE(r.out.find("parameter"), std::string::npos);
@@ -93,13 +95,15 @@ TEST(IdentifyCliTest, DashWritesJsonToStdoutAndBadInputExits2) {
   const fs::path dir = TempDir("dash");
   model::VirtualCampaignOptions vo;
   io::SimulateCampaign(testing::CaseTruth("uris"), {testing::UrisDesigns()[0]}, dir.string(), vo);
-  const RunResult ok = RunUuvplan("identify " + (dir / "campaign.yaml").string() + " --json -", false);
+  const RunResult ok =
+      RunUuvplan("identify " + (dir / "campaign.yaml").string() + " --json -", false);
   ASSERT_EQ(ok.status, 0) << ok.out;
   EXPECT_NO_THROW(json::parse(ok.out)) << ok.out.substr(0, 200);
   const RunResult missing = RunUuvplan("identify " + (dir / "nope.yaml").string());
   EXPECT_EQ(missing.status, 2) << missing.out;
   EXPECT_NE(missing.out.find("nope.yaml"), std::string::npos) << missing.out;
-  const RunResult bad_dof = RunUuvplan("identify " + (dir / "campaign.yaml").string() + " --dof sideways");
+  const RunResult bad_dof =
+      RunUuvplan("identify " + (dir / "campaign.yaml").string() + " --dof sideways");
   EXPECT_EQ(bad_dof.status, 2) << bad_dof.out;
   EXPECT_NE(bad_dof.out.find("sideways"), std::string::npos);
   fs::remove_all(dir);
@@ -113,13 +117,16 @@ TEST(IdentifyCliTest, ThreeSamplesIdentifyNothingAndExitOne) {
   // parameter "not excited" and the output error returned m ≈ 0.5 ± 1e9, insignificant.)
   const fs::path dir = TempDir("three");
   fs::create_directories(dir / "trials");
-  fs::copy_file(std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/vehicle.yaml", dir / "vehicle.yaml");
+  fs::copy_file(std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/vehicle.yaml",
+                dir / "vehicle.yaml");
   std::ofstream(dir / "trials" / "a.csv") << "t,force_surge,pos_surge\n0,1,0\n1,1,0.1\n2,1,0.2\n";
   std::ofstream(dir / "campaign.yaml")
-      << "vehicle: vehicle.yaml\ntrials:\n  - file: trials/a.csv\n    dof: surge\n    mapping: surge-front\n";
+      << "vehicle: vehicle.yaml\ntrials:\n  - file: trials/a.csv\n    dof: surge\n    mapping: "
+         "surge-front\n";
   const RunResult r = RunUuvplan("identify " + (dir / "campaign.yaml").string());
   EXPECT_EQ(r.status, 1) << r.out;
-  EXPECT_NE(r.out.find("FAILED: no estimate: no estimator could fit these trials"), std::string::npos)
+  EXPECT_NE(r.out.find("FAILED: no estimate: no estimator could fit these trials"),
+            std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("3 measurements for 5 unknowns"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("longer trials"), std::string::npos) << r.out;
@@ -128,7 +135,7 @@ TEST(IdentifyCliTest, ThreeSamplesIdentifyNothingAndExitOne) {
 
 TEST(IdentifyCliTest, NoForceOfKnownSizeIsAFailureNotAnEstimate) {
   // ROMEO's horizontal-all-surge is not open water (its η is unknown): with only its force the
-  // model is homogeneous — c·(m, k, kq, bias, η) fits as well for every c (seed 000 §II-A) — so
+  // model is homogeneous — c·(m, k, kq, bias, η) fits as well for every c (ref 000 §II-A) — so
   // an m "estimated" with η held at 1 is no estimate (it read 5788 ± 1422 kg for a true 890,
   // "significant", exit 0). With a surge-front leg (open water forward) the scale is known.
   const fs::path dir = TempDir("unknown-eta");
@@ -139,10 +146,11 @@ TEST(IdentifyCliTest, NoForceOfKnownSizeIsAFailureNotAnEstimate) {
      "mapping": "horizontal-all-surge", "force": 60},
     {"id": "front", "dof": "surge", "kind": "steady", "duration": 40, "mapping": "surge-front",
      "force": 60}]})";
-  ASSERT_EQ(RunUuvplan("simulate --truth " + romeo + "truth.yaml --plan " +
-                       (dir / "plan.json").string() + " --out " + (dir / "c").string() +
-                       " --seed 5").status,
-            0);
+  ASSERT_EQ(
+      RunUuvplan("simulate --truth " + romeo + "truth.yaml --plan " + (dir / "plan.json").string() +
+                 " --out " + (dir / "c").string() + " --seed 5")
+          .status,
+      0);
   std::ofstream(dir / "c" / "unknown.yaml")
       << "vehicle: vehicle.yaml\ntrials:\n  - file: trials/all.csv\n    dof: surge\n"
          "    mapping: horizontal-all-surge\n";
@@ -169,19 +177,24 @@ TEST(IdentifyCliTest, AShortPlannedSineIsFittedInFullAndNotTakenForClosedLoop) {
   const std::string vsor = std::string(UUVPLAN_SOURCE_DIR) + "/cases/vsor/";
   const std::string plan = (dir / "plan.json").string();
   ASSERT_NE(RunUuvplan("schedule " + vsor + "vehicle.yaml --pool " + vsor +
-                       "pool.yaml --dof heave --json " + plan).status, 2);
+                       "pool.yaml --dof heave --json " + plan)
+                .status,
+            2);
   ASSERT_EQ(RunUuvplan("simulate --truth " + vsor + "truth.yaml --plan " + plan + " --out " +
-                       (dir / "c").string() + " --seed 2").status,
+                       (dir / "c").string() + " --seed 2")
+                .status,
             0);
-  const RunResult r = RunUuvplan("identify " + (dir / "c").string() + " --json " +
-                                 (dir / "id.json").string());
+  const RunResult r =
+      RunUuvplan("identify " + (dir / "c").string() + " --json " + (dir / "id.json").string());
   EXPECT_EQ(r.out.find("closed-loop"), std::string::npos) << r.out;
   const json j = json::parse(std::ifstream(dir / "id.json"));
-  const std::map<std::string, double> truth = {{"m", 380}, {"k", 64.2}, {"kq", 617.9}, {"bias", -35}};
+  const std::map<std::string, double> truth = {
+      {"m", 380}, {"k", 64.2}, {"kq", 617.9}, {"bias", -35}};
   const json& params = j.at("dofs").at("heave").at("params");
   for (const auto& [name, value] : truth) {
     const json& p = params.at(name);
-    ASSERT_TRUE(p.at("sigma").is_number()) << name << " " << p.dump() << "\n" << r.out;  // estimated, not held
+    ASSERT_TRUE(p.at("sigma").is_number()) << name << " " << p.dump() << "\n"
+                                           << r.out;  // estimated, not held
     EXPECT_LE(std::abs(p.at("value").get<double>() - value), 3 * p.at("sigma").get<double>())
         << name << " " << p.dump();
   }
@@ -227,10 +240,11 @@ TEST(IdentifyCliTest, SlowYawInDegreesIsNamedByItsInertia) {
     {"id": "b", "dof": "yaw", "kind": "segments", "duration": 60, "mapping": "yaw-fl-rr",
      "segments": [{"force": 2.6, "duration": 30},
                   {"force": -2.6, "duration": 30, "mapping": "yaw-fr-rl"}]}]})";
-  ASSERT_EQ(RunUuvplan("simulate --truth " + romeo + "truth.yaml --plan " +
-                       (dir / "plan.json").string() + " --out " + (dir / "rad").string() +
-                       " --seed 3").status,
-            0);
+  ASSERT_EQ(
+      RunUuvplan("simulate --truth " + romeo + "truth.yaml --plan " + (dir / "plan.json").string() +
+                 " --out " + (dir / "rad").string() + " --seed 3")
+          .status,
+      0);
   const RunResult rad = RunUuvplan("identify " + (dir / "rad").string());
   EXPECT_EQ(rad.status, 0) << rad.out;
   fs::copy(dir / "rad", dir / "deg", fs::copy_options::recursive);
@@ -254,9 +268,9 @@ TEST(IdentifyCliTest, RealBlueRovYawIsANonPhysicalFit) {
   // "8σ below 0"): not significant, so the output error drops it and does not converge
   // without it, and the least squares that stand in keep kq = −0.32 ± 0.33. No physical
   // estimate: the DOF is failed and identify exits 1 with the reason on the terminal (it
-  // exited 0 with a warning before issue #14).
-  const RunResult r = RunUuvplan(
-      "identify " + RealDataPath("bluerov-yaw-2016/campaign.yaml") + " --json -", false);
+  // is a failure, not a warning).
+  const RunResult r =
+      RunUuvplan("identify " + RealDataPath("bluerov-yaw-2016/campaign.yaml") + " --json -", false);
   ASSERT_EQ(r.status, 1) << r.out;
   const json j = json::parse(r.out);
   const json& yaw = j.at("dofs").at("yaw");
@@ -277,13 +291,13 @@ TEST(IdentifyCliTest, RealTartanFailuresAndOutliersAreSaidSo) {
   // shared/data/tartan-pool-2022: commanded wrench of a closed-loop controller. Every DOF
   // must be flagged closed loop, identified by the closed-loop estimator (named in the JSON)
   // and its inertia reported unreliable. Yaw either fits with a free run better than ν ≡ 0 or
-  // is failed with its reason (issue #14); sway ("not usable", the data's README) has no
+  // is failed with its reason; sway ("not usable", the data's README) has no
   // significant closed-loop estimate: failed, exit 1. 39 of 468 yaw position samples of
   // chunk_12 (8.3%) are outliers: a warning naming the trial (468: its first two navigation
   // rows precede its first force row and are not used). The quadratic test alone took 67
   // (14%), among them turns on the irregular 5–8 Hz samples that a quartic follows.
-  const RunResult r = RunUuvplan(
-      "identify " + RealDataPath("tartan-pool-2022/campaign.yaml") + " --json -", false);
+  const RunResult r =
+      RunUuvplan("identify " + RealDataPath("tartan-pool-2022/campaign.yaml") + " --json -", false);
   const json j = json::parse(r.out);
   ASSERT_EQ(j.at("dofs").size(), 4u);
   for (const auto& [dof, d] : j.at("dofs").items()) {
@@ -311,9 +325,9 @@ TEST(IdentifyCliTest, RealTartanFailuresAndOutliersAreSaidSo) {
   EXPECT_THAT(text.out, ::testing::HasSubstr("excluded as outliers, more than 5%"));
 }
 
-// Seed 004 Table 4 in its own convention (dx/dt = −α·x + β·x|x| + γ·τ + δ, cases/uris/truth.yaml):
+// Ref 004 Table 4 in its own convention (dx/dt = −α·x + β·x|x| + γ·τ + δ, cases/uris/truth.yaml):
 // α = k/m, γ = 1/m, δ = bias/m, with σ by the delta method from identify's JSON covariance.
-// Seed 004 Table 4 with the Monte Carlo σ of each RLS coefficient (α = k/m, γ = 1/m,
+// Ref 004 Table 4 with the Monte Carlo σ of each RLS coefficient (α = k/m, γ = 1/m,
 // δ = bias/m) on the virtual URIS: build/tests/uris_table4_validation 400 [camera scale],
 // docs/validation.md "URIS Table 4 by RLS" (400 seeds; pitch δ is not estimated: 0).
 struct Table4Row {
@@ -331,7 +345,7 @@ constexpr Table4Row kUrisTable4Fine[] = {
     {"pitch", 0.6514, 0.8052, 0.0, 2.95e-4, 2.82e-4, 0.0},
     {"yaw", 1.1006, 0.5236, -0.0435, 8.34e-4, 3.76e-4, 3.25e-5}};
 
-// Seed 004 §5.4's own experiment: data simulated from Table 4, no noise stated; here a camera
+// Ref 004 §5.4's own experiment: data simulated from Table 4, no noise stated; here a camera
 // of 10 nm / 1e-8 rad, noise-free to the printed digits. Within the paper's rounding alone.
 constexpr Table4Row kUrisTable4NoiseFree[] = {{"surge", 0.3302, 0.0169, -0.0070, 0.0, 0.0, 0.0},
                                               {"pitch", 0.6514, 0.8052, 0.0, 0.0, 0.0, 0.0},
@@ -372,7 +386,7 @@ void CheckTable4(const model::Truth& truth, const Table4Row (&table)[N], const s
   model::VirtualCampaignOptions vo;
   vo.seed = 4;
   io::SimulateCampaign(truth, testing::UrisDesigns(), dir.string(), vo);
-  // Seed 004 drops β as the seeds do (seed 000 §IV-D's rule, `--seed-selection`): β is
+  // Ref 004 drops β as the papers do (ref 000 §IV-D's rule, `--seed-selection`): β is
   // correlated with α, whose σ then assume β = 0 — as the true β is here.
   const RunResult r =
       RunUuvplan("identify " + (dir / "campaign.yaml").string() +
@@ -412,12 +426,12 @@ void CheckTable4(const model::Truth& truth, const Table4Row (&table)[N], const s
 }
 
 TEST(IdentifyCliTest, MethodRlsOnUrisReproducesSeed004Table4) {
-  // Seed 004 §5.4: RLS (eq. 15) "on the basis of simulated data, obtained from the model
+  // Ref 004 §5.4: RLS (eq. 15) "on the basis of simulated data, obtained from the model
   // identified off-line" (Table 4), final estimates against the truth. `identify --method
   // rls` (default forgetting 0.99) on the virtual URIS (cases/uris: Table 4's parameters;
   // steps and PRBS per DOF, §5.2, seed 4), with the case's camera (σ_MC of α 1.8–7%: the
   // paper's four decimals are far below what these records determine), with it 100 times
-  // finer (seed 004 gives no noise for its simulated data; σ_MC 0.02–0.08%, still above the
+  // finer (ref 004 gives no noise for its simulated data; σ_MC 0.02–0.08%, still above the
   // rounding for pitch and yaw α, γ), 10⁴ times finer, and noise-free to the printed digits.
   model::Truth truth = testing::CaseTruth("uris");
   CheckTable4(truth, kUrisTable4, "uris_rls");
@@ -436,7 +450,7 @@ TEST(IdentifyCliTest, MethodRlsOnUrisReproducesSeed004Table4) {
   CheckTable4(truth, kUrisTable4Fine, "uris_rls_finest");
   // Noise-free to the printed digits (10 nm), with the velocity filter the noise allows:
   // 9 points (--sg-window). Table 4 within its rounding; the largest error is yaw α −2.7e-5.
-  // With the seeds' 9–41 points the filter's truncation on the 1 s transients is what is
+  // With the papers' 9–41 points the filter's truncation on the 1 s transients is what is
   // left: yaw α −6.6e-4, γ −3.0e-4, pitch α −5.4e-5 (docs/seeds.md).
   for (auto& [dof, sensors] : truth.vehicle.sensors) {
     if (sensors.position) sensors.position->sigma /= 100.0;
@@ -464,20 +478,21 @@ TEST(IdentifyCliTest, EveryCommandThatPreparesTrialsTakesTheSameFilterWindow) {
   io::SimulateCampaign(testing::CaseTruth("uris"), {testing::UrisDesigns()[2]}, dir.string(), vo);
   const std::string campaign = (dir / "campaign.yaml").string();
   const std::string truth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/uris/truth.yaml";
-  for (const std::string& command : {"identify " + campaign, "diagnose " + campaign,
-                                     "score " + truth + " " + campaign,
-                                     "report " + campaign + " -o " + (dir / "report").string()}) {
+  for (const std::string& command :
+       {"identify " + campaign, "diagnose " + campaign, "score " + truth + " " + campaign,
+        "report " + campaign + " -o " + (dir / "report").string()}) {
     const RunResult bad = RunUuvplan(command + " --sg-window 8");
     EXPECT_EQ(bad.status, 2) << command << "\n" << bad.out;
     EXPECT_THAT(bad.out, ::testing::HasSubstr("--sg-window 8: expected an odd number of points"));
   }
   EXPECT_FALSE(fs::exists(dir / "report"));
   // A schedule has no trials to filter: refused, not ignored.
-  const RunResult schedule_report = RunUuvplan(
-      "report " + std::string(UUVPLAN_SOURCE_DIR) + "/tests/data/bad/cases/plan_good.json -o " +
-      (dir / "report").string() + " --sg-window 9");
+  const RunResult schedule_report = RunUuvplan("report " + std::string(UUVPLAN_SOURCE_DIR) +
+                                               "/tests/data/bad/cases/plan_good.json -o " +
+                                               (dir / "report").string() + " --sg-window 9");
   EXPECT_EQ(schedule_report.status, 2) << schedule_report.out;
-  EXPECT_THAT(schedule_report.out, ::testing::HasSubstr("--sg-window: the velocity filter of a campaign"));
+  EXPECT_THAT(schedule_report.out,
+              ::testing::HasSubstr("--sg-window: the velocity filter of a campaign"));
   const RunResult identified = RunUuvplan("identify " + campaign + " --sg-window 9");
   const RunResult diagnosed = RunUuvplan("diagnose " + campaign + " --sg-window 9");
   const RunResult seeds_window = RunUuvplan("identify " + campaign);
@@ -499,21 +514,25 @@ TEST(IdentifyCliTest, MethodOptionsAreCheckedAndNamed) {
   const std::string campaign = (dir / "campaign.yaml").string();
   const RunResult unknown = RunUuvplan("identify " + campaign + " --method kalman");
   EXPECT_EQ(unknown.status, 2) << unknown.out;
-  EXPECT_THAT(unknown.out, ::testing::HasSubstr("chain, ls, integral, one-step, rls, output-error"));
-  const RunResult forgetting = RunUuvplan("identify " + campaign + " --method one-step --forgetting 0.95");
+  EXPECT_THAT(unknown.out,
+              ::testing::HasSubstr("chain, ls, integral, one-step, rls, output-error"));
+  const RunResult forgetting =
+      RunUuvplan("identify " + campaign + " --method one-step --forgetting 0.95");
   EXPECT_EQ(forgetting.status, 2) << forgetting.out;
   EXPECT_THAT(forgetting.out, ::testing::HasSubstr("--forgetting"));
-  const RunResult bad_lambda = RunUuvplan("identify " + campaign + " --method rls --forgetting 0.5");
+  const RunResult bad_lambda =
+      RunUuvplan("identify " + campaign + " --method rls --forgetting 0.5");
   EXPECT_EQ(bad_lambda.status, 2) << bad_lambda.out;
   EXPECT_THAT(bad_lambda.out, ::testing::HasSubstr("0.9 < lambda <= 1"));
   for (const char* window : {"8", "5"}) {
     const RunResult bad_window = RunUuvplan("identify " + campaign + " --sg-window " + window);
     EXPECT_EQ(bad_window.status, 2) << bad_window.out;
-    EXPECT_THAT(bad_window.out, ::testing::HasSubstr("expected an odd number of points, at least 7"));
+    EXPECT_THAT(bad_window.out,
+                ::testing::HasSubstr("expected an odd number of points, at least 7"));
   }
   const RunResult no_refine = RunUuvplan("identify " + campaign + " --method rls --no-refine");
   EXPECT_EQ(no_refine.status, 2) << no_refine.out;
-  // Seed 000's selection rule and no selection at all contradict each other.
+  // Ref 000's selection rule and no selection at all contradict each other.
   const RunResult both = RunUuvplan("identify " + campaign + " --seed-selection --no-prune");
   EXPECT_EQ(both.status, 2) << both.out;
   EXPECT_THAT(both.out, ::testing::HasSubstr("--seed-selection"));
@@ -521,7 +540,7 @@ TEST(IdentifyCliTest, MethodOptionsAreCheckedAndNamed) {
   EXPECT_EQ(ok.status, 0) << ok.out;
   EXPECT_THAT(ok.out, ::testing::HasSubstr("method integral"));
   EXPECT_THAT(ok.out, ::testing::HasSubstr("estimator steady_state+integral"));
-  // The default chain reports the seeds' one-step LS beside the output error.
+  // The default chain reports the papers' one-step LS beside the output error.
   const RunResult chain = RunUuvplan("identify " + campaign);
   EXPECT_EQ(chain.status, 0) << chain.out;
   EXPECT_THAT(chain.out, ::testing::HasSubstr("method chain"));

@@ -1,4 +1,4 @@
-// Unit and sign mistakes stop `identify` before any fit (issue #14, ident/prepare/input_sanity.h): a
+// Unit and sign mistakes stop `identify` before any fit (ident/prepare/input_sanity.h): a
 // virtual ROMEO campaign with a heading and a gyro (as the BlueROV logs) written to a temporary
 // directory, one column then spoiled as a user would — a gyro in deg/s, a heading in degrees,
 // a velocity logged as the position, the force with the wrong sign — must exit 2 naming the
@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "cli_test_util.h"
 #include "ident/ident_cases.h"
 #include "support/real_data.h"
-#include "cli_test_util.h"
 #include "uuvplan/io/virtual_campaign.h"
 
 namespace uuvplan::cli_test {
@@ -61,7 +61,7 @@ void EditColumn(const std::string& path, const std::string& column,
   std::ofstream(path) << out.str();
 }
 
-// ROMEO (seed 000 §IV-D) with `dof` measured by a position sensor and/or a velocity sensor
+// ROMEO (ref 000 §IV-D) with `dof` measured by a position sensor and/or a velocity sensor
 // (a gyro at 20 Hz, 0.005 rad/s as the BlueROV's), two of its trial designs, written to `dir`.
 std::string Campaign(const TempDir& dir, model::Dof dof, bool position, bool velocity) {
   model::Truth truth = ident::testing::CaseTruth("romeo");
@@ -114,11 +114,13 @@ TEST(InputSanityCliTest, ThePlannersOwnScheduleRaisesNothing) {
   const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
   ASSERT_EQ(RunTool("schedule " + romeo + "vehicle.yaml --pool " + romeo +
                         "pool.yaml --dof surge --dof yaw --json " + (dir / "plan.json"),
-                    dir).status,
+                    dir)
+                .status,
             0);
   ASSERT_EQ(RunTool("simulate --truth " + romeo + "truth.yaml --plan " + (dir / "plan.json") +
                         " --out " + (dir / "campaign") + " --seed 3",
-                    dir).status,
+                    dir)
+                .status,
             0);
   const ToolRun r = RunTool("identify " + (dir / "campaign/campaign.yaml"), dir);
   EXPECT_EQ(r.status, 0) << r.err << r.out;
@@ -151,7 +153,8 @@ TEST(InputSanityCliTest, VelocityLoggedAsPositionStops) {
   // A surge log whose only motion column is the velocity, headed pos_surge.
   TempDir dir;
   const std::string c = Campaign(dir, model::Dof::kSurge, false, true);
-  EditColumn(Trial(c, model::Dof::kSurge), "vel_surge", [](double v) { return v; }, "pos_surge");
+  EditColumn(
+      Trial(c, model::Dof::kSurge), "vel_surge", [](double v) { return v; }, "pos_surge");
   ExpectStopped(dir, c, "pos_surge", "holds a velocity");
 }
 

@@ -1,4 +1,4 @@
-// `uuvplan log` (issue #18 item 4): a campaign grown one trial at a time at the pool — each
+// `uuvplan log`: a campaign grown one trial at a time at the pool — each
 // trial logged (checked against the plan), then `next` run on the campaign so far — works, the
 // input CSVs are never modified, and a log that is not the planned trial or a trial id already
 // logged is refused with the campaign left as it was.
@@ -41,9 +41,9 @@ struct PoolDay {
                                 scratch);
     EXPECT_EQ(sim.status, 0) << sim.err;
     std::filesystem::create_directories(scratch / "campaign");
-    campaign = scratch.Write("campaign/campaign.yaml",
-                             "vehicle: " + logged + "/vehicle.yaml\npool: " + kCases +
-                                 "pool.yaml\ntrials: []\n");
+    campaign = scratch.Write(
+        "campaign/campaign.yaml",
+        "vehicle: " + logged + "/vehicle.yaml\npool: " + kCases + "pool.yaml\ntrials: []\n");
   }
   std::string Csv(const std::string& id) const { return logged + "/trials/" + id + ".csv"; }
 };
@@ -64,9 +64,9 @@ TEST(Log, CampaignGrownOneTrialAtATimeFeedsNext) {
     EXPECT_EQ(c.trials.back().file, "trials/" + id + ".csv");
     EXPECT_EQ(ReadText(day.scratch / ("campaign/trials/" + id + ".csv")), before);
     const std::string json = day.scratch / "next.json";
-    const ToolRun next = RunTool("next " + day.campaign + " --pool " + kCases +
-                                     "pool.yaml --dof surge --json " + json,
-                                 day.scratch);
+    const ToolRun next = RunTool(
+        "next " + day.campaign + " --pool " + kCases + "pool.yaml --dof surge --json " + json,
+        day.scratch);
     // 0 planned or converged, 1 the pool cannot host what is still needed, 5 stuck: each a
     // verdict on these trials; 2 or 3 would be the campaign refused or a crash.
     EXPECT_TRUE(next.status == 0 || next.status == 1 || next.status == 5) << next.err;
@@ -97,9 +97,9 @@ TEST(Log, RefusesTheWrongTrialAndATakenIdLeavingTheCampaignAsItWas) {
   EXPECT_EQ(wrong.status, 2);
   EXPECT_THAT(wrong.err, StartsWith("uuvplan: error: "));
   EXPECT_THAT(wrong.err, HasSubstr("not the planned trial surge_sine"));
-  const ToolRun again = RunTool("log " + campaign_dir + " " + day.Csv("surge_steady") +
-                                    " --trial surge_steady --dof surge",
-                                day.scratch);
+  const ToolRun again = RunTool(
+      "log " + campaign_dir + " " + day.Csv("surge_steady") + " --trial surge_steady --dof surge",
+      day.scratch);
   EXPECT_EQ(again.status, 2);
   EXPECT_THAT(again.err, HasSubstr("already logged"));
   // The same log under a new id is the same data counted twice (a copy, however named).

@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "planner/planner_test_util.h"
 #include "cli_test_util.h"
+#include "planner/planner_test_util.h"
 
 namespace uuvplan::cli {
 namespace {
@@ -44,22 +44,21 @@ TEST_F(LoopCliTest, BudgetAndBadInputExitCodes) {
 }
 
 TEST_F(LoopCliTest, NextWritesEstimatesTrialAndPredicted) {
-  // An empty campaign of the ROMEO vehicle: the next trial is the first of seed 000's order.
+  // An empty campaign of the ROMEO vehicle: the next trial is the first of ref 000's order.
   const std::string campaign =
       dir_.Write("campaign.yaml", "vehicle: '" + RomeoPath("vehicle.yaml") + "'\ntrials: []\n");
   const auto r = cli_test::RunTool("next '" + campaign + "' --pool '" + RomeoPath("pool.yaml") +
-                                        "' --dof yaw --json '" + (dir_ / "n.json") + "'",
-                                    dir_);
+                                       "' --dof yaw --json '" + (dir_ / "n.json") + "'",
+                                   dir_);
   ASSERT_EQ(r.status, 0) << r.err << r.out;
   const auto j = nlohmann::json::parse(cli_test::ReadText(dir_ / "n.json"));
   EXPECT_TRUE(j.contains("estimates"));
   EXPECT_EQ(j.at("trial").at("dof"), "yaw");
   EXPECT_TRUE(j.at("predicted").contains("yaw"));
   // The trial can be run by `simulate --plan` (ReadScheduleJson reads a next result).
-  const auto sim =
-      cli_test::RunTool("simulate --truth '" + RomeoPath("truth.yaml") + "' --plan '" +
-                             (dir_ / "n.json") + "' --out '" + (dir_ / "c") + "'",
-                         dir_);
+  const auto sim = cli_test::RunTool("simulate --truth '" + RomeoPath("truth.yaml") + "' --plan '" +
+                                         (dir_ / "n.json") + "' --out '" + (dir_ / "c") + "'",
+                                     dir_);
   EXPECT_EQ(sim.status, 0) << sim.err;
 }
 
@@ -73,8 +72,8 @@ TEST_F(LoopCliTest, NextInAPoolTheVerdictRefusesIsInfeasible) {
   const std::string pool =
       dir_.Write("shallow.yaml", "name: shallow\nlength: 30\nwidth: 20\ndepth: 2.5\nmargin: 1\n");
   const auto r = cli_test::RunTool("next '" + campaign + "' --pool '" + pool +
-                                        "' --dof heave --json '" + (dir_ / "n.json") + "'",
-                                    dir_);
+                                       "' --dof heave --json '" + (dir_ / "n.json") + "'",
+                                   dir_);
   EXPECT_EQ(r.status, 1) << r.err << r.out;
   const auto j = nlohmann::json::parse(cli_test::ReadText(dir_ / "n.json"));
   EXPECT_EQ(j.at("status"), "infeasible");

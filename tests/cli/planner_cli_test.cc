@@ -79,11 +79,13 @@ TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
   fs::create_directories(dir);
   const fs::path small = dir / "small.yaml";
   std::ofstream(small) << "name: small\nlength: 3\nwidth: 12\ndepth: 5\nmargin: 1\n";
-  const std::string v = planner::testing::RomeoPath("vehicle.yaml"), p = " --pool " + small.string();
+  const std::string v = planner::testing::RomeoPath("vehicle.yaml"),
+                    p = " --pool " + small.string();
   const std::string plan = (dir / "plan.json").string();
   auto run = [&](const std::string& args, const std::string& name, std::string* text) {
     const fs::path out = dir / name;
-    const std::string cmd = std::string(UUVPLAN_BINARY) + " " + args + " > " + out.string() + " 2>&1";
+    const std::string cmd =
+        std::string(UUVPLAN_BINARY) + " " + args + " > " + out.string() + " 2>&1";
     const int status = std::system(cmd.c_str());
     std::ifstream in(out);
     text->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -96,8 +98,8 @@ TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
   EXPECT_EQ(run("check-pool " + v + p + " --dof surge", "b.txt", &b), 1);
   EXPECT_EQ(run("check-pool " + v + p + " --dof surge --plan " + plan, "c.txt", &c), 1);
   const std::string loop_json = (dir / "loop.json").string();
-  EXPECT_EQ(run("loop --truth " + planner::testing::RomeoPath("truth.yaml") + p + " --dof surge --json " +
-                    loop_json,
+  EXPECT_EQ(run("loop --truth " + planner::testing::RomeoPath("truth.yaml") + p +
+                    " --dof surge --json " + loop_json,
                 "d.txt", &d),
             1);
   for (const std::string* t : {&a, &b, &c, &d}) {
@@ -113,13 +115,14 @@ TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
   const fs::path six = dir / "six.yaml";
   std::ofstream(six) << "name: six\nlength: 6\nwidth: 12\ndepth: 5\nmargin: 1\n";
   const std::string q = " --pool " + six.string();
-  const std::string part = "Pool six can host the identification of surge to 5% (every "
-                           "parameter of interest's 100·σ/|θ|) for PART of the a priori box only";
+  const std::string part =
+      "Pool six can host the identification of surge to 5% (every "
+      "parameter of interest's 100·σ/|θ|) for PART of the a priori box only";
   EXPECT_EQ(run("schedule " + v + q + " --dof surge --json " + plan, "e.txt", &a), 1);
   EXPECT_EQ(run("check-pool " + v + q + " --dof surge", "f.txt", &b), 1);
   EXPECT_EQ(run("check-pool " + v + q + " --dof surge --plan " + plan, "g.txt", &c), 1);
-  EXPECT_EQ(run("loop --truth " + planner::testing::RomeoPath("truth.yaml") + q + " --dof surge", "h.txt",
-                &d),
+  EXPECT_EQ(run("loop --truth " + planner::testing::RomeoPath("truth.yaml") + q + " --dof surge",
+                "h.txt", &d),
             0);
   for (const std::string* t : {&a, &b, &c, &d}) {
     EXPECT_NE(t->find(part), std::string::npos) << *t;

@@ -1,4 +1,4 @@
-// `uuvplan report` (issue #18): the report of a ROMEO schedule, of a virtual ROMEO campaign
+// `uuvplan report`: the report of a ROMEO schedule, of a virtual ROMEO campaign
 // after `loop`, and of the real BlueROV yaw logs, opened in headless Chromium (Debian's
 // chromium, scripts/install-deps.sh) to check that it renders; the screenshots are kept under
 // build/artefacts/ for CI. Bad input: exit 2 naming the file or key.
@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "support/real_data.h"
 #include "cli_test_util.h"
+#include "support/real_data.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::cli_test {
@@ -210,7 +210,7 @@ TEST(ReportTool, VirtualRomeoCampaignAfterLoopReport) {
   const double m = id["dofs"]["heave"]["params"]["m"]["value"];
   EXPECT_THAT(html, HasSubstr("<td class=\"t\">m</td><td>" + model::Significant(m, 4) + "</td>"));
   // And it is the truth's (720 kg, truth-effects.yaml) within 3σ — which the all-η-1 baseline,
-  // with η.vertical-all.neg = 0.56 absorbed into the weight, is not (seed 000 Fig. 6).
+  // with η.vertical-all.neg = 0.56 absorbed into the weight, is not (ref 000 Fig. 6).
   EXPECT_NEAR(m, 720.0, 3 * id["dofs"]["heave"]["params"]["m"]["sigma"].get<double>());
   EXPECT_THAT(html, HasSubstr("<td class=\"t\">installation_loss</td>"));  // a candidate tested
   EXPECT_THAT(html, HasSubstr("<td class=\"t\">identification of heave</td>"));  // the summary

@@ -1,4 +1,4 @@
-// The schedule JSON's information table (issue #18 item 7, docs/cli.md "The schedule JSON"):
+// The schedule JSON's information table (docs/cli.md "The schedule JSON"):
 // per trial and per DOF the Fisher information with parameter names, the D/A/E criteria, the
 // predicted σ and the condition number — recomputed here from the matrix written, the DOF's
 // matrix the sum of its trials', and its nominal σ never above the planner's worst-case σ.

@@ -1,6 +1,8 @@
 // The schedule JSON of the contract (§schedule, §next): keys written exactly as the contract
 // names them, a schedule read back to the same trials, and malformed plans refused with the
 // file, the trial index and the key in the message.
+#include "uuvplan/io/schedule_json.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -11,7 +13,6 @@
 
 #include "cli_test_util.h"
 #include "uuvplan/io/loop_json.h"
-#include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/planner/schedule.h"
 
@@ -19,9 +20,9 @@ namespace uuvplan::planner {
 namespace {
 
 using io::ReadScheduleJson;
-using io::TrialToJson;
 using io::ScheduleToJson;
 using io::TrialFromJson;
+using io::TrialToJson;
 
 using nlohmann::json;
 using ::testing::HasSubstr;
@@ -46,7 +47,7 @@ PlannedTrial SineTrial() {
   t.design.kind = model::TrialKind::kSine;
   t.design.mapping = "yaw-fr-rl";
   t.design.duration = 120.0;
-  t.design.offset = -5.0;  // seed 000 §IV-D: offset -5 N·m, amplitude 4 N·m
+  t.design.offset = -5.0;  // ref 000 §IV-D: offset -5 N·m, amplitude 4 N·m
   t.design.amplitude = 4.0;
   t.design.omega = 2 * 3.141592653589793 / 24.0;
   t.travel = {-9.0, 0.0};
@@ -171,13 +172,13 @@ TEST(ScheduleJson, PredictedSigmaCarryWhatTheyRestOnAndOldFilesSaySo) {
   s.predicted[model::Dof::kSurge] = {{{"m", 56.0}}, "D", -12.25};
   json j = ScheduleToJson(s);
   EXPECT_EQ(j["predicted"]["surge"]["assumption"], planner::kPredictedSigmaAssumption);
-  EXPECT_EQ(ReadScheduleJson(TempFile("now.json", j.dump())).predicted.at(model::Dof::kSurge)
-                .assumption,
-            planner::kPredictedSigmaAssumption);
+  EXPECT_EQ(
+      ReadScheduleJson(TempFile("now.json", j.dump())).predicted.at(model::Dof::kSurge).assumption,
+      planner::kPredictedSigmaAssumption);
   j["predicted"]["surge"].erase("assumption");
-  EXPECT_EQ(ReadScheduleJson(TempFile("old.json", j.dump())).predicted.at(model::Dof::kSurge)
-                .assumption,
-            planner::kUnrecordedSigmaAssumption);
+  EXPECT_EQ(
+      ReadScheduleJson(TempFile("old.json", j.dump())).predicted.at(model::Dof::kSurge).assumption,
+      io::kUnrecordedSigmaAssumption);
   j["predicted"]["surge"]["assumption"] = 3;
   EXPECT_THAT(ErrorOf([&] { ReadScheduleJson(TempFile("bad.json", j.dump())); }),
               HasSubstr("predicted.surge.assumption"));
@@ -203,7 +204,7 @@ TEST(ScheduleJson, LoopHistoryCarriesWhatItsPredictedSigmaRestOn) {
   EXPECT_TRUE(std::isnan(now.series.at(model::Dof::kSurge).at("m").front().predicted));
   loop["iterations"][0]["predicted"]["surge"].erase("assumption");
   EXPECT_EQ(io::ReadLoopJson(TempFile("old-loop.json", loop.dump())).predicted_assumption,
-            planner::kUnrecordedSigmaAssumption);
+            io::kUnrecordedSigmaAssumption);
   // A schedule's predicted object with null σ and value reads back as NaN, not as an error.
   Schedule s;
   s.trials = {SteadyTrial()};

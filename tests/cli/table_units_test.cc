@@ -1,4 +1,4 @@
-// Units in the tables people read (issue #18 item 5, cli/include/uuvplan/cli/text_table.h): every table
+// Units in the tables people read (text/include/uuvplan/text/text_table.h): every table
 // printed by schedule, check-pool, identify, next, loop and diagnose starts with a DOF column,
 // is aligned (each column starts where its title does, after a gap), and every quantity column
 // has its unit — in its title, "σ (m/s)", or in every cell, "0.84 kg", "4:05 min". Label
@@ -19,10 +19,9 @@
 namespace uuvplan::cli_test {
 namespace {
 
-const std::set<std::string> kLabelColumns = {"DOF",  "trial", "kind",         "mapping",
-                                             "parameter", "use", "significance", "residuals",
-                                             "effect", "detail", "round", "fits", "verdict",
-                                             "state", "force_text"};
+const std::set<std::string> kLabelColumns = {
+    "DOF",    "trial",  "kind",  "mapping", "parameter", "use",   "significance", "residuals",
+    "effect", "detail", "round", "fits",    "verdict",   "state", "force_text"};
 
 std::size_t Width(const std::string& s) {
   std::size_t n = 0;
@@ -49,11 +48,11 @@ std::string Trim(const std::string& s) {
 
 // Every unit a cell may carry: the parameters' units on every DOF and the tables' own.
 std::set<std::string> Units() {
-  std::set<std::string> units = {"m", "m/s", "rad", "rad/s", "s", "min", "N", "N·m", "kg",
-                                 "kg·m²", "(no unit)", "turns", "turns)"};
+  std::set<std::string> units = {"m",   "m/s", "rad",   "rad/s",     "s",     "min",   "N",
+                                 "N·m", "kg",  "kg·m²", "(no unit)", "turns", "turns)"};
   for (const model::Dof dof : model::kAllDofs) {
-    for (const char* p : {"m", "k", "kq", "bias", "bias_step", "k_neg", "kq_neg", "lag",
-                          "deadzone", "eta.a.pos"}) {
+    for (const char* p :
+         {"m", "k", "kq", "bias", "bias_step", "k_neg", "kq_neg", "lag", "deadzone", "eta.a.pos"}) {
       units.insert(model::Unit(p, dof));
     }
   }
@@ -93,7 +92,10 @@ int CheckTables(const std::string& command, const std::string& text) {
     std::vector<Column> columns;
     for (std::size_t i = 0; i < Width(header);) {
       const std::string rest = Slice(header, i, std::string::npos);
-      if (rest[0] == ' ') { ++i; continue; }
+      if (rest[0] == ' ') {
+        ++i;
+        continue;
+      }
       const std::size_t end = rest.find("  ");
       const std::string title = rest.substr(0, end);
       columns.push_back({title, i});
@@ -113,13 +115,14 @@ int CheckTables(const std::string& command, const std::string& text) {
         const std::string cell = Trim(Slice(lines[r], columns[c].start, to));
         if (c > 0 && !cell.empty()) {
           EXPECT_EQ(Slice(lines[r], columns[c].start - 1, columns[c].start), " ")
-              << command << ": column '" << columns[c].title << "' not aligned in\n" << lines[r];
+              << command << ": column '" << columns[c].title << "' not aligned in\n"
+              << lines[r];
         }
         const std::string& title = columns[c].title;
         if (kLabelColumns.count(title) || title.find('(') != std::string::npos) continue;
         if (cell.empty() || cell == "-") continue;
-        EXPECT_TRUE(HasUnit(cell, units)) << command << ": column '" << title << "' cell '"
-                                          << cell << "' has no unit (title nor cell)";
+        EXPECT_TRUE(HasUnit(cell, units)) << command << ": column '" << title << "' cell '" << cell
+                                          << "' has no unit (title nor cell)";
       }
     }
     EXPECT_GT(r, h + 1) << command << ": a table without rows:\n" << header;

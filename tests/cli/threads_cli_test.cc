@@ -1,4 +1,4 @@
-// Issue #16: the planner's independent designs — the DOFs of a schedule and of the pool verdict,
+// The planner's independent designs — the DOFs of a schedule and of the pool verdict,
 // the loop's a priori schedules and the candidate trials of several DOFs — run on `--threads`
 // threads with output identical to one thread (as identification's trials and DOFs,
 // tests/ident/threads_test.cc): each design is planned on its own and taken in serial order.
@@ -23,10 +23,10 @@ TEST(ThreadsCliTest, LoopJsonOfTwoThreadsIsThatOfOne) {
   std::string json[2];
   for (int threads : {1, 2}) {
     const std::string out = scratch / ("loop" + std::to_string(threads) + ".json");
-    const ToolRun r = RunTool("loop --truth " + Case("truth.yaml") + " --pool " +
-                                  Case("pool.yaml") + " --budget 4 --threads " +
-                                  std::to_string(threads) + " --json " + out,
-                              scratch);
+    const ToolRun r =
+        RunTool("loop --truth " + Case("truth.yaml") + " --pool " + Case("pool.yaml") +
+                    " --budget 4 --threads " + std::to_string(threads) + " --json " + out,
+                scratch);
     ASSERT_EQ(r.status, 4) << r.out << r.err;  // 4: budget spent (docs/cli.md)
     json[threads - 1] = ReadText(out);
   }

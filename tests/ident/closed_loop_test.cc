@@ -1,4 +1,4 @@
-// Closed-loop data (issue #14 item 2): a virtual campaign flown by a speed controller that reacts
+// Closed-loop data: a virtual campaign flown by a speed controller that reacts
 // to the noisy measured velocity (the virtual twin of shared/data/tartan-pool-2022), and tartan
 // itself with its fit and validate chunks swapped.
 //
@@ -7,15 +7,15 @@
 // AR(1) ρ = 0.5), v_ref a seeded random staircase in ±0.5 m/s; four 120 s trials.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <map>
+#include <random>
 #include <regex>
 #include <sstream>
-#include <unistd.h>
 
 #include "ident/ident_cases.h"
 #include "support/real_data.h"
@@ -54,7 +54,7 @@ model::TrialLog ClosedLoopTrial(const Plant& p, double rho, std::uint64_t seed,
   for (int row = 0; row * kCmd <= kDuration + 1e-9; ++row) {
     const double t = row * kCmd;
     if (row % 160 == 0) v_ref = hover ? 0.0 : ref(rng);  // a new set-point every 8 s
-    const bool sample = row % 2 == 0;       // 10 Hz sensor on every other 20 Hz row
+    const bool sample = row % 2 == 0;                    // 10 Hz sensor on every other 20 Hz row
     if (sample && row > 0) {
       noise = rho * noise + std::sqrt(1 - rho * rho) * kSigma * n01(rng);
       v_meas = v + noise;
@@ -126,7 +126,8 @@ TEST(ClosedLoopTest, VirtualFeedbackIsIdentifiedByInstrumentsAndSwapsAgree) {
     for (const auto& [name, value] : std::vector<std::pair<std::string, double>>{
              {"m", truth.m}, {"k", truth.k}, {"kq", truth.kq}, {"bias", truth.bias}}) {
       const ParameterEstimate& e = Param(d, name);
-      EXPECT_LE(std::abs(e.value - value), 3 * e.sigma) << name << " " << e.value << " ± " << e.sigma;
+      EXPECT_LE(std::abs(e.value - value), 3 * e.sigma)
+          << name << " " << e.value << " ± " << e.sigma;
       std::cout << name << " " << e.value << " ± " << e.sigma << " (truth " << value << ")\n";
     }
     both.push_back(d);
@@ -160,7 +161,8 @@ TEST(ClosedLoopTest, TrialsDisturbedByAnUnmodelledForceAreWeightedByTheirResidua
     for (const auto& [name, value] : std::vector<std::pair<std::string, double>>{
              {"m", truth.m}, {"k", truth.k}, {"bias", truth.bias}}) {
       const ParameterEstimate& e = Param(d, name);
-      EXPECT_LE(std::abs(e.value - value), 3 * e.sigma) << name << " " << e.value << " ± " << e.sigma;
+      EXPECT_LE(std::abs(e.value - value), 3 * e.sigma)
+          << name << " " << e.value << " ± " << e.sigma;
     }
     sigma_k[by_residuals] = Param(d, "k").sigma;
     std::cout << (by_residuals ? "by residuals" : "by sensor") << ": k " << Param(d, "k").value
@@ -255,9 +257,11 @@ TEST(ClosedLoopTest, InstrumentalIntervalsCoverTheTruth) {
   // kq 0.84, bias 0.58 (the MA(1) sandwich is conservative for the bias).
   for (const char* name : {"m", "k", "kq", "bias"}) {
     const double rms = std::sqrt(z2[name] / std::max(1, reported[name]));
-    std::cout << name << ": " << covered[name] << "/" << reported[name] << " covered, RMS z " << rms << "\n";
+    std::cout << name << ": " << covered[name] << "/" << reported[name] << " covered, RMS z " << rms
+              << "\n";
     ASSERT_GE(reported[name], 36) << name << ": the instrumental estimate in too few campaigns";
-    EXPECT_GE(covered[name], 0.795 * reported[name]) << name << " " << covered[name] << "/" << reported[name];
+    EXPECT_GE(covered[name], 0.795 * reported[name])
+        << name << " " << covered[name] << "/" << reported[name];
     EXPECT_LE(rms, 1.3) << name;
     EXPECT_GE(rms, 0.5) << name;
   }
@@ -274,7 +278,8 @@ std::string SwappedTartan(const std::filesystem::path& dir) {
   s = std::regex_replace(s, std::regex("use: validate"), "use: fit");
   s = std::regex_replace(s, std::regex("use: TMP"), "use: validate");
   s = std::regex_replace(s, std::regex("file: trials/"), "file: " + base + "trials/");
-  s = std::regex_replace(s, std::regex("vehicle: vehicle.yaml"), "vehicle: " + base + "vehicle.yaml");
+  s = std::regex_replace(s, std::regex("vehicle: vehicle.yaml"),
+                         "vehicle: " + base + "vehicle.yaml");
   const std::string out = (dir / "campaign_swapped.yaml").string();
   std::ofstream(out) << s;
   return out;
@@ -282,13 +287,14 @@ std::string SwappedTartan(const std::filesystem::path& dir) {
 
 TEST(ClosedLoopTest, RealTartanSwappedFitAndValidateAgreeOnSurgeDrag) {
   UUVPLAN_SKIP_WITHOUT_REAL_DATA("tartan-pool-2022");
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("uuvplan_tartan_swap_" + std::to_string(::getpid()));
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("uuvplan_tartan_swap_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   IdentifyOptions o;
   o.dofs = {Dof::kSurge, Dof::kHeave};
   std::vector<IdentifyResult> runs;
-  for (const std::string& path : {RealDataPath("tartan-pool-2022/campaign.yaml"), SwappedTartan(dir)}) {
+  for (const std::string& path :
+       {RealDataPath("tartan-pool-2022/campaign.yaml"), SwappedTartan(dir)}) {
     runs.push_back(Identify(io::ReadCampaign(path), o));
   }
   std::filesystem::remove_all(dir);
@@ -311,7 +317,8 @@ TEST(ClosedLoopTest, RealTartanSwappedFitAndValidateAgreeOnSurgeDrag) {
   EXPECT_LE(std::abs(a.value - b.value), 3 * std::hypot(a.sigma, b.sigma))
       << a.value << " ± " << a.sigma << " vs " << b.value << " ± " << b.sigma;
   // The heave buoyancy both ways, consistent with each other within 3 combined σ.
-  const ParameterEstimate &ha = Param(runs[0].dofs[1], "bias"), &hb = Param(runs[1].dofs[1], "bias");
+  const ParameterEstimate &ha = Param(runs[0].dofs[1], "bias"),
+                          &hb = Param(runs[1].dofs[1], "bias");
   EXPECT_LE(std::abs(ha.value - hb.value), 3 * std::hypot(ha.sigma, hb.sigma));
   std::cout << "surge k " << a.value << " ± " << a.sigma << " / " << b.value << " ± " << b.sigma
             << "; heave bias " << ha.value << " ± " << ha.sigma << " / " << hb.value << " ± "
@@ -351,16 +358,19 @@ std::string AllChunksInHeave(const std::filesystem::path& dir, bool swapped) {
   s = std::regex_replace(s, std::regex("mapping: tam-[a-z]+"), "mapping: tam-heave");
   if (!swapped) {
     const std::string base = std::filesystem::path(RealDataPath("tartan-pool-2022/campaign.yaml"))
-                                 .parent_path().string() + "/";
+                                 .parent_path()
+                                 .string() +
+                             "/";
     s = std::regex_replace(s, std::regex("file: trials/"), "file: " + base + "trials/");
-    s = std::regex_replace(s, std::regex("vehicle: vehicle.yaml"), "vehicle: " + base + "vehicle.yaml");
+    s = std::regex_replace(s, std::regex("vehicle: vehicle.yaml"),
+                           "vehicle: " + base + "vehicle.yaml");
   }
   const std::string out = (dir / (swapped ? "heave_odd.yaml" : "heave_even.yaml")).string();
   std::ofstream(out) << s;
   return out;
 }
 
-// Issue #14 "heave bias −8 ± 1 N holds", on the rows the claim was computed on. campaign.yaml's
+// The claim "heave bias −8 ± 1 N holds", on the rows the claim was computed on. campaign.yaml's
 // heave trials (chunks 2, 6 fit; 5, 7 validate) are all chunks where the depth was driven
 // (commands −14…+33 N): there the linear thrust map's bias takes up the map's curvature (a
 // concave map needs a larger mean command for the same mean thrust) and the drag times the
@@ -371,8 +381,8 @@ std::string AllChunksInHeave(const std::filesystem::path& dir, bool swapped) {
 // must agree within 3 combined σ (docs/validation.md, tartan heave).
 TEST(ClosedLoopTest, RealTartanHeaveBiasOfEveryChunkIsTheForceThatHoldsDepth) {
   UUVPLAN_SKIP_WITHOUT_REAL_DATA("tartan-pool-2022");
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("uuvplan_tartan_heave_" + std::to_string(::getpid()));
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("uuvplan_tartan_heave_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   IdentifyOptions o;
   o.dofs = {Dof::kHeave};

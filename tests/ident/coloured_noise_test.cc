@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/ident/prepare/speed_fit.h"
+#include "uuvplan/ident/stats/covariance.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -15,7 +15,8 @@ namespace {
 std::vector<double> Ar1Noise(int n, double rho, std::mt19937_64* rng) {
   std::normal_distribution<double> z(0.0, 1.0);
   std::vector<double> e(n);
-  for (int i = 0; i < n; ++i) e[i] = i == 0 ? z(*rng) : rho * e[i - 1] + std::sqrt(1 - rho * rho) * z(*rng);
+  for (int i = 0; i < n; ++i)
+    e[i] = i == 0 ? z(*rng) : rho * e[i - 1] + std::sqrt(1 - rho * rho) * z(*rng);
   return e;
 }
 
@@ -38,7 +39,8 @@ TEST(ColouredNoiseTest, PooledAr1OfShortSegmentsIsFreedOfTheFitBias) {
   std::vector<double> slopes, sigmas;
   for (int rep = 0; rep < 200; ++rep) {
     std::vector<SpeedFit> fits;
-    for (int k = 0; k < 5; ++k) fits.push_back(ConstantSpeedFit(Segment(Ar1Noise(100, 0.9, &rng), 0.3, 0.1), 0, 10, 1.0));
+    for (int k = 0; k < 5; ++k)
+      fits.push_back(ConstantSpeedFit(Segment(Ar1Noise(100, 0.9, &rng), 0.3, 0.1), 0, 10, 1.0));
     std::vector<const SpeedFit*> ptrs;
     for (const SpeedFit& f : fits) {
       ptrs.push_back(&f);
@@ -67,7 +69,8 @@ TEST(ColouredNoiseTest, WhiteResidualsGiveNoAr1) {
   int positive = 0;
   for (int rep = 0; rep < 100; ++rep) {
     std::vector<SpeedFit> fits;
-    for (int k = 0; k < 5; ++k) fits.push_back(MeanSpeedFit(Segment(Ar1Noise(100, 0.0, &rng), 0.0, 0.1), 0, 10, 1.0));
+    for (int k = 0; k < 5; ++k)
+      fits.push_back(MeanSpeedFit(Segment(Ar1Noise(100, 0.0, &rng), 0.0, 0.1), 0, 10, 1.0));
     std::vector<const SpeedFit*> ptrs;
     for (const SpeedFit& f : fits) ptrs.push_back(&f);
     positive += PooledNoiseAr1(ptrs) > 0;

@@ -1,14 +1,13 @@
-// The model diagnosis writes out (issue #14): the extended model in the vehicle file, scored by
+// The model diagnosis writes out: the extended model in the vehicle file, scored by
 // `score` on the same data with the same figures; estimates of the ROMEO effects case within
 // 3σ of its truth; held-out gains that are numbers or say why not; parameters in their
 // admissible ranges. Real-data tests skip without ../shared and each has a virtual twin.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <unistd.h>
-
 #include <filesystem>
 #include <map>
 
@@ -178,7 +177,7 @@ TEST(DiagnosisModelTest, RealBluerovThrustMapShapeAndLagScored) {
   ExpectScoreReproducesGains(campaign, r, "bluerov-all", o.output_error.step_s);
 }
 
-// cases/romeo/truth-effects.yaml (seed 000 Table IV: η 0.73/0.80/0.89, asymmetric surge drag),
+// cases/romeo/truth-effects.yaml (ref 000 Table IV: η 0.73/0.80/0.89, asymmetric surge drag),
 // the ROMEO surge and sway schedules (tests/data/romeo, `uuvplan schedule ... --dof surge|sway
 // --json`), simulated with seed 7 as `uuvplan simulate --seed 7` does. Every η and drag
 // parameter found must lie within 3σ of its truth (the issue's case: 0.741 and 0.808 for 0.80

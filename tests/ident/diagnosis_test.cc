@@ -1,8 +1,10 @@
-// Diagnosis (issue #5). The statistical claim (≥ 95% of 200 draws per effect named correctly,
+// Diagnosis. The statistical claim (≥ 95% of 200 draws per effect named correctly,
 // ≤ 5% false findings on clean data, the hidden parameter within 3σ) is checked at full size
 // by `build/tests/diagnose_validation` (docs/validation.md). Here a seeded subset of the same
 // generator: the draws are fixed, so every one of them must be diagnosed exactly; a change
 // that breaks the tests, the candidate fits or the generator's hiding fails it.
+#include "uuvplan/ident/diagnosis/diagnosis.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -12,8 +14,8 @@
 #include "support/hidden_effect.h"
 #include "support/real_data.h"
 #include "uuvplan/ident/stats/chi_square.h"
-#include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -44,26 +46,25 @@ TEST_P(HiddenEffectTest, NamesTheHiddenEffectAndOnlyIt) {
     const model::Campaign campaign = testing::RunHiddenEffectCase(c, seed);
     const DiagnosisResult r = Diagnose(campaign, testing::DiagnoseOptionsFor(c));
     const testing::Verdict v = testing::Judge(c, r);
-    EXPECT_TRUE(v.correct) << "seed " << seed << ": hidden "
-                           << effect.value_or("none") << ", found ["
-                           << v.found << "]";
+    EXPECT_TRUE(v.correct) << "seed " << seed << ": hidden " << effect.value_or("none")
+                           << ", found [" << v.found << "]";
     if (effect) {
       EXPECT_TRUE(v.within_3_sigma) << "seed " << seed << ": parameter beyond 3σ of the truth";
       ASSERT_FALSE(r.findings.empty());
       // The extension must pay off where the effect was hidden (validate trials).
       EXPECT_GT(r.findings[0].gain.relative, 0.0) << "seed " << seed;
       EXPECT_EQ(r.findings[0].gain.on, "validate");
-      EXPECT_FALSE(r.findings[0].what.empty());
+      EXPECT_FALSE(text::FindingSentence(r, r.findings[0]).empty());
     }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryEffectAndNone, HiddenEffectTest,
-                         ::testing::Range(-1, static_cast<int>(model::Effects().Diagnosable().size())),
+                         ::testing::Range(-1,
+                                          static_cast<int>(model::Effects().Diagnosable().size())),
                          [](const ::testing::TestParamInfo<int>& info) {
-                           return info.param < 0
-                                      ? std::string("none")
-                                      : model::Effects().Diagnosable()[info.param];
+                           return info.param < 0 ? std::string("none")
+                                                 : model::Effects().Diagnosable()[info.param];
                          });
 
 // Coupling draws 21 and 24 once gave a spurious second effect (drift; asymmetric drag and
@@ -107,7 +108,8 @@ TEST(DiagnosisTest, CouplingSigmaIncludesTheNoiseOfTheLoggedVelocities) {
   EXPECT_DOUBLE_EQ(a.findings[0].params[0].value, b.findings[0].params[0].value);
   EXPECT_GT(a.findings[0].params[0].sigma, b.findings[0].params[0].sigma);
   bool noted = false;
-  for (const auto& n : a.notes) noted = noted || n.find("noise of the logged velocities") != std::string::npos;
+  for (const auto& n : a.notes)
+    noted = noted || n.find("noise of the logged velocities") != std::string::npos;
   EXPECT_TRUE(noted);
 }
 
@@ -133,7 +135,6 @@ TEST(DiagnosisTest, RealBluerovYawRunsShowTheThrusterLag) {
   EXPECT_EQ(first.gain.on, "validate");
   EXPECT_GT(first.gain.relative, 0.10);
 }
-
 
 // The 13 runs of three sessions (campaign_all.yaml): diagnosis_model_test.cc
 // (DiagnosisModelTest.RealBluerovThrustMapShapeAndLagScored).

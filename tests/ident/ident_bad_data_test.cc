@@ -9,8 +9,8 @@
 
 #include "ident_cases.h"
 #include "uuvplan/ident/identify.h"
-#include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/ident/prepare/trial_data.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::ident {
@@ -18,9 +18,11 @@ namespace {
 
 using model::Dof;
 
-bool AnyContains(const std::vector<std::string>& v, const std::string& a, const std::string& b = "") {
+bool AnyContains(const std::vector<std::string>& v, const std::string& a,
+                 const std::string& b = "") {
   for (const auto& s : v) {
-    if (s.find(a) != std::string::npos && (b.empty() || s.find(b) != std::string::npos)) return true;
+    if (s.find(a) != std::string::npos && (b.empty() || s.find(b) != std::string::npos))
+      return true;
   }
   return false;
 }
@@ -83,7 +85,8 @@ TEST(BadDataTest, ATrialAtRestIdentifiesNothingAndSaysSo) {
   const IdentifyResult r = Identify(c, IdentifyOptions{});
   const DofIdentification* s = r.Find(Dof::kSurge);
   ASSERT_NE(s, nullptr);
-  for (const auto& e : s->params) EXPECT_FALSE(e.significant && e.state == ParameterState::kEstimated) << e.name;
+  for (const auto& e : s->params)
+    EXPECT_FALSE(e.significant && e.state == ParameterState::kEstimated) << e.name;
   EXPECT_EQ(s->status, IdentifyStatus::kFailed) << s->message;
   EXPECT_EQ(r.status, IdentifyStatus::kFailed);
   EXPECT_NE(s->message.find("longer trials, steady runs at several levels, a sine"),
@@ -151,7 +154,9 @@ model::TrialLog FirstPositions(model::TrialLog log, int samples) {
   const std::vector<double>& pos = log.position[model::Index(Dof::kSurge)];
   std::size_t rows = 0;
   for (int seen = 0; rows < pos.size() && seen < samples; ++rows) seen += std::isfinite(pos[rows]);
-  auto keep = [rows](auto& v) { if (v.size() > rows) v.resize(rows); };
+  auto keep = [rows](auto& v) {
+    if (v.size() > rows) v.resize(rows);
+  };
   keep(log.t);
   keep(log.mapping);
   for (int i = 0; i < model::kNumDofs; ++i) {
@@ -166,7 +171,7 @@ TEST(BadDataTest, AFilterWindowLongerThanTheRecordIsAnInputErrorAndTheDefaultOne
   // No stretch of the record holds the window: the filter would fit one polynomial to the
   // whole record and the estimators drop every row within a half window of its ends. A window
   // set longer than the record is refused naming the file and the longest allowed; the
-  // default window (21–41 points, seed 000 §IV-D) shortens to a short record, and the window
+  // default window (21–41 points, ref 000 §IV-D) shortens to a short record, and the window
   // recorded is the one used.
   const model::Truth truth = testing::CaseTruth("romeo");
   model::Campaign c = VirtualCampaign(truth, {testing::RomeoSurgeDesigns()[3]}, 3);
@@ -190,7 +195,7 @@ TEST(BadDataTest, AFilterWindowLongerThanTheRecordIsAnInputErrorAndTheDefaultOne
 }
 
 TEST(BadDataTest, GapsAreFoundAndReported) {
-  // Seed 000 Fig. 14: missing sonar samples between 70–85 s. A 15 s hole in the record is a
+  // Ref 000 Fig. 14: missing sonar samples between 70–85 s. A 15 s hole in the record is a
   // gap in the report and the identification still succeeds.
   const model::Truth truth = testing::CaseTruth("romeo");
   model::Campaign c = VirtualCampaign(truth, testing::RomeoSurgeDesigns(), 3);
@@ -240,7 +245,8 @@ TEST(BadDataTest, ClosedLoopLogIsFlaggedAndTheInertiaNotTrusted) {
   e.log = std::move(log);
   c.trials.push_back(std::move(e));
   IdentifyOptions o;
-  o.structures[Dof::kSurge] = model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {}, false);
+  o.structures[Dof::kSurge] =
+      model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {}, false);
   const IdentifyResult r = Identify(c, o);
   const DofIdentification* s = r.Find(Dof::kSurge);
   ASSERT_NE(s, nullptr);
@@ -248,7 +254,8 @@ TEST(BadDataTest, ClosedLoopLogIsFlaggedAndTheInertiaNotTrusted) {
   EXPECT_TRUE(AnyContains(s->warnings, "closed-loop"));
   EXPECT_NE(std::find(s->unreliable.begin(), s->unreliable.end(), "m"), s->unreliable.end());
   // The open-loop virtual trials are not flagged.
-  const IdentifyResult open = Identify(VirtualCampaign(truth, testing::RomeoSurgeDesigns(), 3), IdentifyOptions{});
+  const IdentifyResult open =
+      Identify(VirtualCampaign(truth, testing::RomeoSurgeDesigns(), 3), IdentifyOptions{});
   EXPECT_FALSE(open.Find(Dof::kSurge)->closed_loop_suspected);
 }
 
@@ -263,7 +270,8 @@ TEST(BadDataTest, ShortHeaveTrialsGiveEstimatesWithinTheirSigmaOrAWarning) {
   const model::Truth truth = testing::CaseTruth("romeo");
   std::vector<model::TrialDesign> designs;
   for (int i = 0; i < 4; ++i) {
-    designs.push_back(testing::Segments("heave_short_" + std::to_string(i), Dof::kHeave, "vertical-all",
+    designs.push_back(testing::Segments("heave_short_" + std::to_string(i), Dof::kHeave,
+                                        "vertical-all",
                                         {{i % 2 == 0 ? 40.0 : -40.0, 15.0 + 2.0 * i}}, i));
   }
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
@@ -279,10 +287,12 @@ TEST(BadDataTest, ShortHeaveTrialsGiveEstimatesWithinTheirSigmaOrAWarning) {
     if (!h->unreliable.empty()) EXPECT_TRUE(AnyContains(h->warnings, "NOT reliable"));
     for (const auto& e : h->params) {
       if (e.state != ParameterState::kEstimated) continue;
-      if (std::find(h->unreliable.begin(), h->unreliable.end(), e.name) != h->unreliable.end()) continue;
+      if (std::find(h->unreliable.begin(), h->unreliable.end(), e.name) != h->unreliable.end())
+        continue;
       const double t = TrueParameter(truth, Dof::kHeave, e.name);
-      EXPECT_LE(std::abs(e.value - t), 4 * e.sigma) << e.name << " = " << e.value << " ± " << e.sigma
-                                                    << " (truth " << t << "), " << h->message;
+      EXPECT_LE(std::abs(e.value - t), 4 * e.sigma)
+          << e.name << " = " << e.value << " ± " << e.sigma << " (truth " << t << "), "
+          << h->message;
     }
   }
 }

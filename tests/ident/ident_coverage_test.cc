@@ -21,6 +21,7 @@
 
 #include "ident_cases.h"
 #include "uuvplan/ident/stats/monte_carlo.h"
+#include "uuvplan/text/monte_carlo_table.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -42,7 +43,6 @@ void PrintTo(const McCase& c, std::ostream* os) { *os << c.name; }
 
 class CoverageTest : public ::testing::TestWithParam<McCase> {};
 
-
 TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   const McCase& c = GetParam();
   MonteCarloOptions o;
@@ -53,7 +53,7 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   model::Truth truth = testing::CaseTruth(c.truth);
   truth.defects.noise_ar1 = c.ar1;
   const MonteCarloReport rep = RunMonteCarlo(truth, c.designs, o);
-  std::cout << c.name << ", " << rep.repetitions << " repetitions\n" << rep.Table();
+  std::cout << c.name << ", " << rep.repetitions << " repetitions\n" << text::MonteCarloTable(rep);
   EXPECT_EQ(rep.failures, 0);
   // Per cell: the true coverage of a 95% interval must be at least 90% (the band). With
   // n repetitions the observed coverage of a 90% interval falls below 0.90 − 2.33·√(0.09/n)
@@ -63,8 +63,8 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
   // [0.75, 1.3] fail when σ is 30% too small (RMS 1.43) or a third too large (0.75).
   std::map<std::string, std::pair<double, int>> pooled;
   for (const CoverageCell& cell : rep.cells) {
-    if (cell.estimator == "final") continue;             // the output error, counted once
-    if (cell.n < 0.8 * rep.repetitions) continue;        // reported in too few repetitions
+    if (cell.estimator == "final") continue;       // the output error, counted once
+    if (cell.n < 0.8 * rep.repetitions) continue;  // reported in too few repetitions
     const bool integral_ar1 = c.ar1 > 0 && cell.estimator == "integral_inertia";
     const double se = std::sqrt(0.9 * 0.1 / cell.n);
     EXPECT_GE(cell.coverage(), 0.90 - 2.33 * se)
@@ -112,14 +112,16 @@ std::vector<McCase> Cases() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, CoverageTest, ::testing::ValuesIn(Cases()),
-                         [](const ::testing::TestParamInfo<McCase>& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<McCase>& info) {
+                           return info.param.name;
+                         });
 
 TEST(IntegralInertiaCoverageTest, UrisYawPrbsMassIsUnbiasedAndItsSigmaMatchesTheSpread) {
   // URIS yaw alone (steps and PRBS, 12.5 Hz heading, Savitzky–Golay windows of 11 points on the
   // PRBS): the errors-in-variables correction is 22% of the inertia's information, the regime
   // where its second-order variance, the nuisance projection tr(MΣ) and a false ρ̂ of the
   // position noise matter (docs/identification.md §3). 100 seeded campaigns (~1.5 s of CPU).
-  // Before those (2026-11-25): mean 1.956 for 1.910 (4.6 standard errors), RMS z 1.54,
+  // Without those corrections: mean 1.956 for 1.910 (4.6 standard errors), RMS z 1.54,
   // coverage 82.7%; after: 1.920 (1.2 se), RMS z 1.08, coverage 94.9%.
   MonteCarloOptions o;
   o.repetitions = Repetitions(100);
@@ -129,7 +131,7 @@ TEST(IntegralInertiaCoverageTest, UrisYawPrbsMassIsUnbiasedAndItsSigmaMatchesThe
   const model::Truth truth = testing::CaseTruth("uris");
   const std::vector<model::TrialDesign> all = testing::UrisDesigns();
   const MonteCarloReport rep = RunMonteCarlo(truth, {all[2], all[3]}, o);
-  std::cout << rep.Table();
+  std::cout << text::MonteCarloTable(rep);
   const CoverageCell* cell = rep.Find("integral_inertia", Dof::kYaw, "m");
   ASSERT_NE(cell, nullptr);
   ASSERT_GE(cell->n, 0.9 * rep.repetitions);  // the steady state fails in a few draws
@@ -138,13 +140,14 @@ TEST(IntegralInertiaCoverageTest, UrisYawPrbsMassIsUnbiasedAndItsSigmaMatchesThe
   // Bias: within 3 standard errors of the mean (a correction off by 8% gave 4.6).
   EXPECT_LE(std::abs(cell->mean - cell->truth), 3.0 * cell->sd / std::sqrt(cell->n));
   // RMS of (m̂ − m)/σ: 1 for a right σ, standard error ~1/√(2n) = 7%; [0.75, 1.3] as above.
-  const double rms = std::sqrt(cell->sd * cell->sd + std::pow(cell->mean - cell->truth, 2)) / cell->mean_sigma;
+  const double rms =
+      std::sqrt(cell->sd * cell->sd + std::pow(cell->mean - cell->truth, 2)) / cell->mean_sigma;
   EXPECT_LE(rms, 1.3);
   EXPECT_GE(rms, 0.75);
 }
 
 TEST(CramerRaoTest, OutputErrorSpreadIsWithin25PercentOfTheBoundOnTheRomeoSurgeSine) {
-  // Seed 000 §IV-D's inertia trial (offset 35 N, amplitude 25 N, period 26 s, surge front,
+  // Ref 000 §IV-D's inertia trial (offset 35 N, amplitude 25 N, period 26 s, surge front,
   // 3.33 Hz sonar): the output-error estimates' spread over independent noise must approach
   // the Cramér–Rao bound at the truth. With n repetitions the sample sd has a relative standard
   // error 1/√(2(n − 1)) (10% at n = 50): 25% is 2.5 of them.
@@ -154,11 +157,12 @@ TEST(CramerRaoTest, OutputErrorSpreadIsWithin25PercentOfTheBoundOnTheRomeoSurgeS
   o.identify.selection.prune_insignificant = false;
   const model::Truth truth = testing::CaseTruth("romeo");
   // The sine never reverses the force: no installation coefficient is excited.
-  o.identify.structures[Dof::kSurge] = model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {}, false);
+  o.identify.structures[Dof::kSurge] =
+      model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {}, false);
   model::TrialDesign sine = testing::RomeoSurgeDesigns()[3];
   sine.duration = 260;  // two trials' worth: ten periods
   const MonteCarloReport rep = RunMonteCarlo(truth, {sine}, o);
-  std::cout << rep.Table();
+  std::cout << text::MonteCarloTable(rep);
   EXPECT_EQ(rep.failures, 0);
   for (const char* name : {"m", "k", "kq"}) {
     const CoverageCell* cell = rep.Find("output_error", Dof::kSurge, name);

@@ -1,8 +1,8 @@
-// The estimators one by one: steady-state drag with ballast (seed 000 eqs. 8–12, 20) exact on
+// The estimators one by one: steady-state drag with ballast (ref 000 eqs. 8–12, 20) exact on
 // noise-free points, model selection by significance (Table III), the ill-posed cases named,
-// the one-step integral LS of several DOFs at once (seed 004 eqs. 12–14), RLS (seed 004 eq. 15)
+// the one-step integral LS of several DOFs at once (ref 004 eqs. 12–14), RLS (ref 004 eq. 15)
 // equal to batch LS at λ = 1 and tracking a 20% drift (Fig. 11), the residual analysis
-// (seed 004 §5.2), and the output-error covariance against the Cramér–Rao bound.
+// (ref 004 §5.2), and the output-error covariance against the Cramér–Rao bound.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,13 +10,13 @@
 #include <random>
 
 #include "ident_cases.h"
-#include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/estimators/least_squares.h"
-#include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/ident/estimators/one_step_ls.h"
 #include "uuvplan/ident/estimators/output_error.h"
 #include "uuvplan/ident/estimators/rls.h"
 #include "uuvplan/ident/estimators/steady_state.h"
+#include "uuvplan/ident/identify.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/ident/validation.h"
 
 namespace uuvplan::ident {
@@ -44,18 +44,21 @@ SteadyPoint Point(const model::Vehicle& v, const std::string& mapping, double ph
 }
 
 TEST(SteadyStateFitTest, HeaveWithBallastStepsEq20IsExactOnNoiseFreeSpeeds) {
-  // Seed 000 eq. 20, Table II: k w + kq w|w| − η φ − W − i ΔW = 0 for five ballast steps and up
+  // Ref 000 eq. 20, Table II: k w + kq w|w| − η φ − W − i ΔW = 0 for five ballast steps and up
   // and down legs. Noise-free speeds: the regression is consistent, the estimate is exact to
   // rounding (1e-8 relative).
   const model::Truth truth = testing::CaseTruth("romeo");
   const auto& p = truth.dofs.at(Dof::kHeave).params;
-  const model::DofModel model(truth.vehicle, model::ModelStructure::Standard(truth.vehicle, Dof::kHeave, {"vertical-all"}, true));
+  const model::DofModel model(
+      truth.vehicle,
+      model::ModelStructure::Standard(truth.vehicle, Dof::kHeave, {"vertical-all"}, true));
   std::vector<SteadyPoint> pts;
   for (int i = 0; i < 5; ++i) {
     for (double phi : {30.0, -30.0, 60.0, -60.0}) {
       const double eta = phi < 0 ? p.at("eta.vertical-all.neg") : 1.0;
       const double f = eta * phi + p.at("bias") + i * p.at("bias_step");
-      pts.push_back(Point(truth.vehicle, "vertical-all", phi, SteadySpeed(p.at("k"), p.at("kq"), f), 1e-3, i));
+      pts.push_back(Point(truth.vehicle, "vertical-all", phi, SteadySpeed(p.at("k"), p.at("kq"), f),
+                          1e-3, i));
     }
   }
   SteadyStateOptions o;
@@ -70,7 +73,7 @@ TEST(SteadyStateFitTest, HeaveWithBallastStepsEq20IsExactOnNoiseFreeSpeeds) {
   EXPECT_EQ(r.state[model.ParameterIndex("m")], ParameterState::kFixed);
 }
 
-// ROMEO's steady yaw legs (seed 000 Table III): ±2, ±3.5, ±5 N·m in both yaw mappings, the
+// ROMEO's steady yaw legs (ref 000 Table III): ±2, ±3.5, ±5 N·m in both yaw mappings, the
 // speeds of k, kq with η 0.68 in the reversed direction, measured with 3% noise.
 std::vector<SteadyPoint> RomeoYawLegs(const model::Vehicle& v, double k, double kq, int seed) {
   std::mt19937_64 rng(seed);
@@ -88,11 +91,13 @@ std::vector<SteadyPoint> RomeoYawLegs(const model::Vehicle& v, double k, double 
 }
 
 TEST(SteadyStateFitTest, InsignificantYawQuadraticDragIsDroppedAsTableIII) {
-  // Seed 000 Table III: at low yaw rates kq is insignificant (67% > 51.02%) and is dropped.
+  // Ref 000 Table III: at low yaw rates kq is insignificant (67% > 51.02%) and is dropped.
   // True kq = 0, speeds with 3% noise: the t-test at 95% keeps kq by chance 5% of the time, so
   // over 20 seeds at least 16 drops are expected (P(fewer) < 2e-4); k stays within 3σ.
   const model::Truth truth = testing::CaseTruth("romeo");
-  const model::DofModel model(truth.vehicle, model::ModelStructure::Standard(truth.vehicle, Dof::kYaw, {"yaw-fl-rr", "yaw-fr-rl"}, false));
+  const model::DofModel model(
+      truth.vehicle,
+      model::ModelStructure::Standard(truth.vehicle, Dof::kYaw, {"yaw-fl-rr", "yaw-fr-rl"}, false));
   int dropped = 0;
   for (int seed = 0; seed < 20; ++seed) {
     const std::vector<SteadyPoint> pts = RomeoYawLegs(truth.vehicle, 28.6, 0.0, seed);
@@ -115,7 +120,7 @@ TEST(SteadyStateFitTest, InsignificantYawQuadraticDragIsDroppedAsTableIII) {
 }
 
 // Model selection that assumes: the same yaw legs with a true kq that the 51.02% rule cannot
-// tell from 0 (1.3–2 σ). Seed 000's rule drops it and refits k with σ that assume kq = 0
+// tell from 0 (1.3–2 σ). Ref 000's rule drops it and refits k with σ that assume kq = 0
 // exactly: k and kq are strongly correlated here, so the drop moves k by many of those σ.
 // The default keeps an admissible kq (correlated above kDropCorrelation, with a note), and
 // σ(k) covers the truth (significance.h). A negative kq is still fixed at its bound 0
@@ -170,12 +175,15 @@ TEST(SteadyStateFitTest, ACorrelatedInsignificantParameterIsKeptSoThatTheOthersS
 
 TEST(SteadyStateFitTest, TooFewSegmentsSaysHowManyAreNeeded) {
   const model::Truth truth = testing::CaseTruth("romeo");
-  const model::DofModel model(truth.vehicle, model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {"surge-front"}, false));
+  const model::DofModel model(
+      truth.vehicle,
+      model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {"surge-front"}, false));
   // Unknowns k, kq, bias, eta.surge-front.neg (4): three segments cannot determine them.
   const std::vector<SteadyPoint> pts = {Point(truth.vehicle, "surge-front", 10, 0.14, 1e-3),
                                         Point(truth.vehicle, "surge-front", -10, -0.13, 1e-3),
                                         Point(truth.vehicle, "surge-front", 30, 0.26, 1e-3)};
-  const SteadyStateResult r = SteadyStateFit(model, pts, PriorTheta(truth.vehicle, model, {}), SteadyStateOptions{});
+  const SteadyStateResult r =
+      SteadyStateFit(model, pts, PriorTheta(truth.vehicle, model, {}), SteadyStateOptions{});
   EXPECT_EQ(r.status, SteadyStatus::kTooFewSegments);
   EXPECT_NE(r.message.find("3 found for 4 unknowns"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("at least 5"), std::string::npos) << r.message;
@@ -185,12 +193,15 @@ TEST(SteadyStateFitTest, OneSpeedOnlyLeavesDragNotIdentifiable) {
   // Every leg at the same force and speed: k and kq (and the bias) cannot be told apart; the
   // regression is reported ill-conditioned with the parameters named.
   const model::Truth truth = testing::CaseTruth("romeo");
-  model::ModelStructure s = model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {"surge-front"}, false);
+  model::ModelStructure s =
+      model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {"surge-front"}, false);
   for (const std::string& eta : s.WithPrefix("eta.")) s.Remove(eta);
   const model::DofModel model(truth.vehicle, s);
   std::vector<SteadyPoint> pts;
-  for (int i = 0; i < 6; ++i) pts.push_back(Point(truth.vehicle, "surge-front", 20, 0.2 + 1e-6 * i, 1e-3));
-  const SteadyStateResult r = SteadyStateFit(model, pts, PriorTheta(truth.vehicle, model, {}), SteadyStateOptions{});
+  for (int i = 0; i < 6; ++i)
+    pts.push_back(Point(truth.vehicle, "surge-front", 20, 0.2 + 1e-6 * i, 1e-3));
+  const SteadyStateResult r =
+      SteadyStateFit(model, pts, PriorTheta(truth.vehicle, model, {}), SteadyStateOptions{});
   EXPECT_EQ(r.status, SteadyStatus::kIllConditioned);
   EXPECT_NE(r.message.find("condition number"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("k, kq"), std::string::npos) << r.message;
@@ -198,28 +209,33 @@ TEST(SteadyStateFitTest, OneSpeedOnlyLeavesDragNotIdentifiable) {
 
 TEST(SteadyStateFitTest, NoOpenWaterMappingIsHomogeneous) {
   // Only the horizontal-all mapping (no open-water direction): every η is unknown and the
-  // regression is homogeneous; seed 000 §II-A says η must be known for one mapping.
+  // regression is homogeneous; ref 000 §II-A says η must be known for one mapping.
   const model::Truth truth = testing::CaseTruth("romeo");
-  const model::DofModel model(truth.vehicle, model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {"horizontal-all-surge"}, false));
+  const model::DofModel model(
+      truth.vehicle,
+      model::ModelStructure::Standard(truth.vehicle, Dof::kSurge, {"horizontal-all-surge"}, false));
   std::vector<SteadyPoint> pts;
   for (double phi : {10.0, -10.0, 20.0, -20.0, 40.0, -40.0, 60.0}) {
     pts.push_back(Point(truth.vehicle, "horizontal-all-surge", phi, phi / 200, 1e-3));
   }
-  const SteadyStateResult r = SteadyStateFit(model, pts, PriorTheta(truth.vehicle, model, {}), SteadyStateOptions{});
+  const SteadyStateResult r =
+      SteadyStateFit(model, pts, PriorTheta(truth.vehicle, model, {}), SteadyStateOptions{});
   EXPECT_EQ(r.status, SteadyStatus::kNotExcited);
   EXPECT_NE(r.message.find("homogeneous"), std::string::npos) << r.message;
 }
 
 TEST(OneStepTest, SeveralDofsAtOnceEqualTheirSeparateFits) {
-  // Seed 004 eqs. 12–14: the stacked regression is block diagonal, so each DOF's estimate and
+  // Ref 004 eqs. 12–14: the stacked regression is block diagonal, so each DOF's estimate and
   // covariance equal its own fit (to rounding, 1e-9 relative), whatever the weights Λ.
   const model::Truth truth = testing::CaseTruth("uris");
   const auto designs = testing::UrisDesigns();
   const model::Campaign c = VirtualCampaign(truth, {designs[0], designs[2]}, 5);
   const TrialData surge = PrepareTrial(c.trials[0], 0, c.vehicle, TrialDataOptions{});
   const TrialData yaw = PrepareTrial(c.trials[1], 1, c.vehicle, TrialDataOptions{});
-  const model::DofModel ms(c.vehicle, model::ModelStructure::Standard(c.vehicle, Dof::kSurge, {"surge-x"}, false));
-  const model::DofModel my(c.vehicle, model::ModelStructure::Standard(c.vehicle, Dof::kYaw, {"yaw-x"}, false));
+  const model::DofModel ms(
+      c.vehicle, model::ModelStructure::Standard(c.vehicle, Dof::kSurge, {"surge-x"}, false));
+  const model::DofModel my(c.vehicle,
+                           model::ModelStructure::Standard(c.vehicle, Dof::kYaw, {"yaw-x"}, false));
   OneStepDofInput a{&ms, {&surge}, PriorTheta(c.vehicle, ms, {}), {}, 3.0};
   OneStepDofInput b{&my, {&yaw}, PriorTheta(c.vehicle, my, {}), {}, 0.2};
   const auto both = OneStepLeastSquares({a, b}, OneStepOptions{});
@@ -231,7 +247,7 @@ TEST(OneStepTest, SeveralDofsAtOnceEqualTheirSeparateFits) {
     EXPECT_NEAR(both[1].theta[j], only_b[0].theta[j], 1e-9 * (1 + std::abs(only_b[0].theta[j])));
   }
   EXPECT_TRUE(both[0].standard);
-  // [α, β, γ, δ] and the physical parameters agree (seed 002 Table 2).
+  // [α, β, γ, δ] and the physical parameters agree (ref 002 Table 2).
   const PhysicalParameters phys = ToPhysical(both[0].seed);
   EXPECT_NEAR(phys.m, both[0].theta[0], 1e-9 * phys.m);
   EXPECT_NEAR(phys.d_L, both[0].theta[1], 1e-9 * std::abs(phys.d_L));
@@ -240,7 +256,7 @@ TEST(OneStepTest, SeveralDofsAtOnceEqualTheirSeparateFits) {
 TEST(LeastSquaresTest, VarianceModelSandwichMatchesTheSpreadOfHeteroscedasticMa1Errors) {
   // The one-step LS covariance (docs/identification.md §4): errors whose standard deviation
   // grows threefold across the rows (as the ∫ξ̃|ξ̃| errors grow with the speed on VSOR) and are
-  // MA(1) within runs of 10 rows (shared endpoints, seed 002 eqs. 20–26). The homoscedastic
+  // MA(1) within runs of 10 rows (shared endpoints, ref 002 eqs. 20–26). The homoscedastic
   // MA(1) misstates σ of the slope; the variance-model sandwich must match the Monte Carlo sd.
   // 2000 repetitions: the sd has a relative standard error 1/√(2·1999) = 1.6%, the mean σ
   // less; 8% is five of them plus the O(p/n) bias the leverage correction leaves.
@@ -291,12 +307,13 @@ TEST(LeastSquaresTest, VarianceModelSandwichMatchesTheSpreadOfHeteroscedasticMa1
   EXPECT_GT(std::abs(mean(sigma_homo) / sd - 1.0), 0.08);
 }
 
-// The one-step rows of a URIS surge PRBS trial (seed 004 §5.2), k, kq and bias free.
+// The one-step rows of a URIS surge PRBS trial (ref 004 §5.2), k, kq and bias free.
 struct UrisSurgeRows {
   model::Truth truth = testing::CaseTruth("uris");
   model::Campaign c = VirtualCampaign(truth, {testing::UrisDesigns()[1]}, 9);
   TrialData d = PrepareTrial(c.trials[0], 0, c.vehicle, TrialDataOptions{});
-  model::DofModel m{c.vehicle, model::ModelStructure::Standard(c.vehicle, Dof::kSurge, {"surge-x"}, false)};
+  model::DofModel m{c.vehicle,
+                    model::ModelStructure::Standard(c.vehicle, Dof::kSurge, {"surge-x"}, false)};
   OneStepOptions ro;
   Eigen::VectorXd theta = PriorTheta(c.vehicle, m, {});
   std::vector<int> free = {m.ParameterIndex("k"), m.ParameterIndex("kq"), m.ParameterIndex("bias")};
@@ -304,7 +321,7 @@ struct UrisSurgeRows {
 };
 
 TEST(RlsTest, ForgettingFactorOneEqualsBatchLeastSquares) {
-  // Seed 004 eq. 15 with λ = 1 and a vague prior (P0 = 1e8 relative) is the batch LS answer of
+  // Ref 004 eq. 15 with λ = 1 and a vague prior (P0 = 1e8 relative) is the batch LS answer of
   // the same rows, up to the prior's weight (1e-6 relative).
   const UrisSurgeRows u;
   const OneStepRows& rows = u.rows;
@@ -314,7 +331,8 @@ TEST(RlsTest, ForgettingFactorOneEqualsBatchLeastSquares) {
   o.p0 = 1e8;
   const RlsTrajectory traj = RecursiveLeastSquares(rows.F, rows.Y, rows.t, o);
   for (int j = 0; j < batch.size(); ++j) {
-    EXPECT_NEAR(traj.theta(traj.theta.rows() - 1, j), batch[j], 1e-6 * std::abs(batch[j]) + 1e-12) << j;
+    EXPECT_NEAR(traj.theta(traj.theta.rows() - 1, j), batch[j], 1e-6 * std::abs(batch[j]) + 1e-12)
+        << j;
   }
   RlsOptions bad;
   bad.lambda = 0.8;
@@ -346,12 +364,13 @@ TEST(RlsTest, InstrumentsWithForgettingOneGiveTheBatchInstrumentalEstimate) {
   o.p0 = 1e8;
   const RlsTrajectory traj = RecursiveLeastSquares(F, rows.Y, rows.t, o, 1, nullptr, &Z);
   for (int j = 0; j < batch.size(); ++j) {
-    EXPECT_NEAR(traj.theta(traj.theta.rows() - 1, j), batch[j], 1e-6 * std::abs(batch[j]) + 1e-12) << j;
+    EXPECT_NEAR(traj.theta(traj.theta.rows() - 1, j), batch[j], 1e-6 * std::abs(batch[j]) + 1e-12)
+        << j;
   }
 }
 
 TEST(RlsTest, TracksAThrustThatDriftsBy20Percent) {
-  // Seed 004 Fig. 11: the parameters converge and follow a slow change. URIS surge with the
+  // Ref 004 Fig. 11: the parameters converge and follow a slow change. URIS surge with the
   // thrust falling linearly by 20% over a 900 s PRBS trial (parameter_drift), the model without
   // drift: γ = 1/m·(thrust factor) drifts by 20%. With λ = 0.99 (memory ~100 rows ≈ 60 s) the RLS
   // γ near the start and end follows the true factor within 5% (its σ is ~2%), while the batch
@@ -368,12 +387,14 @@ TEST(RlsTest, TracksAThrustThatDriftsBy20Percent) {
   design.duration = std::max(duration, total);
   const model::Campaign c = VirtualCampaign(truth, {design}, 13, {}, 0.0);
   const TrialData d = PrepareTrial(c.trials[0], 0, c.vehicle, TrialDataOptions{});
-  model::ModelStructure s = model::ModelStructure::Standard(c.vehicle, Dof::kSurge, {"surge-x"}, false);
+  model::ModelStructure s =
+      model::ModelStructure::Standard(c.vehicle, Dof::kSurge, {"surge-x"}, false);
   s.Remove("kq");
   const model::DofModel m(c.vehicle, s);
   RlsOptions o;
   o.lambda = 0.99;
-  const RlsDofResult r = RecursiveOneStep(m, {&d}, PriorTheta(c.vehicle, m, {}), {}, OneStepOptions{}, o);
+  const RlsDofResult r =
+      RecursiveOneStep(m, {&d}, PriorTheta(c.vehicle, m, {}), {}, OneStepOptions{}, o);
   const double m_true = truth.dofs[Dof::kSurge].params.at("m");
   const auto gamma_true = [&](double t) { return (1.0 + drift * t) / m_true; };
   const int rows = static_cast<int>(r.psi.theta.rows());
@@ -389,7 +410,7 @@ TEST(RlsTest, TracksAThrustThatDriftsBy20Percent) {
 }
 
 TEST(ResidualAnalysisTest, WhiteNoiseIsWhiteAndAnAr1IsNot) {
-  // Seed 004 §5.2: normalised autocorrelation with ±1.96/√N bounds. The whiteness rule allows
+  // Ref 004 §5.2: normalised autocorrelation with ±1.96/√N bounds. The whiteness rule allows
   // the lags white noise puts outside 99% of the time (3 of 20), so of 100 white records at
   // least 95 pass (expected 99; P(fewer than 95) < 0.4%). An AR(1) with ρ = 0.8 has every lag
   // up to ~10 far outside.
@@ -431,7 +452,8 @@ TEST(OutputErrorTest, CovarianceIsTheCramerRaoBoundAtTheTruth) {
   model::ModelStructure s = model::ModelStructure::Standard(c.vehicle, Dof::kSurge, {}, false);
   const model::DofModel m(c.vehicle, s);
   Eigen::VectorXd theta(m.num_parameters());
-  for (int j = 0; j < m.num_parameters(); ++j) theta[j] = TrueParameter(truth, Dof::kSurge, m.parameter_names()[j]);
+  for (int j = 0; j < m.num_parameters(); ++j)
+    theta[j] = TrueParameter(truth, Dof::kSurge, m.parameter_names()[j]);
   std::vector<ParameterState> state(m.num_parameters(), ParameterState::kEstimated);
   OutputErrorOptions o;
   o.selection.prune_insignificant = false;
@@ -442,8 +464,10 @@ TEST(OutputErrorTest, CovarianceIsTheCramerRaoBoundAtTheTruth) {
   for (auto& i : init) i.xi0 = 0.0;
   const Eigen::MatrixXd crb = CramerRaoBound(m, {&d}, theta, state, init, o);
   for (int j = 0; j < m.num_parameters(); ++j) {
-    EXPECT_NEAR(std::sqrt(r.covariance(j, j)) / std::sqrt(crb(j, j)), 1.0, 0.1) << m.parameter_names()[j];
-    EXPECT_LT(std::abs(r.theta[j] - theta[j]), 3 * std::sqrt(r.covariance(j, j))) << m.parameter_names()[j];
+    EXPECT_NEAR(std::sqrt(r.covariance(j, j)) / std::sqrt(crb(j, j)), 1.0, 0.1)
+        << m.parameter_names()[j];
+    EXPECT_LT(std::abs(r.theta[j] - theta[j]), 3 * std::sqrt(r.covariance(j, j)))
+        << m.parameter_names()[j];
   }
 }
 
@@ -458,7 +482,7 @@ TEST(IdentifyTest, SmallBiasDroppedByLeastSquaresIsReTestedByTheOutputError) {
   model::Truth truth = testing::CaseTruth("romeo");
   truth.dofs[Dof::kSurge].params["bias"] = kBias;
   const model::Campaign c = VirtualCampaign(truth, testing::RomeoSurgeDesigns(), 31);
-  IdentifyOptions seed_rule;  // the least squares drop it only by seed 000's own rule: the
+  IdentifyOptions seed_rule;  // the least squares drop it only by ref 000's own rule: the
   // default keeps the bias, correlated with the drag terms
   seed_rule.selection.drop_correlation = kSeedDropCorrelation;
   const IdentifyResult r = Identify(c, seed_rule);
@@ -478,7 +502,8 @@ TEST(IdentifyTest, SmallBiasDroppedByLeastSquaresIsReTestedByTheOutputError) {
   EXPECT_LT(b->percentile_error(), 51.02);
   EXPECT_LE(std::abs(b->value - kBias), 3 * b->sigma) << b->value << " ± " << b->sigma;
   bool noted = false;
-  for (const auto& n : s->notes) noted = noted || n.find("significant for the output error") != std::string::npos;
+  for (const auto& n : s->notes)
+    noted = noted || n.find("significant for the output error") != std::string::npos;
   EXPECT_TRUE(noted);
   for (const auto& e : s->params) {
     if (e.state != ParameterState::kEstimated) continue;
@@ -504,12 +529,14 @@ TEST(IdentifyTest, OutputErrorThatDoesNotConvergeFallsBackToLeastSquaresWithAWar
   EXPECT_NE(s->estimator, FinalEstimator::kNone);
   EXPECT_EQ(s->status, IdentifyStatus::kWarnings);
   bool warned = false;
-  for (const auto& w : s->warnings) warned = warned || w.find("did not converge") != std::string::npos;
+  for (const auto& w : s->warnings)
+    warned = warned || w.find("did not converge") != std::string::npos;
   EXPECT_TRUE(warned);
   // The reported values are the least squares' (steady state + integral method).
   ASSERT_TRUE(s->steady && s->steady->ok());
   for (const auto& e : s->steady->estimates) {
-    if (e.state == ParameterState::kEstimated) EXPECT_EQ(s->Param(e.name)->value, e.value) << e.name;
+    if (e.state == ParameterState::kEstimated)
+      EXPECT_EQ(s->Param(e.name)->value, e.value) << e.name;
   }
 }
 

@@ -1,6 +1,6 @@
-// identify --method (ident/identify.h Method): each of the seeds' estimators alone, with its σ
+// identify --method (ident/identify.h Method): each of the papers' estimators alone, with its σ
 // and its free-run validation, on one campaign; the option combinations refused; RLS with
-// forgetting (seed 004 eq. 15) reproducing seed 004 Table 4 on the virtual URIS.
+// forgetting (ref 004 eq. 15) reproducing ref 004 Table 4 on the virtual URIS.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,13 +69,14 @@ TEST(MethodTest, SteadyStateMethodsRefuseTrialsWithoutConstantLegs) {
   EXPECT_EQ(r.dofs[0].estimator, FinalEstimator::kOneStep) << r.dofs[0].message;
 }
 
-// URIS yaw, steps and PRBS to fit and a second PRBS to validate (seed 004 §5.2).
+// URIS yaw, steps and PRBS to fit and a second PRBS to validate (ref 004 §5.2).
 model::Campaign UrisYaw(std::uint64_t seed) {
   auto designs = testing::UrisDesigns();
-  model::TrialDesign validate = testing::Segments("yaw_prbs_v", Dof::kYaw, "yaw-x",
-                                                  testing::Prbs(0, 0.4, 16, 1, 5, 99));
-  return VirtualCampaign(testing::CaseTruth("uris"), {designs[2], designs[3], validate}, seed,
-                         {model::TrialUse::kFit, model::TrialUse::kFit, model::TrialUse::kValidate});
+  model::TrialDesign validate =
+      testing::Segments("yaw_prbs_v", Dof::kYaw, "yaw-x", testing::Prbs(0, 0.4, 16, 1, 5, 99));
+  return VirtualCampaign(
+      testing::CaseTruth("uris"), {designs[2], designs[3], validate}, seed,
+      {model::TrialUse::kFit, model::TrialUse::kFit, model::TrialUse::kValidate});
 }
 
 TEST(MethodTest, EveryMethodReportsSigmaAndValidation) {
@@ -138,7 +139,8 @@ TEST(MethodTest, RlsSigmaMatchesTheSpreadOnUris) {
       covered += std::abs(x) < 1.959964 ? 1 : 0;
     }
     const double rms = std::sqrt(s2 / v.size());
-    std::cout << name << ": RMS z " << rms << ", 95% coverage " << covered << "/" << v.size() << "\n";
+    std::cout << name << ": RMS z " << rms << ", 95% coverage " << covered << "/" << v.size()
+              << "\n";
     EXPECT_GT(rms, 0.6) << name;
     EXPECT_LT(rms, 1.4) << name;
     EXPECT_GE(covered, 85) << name;

@@ -1,9 +1,9 @@
 // Recovery from the virtual pool: the cases/romeo (surge forward/backward with its mappings,
 // heave with five ballast steps and η = 0.56, yaw with its mappings), cases/vsor (yaw) and
-// cases/uris (surge, yaw, pitch) truths run through the seeds' kinds of trials (sensor noise,
+// cases/uris (surge, yaw, pitch) truths run through the papers' kinds of trials (sensor noise,
 // and for ROMEO drop-outs and multipath outliers), identified, and every estimate compared with
 // the truth: within 3σ for the reported parameters and for every estimator's own estimates.
-// The identified model is scored on held-out trials (seed 002 §6.1).
+// The identified model is scored on held-out trials (ref 002 §6.1).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -33,20 +33,26 @@ std::vector<Case> Cases() {
     return d;
   };
   return {
-      {"romeo_surge", "romeo",
+      {"romeo_surge",
+       "romeo",
        with_validate(testing::RomeoSurgeDesigns(),
                      testing::Sine("surge_sine_val", Dof::kSurge, "surge-front", 30, 20, 40, 120)),
        {U::kFit, U::kFit, U::kFit, U::kFit, U::kValidate}},
-      {"romeo_heave", "romeo",
-       with_validate(testing::RomeoHeaveDesigns(),
-                     testing::Segments("heave_val", Dof::kHeave, "vertical-all", {{45, 30}, {-45, 30}}, 2)),
+      {"romeo_heave",
+       "romeo",
+       with_validate(
+           testing::RomeoHeaveDesigns(),
+           testing::Segments("heave_val", Dof::kHeave, "vertical-all", {{45, 30}, {-45, 30}}, 2)),
        {U::kFit, U::kFit, U::kFit, U::kFit, U::kFit, U::kValidate}},
-      {"romeo_yaw", "romeo",
+      {"romeo_yaw",
+       "romeo",
        with_validate(testing::RomeoYawDesigns(),
                      testing::Sine("yaw_sine_val", Dof::kYaw, "yaw-fl-rr", 5, 3, 30, 90)),
        {U::kFit, U::kFit, U::kFit, U::kFit, U::kValidate}},
-      {"vsor", "vsor",
-       with_validate(testing::VsorDesigns(), testing::Sine("yaw1_p24", Dof::kYaw, "yaw-ht1-ht7", 25, 15, 24, 72)),
+      {"vsor",
+       "vsor",
+       with_validate(testing::VsorDesigns(),
+                     testing::Sine("yaw1_p24", Dof::kYaw, "yaw-ht1-ht7", 25, 15, 24, 72)),
        {U::kFit, U::kFit, U::kFit, U::kFit, U::kValidate}},
       {"uris", "uris", testing::UrisDesigns(), {}},
   };
@@ -58,8 +64,8 @@ void ExpectWithin3Sigma(const model::Truth& truth, Dof dof, const ParameterEstim
   if (e.state == ParameterState::kEstimated) {
     // 3σ: a correct σ puts the truth outside 0.27% of the time.
     EXPECT_LE(std::abs(e.value - t), 3.0 * e.sigma)
-        << what << " " << model::DofName(dof) << " " << e.name << " = " << e.value << " ± " << e.sigma
-        << ", truth " << t;
+        << what << " " << model::DofName(dof) << " " << e.name << " = " << e.value << " ± "
+        << e.sigma << ", truth " << t;
   } else if (e.state == ParameterState::kDropped) {
     // A dropped parameter is set to 0: the truth must be compatible with 0 (its last σ).
     EXPECT_LE(std::abs(t), 3.0 * e.sigma_before_drop) << what << " dropped " << e.name;
@@ -83,7 +89,8 @@ TEST_P(RecoveryTest, EveryEstimateWithin3SigmaOfTheTruth) {
     if (d.steady && d.steady->ok()) {
       for (const auto& e : d.steady->estimates) ExpectWithin3Sigma(truth, d.dof, e, "steady state");
     }
-    if (d.inertia && d.inertia->ok()) ExpectWithin3Sigma(truth, d.dof, d.inertia->estimate, "integral");
+    if (d.inertia && d.inertia->ok())
+      ExpectWithin3Sigma(truth, d.dof, d.inertia->estimate, "integral");
     ASSERT_TRUE(d.one_step && d.one_step->ok()) << (d.one_step ? d.one_step->message : "");
     for (const auto& e : d.one_step->estimates) ExpectWithin3Sigma(truth, d.dof, e, "one-step LS");
     // The reported σ is the output error's: never larger than the least-squares ones it refines
@@ -94,7 +101,7 @@ TEST_P(RecoveryTest, EveryEstimateWithin3SigmaOfTheTruth) {
         EXPECT_LE(e.sigma, d.one_step->estimates[j].sigma) << e.name;
       }
     }
-    // Cross-validation (seed 002 §6.1): on held-out trials the free run is as good as on the
+    // Cross-validation (ref 002 §6.1): on held-out trials the free run is as good as on the
     // fit trials — the same noise sets both, so within a factor 2.
     if (std::isfinite(d.fit.velocity_mae_validate)) {
       EXPECT_LT(d.fit.velocity_mae_validate, 2.0 * d.fit.velocity_mae_fit + 1e-12);
@@ -104,10 +111,12 @@ TEST_P(RecoveryTest, EveryEstimateWithin3SigmaOfTheTruth) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, RecoveryTest, ::testing::ValuesIn(Cases()),
-                         [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return info.param.name;
+                         });
 
 TEST(RecoveryTest, RomeoOutliersAndDropoutsAreExcludedAndReported) {
-  // cases/romeo has 0.5% multipath outliers of 20σ and 2% drop-outs (seed 000 Fig. 14): they
+  // cases/romeo has 0.5% multipath outliers of 20σ and 2% drop-outs (ref 000 Fig. 14): they
   // are found (the trials' reports name them) and the estimates stay within 3σ (above).
   const model::Truth truth = testing::CaseTruth("romeo");
   ASSERT_GT(truth.defects.outlier_probability, 0.0);
@@ -116,7 +125,8 @@ TEST(RecoveryTest, RomeoOutliersAndDropoutsAreExcludedAndReported) {
   std::size_t outliers = 0, samples = 0;
   for (std::size_t i = 0; i < r.trials.size(); ++i) {
     outliers += r.trials[i].position_outliers.size();
-    for (double v : campaign.trials[i].log.position[model::Index(Dof::kSurge)]) samples += std::isfinite(v);
+    for (double v : campaign.trials[i].log.position[model::Index(Dof::kSurge)])
+      samples += std::isfinite(v);
     for (const auto& o : r.trials[i].position_outliers) {
       EXPECT_GT(std::abs(o.residual), 10 * 0.03) << "an excluded sample must be a gross error";
     }
@@ -155,7 +165,8 @@ TEST(RecoveryTest, SummaryGivesStatusStageTimingsAndOneLinePerDof) {
   EXPECT_EQ(brief.find('\n'), std::string::npos);
   EXPECT_EQ(brief.rfind("identify: " + std::string(IdentifyStatusName(r.status)), 0), 0u) << brief;
   EXPECT_NE(brief.find("surge " + std::string(FinalEstimatorName(r.dofs[0].estimator))),
-            std::string::npos) << brief;
+            std::string::npos)
+      << brief;
   const std::string full = s.Full();
   EXPECT_EQ(full.rfind(brief + "\n", 0), 0u) << full;
   EXPECT_NE(full.find("refine"), std::string::npos) << full;

@@ -1,18 +1,18 @@
-// The seeds' own numbers: seed 002 Table 5 conversions (Table 2), the 51.02% significance
-// threshold of seed 000 §IV-D (with Tables II–IV), and seed 000 eq. 13 for ROMEO's surge.
+// The papers' own numbers: ref 002 Table 5 conversions (Table 2), the 51.02% significance
+// threshold of ref 000 §IV-D (with Tables II–IV), and ref 000 eq. 13 for ROMEO's surge.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "uuvplan/ident/estimators/one_step_ls.h"
+#include "uuvplan/ident/stats/significance.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/excitation.h"
-#include "uuvplan/ident/stats/significance.h"
 
 namespace uuvplan::ident {
 namespace {
 
-// Seed 002 Table 5 prints the coefficients to 4–5 significant figures and the physical
+// Ref 002 Table 5 prints the coefficients to 4–5 significant figures and the physical
 // parameters rounded to 5; recomputing from the printed coefficients reproduces the printed
 // physical values to the rounding of γ = 0.007317 (±0.5e-6, i.e. 7e-5 relative): 2e-4 relative.
 constexpr double kTable5Rel = 2e-4;
@@ -20,11 +20,11 @@ constexpr double kTable5Rel = 2e-4;
 TEST(SeedNumbersTest, Vsor002Table5Conversions) {
   const SeedCoefficients c{-0.5478, -4.9945, 0.007317, 0.068256};
   const PhysicalParameters p = ToPhysical(c);
-  EXPECT_NEAR(p.d_L, 74.867, 74.867 * kTable5Rel);   // d_L = −α/γ
-  EXPECT_NEAR(p.d_Q, 682.57, 682.57 * kTable5Rel);   // d_Q = −β/γ
-  EXPECT_NEAR(p.m, 136.66, 136.66 * kTable5Rel);     // m = 1/γ
-  EXPECT_NEAR(p.b, -9.3282, 9.3282 * kTable5Rel);    // b = −δ/γ (VSOR's sign, eq. 2)
-  EXPECT_DOUBLE_EQ(p.bias, -p.b);                    // the contract's bias enters with + sign
+  EXPECT_NEAR(p.d_L, 74.867, 74.867 * kTable5Rel);  // d_L = −α/γ
+  EXPECT_NEAR(p.d_Q, 682.57, 682.57 * kTable5Rel);  // d_Q = −β/γ
+  EXPECT_NEAR(p.m, 136.66, 136.66 * kTable5Rel);    // m = 1/γ
+  EXPECT_NEAR(p.b, -9.3282, 9.3282 * kTable5Rel);   // b = −δ/γ (VSOR's sign, eq. 2)
+  EXPECT_DOUBLE_EQ(p.bias, -p.b);                   // the contract's bias enters with + sign
 }
 
 TEST(SeedNumbersTest, PhysicalJacobianMatchesFiniteDifferences) {
@@ -41,12 +41,13 @@ TEST(SeedNumbersTest, PhysicalJacobianMatchesFiniteDifferences) {
     *pa[k] += h;
     *pb[k] -= h;
     const Eigen::Vector4d fd = (vec(ToPhysical(a)) - vec(ToPhysical(b))) / (2 * h);
-    for (int r = 0; r < 4; ++r) EXPECT_NEAR(J(r, k), fd[r], 1e-6 * (1 + std::abs(fd[r]))) << r << "," << k;
+    for (int r = 0; r < 4; ++r)
+      EXPECT_NEAR(J(r, k), fd[r], 1e-6 * (1 + std::abs(fd[r]))) << r << "," << k;
   }
 }
 
 TEST(SeedNumbersTest, InsignificanceThresholdIs5102Percent) {
-  // Seed 000 §IV-D: |θ|/σ < z_0.975 = 1.96 ⇔ 100·σ/|θ| > 100/1.96 = 51.02%.
+  // Ref 000 §IV-D: |θ|/σ < z_0.975 = 1.96 ⇔ 100·σ/|θ| > 100/1.96 = 51.02%.
   EXPECT_NEAR(kInsignificantPercentileError, 51.02, 0.005);
   EXPECT_TRUE(IsSignificant(1.0, 0.5101));
   EXPECT_FALSE(IsSignificant(1.0, 0.5103));
@@ -66,16 +67,17 @@ TEST(SeedNumbersTest, InsignificanceThresholdIs5102Percent) {
 }
 
 TEST(SeedNumbersTest, RomeoSurgeLinearisedDragEq13) {
-  // Seed 000 eq. 13 with Table IV forward surge (k = 46.9, kq = 306.2) at ξ* = 0.27 m/s:
+  // Ref 000 eq. 13 with Table IV forward surge (k = 46.9, kq = 306.2) at ξ* = 0.27 m/s:
   // k_L = k + 2·kq·|ξ*| = 212.25 N·s/m as printed (to its 0.01 rounding), taken from the
   // model's own linearisation k_L = −m·∂(dξ/dt)/∂ξ (the settling time constant m/k_L used by
   // RefineSteadyPoints).
   model::Vehicle v;
   v.mappings = {{"surge-front", model::Dof::kSurge, {}, model::OpenWater::kPositive}};
-  const model::ModelStructure s = model::ModelStructure::Standard(v, model::Dof::kSurge, {"surge-front"}, false);
+  const model::ModelStructure s =
+      model::ModelStructure::Standard(v, model::Dof::kSurge, {"surge-front"}, false);
   const model::DofModel dm(v, s);
-  const Eigen::VectorXd theta = dm.Theta({{"m", 890}, {"k", 46.9}, {"kq", 306.2}, {"bias", 0.0},
-                                          {"eta.surge-front.neg", 1.0}});
+  const Eigen::VectorXd theta = dm.Theta(
+      {{"m", 890}, {"k", 46.9}, {"kq", 306.2}, {"bias", 0.0}, {"eta.surge-front.neg", 1.0}});
   const auto input = model::MakeSteadyExcitation(35.0, 0, 10.0);
   const model::TrialConditions c{input.get()};
   const double x[2] = {0.0, 0.27};

@@ -1,16 +1,16 @@
-// Velocity estimation (seed 000 §IV-D; seed 002 §6.1): Savitzky–Golay exactness and noise gain,
+// Velocity estimation (ref 000 §IV-D; ref 002 §6.1): Savitzky–Golay exactness and noise gain,
 // zero-phase Butterworth, outliers and gaps.
-#include <algorithm>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "ident_cases.h"
-#include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/ident/prepare/outliers.h"
 #include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/ident/prepare/velocity_estimation.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -95,7 +95,7 @@ TEST(SavitzkyGolayTest, NoiseGainMatchesTheEmpiricalScatter) {
 }
 
 TEST(SavitzkyGolayTest, WindowFollowsSeed000) {
-  // Seed 000 §IV-D: 21 points for the 3.33 Hz sonar, 41 for the 10 Hz heading; a faster input
+  // Ref 000 §IV-D: 21 points for the 3.33 Hz sonar, 41 for the 10 Hz heading; a faster input
   // shortens the window (a quarter of its time scale), never below 9 points.
   EXPECT_EQ(SavitzkyGolayWindow(3.33), 21);
   EXPECT_EQ(SavitzkyGolayWindow(10.0), 41);
@@ -140,7 +140,7 @@ TEST(ButterworthTest, VsorVelocityOfAParabola) {
 }
 
 TEST(OutliersTest, MultipathSpikesAreFoundAndCleanDataIsLeftAlone) {
-  // Seed 000 Fig. 14: two multipath echoes in the sonar record. 20σ spikes on a smooth 3.3 Hz
+  // Ref 000 Fig. 14: two multipath echoes in the sonar record. 20σ spikes on a smooth 3.3 Hz
   // trajectory are all found; on the clean record the 6-robust-σ test has a false-alarm
   // probability ~1e-8 per sample, so none is expected in 2000 samples.
   std::mt19937_64 rng(8);
@@ -194,9 +194,9 @@ TEST(OutliersTest, APreciseRecordOfStepResponsesKeepsItsSamplesAndItsSpikes) {
   for (int i : spikes) s.y[i] += 1e-3;
   const std::vector<Outlier> found = DetectOutliers(s, OutlierOptions{}, 1e-6, &steps);
   for (int i : spikes) {
-    EXPECT_TRUE(std::any_of(found.begin(), found.end(),
-                            [&](const Outlier& o) { return static_cast<int>(o.index) == i; }))
-        << i;
+    EXPECT_TRUE(std::any_of(found.begin(), found.end(), [&](const Outlier& o) {
+      return static_cast<int>(o.index) == i;
+    })) << i;
   }
   OutlierOptions quadratic_only;
   quadratic_only.truncation_allowance = 0.0;
@@ -205,7 +205,7 @@ TEST(OutliersTest, APreciseRecordOfStepResponsesKeepsItsSamplesAndItsSpikes) {
 }
 
 TEST(OutliersTest, APreciseGyroKeepsItsSamples) {
-  // VSOR's yaw trials (seed 002 Table 4) with a gyro 10⁴ times finer than the case's
+  // VSOR's yaw trials (ref 002 Table 4) with a gyro 10⁴ times finer than the case's
   // (1e-7 rad/s): the quadratic's truncation on the yaw rate's transients is far above the
   // noise, and the plain test excluded 6–50% of these records. A record that is not held
   // (no value repeated: HeldFraction) gets the truncation allowance, as positions do: at most
@@ -215,8 +215,10 @@ TEST(OutliersTest, APreciseGyroKeepsItsSamples) {
   truth.vehicle.sensors[model::Dof::kYaw].velocity->sigma /= 1e4;
   const model::Campaign c = VirtualCampaign(truth, testing::VsorDesigns(), 5);
   for (std::size_t i = 0; i < c.trials.size(); ++i) {
-    const TrialData d = PrepareTrial(c.trials[i], static_cast<int>(i), c.vehicle, TrialDataOptions{});
-    EXPECT_LE(d.velocity_outliers.size(), d.velocity.size() / 100) << d.name << " of " << d.velocity.size();
+    const TrialData d =
+        PrepareTrial(c.trials[i], static_cast<int>(i), c.vehicle, TrialDataOptions{});
+    EXPECT_LE(d.velocity_outliers.size(), d.velocity.size() / 100)
+        << d.name << " of " << d.velocity.size();
   }
 }
 

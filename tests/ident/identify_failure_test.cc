@@ -1,4 +1,4 @@
-// Failure is a status (issue #14, docs/identification.md "Failure statuses"): a non-physical
+// Failure is a status (docs/identification.md "Failure statuses"): a non-physical
 // fit, a fit that explains nothing (the virtual twin of tartan yaw) are `failed` with their
 // reason, and a trial with more than 5% of its samples excluded as outliers is a warning that
 // names it. The real-data cases (bluerov kq < 0, tartan yaw) are in ident_cli_test.cc.
@@ -82,7 +82,8 @@ TEST(IdentifyFailureTest, ManyOutliersAreAFindingThatNamesTheTrial) {
   for (double p : {0.08, 0.005}) {
     model::Truth truth = testing::CaseTruth("romeo");
     truth.defects.outlier_probability = p;
-    const IdentifyResult r = Identify(Virtual(truth, testing::RomeoSurgeDesigns(), 4), IdentifyOptions{});
+    const IdentifyResult r =
+        Identify(Virtual(truth, testing::RomeoSurgeDesigns(), 4), IdentifyOptions{});
     const DofIdentification* d = r.Find(Dof::kSurge);
     ASSERT_NE(d, nullptr);
     int findings = 0;

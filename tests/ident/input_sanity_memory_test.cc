@@ -1,4 +1,4 @@
-// Issue #16: the unit and sign check of a long log holds memory in proportion to the columns it
+// The unit and sign check of a long log holds memory in proportion to the columns it
 // reads, not a dense regression of them: its force balance is summed sample by sample
 // (ident/src/stats/centred_moments.h) over the Savitzky–Golay samples streamed by ForEachSmoothed.
 #include <gtest/gtest.h>
@@ -16,8 +16,8 @@
 namespace uuvplan::ident {
 namespace {
 
-// ROMEO surge with a sonar-like position sensor alone at 100 Hz (the issue #16 case at 1/10 of
-// its length: 100,000 rows; the force logged at 20 Hz, ~2% of the positions dropped out),
+// ROMEO surge with a sonar-like position sensor alone at 100 Hz (the long-log benchmark case at
+// 1/10 of its length: 100,000 rows; the force logged at 20 Hz, ~2% of the positions dropped out),
 // force legs of ±25/50 N.
 model::Campaign LongSurgeCampaign() {
   model::Truth truth = testing::CaseTruth("romeo");
@@ -47,7 +47,8 @@ TEST(InputSanityMemoryTest, LiveHeapOfTheCheckIsTheFiniteColumnsItReads) {
   const long long peak = uuvplan::testing::StopCountingHeap();
   EXPECT_TRUE(problems.empty());  // correct logs: nothing found (the check still ran its fits)
   EXPECT_LT(peak, 40LL * rows) << rows << " rows, peak live heap " << peak << " B";
-  std::cout << rows << " rows, peak live heap " << peak / 1e6 << " MB (" << peak / rows << " B a row)\n";
+  std::cout << rows << " rows, peak live heap " << peak / 1e6 << " MB (" << peak / rows
+            << " B a row)\n";
 }
 
 TEST(InputSanityMemoryTest, ALentLogIsCheckedWithoutACopyAndGivenBackUnchanged) {

@@ -1,7 +1,9 @@
-// The unit and sign checks of ident/prepare/input_sanity.h on campaigns in memory: correct logs (the
-// seed cases' virtual campaigns, the two real campaigns of shared/data) raise nothing, and each
-// mistake is named on its column. The command line's exit status 2 and --accept-units are
+// The unit and sign checks of ident/prepare/input_sanity.h on campaigns in memory: correct logs
+// (the seed cases' virtual campaigns, the two real campaigns of shared/data) raise nothing, and
+// each mistake is named on its column. The command line's exit status 2 and --accept-units are
 // tested in tests/cli/input_sanity_cli_test.cc.
+#include "uuvplan/ident/prepare/input_sanity.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -11,7 +13,6 @@
 
 #include "ident_cases.h"
 #include "support/real_data.h"
-#include "uuvplan/ident/prepare/input_sanity.h"
 #include "uuvplan/model/campaign_builder.h"
 
 namespace uuvplan::ident {
@@ -42,8 +43,7 @@ TEST(InputSanityTest, CorrectVirtualLogsRaiseNothing) {
       Virtual("romeo", testing::RomeoSurgeDesigns()),
       Virtual("romeo", testing::RomeoHeaveDesigns()),
       Virtual("romeo", testing::RomeoYawDesigns(), Dof::kYaw, true),
-      Virtual("vsor", testing::VsorDesigns()),
-      Virtual("uris", testing::UrisDesigns())};
+      Virtual("vsor", testing::VsorDesigns()), Virtual("uris", testing::UrisDesigns())};
   for (const model::Campaign& c : campaigns) {
     const auto problems = CheckInputSanity(c);
     EXPECT_TRUE(problems.empty()) << Texts(problems);
@@ -83,7 +83,7 @@ TEST(InputSanityTest, AnOppositeRateSignIsNamed) {
 }
 
 TEST(InputSanityTest, ANoisyHeadingInDegreesIsNamedFromItsChangesOverWindows) {
-  // VSOR's heading (seed 002: 13 Hz, noisy) beside its gyro, on two 15 s steady turns (the
+  // VSOR's heading (ref 002: 13 Hz, noisy) beside its gyro, on two 15 s steady turns (the
   // planner's steady runs): the heading's derivative is too noisy to compare with the rate
   // (correlation −0.2 and 0.4 here, under 0.8), but its changes over 2 s windows follow the
   // rate's integral (cosine ≥ 0.99). Logged in rad, nothing is raised; logged in degrees (and

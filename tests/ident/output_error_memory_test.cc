@@ -1,4 +1,4 @@
-// Issue #15: the output error's memory grows with the campaign's data, not with trials². The
+// The output error's memory grows with the campaign's data, not with trials². The
 // pieces that make it so — the block-angular factor of J (ident/src/block_least_squares.h) and
 // the streaming prewhitened sandwich (covariance.h WhitenedScoreSum) — against their dense
 // definitions, and the live heap of a 420-trial fit against its number of measurements.
@@ -11,10 +11,10 @@
 #include "ident_cases.h"
 #include "support/live_heap.h"
 #include "uuvplan/ident/estimators/block_least_squares.h"
-#include "uuvplan/ident/stats/covariance.h"
-#include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/ident/estimators/output_error.h"
 #include "uuvplan/ident/prepare/trial_data.h"
+#include "uuvplan/ident/stats/covariance.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -69,7 +69,8 @@ TEST(WhitenedScoreSumTest, StreamingEqualsTheBackwardRecursionOfItsDefinition) {
   const RowMajor rows = J;
   for (std::size_t g = 0; g < plan.runs.size(); ++g) {
     sum.StartGroup(plan.rho[g]);
-    for (int i = plan.runs[g].first; i < plan.runs[g].second; ++i) sum.Add(rows.row(i).data(), r[i]);
+    for (int i = plan.runs[g].first; i < plan.runs[g].second; ++i)
+      sum.Add(rows.row(i).data(), r[i]);
   }
   int batches = 0;
   const Eigen::MatrixXd direct = DirectScoreSum(J, r, plan, &batches);
@@ -191,8 +192,8 @@ TEST(OutputErrorMemoryTest,
      ALongPositionTrialIsFittedWithoutStoringItsSimulationOrItsSamplesAgain) {
   if (!uuvplan::testing::HeapCountingAvailable())
     GTEST_SKIP() << "a sanitizer build counts no heap";
-  // Issue #16's case in small (bench/cases/position_surge_truth.yaml: position alone at 100 Hz,
-  // σ 1 cm), 300 s of force legs: 30,001 measurements on the output error's 0.05 s grid
+  // The long-log benchmark case in small (bench/cases/position_surge_truth.yaml: position alone at
+  // 100 Hz, σ 1 cm), 300 s of force legs: 30,001 measurements on the output error's 0.05 s grid
   // (6,001 points). The fit makes the trial's rows while the simulation runs and reads the
   // samples in place. What it holds per measurement at its peak: the residuals at the answer
   // (8 B), the grid (1.6 B) and O(1) more: 10.8 B measured (the gross-error median selects in

@@ -1,12 +1,12 @@
-// Published numbers of the seeds that follow from the methods, each against the paper's own
+// Published numbers of the papers that follow from the methods, each against the paper's own
 // rounding (docs/seeds.md lists every table and equation with its status):
-//  - seed 000 Table III rows 1–2 and Table IV (both payload configurations): the steady-state
+//  - ref 000 Table III rows 1–2 and Table IV (both payload configurations): the steady-state
 //    least squares (eqs. 7–12) on noise-free steady speeds made with the published parameters
 //    gives them back, and the printed percentile errors follow from the printed θ and σ;
-//  - seed 000 §IV-D measured phase lags (time lag → phase at the sine's period), the a priori
+//  - ref 000 §IV-D measured phase lags (time lag → phase at the sine's period), the a priori
 //    yaw inertia and added-mass fractions;
-//  - seed 002 eq. 12: the PD autopilot's voltage for a torque Y; eq. 10 with Table 5's values;
-//  - seed 004 Table 2: the "Mean" row; Table 4 against Tables 1–3 (not an average of them).
+//  - ref 002 eq. 12: the PD autopilot's voltage for a torque Y; eq. 10 with Table 5's values;
+//  - ref 004 Table 2: the "Mean" row; Table 4 against Tables 1–3 (not an average of them).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "ident_cases.h"
+#include "uuvplan/ident/estimators/steady_state.h"
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/stats/significance.h"
-#include "uuvplan/ident/estimators/steady_state.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -31,7 +31,7 @@ double SteadySpeed(double k, double kq, double force) {
   return force < 0 ? -v : v;
 }
 
-// One published row of seed 000 Tables III/IV: k, kq (0: linear model), η^hull, η^hull-propeller
+// One published row of ref 000 Tables III/IV: k, kq (0: linear model), η^hull, η^hull-propeller
 // with their printed σ and percentile errors.
 struct DragRow {
   const char* what;
@@ -102,13 +102,14 @@ void CheckRow(const model::Vehicle& v, Dof dof, const std::vector<Legs>& legs, c
 }
 
 TEST(SeedTablesTest, RomeoTableIIIYawRows) {
-  // Seed 000 Table III: yaw front-left rear-right (open water for positive torque, η^hull for
+  // Ref 000 Table III: yaw front-left rear-right (open water for positive torque, η^hull for
   // negative) and horizontal all (η^hull-propeller both ways). Row 1 up to ±20 deg/s, rows 2–3
   // "at low speed" (|r| <= 10 deg/s).
   const model::Truth truth = testing::CaseTruth("romeo");
   const DragRow rows[] = {
       {"linear and quadratic", 20.5, 49.5, 0.60, 0.60, 2.6, 7.2, 0.03, 0.025, 12.7, 14.5, 5, 4.2},
-      {"linear and quadratic at low speed", 23.8, 30.8, 0.67, 0.61, 3.5, 20.7, 0.048, 0.036, 14.7, 67.2, 7.2, 5.9},
+      {"linear and quadratic at low speed", 23.8, 30.8, 0.67, 0.61, 3.5, 20.7, 0.048, 0.036, 14.7,
+       67.2, 7.2, 5.9},
       {"linear at low speed", 28.6, 0, 0.68, 0.62, 1.3, 0, 0.049, 0.036, 4.5, 0, 7.2, 5.8}};
   for (int i = 0; i < 3; ++i) {
     const DragRow& row = rows[i];
@@ -126,17 +127,19 @@ TEST(SeedTablesTest, RomeoTableIIIYawRows) {
 }
 
 TEST(SeedTablesTest, RomeoTableIVSurgeBothPayloads) {
-  // Seed 000 Table IV, each direction its own model: forward, surge front pushing forward is
+  // Ref 000 Table IV, each direction its own model: forward, surge front pushing forward is
   // open water, surge rear pushing forward has η^hull+, horizontal all η^hull-propeller+;
   // backward, surge rear pushing backward is open water, surge front η^hull−. Technological and
   // microness ("microness" payload, Fig. 2) configurations alike.
   const model::Truth truth = testing::CaseTruth("romeo");
-  const DragRow forward[] = {
-      {"forward, technological", 46.9, 306.2, 0.73, 0.73, 4.9, 15.9, 0.014, 0.014, 10.4, 5.2, 1.9, 1.9},
-      {"forward, microness", 33.0, 326.6, 0.72, 0.67, 8.7, 27.7, 0.024, 0.024, 26.4, 8.5, 3.3, 3.6}};
-  const DragRow backward[] = {
-      {"backward, technological", 57.9, 331.4, 0.89, 0.80, 5.4, 18.9, 0.016, 0.015, 9.3, 5.7, 1.8, 1.9},
-      {"backward, microness", 48.4, 324.7, 0.84, 0.63, 8.3, 28.1, 0.023, 0.023, 17.1, 8.7, 2.7, 3.7}};
+  const DragRow forward[] = {{"forward, technological", 46.9, 306.2, 0.73, 0.73, 4.9, 15.9, 0.014,
+                              0.014, 10.4, 5.2, 1.9, 1.9},
+                             {"forward, microness", 33.0, 326.6, 0.72, 0.67, 8.7, 27.7, 0.024,
+                              0.024, 26.4, 8.5, 3.3, 3.6}};
+  const DragRow backward[] = {{"backward, technological", 57.9, 331.4, 0.89, 0.80, 5.4, 18.9, 0.016,
+                               0.015, 9.3, 5.7, 1.8, 1.9},
+                              {"backward, microness", 48.4, 324.7, 0.84, 0.63, 8.3, 28.1, 0.023,
+                               0.023, 17.1, 8.7, 2.7, 3.7}};
   const std::vector<double> push = {10.0, 25.0, 40.0, 55.0};  // N: up to ~0.35 m/s (§IV-D)
   std::vector<double> pull;
   for (double f : push) pull.push_back(-f);
@@ -157,7 +160,7 @@ TEST(SeedTablesTest, RomeoTableIVSurgeBothPayloads) {
 }
 
 TEST(SeedTablesTest, RomeoMeasuredPhaseLags) {
-  // Seed 000 §IV-D: a measured time lag Δt at period T is a phase lag 360°·Δt/T: yaw 2.6 s at
+  // Ref 000 §IV-D: a measured time lag Δt at period T is a phase lag 360°·Δt/T: yaw 2.6 s at
   // 24 s → "39°" (39.0), surge 2.7 s at 26 s → "37°" (37.4; whole degrees printed: ±0.5).
   const auto phase = [](double lag_s, double period_s) { return 360.0 * lag_s / period_s; };
   EXPECT_NEAR(phase(2.6, 24.0), 39.0, 0.5);
@@ -165,7 +168,7 @@ TEST(SeedTablesTest, RomeoMeasuredPhaseLags) {
 }
 
 TEST(SeedTablesTest, RomeoAddedMassAgainstTheEstimate) {
-  // Seed 000 §IV-D: m̂_u ≅ 890 kg on a 450 kg vehicle is "about 440 kg" of added mass, 98% of
+  // Ref 000 §IV-D: m̂_u ≅ 890 kg on a 450 kg vehicle is "about 440 kg" of added mass, 98% of
   // the dry mass — inside the 10–100% a priori range of §III-B that cases/romeo declares, while
   // the ellipsoid's λ ≈ 183 kg (41%) is "sensibly lower". λ itself needs h(p, q) read from the
   // plots of [44] (not in the seed): docs/seeds.md.
@@ -180,7 +183,7 @@ TEST(SeedTablesTest, RomeoAddedMassAgainstTheEstimate) {
 }
 
 TEST(SeedTablesTest, VsorAutopilotVoltageEq12) {
-  // Seed 002 eq. 12: the voltage that gives the torque Y on HT1 + HT7, the positive root of
+  // Ref 002 eq. 12: the voltage that gives the torque Y on HT1 + HT7, the positive root of
   // (a1 + a7)·V² + (b1 + b7)·V − Y/(cos β·R) = 0, with a = 10.84 N/V², b = −5.019 N/V (§2.2,
   // both thrusters alike), β = 45°, R = 1.1·sin 45° (cases/vsor). The root put back into eq. 11
   // gives Y to the solver's precision (1e-9 relative).
@@ -195,7 +198,7 @@ TEST(SeedTablesTest, VsorAutopilotVoltageEq12) {
   EXPECT_GT(2.1 - 1.3, 5.019 / 10.84);
 }
 
-// Heading error ψ_d − ψ after `duration` s of seed 002's PD autopilot (eq. 9, k_p = 300,
+// Heading error ψ_d − ψ after `duration` s of ref 002's PD autopilot (eq. 9, k_p = 300,
 // k_d = 150 N·m·s/rad, updated at 13 Hz, the compass rate, held between updates) on the yaw
 // model of eq. 2 with Table 5's parameters, from rest 10° off the set-point; `b` the
 // disturbance of eq. 2 (N·m). RK4 at 1 ms.
@@ -203,7 +206,9 @@ double PdHeadingError(double b, double duration) {
   const double inertia = 136.66, c1 = 74.867, c2 = 682.57, kp = 300, kd = 150;
   const double psi_d = 10 * M_PI / 180, h = 1e-3, period = 1.0 / 13.0;
   double psi = 0.0, r = 0.0, phi = 0.0, next_update = 0.0;
-  const auto accel = [&](double rate) { return (phi - c1 * rate - c2 * rate * std::abs(rate) - b) / inertia; };
+  const auto accel = [&](double rate) {
+    return (phi - c1 * rate - c2 * rate * std::abs(rate) - b) / inertia;
+  };
   for (double t = 0.0; t < duration; t += h) {
     if (t >= next_update - 1e-12) {
       phi = kp * (psi_d - psi) + kd * (0.0 - r);  // eq. 9 in the heading's coordinates
@@ -219,7 +224,7 @@ double PdHeadingError(double b, double duration) {
 }
 
 TEST(SeedTablesTest, VsorPdAutopilotEq10WithTable5) {
-  // Seed 002 eqs. 6–10: the PD heading autopilot on the linearised yaw model is stable, with
+  // Ref 002 eqs. 6–10: the PD heading autopilot on the linearised yaw model is stable, with
   // "null steady-state error". With Table 5's I and d_L, eq. 10 has ω_n = √(k_p/I) = 1.48 rad/s
   // and ζ = (d_L + k_d)/(2√(k_p·I)) = 0.555: stable and underdamped. Simulated on the
   // non-linear model at the controller's 13 Hz, the error vanishes without a disturbance, but
@@ -236,7 +241,7 @@ TEST(SeedTablesTest, VsorPdAutopilotEq10WithTable5) {
 }
 
 TEST(SeedTablesTest, UrisTable2MeanRowIsTheMeanOfItsExperiments) {
-  // Seed 004 Table 2 (surge): the "Mean" θ row is the mean of experiments 1–3 to the printed
+  // Ref 004 Table 2 (surge): the "Mean" θ row is the mean of experiments 1–3 to the printed
   // rounding (half a unit of the mean's last digit: 5e-5 on α, γ, δ; J 1.806e-4 printed
   // 1.805e-4: 5e-8 plus the experiments' own 5e-8 rounding). Tables 1 and 3's Mean rows are
   // not the means of their experiments (docs/seeds.md gives the computed values).
@@ -245,14 +250,14 @@ TEST(SeedTablesTest, UrisTable2MeanRowIsTheMeanOfItsExperiments) {
     for (double x : v) s += x;
     return s / v.size();
   };
-  EXPECT_NEAR(mean({0.3243, 0.3185, 0.3237}), 0.3222, 5e-5);        // α
-  EXPECT_NEAR(mean({0.0178, 0.0201, 0.0173}), 0.0184, 5e-5);        // γ
-  EXPECT_NEAR(mean({-0.0018, 0.0041, 0.0013}), 0.0012, 5e-5);       // δ
+  EXPECT_NEAR(mean({0.3243, 0.3185, 0.3237}), 0.3222, 5e-5);          // α
+  EXPECT_NEAR(mean({0.0178, 0.0201, 0.0173}), 0.0184, 5e-5);          // γ
+  EXPECT_NEAR(mean({-0.0018, 0.0041, 0.0013}), 0.0012, 5e-5);         // δ
   EXPECT_NEAR(mean({1.630e-4, 1.895e-4, 1.892e-4}), 1.805e-4, 1e-7);  // J
 }
 
 TEST(SeedTablesTest, UrisTable4IsNoAverageOfTables1To3) {
-  // Seed 004 §5.3 calls Table 4 "the chosen model after averaging the validated experiments",
+  // Ref 004 §5.3 calls Table 4 "the chosen model after averaging the validated experiments",
   // yet several of its coefficients lie outside the range of the experiments of Tables 1–3,
   // where no average (weighted or not) can fall: Table 4 comes from data the paper does not
   // give (docs/seeds.md), and uuvplan uses it only as the truth of §5.4's simulated data.
@@ -261,11 +266,11 @@ TEST(SeedTablesTest, UrisTable4IsNoAverageOfTables1To3) {
     return std::make_pair(*lo, *hi);
   };
   const auto yaw_alpha = range({1.1865, 1.3449, 1.1635, 1.2326});  // Table 1
-  EXPECT_LT(1.1006, yaw_alpha.first);                               // Table 4 yaw α below all
-  const auto surge_alpha = range({0.3243, 0.3185, 0.3237});         // Table 2
-  EXPECT_GT(0.3302, surge_alpha.second);                            // surge α above all
+  EXPECT_LT(1.1006, yaw_alpha.first);                              // Table 4 yaw α below all
+  const auto surge_alpha = range({0.3243, 0.3185, 0.3237});        // Table 2
+  EXPECT_GT(0.3302, surge_alpha.second);                           // surge α above all
   const auto surge_gamma = range({0.0178, 0.0201, 0.0173});
-  EXPECT_LT(0.0169, surge_gamma.first);                             // surge γ below all
+  EXPECT_LT(0.0169, surge_gamma.first);  // surge γ below all
   // Table 4's yaw J, 1.038e-4, has the four digits of the mean of Table 1's J as printed
   // (1.0383e-3; half a unit of the 4th digit, 5e-7), a decade lower, while Table 1's own Mean
   // row prints 8.38e-4.

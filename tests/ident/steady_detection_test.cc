@@ -18,7 +18,7 @@ namespace uuvplan::ident {
 namespace {
 
 TEST(ConstantSpeedFitTest, SonarSteadySpeedBelow3PercentAndCalibrated) {
-  // Seed 000 §III: from 3.3 Hz sonar positions alone the steady speed has σ < 3% of the speed.
+  // Ref 000 §III: from 3.3 Hz sonar positions alone the steady speed has σ < 3% of the speed.
   // 20 s at 0.2 m/s with σ = 0.02 m (ROMEO's sonar). The reported σ must also be right: the RMS
   // of (v̂ − v)/σ over 400 repetitions is 1 within 4 standard errors (SE ≈ 1/√800 = 3.5%).
   std::mt19937_64 rng(11);

@@ -1,4 +1,4 @@
-// Issue #16: Monte Carlo's repetitions and identification's trials and DOFs run on several
+// Monte Carlo's repetitions and identification's trials and DOFs run on several
 // threads (`--threads`) with results identical to one thread: each job fills its own slot.
 // (Diagnosis's candidate fits: DiagnosisModelTest, tests/ident/diagnosis_model_test.cc.)
 #include <gtest/gtest.h>

@@ -1,6 +1,7 @@
 // docs/architecture.md, "How to add an effect", done in a test: a toy effect (cubic drag,
-// F = −c3·ξ³) registered through the public effect table, with its own force term and nothing
-// else, is simulated by the virtual pool, named by diagnosis and estimated within 3σ.
+// F = −c3·ξ³) registered through the public effect table, with its own force term and its
+// finding's sentence and nothing else, is simulated by the virtual pool, named by diagnosis
+// and estimated within 3σ.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/virtual_pool.h"
+#include "uuvplan/text/finding_text.h"
 
 namespace uuvplan {
 namespace {
@@ -18,15 +20,15 @@ namespace {
 class CubicDragTerm final : public model::ForceTerm {
  public:
   CubicDragTerm() : ForceTerm({"c3"}) {}
-  double Value(const model::TermContext& c, const double* theta) const override {
+  double Value(const model::TermInputs& c, const double* theta) const override {
     return -theta[0] * c.xi * c.xi * c.xi;
   }
-  model::TermPartials Partials(const model::TermContext& c, const double* theta,
+  model::TermPartials Partials(const model::TermInputs& c, const double* theta,
                                double* J) const override {
     J[0] = -c.xi * c.xi * c.xi;
     return {theta[0] * J[0], -3.0 * theta[0] * c.xi * c.xi, 0.0};
   }
-  bool Regressor(const model::TermContext& c, double* h, double* h0) const override {
+  bool Regressor(const model::TermInputs& c, double* h, double* h0) const override {
     h[0] = -c.xi * c.xi * c.xi;
     *h0 = 0.0;
     return true;
@@ -43,16 +45,18 @@ model::EffectEntry CubicDrag() {
   e.make_term = [](model::Dof, const std::vector<std::string>&) {
     return std::make_unique<CubicDragTerm>();
   };
-  e.propose = [](const model::ProposalContext& c) {
+  e.propose = [](const model::ProposalEvidence& c) {
     if (c.Has("c3")) return std::vector<model::Proposal>{};
     model::Proposal p;
     p.start.push_back({"c3", 0.0});
     return std::vector<model::Proposal>{p};
   };
-  e.describe = [](const model::FindingContext&) {
-    return std::string("the simulation is too fast at high speed: drag grows faster than ξ²");
-  };
   return e;
+}
+
+// Step 2b: the finding's sentence.
+std::string CubicDragSentence(const text::FindingQuotes&) {
+  return "the simulation is too fast at high speed: drag grows faster than ξ²";
 }
 
 TEST(ToyEffectTest, VocabularyKnowsTheRegisteredEffect) {
@@ -85,8 +89,8 @@ TEST(ToyEffectTest, DofModelCarriesItsTermAndPartials) {
   Eigen::MatrixXd A(2, 2), B(2, dm.num_parameters());
   const model::TrialConditions conditions;
   dm.Linearize(0.0, x, conditions, theta.data(), dx, A, B);
-  EXPECT_NEAR(dx[1], -7.0 * 0.125 / 100.0, 1e-12);       // −c3·ξ³/m
-  EXPECT_NEAR(B(1, i), -0.125 / 100.0, 1e-12);           // ∂(F/m)/∂c3
+  EXPECT_NEAR(dx[1], -7.0 * 0.125 / 100.0, 1e-12);         // −c3·ξ³/m
+  EXPECT_NEAR(B(1, i), -0.125 / 100.0, 1e-12);             // ∂(F/m)/∂c3
   EXPECT_NEAR(A(1, 1), -3.0 * 7.0 * 0.25 / 100.0, 1e-12);  // ∂(F/m)/∂ξ
 }
 
@@ -97,6 +101,7 @@ double SteadySpeed(double k, double kq, double force) {
 
 TEST(ToyEffectTest, DiagnosisNamesAndEstimatesTheToyEffect) {
   const model::ScopedEffect toy(CubicDrag());
+  const text::ScopedFindingSentence sentence("cubic_drag", CubicDragSentence);
   for (std::uint64_t seed : {1u, 2u}) {
     testing::HiddenEffectCase c = testing::DrawHiddenEffectCase(std::nullopt, seed);
     auto& params = c.truth.dofs.at(c.dof).params;
@@ -115,7 +120,7 @@ TEST(ToyEffectTest, DiagnosisNamesAndEstimatesTheToyEffect) {
     EXPECT_TRUE(verdict.within_3_sigma) << "seed " << seed;
     ASSERT_FALSE(r.findings.empty());
     EXPECT_GT(r.findings[0].gain.relative, 0.0);
-    EXPECT_NE(r.findings[0].what.find("drag grows faster"), std::string::npos);
+    EXPECT_NE(text::FindingSentence(r, r.findings[0]).find("drag grows faster"), std::string::npos);
   }
 }
 

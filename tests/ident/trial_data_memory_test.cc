@@ -1,4 +1,4 @@
-// Issue #16: a long position-only log is not held twice while it is prepared, and what the
+// A long position-only log is not held twice while it is prepared, and what the
 // prepared trial keeps is shared where it can be: the positions are moved out of a log the
 // caller gives up (PrepareTrial's `given_up`), the velocity estimate shares their times
 // (SharedTimes) and stores its samples in float, and its runs as their first samples; times
@@ -15,14 +15,14 @@
 
 #include "ident_cases.h"
 #include "support/live_heap.h"
-#include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/ident/prepare/trial_data.h"
+#include "uuvplan/ident/stats/monte_carlo.h"
 
 namespace uuvplan::ident {
 namespace {
 
-// Issue #16's case in small (bench/cases/position_surge_truth.yaml: position alone at 100 Hz,
-// σ 1 cm), 300 s of force legs: 30,001 position samples.
+// The long-log benchmark case in small (bench/cases/position_surge_truth.yaml: position alone at
+// 100 Hz, σ 1 cm), 300 s of force legs: 30,001 position samples.
 model::Campaign PositionLegs() {
   const model::Truth truth =
       io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/bench/cases/position_surge_truth.yaml");

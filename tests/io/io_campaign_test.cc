@@ -3,9 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include <filesystem>
+#include <fstream>
 
 #include "io_test_util.h"
 #include "support/real_data.h"
@@ -61,7 +60,7 @@ TEST(ReadCampaignTest, ReadsTheFixture) {
   EXPECT_EQ(yaw.log.notes.size(), 1u);  // the heading was unwrapped
 }
 
-// issue #16: every command that takes a campaign accepts its directory too.
+// Every command that takes a campaign accepts its directory too.
 TEST(ReadCampaignTest, ADirectoryStandsForItsCampaignYaml) {
   const Campaign by_file = ReadCampaign(testing::SourcePath("tests/data/io/campaign.yaml"));
   const Campaign by_dir = ReadCampaign(testing::SourcePath("tests/data/io"));
@@ -77,10 +76,10 @@ TEST(ReadCampaignTest, ADirectoryStandsForItsCampaignYaml) {
 TEST(ReadCampaignTest, ACopyOfALogIsRefusedAsTheSameLog) {
   ScratchDir dir;
   std::filesystem::copy_file(dir.Path("trials/surge_0.csv"), dir.Path("trials/surge_copy.csv"));
-  const std::string path = dir.Write(
-      "copies.yaml",
-      "vehicle: vehicle.yaml\ntrials:\n  - file: trials/surge_0.csv\n    dof: surge\n"
-      "  - file: trials/surge_copy.csv\n    dof: surge\n");
+  const std::string path =
+      dir.Write("copies.yaml",
+                "vehicle: vehicle.yaml\ntrials:\n  - file: trials/surge_0.csv\n    dof: surge\n"
+                "  - file: trials/surge_copy.csv\n    dof: surge\n");
   try {
     ReadCampaign(path);
     ADD_FAILURE() << "a copied log was read";
@@ -372,7 +371,7 @@ TEST(WriteCampaignTest, WritesADirectoryThatReadsBack) {
   EXPECT_EQ(ReadCampaign(dir.Path("out/campaign.yaml")).trials.size(), back.trials.size());
 }
 
-// issue #15: the temporary directory is unique to the run, so a user's directory of the old
+// The temporary directory is unique to the run, so a user's directory of the old
 // temporary name is never touched, and nothing of the run is left behind.
 TEST(WriteCampaignTest, LeavesOtherDirectoriesAlone) {
   ScratchDir dir;

@@ -15,8 +15,8 @@ namespace uuvplan::model {
 namespace {
 
 using io::ReadTrialLog;
-using io::WriteTrialLog;
 using io::WriteFileAtomically;
+using io::WriteTrialLog;
 
 using ::testing::AllOf;
 using testing::At;
@@ -98,7 +98,8 @@ TEST(ReadTrialLogTest, AHeadingInDegreesIsNotUnwrappedByTwoPi) {
   // into turns. Left as logged; wrapped at ±180 (179 → -178), it is unwrapped by 360 and said
   // so (input_sanity then names degrees).
   ScratchDir dir;
-  const TrialLog noisy = ReadTrialLog(dir.Write("noisy.csv", "t,pos_yaw\n0,0\n1,4\n2,1.5\n3,8\n4,12\n"));
+  const TrialLog noisy =
+      ReadTrialLog(dir.Write("noisy.csv", "t,pos_yaw\n0,0\n1,4\n2,1.5\n3,8\n4,12\n"));
   ExpectSameColumn(noisy.position[Index(Dof::kYaw)], {0, 4, 1.5, 8, 12});
   EXPECT_THAT(noisy.notes, IsEmpty());
   const TrialLog wrapped =

@@ -16,9 +16,9 @@
 namespace uuvplan::model {
 namespace {
 
-using io::ReadVehicle;
 using io::ReadPool;
 using io::ReadTruth;
+using io::ReadVehicle;
 
 using ::testing::AllOf;
 using testing::At;
@@ -218,7 +218,7 @@ TEST(ReadVehicleTest, RepeatedKey) {
                         std::to_string(line) + ")"));
 }
 
-// A vehicle file may hold a model (`diagnose --write-vehicle`, issue #14): its keys are
+// A vehicle file may hold a model (`diagnose --write-vehicle`): its keys are
 // checked as a truth file's, by every reader of the vehicle.
 TEST(ReadVehicleTest, ModelParamsAreChecked) {
   ScratchDir dir;
@@ -538,9 +538,9 @@ TEST(ReadPoolTest, NameDefaultsToTheFileStemAndMarginToZero) {
 
 TEST(ReadPoolTest, MaxTurnsIsReadAndMustBePositive) {
   ScratchDir dir;
-  EXPECT_EQ(ReadPool(dir.Write("t.yaml", "length: 5\nwidth: 3\ndepth: 2\nmax_turns: 1.5\n"))
-                .max_turns,
-            1.5);
+  EXPECT_EQ(
+      ReadPool(dir.Write("t.yaml", "length: 5\nwidth: 3\ndepth: 2\nmax_turns: 1.5\n")).max_turns,
+      1.5);
   EXPECT_THAT(ErrorOf([&] {
                 ReadPool(dir.Write("u.yaml", "length: 5\nwidth: 3\ndepth: 2\nmax_turns: 0\n"));
               }),
@@ -574,16 +574,20 @@ TEST(ReadPoolTest, MarginLeavesNoRoom) {
 // and the message names the likely unit (docs/formats.md, "Plausibility").
 TEST(ReadPoolTest, APoolInCentimetresIsRefusedNamingTheUnit) {
   ScratchDir dir;
-  const std::string cm = dir.Write("p_cm.yaml", "name: p\nlength: 2500\nwidth: 1200\ndepth: 500\nmargin: 150\n");
-  EXPECT_THAT(ErrorOf([&] { ReadPool(cm); }),
-              HasSubstr(At("p_cm.yaml", 4) + " depth: implausible: expected a pool depth in [0.1, 100] m, "
-                        "got 500: is it in cm? 5 m would be plausible"));
+  const std::string cm =
+      dir.Write("p_cm.yaml", "name: p\nlength: 2500\nwidth: 1200\ndepth: 500\nmargin: 150\n");
+  EXPECT_THAT(
+      ErrorOf([&] { ReadPool(cm); }),
+      HasSubstr(At("p_cm.yaml", 4) + " depth: implausible: expected a pool depth in [0.1, 100] m, "
+                                     "got 500: is it in cm? 5 m would be plausible"));
   const std::string margin = dir.Write("m.yaml", "length: 25\nwidth: 12\ndepth: 5\nmargin: 150\n");
-  EXPECT_THAT(ErrorOf([&] { ReadPool(margin); }),
-              HasSubstr("margin: implausible: expected a pool margin in [0, 20] m, got 150: is it in "
-                        "cm? 1.5 m would be plausible"));
+  EXPECT_THAT(
+      ErrorOf([&] { ReadPool(margin); }),
+      HasSubstr("margin: implausible: expected a pool margin in [0, 20] m, got 150: is it in "
+                "cm? 1.5 m would be plausible"));
   // The cases' pools (4.5 m tank to a 25 m pool, margins 0.4–2 m) stay well inside.
-  EXPECT_EQ(ReadPool(dir.Write("ok.yaml", "length: 25\nwidth: 12\ndepth: 5\nmargin: 2\n")).depth, 5);
+  EXPECT_EQ(ReadPool(dir.Write("ok.yaml", "length: 25\nwidth: 12\ndepth: 5\nmargin: 2\n")).depth,
+            5);
 }
 
 TEST(ReadPoolTest, UnknownKey) {
@@ -736,7 +740,8 @@ TEST(ReadTruthTest, ThrustMapNeedsAMonotoneExponentAndAReference) {
     const int line = dir.Edit("truth.yaml", "deadzone: {deadzone: 2.5}",
                               "thrust_map: {thrust_exponent: -1.2, reference: 60}");
     EXPECT_THAT(ErrorOf([&] { ReadTruth(dir.Path("truth.yaml")); }),
-                HasSubstr(At("truth.yaml", line) + " dofs.surge.effects.thrust_map.thrust_exponent: "
+                HasSubstr(At("truth.yaml", line) +
+                          " dofs.surge.effects.thrust_map.thrust_exponent: "
                           "expected a number > -1 (the delivered force must grow with the "
                           "command), got '-1.2'"));
   }

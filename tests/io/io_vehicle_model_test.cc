@@ -19,9 +19,16 @@ TEST(VehicleModelIo, WrittenModelReadsBackWithSigmaEffectsAndSettings) {
   ScratchDir dir;
   const Truth truth = io::ReadTruth(dir.Path("truth.yaml"));
   DofTruth m;
-  m.params = {{"m", 890.5}, {"k", 46.9}, {"kq", 306.2}, {"bias", -1.25},
-              {"eta.surge-front.neg", 0.81}, {"lag", 0.0823}, {"thrust_exponent", -0.48},
-              {"coupling.ur", -3.5}, {"k_neg", 57.9}, {"kq_neg", 0.0}};
+  m.params = {{"m", 890.5},
+              {"k", 46.9},
+              {"kq", 306.2},
+              {"bias", -1.25},
+              {"eta.surge-front.neg", 0.81},
+              {"lag", 0.0823},
+              {"thrust_exponent", -0.48},
+              {"coupling.ur", -3.5},
+              {"k_neg", 57.9},
+              {"kq_neg", 0.0}};
   m.settings = {{"thrust_reference", 120.0}};
   for (const auto& [name, value] : m.params) m.sigma[name] = 0.01 * std::abs(value);
   const std::string path = dir.Path("model.yaml");

@@ -37,7 +37,7 @@ TEST(VehicleGeometry, GeometryOnlyVehicleGetsDerivedMappings) {
   ASSERT_TRUE(v.thrusters[0].geometry);
   EXPECT_EQ(v.thrusters[0].geometry->position, (std::array<double, 3>{-0.3, -0.2, 0}));
   EXPECT_TRUE(v.thrusters[0].reversible);
-  EXPECT_FALSE(v.thrusters[1].reversible);  // the seeds' rule by default
+  EXPECT_FALSE(v.thrusters[1].reversible);  // the papers' rule by default
   EXPECT_EQ(v.thrusters[0].model.dead_band, 0.05);
   std::vector<std::string> names;
   for (const auto& m : v.mappings) names.push_back(m.name);

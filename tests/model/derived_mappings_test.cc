@@ -1,5 +1,5 @@
 // Mappings derived from thruster geometry (model/derived_mappings.h): ROMEO's derived mappings
-// contain seed 000 Table I's (as cases/romeo/vehicle.yaml writes them), the BlueROV2's are the
+// contain ref 000 Table I's (as cases/romeo/vehicle.yaml writes them), the BlueROV2's are the
 // vectored frame's pairs, and geometries that cannot drive a DOF alone say so without NaN.
 #include "uuvplan/model/derived_mappings.h"
 
@@ -28,7 +28,7 @@ Thruster At(const std::string& name, std::array<double, 3> r, std::array<double,
   return t;
 }
 
-// ROMEO (seed 000 §IV-A: 1.3 × 0.9 × 1.0 m, eight thrusters "two by two in the corners", the
+// ROMEO (ref 000 §IV-A: 1.3 × 0.9 × 1.0 m, eight thrusters "two by two in the corners", the
 // horizontal ones parallel to the diagonals). The layout cases/romeo/vehicle.yaml CHOOSES:
 // horizontal thrusters at (±0.55, ±0.35) m, 45°; directions from Table I's "horizontal all"
 // row (HFL = (X + Y + N)/4: HFL pushes +x, +y, +N). Vertical thrusters CHOSEN above them at
@@ -97,7 +97,7 @@ void ExpectPure(const DerivedMappings& d, const std::vector<Thruster>& thrusters
   }
 }
 
-// Seed 000 Table I, as cases/romeo/vehicle.yaml writes it in physical units: each of its ten
+// Ref 000 Table I, as cases/romeo/vehicle.yaml writes it in physical units: each of its ten
 // mappings is derived, with the same thrusters, the same shares (the file's 5 significant
 // digits: 1e-4) and the same open-water direction (the "motion direction with eta = 1").
 TEST(DerivedMappings, RomeoGeometryGivesTableI) {
@@ -148,7 +148,7 @@ TEST(DerivedMappings, RomeoNamesAndOrderAreDeterministic) {
 // The BlueROV2's horizontal thrusters sit 0.085 m below the centre: a surge force X comes with
 // a pitch moment 0.085·X that its vertical thrusters (at x = 0) cannot cancel, so with every
 // other DOF held, surge has no mapping; its metacentric restoring holds pitch and roll, and with
-// those exempt the vectored frame gives the pairs of seed 000 Table I's idea.
+// those exempt the vectored frame gives the pairs of ref 000 Table I's idea.
 TEST(DerivedMappings, BlueRov2SurgeNeedsPitchRestoring) {
   const std::vector<Thruster> thrusters = BlueRov2Thrusters(false);
   const DerivedMappings strict = DeriveMappings(thrusters, kBlueRov2Size, {});

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "uuvplan/model/dof_model.h"
-#include "uuvplan/model/excitation.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/excitation.h"
 #include "uuvplan/model/simulator.h"
 
 namespace uuvplan::model {
@@ -42,7 +42,7 @@ TEST(SimulatorTest, Rk4ConvergesAtFourthOrderOnTheLinearModel) {
   s.Remove("kq");
   s.Remove("bias");
   const DofModel model(v, s);
-  const double m = 890, k = 212.25, a = 35, b = 25, w = 2 * M_PI / 26;  // seed 000 §IV-D
+  const double m = 890, k = 212.25, a = 35, b = 25, w = 2 * M_PI / 26;  // ref 000 §IV-D
   Eigen::VectorXd theta(2);
   theta << m, k;
   const auto input = MakeSineExcitation(a, b, w, 0, 60);
@@ -96,18 +96,39 @@ struct FullModel {
   Eigen::VectorXd theta;
   FullModel() {
     structure.dof = Dof::kSurge;
-    structure.parameters = {"k",   "k_neg",        "kq",           "kq_neg",       "bias",
-                            "bias_step",    "eta.front.neg", "eta.rear.pos", "lag", "deadzone",
-                            "advance_loss", "coupling.rr",   "sensor_delay", "drift",
+    structure.parameters = {"k",
+                            "k_neg",
+                            "kq",
+                            "kq_neg",
+                            "bias",
+                            "bias_step",
+                            "eta.front.neg",
+                            "eta.rear.pos",
+                            "lag",
+                            "deadzone",
+                            "advance_loss",
+                            "coupling.rr",
+                            "sensor_delay",
+                            "drift",
                             "thrust_exponent"};
     structure.settings["thrust_reference"] = 40.0;
     model = std::make_unique<DofModel>(vehicle, structure);
-    std::map<std::string, double> p = {
-        {"m", 890},          {"k", 46.9},         {"k_neg", 57.9},  {"kq", 306.2},
-        {"kq_neg", 331.4},   {"bias", 1.5},       {"bias_step", 0.7},
-        {"eta.front.neg", 0.89}, {"eta.rear.pos", 0.73}, {"advance_loss", 2.0},
-        {"coupling.rr", 30.0}, {"drift", -2e-4}, {"lag", 0.4},  {"deadzone", 3.0},
-        {"sensor_delay", 0.3}, {"thrust_exponent", -0.3}};
+    std::map<std::string, double> p = {{"m", 890},
+                                       {"k", 46.9},
+                                       {"k_neg", 57.9},
+                                       {"kq", 306.2},
+                                       {"kq_neg", 331.4},
+                                       {"bias", 1.5},
+                                       {"bias_step", 0.7},
+                                       {"eta.front.neg", 0.89},
+                                       {"eta.rear.pos", 0.73},
+                                       {"advance_loss", 2.0},
+                                       {"coupling.rr", 30.0},
+                                       {"drift", -2e-4},
+                                       {"lag", 0.4},
+                                       {"deadzone", 3.0},
+                                       {"sensor_delay", 0.3},
+                                       {"thrust_exponent", -0.3}};
     theta = model->Theta(p);
   }
 };
@@ -121,9 +142,22 @@ class YawRate final : public AuxVelocities {
 
 TEST(DofModelTest, ParameterLayoutFollowsTheVocabulary) {
   FullModel f;
-  const std::vector<std::string> expected = {
-      "m", "k", "k_neg", "kq", "kq_neg", "bias", "bias_step", "eta.front.neg", "eta.rear.pos",
-      "advance_loss", "coupling.rr", "drift", "lag", "deadzone", "sensor_delay", "thrust_exponent"};
+  const std::vector<std::string> expected = {"m",
+                                             "k",
+                                             "k_neg",
+                                             "kq",
+                                             "kq_neg",
+                                             "bias",
+                                             "bias_step",
+                                             "eta.front.neg",
+                                             "eta.rear.pos",
+                                             "advance_loss",
+                                             "coupling.rr",
+                                             "drift",
+                                             "lag",
+                                             "deadzone",
+                                             "sensor_delay",
+                                             "thrust_exponent"};
   EXPECT_EQ(f.model->parameter_names(), expected);
   EXPECT_EQ(f.model->num_states(), 3);
 }
@@ -173,7 +207,8 @@ TEST(DofModelTest, LinearizeMatchesFiniteDifferences) {
   // States away from the drag kink at xi = 0 and the dead-zone kinks at |phi| = d.
   for (double t : {1.0, 7.0, 12.0}) {
     for (double xi : {-0.3, 0.05, 0.25}) {
-      ExpectLinearizeMatchesFiniteDifferences(*f.model, f.theta, c, t, {1.0, xi, t < 5 ? 25.0 : -20.0});
+      ExpectLinearizeMatchesFiniteDifferences(*f.model, f.theta, c, t,
+                                              {1.0, xi, t < 5 ? 25.0 : -20.0});
     }
   }
 }
@@ -187,13 +222,18 @@ TEST(DofModelTest, LinearizeWithoutLagMatchesFiniteDifferences) {
   s.Add("thrust_exponent");
   s.settings["thrust_reference"] = 40.0;
   const DofModel model(vehicle, s);
-  const Eigen::VectorXd theta = model.Theta(
-      {{"m", 890}, {"k", 46.9}, {"kq", 306.2}, {"bias", 1.5}, {"deadzone", 3.0}, {"thrust_exponent", 0.25}});
+  const Eigen::VectorXd theta = model.Theta({{"m", 890},
+                                             {"k", 46.9},
+                                             {"kq", 306.2},
+                                             {"bias", 1.5},
+                                             {"deadzone", 3.0},
+                                             {"thrust_exponent", 0.25}});
   EXPECT_EQ(model.num_states(), 2);
   const auto input = MakeSegmentsExcitation({{40.0, 5.0, 0}, {-30.0, 5.0, 1}, {7.0, 5.0, 0}});
   const TrialConditions c{input.get(), 0, 0.0, nullptr};
   for (double t : {1.0, 7.0, 12.0}) {
-    for (double xi : {-0.3, 0.05, 0.25}) ExpectLinearizeMatchesFiniteDifferences(model, theta, c, t, {1.0, xi});
+    for (double xi : {-0.3, 0.05, 0.25})
+      ExpectLinearizeMatchesFiniteDifferences(model, theta, c, t, {1.0, xi});
   }
 }
 
@@ -258,10 +298,13 @@ TEST(SimulatorTest, PiecewiseConstantInputIsSampledOncePerStepWithTheSameResult)
   for (int i = 0; i <= 200; ++i) times.push_back(i * 0.1);
   SimulationOptions o;
   o.step_s = 0.01;
-  const Trajectory fast = SimulateMeasured(*f.model, f.theta, {held.get(), 1, 50.0, &aux}, times, o);
-  const Trajectory reference = SimulateMeasured(*f.model, f.theta, {&slow, 1, 50.0, &aux}, times, o);
+  const Trajectory fast =
+      SimulateMeasured(*f.model, f.theta, {held.get(), 1, 50.0, &aux}, times, o);
+  const Trajectory reference =
+      SimulateMeasured(*f.model, f.theta, {&slow, 1, 50.0, &aux}, times, o);
   // Same arithmetic on the same samples: equal to rounding.
-  EXPECT_LT((fast.x - reference.x).cwiseAbs().maxCoeff(), 1e-12 * (1 + reference.x.cwiseAbs().maxCoeff()));
+  EXPECT_LT((fast.x - reference.x).cwiseAbs().maxCoeff(),
+            1e-12 * (1 + reference.x.cwiseAbs().maxCoeff()));
 }
 
 TEST(ExcitationTest, SineAgreesWithLibmAtStageTimesShiftsAndRevisits) {
@@ -356,30 +399,30 @@ TEST(ExcitationTest, SwitchedMultisineAgreesWithLibmAtStageTimesAndSwitches) {
 }
 
 TEST(VehicleTest, RomeoYawInertiaOfAUniformBox) {
-  // Seed 000 §IV-D: I_r = (1/12)·450·(1.3² + 0.9²) = 93.75 kg·m².
+  // Ref 000 §IV-D: I_r = (1/12)·450·(1.3² + 0.9²) = 93.75 kg·m².
   Vehicle v = TwoMappingVehicle();
   EXPECT_NEAR(v.RigidInertia(Dof::kYaw), 93.75, 1e-12);
   EXPECT_DOUBLE_EQ(v.RigidInertia(Dof::kSurge), 450.0);
   v.inertia[Dof::kYaw] = 84.0;  // a given inertia wins over the box
   EXPECT_DOUBLE_EQ(v.RigidInertia(Dof::kYaw), 84.0);
-  const auto bounds = v.InertiaBounds(Dof::kSurge);  // added mass 10–100% (seed 000 §III-B)
+  const auto bounds = v.InertiaBounds(Dof::kSurge);  // added mass 10–100% (ref 000 §III-B)
   EXPECT_DOUBLE_EQ(bounds[0], 495.0);
   EXPECT_DOUBLE_EQ(bounds[1], 900.0);
 }
 
 TEST(ThrusterTest, SeedModels) {
-  ThrustModel sq;  // seed 000 §IV-C: c_V = 1.02 / 1.09 N/V²
+  ThrustModel sq;  // ref 000 §IV-C: c_V = 1.02 / 1.09 N/V²
   sq.c_pos = 1.02;
   sq.c_neg = 1.09;
   EXPECT_DOUBLE_EQ(sq.Thrust(5.0), 25.5);
   EXPECT_DOUBLE_EQ(sq.Thrust(-5.0), -27.25);
-  ThrustModel p2;  // seed 002 §2.2: a = 10.84 N/V², b = -5.019 N/V, odd-extended
+  ThrustModel p2;  // ref 002 §2.2: a = 10.84 N/V², b = -5.019 N/V, odd-extended
   p2.kind = ThrustModel::Kind::kPoly2;
   p2.a = 10.84;
   p2.b = -5.019;
   EXPECT_NEAR(p2.Thrust(2.0), 10.84 * 4 - 5.019 * 2, 1e-12);
   EXPECT_NEAR(p2.Thrust(-2.0), -(10.84 * 4 - 5.019 * 2), 1e-12);
-  sq.deduction = 0.1;  // seed 003: T_a = (1 - t)·T
+  sq.deduction = 0.1;  // ref 003: T_a = (1 - t)·T
   EXPECT_DOUBLE_EQ(sq.Thrust(5.0), 0.9 * 25.5);
 }
 

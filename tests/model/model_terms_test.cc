@@ -15,7 +15,7 @@ constexpr double kStep = 1e-6;
 constexpr double kTol = 1e-6;
 
 struct Point {
-  TermContext c;
+  TermInputs c;
   std::vector<double> theta;
 };
 
@@ -75,11 +75,11 @@ TEST(ForceTermTest, PartialsMatchCentralDifferences) {
         EXPECT_NEAR(J[j], (fp - fm) / (2 * kStep), kTol) << term->parameter_names()[j];
       }
       // d/dxi: the coupling terms read the own DOF's velocity through xi only.
-      TermContext cp = p.c, cm = p.c;
+      TermInputs cp = p.c, cm = p.c;
       cp.xi += kStep;
       cm.xi -= kStep;
-      const double d_xi = (term->Value(cp, p.theta.data()) - term->Value(cm, p.theta.data())) /
-                          (2 * kStep);
+      const double d_xi =
+          (term->Value(cp, p.theta.data()) - term->Value(cm, p.theta.data())) / (2 * kStep);
       if (p.c.xi != 0.0) {  // |xi| has a kink at 0: its one-sided partials differ there
         EXPECT_NEAR(a.d_xi, d_xi, kTol);
       }
@@ -87,8 +87,8 @@ TEST(ForceTermTest, PartialsMatchCentralDifferences) {
       cm = p.c;
       cp.phi += kStep;
       cm.phi -= kStep;
-      const double d_phi = (term->Value(cp, p.theta.data()) - term->Value(cm, p.theta.data())) /
-                           (2 * kStep);
+      const double d_phi =
+          (term->Value(cp, p.theta.data()) - term->Value(cm, p.theta.data())) / (2 * kStep);
       EXPECT_NEAR(a.d_phi, d_phi, kTol);
     }
   }
@@ -112,8 +112,8 @@ TEST(ForceTermTest, RegressorReproducesValue) {
 TEST(ForceTermTest, ThrustUsesEtaOnlyOutsideOpenWater) {
   // Mapping "a" works in open water when pushing positive: eta.a.pos is not a parameter.
   auto thrust = MakeThrustTerm({"a"}, {"eta.a.neg"});
-  const double eta_neg = 0.56;  // seed 000 Table II
-  TermContext c;
+  const double eta_neg = 0.56;  // ref 000 Table II
+  TermInputs c;
   c.mapping = 0;
   c.phi = 10.0;
   EXPECT_DOUBLE_EQ(thrust->Value(c, &eta_neg), 10.0);
@@ -124,9 +124,9 @@ TEST(ForceTermTest, ThrustUsesEtaOnlyOutsideOpenWater) {
 TEST(ForceTermTest, AsymmetricDragSplitsBySign) {
   auto drag = MakeDragTerm(true, true, true);
   ASSERT_EQ(drag->parameter_names(), (std::vector<std::string>{"k", "k_neg", "kq", "kq_neg"}));
-  // Seed 000 Table IV, technological payload: forward k 46.9 kq 306.2, backward 57.9 / 331.4.
+  // Ref 000 Table IV, technological payload: forward k 46.9 kq 306.2, backward 57.9 / 331.4.
   const double theta[4] = {46.9, 57.9, 306.2, 331.4};
-  TermContext c;
+  TermInputs c;
   c.xi = 0.2;
   EXPECT_DOUBLE_EQ(drag->Value(c, theta), -46.9 * 0.2 - 306.2 * 0.04);
   c.xi = -0.2;

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <filesystem>
 
+#include "uuvplan/io/io.h"
+#include "uuvplan/io/virtual_campaign.h"
 #include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/io/io.h"
-#include "uuvplan/io/virtual_campaign.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/util/seed.h"
 #include "uuvplan/model/virtual_pool.h"
@@ -19,8 +19,8 @@
 namespace uuvplan::model {
 namespace {
 
-using io::ReadVehicle;
 using io::ReadCampaign;
+using io::ReadVehicle;
 using io::SimulateCampaign;
 using io::WriteVehicleYaml;
 
@@ -37,14 +37,14 @@ Truth RomeoSurgeTruth() {
   v.thrusters = {t};
   v.mappings = {{"surge-front", Dof::kSurge, {{0, 0.5}}, OpenWater::kPositive},
                 {"yaw-a", Dof::kYaw, {{0, 0.5}}, OpenWater::kBoth}};
-  v.sensors[Dof::kSurge].position = SensorSpec{3.33, 0.02};  // seed 000: 3.33 Hz sonar
+  v.sensors[Dof::kSurge].position = SensorSpec{3.33, 0.02};  // ref 000: 3.33 Hz sonar
   v.sensors[Dof::kYaw].position = SensorSpec{10.0, 0.005};   // 10 Hz compass
   truth.dofs[Dof::kSurge].params = {{"m", 890}, {"k", 46.9}, {"kq", 306.2}, {"bias", 0.0}};
   truth.dofs[Dof::kYaw].params = {{"m", 84}, {"k", 28.6}, {"kq", 0.0}, {"bias", 0.0}};
   return truth;
 }
 
-TrialDesign PaperSurgeSine() {  // seed 000 §IV-D: 35 N offset, 25 N amplitude, 26 s period
+TrialDesign PaperSurgeSine() {  // ref 000 §IV-D: 35 N offset, 25 N amplitude, 26 s period
   TrialDesign d;
   d.id = "surge_sine";
   d.dof = Dof::kSurge;
@@ -123,7 +123,7 @@ TEST(VirtualPoolTest, DropoutsAndOutliersAtTheirRates) {
   Truth truth = RomeoSurgeTruth();
   truth.defects.dropout_probability = 0.1;
   truth.defects.outlier_probability = 0.05;
-  truth.defects.outlier_size = 1.0;  // m: sonar multipath (seed 000 Fig. 14)
+  truth.defects.outlier_size = 1.0;  // m: sonar multipath (ref 000 Fig. 14)
   TrialDesign d = PaperSurgeSine();
   d.duration = 600;
   VirtualPoolOptions o;
@@ -287,8 +287,8 @@ TEST(PoolTest, WallToWallAndFreeTravel) {
   EXPECT_DOUBLE_EQ(pool.FreeTravel(Dof::kYaw), 2 * M_PI * Pool::kDefaultMaxTurns);
   pool.max_turns = 1.5;
   EXPECT_DOUBLE_EQ(pool.FreeTravel(Dof::kRoll), 3 * M_PI);
-  EXPECT_DOUBLE_EQ(pool.ExtentFor(Dof::kYaw, 3 * M_PI), 1.5);       // turns
-  EXPECT_DOUBLE_EQ(pool.ExtentFor(Dof::kHeave, 2.0), 4.0);          // m wall to wall
+  EXPECT_DOUBLE_EQ(pool.ExtentFor(Dof::kYaw, 3 * M_PI), 1.5);  // turns
+  EXPECT_DOUBLE_EQ(pool.ExtentFor(Dof::kHeave, 2.0), 4.0);     // m wall to wall
   EXPECT_EQ(Pool::SideName(Dof::kHeave), "depth");
 }
 

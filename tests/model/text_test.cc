@@ -1,10 +1,10 @@
-// Numbers for people (model/util/text.h, issue #18 item 5): significant digits without a
+// Numbers for people (model/util/text.h): significant digits without a
 // positive exponent, durations as s or min:s, angles in degrees with turns.
+#include "uuvplan/model/util/text.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::model {
 namespace {

@@ -1,6 +1,6 @@
 // Fisher information of a trial: against the closed form of a linear first-order step response,
 // its convergence with the RK4 step, its continuity in the duration, the Goodwin & Payne
-// D-optimal frequency (seed 000 eq. 14) as an oracle, and the predicted σ against the spread
+// D-optimal frequency (ref 000 eq. 14) as an oracle, and the predicted σ against the spread
 // of output-error estimates on simulated noisy trials (Monte Carlo).
 //
 // Monte Carlo size: UUVPLAN_PLANNER_MC_RUNS (default 200; the full-size check is 2000, see
@@ -20,7 +20,7 @@
 #include "uuvplan/model/model_structure.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/planner/design/criteria.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/design/seed_rules.h"
 #include "uuvplan/planner/design/solver.h"
 
@@ -58,8 +58,8 @@ TEST(FisherInformation, MatchesTheClosedFormOfALinearStepResponse) {
                             e);
     J += s * s.transpose() / (sigma * sigma);
   }
-  const Eigen::Matrix2d M = J.topLeftCorner<2, 2>() -
-                            J.topRightCorner<2, 1>() * J.bottomLeftCorner<1, 2>() / J(2, 2);
+  const Eigen::Matrix2d M =
+      J.topLeftCorner<2, 2>() - J.topRightCorner<2, 1>() * J.bottomLeftCorner<1, 2>() / J(2, 2);
   // RK4 at 0.01 s on a 5 s time constant: relative error far below 1e-8; ∂ξ/∂ξ0 by a forward
   // difference, exact for a linear model up to rounding (~1e-10).
   ASSERT_EQ(r.M_joint.rows(), 3);
@@ -67,8 +67,8 @@ TEST(FisherInformation, MatchesTheClosedFormOfALinearStepResponse) {
   EXPECT_LT((r.M - M).norm() / M.norm(), 1e-8);
   // start_known gives θ's block of the joint information (the same sums: to rounding), and
   // profiling ξ0 out costs information: that block minus M is positive semidefinite and not 0.
-  const TrialResponse known = SimulateTrial(dm, theta, *input, v.sensors.at(model::Dof::kSurge),
-                                            T, 0.01, true, /*start_known=*/true);
+  const TrialResponse known = SimulateTrial(dm, theta, *input, v.sensors.at(model::Dof::kSurge), T,
+                                            0.01, true, /*start_known=*/true);
   EXPECT_EQ(known.M_joint.size(), 0);
   EXPECT_LT((known.M - r.M_joint.topLeftCorner<2, 2>()).norm() / known.M.norm(), 1e-12);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> lost(known.M - r.M);
@@ -83,8 +83,9 @@ TEST(FisherInformation, ConvergesWithTheChosenStep) {
   // (measured); 1e-4 leaves room and still catches a wrong step rule (h = t_c gives ~1e-3).
   const model::Vehicle v = testing::Romeo();
   std::vector<std::string> notes;
-  const auto ctx = DofContext::APriori(v, testing::RomeoPool(), model::Dof::kSurge, {}, &notes);
-  const model::TrialDesign d = testing::PaperSurgeSine();  // seed 000 §IV-D
+  const auto ctx =
+      DofPlanningProblem::APriori(v, testing::RomeoPool(), model::Dof::kSurge, {}, &notes);
+  const model::TrialDesign d = testing::PaperSurgeSine();  // ref 000 §IV-D
   const auto& tm = ctx->ModelFor(d);
   const auto input = model::MakeExcitation(v, d);
   for (const auto& theta : tm.design_thetas) {
@@ -125,7 +126,7 @@ TEST(FisherInformation, IsContinuousInTheDuration) {
 }
 
 TEST(FisherInformation, GoodwinPayneOptimalFrequencyIsAOverRoot3) {
-  // Seed 000 eq. 14 (Goodwin & Payne): for dξ/dt = -a·ξ + b·u, ξ measured with white noise,
+  // Ref 000 eq. 14 (Goodwin & Payne): for dξ/dt = -a·ξ + b·u, ξ measured with white noise,
   // a single sine of fixed amplitude, det M ∝ ω²/(a² + ω²)⁴ per unit time, maximal at
   // ω = a/√3. Here a = k/m = 0.2 s⁻¹ and θ = (m, k) (a fixed reparametrisation of (a, b)
   // changes det M by a constant factor only). 100 whole periods per trial make the start from
@@ -169,8 +170,8 @@ TEST(FisherInformation, PredictedSigmaMatchesMonteCarloOutputError) {
   // Each replicate adds seeded Gaussian noise and fits θ = [m, k, kq, bias] with the trial's
   // initial position χ0 and velocity ξ0 by Gauss-Newton output error from the truth (the
   // maximum-likelihood estimate for this noise, with the initial state unknown as in
-  // ident/src/estimators/output_error.cc). Its spread must match the Cramér-Rao σ = sqrt((M⁻¹)_ii) the
-  // planner predicts (χ0 and ξ0 profiled out): with n replicates the sample σ has a relative
+  // ident/src/estimators/output_error.cc). Its spread must match the Cramér-Rao σ = sqrt((M⁻¹)_ii)
+  // the planner predicts (χ0 and ξ0 profiled out): with n replicates the sample σ has a relative
   // standard error 1/sqrt(2(n-1)); the tolerance is 4 of those.
   const model::Vehicle v = testing::Romeo();
   model::ModelStructure s = model::ModelStructure::Standard(v, model::Dof::kSurge, {}, false);
@@ -214,7 +215,8 @@ TEST(FisherInformation, PredictedSigmaMatchesMonteCarloOutputError) {
       const double h = 1e-6;  // m/s: ∂y/∂ξ0 by a forward difference
       Eigen::VectorXd x1 = x0;
       x1[1] += h;
-      const Eigen::VectorXd y1 = model::SimulateMeasured(dm, z.head(4), c, times, plain, &x1).x.col(0);
+      const Eigen::VectorXd y1 =
+          model::SimulateMeasured(dm, z.head(4), c, times, plain, &x1).x.col(0);
       Eigen::MatrixXd S(times.size(), 6);
       S.leftCols(4) = tr.S[0];
       S.col(4).setOnes();

@@ -1,13 +1,13 @@
-// The design–identify loop (planner/loop/design_loop.h) and seed 000's procedure as its yardstick
-// (planner/design/paper_procedure.h) on the virtual ROMEO of cases/romeo (issue #5):
+// The design–identify loop (planner/loop/design_loop.h) and ref 000's procedure as its yardstick
+// (planner/design/paper_procedure.h) on the virtual ROMEO of cases/romeo:
 //  - the loop reaches 5% percentile error on m, the drag of interest and every η of surge,
-//    heave and yaw in no more pool time than seed 000's procedure, whose own estimators (steady
+//    heave and yaw in no more pool time than ref 000's procedure, whose own estimators (steady
 //    state LS + integral method, §III) leave at least one parameter above 5%;
 //  - the loop's estimates agree with the truth within their σ, are deterministic for a seed,
 //    and its pool time is Σ durations + pauses;
-//  - `next` takes seed 000's order on an empty campaign and reports convergence; budget and
+//  - `next` takes ref 000's order on an empty campaign and reports convergence; budget and
 //    bad input are reported (CLI exit codes 4 and 2);
-//  - the stop rules (issue #13): a loop stuck in a small pool stops with its own status naming
+//  - the stop rules: a loop stuck in a small pool stops with its own status naming
 //    the pool, never running a design more than twice without new information; URIS surge
 //    (whose first trial's m is an a priori fallback) converges within 3σ or refuses; VSOR's
 //    overconfident intermediate estimates do not end the loop; the physical ranges and the χ²
@@ -27,10 +27,10 @@
 #include "planner_test_util.h"
 #include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/io/io.h"
-#include "uuvplan/planner/loop/design_loop.h"
-#include "uuvplan/planner/determinacy.h"
 #include "uuvplan/planner/design/paper_procedure.h"
 #include "uuvplan/planner/design/thrust_limits.h"
+#include "uuvplan/planner/determinacy.h"
+#include "uuvplan/planner/loop/design_loop.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -39,7 +39,7 @@ using model::Dof;
 using testing::RomeoPath;
 using testing::RomeoPool;
 
-// Issue #5's target: 5% percentile error on every parameter of interest.
+// The contract's target: 5% percentile error on every parameter of interest.
 constexpr double kTarget = 5.0;
 
 model::Truth RomeoTruth() { return io::ReadTruth(RomeoPath("truth.yaml")); }
@@ -65,7 +65,7 @@ const LoopResult& RomeoLoop() {
   return r;
 }
 
-// Seed 000's procedure with its own estimators (Identify without the output-error stage: the
+// Ref 000's procedure with its own estimators (Identify without the output-error stage: the
 // steady-state LS of eqs. 7-12/20 and the integral method of eqs. 16-19).
 const PaperProcedureResult& RomeoPaper() {
   static const PaperProcedureResult r = [] {
@@ -94,8 +94,8 @@ TEST(TrialsToTargetTest, InformationAddsAndNothingKnownIsItsLimit) {
   EXPECT_DOUBLE_EQ(TrialsToTarget(2.0, 1.0, 0.5), 5.0);  // (4/0.25 − 1)/(4 − 1)
   EXPECT_DOUBLE_EQ(TrialsToTarget(inf, 28.0, 0.016), std::pow(28.0 / 0.016, 2));
   EXPECT_DOUBLE_EQ(TrialsToTarget(inf, 0.01, 0.02), 0.25);  // one trial is more than enough
-  EXPECT_EQ(TrialsToTarget(0.5, 0.5, 0.1), inf);  // adds nothing
-  EXPECT_EQ(TrialsToTarget(0.05, 0.04, 0.1), 0.0);  // already there
+  EXPECT_EQ(TrialsToTarget(0.5, 0.5, 0.1), inf);            // adds nothing
+  EXPECT_EQ(TrialsToTarget(0.05, 0.04, 0.1), 0.0);          // already there
 }
 
 TEST(DesignLoopTest, RomeoReachesFivePercentInLessPoolTimeThanSeedProcedure) {
@@ -113,7 +113,7 @@ TEST(DesignLoopTest, RomeoReachesFivePercentInLessPoolTimeThanSeedProcedure) {
     }
   }
   // The seed's procedure with its own estimators leaves at least one parameter of interest
-  // above 5% (on seed 1: heave η pulling up near 20%, seed 000 Table II reports 4.1% from the
+  // above 5% (on seed 1: heave η pulling up near 20%, ref 000 Table II reports 4.1% from the
   // real heave data; the virtual one has only 2 m of depth and short legs).
   int above = 0;
   std::string worst;
@@ -192,7 +192,7 @@ TEST(DesignLoopTest, PoolTimeIsDurationsPlusPauses) {
 }
 
 TEST(DesignLoopTest, SeedOrderFirstThenSequentialDesign) {
-  // Each DOF starts with a trial of its a priori schedule (seed 000 §III: steady runs first);
+  // Each DOF starts with a trial of its a priori schedule (ref 000 §III: steady runs first);
   // at least one later trial is designed from the estimates.
   const LoopResult& loop = RomeoLoop();
   std::set<Dof> seen;
@@ -252,7 +252,7 @@ TEST(DesignLoopTest, NextOnAnEmptyCampaignStartsWithAnOpenWaterRun) {
   EXPECT_EQ(r.source, "a priori schedule");
   ASSERT_EQ(r.progress.size(), 1u);
   EXPECT_TRUE(std::isinf(r.progress[0].worst_percent));
-  // Seed 000 §II-A: η must be known for one mapping — the first run pushes forward in
+  // Ref 000 §II-A: η must be known for one mapping — the first run pushes forward in
   // surge-front or backward in surge-rear (Table I's open-water directions).
   const model::TrialDesign& d = r.trial.design;
   bool open_water = false;
@@ -340,10 +340,10 @@ model::Pool FiveMetrePool() {
   return small;
 }
 
-// Issue #13: ROMEO surge in a 5 × 5 × 5 m pool (3 m of free length) once re-planned the same
+// ROMEO surge in a 5 × 5 × 5 m pool (3 m of free length) once re-planned the same
 // 2.8 N leg 22 times. Now: a distinct status whose sentence names the binding limit (the pool,
 // checked by planning again in a pool with twice the free travel), and no design runs more
-// than twice without new information. The issue's case ran with seed 000's model selection in
+// than twice without new information. The issue's case ran with ref 000's model selection in
 // the identification (k dropped as insignificant, kq alone explaining the drag at the pool's
 // low speeds; `--seed-selection` since the default keeps a k correlated with kq), which the
 // loop no longer uses by default (LoopIdentifyOptions); it is kept here
@@ -355,7 +355,7 @@ TEST(StopRulesTest, SmallPoolStopsStuckNamingThePool) {
   o.step.identify.selection.prune_insignificant = true;
   // the seed's rule drops k although it is correlated
   o.step.identify.selection.drop_correlation = ident::kSeedDropCorrelation;
-  // The issue's families (single-mapping sines and legs): a mapping-switched trial (issue #17)
+  // The issue's families (single-mapping sines and legs): a mapping-switched trial
   // oscillates in place and determines surge in 3 m (the loop converges), so the pool limit this
   // test exercises exists only without them.
   o.step.schedule.sine.families.clear();
@@ -399,11 +399,11 @@ TEST(StopRulesTest, SmallPoolConvergesWithinThreeSigmaOnTheFullModel) {
   ASSERT_NE(p, nullptr);
   for (const auto& q : p->interest) {
     const double truth_value = truth.dofs.at(Dof::kSurge).params.at(q.name);
-    EXPECT_LE(std::abs(q.value - truth_value), 3.0 * q.sigma) << q.name;  // issue #13: 3σ
+    EXPECT_LE(std::abs(q.value - truth_value), 3.0 * q.sigma) << q.name;  // 3σ
   }
 }
 
-// Issue #13: URIS surge used to "converge" after one 0.8 N trial on m = 184 ± 8 kg (true 59 kg)
+// URIS surge used to "converge" after one 0.8 N trial on m = 184 ± 8 kg (true 59 kg)
 // with k held at its prior. A held parameter is no information: converge within 3σ of the
 // truth, or stop non-zero with a reason. ~0.4 s.
 TEST(StopRulesTest, UrisSurgeConvergesWithinThreeSigmaOrRefuses) {
@@ -425,13 +425,12 @@ TEST(StopRulesTest, UrisSurgeConvergesWithinThreeSigmaOrRefuses) {
   EXPECT_LE(std::abs(m->value - truth_m), 3 * m->sigma) << m->value << " ± " << m->sigma;
 }
 
-// Issue #13: VSOR's intermediate estimates are overconfident (yaw kq 2948 ± 39 for a true 683);
+// VSOR's intermediate estimates are overconfident (yaw kq 2948 ± 39 for a true 683);
 // the loop once converged on the trial after it. Convergence needs the newest trial consistent
 // with the estimate before it, and then every final estimate is within 3σ of the truth. ~2 s.
 TEST(StopRulesTest, VsorConvergesOnlyOnConsistentEstimates) {
   const model::Truth truth = io::ReadTruth(CasePath("vsor", "truth.yaml"));
-  const LoopResult r =
-      RunLoop(truth, io::ReadPool(CasePath("vsor", "pool.yaml")), LoopOptions{});
+  const LoopResult r = RunLoop(truth, io::ReadPool(CasePath("vsor", "pool.yaml")), LoopOptions{});
   ASSERT_TRUE(r.converged) << r.message;
   for (const auto& p : r.progress) {
     EXPECT_TRUE(p.consistency.tested && p.consistency.consistent) << model::DofName(p.dof);
@@ -466,9 +465,9 @@ ident::DofIdentification Identification(double m, double sm, double kq, double s
   id.parameter_names = {"m", "kq"};
   id.theta = Eigen::Vector2d(m, kq);
   id.covariance = Eigen::Vector2d(sm * sm, skq * skq).asDiagonal();
-  id.params = ident::MakeEstimates(id.parameter_names, id.theta, id.covariance,
-                                   {ident::ParameterState::kEstimated,
-                                    ident::ParameterState::kEstimated});
+  id.params =
+      ident::MakeEstimates(id.parameter_names, id.theta, id.covariance,
+                           {ident::ParameterState::kEstimated, ident::ParameterState::kEstimated});
   return id;
 }
 
@@ -481,7 +480,7 @@ TEST(StopRulesTest, ConsistencyTestAndRefusal) {
   const auto near = Identification(910, 8, 300, 8);
   const DofProgress ok = EvaluateProgress(v, Dof::kSurge, &near, 2, o, &before);
   EXPECT_TRUE(ok.consistency.tested && ok.consistency.consistent) << ok.consistency.text;
-  // kq 2948 ± 39 then 642 ± 24 (VSOR yaw, issue #13): 50 combined σ.
+  // kq 2948 ± 39 then 642 ± 24 (VSOR yaw): 50 combined σ.
   const auto a = Identification(900, 10, 2948, 39), b = Identification(900, 10, 642, 24);
   const DofProgress bad = EvaluateProgress(v, Dof::kSurge, &b, 2, o, &a);
   EXPECT_TRUE(bad.consistency.tested);

@@ -1,12 +1,13 @@
-// The loop on every vehicle (issue #13), CI subset of tests/validation/loop_validation.cc
+// The loop on every vehicle, CI subset of tests/validation/loop_validation.cc
 // (docs/validation.md "The loop on every vehicle"): URIS in its own pool and random vehicles 1,
 // 2 and 4 (tests/support/random_vehicle.h, two DOFs each). Seed 4's heave is determined but
 // short of the 5% target in its pool: part, and its stuck loop is outside the hostable part.
+#include "support/loop_validation.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "support/loop_validation.h"
 #include "support/random_vehicle.h"
 #include "uuvplan/io/pool_yaml.h"
 #include "uuvplan/io/truth_yaml.h"
@@ -18,7 +19,7 @@ std::string CaseFile(const std::string& c, const std::string& file) {
   return std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + c + "/" + file;
 }
 
-// The claims of issue #13 on one case: the verdict and the loop agree; a converged loop has
+// The loop's claims on one case: the verdict and the loop agree; a converged loop has
 // every final parameter of interest within 3σ of the truth (on this subset all are: the 95% of
 // the issue is over the full-size run); otherwise a non-zero status with its reason; no design
 // runs more than LoopOptions::max_repeats times without new information.
@@ -35,9 +36,8 @@ void CheckCase(const LoopCaseOutcome& c) {
 }
 
 TEST(LoopValidation, Uris) {
-  const LoopCaseOutcome c =
-      RunLoopCase("uris", io::ReadTruth(CaseFile("uris", "truth.yaml")),
-                  io::ReadPool(CaseFile("uris", "pool.yaml")), 1);
+  const LoopCaseOutcome c = RunLoopCase("uris", io::ReadTruth(CaseFile("uris", "truth.yaml")),
+                                        io::ReadPool(CaseFile("uris", "pool.yaml")), 1);
   CheckCase(c);
   EXPECT_TRUE(c.hosted);
   EXPECT_EQ(c.status, planner::LoopStatus::kConverged);  // docs/validation.md: 9 trials
@@ -50,7 +50,7 @@ TEST(LoopValidation, RandomVehicles) {
   }
 }
 
-// Vehicle 4's heave: determined over the whole box (seed 000's 51%) but not to the loop's 5%
+// Vehicle 4's heave: determined over the whole box (ref 000's 51%) but not to the loop's 5%
 // target everywhere (ReachTarget): the verdict says part, not all, and the loop, stuck on heave
 // kq, ends infeasible "outside the part of the a priori box the pool hosts" — before the
 // verdict judged at the target, "CAN host" and "stuck" contradicted each other here.

@@ -1,4 +1,4 @@
-// Vehicles for the planner's tests: ROMEO from cases/romeo (seed 000), and a minimal vehicle
+// Vehicles for the planner's tests: ROMEO from cases/romeo (ref 000), and a minimal vehicle
 // with one open-water mapping for analytic oracles.
 #pragma once
 
@@ -11,7 +11,7 @@
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
 #include "uuvplan/planner/design/criteria.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 
 namespace uuvplan::planner::testing {
 
@@ -60,7 +60,7 @@ inline model::Pool BigPool() {
   return p;
 }
 
-// Seed 000 §IV-D: 35 N offset, 25 N amplitude, 26 s period in surge-front; "a couple of
+// Ref 000 §IV-D: 35 N offset, 25 N amplitude, 26 s period in surge-front; "a couple of
 // sinusoidal periods in a maneuvering space of about 20 m": two periods, 52 s.
 inline model::TrialDesign PaperSurgeSine() {
   model::TrialDesign d;
@@ -76,7 +76,7 @@ inline model::TrialDesign PaperSurgeSine() {
 }
 
 /// Worst relative σ(m) over the design points of ctx's box for information M (per point).
-inline double WorstSigmaM(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& M) {
+inline double WorstSigmaM(const DofPlanningProblem& ctx, const std::vector<Eigen::MatrixXd>& M) {
   double worst = 0.0;
   for (std::size_t j = 0; j < M.size(); ++j) {
     const double rel = PredictedSigma(M[j], ctx.design_thetas()[j])[0] / ctx.design_thetas()[j][0];

@@ -1,8 +1,11 @@
-// The one pool verdict (planner/pool/pool_verdict.h), issue #13: on ROMEO (own pool and a 6 × 6 × 3 m
+// The one pool verdict (planner/pool/pool_verdict.h): on ROMEO (own pool and a 6 × 6 × 3 m
 // pool), VSOR, URIS and seeded random vehicles, the verdict of the planner's own schedule and of
 // that schedule given back as a plan agree; `required` covers every trial's extent and every
 // DOF's need; and every planned trial stays inside the pool and the tether's turns when
-// simulated INDEPENDENTLY (model::Simulate at the corners of the prior box, not DofContext).
+// simulated INDEPENDENTLY (model::Simulate at the corners of the prior box, not
+// DofPlanningProblem).
+#include "uuvplan/planner/pool/pool_verdict.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,7 +22,7 @@
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/planner/pool/pool_verdict.h"
+#include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -76,7 +79,8 @@ void CheckVerdict(const model::Vehicle& v, const model::Pool& pool, const std::v
   no_recheck.need_checks = -1;  // the needs were confirmed above; `hosted` does not use them
   const PoolVerdict with_plan = JudgePool(v, pool, so, own, &own.schedule, no_recheck);
   // schedule and check-pool --plan of that schedule: one answer.
-  EXPECT_EQ(verdict.hosted, with_plan.hosted) << what << ": " << verdict.sentence;
+  EXPECT_EQ(verdict.hosted, with_plan.hosted)
+      << what << ": " << text::VerdictSentence(verdict, pool);
   EXPECT_EQ(verdict.hosted, own.status == PlanStatus::kOk) << what;
   ASSERT_EQ(verdict.dofs.size(), dofs.size()) << what;  // every DOF asked for is judged
   const RequiredPool& r = verdict.required;
@@ -93,7 +97,7 @@ void CheckVerdict(const model::Vehicle& v, const model::Pool& pool, const std::v
     EXPECT_EQ(d.hosted, d.determinacy.determined && d.reach.reached)
         << what << " " << model::DofName(d.dof);
     EXPECT_EQ(d.below_target, d.determinacy.determined && !d.reach.reached) << what;
-    EXPECT_EQ(d.hosted, d.limit == PoolLimit::kNone) << what << " " << d.reason;
+    EXPECT_EQ(d.hosted, d.limit == PoolLimit::kNone) << what << " " << d.message;
     const double need = std::isfinite(d.need) ? std::max(d.need, d.extent) : d.extent;
     // `required` ≥ every DOF's need and its trials' extent (1 µm: the sum of the margins).
     if (model::IsRotational(d.dof)) {
@@ -126,8 +130,7 @@ model::Pool CasePool(const std::string& c) {
 
 TEST(PoolVerdict, RomeoOwnPoolAgreesAcrossCommands) {
   const model::Vehicle v = testing::Romeo();
-  CheckVerdict(v, testing::RomeoPool(), {Dof::kSurge, Dof::kSway, Dof::kHeave, Dof::kYaw},
-               "romeo");
+  CheckVerdict(v, testing::RomeoPool(), {Dof::kSurge, Dof::kSway, Dof::kHeave, Dof::kYaw}, "romeo");
 }
 
 TEST(PoolVerdict, RomeoSixMetrePoolIsRefusedWithAConfirmedLargerNeed) {
@@ -139,7 +142,7 @@ TEST(PoolVerdict, RomeoSixMetrePoolIsRefusedWithAConfirmedLargerNeed) {
   const PoolVerdict verdict = JudgePool(v, six, so);
   ASSERT_FALSE(verdict.hosted);
   const DofVerdict& surge = verdict.dofs.at(0);
-  EXPECT_EQ(surge.limit, PoolLimit::kLength) << surge.reason;
+  EXPECT_EQ(surge.limit, PoolLimit::kLength) << surge.message;
   EXPECT_TRUE(surge.need_verified);
   // The required pool is not the tiny pool itself (the issue's bug): longer than 6 m.
   EXPECT_GT(verdict.required.length, six.length + 1.0);
@@ -166,7 +169,7 @@ TEST(PoolVerdict, APlanForALargerPoolNeedsItsTravelAndThePlannersNeedIsUnchanged
   EXPECT_EQ(with_plan.dofs.at(0).need_verified, alone.dofs.at(0).need_verified);
   EXPECT_GT(with_plan.required.length, 20.0);  // the plan's surge runs span ~19.8 m
   EXPECT_LT(alone.required.length, with_plan.required.length);
-  const std::string lines = model::Join(VerdictLines(with_plan, tiny), "\n");
+  const std::string lines = model::Join(text::VerdictLines(with_plan, tiny), "\n");
   EXPECT_NE(lines.find("a pool that hosts the plan as given: length " +
                        model::Significant(with_plan.required.length, 4)),
             std::string::npos)
@@ -190,12 +193,12 @@ TEST(PoolVerdict, APlanTooLongForAPoolThatHostsThePlannerIsThePlansFailureOnly) 
   so.dofs = {Dof::kSurge};
   const ScheduleResult made_for_40 = PlanSchedule(v, long_pool, so);
   const PoolVerdict verdict = JudgePool(v, romeo, so, &made_for_40.schedule);
-  ASSERT_FALSE(verdict.hosted) << verdict.sentence;
+  ASSERT_FALSE(verdict.hosted) << text::VerdictSentence(verdict, romeo);
   const DofVerdict& surge = verdict.dofs.at(0);
   EXPECT_FALSE(surge.need_verified);  // nothing planned for it: the planner is hosted here
   EXPECT_LE(surge.need, romeo.FreeTravel(Dof::kSurge));
   EXPECT_GT(verdict.required.length, romeo.length);
-  const std::string lines = model::Join(VerdictLines(verdict, romeo), "\n");
+  const std::string lines = model::Join(text::VerdictLines(verdict, romeo), "\n");
   EXPECT_NE(lines.find("the planner's own schedule is hosted here; the plan's trials need"),
             std::string::npos)
       << lines;
@@ -204,7 +207,7 @@ TEST(PoolVerdict, APlanTooLongForAPoolThatHostsThePlannerIsThePlansFailureOnly) 
       << lines;
 }
 
-// "To this precision" (issue #13): the verdict judges at the loop's target. ROMEO heave in its
+// "To this precision": the verdict judges at the loop's target. ROMEO heave in its
 // own pool (2 m of free depth), over the whole a priori box, reaches 15% (hosted) but not 5%:
 // at some point of the box the loop's next trial gives the parameters still above the target
 // (η, kq) less than the target needs per trial, so the loop would
@@ -220,41 +223,45 @@ TEST(PoolVerdict, JudgedAtTheLoopsTarget) {
   no_points.judge_points = false;
   so.precision.target_percent = 15.0;
   const PoolVerdict at15 = JudgePool(v, testing::RomeoPool(), so, nullptr, no_points);
-  EXPECT_EQ(at15.hostability, Hostability::kAll) << at15.sentence;
-  EXPECT_NE(at15.sentence.find(" to 15% "), std::string::npos) << at15.sentence;
+  const std::string sentence15 = text::VerdictSentence(at15, testing::RomeoPool());
+  EXPECT_EQ(at15.hostability, Hostability::kAll) << sentence15;
+  EXPECT_NE(sentence15.find(" to 15% "), std::string::npos) << sentence15;
   so.precision.target_percent = 5.0;
   const PoolVerdict at5 = JudgePool(v, testing::RomeoPool(), so, nullptr, no_points);
   ASSERT_EQ(at5.dofs.size(), 1u);
   const DofVerdict& heave = at5.dofs[0];
   EXPECT_FALSE(heave.hosted);
   EXPECT_TRUE(heave.below_target);
-  EXPECT_EQ(heave.limit, PoolLimit::kDepth) << heave.reason;
-  EXPECT_TRUE(heave.need_verified) << heave.reason;
+  const std::string reason = text::DofReason(at5, heave, testing::RomeoPool());
+  EXPECT_EQ(heave.limit, PoolLimit::kDepth) << reason;
+  EXPECT_TRUE(heave.need_verified) << reason;
   EXPECT_GT(heave.need, testing::RomeoPool().FreeTravel(Dof::kHeave));
   // The loop's rule: the trial it would run next needs more than max_trials_to_target such
   // trials, so its per-trial σ is above what the target needs.
   EXPECT_GT(heave.reach.trials, so.precision.max_trials_to_target);
   EXPECT_GT(heave.reach.per_trial_percent, heave.reach.needed_percent);
-  EXPECT_NE(heave.reason.find("not to the target 5%"), std::string::npos) << heave.reason;
-  EXPECT_NE(at5.sentence.find(" to 5% "), std::string::npos) << at5.sentence;
+  EXPECT_NE(reason.find("not to the target 5%"), std::string::npos) << reason;
+  const std::string sentence5 = text::VerdictSentence(at5, testing::RomeoPool());
+  EXPECT_NE(sentence5.find(" to 5% "), std::string::npos) << sentence5;
 }
 
 TEST(PoolVerdict, VsorAndUrisAgree) {
-  CheckVerdict(CaseVehicle("vsor"), CasePool("vsor"), {Dof::kSurge, Dof::kSway, Dof::kHeave,
-                                                       Dof::kYaw}, "vsor");
-  CheckVerdict(CaseVehicle("uris"), CasePool("uris"), {Dof::kSurge, Dof::kHeave, Dof::kPitch,
-                                                       Dof::kYaw}, "uris");
+  CheckVerdict(CaseVehicle("vsor"), CasePool("vsor"),
+               {Dof::kSurge, Dof::kSway, Dof::kHeave, Dof::kYaw}, "vsor");
+  CheckVerdict(CaseVehicle("uris"), CasePool("uris"),
+               {Dof::kSurge, Dof::kHeave, Dof::kPitch, Dof::kYaw}, "uris");
 }
 
-// Issue #13: the verdict of a pool that hosts a DOF for part of the a priori box says so, and a
+// The verdict of a pool that hosts a DOF for part of the a priori box says so, and a
 // point it calls hosted is hosted for that very vehicle (a degenerate box: every DOF kAll).
 void ExpectPart(const model::Vehicle& v, const model::Pool& pool, Dof dof,
                 const std::string& what) {
   ScheduleOptions so;
   so.dofs = {dof};
   const PoolVerdict verdict = JudgePool(v, pool, so);
-  EXPECT_EQ(verdict.hostability, Hostability::kPart) << what << ": " << verdict.sentence;
-  EXPECT_NE(verdict.sentence.find("for PART of the a priori box"), std::string::npos);
+  const std::string sentence = text::VerdictSentence(verdict, pool);
+  EXPECT_EQ(verdict.hostability, Hostability::kPart) << what << ": " << sentence;
+  EXPECT_NE(sentence.find("for PART of the a priori box"), std::string::npos);
   EXPECT_TRUE(LoopMayRun(verdict));
   ASSERT_EQ(verdict.dofs.size(), 1u);
   VerdictOptions plain;
@@ -264,7 +271,7 @@ void ExpectPart(const model::Vehicle& v, const model::Pool& pool, Dof dof,
   so.planner.start_known = verdict.dofs[0].points_start_known;
   for (const PointVerdict& p : verdict.dofs[0].points) {
     const PoolVerdict at = JudgePool(VehicleAt(v, dof, p.point), pool, so, nullptr, plain);
-    EXPECT_EQ(at.hosted, p.hosted) << what << " at " << p.point.label;
+    EXPECT_EQ(at.hosted, p.hosted) << what << " at " << text::BoxPointLabel(p.point, dof);
   }
 }
 
@@ -280,16 +287,16 @@ TEST(PoolVerdict, HeaveInASixMetrePoolIsPartOnlyOnTheStartKnownBound) {
   ASSERT_EQ(verdict.dofs.size(), 1u);
   const DofVerdict& heave = verdict.dofs[0];
   EXPECT_TRUE(heave.points_start_known);
-  const std::string lines = model::Join(VerdictLines(verdict, SixBySixByThree()), "\n");
+  const std::string lines = model::Join(text::VerdictLines(verdict, SixBySixByThree()), "\n");
   EXPECT_NE(lines.find("hosted at none with each trial's start estimated"), std::string::npos)
       << lines;
   VerdictOptions plain;
   plain.need_checks = -1;
   plain.judge_points = false;
   for (const PointVerdict& p : heave.points) {  // none hosted with the start estimated
-    const PoolVerdict at = JudgePool(VehicleAt(v, Dof::kHeave, p.point), SixBySixByThree(), so,
-                                     nullptr, plain);
-    EXPECT_FALSE(at.hosted) << p.point.label;
+    const PoolVerdict at =
+        JudgePool(VehicleAt(v, Dof::kHeave, p.point), SixBySixByThree(), so, nullptr, plain);
+    EXPECT_FALSE(at.hosted) << text::BoxPointLabel(p.point, Dof::kHeave);
   }
 }
 
@@ -328,7 +335,7 @@ TEST(PoolVerdict, TheProposedPoolIsTheSmallestFoundThatHosts) {
         JudgePool(v, model::Pool{"small", length, 8.0, 6.0, 0.6}, so, nullptr, search);
     ASSERT_FALSE(verdict.hosted) << length;
     const DofVerdict& surge = verdict.dofs.at(0);
-    ASSERT_TRUE(surge.need_verified && surge.need_searched) << surge.reason;
+    ASSERT_TRUE(surge.need_verified && surge.need_searched) << surge.message;
     EXPECT_TRUE(JudgePool(v, pool_of_free(surge.need), so, nullptr, no_points).hosted);
     EXPECT_FALSE(JudgePool(v, pool_of_free(surge.need_refuted), so, nullptr, no_points).hosted);
     EXPECT_LE(surge.need - surge.need_refuted, 0.05 * surge.need) << length;
@@ -344,16 +351,15 @@ TEST(PoolVerdict, NoPointOfTheBoxMeansNoneAndTheLoopRefuses) {
   // the 6 m pool the light, draggy corner is: part, and the loop converges there.)
   ScheduleOptions so;
   so.dofs = {Dof::kSurge};
-  const PoolVerdict verdict =
-      JudgePool(testing::Romeo(), model::Pool{"tiny", 3.0, 6.0, 3.0, 1.0}, so);
-  EXPECT_EQ(verdict.hostability, Hostability::kNone) << verdict.sentence;
+  const model::Pool tiny{"tiny", 3.0, 6.0, 3.0, 1.0};
+  const PoolVerdict verdict = JudgePool(testing::Romeo(), tiny, so);
+  EXPECT_EQ(verdict.hostability, Hostability::kNone) << text::VerdictSentence(verdict, tiny);
   EXPECT_FALSE(LoopMayRun(verdict));
 }
 
 TEST(PoolVerdict, AStuckLoopInAPartPoolIsOutsideTheHostablePart) {
   PoolVerdict verdict;
   verdict.hostability = Hostability::kPart;
-  verdict.sentence = "Pool p can host the identification of heave for PART of the a priori box";
   DofVerdict heave;
   heave.dof = Dof::kHeave;
   heave.hostability = Hostability::kPart;
@@ -368,10 +374,17 @@ TEST(PoolVerdict, AStuckLoopInAPartPoolIsOutsideTheHostablePart) {
   converged.status = LoopStatus::kConverged;
   ReadLoopEnd(verdict, &r);
   EXPECT_EQ(r.status, LoopStatus::kInfeasible);
-  EXPECT_NE(r.message.find("outside the part of the a priori box"), std::string::npos);
-  EXPECT_NE(r.message.find("heave kq is stuck"), std::string::npos);  // the stop's own reason
+  EXPECT_EQ(r.outside_part, std::vector<Dof>{Dof::kHeave});
+  const std::string message = text::LoopEndMessage(r, verdict, model::Pool{"p", 6, 6, 3, 1});
+  EXPECT_NE(message.find("outside the part of the a priori box"), std::string::npos) << message;
+  EXPECT_NE(message.find("(the verdict before any trial: Pool p can host the identification of "
+                         "heave"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("heave kq is stuck"), std::string::npos);  // the stop's own reason
   ReadLoopEnd(verdict, &converged);
   EXPECT_EQ(converged.status, LoopStatus::kConverged);
+  EXPECT_TRUE(converged.outside_part.empty());
   verdict.hostability = Hostability::kAll;  // a hosted pool's stuck loop stays stuck
   LoopResult stuck;
   stuck.status = LoopStatus::kStuck;
@@ -381,7 +394,7 @@ TEST(PoolVerdict, AStuckLoopInAPartPoolIsOutsideTheHostablePart) {
 }
 
 TEST(PoolVerdict, UrisRotationsPlanWithTheThrustScaledDrag) {
-  // Issue #13 item 6: without a drag prior URIS yaw fell back to k = 0.0041 (truth about 2) and
+  // Without a drag prior URIS yaw fell back to k = 0.0041 (truth about 2) and
   // could not be planned; the fallback from its 8 N·m of yaw thrust (1 rad/s terminal rate)
   // gives k = 0.727, kq = 7.27 and a plannable yaw and pitch.
   const model::Vehicle v = CaseVehicle("uris");

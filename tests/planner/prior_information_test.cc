@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "planner_test_util.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/schedule_planner.h"
 
 namespace uuvplan::planner {
@@ -42,8 +42,8 @@ TEST(PriorInformation, EmptyCovarianceIsNoInformation) {
     const PriorInformation p = PriorInformation::FromCovariance(names, Eigen::MatrixXd(0, 0));
     EXPECT_TRUE(p.names.empty());
     EXPECT_EQ(p.M.size(), 0);
-    const auto ctx = DofContext::APriori(testing::Romeo(), testing::RomeoPool(), model::Dof::kSurge,
-                                         PlannerOptions{}, nullptr);
+    const auto ctx = DofPlanningProblem::APriori(testing::Romeo(), testing::RomeoPool(),
+                                                 model::Dof::kSurge, PlannerOptions{}, nullptr);
     const Eigen::MatrixXd M = ctx->PriorMatrix(&p);
     EXPECT_EQ(M.rows(), ctx->model().num_parameters());
     EXPECT_EQ(M.norm(), 0.0);
@@ -59,8 +59,8 @@ TEST(PriorInformation, MismatchedSizesAreRefused) {
   PriorInformation bad;
   bad.names = {"m", "k"};
   bad.M = Eigen::MatrixXd::Identity(1, 1);
-  const auto ctx = DofContext::APriori(testing::Romeo(), testing::RomeoPool(), model::Dof::kSurge,
-                                       PlannerOptions{}, nullptr);
+  const auto ctx = DofPlanningProblem::APriori(testing::Romeo(), testing::RomeoPool(),
+                                               model::Dof::kSurge, PlannerOptions{}, nullptr);
   EXPECT_THROW(ctx->PriorMatrix(&bad), std::invalid_argument);
   ScheduleOptions o;
   o.dofs = {model::Dof::kSurge};

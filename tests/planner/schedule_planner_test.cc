@@ -54,8 +54,8 @@ TEST_F(RomeoSchedule, SurgeScheduleIsCompleteOrderedAndTimed) {
   const ScheduleResult& r = *surge_;
   ASSERT_EQ(r.status, PlanStatus::kOk) << r.message;
   ASSERT_GE(r.schedule.trials.size(), 2u);
-  // Steady runs first, the inertia trial last (seed 000 §III: drag, then inertia): the sine or
-  // a mapping-switched family (issue #17).
+  // Steady runs first, the inertia trial last (ref 000 §III: drag, then inertia): the sine or
+  // a mapping-switched family.
   const model::TrialDesign& inertia = r.schedule.trials.back().design;
   EXPECT_TRUE(inertia.kind == model::TrialKind::kSine ||
               inertia.family != model::InputFamily::kPlain)
@@ -117,8 +117,8 @@ TEST_F(RomeoSchedule, SurgeScheduleFitsItsPoolAndA6mPoolIsRefused) {
   for (const auto& t : no.trials) {
     if (t.check.feasible) continue;
     ASSERT_FALSE(t.check.reasons.empty());
-    said = said || t.check.reasons.front().find("exceeds the 3 m of free length (6 m wall to wall") !=
-                       std::string::npos;
+    said = said || t.check.reasons.front().find(
+                       "exceeds the 3 m of free length (6 m wall to wall") != std::string::npos;
   }
   EXPECT_TRUE(said);
   // What would work in 6 m: the planner's best schedule for it, and the information it loses.
@@ -133,7 +133,7 @@ TEST_F(RomeoSchedule, SurgeScheduleFitsItsPoolAndA6mPoolIsRefused) {
 
 TEST_F(RomeoSchedule, PriorInformationReducesThePredictedSigma) {
   // An earlier trial that measured m as well as the planned one does (σ = 1 kg: the switched
-  // design alone reaches ~1.2 kg, issue #17; a 1% prior, 8 kg, adds 2% information, below the
+  // design alone reaches ~1.2 kg; a 1% prior, 8 kg, adds 2% information, below the
   // optimiser's reproducibility) adds to every design.
   ScheduleOptions o = SurgeOnly();
   o.steady_runs = false;
@@ -204,7 +204,7 @@ TEST_F(RomeoSchedule, NextTrialWithoutEstimatesIsDesigned) {
 TEST_F(RomeoSchedule, WholeRomeoScheduleDeterminesHeaveWithTheLoopsFamilies) {
   // Heave: 2 m of free depth (cases/romeo/pool.yaml) hosts no settled steady run (the smallest
   // travels 5.1 m), but the loop's next-trial families — a run from rest and sines — fit and
-  // determine m, k and the η (issue #13 item 2: what the loop can determine the schedule must
+  // determine m, k and the η (what the loop can determine the schedule must
   // not call undeterminable). The steady failure stays in the notes. Heave's only shortfall
   // is the loop's 5% target over the whole box (PoolVerdict.JudgedAtTheLoopsTarget).
   ScheduleOptions o;
@@ -217,7 +217,8 @@ TEST_F(RomeoSchedule, WholeRomeoScheduleDeterminesHeaveWithTheLoopsFamilies) {
     if (d.dof != model::Dof::kHeave) continue;
     EXPECT_FALSE(d.reach.reached);
     bool completed = false;
-    for (const auto& t : d.trials) completed = completed || t.design.id.rfind("heave-more-", 0) == 0;
+    for (const auto& t : d.trials)
+      completed = completed || t.design.id.rfind("heave-more-", 0) == 0;
     EXPECT_TRUE(completed);
     EXPECT_THAT(d.notes, ::testing::Contains(::testing::HasSubstr("no steady run of heave fits")));
   }
@@ -230,8 +231,8 @@ TEST(UrisSchedule, RotationWithoutADragPriorPlansOnTheThrustScaledDrag) {
   const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/uris/";
   ScheduleOptions o;
   o.dofs = {model::Dof::kYaw};
-  const ScheduleResult r = PlanSchedule(io::ReadVehicle(dir + "vehicle.yaml"),
-                                        io::ReadPool(dir + "pool.yaml"), o);
+  const ScheduleResult r =
+      PlanSchedule(io::ReadVehicle(dir + "vehicle.yaml"), io::ReadPool(dir + "pool.yaml"), o);
   ASSERT_EQ(r.dofs.size(), 1u);
   EXPECT_TRUE(r.dofs[0].complete) << r.dofs[0].message;
   EXPECT_THAT(r.dofs[0].notes,

@@ -1,4 +1,4 @@
-// The numbers seed 000 (Caccia, Indiveri, Veruggio 2000) prints for ROMEO's a priori design
+// The numbers ref 000 (Caccia, Indiveri, Veruggio 2000) prints for ROMEO's a priori design
 // (§III-B eqs. 13-14, §IV-D), reproduced by the closed-form rules the planner starts from.
 // The seed writes "Hz" for ω_opt; eq. 14 gives rad/s, and only rad/s is consistent with its
 // remark that a 26 s period (0.24 rad/s) is "higher than the suboptimal" frequency.

@@ -1,4 +1,4 @@
-// Robust sine designs on ROMEO (cases/romeo, seed 000): the hard constraints at every mass of
+// Robust sine designs on ROMEO (cases/romeo, ref 000): the hard constraints at every mass of
 // the a priori box, the predicted σ of the mass against the paper's own design, and NLopt
 // against Ipopt on the same robust problems.
 #include "uuvplan/planner/design/sine_design.h"
@@ -13,9 +13,9 @@
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/planner/design/criteria.h"
 #include "uuvplan/planner/design/fisher_information.h"
-#include "uuvplan/planner/schedule_planner.h"
 #include "uuvplan/planner/design/steady_design.h"
 #include "uuvplan/planner/design/thrust_limits.h"
+#include "uuvplan/planner/schedule_planner.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -27,7 +27,7 @@ using testing::WorstSigmaM;
 // high values: the trial stays in the pool, and no working thruster reverses or drops below
 // min_thrust. The check is independent of the planner's own (a fine 0.02 s simulation).
 void ExpectFeasibleForEveryMass(const model::Vehicle& v, const model::Pool& pool,
-                                const DofContext& ctx, const model::TrialDesign& d) {
+                                const DofPlanningProblem& ctx, const model::TrialDesign& d) {
   const auto mb = v.InertiaBounds(model::Dof::kSurge);
   const auto& tm = ctx.ModelFor(d);
   const auto input = model::MakeExcitation(v, d);
@@ -56,12 +56,12 @@ void ExpectFeasibleForEveryMass(const model::Vehicle& v, const model::Pool& pool
 class RomeoSurgeSine : public ::testing::Test {
  protected:
   void SetUp() override {
-    ctx_ = DofContext::APriori(v_, pool_, model::Dof::kSurge, PlannerOptions{}, &notes_);
+    ctx_ = DofPlanningProblem::APriori(v_, pool_, model::Dof::kSurge, PlannerOptions{}, &notes_);
   }
   model::Vehicle v_ = testing::Romeo();
   model::Pool pool_ = testing::RomeoPool();
   std::vector<std::string> notes_;
-  std::unique_ptr<DofContext> ctx_;
+  std::unique_ptr<DofPlanningProblem> ctx_;
 };
 
 TEST_F(RomeoSurgeSine, PlannedDesignIsFeasibleAndBeatsThePaperAtTheSameDuration) {
@@ -112,9 +112,9 @@ TEST_F(RomeoSurgeSine, NloptAndIpoptAgreeOnTheRobustOptimum) {
   o.fixed_duration_s = 52.0;
   PlannerOptions po;
   po.sine_backend = SolverBackend::kNlopt;
-  const auto ctx_n = DofContext::APriori(v_, pool_, model::Dof::kSurge, po, nullptr);
+  const auto ctx_n = DofPlanningProblem::APriori(v_, pool_, model::Dof::kSurge, po, nullptr);
   po.sine_backend = SolverBackend::kIpopt;
-  const auto ctx_i = DofContext::APriori(v_, pool_, model::Dof::kSurge, po, nullptr);
+  const auto ctx_i = DofPlanningProblem::APriori(v_, pool_, model::Dof::kSurge, po, nullptr);
   const SineDesignResult n = DesignSine(*ctx_n, o, {}, "n");
   const SineDesignResult i = DesignSine(*ctx_i, o, {}, "i");
   ASSERT_EQ(n.status, DesignStatus::kOk) << n.message;
@@ -172,7 +172,8 @@ TEST_F(RomeoSurgeSine, EtaDirectionWithoutPriorIsSingular) {
 
 TEST(RomeoYawSine, RespectsMinThrustAndTheRateLimit) {
   const model::Vehicle v = testing::Romeo();
-  const auto ctx = DofContext::APriori(v, testing::RomeoPool(), model::Dof::kYaw, {}, nullptr);
+  const auto ctx =
+      DofPlanningProblem::APriori(v, testing::RomeoPool(), model::Dof::kYaw, {}, nullptr);
   const SineDesignResult r = DesignSine(*ctx, SineDesignOptions{}, {}, "yaw-sine");
   ASSERT_EQ(r.status, DesignStatus::kOk) << r.message;
   const auto& d = r.trial.design;
@@ -198,7 +199,7 @@ TEST(RomeoYawSine, RespectsMinThrustAndTheRateLimit) {
 TEST(VsorYawSine, NoRoomForASwingGivesALongSteadyRunAndSaysWhy) {
   // VSOR yaw (cases/vsor): min_thrust 2 N on two thrusters of share 0.64282 needs 3.11 N·m; with
   // the small a priori drag given here (k 5.40, kq 54.0, ±50%: the bluff-body estimate the
-  // planner used before issue #13) the 0.35 rad/s rate limit caps the torque at 4.25 N·m.
+  // single-sine planner) the 0.35 rad/s rate limit caps the torque at 4.25 N·m.
   // After the schedule's steady runs, a run from rest beats any swing in that range on Ds(m)
   // (σ(m) 0.087 against 0.110 for 4.0 ± 0.8 N·m): the sine's optimum has no amplitude. It must
   // be reported as the steady run it is, with the reason, not as a sine of amplitude 0.
@@ -206,7 +207,7 @@ TEST(VsorYawSine, NoRoomForASwingGivesALongSteadyRunAndSaysWhy) {
   model::Vehicle v = io::ReadVehicle(dir + "vehicle.yaml");
   v.priors[model::Dof::kYaw].drag = model::DragPrior{5.40225, 54.0225, 0.5};
   const model::Pool pool = io::ReadPool(dir + "pool.yaml");
-  const auto ctx = DofContext::APriori(v, pool, model::Dof::kYaw, {}, nullptr);
+  const auto ctx = DofPlanningProblem::APriori(v, pool, model::Dof::kYaw, {}, nullptr);
   const ForceRange range = ctx->ForceRangeFor(v.MappingIndex("yaw-ht1-ht7"), +1);
   EXPECT_NEAR(range.min_abs, 2.0 / 0.64282, 1e-3);
   EXPECT_LT(range.max_abs, 1.5 * range.min_abs);
@@ -224,7 +225,8 @@ TEST(VsorYawSine, NoRoomForASwingGivesALongSteadyRunAndSaysWhy) {
   ASSERT_NE(long_run, nullptr);
   EXPECT_EQ(long_run->kind, model::TrialKind::kSteady);
   EXPECT_NEAR(long_run->force, range.min_abs, 1e-6 * range.min_abs);
-  EXPECT_THAT(r.dofs[0].notes, ::testing::Contains(::testing::HasSubstr("the best sine has no amplitude")));
+  EXPECT_THAT(r.dofs[0].notes,
+              ::testing::Contains(::testing::HasSubstr("the best sine has no amplitude")));
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Steady-state runs and legs (seed 000 §III-A, Table I) on ROMEO: every leg settles and holds
+// Steady-state runs and legs (ref 000 §III-A, Table I) on ROMEO: every leg settles and holds
 // its speed for every point of the a priori box, no thruster reverses, legs fit the pool, and
 // the pool that cannot host a run says so with the size it would need.
 #include "uuvplan/planner/design/steady_design.h"
@@ -35,8 +35,8 @@ class RomeoSteady : public ::testing::Test {
  protected:
   // For each check point of the box (m, drag and eta axes): in every leg of `d`, the speed over
   // the leg's last min_hold_s seconds stays within settle_tolerance of the steady speed of
-  // seed 000 eq. 7 (k·ξ + kq·ξ|ξ| = η·φ + bias).
-  void ExpectEveryLegHolds(const DofContext& ctx, const model::TrialDesign& d,
+  // ref 000 eq. 7 (k·ξ + kq·ξ|ξ| = η·φ + bias).
+  void ExpectEveryLegHolds(const DofPlanningProblem& ctx, const model::TrialDesign& d,
                            const SteadyDesignOptions& o) {
     std::vector<model::SegmentDesign> segs = d.segments;
     if (d.kind == model::TrialKind::kSteady) segs = {{d.force, d.duration, d.mapping}};
@@ -73,7 +73,7 @@ class RomeoSteady : public ::testing::Test {
 };
 
 TEST_F(RomeoSteady, SurgeLegsSettleHoldFitAndNeverReverse) {
-  const auto ctx = DofContext::APriori(v_, pool_, model::Dof::kSurge, {}, nullptr);
+  const auto ctx = DofPlanningProblem::APriori(v_, pool_, model::Dof::kSurge, {}, nullptr);
   const SteadyDesignOptions o;
   const SteadyDesignResult r = DesignSteady(*ctx, o, {}, "surge-steady");
   ASSERT_EQ(r.status, DesignStatus::kOk) << r.message;
@@ -111,7 +111,7 @@ TEST_F(RomeoSteady, SurgeLegsSettleHoldFitAndNeverReverse) {
 }
 
 TEST_F(RomeoSteady, YawLegsChainWithoutAPoolLimit) {
-  const auto ctx = DofContext::APriori(v_, pool_, model::Dof::kYaw, {}, nullptr);
+  const auto ctx = DofPlanningProblem::APriori(v_, pool_, model::Dof::kYaw, {}, nullptr);
   const SteadyDesignOptions o;
   const SteadyDesignResult r = DesignSteady(*ctx, o, {}, "yaw-steady");
   ASSERT_EQ(r.status, DesignStatus::kOk) << r.message;
@@ -128,7 +128,7 @@ TEST_F(RomeoSteady, YawLegsChainWithoutAPoolLimit) {
 TEST_F(RomeoSteady, HeaveDoesNotFitTwoMetresAndSaysWhatWould) {
   // Free depth 5 - 2·1.5 = 2 m. The smallest no-reversal force (min_thrust 2 N / share 0.25 =
   // 8 N) still drives ROMEO about 5 m before its speed settles and is held 10 s.
-  const auto ctx = DofContext::APriori(v_, pool_, model::Dof::kHeave, {}, nullptr);
+  const auto ctx = DofPlanningProblem::APriori(v_, pool_, model::Dof::kHeave, {}, nullptr);
   const SteadyDesignResult r = DesignSteady(*ctx, SteadyDesignOptions{}, {}, "heave-steady");
   EXPECT_EQ(r.status, DesignStatus::kInfeasible);
   EXPECT_NE(r.message.find("vertical-all"), std::string::npos) << r.message;
@@ -137,7 +137,7 @@ TEST_F(RomeoSteady, HeaveDoesNotFitTwoMetresAndSaysWhatWould) {
   // In a pool deep enough for that travel, the steady runs of heave can be planned.
   model::Pool deep = pool_;
   deep.depth = r.required_travel + 2 * deep.margin + 0.1;
-  const auto ctx2 = DofContext::APriori(v_, deep, model::Dof::kHeave, {}, nullptr);
+  const auto ctx2 = DofPlanningProblem::APriori(v_, deep, model::Dof::kHeave, {}, nullptr);
   const SteadyDesignResult r2 = DesignSteady(*ctx2, SteadyDesignOptions{}, {}, "heave-steady");
   EXPECT_EQ(r2.status, DesignStatus::kOk) << r2.message;
 }

@@ -1,4 +1,4 @@
-// The RLS convergence figure (seed 004 Fig. 11; report/identification_figures.h): after
+// The RLS convergence figure (ref 004 Fig. 11; report/identification_figures.h): after
 // --method rls each DOF has one panel per RLS coefficient with the estimate after every
 // update and its ±1σ band, ending at the final estimate; other methods have no such figure.
 #include <gtest/gtest.h>

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "uuvplan/model/coupled_model.h"
-#include "uuvplan/model/coupled_virtual_trial.h"
 #include "uuvplan/model/util/seed.h"
+#include "uuvplan/model/virtual_pool.h"
 
 namespace uuvplan::testing {
 
@@ -37,24 +37,26 @@ model::TrialDesign Sine(model::Dof dof, const char* mapping, double amplitude, d
 }
 }  // namespace
 
-std::vector<model::CoupledTrialDesign> CombinedModeDesigns(double duration_s) {
+std::vector<model::CombinedTrialDesign> CombinedModeDesigns(double duration_s) {
   using model::Dof;
   const auto surge = Sine(Dof::kSurge, "horizontal-all-surge", 100.0, 0.41);
   const auto sway = Sine(Dof::kSway, "horizontal-all-sway", 100.0, 0.53);
   const auto yaw = Sine(Dof::kYaw, "horizontal-all-yaw", 60.0, 0.67);
-  return {{"surge-yaw", model::CombinedMode::kSurgeYaw, duration_s, {surge, yaw}},
-          {"sway-yaw", model::CombinedMode::kSwayYaw, duration_s, {sway, yaw}},
-          {"all", model::CombinedMode::kSurgeSwayYaw, duration_s, {surge, sway, yaw}}};
+  return {{"surge-yaw", {Dof::kSurge, Dof::kYaw}, duration_s, {surge, yaw}},
+          {"sway-yaw", {Dof::kSway, Dof::kYaw}, duration_s, {sway, yaw}},
+          {"all", {Dof::kSurge, Dof::kSway, Dof::kYaw}, duration_s, {surge, sway, yaw}}};
 }
 
-std::vector<model::TrialLog> RunCoupledCampaign(const model::Truth& truth,
-                                                const std::vector<model::CoupledTrialDesign>& designs,
-                                                std::uint64_t seed) {
+std::vector<model::TrialLog> RunCoupledCampaign(
+    const model::Truth& truth, const std::vector<model::CombinedTrialDesign>& designs,
+    std::uint64_t seed) {
+  const model::MultiDofModel coupled = model::CoupledModelOfTruth(truth);
+  const Eigen::VectorXd theta = model::CoupledThetaOfTruth(coupled, truth);
   std::vector<model::TrialLog> logs;
   for (std::size_t i = 0; i < designs.size(); ++i) {
     model::VirtualPoolOptions options;
     options.seed = model::StreamSeed(seed, i);
-    logs.push_back(model::RunCoupledVirtualTrial(truth, designs[i], options));
+    logs.push_back(model::RunCombinedTrial(truth, coupled, theta, designs[i], options));
   }
   return logs;
 }

@@ -15,7 +15,9 @@ using model::TrialKind;
 class Draw {
  public:
   explicit Draw(std::uint64_t seed) : rng_(seed) {}
-  double Uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+  double Uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng_);
+  }
   double LogUniform(double lo, double hi) { return std::exp(Uniform(std::log(lo), std::log(hi))); }
   int Int(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
   bool Coin(double p = 0.5) { return Uniform(0, 1) < p; }
@@ -74,7 +76,7 @@ HiddenEffectCase DrawHiddenEffectCase(std::optional<std::string> effect, std::ui
   t1.command_min = t2.command_min = -100;
   t1.command_max = t2.command_max = 100;
   v.thrusters = {t1, t2};
-  // Mapping A works in open water pushing positive, B pushing negative (seed 000 Table I:
+  // Mapping A works in open water pushing positive, B pushing negative (ref 000 Table I:
   // surge-front / surge-rear); A.neg and B.pos may suffer installation losses.
   v.mappings = {{"A", c.dof, {{0, 1.0}}, model::OpenWater::kPositive},
                 {"B", c.dof, {{1, 1.0}}, model::OpenWater::kNegative}};
@@ -95,11 +97,12 @@ HiddenEffectCase DrawHiddenEffectCase(std::optional<std::string> effect, std::ui
   const double pick = draw.Uniform(0, 1);
   model::DofSensors sensors;
   if (pick < 0.8) {
-    sensors.position = model::SensorSpec{draw.Uniform(3.0, 20.0),
-                                         rot ? draw.Uniform(0.002, 0.01) : draw.Uniform(0.005, 0.03)};
+    sensors.position = model::SensorSpec{
+        draw.Uniform(3.0, 20.0), rot ? draw.Uniform(0.002, 0.01) : draw.Uniform(0.005, 0.03)};
   }
   if (pick >= 0.6) {
-    sensors.velocity = model::SensorSpec{draw.Uniform(5.0, 20.0), draw.Uniform(0.005, 0.02) * speed};
+    sensors.velocity =
+        model::SensorSpec{draw.Uniform(5.0, 20.0), draw.Uniform(0.005, 0.02) * speed};
   }
   v.sensors[c.dof] = sensors;
 
@@ -116,7 +119,7 @@ HiddenEffectCase DrawHiddenEffectCase(std::optional<std::string> effect, std::ui
   }
 
   // The trial set: steps from rest in both directions of both mappings (with a small force
-  // for dead zones), and sines at the d-optimal frequency of seed 000 eq. 14.
+  // for dead zones), and sines at the d-optimal frequency of ref 000 eq. 14.
   const double T = 4.0 * tc;
   const double w = 1.0 / (std::sqrt(3.0) * tc);
   const double sine_t = 3 * 2 * M_PI / w;
@@ -224,8 +227,8 @@ ident::DiagnoseOptions DiagnoseOptionsFor(const HiddenEffectCase& c) {
 Verdict Judge(const HiddenEffectCase& c, const ident::DiagnosisResult& r) {
   Verdict v;
   for (const auto& f : r.findings) v.found += f.effect + " ";
-  v.correct = c.effect ? (r.findings.size() == 1 && r.findings[0].effect == *c.effect)
-                       : r.findings.empty();
+  v.correct =
+      c.effect ? (r.findings.size() == 1 && r.findings[0].effect == *c.effect) : r.findings.empty();
   if (v.correct && c.effect) {
     v.within_3_sigma = true;
     for (const auto& [name, truth] : c.effect_params) {

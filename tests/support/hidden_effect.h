@@ -1,4 +1,4 @@
-// Test support for diagnosis (issue #5): draws a random vehicle, sensors, noise, a trial set and
+// Test support for diagnosis: draws a random vehicle, sensors, noise, a trial set and
 // ONE hidden effect (or none) of random but identifiable magnitude, and runs it through the
 // virtual pool. The code under test sees only the campaign it produces (vehicle + logs); the
 // truth stays here.

@@ -11,6 +11,7 @@
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
+#include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::testing {
 namespace {
@@ -38,7 +39,7 @@ std::vector<EstimateCheck> InterestChecks(const model::Truth& truth,
       c.sigma = q.sigma;
       c.truth = TruthOf(truth, p.dof, q.name);
       c.z = (c.value - c.truth) / c.sigma;
-      c.within3 = std::abs(c.z) <= 3.0;  // issue #13's criterion
+      c.within3 = std::abs(c.z) <= 3.0;  // the loop's criterion
       out.push_back(c);
     }
   }
@@ -89,12 +90,12 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   const planner::PoolVerdict verdict = planner::JudgePool(truth.vehicle, pool, so);
   c.hosted = verdict.hosted;
   c.hostability = verdict.hostability;
-  c.verdict = verdict.sentence;
+  c.verdict = text::VerdictSentence(verdict, pool);
   for (const auto& d : verdict.dofs) {
-    c.reach += std::string(c.reach.empty() ? "" : "; ") + std::string(model::DofName(d.dof)) +
-               " " + d.reach.parameter + " n " + Significant(d.reach.trials, 3) + " ('" +
-               d.reach.trial + "' after " + Significant(d.reach.now_percent, 3) + "%: " +
-               Significant(d.reach.per_trial_percent, 3) + "% per trial, needs " +
+    c.reach += std::string(c.reach.empty() ? "" : "; ") + std::string(model::DofName(d.dof)) + " " +
+               d.reach.parameter + " n " + Significant(d.reach.trials, 3) + " ('" + d.reach.trial +
+               "' after " + Significant(d.reach.now_percent, 3) +
+               "%: " + Significant(d.reach.per_trial_percent, 3) + "% per trial, needs " +
                Significant(d.reach.needed_percent, 3) + "%)";
   }
   planner::VerdictOptions at_truth;
@@ -106,24 +107,31 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
   // interest and their trust.
   const bool verbose = std::getenv("UUVPLAN_VERBOSE") != nullptr;
   for (const auto& d : verdict.dofs) {
-    if (verbose) std::cout << "  verdict " << model::DofName(d.dof) << ": " << d.reason << "\n";
+    if (verbose) {
+      std::cout << "  verdict " << model::DofName(d.dof) << ": "
+                << text::DofReason(verdict, d, pool) << "\n";
+    }
   }
   planner::LoopResult r = planner::RunLoop(truth, pool, lo, [&](const auto& it) {
     if (verbose) std::cout << IterationText(truth, it) << std::endl;
   });
   planner::ReadLoopEnd(verdict, &r);  // as `uuvplan loop` reads it
   c.status = r.status;
-  c.message = r.message;
+  c.message = text::LoopEndMessage(r, verdict, pool);
   c.trials = static_cast<int>(r.iterations.size());
   c.pool_time_s = r.pool_time;
   switch (c.hostability) {
     // All, at the target: the loop neither ends infeasible nor stuck short of the target.
     case planner::Hostability::kAll:
-      c.agree = r.status != planner::LoopStatus::kInfeasible &&
-                r.status != planner::LoopStatus::kStuck;
+      c.agree =
+          r.status != planner::LoopStatus::kInfeasible && r.status != planner::LoopStatus::kStuck;
       break;
-    case planner::Hostability::kNone: c.agree = r.status != planner::LoopStatus::kConverged; break;
-    case planner::Hostability::kPart: c.agree = true; break;  // measured below
+    case planner::Hostability::kNone:
+      c.agree = r.status != planner::LoopStatus::kConverged;
+      break;
+    case planner::Hostability::kPart:
+      c.agree = true;
+      break;  // measured below
   }
   if (r.converged) c.interest = InterestChecks(truth, r.progress);
   c.most_repeats = planner::MostUninformativeRepeats(r.iterations);
@@ -166,7 +174,7 @@ void LoopTally::Add(const LoopCaseOutcome& c, int max_repeats) {
 }
 
 bool LoopTally::Pass() const {
-  // Issue #13: ≥ 95% of the parameters of converged vehicles within 3σ.
+  // ≥ 95% of the parameters of converged vehicles within 3σ.
   const bool coverage = interest == 0 || within3 >= 0.95 * interest;
   return failures.empty() && coverage;
 }
@@ -197,14 +205,13 @@ std::string TallyText(const LoopTally& t) {
   o << "cases " << t.cases << ", verdict all/part/none " << t.hosted << "/" << t.part << "/"
     << t.none << ", verdict and loop agree " << t.agree << "/" << t.cases
     << " (all: neither infeasible nor stuck " << t.hosted_agree << "/" << t.hosted
-    << "; part: converged "
-    << t.part_converged << ", infeasible outside the hostable part " << t.part_outside
-    << ", other " << t.part - t.part_converged - t.part_outside << "; none: not converged "
-    << t.refused_agree << "/" << t.none << "), converged " << t.converged
-    << "; verdict at the truth hosted: converged " << t.at_truth[1][1] << "/"
-    << t.at_truth[1][0] + t.at_truth[1][1] << ", not hosted: converged " << t.at_truth[0][1]
-    << "/" << t.at_truth[0][0] + t.at_truth[0][1] << "; parameters of interest within 3σ "
-    << t.within3 << "/" << t.interest;
+    << "; part: converged " << t.part_converged << ", infeasible outside the hostable part "
+    << t.part_outside << ", other " << t.part - t.part_converged - t.part_outside
+    << "; none: not converged " << t.refused_agree << "/" << t.none << "), converged "
+    << t.converged << "; verdict at the truth hosted: converged " << t.at_truth[1][1] << "/"
+    << t.at_truth[1][0] + t.at_truth[1][1] << ", not hosted: converged " << t.at_truth[0][1] << "/"
+    << t.at_truth[0][0] + t.at_truth[0][1] << "; parameters of interest within 3σ " << t.within3
+    << "/" << t.interest;
   if (t.interest > 0) o << " (" << Significant(100.0 * t.within3 / t.interest, 3) << "%)";
   o << "; most runs of one design without new information " << t.most_repeats;
   for (const auto& f : t.failures) o << "\n  FAIL " << f;

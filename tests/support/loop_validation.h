@@ -1,10 +1,10 @@
-// The loop's validation (issue #13, docs/validation.md "The loop on every vehicle"): one case
+// The loop's validation (docs/validation.md "The loop on every vehicle"): one case
 // (a truth and a pool) through the pool verdict and the loop, and the tallies over cases that
 // the full-size program (tests/validation/loop_validation.cc) prints and the CI subset
 // (tests/planner/loop_validation_test.cc) asserts:
 //   - feasibility: JudgePool's verdict at the loop's target against the loop's end (a hosted
-//     pool never ends infeasible nor stuck; a pool not hosted is refused by `loop` with exit 1 before any trial, and
-//     RunLoop itself, run anyway, must not converge there);
+//     pool never ends infeasible nor stuck; a pool not hosted is refused by `loop` with exit 1
+//     before any trial, and RunLoop itself, run anyway, must not converge there);
 //   - on converged cases, each final estimate of a parameter of interest within 3σ of the truth
 //     (|θ̂ − θ| ≤ 3σ; required ≥ 95% of them over all cases);
 //   - the stop reason of the others; the most runs of one design without new information
@@ -36,7 +36,7 @@ struct LoopCaseOutcome {
   std::vector<model::Dof> dofs;
   bool hosted = false;  ///< JudgePool's verdict on the loop's DOFs: hosted over the whole box
   planner::Hostability hostability = planner::Hostability::kNone;  ///< all / part / none
-  std::string verdict;  ///< its sentence
+  std::string verdict;                                             ///< its sentence
   /// Per DOF of the verdict: the loop's trials to the target predicted at the worst point of
   /// the box (TargetReach: bottleneck, n, per-trial and needed percentile errors).
   std::string reach;
@@ -47,8 +47,8 @@ struct LoopCaseOutcome {
   int trials = 0;
   double pool_time_s = 0.0;
   double wall_s = 0.0;
-  /// hosted ⇒ neither infeasible nor stuck; not hosted ⇒ not converged (the `loop` command exits 1 before
-  /// any trial there, RunLoop must not claim the contrary).
+  /// hosted ⇒ neither infeasible nor stuck; not hosted ⇒ not converged (the `loop` command exits 1
+  /// before any trial there, RunLoop must not claim the contrary).
   bool agree = false;
   std::vector<EstimateCheck> interest;  ///< final parameters of interest (estimated, not held)
   int most_repeats = 0;                 ///< planner::MostUninformativeRepeats
@@ -60,8 +60,8 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
 
 struct LoopTally {
   int cases = 0, hosted = 0, agree = 0, converged = 0;
-  int hosted_agree = 0;  ///< hosted pools whose loop ended neither infeasible nor stuck
-  int refused_agree = 0;  ///< pools hosted for no point of the box whose RunLoop did not converge
+  int hosted_agree = 0;    ///< hosted pools whose loop ended neither infeasible nor stuck
+  int refused_agree = 0;   ///< pools hosted for no point of the box whose RunLoop did not converge
   int part = 0, none = 0;  ///< pools hosted for part of the box, for none
   int part_converged = 0, part_outside = 0;  ///< part pools: converged, infeasible (outside)
   /// The verdict at the true vehicle (box_points.h) against the loop: [hosted at the truth?]

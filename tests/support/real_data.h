@@ -1,7 +1,7 @@
 // The real pool logs of ../shared/data (BlueROV yaw 2016, Tartan AUV 2022). They have no licence
 // that lets the project ship them, so a clone of the repository alone lacks them: a test that
 // reads them starts with UUVPLAN_SKIP_WITHOUT_REAL_DATA("<set>", ...) and is skipped there with
-// a one-line reason (issue #16), and runs unchanged where the data is present.
+// a one-line reason, and runs unchanged where the data is present.
 // Header-only: UUVPLAN_SHARED_DIR is a compile definition of the test programs.
 #pragma once
 

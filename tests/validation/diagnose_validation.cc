@@ -1,4 +1,4 @@
-// Full-size validation of `diagnose` (issue #5): for each effect (and none), draw N random
+// Full-size validation of `diagnose`: for each effect (and none), draw N random
 // cases with the effect hidden, run them through the virtual pool and diagnose them. Prints the
 // rate of correct diagnoses (exactly the hidden effect named; nothing on clean data) and how
 // often the hidden parameter lies within 3σ of its true value.
@@ -47,30 +47,33 @@ int main(int argc, char** argv) {
       if (!ok && std::getenv("UUVPLAN_VERBOSE")) {
         for (const auto& t : r.tests) {
           std::printf("    round %d %-20s %-4s D=%9.2f dp=%d p=%.2e z=%6.2f %s gain %.4f%s\n",
-                      t.round, t.effect.c_str(), t.detail.c_str(),
-                      t.statistic, t.added_parameters, t.p_value, t.max_z,
-                      t.significant ? "SIGNIFICANT" : "", t.gain, t.accepted ? " ACCEPTED" : "");
+                      t.round, t.effect.c_str(), t.detail.c_str(), t.statistic, t.added_parameters,
+                      t.p_value, t.max_z, t.significant ? "SIGNIFICANT" : "", t.gain,
+                      t.accepted ? " ACCEPTED" : "");
         }
         for (const auto& d : r.nominal.dofs) {
-          for (const auto& p : d.params) std::printf("    nominal %s = %g ± %g\n", p.name.c_str(), p.value, p.sigma);
+          for (const auto& p : d.params)
+            std::printf("    nominal %s = %g ± %g\n", p.name.c_str(), p.value, p.sigma);
         }
-        for (const auto& [pn, pv] : c.truth.dofs.at(c.dof).params) std::printf("    truth %s = %g\n", pn.c_str(), pv);
+        for (const auto& [pn, pv] : c.truth.dofs.at(c.dof).params)
+          std::printf("    truth %s = %g\n", pn.c_str(), pv);
       }
       if (std::getenv("UUVPLAN_GAINS")) {
         for (const auto& f : r.findings) {
           std::printf("  gain %s seed %llu %s %s %.4f D=%.1f\n", name.c_str(),
-                      static_cast<unsigned long long>(seed), ok ? "ok" : "BAD",
-                      f.effect.c_str(), f.gain.relative,
-                      f.statistic);
+                      static_cast<unsigned long long>(seed), ok ? "ok" : "BAD", f.effect.c_str(),
+                      f.gain.relative, f.statistic);
         }
       }
       if (ok && effect && !v.within_3_sigma) {
         std::printf("  %s seed %llu (%s): parameter beyond 3σ\n", name.c_str(),
-                    static_cast<unsigned long long>(seed), std::string(model::DofName(c.dof)).c_str());
+                    static_cast<unsigned long long>(seed),
+                    std::string(model::DofName(c.dof)).c_str());
       }
-      if (!ok) std::printf("  %s seed %llu (%s): found [%s]\n", name.c_str(),
-                           static_cast<unsigned long long>(seed),
-                           std::string(model::DofName(c.dof)).c_str(), got.c_str());
+      if (!ok)
+        std::printf("  %s seed %llu (%s): found [%s]\n", name.c_str(),
+                    static_cast<unsigned long long>(seed),
+                    std::string(model::DofName(c.dof)).c_str(), got.c_str());
     }
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("diagnose %-20s correct %3d/%d (%.1f%%)  param within 3σ %d/%d  %.1f s\n",

@@ -1,4 +1,4 @@
-// Full-size validation of the identification's uncertainties (issue #3, docs/validation.md):
+// Full-size validation of the identification's uncertainties (docs/validation.md):
 //
 //  1. Coverage: for cases/romeo (surge forward/backward with three mappings and the §IV-D sine;
 //     heave with five ballast steps and η = 0.56; yaw with three mappings and the sine),
@@ -10,10 +10,10 @@
 //     (offset 35 N, amplitude 25 N, period 26 s, 260 s) must lie within 25% of the bound at the
 //     truth.
 //
-//  3. A mild unmodelled effect (issue #14 item 1): with a fifth argument "lag=T" every DOF of
+//  3. A mild unmodelled effect: with a fifth argument "lag=T" every DOF of
 //     the truth gets a first-order thrust lag of time constant T s (model/effects.h
 //     thruster_lag), which the fitted standard model does not contain. T = 0.05 s is mild:
-//     the force error T·dφ/dt is 0.05·ω·A, under 1% of the force on the seeds' sines
+//     the force error T·dφ/dt is 0.05·ω·A, under 1% of the force on the papers' sines
 //     (ROMEO surge: 0.05·0.24·25 N = 0.3 N on 35 ± 25 N) and a 0.05 s rounding of each
 //     command step. The coverage of the standard parameters must stay in the band.
 //     "asym=A" instead makes the quadratic drag asymmetric, kq_neg = (1 + A)·kq (asymmetric_drag),
@@ -35,6 +35,7 @@
 #include "ident/ident_cases.h"
 #include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/text/monte_carlo_table.h"
 
 using namespace uuvplan;
 using model::Dof;
@@ -95,12 +96,13 @@ int main(int argc, char** argv) {
       if (asym != 0) {
         auto& params = truth.dofs[d.dof].params;
         params[model::param::kLinearDragNeg] = params[model::param::kLinearDrag];
-        params[model::param::kQuadraticDragNeg] = (1.0 + asym) * params[model::param::kQuadraticDrag];
+        params[model::param::kQuadraticDragNeg] =
+            (1.0 + asym) * params[model::param::kQuadraticDrag];
       }
     }
     const ident::MonteCarloReport r = ident::RunMonteCarlo(truth, c.designs, o);
     std::printf("== %s: %d repetitions, %d failures, %.0f s\n%s", c.name.c_str(), r.repetitions,
-                r.failures, Seconds(t0), r.Table().c_str());
+                r.failures, Seconds(t0), text::MonteCarloTable(r).c_str());
     if (r.failures > 0) exit_code = 1;
     for (const ident::CoverageCell& cell : r.cells) {
       if (cell.estimator == "final") continue;  // the output error (or LS fallback), counted once
@@ -140,7 +142,7 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     const ident::MonteCarloReport r = ident::RunMonteCarlo(truth, {sine}, o);
     std::printf("== crb (ROMEO surge sine, 260 s): %d repetitions, %d failures, %.0f s\n%s",
-                r.repetitions, r.failures, Seconds(t0), r.Table().c_str());
+                r.repetitions, r.failures, Seconds(t0), text::MonteCarloTable(r).c_str());
     if (r.failures > 0) exit_code = 1;
     for (const char* name : {"m", "k", "kq", "bias"}) {
       const ident::CoverageCell* cell = r.Find("output_error", Dof::kSurge, name);

@@ -1,18 +1,19 @@
-// Full-size validation of the loop (issue #13; docs/validation.md "The loop on every vehicle"):
-// ROMEO, VSOR, URIS and payload60 (issue #13's 60 kg payload) in their own pools and N seeded random vehicles
-// (tests/support/random_vehicle.h, truth MakeRandomTruth) through the pool verdict and
+// Full-size validation of the loop (docs/validation.md "The loop on every vehicle"):
+// ROMEO, VSOR, URIS and payload60 (the 60 kg payload) in their own pools and N seeded random
+// vehicles (tests/support/random_vehicle.h, truth MakeRandomTruth) through the pool verdict and
 // planner::RunLoop; tallies of tests/support/loop_validation.h. Exit status 1 when a claim fails.
 //
 //   loop_validation [N=20] [first_seed=1] [max_dofs=2] [cases=1]
 //
 // Random vehicle i (first_seed ≤ i < first_seed + N) is MakeRandomCase(i, max_dofs) with
 // MakeRandomTruth(case, i), its loop seeded with i; the seed cases use loop seed 1 (the CLI's).
+#include "support/loop_validation.h"
+
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
 #include <string>
 
-#include "support/loop_validation.h"
 #include "support/random_vehicle.h"
 #include "uuvplan/io/pool_yaml.h"
 #include "uuvplan/io/truth_yaml.h"
@@ -48,12 +49,12 @@ int main(int argc, char** argv) {
   }
   for (std::uint64_t seed = first; seed < first + static_cast<std::uint64_t>(n); ++seed) {
     const t::RandomCase rc = t::MakeRandomCase(seed, max_dofs);
-    const t::LoopCaseOutcome c = t::RunLoopCase(
-        rc.vehicle.name + " (" + uuvplan::model::Significant(rc.vehicle.mass, 3) + " kg, pool " +
-            uuvplan::model::Significant(rc.pool.length, 3) + " × " +
-            uuvplan::model::Significant(rc.pool.width, 3) + " × " +
-            uuvplan::model::Significant(rc.pool.depth, 3) + " m)",
-        t::MakeRandomTruth(rc, seed), rc.pool, seed);
+    const t::LoopCaseOutcome c =
+        t::RunLoopCase(rc.vehicle.name + " (" + uuvplan::model::Significant(rc.vehicle.mass, 3) +
+                           " kg, pool " + uuvplan::model::Significant(rc.pool.length, 3) + " × " +
+                           uuvplan::model::Significant(rc.pool.width, 3) + " × " +
+                           uuvplan::model::Significant(rc.pool.depth, 3) + " m)",
+                       t::MakeRandomTruth(rc, seed), rc.pool, seed);
     report(c);
   }
   std::cout << "\n" << t::TallyText(tally) << std::endl;

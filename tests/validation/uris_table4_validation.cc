@@ -1,12 +1,12 @@
-// Seed 004 Table 4 by the RLS of §5.4 (issue #19, docs/validation.md "URIS Table 4 by RLS"):
+// Ref 004 Table 4 by the RLS of §5.4 (docs/validation.md "URIS Table 4 by RLS"):
 // the Monte Carlo spread of `identify --method rls` on the virtual URIS.
 //
-// Seed 004 §5.4 ran its RLS (eq. 15) "on the basis of simulated data, obtained from the model
+// Ref 004 §5.4 ran its RLS (eq. 15) "on the basis of simulated data, obtained from the model
 // identified off-line" (Table 4) with θ = [α1 γ1 δ1 α2 γ2 δ2 α3 γ3] (β = 0 and pitch δ = 0);
 // Fig. 11 shows the estimates converging to the true ones. Here: cases/uris (Table 4 as the
 // truth), the steps and PRBS of §5.2 per DOF (UrisDesigns), R seeds; per DOF the RLS
-// coefficients after the last row, ψ = [γ, k/m = α, bias/m = δ] as seed 004 eq. 2 writes them
-// (rls.h), with the recursion's σ. Printed per coefficient: Table 4, the mean over the seeds,
+// coefficients after the last row, ψ = [γ, k/m = α, bias/m = δ] as ref 004 eq. 2 writes them
+// (rls.h), with the recursion's σ. Printed per coefficient: Table 4, the mean over the papers,
 // σ_MC (their standard deviation), the mean reported σ, the mean's distance from Table 4 in
 // units of its standard error σ_MC/√R, and how many seeds fall within the paper's rounding
 // (half a unit of the 4th decimal) and within rounding + 3σ_MC. The test's tolerances
@@ -15,7 +15,7 @@
 // Run: build/tests/uris_table4_validation [R = 200] [camera σ scale = 1] [λ = 0.99]
 //                                          [knot spacing s: -1 one SG window, 0 every sample]
 // Exit status 1 when a mean lies more than 4 standard errors from Table 4 (a bias) or a
-// parameter other than β and pitch δ is dropped in more than 10% of the seeds.
+// parameter other than β and pitch δ is dropped in more than 10% of the papers.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -34,16 +34,16 @@ namespace {
 struct Row {
   const char* dof;
   const char* coefficient;  // the RLS coefficient name (rls.h): gamma, k/m, bias/m
-  const char* paper;        // seed 004's symbol
+  const char* paper;        // ref 004's symbol
   double table4;
 };
 
-// Seed 004 Table 4 (β = 0 everywhere, pitch δ = 0).
+// Ref 004 Table 4 (β = 0 everywhere, pitch δ = 0).
 const std::vector<Row> kTable4 = {
-    {"surge", "k/m", "alpha", 0.3302},  {"surge", "gamma", "gamma", 0.0169},
+    {"surge", "k/m", "alpha", 0.3302},     {"surge", "gamma", "gamma", 0.0169},
     {"surge", "bias/m", "delta", -0.0070}, {"pitch", "k/m", "alpha", 0.6514},
-    {"pitch", "gamma", "gamma", 0.8052},  {"yaw", "k/m", "alpha", 1.1006},
-    {"yaw", "gamma", "gamma", 0.5236},    {"yaw", "bias/m", "delta", -0.0435}};
+    {"pitch", "gamma", "gamma", 0.8052},   {"yaw", "k/m", "alpha", 1.1006},
+    {"yaw", "gamma", "gamma", 0.5236},     {"yaw", "bias/m", "delta", -0.0435}};
 
 constexpr double kHalfUnit = 5e-5;  // Table 4 prints four decimals
 
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   const double scale = argc > 2 ? std::atof(argv[2]) : 1.0;
   const double lambda = argc > 3 ? std::atof(argv[3]) : 0.99;
   // Knot spacing of the one-step rows (one_step_ls.h): < 0 one Savitzky–Golay window
-  // (uuvplan's default), 0 every sample (the seeds' rows).
+  // (uuvplan's default), 0 every sample (the papers' rows).
   const double window_s = argc > 4 ? std::atof(argv[4]) : ident::OneStepOptions{}.window_s;
   model::Truth truth = ident::testing::CaseTruth("uris");
   for (auto& [dof, sensors] : truth.vehicle.sensors) {
@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   for (int seed = 1; seed <= reps; ++seed) {
     ident::IdentifyOptions o;
     o.method = ident::Method::kRls;
-    // seed 004 drops β as the seeds do, as the test does
+    // ref 004 drops β as the papers do, as the test does
     o.selection.drop_correlation = ident::kSeedDropCorrelation;
     o.rls.lambda = lambda;
     o.one_step.window_s = window_s;
@@ -96,7 +96,10 @@ int main(int argc, char** argv) {
             &draws, &dropped);
   }
   std::printf("URIS Table 4 by RLS: %d seeds, camera sigma x %g, lambda %g, knots %s\n", reps,
-              scale, lambda, window_s < 0 ? "one SG window apart" : window_s == 0 ? "every sample" : "given");
+              scale, lambda,
+              window_s < 0    ? "one SG window apart"
+              : window_s == 0 ? "every sample"
+                              : "given");
   std::printf("%-6s %-6s %9s %10s %9s %9s %7s %9s %9s\n", "DOF", "coef", "Table 4", "mean",
               "sigma_MC", "mean sig", "bias z", "in round", "in r+3sMC");
   bool ok = true;

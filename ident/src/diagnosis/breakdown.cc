@@ -177,8 +177,8 @@ void AddDrift(const Trials& trials, const std::vector<std::vector<Sample>>& per_
     Accumulator a;
     for (const Sample& s : per_trial[k]) a.Add(s);
     if (a.meas > 0) {
-      points.push_back({(trials[k]->start_time + 0.5 * trials[k]->duration) / 3600.0,
-                        a.sim / a.meas - 1.0});
+      points.push_back(
+          {(trials[k]->start_time + 0.5 * trials[k]->duration) / 3600.0, a.sim / a.meas - 1.0});
     }
   }
   if (points.size() < 2) {

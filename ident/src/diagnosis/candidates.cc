@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 
-#include "../number_text.h"
 #include "diagnosis_internal.h"
 #include "uuvplan/ident/stats/chi_square.h"
 #include "uuvplan/model/util/median.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::diagnosis {
 
@@ -75,9 +75,9 @@ bool SpansCampaignClock(const Trials& trials, bool campaign_clock) {
   return campaign_clock && trials.size() >= 2 && t1 - t0 > 0;
 }
 
-model::ProposalContext Context(const model::Vehicle& vehicle, const StructureFit& base,
-                               const Trials& trials, bool campaign_clock) {
-  model::ProposalContext c;
+model::ProposalEvidence EvidenceOf(const model::Vehicle& vehicle, const StructureFit& base,
+                                   const Trials& trials, bool campaign_clock) {
+  model::ProposalEvidence c;
   c.dof = base.structure.dof;
   c.parameters = &base.structure.parameters;
   c.values = &base.values;
@@ -110,7 +110,7 @@ std::vector<Candidate> CandidatesFor(const std::string& name, const model::Vehic
   std::vector<Candidate> out;
   const model::EffectEntry* effect = model::Effects().Find(name);
   if (!effect || !effect->propose) return out;
-  for (model::Proposal& p : effect->propose(Context(vehicle, base, trials, campaign_clock))) {
+  for (model::Proposal& p : effect->propose(EvidenceOf(vehicle, base, trials, campaign_clock))) {
     Candidate c{effect, p, base.structure, {}};
     for (const auto& [parameter, start] : p.start) {
       c.structure.Add(parameter);
@@ -131,8 +131,8 @@ std::string NonPhysical(const StructureFit& base, const StructureFit& ext) {
     if (!family || family->Admissible(e.value)) continue;
     const auto b = base.values.find(e.name);
     if (b != base.values.end() && !family->Admissible(b->second)) continue;
-    return e.name + " = " + Fmt(e.value) + " " + model::Unit(e.name, ext.structure.dof) +
-           " (expected " + family->Expected() + ")";
+    return e.name + " = " + model::Significant(e.value, 4) + " " +
+           model::Unit(e.name, ext.structure.dof) + " (expected " + family->Expected() + ")";
   }
   return "";
 }
@@ -166,7 +166,7 @@ CandidateTest Test(const Candidate& c, const StructureFit& base, const Structure
     t.max_z = std::numeric_limits<double>::quiet_NaN();
     t.detail += (t.detail.empty() ? "" : "; ") +
                 std::string("the extension's fit ends worse than the model it extends (D = ") +
-                Fmt(d, 3) + " < 0: not at its optimum), no z";
+                model::Significant(d, 3) + " < 0: not at its optimum), no z";
     t.non_physical = NonPhysical(base, ext);
     return t;
   }
@@ -185,7 +185,7 @@ CandidateTest Test(const Candidate& c, const StructureFit& base, const Structure
   t.non_physical = NonPhysical(base, ext);
   for (const std::string& name : ext.held_at_bound) {
     t.detail += (t.detail.empty() ? "" : "; ") + name + " held at its bound " +
-                Fmt(ext.held.at(name));
+                model::Significant(ext.held.at(name), 4);
   }
   return t;
 }

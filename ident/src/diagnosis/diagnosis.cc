@@ -3,16 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <cstdio>
 #include <memory>
 #include <numeric>
 #include <set>
 
 #include "diagnosis/diagnosis_internal.h"
 #include "diagnosis/parallel.h"
-#include "number_text.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 
@@ -65,7 +64,6 @@ using diagnosis::Values;
 void Progress(const DiagnoseOptions& options, const std::string& line) {
   if (options.progress) options.progress(line);
 }
-
 
 std::vector<std::unique_ptr<TrialData>> PrepareAll(const model::Campaign& campaign,
                                                    const TrialDataOptions& data) {
@@ -147,15 +145,14 @@ std::vector<Significant> TestCandidates(const model::Vehicle& vehicle,
   diagnosis::ParallelFor(candidates.size(), options.threads, [&](std::size_t i) {
     Values s = d.current.values;
     for (const auto& [n, v0] : candidates[i].proposal.start) s[n] = v0;
-    fits[i] = diagnosis::FitPhysical(vehicle, candidates[i].structure, d.fit, s,
-                                     d.current.dropped, options.output_error, d.current.values,
-                                     d.current.held);
+    fits[i] = diagnosis::FitPhysical(vehicle, candidates[i].structure, d.fit, s, d.current.dropped,
+                                     options.output_error, d.current.values, d.current.held);
   });
   std::vector<Significant> significant;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     CandidateTest t = diagnosis::Test(candidates[i], d.current, fits[i], round);
-    t.significant = t.p_value < options.significance && t.max_z >= options.min_z &&
-                    t.non_physical.empty();
+    t.significant =
+        t.p_value < options.significance && t.max_z >= options.min_z && t.non_physical.empty();
     result->tests.push_back(t);
     if (t.significant) {
       significant.push_back({candidates[i], std::move(fits[i]), result->tests.size() - 1});
@@ -168,22 +165,25 @@ std::vector<Significant> TestCandidates(const model::Vehicle& vehicle,
 }
 
 // Stage "extend": the accepted candidate becomes the current structure, and a finding.
-void Accept(Significant* sig, const DiagnosisGain& g, std::set<std::string>* used,
-            DofDiagnosis* d, DiagnosisResult* result) {
+void Accept(Significant* sig, const DiagnosisGain& g, std::set<std::string>* used, DofDiagnosis* d,
+            DiagnosisResult* result) {
   CandidateTest& test = result->tests[sig->test];
   test.accepted = true;
-  Finding f{test.effect, d->dof, "", {}, test.statistic, test.added_parameters, test.p_value, g, {}, {}, ""};
-  std::vector<model::ParameterValue> values;
+  Finding f{test.effect,
+            d->dof,
+            sig->candidate.proposal.detail,
+            {},
+            test.statistic,
+            test.added_parameters,
+            test.p_value,
+            g,
+            {},
+            {},
+            ""};
   for (const std::string& name : sig->candidate.added) {
     const int k = FindEstimate(sig->fit.oe.estimates, name);
-    if (k < 0) continue;
-    f.params.push_back(sig->fit.oe.estimates[k]);
-    values.push_back({name, f.params.back().value, f.params.back().sigma});
+    if (k >= 0) f.params.push_back(sig->fit.oe.estimates[k]);
   }
-  const model::EffectEntry& effect = *sig->candidate.effect;
-  f.what = effect.describe
-               ? effect.describe({values, d->breakdown, sig->candidate.proposal.detail})
-               : test.effect;
   used->insert(test.effect);
   d->current = std::move(sig->fit);
   d->found.push_back(f);
@@ -226,18 +226,19 @@ std::vector<std::string> LabelRivals(const std::vector<Significant>& significant
     CandidateTest& t = result->tests[significant[i].test];
     double delta = 0.0, sigma = 0.0;
     diagnosis::PairedDifference(gains[i].after_by_unit, gains[best].after_by_unit, &delta, &sigma);
-    const std::string paired = "held-out MAE " + Fmt(delta, 2) + " ± " + Fmt(sigma, 2) + " " +
-                               unit + " against " + CandidateName(chosen) + "'s";
+    const std::string paired = "held-out MAE " + model::Significant(delta, 2) + " ± " +
+                               model::Significant(sigma, 2) + " " + unit + " against " +
+                               CandidateName(chosen) + "'s";
     if (std::abs(AicGain(chosen) - AicGain(t)) <= 2 && !(delta > 2 * sigma)) {
-      alike.push_back(CandidateName(t) + " (held-out gain " + Fmt(100 * t.gain, 3) + "%, D = " +
-                      Fmt(t.statistic, 4) + ")");
+      alike.push_back(CandidateName(t) + " (held-out gain " + model::Significant(100 * t.gain, 3) +
+                      "%, D = " + model::Significant(t.statistic, 4) + ")");
       t.not_chosen = "cannot be told from " + CandidateName(chosen) + " (D " +
-                     Fmt(t.statistic, 4) + " against " + Fmt(chosen.statistic, 4) + "; " + paired +
-                     ")";
+                     model::Significant(t.statistic, 4) + " against " +
+                     model::Significant(chosen.statistic, 4) + "; " + paired + ")";
     } else if (gains[i].relative >= min_gain) {
       t.not_chosen = CandidateName(chosen) + " fits the fit trials better (D " +
-                     Fmt(chosen.statistic, 4) + " against " + Fmt(t.statistic, 4) + "; " + paired +
-                     ")";
+                     model::Significant(chosen.statistic, 4) + " against " +
+                     model::Significant(t.statistic, 4) + "; " + paired + ")";
     }
   }
   return alike;
@@ -257,14 +258,16 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
                 int round, std::set<std::string>* used, DofDiagnosis* d, DiagnosisResult* result,
                 StageClock* clock) {
   const std::string dof(model::DofName(d->dof));
-  Progress(options, dof + ": round " + std::to_string(round + 1) + ", fitting the candidate effects");
+  Progress(options,
+           dof + ": round " + std::to_string(round + 1) + ", fitting the candidate effects");
   std::vector<Significant> significant =
       TestCandidates(vehicle, options, campaign_clock, round, *used, *d, result);
   clock->Lap("test");
   std::vector<int> order(significant.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return AicGain(result->tests[significant[a].test]) > AicGain(result->tests[significant[b].test]);
+    return AicGain(result->tests[significant[a].test]) >
+           AicGain(result->tests[significant[b].test]);
   });
   std::vector<DiagnosisGain> gains(significant.size());
   int best = -1;
@@ -273,8 +276,8 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
     if (best >= 0 && AicGain(result->tests[significant[best].test]) - AicGain(t) > 2) break;
     Progress(options, dof + ": held-out gain of " + t.effect);
     ReleaseHeld(vehicle, options, *d, &significant[i].fit);
-    gains[i] = diagnosis::HeldOutGain(vehicle, d->current, significant[i].fit, d->fit,
-                                      d->validate, options.output_error, options.threads);
+    gains[i] = diagnosis::HeldOutGain(vehicle, d->current, significant[i].fit, d->fit, d->validate,
+                                      options.output_error, options.threads);
     result->tests[significant[i].test].gain = gains[i].relative;
     result->tests[significant[i].test].unscored = gains[i].unscored;
     if (best < 0 && gains[i].scored && gains[i].relative >= options.min_gain) best = i;
@@ -287,8 +290,9 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
   if (!alike.empty()) {
     result->warnings.push_back(
         dof + ": these trials cannot tell " + CandidateName(chosen) + " (held-out gain " +
-        Fmt(100 * chosen.gain, 3) + "%, D = " + Fmt(chosen.statistic, 4) + ") from " +
-        model::Join(alike) + ": " + CandidateName(chosen) +
+        model::Significant(100 * chosen.gain, 3) +
+        "%, D = " + model::Significant(chosen.statistic, 4) + ") from " + model::Join(alike) +
+        ": " + CandidateName(chosen) +
         " is kept for its larger likelihood on the fit trials, but either may be the cause; "
         "trials where their predictions differ (other command levels or directions) are needed "
         "to separate them");
@@ -317,14 +321,16 @@ double ZFromNull(const Candidate& c, const StructureFit& f, const std::string& n
   if (j < n && f.oe.state[j] == ParameterState::kEstimated) {
     null_value = f.oe.theta[j];
     variance += f.oe.covariance(j, j) - 2 * f.oe.covariance(i, j);
-    against = names[j] + " = " + Fmt(null_value);
+    against = names[j] + " = " + model::Significant(null_value, 4);
   } else if (const auto null = c.proposal.null.find(name); null != c.proposal.null.end()) {
     null_value = null->second;
   }
   if (!(variance > 0)) return -1.0;
   const double z = std::abs(f.oe.theta[i] - null_value) / std::sqrt(variance);
-  *text = name + " = " + Fmt(f.oe.theta[i]) + " ± " + Fmt(std::sqrt(f.oe.covariance(i, i))) +
-          " " + model::Unit(name, f.structure.dof) + ", " + Fmt(z, 2) + "σ from " + against;
+  *text = name + " = " + model::Significant(f.oe.theta[i], 4) + " ± " +
+          model::Significant(std::sqrt(f.oe.covariance(i, i)), 4) + " " +
+          model::Unit(name, f.structure.dof) + ", " + model::Significant(z, 2) + "σ from " +
+          against;
   return z;
 }
 
@@ -336,8 +342,8 @@ double ZFromNull(const Candidate& c, const StructureFit& f, const std::string& n
 // (tartan heave's asymmetric drag: kq_neg 421 ± 156 against kq = 177, 0.7σ of the
 // difference). The weakest effect that fails is removed and the rest refitted, until every one
 // passes (backward elimination); a note says what was removed and why.
-void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& options,
-                    DofDiagnosis* d, DiagnosisResult* result) {
+void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& options, DofDiagnosis* d,
+                    DiagnosisResult* result) {
   while (!d->found.empty()) {
     int weakest = -1;
     double weakest_z = options.min_z;
@@ -373,14 +379,14 @@ void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& option
                                                 options.output_error, d->current.values);
     const std::string name = std::string(model::DofName(d->dof)) + ": " + c.effect->name;
     if (!refit.oe.ok()) {
-      result->notes.push_back(name + " kept although " + value + " (< " + Fmt(options.min_z, 2) +
-                              "σ) in the final model: the refit without it failed (" +
-                              refit.oe.message + ")");
+      result->notes.push_back(
+          name + " kept although " + value + " (< " + model::Significant(options.min_z, 2) +
+          "σ) in the final model: the refit without it failed (" + refit.oe.message + ")");
       return;
     }
     CandidateTest& t = result->tests[d->tests[weakest]];
     t.accepted = false;
-    t.removed = value + " in the final model (< " + Fmt(options.min_z, 2) + "σ)";
+    t.removed = value + " in the final model (< " + model::Significant(options.min_z, 2) + "σ)";
     result->notes.push_back(name + " accepted in round " + std::to_string(t.round + 1) +
                             ", then removed: " + t.removed +
                             "; the model refitted without it (the gains of the other findings "
@@ -393,18 +399,18 @@ void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& option
 }
 
 // Coupling terms read other DOFs' noisy logs: add that noise to the σ (input_noise.cc).
-void AddInputNoise(const model::Campaign& campaign, const DiagnoseOptions& options,
-                   DofDiagnosis* d, DiagnosisResult* result) {
+void AddInputNoise(const model::Campaign& campaign, const DiagnoseOptions& options, DofDiagnosis* d,
+                   DiagnosisResult* result) {
   if (d->current.structure.WithPrefix(model::param::kCouplingPrefix).empty()) return;
-  diagnosis::AddInputNoiseCovariance(campaign, d->fit, options.identify.data,
-                                     options.output_error, options.input_noise_replicates,
-                                     options.seed, options.threads, &d->current, &result->notes);
+  diagnosis::AddInputNoiseCovariance(campaign, d->fit, options.identify.data, options.output_error,
+                                     options.input_noise_replicates, options.seed, options.threads,
+                                     &d->current, &result->notes);
 }
 
-// Every finding's parameters as the final extended model estimates them, and its sentence
-// from those values. A finding accepted early was fitted without the effects found after it,
-// whose part of the error it absorbs (ROMEO surge: the backward η fitted before the
-// asymmetric drag take up the backward drag, 0.741 and 0.808 for the true 0.80 and 0.89).
+// Every finding's parameters as the final extended model estimates them. A finding accepted
+// early was fitted without the effects found after it, whose part of the error it absorbs
+// (ROMEO surge: the backward η fitted before the asymmetric drag take up the backward drag,
+// 0.741 and 0.808 for the true 0.80 and 0.89).
 void FinalParameters(const model::Campaign& campaign, const DiagnoseOptions& options,
                      DofDiagnosis* d) {
   const model::Vehicle& vehicle = campaign.vehicle;
@@ -412,7 +418,6 @@ void FinalParameters(const model::Campaign& campaign, const DiagnoseOptions& opt
     Finding& f = d->found[i];
     const Candidate& c = d->accepted[i];
     f.params.clear();
-    std::vector<model::ParameterValue> values;
     for (const std::string& name : c.added) {
       const int k = FindEstimate(d->current.oe.estimates, name);
       const auto held = d->current.held.find(name);
@@ -420,29 +425,14 @@ void FinalParameters(const model::Campaign& campaign, const DiagnoseOptions& opt
         f.params.push_back(d->current.oe.estimates[k]);
       } else if (held != d->current.held.end()) {  // at its admissible bound, not estimated
         f.params.push_back({name, held->second, 0.0, ParameterState::kFixed});
-      } else {
-        continue;
       }
-      values.push_back({name, f.params.back().value, f.params.back().sigma});
     }
-    if (c.effect->describe) f.what = c.effect->describe({values, d->breakdown, c.proposal.detail});
     if (f.effect == "thrust_map") {
       f.thrust_maps = diagnosis::CorrectedThrustMaps(vehicle, d->current, d->fit);
       diagnosis::ChooseStaticMap(campaign, options.identify.data, d->current, d->fit, d->validate,
                                  options.output_error, &f);
-      for (const CorrectedThrustMap& m : f.thrust_maps) {
-        f.what += "; " + m.mapping + ": the delivered thrust is " + m.shape + " (|command|^" +
-                  Fmt(m.command_exponent, 3) + " ± " + Fmt(m.command_exponent_sigma, 2) + ")";
-      }
     }
   }
-}
-
-void Verbose(const StructureFit& f) {
-  std::fprintf(stderr, "base fit: status %s it %d cost %g N %d P %d msg %s\n",
-               std::string(OutputErrorStatusName(f.oe.status)).c_str(), f.oe.iterations,
-               f.oe.cost, f.oe.num_residuals, f.free_parameters, f.oe.message.c_str());
-  for (const auto& n : f.oe.notes) std::fprintf(stderr, "  note %s\n", n.c_str());
 }
 
 // Caveats printed beside the findings of a DOF.
@@ -512,7 +502,6 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   const OutputErrorOptions& oe = options.output_error;
   // Within the admissible ranges too: the standard model with a negative drag is no model.
   d.current = diagnosis::FitPhysical(campaign.vehicle, nominal.structure, d.fit, start, {}, oe, {});
-  if (options.verbose) Verbose(d.current);
   const std::string name(model::DofName(d.dof));
   if (!d.current.oe.ok()) {
     result->not_diagnosed[d.dof] =
@@ -539,7 +528,8 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   FinalParameters(campaign, options, &d);
   for (const std::string& p : d.current.held_at_bound) {
     result->notes.push_back(name + ": the extended model holds " + p + " at its admissible bound " +
-                            Fmt(d.current.held.at(p)) + " " + model::Unit(p, d.dof) +
+                            model::Significant(d.current.held.at(p), 4) + " " +
+                            model::Unit(p, d.dof) +
                             " (the free fit puts it outside: model/parameter.h)");
   }
   clock->Lap("measure");
@@ -562,9 +552,8 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
   Progress(options, "identifying the standard model");
   result.nominal = IdentifyNominal(campaign, prepared, dofs, options.identify);
   clock.Lap("screen");
-  const bool campaign_clock =
-      std::all_of(campaign.trials.begin(), campaign.trials.end(),
-                  [](const model::TrialEntry& e) { return e.has_start; });
+  const bool campaign_clock = std::all_of(campaign.trials.begin(), campaign.trials.end(),
+                                          [](const model::TrialEntry& e) { return e.has_start; });
   for (Dof dof : dofs) {
     const DofIdentification* nominal = result.nominal.Find(dof);
     // A standard model that is only non-physical is diagnosed: the extension is the remedy.
@@ -578,8 +567,9 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
     Progress(options, std::string(model::DofName(dof)) + ": testing the effects");
     DiagnoseDof(campaign, options, prepared, *nominal, campaign_clock, &result, &clock);
   }
-  std::stable_sort(result.findings.begin(), result.findings.end(),
-                   [](const Finding& a, const Finding& b) { return a.gain.relative > b.gain.relative; });
+  std::stable_sort(
+      result.findings.begin(), result.findings.end(),
+      [](const Finding& a, const Finding& b) { return a.gain.relative > b.gain.relative; });
   clock.Lap("extend");
   result.timing = clock.times();
   return result;

@@ -2,8 +2,8 @@
 // timings of the driver, per DOF the effects found with their held-out gain.
 #include <algorithm>
 
-#include "../number_text.h"
 #include "uuvplan/ident/diagnosis/diagnosis.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -15,8 +15,8 @@ bool Diagnosed(const DiagnosisResult& r, model::Dof dof) {
 
 // "thrust_asymmetry (held-out gain 3.12% on validate)".
 std::string FindingText(const Finding& f) {
-  return f.effect + " (held-out gain " + Fmt(100.0 * f.gain.relative, 3) + "% on " + f.gain.on +
-         ")";
+  return f.effect + " (held-out gain " + model::Significant(100.0 * f.gain.relative, 3) + "% on " +
+         f.gain.on + ")";
 }
 
 PipelineSummary::DofLine DofLineOf(const DiagnosisResult& r, model::Dof dof) {

@@ -1,4 +1,4 @@
-// Measure stage: the gain of an extension is the free-run velocity MAE (seed 002 eq. 37) it
+// Measure stage: the gain of an extension is the free-run velocity MAE (ref 002 eq. 37) it
 // saves on data it was not fitted to. A split that cannot score both models (no held-out
 // trial, a fold without trials, a free run that cannot be simulated) gives no gain, and says
 // why: a NaN is never folded into a number.
@@ -41,8 +41,8 @@ std::string ThrustKey(const model::Vehicle& vehicle, const TrialData& t) {
     const bool pos = t.force[i] > 0;
     seen.insert({m, pos});
     if (m >= 0) {
-      open = open || vehicle.mappings[m].IsOpenWater(pos ? model::Direction::kPos
-                                                         : model::Direction::kNeg);
+      open = open ||
+             vehicle.mappings[m].IsOpenWater(pos ? model::Direction::kPos : model::Direction::kNeg);
     }
   }
   std::string key = open ? "open " : "";
@@ -140,9 +140,8 @@ void CrossValidate(const model::Vehicle& vehicle, const StructureFit& before,
   }
   const std::vector<Trials> folds = DealFolds(vehicle, fit);
   std::vector<FoldScore> scores(folds.size());
-  ParallelFor(folds.size(), threads, [&](std::size_t k) {
-    scores[k] = ScoreFold(vehicle, before, after, folds, k, oe);
-  });
+  ParallelFor(folds.size(), threads,
+              [&](std::size_t k) { scores[k] = ScoreFold(vehicle, before, after, folds, k, oe); });
   double sum_b = 0, sum_a = 0;
   int n = 0;
   for (const FoldScore& s : scores) {
@@ -163,7 +162,7 @@ void CrossValidate(const model::Vehicle& vehicle, const StructureFit& before,
 
 }  // namespace
 
-// On the validate trials, or by 2-fold cross-validation when none is marked (issue #5 step 4).
+// On the validate trials, or by 2-fold cross-validation when none is marked.
 DiagnosisGain HeldOutGain(const model::Vehicle& vehicle, const StructureFit& before,
                           const StructureFit& after, const Trials& fit, const Trials& validate,
                           const OutputErrorOptions& oe, int threads) {

@@ -103,8 +103,9 @@ void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
     ++used;
   }
   if (used < replicates / 2) {
-    notes->push_back(dof + ": refits with perturbed other-DOF velocities failed; the coupling's σ "
-                           "ignore the noise of their logs");
+    notes->push_back(dof +
+                     ": refits with perturbed other-DOF velocities failed; the coupling's σ "
+                     "ignore the noise of their logs");
     return;
   }
   f->oe.covariance += cov / used;

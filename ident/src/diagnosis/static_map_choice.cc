@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../number_text.h"
 #include "diagnosis_internal.h"
 #include "uuvplan/ident/score.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::diagnosis {
 
@@ -168,14 +168,15 @@ void ChooseStaticMap(const model::Campaign& campaign, const TrialDataOptions& da
       if (linear.Has(name)) continue;
       c.params.push_back({name, f.held.at(name), 0.0, ParameterState::kFixed});
       c.physical = false;
-      c.why = name + " held at its admissible bound " + Fmt(f.held.at(name));
+      c.why = name + " held at its admissible bound " + model::Significant(f.held.at(name), 4);
     }
     const double n = f.oe.num_residuals;
     c.aic = n * std::log(2.0 * f.oe.cost / n) + 2.0 * f.free_parameters;
     c.validate_mae = PooledVelocityMae(*f.model, f.oe.theta, validate_p, oe.step_s, &c.why);
     c.scored = std::isfinite(c.validate_mae) && !validate.empty();
     held_out.push_back(PerTrialMae(f, validate_p, oe.step_s));
-    if (c.scored) PairedDifference(held_out.back(), power_law, &c.vs_power_law, &c.vs_power_law_sigma);
+    if (c.scored)
+      PairedDifference(held_out.back(), power_law, &c.vs_power_law, &c.vs_power_law_sigma);
     finding->static_maps.push_back(std::move(c));
   }
   finding->chosen_map = Choose(finding->static_maps, held_out);

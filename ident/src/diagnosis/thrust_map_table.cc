@@ -1,12 +1,12 @@
 // The static thrust map a thrust_map finding implies, as the vehicle file states thrust: per
 // thruster command (diagnosis.h CorrectedThrustMap). The finding's exponent p acts on the DOF
 // force φ; in the vehicle file the map is a function of the command V, φ = Thrust(V)/share
-// (seed 000 Table I), so a square thrust table with p = −½ delivers a force linear in V.
+// (ref 000 Table I), so a square thrust table with p = −½ delivers a force linear in V.
 #include <algorithm>
 #include <cmath>
 
-#include "../number_text.h"
 #include "diagnosis_internal.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::diagnosis {
 
@@ -79,7 +79,7 @@ std::string ShapeName(double n, double range) {
   // Named when that power law stays within 20% of the fitted one over the commands used.
   if (std::pow(range, std::abs(n - 1.0)) <= 1.2) return "linear in the command";
   if (std::pow(range, std::abs(n - 2.0)) <= 1.2) return "square in the command";
-  return "a power of the command, |command|^" + Fmt(n, 3);
+  return "a power of the command, |command|^" + model::Significant(n, 3);
 }
 
 }  // namespace
@@ -90,8 +90,9 @@ std::vector<CorrectedThrustMap> CorrectedThrustMaps(const model::Vehicle& vehicl
   const int k = FindEstimate(f.oe.estimates, model::param::kThrustExponent);
   const auto ref = f.structure.settings.find(model::param::kThrustReference);
   if (k < 0 || ref == f.structure.settings.end()) return maps;
-  const Shape s{f.oe.estimates[k].value, ref->second,
-                f.values.count(model::param::kDeadzone) ? f.values.at(model::param::kDeadzone) : 0.0};
+  const Shape s{
+      f.oe.estimates[k].value, ref->second,
+      f.values.count(model::param::kDeadzone) ? f.values.at(model::param::kDeadzone) : 0.0};
   const double sigma_p = f.oe.estimates[k].sigma;
   std::set<int> mappings;
   for (const TrialData* t : trials) {
@@ -112,8 +113,8 @@ std::vector<CorrectedThrustMap> CorrectedThrustMaps(const model::Vehicle& vehicl
     if (!(map.largest_command > map.smallest_command && map.smallest_command > 0)) continue;
     for (double sign : {-1.0, 1.0}) {
       for (int i = 0; i <= 6; ++i) {
-        const double v = sign * (map.smallest_command +
-                                 i / 6.0 * (map.largest_command - map.smallest_command));
+        const double v =
+            sign * (map.smallest_command + i / 6.0 * (map.largest_command - map.smallest_command));
         const double phi = thruster.model.Thrust(v) / share;
         const double fd = share * Delivered(phi, s);
         map.rows.push_back({v, thruster.model.Thrust(v), fd,
@@ -126,9 +127,9 @@ std::vector<CorrectedThrustMap> CorrectedThrustMaps(const model::Vehicle& vehicl
         CommandExponent(thruster, share, map.smallest_command, map.largest_command, s);
     Shape up = s;
     up.p += sigma_p;
-    map.command_exponent_sigma = std::abs(
-        CommandExponent(thruster, share, map.smallest_command, map.largest_command, up) -
-        map.command_exponent);
+    map.command_exponent_sigma =
+        std::abs(CommandExponent(thruster, share, map.smallest_command, map.largest_command, up) -
+                 map.command_exponent);
     map.shape = ShapeName(map.command_exponent, map.largest_command / map.smallest_command);
     FitPoly2(&map);
     maps.push_back(std::move(map));

@@ -112,7 +112,8 @@ Eigen::VectorXd BlockLeastSquares::Solve(const Eigen::VectorXd& b, double lambda
     const Block& blk = blocks_[t];
     if (blk.own == 0) continue;
     const Eigen::LDLT<Eigen::MatrixXd> ldlt = own_system(t, &m_ts, &b_t);
-    x.segment(blk.first, blk.own) = d.segment(blk.first, blk.own).cwiseProduct(ldlt.solve(b_t - m_ts * y_s));
+    x.segment(blk.first, blk.own) =
+        d.segment(blk.first, blk.own).cwiseProduct(ldlt.solve(b_t - m_ts * y_s));
   }
   return x;
 }
@@ -135,7 +136,8 @@ BlockAnalysis AnalyseBlocks(const BlockLeastSquares& ls, const LeastSquaresOptio
   BlockAnalysis a;
   const Eigen::VectorXd& diag = ls.Diagonal();
   Eigen::VectorXd D(diag.size());  // column scaling 1/‖column‖, as SolveLeastSquares
-  for (Eigen::Index j = 0; j < diag.size(); ++j) D[j] = diag[j] > 0 ? 1.0 / std::sqrt(diag[j]) : 1.0;
+  for (Eigen::Index j = 0; j < diag.size(); ++j)
+    D[j] = diag[j] > 0 ? 1.0 / std::sqrt(diag[j]) : 1.0;
   a.dense = ls.columns() <= BlockAnalysis::kDenseColumns;
   const int s = a.dense ? ls.columns() : ls.shared();
   const Eigen::MatrixXd R = a.dense ? ls.DenseFactor() : ls.SharedFactor();

@@ -5,21 +5,21 @@
 #include <map>
 #include <sstream>
 
-#include "stats/model_selection.h"
 #include "options_check.h"
-#include "uuvplan/ident/stats/covariance.h"
+#include "stats/model_selection.h"
 #include "uuvplan/ident/estimate.h"
 #include "uuvplan/ident/estimators/regression.h"
+#include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 
 bool ClosedLoopIvOptions::IsValid(std::string* error) const {
-  return Require(min_lag_knots >= 2 && max_lag_knots >= min_lag_knots && knot_s > 0 &&
-                     instrument_lags >= 1,
-                 "ClosedLoopIvOptions: min_lag_knots >= 2, max_lag_knots >= min_lag_knots, "
-                 "knot_s > 0, instrument_lags >= 1",
-                 error);
+  return Require(
+      min_lag_knots >= 2 && max_lag_knots >= min_lag_knots && knot_s > 0 && instrument_lags >= 1,
+      "ClosedLoopIvOptions: min_lag_knots >= 2, max_lag_knots >= min_lag_knots, "
+      "knot_s > 0, instrument_lags >= 1",
+      error);
 }
 
 namespace {
@@ -131,7 +131,8 @@ void Finish(const model::DofModel& model, const Eigen::VectorXd& theta, const On
      << " one-step rows, instruments the rows " << out->lag_knots << "–"
      << out->lag_knots + out->instrument_lags - 1 << " knots (from "
      << model::Significant(out->lag_s, 3) << " s) earlier, rows weighted per trial by "
-     << (out->residual_weights ? "its residuals" : "its sensor noise") << ", σ from an MA(1) sandwich";
+     << (out->residual_weights ? "its residuals" : "its sensor noise")
+     << ", σ from an MA(1) sandwich";
   f.message = os.str();
 }
 
@@ -140,7 +141,8 @@ void Finish(const model::DofModel& model, const Eigen::VectorXd& theta, const On
 namespace {
 
 // One two-stage least-squares fit of the parameters `free` (others at theta).
-ClosedLoopIvResult SolveIv(const model::DofModel& model, const std::vector<const TrialData*>& trials,
+ClosedLoopIvResult SolveIv(const model::DofModel& model,
+                           const std::vector<const TrialData*>& trials,
                            const Eigen::VectorXd& theta, const std::vector<int>& free,
                            const OneStepOptions& one_step, const ClosedLoopIvOptions& o) {
   ClosedLoopIvResult out;
@@ -168,8 +170,8 @@ ClosedLoopIvResult SolveIv(const model::DofModel& model, const std::vector<const
   if (f.num_rows < 3 * p) {
     f.status = FitStatus::kTooFewData;
     f.message = "closed-loop instrumental variables: " + std::to_string(f.num_rows) +
-                " rows with an instrument " + std::to_string(out.lag_knots) + " knots earlier for " +
-                std::to_string(p) + " unknowns (longer trials)";
+                " rows with an instrument " + std::to_string(out.lag_knots) +
+                " knots earlier for " + std::to_string(p) + " unknowns (longer trials)";
     return out;
   }
   const Eigen::MatrixXd X = Projected(s);
@@ -178,8 +180,10 @@ ClosedLoopIvResult SolveIv(const model::DofModel& model, const std::vector<const
   f.condition_number = EquilibratedCondition(A, X, s.F);
   if (!lu.isInvertible() || !(f.condition_number < one_step.max_condition)) {
     f.status = FitStatus::kIllConditioned;
-    f.message = "closed-loop instrumental variables: the lagged rows do not determine the "
-                "parameters (condition number " + model::Significant(f.condition_number, 3) + ")";
+    f.message =
+        "closed-loop instrumental variables: the lagged rows do not determine the "
+        "parameters (condition number " +
+        model::Significant(f.condition_number, 3) + ")";
     return out;
   }
   f.psi = lu.solve(X.transpose() * s.Y);
@@ -211,7 +215,7 @@ ClosedLoopIvResult SolveIv(const model::DofModel& model, const std::vector<const
 
 }  // namespace
 
-// Seed 000 §IV-D model selection on the instrumental-variable fit: drop the worst
+// Ref 000 §IV-D model selection on the instrumental-variable fit: drop the worst
 // insignificant prunable parameter (at 0) and refit, as the other estimators do.
 ClosedLoopIvResult ClosedLoopInstrumentalFit(const model::DofModel& model,
                                              const std::vector<const TrialData*>& trials,
@@ -255,8 +259,8 @@ ClosedLoopIvResult ClosedLoopInstrumentalFit(const model::DofModel& model,
     }
   }
   std::vector<ParameterEstimate> kept;
-  for (const ParameterEstimate& e : EstimatedAndDropped(names, out.fit.theta, out.fit.covariance,
-                                                        out.fit.state, before_value, before_sigma)) {
+  for (const ParameterEstimate& e : EstimatedAndDropped(
+           names, out.fit.theta, out.fit.covariance, out.fit.state, before_value, before_sigma)) {
     kept.push_back(e);
   }
   out.fit.estimates = std::move(kept);

@@ -5,12 +5,12 @@
 #include <limits>
 #include <sstream>
 
-#include "number_text.h"
 #include "options_check.h"
+#include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/ident/stats/sub_matrix.h"
-#include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 
@@ -27,8 +27,8 @@ namespace {
 struct Run {
   int trial;
   std::vector<double> t, xi;
-  Eigen::MatrixXd Y;  // samples × np cumulative ∫h
-  Eigen::VectorXd Y0; // cumulative ∫h0
+  Eigen::MatrixXd Y;       // samples × np cumulative ∫h
+  Eigen::VectorXd Y0;      // cumulative ∫h0
   double noise_var = 0.0;  // variance of the filtered velocity's noise
   // Raw measured samples (white noise of variance noise_var, every sample a row): D[s] is the
   // derivative of interval s's known-force integral with respect to a velocity offset.
@@ -42,14 +42,16 @@ struct Run {
   double position_var = 0.0;
 };
 
-// One row of the regression y_i = m·ξ_i − c_run − (t_i − t_s)·b_trial (seed 000 eqs. 16–19).
+// One row of the regression y_i = m·ξ_i − c_run − (t_i − t_s)·b_trial (ref 000 eqs. 16–19).
 // Each row has three non-zeros: H_i = ξ_i·e_0 − e_{c(run)} − (t_i − t_s)·e_{b(trial)}.
 struct Row {
   double xi, dt, y, noise_var;
   int c, b, group;  // rows are the runs' samples in order: run `group`, its samples
 };
 
-double RowDot(const Row& w, const Eigen::VectorXd& v) { return w.xi * v[0] - v[w.c] - w.dt * v[w.b]; }
+double RowDot(const Row& w, const Eigen::VectorXd& v) {
+  return w.xi * v[0] - v[w.c] - w.dt * v[w.b];
+}
 
 // The known-force integrals of a run of raw samples shifted by ±dv: their central difference
 // (exact for the linear and quadratic drag terms) is D.
@@ -90,12 +92,14 @@ void PositionSampleNoise(const TrialData& trial, std::size_t begin, std::size_t 
 // which the smoothed samples' correlated noise would not allow. Between samples they are
 // joined by cubic Hermite with the filter's accelerations as slopes (linear interpolation
 // would bias ∫ξ|ξ| by ~(ωΔt)²/12). Position-derived velocities have no such samples and keep
-// the Savitzky–Golay derivative (seed 000 §IV-D) and the Newey–West σ.
-void AddRuns(const model::DofModel& model, const TrialData& trial, const Eigen::VectorXd& theta_known,
-             std::size_t stride, const IntegralInertiaOptions& o, std::vector<Run>* runs) {
+// the Savitzky–Golay derivative (ref 000 §IV-D) and the Newey–West σ.
+void AddRuns(const model::DofModel& model, const TrialData& trial,
+             const Eigen::VectorXd& theta_known, std::size_t stride,
+             const IntegralInertiaOptions& o, std::vector<Run>* runs) {
   const int np = model.num_parameters();
   const SmoothedSignal& v = trial.velocity_estimate;
-  const double input_sigma = trial.velocity_from_position ? trial.position_sigma : trial.velocity_sigma;
+  const double input_sigma =
+      trial.velocity_from_position ? trial.position_sigma : trial.velocity_sigma;
   const bool raw = o.raw_measured_velocity && !trial.velocity_from_position &&
                    trial.velocity.size() == v.size() &&
                    std::equal(v.t.begin(), v.t.end(), trial.velocity.t.begin());
@@ -120,8 +124,8 @@ void AddRuns(const model::DofModel& model, const TrialData& trial, const Eigen::
       run.xi.push_back(src.value[i]);
     }
     if (run.t.size() < 10) continue;
-    const IntegratedRegressors ir =
-        IntegrateRegressors(model, trial, run.t, theta_known, o.max_step_s, raw ? &raw_signal : nullptr);
+    const IntegratedRegressors ir = IntegrateRegressors(model, trial, run.t, theta_known,
+                                                        o.max_step_s, raw ? &raw_signal : nullptr);
     const int k = static_cast<int>(run.t.size());
     run.Y = Eigen::MatrixXd::Zero(k, np);
     run.Y0 = Eigen::VectorXd::Zero(k);
@@ -150,7 +154,9 @@ std::vector<Row> BuildRows(const std::vector<Run>& runs, const std::vector<int>&
   std::vector<Row> rows;
   for (int q = 0; q < R; ++q) {
     const Run& run = runs[q];
-    const int tb = 1 + R + static_cast<int>(std::find(trial_ids.begin(), trial_ids.end(), run.trial) - trial_ids.begin());
+    const int tb = 1 + R +
+                   static_cast<int>(std::find(trial_ids.begin(), trial_ids.end(), run.trial) -
+                                    trial_ids.begin());
     for (std::size_t s = 0; s < run.t.size(); ++s) {
       Row row;
       double yk = run.Y0[s];
@@ -195,7 +201,8 @@ double ScaledConditionNumber(const Eigen::MatrixXd& N) {
 }
 
 // Newey–West sum of the influences ψ_i (Bartlett weights, lags within runs), scaled by n/(n−p).
-double NeweyWestVariance(const std::vector<Row>& rows, const std::vector<double>& psi, int lags, int p) {
+double NeweyWestVariance(const std::vector<Row>& rows, const std::vector<double>& psi, int lags,
+                         int p) {
   const int n = static_cast<int>(rows.size());
   double var_hac = 0.0;
   for (int i = 0; i < n; ++i) var_hac += psi[i] * psi[i];
@@ -252,7 +259,8 @@ double RunNoiseQuadratic(const Run& run, const std::vector<double>& c) {
 }
 
 // Cov(Σ_s a_s·e_s, Σ_s b_s·e_s) by polarisation: (Var(a + b) − Var(a − b))/4.
-double RunNoiseBilinear(const Run& run, const std::vector<double>& a, const std::vector<double>& b) {
+double RunNoiseBilinear(const Run& run, const std::vector<double>& a,
+                        const std::vector<double>& b) {
   std::vector<double> sum(a.size()), diff(a.size());
   for (std::size_t s = 0; s < a.size(); ++s) {
     sum[s] = a[s] + b[s];
@@ -324,7 +332,8 @@ double WhiteNoiseVariance(const std::vector<Run>& runs, const std::vector<Row>& 
 // (beyond it the covariances are below 1e-6 of the variance and their squares negligible).
 double NoiseCovarianceSquaredSum(const Run& run) {
   const double rho = std::clamp(run.rho, 0.0, 0.999);
-  const std::size_t reach = rho > 0 ? static_cast<std::size_t>(std::ceil(std::log(1e-6) / std::log(rho))) : 0;
+  const std::size_t reach =
+      rho > 0 ? static_cast<std::size_t>(std::ceil(std::log(1e-6) / std::log(rho))) : 0;
   if (run.weights.empty()) {
     const std::size_t n = run.t.size();
     double sum = static_cast<double>(n), r2l = 1.0;
@@ -344,12 +353,14 @@ double NoiseCovarianceSquaredSum(const Run& run) {
     const std::size_t len = hi - lo;
     fwd.assign(len, 0.0);
     bwd.assign(len, 0.0);
-    for (std::size_t j = 0; j < wa.w.size(); ++j) fwd[wa.first - lo + j] = bwd[wa.first - lo + j] = wa.w[j];
+    for (std::size_t j = 0; j < wa.w.size(); ++j)
+      fwd[wa.first - lo + j] = bwd[wa.first - lo + j] = wa.w[j];
     z.assign(len, 0.0);
     for (std::size_t j = 1; j < len; ++j) fwd[j] += rho * fwd[j - 1];
     for (std::size_t j = len - 1; j-- > 0;) bwd[j] += rho * bwd[j + 1];
     for (std::size_t j = 0; j < len; ++j) z[j] = fwd[j] + bwd[j];
-    for (std::size_t j = 0; j < wa.w.size(); ++j) z[wa.first - lo + j] -= wa.w[j];  // Ωw = f + b − w
+    for (std::size_t j = 0; j < wa.w.size(); ++j)
+      z[wa.first - lo + j] -= wa.w[j];  // Ωw = f + b − w
     for (std::size_t b = a; b < run.weights.size(); ++b) {
       const SampleWeights& wb = run.weights[b];
       if (wb.first >= hi) break;
@@ -454,11 +465,13 @@ void Uncertainty(const std::vector<Run>& runs, const std::vector<Row>& rows,
 }
 
 // The estimate, the per-run constants and the message.
-void Report(const std::vector<Run>& runs, const std::vector<int>& trial_ids, const Eigen::VectorXd& est,
-            IntegralInertiaResult* r) {
+void Report(const std::vector<Run>& runs, const std::vector<int>& trial_ids,
+            const Eigen::VectorXd& est, IntegralInertiaResult* r) {
   const int R = static_cast<int>(runs.size());
   for (int q = 0; q < R; ++q) {
-    const int tb = 1 + R + static_cast<int>(std::find(trial_ids.begin(), trial_ids.end(), runs[q].trial) - trial_ids.begin());
+    const int tb = 1 + R +
+                   static_cast<int>(std::find(trial_ids.begin(), trial_ids.end(), runs[q].trial) -
+                                    trial_ids.begin());
     r->run_c.push_back(est[1 + q]);
     r->run_b.push_back(est[tb]);
     r->run_trial.push_back(runs[q].trial);
@@ -472,8 +485,9 @@ void Report(const std::vector<Run>& runs, const std::vector<int>& trial_ids, con
   }
   std::ostringstream os;
   os.precision(4);
-  os << "integral method on " << r->num_samples << " samples in " << runs.size() << " run(s): m = " << r->m
-     << " ± " << r->sigma << " (eqs. 11–12 alone: ± " << r->sigma_eq11 << ")";
+  os << "integral method on " << r->num_samples << " samples in " << runs.size()
+     << " run(s): m = " << r->m << " ± " << r->sigma << " (eqs. 11–12 alone: ± " << r->sigma_eq11
+     << ")";
   r->message = os.str();
   r->status = FitStatus::kOk;
 }
@@ -502,8 +516,9 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
   r.num_samples = n;
   if (runs.empty() || n < p + 2) {
     r.status = FitStatus::kTooFewData;
-    r.message = "integral method: no run of at least 10 usable velocity samples away from "
-                "command steps";
+    r.message =
+        "integral method: no run of at least 10 usable velocity samples away from "
+        "command steps";
     return r;
   }
   Eigen::MatrixXd N;
@@ -514,7 +529,7 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
   if (!(r.condition_number < o.max_condition)) {
     r.status = FitStatus::kIllConditioned;
     r.message = "integral method: ill-conditioned regression (condition number " +
-                Fmt(r.condition_number, 3) +
+                model::Significant(r.condition_number, 3) +
                 ") — the velocity does not vary enough apart from a constant and a trend (excite "
                 "the DOF dynamically, e.g. a sine at the d-optimal frequency, seed 000 eq. 14)";
     return r;
@@ -533,15 +548,16 @@ IntegralInertiaResult IntegralInertiaFit(const model::DofModel& model,
   Eigen::LDLT<Eigen::MatrixXd> ldlt(Nc);
   if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().minCoeff() > 0)) {
     r.status = FitStatus::kIllConditioned;
-    r.message = "integral method: the velocity varies less than its noise (errors in variables "
-                "dominate); excite the DOF more or use a longer filter window";
+    r.message =
+        "integral method: the velocity varies less than its noise (errors in variables "
+        "dominate); excite the DOF more or use a longer filter window";
     return r;
   }
   const Eigen::VectorXd est = ldlt.solve(hty);
   r.m = est[0];
   const Eigen::VectorXd a0 = ldlt.solve(Eigen::VectorXd::Unit(p, 0));  // row 0 of Nc⁻¹
   const int lags = std::max(1, static_cast<int>(std::lround(o.newey_west_windows * sg_window /
-                                                             static_cast<double>(stride))));
+                                                            static_cast<double>(stride))));
   Uncertainty(runs, rows, N, est, a0, lags, known, known_cov, o, &r);
   Report(runs, trial_ids, est, &r);
   return r;

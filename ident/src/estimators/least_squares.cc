@@ -1,12 +1,11 @@
 #include "uuvplan/ident/estimators/least_squares.h"
 
-#include "uuvplan/ident/stats/chi_square.h"
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "options_check.h"
+#include "uuvplan/ident/stats/chi_square.h"
 #include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::ident {
@@ -74,7 +73,8 @@ Eigen::MatrixXd NeweyWestCovariance(const Eigen::MatrixXd& H, const Eigen::Vecto
   }
   if (truncated) {
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S);
-    S = es.eigenvectors() * es.eigenvalues().cwiseMax(0.0).asDiagonal() * es.eigenvectors().transpose();
+    S = es.eigenvectors() * es.eigenvalues().cwiseMax(0.0).asDiagonal() *
+        es.eigenvectors().transpose();
   }
   const Eigen::MatrixXd Ainv = A.ldlt().solve(Eigen::MatrixXd::Identity(p, p));
   const double correction = n > p ? static_cast<double>(n) / (n - p) : 1.0;
@@ -158,7 +158,8 @@ Eigen::MatrixXd Ma1VarianceModelCovariance(const Eigen::MatrixXd& H, const Eigen
   for (Eigen::Index i = 0; i < n; ++i) {
     S.noalias() += v[i] * Z.row(i).transpose() * Z.row(i);
     if (i > 0 && groups[i] == groups[i - 1]) {
-      const Eigen::MatrixXd C = (rho * std::sqrt(v[i] * v[i - 1])) * Z.row(i).transpose() * Z.row(i - 1);
+      const Eigen::MatrixXd C =
+          (rho * std::sqrt(v[i] * v[i - 1])) * Z.row(i).transpose() * Z.row(i - 1);
       S += C + C.transpose();
     }
   }
@@ -185,7 +186,8 @@ ScaledFactor AnalyseScaledFactor(const Eigen::MatrixXd& R, const LeastSquaresOpt
     }
     for (Eigen::Index j = 0; j < p; ++j) {
       if (std::abs(svd.matrixV()(j, k)) > options.null_component &&
-          std::find(f.not_identifiable.begin(), f.not_identifiable.end(), j) == f.not_identifiable.end()) {
+          std::find(f.not_identifiable.begin(), f.not_identifiable.end(), j) ==
+              f.not_identifiable.end()) {
         f.not_identifiable.push_back(static_cast<int>(j));
       }
     }
@@ -224,8 +226,7 @@ Eigen::MatrixXd CovarianceOfKind(const LeastSquaresOptions& options, const Linea
     case CovarianceKind::kNeweyWest: {
       const int lags =
           options.newey_west_lags >= 0 ? options.newey_west_lags : DefaultNeweyWestLags(int(n));
-      return NeweyWestCovariance(H, fit.residuals, weights, lags, groups,
-                                 options.truncated_kernel);
+      return NeweyWestCovariance(H, fit.residuals, weights, lags, groups, options.truncated_kernel);
     }
   }
   return Eigen::MatrixXd();
@@ -280,8 +281,8 @@ LinearFit SolveLeastSquares(const Eigen::MatrixXd& H, const Eigen::VectorXd& y,
   if (fit.condition_number > options.max_condition || !fit.not_identifiable.empty()) {
     fit.status = FitStatus::kIllConditioned;
     std::ostringstream os;
-    os << "ill-conditioned regression (condition number " << fit.condition_number
-       << " > " << options.max_condition << ")";
+    os << "ill-conditioned regression (condition number " << fit.condition_number << " > "
+       << options.max_condition << ")";
     fit.message = os.str();
   } else {
     fit.status = FitStatus::kOk;

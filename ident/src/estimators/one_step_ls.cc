@@ -1,9 +1,9 @@
 #include "uuvplan/ident/estimators/one_step_ls.h"
 
-#include <algorithm>
-#include <limits>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "options_check.h"
@@ -45,7 +45,7 @@ bool OneStepOptions::IsValid(std::string* error) const {
 
 namespace {
 
-// One run's knots (seed 002 eq. 20's integration intervals): samples of the velocity estimate
+// One run's knots (ref 002 eq. 20's integration intervals): samples of the velocity estimate
 // at least `window` apart, as indices; and the trial they belong to.
 struct KnotRun {
   std::size_t trial = 0;
@@ -90,7 +90,7 @@ namespace {
 // The rows of BuildOneStepRows into `F`, and with `rows` Y and the bookkeeping (knot times,
 // groups, runs, weights, noise σ); along `instrument` or a shifted velocity as
 // OneStepRegressors. Sized once: grown by doubling, a million-sample trial's rows held up to
-// twice their size at the one-step stage's peak (issue #16).
+// twice their size at the one-step stage's peak.
 void FillRows(const model::DofModel& model, const std::vector<const TrialData*>& trials,
               const Eigen::VectorXd& theta, const std::vector<int>& free, const OneStepOptions& o,
               const std::vector<SmoothedSignal>* instrument, double velocity_shift,
@@ -204,7 +204,8 @@ namespace {
 // Whether any column 1 + c of the one-step rows F moves: parameter free[c] is excited.
 std::vector<bool> MovedColumns(const Eigen::MatrixXd& F, std::size_t n) {
   std::vector<bool> moved(n, false);
-  for (std::size_t c = 0; c < n && F.rows() > 0; ++c) moved[c] = F.col(1 + c).cwiseAbs().maxCoeff() > 0;
+  for (std::size_t c = 0; c < n && F.rows() > 0; ++c)
+    moved[c] = F.col(1 + c).cwiseAbs().maxCoeff() > 0;
   return moved;
 }
 
@@ -268,7 +269,7 @@ OneStepRows DofRows(const OneStepDofInput& in, const OneStepOptions& o, OneStepD
   return ExcitedOneStepRows(*in.model, in.trials, in.theta, in.free, o, &res->not_excited);
 }
 
-// The stacked block-diagonal system of all DOFs (seed 004 eqs. 12–14).
+// The stacked block-diagonal system of all DOFs (ref 004 eqs. 12–14).
 struct StackedSystem {
   Eigen::MatrixXd F;
   Eigen::VectorXd Y, W;
@@ -276,19 +277,23 @@ struct StackedSystem {
   std::vector<int> row0, col0;  // first row and column of each DOF's block
 };
 
-StackedSystem Stack(const std::vector<OneStepDofInput>& dofs, const std::vector<OneStepRows>& rows) {
+StackedSystem Stack(const std::vector<OneStepDofInput>& dofs,
+                    const std::vector<OneStepRows>& rows) {
   std::vector<double> weight(dofs.size(), 1.0);
   int total_rows = 0, total_cols = 0;
   for (std::size_t d = 0; d < dofs.size(); ++d) {
-    weight[d] = dofs[d].weight > 0 ? dofs[d].weight
+    weight[d] = dofs[d].weight > 0        ? dofs[d].weight
                 : rows[d].noise_sigma > 0 ? 1.0 / (rows[d].noise_sigma * rows[d].noise_sigma)
                                           : 1.0;
     total_rows += static_cast<int>(rows[d].Y.size());
     total_cols += static_cast<int>(rows[d].F.cols());
   }
-  StackedSystem s{Eigen::MatrixXd::Zero(total_rows, total_cols), Eigen::VectorXd(total_rows),
-                  Eigen::VectorXd(total_rows), std::vector<int>(total_rows),
-                  std::vector<int>(dofs.size()), std::vector<int>(dofs.size())};
+  StackedSystem s{Eigen::MatrixXd::Zero(total_rows, total_cols),
+                  Eigen::VectorXd(total_rows),
+                  Eigen::VectorXd(total_rows),
+                  std::vector<int>(total_rows),
+                  std::vector<int>(dofs.size()),
+                  std::vector<int>(dofs.size())};
   int r0 = 0, c0 = 0;
   for (std::size_t d = 0; d < dofs.size(); ++d) {
     const OneStepRows& R = rows[d];
@@ -296,10 +301,11 @@ StackedSystem Stack(const std::vector<OneStepDofInput>& dofs, const std::vector<
     s.col0[d] = c0;
     s.F.block(r0, c0, R.F.rows(), R.F.cols()) = R.F;
     s.Y.segment(r0, R.Y.size()) = R.Y;
-    // Λ of the DOF (seed 004 eq. 13) times each row's relative weight.
+    // Λ of the DOF (ref 004 eq. 13) times each row's relative weight.
     const double mean_row = R.noise_sigma > 0 ? 1.0 / (R.noise_sigma * R.noise_sigma) : 1.0;
     for (int k = 0; k < R.Y.size(); ++k) s.W[r0 + k] = weight[d] * R.weight[k] / mean_row;
-    for (int k = 0; k < R.Y.size(); ++k) s.groups[r0 + k] = static_cast<int>(d) * 1000003 + R.run[k];
+    for (int k = 0; k < R.Y.size(); ++k)
+      s.groups[r0 + k] = static_cast<int>(d) * 1000003 + R.run[k];
     r0 += static_cast<int>(R.F.rows());
     c0 += static_cast<int>(R.F.cols());
   }
@@ -443,7 +449,8 @@ bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const One
   Eigen::MatrixXd Z, F;
   if (!OneStepInstruments(in, R, o, theta_now, &Z, &F)) return false;
   // Rows scaled by 1/σ of their noise (Ω keeps its form: the weight is constant in a run).
-  const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
+  const Eigen::VectorXd sw =
+      Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
   const Eigen::MatrixXd Fc = sw.asDiagonal() * F;
   const Eigen::MatrixXd Zw = sw.asDiagonal() * Z;
   const Eigen::VectorXd Yw = sw.cwiseProduct(R.Y);
@@ -453,7 +460,7 @@ bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const One
   const Eigen::VectorXd psi = lu.solve(Zw.transpose() * Yw);
   if (!psi.allFinite() || !(psi[0] > 0)) return false;
   // Cov = A⁻¹ZᵀΩZA⁻ᵀ with Ω a heteroscedastic MA(1) of the (weighted) residuals within runs:
-  // the rows share their endpoints (seed 002 eqs. 20–26: Y_k = ξ̃(t_k) − ξ̃(t_{k−1})), and the
+  // the rows share their endpoints (ref 002 eqs. 20–26: Y_k = ξ̃(t_k) − ξ̃(t_{k−1})), and the
   // integrals add errors that grow with the row's sensitivity to the velocity. White's
   // per-row r_k² (HC) was tried: with ~50 rows and 4 unknowns (URIS yaw, pitch) its σ
   // scattered by a factor 2 and covered 68–81%; the fitted variance model pools them.
@@ -473,7 +480,7 @@ bool InstrumentalStep(const OneStepDofInput& in, const OneStepRows& R, const One
   return !converged;
 }
 
-// Seed coefficients (seed 002: α, β, γ, δ) when the model is the standard one.
+// Seed coefficients (ref 002: α, β, γ, δ) when the model is the standard one.
 void StoreSeedCoefficients(const OneStepRows& R, OneStepDofResult* res) {
   auto find_free = [&](const char* name) {
     for (std::size_t c = 0; c < R.free.size(); ++c) {
@@ -506,14 +513,16 @@ void FinishDof(const OneStepDofInput& in, const OneStepRows& R, const LeastSquar
   const LinearFit own = SolveLeastSquares(R.F, R.Y, nullptr, lso);
   res->condition_number = own.condition_number;
   for (int c : own.not_identifiable) {
-    res->not_identifiable.push_back(c == 0 ? std::string(model::param::kMass) : res->names[R.free[c - 1]]);
+    res->not_identifiable.push_back(c == 0 ? std::string(model::param::kMass)
+                                           : res->names[R.free[c - 1]]);
   }
   if (!(res->psi[0] > 0) || own.status != FitStatus::kOk) {
     res->status = FitStatus::kIllConditioned;
     std::string why = own.status != FitStatus::kOk ? own.message : "gamma = 1/m is not positive";
     if (R.F.col(0).cwiseAbs().maxCoeff() == 0) {
-      why = "no force with a known installation coefficient: the model is homogeneous in its "
-            "parameters, η must be known (open water) for at least one mapping (seed 000 §II-A)";
+      why =
+          "no force with a known installation coefficient: the model is homogeneous in its "
+          "parameters, η must be known (open water) for at least one mapping (seed 000 §II-A)";
     }
     res->message = "one-step LS: " + why +
                    (res->not_identifiable.empty()
@@ -525,7 +534,8 @@ void FinishDof(const OneStepDofInput& in, const OneStepRows& R, const LeastSquar
                 &res->covariance);
   res->state[0] = ParameterState::kEstimated;
   for (int j : R.free) res->state[j] = ParameterState::kEstimated;
-  const std::vector<ParameterEstimate> all = MakeEstimates(res->names, res->theta, res->covariance, res->state);
+  const std::vector<ParameterEstimate> all =
+      MakeEstimates(res->names, res->theta, res->covariance, res->state);
   for (std::size_t j = 0; j < all.size(); ++j) {
     if (res->state[j] == ParameterState::kEstimated) res->estimates.push_back(all[j]);
   }
@@ -562,8 +572,10 @@ void SolveDof(const OneStepDofInput& in, const OneStepRows& R, const LinearFit& 
   res->residuals = fit.residuals.segment(row0, res->num_rows);
   if (o.covariance == CovarianceKind::kDifferenced) {
     // Per DOF (the blocks are independent; the DOF's weight cancels).
-    const Eigen::VectorXd sw = Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
-    res->psi_covariance = DifferencedCovariance(sw.asDiagonal() * R.F, sw.cwiseProduct(res->residuals), R.run);
+    const Eigen::VectorXd sw =
+        Eigen::Map<const Eigen::VectorXd>(R.weight.data(), R.weight.size()).cwiseSqrt();
+    res->psi_covariance =
+        DifferencedCovariance(sw.asDiagonal() * R.F, sw.cwiseProduct(res->residuals), R.run);
   }
   for (int it = 0; it < o.iv_iterations && res->psi[0] > 0 && res->psi.allFinite(); ++it) {
     if (!InstrumentalStep(in, R, o, res)) break;
@@ -585,7 +597,7 @@ std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofIn
   lso.max_condition = o.max_condition;
   LinearFit fit;
   std::vector<int> row0, col0;
-  {  // the stacked copy of the rows gone before the IV iterations (issue #16: their peak)
+  {  // the stacked copy of the rows gone before the IV iterations (their peak)
     const StackedSystem s = Stack(dofs, rows);
     fit = SolveLeastSquares(s.F, s.Y, &s.W, lso, &s.groups);
     row0 = s.row0;

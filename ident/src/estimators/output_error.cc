@@ -10,7 +10,6 @@
 #include "estimators/output_error_covariance.h"
 #include "estimators/output_error_levenberg_marquardt.h"
 #include "estimators/output_error_problem.h"
-#include "number_text.h"
 #include "options_check.h"
 #include "stats/model_selection.h"
 #include "uuvplan/ident/estimators/block_least_squares.h"
@@ -55,7 +54,8 @@ using internal::WithResiduals;
 // unknowns (z layout) fitted on bins ~duration/coarse_measurements long with a longer RK4
 // step; its answer starts the full-size fit. The start `z0` when the record is short or the
 // coarse fit fails (the full-size fit then does all the work, as without this stage).
-Eigen::VectorXd CoarseStart(const model::DofModel& model, const std::vector<const TrialData*>& trials,
+Eigen::VectorXd CoarseStart(const model::DofModel& model,
+                            const std::vector<const TrialData*>& trials,
                             const Eigen::VectorXd& theta, const std::vector<int>& free,
                             const std::vector<TrialInitialState>* initial, const Problem& full,
                             const Eigen::VectorXd& z0, const OutputErrorOptions& o) {
@@ -96,7 +96,7 @@ int RefitWithoutGrossErrors(Problem* p, const OutputErrorOptions& o, LmOutcome* 
   return static_cast<int>(gross);
 }
 
-// Seed 000 §IV-D model selection: the free parameter to drop (the worst insignificant
+// Ref 000 §IV-D model selection: the free parameter to drop (the worst insignificant
 // prunable one), or -1; its value and σ are kept and a note says why.
 int DropWorst(const std::vector<int>& free, const OutputErrorOptions& o, Eigen::VectorXd* theta,
               std::vector<double>* before_value, std::vector<double>* before_sigma,
@@ -113,8 +113,9 @@ int DropWorst(const std::vector<int>& free, const OutputErrorOptions& o, Eigen::
   const int worst = free[c];
   (*before_value)[worst] = (*theta)[worst];
   (*before_sigma)[worst] = std::sqrt(res->covariance(worst, worst));
-  res->notes.push_back(res->names[worst] + " = " + Fmt((*theta)[worst]) + " ± " +
-                       Fmt((*before_sigma)[worst]) + " (" + Fmt(worst_pe, 3) +
+  res->notes.push_back(res->names[worst] + " = " + model::Significant((*theta)[worst], 4) + " ± " +
+                       model::Significant((*before_sigma)[worst], 4) + " (" +
+                       model::Significant(worst_pe, 3) +
                        "% > 51.02%): insignificant at 95%, dropped and the rest refitted");
   (*theta)[worst] = 0.0;
   res->state[worst] = ParameterState::kDropped;
@@ -126,7 +127,8 @@ std::string Message(const OutputErrorResult& res) {
   os.precision(4);
   os << "output error: " << OutputErrorStatusName(res.status) << " after " << res.iterations
      << " iterations on " << res.num_residuals << " measurements, s² = " << res.sigma2;
-  if (!res.not_identifiable.empty()) os << "; not identifiable: " << model::Join(res.not_identifiable);
+  if (!res.not_identifiable.empty())
+    os << "; not identifiable: " << model::Join(res.not_identifiable);
   return os.str();
 }
 
@@ -167,8 +169,11 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
                     std::to_string(p.num_z()) + " unknowns";
       return res;
     }
-    LmOutcome lm = LevenbergMarquardt(
-        p, CoarseStart(model, trials, theta, free, initial.empty() ? nullptr : &initial, p, p.InitialZ(), o), o);
+    LmOutcome lm =
+        LevenbergMarquardt(p,
+                           CoarseStart(model, trials, theta, free,
+                                       initial.empty() ? nullptr : &initial, p, p.InitialZ(), o),
+                           o);
     res.iterations += lm.iterations;
     if (lm.failed || !WithResiduals(p, &lm)) {
       res.status = OutputErrorStatus::kFailed;
@@ -187,18 +192,19 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
   }
   res.theta = theta;
   res.initial = initial;
-  res.estimates = EstimatedAndDropped(res.names, res.theta, res.covariance, res.state,
-                                      before_value, before_sigma);
+  res.estimates = EstimatedAndDropped(res.names, res.theta, res.covariance, res.state, before_value,
+                                      before_sigma);
   if (excluded_total > 0) {
     res.notes.push_back(std::to_string(excluded_total) +
                         " measurement(s) more than 6 robust σ from the fitted model left out as "
                         "gross errors");
   }
   if (res.hac_covariance) {
-    res.notes.push_back("output-error residuals are not white (mean lag-1 autocorrelation " +
-                        Fmt(res.residual_lag1, 3) +
-                        "): model error or coloured noise; σ from the scores prewhitened by an "
-                        "AR(1) of the residuals per trial and sensor, then batch means (a sandwich)");
+    res.notes.push_back(
+        "output-error residuals are not white (mean lag-1 autocorrelation " +
+        model::Significant(res.residual_lag1, 3) +
+        "): model error or coloured noise; σ from the scores prewhitened by an "
+        "AR(1) of the residuals per trial and sensor, then batch means (a sandwich)");
   }
   res.message = Message(res);
   return res;
@@ -213,7 +219,8 @@ Eigen::MatrixXd CramerRaoBound(const model::DofModel& model,
   const int np = model.num_parameters();
   std::vector<int> free;
   for (int j = 0; j < np; ++j) {
-    if (j >= static_cast<int>(state.size()) || state[j] == ParameterState::kEstimated) free.push_back(j);
+    if (j >= static_cast<int>(state.size()) || state[j] == ParameterState::kEstimated)
+      free.push_back(j);
   }
   const Problem p(model, trials, theta, free, initial.empty() ? nullptr : &initial, o);
   BlockLeastSquares J(p.num_free());

@@ -6,7 +6,7 @@
 #include <limits>
 #include <utility>
 
-#include "number_text.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::internal {
 namespace {
@@ -86,7 +86,7 @@ LmOutcome LevenbergMarquardt(const Problem& p, Eigen::VectorXd z, const OutputEr
         out.message =
             "Levenberg–Marquardt stalled (no step lowers the cost, the Gauss–Newton "
             "step is still " +
-            Fmt(std::sqrt(dec), 3) + " σ long)";
+            model::Significant(std::sqrt(dec), 3) + " σ long)";
       }
       break;
     }

@@ -10,7 +10,7 @@ namespace uuvplan::ident {
 
 std::vector<int> LinearParameters(const model::DofModel& model) {
   std::vector<int> out;
-  const model::TermContext c;
+  const model::TermInputs c;
   std::vector<double> h(model.num_parameters() + 1);
   for (std::size_t j = 0; j < model.terms().size(); ++j) {
     const auto& term = model.terms()[j];
@@ -22,7 +22,7 @@ std::vector<int> LinearParameters(const model::DofModel& model) {
   return out;
 }
 
-void EvaluateRegressor(const model::DofModel& model, const model::TermContext& c,
+void EvaluateRegressor(const model::DofModel& model, const model::TermInputs& c,
                        const Eigen::VectorXd& theta, double* h, double* h0) {
   const int np = model.num_parameters();
   for (int i = 0; i < np; ++i) h[i] = 0.0;
@@ -40,9 +40,9 @@ void EvaluateRegressor(const model::DofModel& model, const model::TermContext& c
   }
 }
 
-model::TermContext MeasuredContext(const model::DofModel& model, const TrialData& trial,
-                                   double t, double xi, const Eigen::VectorXd& theta) {
-  model::TermContext c;
+model::TermInputs MeasuredTermInputs(const model::DofModel& model, const TrialData& trial, double t,
+                                     double xi, const Eigen::VectorXd& theta) {
+  model::TermInputs c;
   c.xi = xi;
   c.phi = model.ActuatorInput(trial.input->Force(t), theta.data());
   c.mapping = trial.input->Mapping(t);
@@ -76,9 +76,10 @@ IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const Tri
   // The cursor starts at the first boundary (a binary search), not at the signal's start: the
   // callers integrate one run of a long trial at a time, and a scan from the start each time
   // made the one-step rows quadratic in the trial's length (400 runs × 10⁶ samples).
-  std::size_t cursor = vt.empty() ? 0
-                       : static_cast<std::size_t>(std::max<std::ptrdiff_t>(
-                             0, std::upper_bound(vt.begin(), vt.end(), b[0]) - vt.begin() - 1));
+  std::size_t cursor = vt.empty()
+                           ? 0
+                           : static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+                                 0, std::upper_bound(vt.begin(), vt.end(), b[0]) - vt.begin() - 1));
   // Interpolation with a forward-moving cursor (queries are increasing): cubic Hermite between
   // samples with the filter's accelerations (the local polynomials of the Savitzky–Golay fit),
   // linear where an acceleration is missing.
@@ -95,8 +96,8 @@ IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const Tri
       const double a0 = (*va)[cursor], a1 = (*va)[cursor + 1];
       if (std::isfinite(a0) && std::isfinite(a1)) {
         const double w2 = w * w, w3 = w2 * w;
-        return (2 * w3 - 3 * w2 + 1) * v0 + (w3 - 2 * w2 + w) * dt * a0 +
-               (-2 * w3 + 3 * w2) * v1 + (w3 - w2) * dt * a1;
+        return (2 * w3 - 3 * w2 + 1) * v0 + (w3 - 2 * w2 + w) * dt * a0 + (-2 * w3 + 3 * w2) * v1 +
+               (w3 - w2) * dt * a1;
       }
     }
     return v0 + w * (v1 - v0);
@@ -108,17 +109,17 @@ IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const Tri
       double stop = end;
       while (next_break < breaks.size() && breaks[next_break] <= a) ++next_break;
       if (next_break < breaks.size() && breaks[next_break] < stop) stop = breaks[next_break];
-      const int pieces =
-          std::max(1, model::CheckedCount<int>((stop - a) / max_step, "regression quadrature pieces",
-                                               model::limits::kMaxSimulationSteps,
-                                               "a shorter interval between samples"));
+      const int pieces = std::max(
+          1, model::CheckedCount<int>((stop - a) / max_step, "regression quadrature pieces",
+                                      model::limits::kMaxSimulationSteps,
+                                      "a shorter interval between samples"));
       const double len = (stop - a) / pieces;
       for (int p = 0; p < pieces; ++p) {
         const double mid = a + (p + 0.5) * len;
         for (double node : {mid - g * len, mid + g * len}) {
           const double xi = velocity(node) + velocity_shift;
           if (std::isnan(xi)) continue;
-          const model::TermContext c = MeasuredContext(model, trial, node, xi, theta);
+          const model::TermInputs c = MeasuredTermInputs(model, trial, node, xi, theta);
           double h0 = 0.0;
           EvaluateRegressor(model, c, theta, h.data(), &h0);
           for (int i = 0; i < np; ++i) out.H(k, i) += 0.5 * len * h[i];

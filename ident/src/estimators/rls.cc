@@ -1,19 +1,20 @@
-// Recursive least squares with forgetting (seed 004 eq. 15) and its covariance (rls.h).
+// Recursive least squares with forgetting (ref 004 eq. 15) and its covariance (rls.h).
 #include "uuvplan/ident/estimators/rls.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "number_text.h"
 #include "options_check.h"
 #include "uuvplan/ident/estimators/regression.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
 
 // P_0 = p0·diag(θ0²) (1 where θ0 = 0) with a given θ0; otherwise p0/‖F_j‖²·rows per column,
 // so that the prior is equally vague whatever the columns' units.
-Eigen::MatrixXd InitialP(const Eigen::MatrixXd& F, const RlsOptions& o, const Eigen::VectorXd& theta) {
+Eigen::MatrixXd InitialP(const Eigen::MatrixXd& F, const RlsOptions& o,
+                         const Eigen::VectorXd& theta) {
   const int p = static_cast<int>(F.cols());
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(p, p);
   for (int j = 0; j < p; ++j) {
@@ -70,7 +71,8 @@ bool RlsOptions::IsValid(std::string* error) const {
                      ". Violated constraint: 0.9 < lambda <= 1 (seed 004)",
                  error) &&
          Require(p0 > 0, "RlsOptions::p0 must be > 0", error) &&
-         Require(instrument_iterations >= 0, "RlsOptions::instrument_iterations must be >= 0", error);
+         Require(instrument_iterations >= 0, "RlsOptions::instrument_iterations must be >= 0",
+                 error);
 }
 
 RlsTrajectory RecursiveLeastSquares(const Eigen::MatrixXd& F, const Eigen::VectorXd& Y,
@@ -102,9 +104,8 @@ RlsTrajectory RecursiveLeastSquares(const Eigen::MatrixXd& F, const Eigen::Vecto
     const bool continues = q == 1 && runs && k > 0 && (*runs)[k] == (*runs)[k - 1];
     sums.Add(Zk, Yk - Fk * theta, continues, o.lambda);
     // Fewer than 2p weighted rows say little of the residual variance: no σ yet.
-    const Eigen::MatrixXd cov = sums.sw > 2.0 * p
-                                    ? sums.Covariance(P, p)
-                                    : Eigen::MatrixXd::Constant(p, p, std::nan(""));
+    const Eigen::MatrixXd cov =
+        sums.sw > 2.0 * p ? sums.Covariance(P, p) : Eigen::MatrixXd::Constant(p, p, std::nan(""));
     out.theta.row(k) = theta.transpose();
     out.sigma.row(k) = cov.diagonal().cwiseMax(0.0).cwiseSqrt().transpose();
     out.t[k] = k * q < static_cast<int>(t.size()) ? t[k * q] : 0.0;
@@ -121,7 +122,8 @@ namespace {
 
 // The rows' times on the campaign clock (trial start + knot time), so that several trials
 // form one history.
-std::vector<double> CampaignTimes(const OneStepRows& rows, const std::vector<const TrialData*>& trials) {
+std::vector<double> CampaignTimes(const OneStepRows& rows,
+                                  const std::vector<const TrialData*>& trials) {
   std::vector<double> t(rows.t.size());
   for (std::size_t k = 0; k < rows.t.size(); ++k) {
     double start = 0.0;
@@ -133,7 +135,7 @@ std::vector<double> CampaignTimes(const OneStepRows& rows, const std::vector<con
   return t;
 }
 
-// The rows' scales: √ of their relative noise weight (Λ_k, seed 004 eq. 16; mean weight 1).
+// The rows' scales: √ of their relative noise weight (Λ_k, ref 004 eq. 16; mean weight 1).
 Eigen::VectorXd RowScales(const OneStepRows& rows) {
   Eigen::VectorXd s = Eigen::VectorXd::Ones(rows.Y.size());
   if (rows.weight.empty()) return s;
@@ -160,7 +162,8 @@ Eigen::VectorXd FinalPhysical(const model::DofModel& model, const Eigen::VectorX
 // for the interpolation defect (OneStepInstruments), iterated until no coefficient moves by
 // more than 5% of its σ (at most `iterations`). False when the instruments cannot be built;
 // `psi` is then left as it was.
-bool InstrumentalRecursion(const model::DofModel& model, const std::vector<const TrialData*>& trials,
+bool InstrumentalRecursion(const model::DofModel& model,
+                           const std::vector<const TrialData*>& trials,
                            const Eigen::VectorXd& theta, const OneStepRows& rows,
                            const Eigen::VectorXd& scales, const std::vector<double>& times,
                            const OneStepOptions& ro, const RlsOptions& o, int iterations,
@@ -178,8 +181,8 @@ bool InstrumentalRecursion(const model::DofModel& model, const std::vector<const
       return done;
     }
     const Eigen::MatrixXd Zw = scales.asDiagonal() * Z;
-    RlsTrajectory next = RecursiveLeastSquares(scales.asDiagonal() * Fc, Yw, times, o, 1,
-                                               &rows.run, &Zw);
+    RlsTrajectory next =
+        RecursiveLeastSquares(scales.asDiagonal() * Fc, Yw, times, o, 1, &rows.run, &Zw);
     const Eigen::VectorXd now = next.theta.bottomRows(1).transpose();
     if (!now.allFinite() || !(now[0] > 0)) return done;
     const Eigen::VectorXd before = psi->theta.bottomRows(1).transpose();
@@ -208,7 +211,8 @@ RlsDofResult RecursiveOneStep(const model::DofModel& model,
   if (rows.Y.size() <= 2 * p) {
     r.status = rows.Y.size() == 0 ? FitStatus::kNoData : FitStatus::kTooFewData;
     r.message = "RLS: " + std::to_string(rows.Y.size()) + " one-step rows for " +
-                std::to_string(p) + " unknowns (more than twice as many needed for the residual "
+                std::to_string(p) +
+                " unknowns (more than twice as many needed for the residual "
                 "variance; longer trials)";
     return r;
   }
@@ -227,7 +231,8 @@ RlsDofResult RecursiveOneStep(const model::DofModel& model,
   for (int k = 0; k < steps; ++k) {
     Eigen::VectorXd phys;
     Eigen::MatrixXd cov;
-    PsiToPhysical(model, theta, r.free, r.psi.theta.row(k).transpose(), r.psi.covariance[k], &phys, &cov);
+    PsiToPhysical(model, theta, r.free, r.psi.theta.row(k).transpose(), r.psi.covariance[k], &phys,
+                  &cov);
     r.theta.row(k) = phys.transpose();
     r.sigma.row(k) = cov.diagonal().cwiseMax(0.0).cwiseSqrt().transpose();
     if (k + 1 == steps) {
@@ -240,7 +245,7 @@ RlsDofResult RecursiveOneStep(const model::DofModel& model,
   r.state[0] = ParameterState::kEstimated;
   for (int j : r.free) r.state[j] = ParameterState::kEstimated;
   r.status = FitStatus::kOk;
-  r.message = "RLS (seed 004 eq. 15, λ = " + Fmt(o.lambda, 6) + ") on " +
+  r.message = "RLS (seed 004 eq. 15, λ = " + model::Significant(o.lambda, 6) + ") on " +
               std::to_string(steps) + " one-step rows" +
               (r.instrumental ? ", instruments from the simulated velocity (recursive IV)"
                               : ", plain least squares (no instruments)");

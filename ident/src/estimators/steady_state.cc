@@ -5,10 +5,8 @@
 #include <limits>
 #include <sstream>
 
-#include "number_text.h"
-#include "stats/model_selection.h"
-#include "number_text.h"
 #include "options_check.h"
+#include "stats/model_selection.h"
 #include "uuvplan/ident/estimators/regression.h"
 #include "uuvplan/ident/stats/significance.h"
 #include "uuvplan/ident/stats/sub_matrix.h"
@@ -21,7 +19,7 @@ namespace uuvplan::ident {
 namespace {
 
 // dF/dξ of the whole model at a context (for the effective variance of a row).
-double ForceSlope(const model::DofModel& model, const model::TermContext& c,
+double ForceSlope(const model::DofModel& model, const model::TermInputs& c,
                   const Eigen::VectorXd& theta) {
   double d = 0.0;
   std::vector<double> J(model.num_parameters() + 1);
@@ -31,9 +29,9 @@ double ForceSlope(const model::DofModel& model, const model::TermContext& c,
   return d;
 }
 
-model::TermContext PointContext(const model::DofModel& model, const SteadyPoint& p,
-                                const Eigen::VectorXd& theta) {
-  model::TermContext c;
+model::TermInputs PointTermInputs(const model::DofModel& model, const SteadyPoint& p,
+                                  const Eigen::VectorXd& theta) {
+  model::TermInputs c;
   c.xi = p.xi;
   c.phi = model.ActuatorInput(p.phi, theta.data());
   c.mapping = p.mapping;
@@ -64,17 +62,46 @@ std::string_view SteadyStatusName(SteadyStatus s) {
 
 bool SteadyStateResult::Estimated(const std::string& name) const {
   for (std::size_t i = 0; i < names.size(); ++i) {
-    if (names[i] == name) return state[i] == ParameterState::kEstimated && status == SteadyStatus::kOk;
+    if (names[i] == name)
+      return state[i] == ParameterState::kEstimated && status == SteadyStatus::kOk;
   }
   return false;
 }
+
+namespace {
+
+// The segments of the windows a user marked steady: each window clipped to the constant-force
+// piece containing its middle (a window must not span a force change).
+std::vector<SteadySegment> UserMarkedSegments(const Signal& s, bool from_position,
+                                              const std::vector<ForcePiece>& pieces,
+                                              const std::vector<std::pair<double, double>>& user,
+                                              double sigma) {
+  std::vector<SteadySegment> found;
+  for (const auto& [a, b] : user) {
+    const double mid = 0.5 * (a + b);
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+      if (pieces[p].t0 <= mid && mid < pieces[p].t1) {
+        SteadySegment seg;
+        seg.piece = static_cast<int>(p);
+        seg.user_marked = true;
+        const double lo = std::max(a, pieces[p].t0), hi = std::min(b, pieces[p].t1);
+        seg.fit =
+            from_position ? ConstantSpeedFit(s, lo, hi, sigma) : MeanSpeedFit(s, lo, hi, sigma);
+        if (seg.fit.ok) found.push_back(seg);
+      }
+    }
+  }
+  return found;
+}
+
+}  // namespace
 
 std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetectionOptions& o,
                                       double force_tolerance,
                                       const std::vector<std::pair<double, double>>* user) {
   std::vector<SteadyPoint> out;
   const std::vector<ForcePiece> pieces = ConstantForcePieces(trial, force_tolerance);
-  // Each source measured on the trial's DOF (positions: seed 000's LS slope; velocities: their
+  // Each source measured on the trial's DOF (positions: ref 000's LS slope; velocities: their
   // mean) gives its own segments; the more precise estimate of each piece is kept.
   std::vector<SteadySegment> segments;
   std::vector<char> segment_from_position;
@@ -83,32 +110,16 @@ std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetect
     if (from_position ? !trial.has_position() : !trial.has_velocity()) continue;
     const Signal& s = from_position ? trial.position : trial.velocity;
     const double sigma = from_position ? trial.position_sigma : trial.velocity_sigma;
-    std::vector<SteadySegment> found;
-    if (user && !user->empty()) {
-      for (const auto& [a, b] : *user) {
-        // The piece containing the window's middle; the window must not span a force change.
-        const double mid = 0.5 * (a + b);
-        for (std::size_t p = 0; p < pieces.size(); ++p) {
-          if (pieces[p].t0 <= mid && mid < pieces[p].t1) {
-            SteadySegment seg;
-            seg.piece = static_cast<int>(p);
-            seg.user_marked = true;
-            const double lo = std::max(a, pieces[p].t0), hi = std::min(b, pieces[p].t1);
-            seg.fit = from_position ? ConstantSpeedFit(s, lo, hi, sigma) : MeanSpeedFit(s, lo, hi, sigma);
-            if (seg.fit.ok) found.push_back(seg);
-          }
-        }
-      }
-    } else {
-      found = DetectSteadySegments(s, from_position, pieces, o, sigma);
-    }
+    std::vector<SteadySegment> found =
+        user && !user->empty() ? UserMarkedSegments(s, from_position, pieces, *user, sigma)
+                               : DetectSteadySegments(s, from_position, pieces, o, sigma);
     // Correlated noise: each speed's σ from the sensor's AR(1) pooled over the segments.
     std::vector<const SpeedFit*> fits;
     for (const SteadySegment& seg : found) fits.push_back(&seg.fit);
     const double rho = PooledNoiseAr1(fits);
     noise_ar1[from_position] = rho;
     for (SteadySegment& seg : found) seg.fit.sigma = Ar1SpeedSigma(seg.fit, rho, sigma);
-    // Moved, not copied: a segment's fit holds per-sample weights and design (issue #16).
+    // Moved, not copied: a segment's fit holds per-sample weights and design.
     for (SteadySegment& seg : found) {
       bool replaced = false;
       for (std::size_t k = 0; k < segments.size(); ++k) {
@@ -162,7 +173,7 @@ void RefineSteadyPoints(const model::DofModel& model, const Eigen::VectorXd& the
       if (t->index == p.trial) trial = t;
     }
     if (!trial) continue;
-    const double kl = -ForceSlope(model, PointContext(model, p, theta), theta);
+    const double kl = -ForceSlope(model, PointTermInputs(model, p, theta), theta);
     if (!(kl > 0)) continue;
     const Signal& s = p.from_position ? trial->position : trial->velocity;
     const double sigma = p.from_position ? trial->position_sigma : trial->velocity_sigma;
@@ -185,7 +196,7 @@ void SteadyRows(const model::DofModel& model, const std::vector<SteadyPoint>& po
   std::vector<double> h(np);
   for (int i = 0; i < n; ++i) {
     double h0 = 0.0;
-    EvaluateRegressor(model, PointContext(model, points[i], theta), theta, h.data(), &h0);
+    EvaluateRegressor(model, PointTermInputs(model, points[i], theta), theta, h.data(), &h0);
     for (int j = 0; j < np; ++j) (*H)(i, j) = h[j];
     (*y)[i] = -h0;
   }
@@ -215,25 +226,28 @@ bool EnoughPoints(const std::vector<int>& cols, const Eigen::VectorXd& y, Steady
   const int n = r->num_points;
   if (cols.empty()) {
     r->status = SteadyStatus::kNotExcited;
-    r->message = n == 0 ? "no steady-state segment found" : "no parameter is excited by the steady segments";
+    r->message =
+        n == 0 ? "no steady-state segment found" : "no parameter is excited by the steady segments";
     return false;
   }
   if (n > 0 && y.cwiseAbs().maxCoeff() == 0.0) {
     r->status = SteadyStatus::kNotExcited;
-    r->message = "every steady segment used a force whose installation coefficient is unknown: the "
-                 "regression is homogeneous (θ = 0 fits it); η must be known (open water) for at "
-                 "least one mapping and direction (seed 000 §II-A) — add legs with an open-water "
-                 "mapping";
+    r->message =
+        "every steady segment used a force whose installation coefficient is unknown: the "
+        "regression is homogeneous (θ = 0 fits it); η must be known (open water) for at "
+        "least one mapping and direction (seed 000 §II-A) — add legs with an open-water "
+        "mapping";
     return false;
   }
   if (n < static_cast<int>(cols.size()) + 1) {
     r->status = SteadyStatus::kTooFewSegments;
     std::vector<std::string> names;
     for (int j : cols) names.push_back(r->names[j]);
-    r->message = "too few steady-state segments: " + std::to_string(n) + " found for " +
-                 std::to_string(cols.size()) + " unknowns (" + model::Join(names) + "); at least " +
-                 std::to_string(cols.size() + 1) +
-                 " are needed (add constant-force legs at other speeds, each long enough to settle)";
+    r->message =
+        "too few steady-state segments: " + std::to_string(n) + " found for " +
+        std::to_string(cols.size()) + " unknowns (" + model::Join(names) + "); at least " +
+        std::to_string(cols.size() + 1) +
+        " are needed (add constant-force legs at other speeds, each long enough to settle)";
     for (int j : cols) r->state[j] = ParameterState::kFixed;
     return false;
   }
@@ -250,11 +264,13 @@ std::vector<SteadyPoint> DistinctPoints(const model::DofModel& model,
   for (const SteadyPoint& a : points) {
     bool seen = false;
     for (const SteadyPoint& b : distinct) {
-      bool same = a.mapping == b.mapping && a.ballast_steps == b.ballast_steps &&
-                  std::abs(a.phi - b.phi) <= 1e-6 * std::max({1.0, std::abs(a.phi), std::abs(b.phi)});
+      bool same =
+          a.mapping == b.mapping && a.ballast_steps == b.ballast_steps &&
+          std::abs(a.phi - b.phi) <= 1e-6 * std::max({1.0, std::abs(a.phi), std::abs(b.phi)});
       for (int k = 0; k < model::kNumDofs && same; ++k) {
         if (k == model::Index(model.dof())) continue;
-        same = std::abs(a.velocities[k] - b.velocities[k]) <= 1e-3 * (1 + std::abs(b.velocities[k]));
+        same =
+            std::abs(a.velocities[k] - b.velocities[k]) <= 1e-3 * (1 + std::abs(b.velocities[k]));
       }
       seen = seen || same;
     }
@@ -315,7 +331,8 @@ void ReportSingular(const model::DofModel& model, const Eigen::MatrixXd& Hall,
   r->message = "steady-state regression is singular: the " + std::to_string(n) +
                " steady segments hold only " + std::to_string(d) +
                " distinct operating point(s) for " + std::to_string(p) + " unknowns (" +
-               model::Join(col_names) + "), condition number " + Fmt(r->condition_number, 3) +
+               model::Join(col_names) + "), condition number " +
+               model::Significant(r->condition_number, 3) +
                " of the measured rows; not identifiable: " + model::Join(null_names) +
                " (add steady legs at other force levels, in both directions and with each "
                "mapping)";
@@ -337,7 +354,7 @@ LinearFit WeightedFit(const model::DofModel& model, const std::vector<SteadyPoin
   for (int it = 0; it < std::max(1, o.reweight_iterations); ++it) {
     for (int c = 0; c < p; ++c) (*theta)[cols[c]] = fit.theta[c];
     for (int i = 0; i < n; ++i) {
-      const double slope = ForceSlope(model, PointContext(model, points[i], *theta), *theta);
+      const double slope = ForceSlope(model, PointTermInputs(model, points[i], *theta), *theta);
       const double var = slope * slope * points[i].sigma_xi * points[i].sigma_xi;
       w[i] = var > 0 ? 1.0 / var : 1.0;
     }
@@ -346,7 +363,7 @@ LinearFit WeightedFit(const model::DofModel& model, const std::vector<SteadyPoin
   return fit;
 }
 
-// The fit with model selection (seed 000 §IV-D): drop the worst insignificant prunable
+// The fit with model selection (ref 000 §IV-D): drop the worst insignificant prunable
 // parameter and refit until none is left. Fills r's theta, state and estimates.
 LinearFit FitWithSelection(const model::DofModel& model, const std::vector<SteadyPoint>& points,
                            const Eigen::MatrixXd& Hall, const Eigen::VectorXd& y,
@@ -383,8 +400,9 @@ LinearFit FitWithSelection(const model::DofModel& model, const std::vector<Stead
     before_value[j] = fit.theta[worst];
     before_sigma[j] = std::sqrt(fit.covariance(worst, worst));
     theta[j] = 0.0;
-    r->notes.push_back(r->names[j] + " = " + Fmt(before_value[j]) + " ± " + Fmt(before_sigma[j]) +
-                       " has a percentile error of " + Fmt(worst_pe, 3) +
+    r->notes.push_back(r->names[j] + " = " + model::Significant(before_value[j], 4) + " ± " +
+                       model::Significant(before_sigma[j], 4) + " has a percentile error of " +
+                       model::Significant(worst_pe, 3) +
                        "% > 51.02%: insignificant at 95%, dropped and the rest refitted "
                        "(seed 000 §IV-D)");
     cols->erase(cols->begin() + worst);
@@ -393,10 +411,11 @@ LinearFit FitWithSelection(const model::DofModel& model, const std::vector<Stead
   r->theta = theta;
   for (std::size_t c = 0; c < cols->size(); ++c) {
     r->state[(*cols)[c]] = ParameterState::kEstimated;
-    for (std::size_t d = 0; d < cols->size(); ++d) r->covariance((*cols)[c], (*cols)[d]) = fit.covariance(c, d);
+    for (std::size_t d = 0; d < cols->size(); ++d)
+      r->covariance((*cols)[c], (*cols)[d]) = fit.covariance(c, d);
   }
-  r->estimates = EstimatedAndDropped(r->names, r->theta, r->covariance, r->state, before_value,
-                                     before_sigma);
+  r->estimates =
+      EstimatedAndDropped(r->names, r->theta, r->covariance, r->state, before_value, before_sigma);
   return fit;
 }
 
@@ -432,13 +451,14 @@ SteadyStateResult SteadyStateFit(const model::DofModel& model,
   if (fit.status == FitStatus::kOk) {
     r.status = SteadyStatus::kOk;
     r.message = std::to_string(r.num_points) + " steady segments, condition number " +
-                Fmt(fit.condition_number, 3);
+                model::Significant(fit.condition_number, 3);
   } else {
     r.status = SteadyStatus::kIllConditioned;
-    r.message = "steady-state regression is ill-conditioned (condition number " +
-                Fmt(fit.condition_number, 3) + "); not identifiable from these segments: " +
-                JoinNames(fit.not_identifiable, col_names) +
-                " (add steady legs at other speeds / in the other direction / with other mappings)";
+    r.message =
+        "steady-state regression is ill-conditioned (condition number " +
+        model::Significant(fit.condition_number, 3) +
+        "); not identifiable from these segments: " + JoinNames(fit.not_identifiable, col_names) +
+        " (add steady legs at other speeds / in the other direction / with other mappings)";
   }
   return r;
 }

@@ -1,5 +1,5 @@
 // Unit and sign sanity of a campaign's logs (input_sanity.h). The comparisons are on the
-// Savitzky–Golay smoothed signals (seed 000 §IV-D window at the log's rate), so that the noise
+// Savitzky–Golay smoothed signals (ref 000 §IV-D window at the log's rate), so that the noise
 // of a differentiated position does not decide; where it still does, the rate's integral is
 // compared with the raw position's changes over windows (RateAgainstIncrements).
 #include "uuvplan/ident/prepare/input_sanity.h"
@@ -11,10 +11,10 @@
 #include <initializer_list>
 #include <optional>
 
-#include "stats/centred_moments.h"
-#include "number_text.h"
 #include "options_check.h"
+#include "stats/centred_moments.h"
 #include "uuvplan/ident/prepare/velocity_estimation.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -28,8 +28,9 @@ constexpr std::size_t kMinSamples = 30;  // fewer aligned samples: no verdict
 Signal Finite(model::TimesView t, const std::vector<double>& y) {
   Signal s;
   const std::size_t n = std::min(t.size(), y.size());
-  const auto finite = static_cast<std::size_t>(
-      std::count_if(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(n), [](double v) { return std::isfinite(v); }));
+  const auto finite =
+      static_cast<std::size_t>(std::count_if(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(n),
+                                             [](double v) { return std::isfinite(v); }));
   s.t.reserve(finite);
   s.y.reserve(finite);
   for (std::size_t i = 0; i < n; ++i) {
@@ -41,7 +42,7 @@ Signal Finite(model::TimesView t, const std::vector<double>& y) {
   return s;
 }
 
-// A log column's finite samples with the Savitzky–Golay filter seed 000 would smooth them with
+// A log column's finite samples with the Savitzky–Golay filter ref 000 would smooth them with
 // (window at the log's rate). The smoothed signal is computed when a check needs it, stored
 // (Smoothed) or streamed (ForEachSmoothed): a long log's check holds no per-sample copy.
 struct Smoothable {
@@ -65,7 +66,7 @@ std::optional<Smoothable> SmoothableOf(const Signal& s, double input_time_scale)
 // unchanged when this object goes: every all-finite column, the times shared; or, when there is
 // none, the one column with few gaps (non-finite cells in at most 1/8 of the rows), compacted in
 // place with the rows it drops kept aside. A million-row log's check then holds no second copy
-// of it (issue #16).
+// of it.
 class OwnColumns {
  public:
   // `lender`, when given, is `log` itself.
@@ -335,24 +336,26 @@ void CheckRateAgainstPosition(TrialCheck& c) {
     double vdx = 0, dxdx = 0;
     for (std::size_t i = 0; i < dx.size(); ++i) vdx += v[i] * dx[i], dxdx += dx[i] * dx[i];
     ratio = vdx / dxdx;
-    seen = c.vel_name + " is " + Fmt(ratio, 3) + " × the derivative of " + c.pos_name +
-           " (correlation " + Fmt(corr, 3) + ")";
+    seen = c.vel_name + " is " + model::Significant(ratio, 3) + " × the derivative of " +
+           c.pos_name + " (correlation " + model::Significant(corr, 3) + ")";
   } else if (const IncrementRatio inc =
                  RateAgainstIncrements(c.pos->raw, c.vel->raw, c.o.increment_window_s);
              inc.windows >= 5 && std::abs(inc.cosine) >= c.o.min_correlation) {
     from_windows = true;
     ratio = inc.ratio;
-    seen = "the integral of " + c.vel_name + " is " + Fmt(ratio, 3) + " × the change of " +
-           c.pos_name + " over " + std::to_string(inc.windows) + " windows of " +
-           Fmt(c.o.increment_window_s, 3) + " s (cosine " + Fmt(inc.cosine, 3) +
-           "; the derivative is too noisy to compare, correlation " + Fmt(corr, 3) + ")";
+    seen = "the integral of " + c.vel_name + " is " + model::Significant(ratio, 3) +
+           " × the change of " + c.pos_name + " over " + std::to_string(inc.windows) +
+           " windows of " + model::Significant(c.o.increment_window_s, 3) + " s (cosine " +
+           model::Significant(inc.cosine, 3) +
+           "; the derivative is too noisy to compare, correlation " + model::Significant(corr, 3) +
+           ")";
   } else {
     const double follow = Correlation(v, s.columns[2]);
     if (std::abs(follow) >= c.o.follow_correlation && std::abs(corr) < c.o.min_correlation / 2) {
       c.Report(c.pos_name,
-               "follows " + c.vel_name + " (correlation " + Fmt(follow, 3) +
+               "follows " + c.vel_name + " (correlation " + model::Significant(follow, 3) +
                    ") instead of integrating it (correlation of " + c.vel_name +
-                   " with its derivative " + Fmt(corr, 3) + ")",
+                   " with its derivative " + model::Significant(corr, 3) + ")",
                "it holds a velocity, not a position in " + PositionUnitOf(c.dof) +
                    " (log the position, or leave the column out)");
     }
@@ -368,7 +371,7 @@ void CheckRateAgainstPosition(TrialCheck& c) {
              "the two columns have opposite sign conventions: negate the one that is wrong "
              "(contract §Conventions)");
   } else if (!from_windows && (std::abs(ratio) > c.o.unit_ratio_limit ||
-                                std::abs(ratio) < 1.0 / c.o.unit_ratio_limit)) {
+                               std::abs(ratio) < 1.0 / c.o.unit_ratio_limit)) {
     c.Report(c.vel_name, seen,
              "the two columns are in different units: expected " + PositionUnitOf(c.dof) + " and " +
                  RateUnitOf(c.dof));
@@ -391,8 +394,8 @@ void CheckRotationRate(TrialCheck& c) {
   if (!(q > c.o.max_rate)) return;
   const std::string column = measured ? c.vel_name : c.pos_name;
   c.Report(column,
-           std::string(measured ? "its rate" : "its derivative") + " reaches " + Fmt(q, 3) +
-               " rad/s (99th percentile), more than one turn per second",
+           std::string(measured ? "its rate" : "its derivative") + " reaches " +
+               model::Significant(q, 3) + " rad/s (99th percentile), more than one turn per second",
            measured ? "likely in deg/s: expected rad/s (multiply by π/180)"
                     : "likely in degrees: expected rad (multiply by π/180)");
 }
@@ -435,8 +438,10 @@ void CheckForceAgainstMotion(TrialCheck& c) {
     if (as_velocity.r2 >= c.o.min_fit && as_velocity.r2 >= as_position.r2 + c.o.fit_margin &&
         as_velocity.theta[0] > 0 && as_velocity.theta[1] > 0) {
       c.Report(c.pos_name,
-               "the logged force reads as m·dx/dt + k·x of it (R² " + Fmt(as_velocity.r2, 3) +
-                   ", m, k > 0), not as m·d²x/dt² + k·dx/dt (R² " + Fmt(as_position.r2, 3) + ")",
+               "the logged force reads as m·dx/dt + k·x of it (R² " +
+                   model::Significant(as_velocity.r2, 3) +
+                   ", m, k > 0), not as m·d²x/dt² + k·dx/dt (R² " +
+                   model::Significant(as_position.r2, 3) + ")",
                "it holds a velocity in " + RateUnitOf(c.dof) + ", not a position: name it " +
                    c.vel_name);
       return;
@@ -444,11 +449,14 @@ void CheckForceAgainstMotion(TrialCheck& c) {
   }
   if (as_position.r2 >= c.o.min_sign_fit && as_position.theta[0] < 0 && as_position.theta[1] < 0) {
     c.Report(c.force_name,
-             "F = m·a + c·ν + b fits the motion with m = " + Fmt(as_position.theta[0], 3) +
-                 " and c = " + Fmt(as_position.theta[1], 3) + " (both < 0, R² " +
-                 Fmt(as_position.r2, 3) + "): the force and the motion have opposite signs",
-             "negate " + c.force_name + " (or the motion columns, or the mapping's direction; "
-             "contract §Conventions)");
+             "F = m·a + c·ν + b fits the motion with m = " +
+                 model::Significant(as_position.theta[0], 3) +
+                 " and c = " + model::Significant(as_position.theta[1], 3) + " (both < 0, R² " +
+                 model::Significant(as_position.r2, 3) +
+                 "): the force and the motion have opposite signs",
+             "negate " + c.force_name +
+                 " (or the motion columns, or the mapping's direction; "
+                 "contract §Conventions)");
   }
 }
 
@@ -465,9 +473,9 @@ void CheckStuckSensor(TrialCheck& c) {
     const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
     if (*lo != *hi) continue;
     c.Report(column,
-             "every one of its " + std::to_string(y.size()) + " values is " + Fmt(*lo, 4) +
-                 " while " + c.force_name + " commands up to " + Fmt(push, 3) + " " +
-                 std::string(model::ForceUnit(c.dof)),
+             "every one of its " + std::to_string(y.size()) + " values is " +
+                 model::Significant(*lo, 4) + " while " + c.force_name + " commands up to " +
+                 model::Significant(push, 3) + " " + std::string(model::ForceUnit(c.dof)),
              "a stuck or disconnected sensor, or a vehicle that did not move: check the log, "
              "or leave the column empty");
   }
@@ -507,9 +515,12 @@ bool InputSanityOptions::IsValid(std::string* error) const {
                  error);
 }
 
-std::string InputProblem::Text() const { return file + ": column " + column + ": " + finding + " — " + fix; }
+std::string InputProblem::Text() const {
+  return file + ": column " + column + ": " + finding + " — " + fix;
+}
 
-std::vector<InputProblem> CheckInputSanity(const model::Campaign& campaign, const InputSanityOptions& o) {
+std::vector<InputProblem> CheckInputSanity(const model::Campaign& campaign,
+                                           const InputSanityOptions& o) {
   std::vector<InputProblem> out;
   for (const model::TrialEntry& e : campaign.trials) CheckTrial(e, nullptr, o, &out);
   return out;

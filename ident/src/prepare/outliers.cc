@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "number_text.h"
 #include "options_check.h"
 #include "uuvplan/model/util/median.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -68,7 +68,10 @@ class LocalPredictor {
  public:
   /// `piece`: index of the piece between command steps of each sample (empty: one piece).
   LocalPredictor(const Signal& s, int hw, const std::vector<char>& skip, std::vector<int> piece)
-      : s_(s), hw_(hw), skip_(skip), piece_(std::move(piece)),
+      : s_(s),
+        hw_(hw),
+        skip_(skip),
+        piece_(std::move(piece)),
         uniform_(UniformQuadraticWeights(s, hw)) {}
 
   /// y_i − quadratic prediction; NaN where fewer than 4 neighbours remain.
@@ -106,7 +109,8 @@ class LocalPredictor {
     };
     int worst = -1;
     for (int j : nb) {
-      if (!std::isnan(residual[j]) && (worst < 0 || std::abs(residual[j]) > std::abs(residual[worst]))) {
+      if (!std::isnan(residual[j]) &&
+          (worst < 0 || std::abs(residual[j]) > std::abs(residual[worst]))) {
         worst = j;
       }
     }
@@ -145,8 +149,7 @@ class LocalPredictor {
 
 bool OutlierOptions::IsValid(std::string* error) const {
   return Require(half_window >= 2 && threshold > 0 && !(noise_floor < 0) &&
-                     !(truncation_allowance < 0) && finding_fraction >= 0 &&
-                     finding_fraction <= 1,
+                     !(truncation_allowance < 0) && finding_fraction >= 0 && finding_fraction <= 1,
                  "OutlierOptions: need half_window >= 2, threshold > 0, noise_floor >= 0, "
                  "truncation_allowance >= 0, finding_fraction in [0, 1]",
                  error);
@@ -156,14 +159,14 @@ std::string OutlierFinding(const std::string& trial, const std::string& signal,
                            std::size_t excluded, std::size_t total, const OutlierOptions& o) {
   if (total == 0 || !(static_cast<double>(excluded) > o.finding_fraction * total)) return "";
   return trial + ": " + std::to_string(excluded) + " of " + std::to_string(total) + " " + signal +
-         " samples (" + Fmt(100.0 * excluded / total, 3) + "%) excluded as outliers, more than " +
-         Fmt(100.0 * o.finding_fraction, 3) +
+         " samples (" + model::Significant(100.0 * excluded / total, 3) +
+         "%) excluded as outliers, more than " + model::Significant(100.0 * o.finding_fraction, 3) +
          "%: a sensor fault, a unit or timing mistake, or motion the outlier test takes for "
          "noise — look at the log before trusting this fit (the excluded times are in --json)";
 }
 
-std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& o,
-                                    double known_sigma, const CommandSteps* steps) {
+std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& o, double known_sigma,
+                                    const CommandSteps* steps) {
   std::vector<Outlier> out;
   const std::size_t n = s.size();
   if (n < 8) return out;

@@ -6,12 +6,12 @@
 #include <sstream>
 #include <utility>
 
-#include "number_text.h"
 #include "options_check.h"
 #include "uuvplan/ident/prepare/speed_fit.h"
 #include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/median.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -76,7 +76,6 @@ double MedianRate(const Signal& s) {
   return h > 0 ? 1.0 / h : 1.0;
 }
 
-
 // Whether the trial starts at rest: the mean of the first velocity samples (at least 0.2 s),
 // or the initial velocity of a quadratic through the first window of positions, is within 3σ
 // of zero. (At the start of a trial from rest the motion is ½·a·t², a quadratic.)
@@ -102,8 +101,8 @@ bool StartsAtRest(const TrialData& d) {
   }
   const Eigen::Matrix3d N = V.transpose() * V;
   const Eigen::Vector3d c = N.ldlt().solve(V.transpose() * y);
-  const double sigma = d.position_sigma > 0 ? d.position_sigma
-                                            : (y - V * c).norm() / std::sqrt(std::max(1, n - 3));
+  const double sigma =
+      d.position_sigma > 0 ? d.position_sigma : (y - V * c).norm() / std::sqrt(std::max(1, n - 3));
   const double sd = sigma * std::sqrt(N.inverse()(1, 1));
   return std::abs(c[1]) < 3.0 * sd;
 }
@@ -111,7 +110,8 @@ bool StartsAtRest(const TrialData& d) {
 }  // namespace
 
 bool TrialDataOptions::IsValid(std::string* error) const {
-  const bool window_ok = sg_window == 0 || (sg_window > 0 && sg_window % 2 == 1 && sg_window >= sg_order + 2);
+  const bool window_ok =
+      sg_window == 0 || (sg_window > 0 && sg_window % 2 == 1 && sg_window >= sg_order + 2);
   return Require(sg_order >= 1 && sg_order <= 8 && window_ok,
                  "TrialDataOptions: sg_order in [1, 8]; sg_window 0 (auto) or odd >= order + 2",
                  error) &&
@@ -180,18 +180,18 @@ void FindForceGap(TrialData* d) {
 
 // The logged force of the DOF and the mapping in force on each row (zero-order hold,
 // notes/pitfalls.md), as the trial's excitation; the command steps (force_jumps).
-void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle,
-               const std::string& where, TrialData* d) {
+void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle, const std::string& where,
+               TrialData* d) {
   const model::TrialLog& log = e.log;
   const std::string dof_name(model::DofName(d->dof));
   if (!log.HasForce(d->dof)) {
-    throw model::InputError(where, "no column force_" + dof_name +
-                                       ": expected the nominal force of the trial's DOF");
+    throw model::InputError(
+        where, "no column force_" + dof_name + ": expected the nominal force of the trial's DOF");
   }
   const int default_mapping = e.mapping.empty() ? -1 : vehicle.MappingIndex(e.mapping);
   if (!e.mapping.empty() && default_mapping < 0) {
-    throw model::InputError(where, "mapping '" + e.mapping + "' is not a mapping of vehicle '" +
-                                       vehicle.name + "'");
+    throw model::InputError(
+        where, "mapping '" + e.mapping + "' is not a mapping of vehicle '" + vehicle.name + "'");
   }
   std::vector<int> name_to_vehicle(log.mapping_names.size(), -1);
   for (std::size_t i = 0; i < log.mapping_names.size(); ++i) {
@@ -236,7 +236,8 @@ void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle,
   const auto [fmin, fmax] = std::minmax_element(d->force.begin(), d->force.end());
   const double range = *fmax - *fmin;
   for (std::size_t i = 1; i < d->force.size(); ++i) {
-    if (d->mapping[i] != d->mapping[i - 1] || std::abs(d->force[i] - d->force[i - 1]) > 0.05 * range) {
+    if (d->mapping[i] != d->mapping[i - 1] ||
+        std::abs(d->force[i] - d->force[i - 1]) > 0.05 * range) {
       d->force_jumps.push_back(d->force_t[i]);
     }
   }
@@ -255,7 +256,8 @@ void UnwrapHeading(Signal* pos, TrialData* d) {
     }
     pos->y[i] += offset;
   }
-  if (jumps > 0) d->notes.push_back("heading unwrapped (" + std::to_string(jumps) + " jumps of 2π)");
+  if (jumps > 0)
+    d->notes.push_back("heading unwrapped (" + std::to_string(jumps) + " jumps of 2π)");
 }
 
 // The share of a record's samples in motion (not exactly 0) that repeat the previous value
@@ -301,17 +303,21 @@ Signal Clean(Signal s, double declared, const char* what, const TrialDataOptions
     }
     *out.outliers = DetectOutliers(s, test, declared, &steps);
     if (!out.outliers->empty()) {
-      d->notes.push_back(std::to_string(out.outliers->size()) + " " + what + " outlier(s) excluded (first at t = " +
-                         Fmt(out.outliers->front().t + d->time_offset) + " s, residual " +
-                         Fmt(out.outliers->front().residual) + ")");
+      d->notes.push_back(std::to_string(out.outliers->size()) + " " + what +
+                         " outlier(s) excluded (first at t = " +
+                         model::Significant(out.outliers->front().t + d->time_offset, 4) +
+                         " s, residual " + model::Significant(out.outliers->front().residual, 4) +
+                         ")");
       s = RemoveSamples(s, *out.outliers);
     }
   }
   *out.estimated = NoiseSigmaFromDifferences(s);
   *out.sigma = declared > 0 ? declared : *out.estimated;
   if (declared > 0 && *out.estimated > 0 && (*out.estimated > 3 * declared)) {
-    d->notes.push_back(std::string(what) + " noise estimated from the data (" + Fmt(*out.estimated) +
-                       ") is more than 3× the declared sensor sigma (" + Fmt(declared) + ")");
+    d->notes.push_back(std::string(what) + " noise estimated from the data (" +
+                       model::Significant(*out.estimated, 4) +
+                       ") is more than 3× the declared sensor sigma (" +
+                       model::Significant(declared, 4) + ")");
   }
   return s;
 }
@@ -373,7 +379,7 @@ void CleanMeasurements(Measurements m, const model::Vehicle& vehicle, const Tria
     for (const Gap& g : d->gaps) longest = std::max(longest, g.t1 - g.t0);
     d->notes.push_back(std::to_string(d->gaps.size()) + " gap(s) in the " +
                        (d->has_velocity() ? "velocity" : "position") + " samples (longest " +
-                       Fmt(longest) + " s); filters do not cross them");
+                       model::Significant(longest, 4) + " s); filters do not cross them");
   }
 }
 
@@ -401,18 +407,17 @@ int FilterWindow(const TrialDataOptions& o, const Signal& main, const std::strin
   const int run = LongestRun(main.t, gaps);
   const int fits = run % 2 == 1 ? run : run - 1;  // the longest odd window the data holds
   if (o.sg_window > run) {
-    throw model::InputError(where, "velocity filter window (--sg-window) of " +
-                                       std::to_string(o.sg_window) +
-                                       " points, but the longest stretch of " + what +
-                                       " samples without a gap has " + std::to_string(run) +
-                                       ": expected at most " + std::to_string(fits));
+    throw model::InputError(
+        where, "velocity filter window (--sg-window) of " + std::to_string(o.sg_window) +
+                   " points, but the longest stretch of " + what + " samples without a gap has " +
+                   std::to_string(run) + ": expected at most " + std::to_string(fits));
   }
   if (o.sg_window > 0) return o.sg_window;
   const int rate_window = SavitzkyGolayWindow(MedianRate(main), time_scale);
   return fits >= o.sg_order + 2 ? std::min(rate_window, fits) : rate_window;
 }
 
-// Velocity estimate (seed 000 §IV-D: Savitzky–Golay, 4th order, 21–41 points): the smoothed
+// Velocity estimate (ref 000 §IV-D: Savitzky–Golay, 4th order, 21–41 points): the smoothed
 // measured velocity, or the derivative of the smoothed position.
 void EstimateVelocity(const TrialDataOptions& o, const std::string& where, TrialData* d) {
   const double time_scale = InputTimeScale(d->force_t, d->force);
@@ -476,9 +481,10 @@ double FirstForceTime(const model::TrialLog& log, Dof dof, TrialData* d) {
   std::size_t i = 0;
   while (i < f.size() && std::isnan(f[i])) ++i;
   if (i == 0 || i >= f.size()) return log.t.front();
-  d->notes.push_back("the first " + Fmt(log.t[i] - log.t.front()) +
-                     " s of the log precede its first force row (t = " + Fmt(log.t[i]) +
-                     " s): their measurements are not used (the force there was not logged)");
+  d->notes.push_back(
+      "the first " + model::Significant(log.t[i] - log.t.front(), 4) +
+      " s of the log precede its first force row (t = " + model::Significant(log.t[i], 4) +
+      " s): their measurements are not used (the force there was not logged)");
   return log.t[i];
 }
 
@@ -518,7 +524,8 @@ std::vector<ForcePiece> ConstantForcePieces(const TrialData& d, double tol) {
     const int m = d.mapping[i];
     if (!pieces.empty()) {
       ForcePiece& last = pieces.back();
-      const double scale = std::max({std::abs(f), std::abs(last.force), 1e-9 / std::max(tol, 1e-300)});
+      const double scale =
+          std::max({std::abs(f), std::abs(last.force), 1e-9 / std::max(tol, 1e-300)});
       if (last.mapping == m && std::abs(f - last.force) <= tol * scale) continue;
       last.t1 = d.force_t[i];
     }
@@ -585,8 +592,8 @@ double VelocityNoiseSigma(const TrialData& trial) {
   if (!(sigma > 0)) return 0.0;
   if (!trial.velocity_from_position) return v.value_gain * sigma;
   if (trial.position_noise_ar1 > 0 && !v.derivative_weights.empty()) {
-    return sigma * std::sqrt(std::max(0.0, Ar1QuadraticForm(v.derivative_weights,
-                                                            trial.position_noise_ar1)));
+    return sigma * std::sqrt(std::max(
+                       0.0, Ar1QuadraticForm(v.derivative_weights, trial.position_noise_ar1)));
   }
   return v.derivative_gain * sigma;
 }

@@ -76,8 +76,9 @@ void PolynomialWeights(const std::vector<double>& u, int order, double at, Eigen
 
 // The local polynomial's value, slope and curvature at sample `at`: the weights applied to
 // the w samples from `y` (u in units of the step h).
-SmoothedSample LocalFit(const Eigen::VectorXd& wv, const Eigen::VectorXd& wd, const Eigen::VectorXd& w2,
-                        const double* y, int w, double h, std::size_t at, bool edge, int run) {
+SmoothedSample LocalFit(const Eigen::VectorXd& wv, const Eigen::VectorXd& wd,
+                        const Eigen::VectorXd& w2, const double* y, int w, double h, std::size_t at,
+                        bool edge, int run) {
   double v = 0.0, d = 0.0, a = 0.0;
   for (int j = 0; j < w; ++j) {
     v += wv[j] * y[j];
@@ -235,7 +236,8 @@ double InputTimeScale(model::TimesView t, const std::vector<double>& f) {
   if (crossings.size() < 3) return t.back() - t.front();
   // Full periods (every other crossing), robust to a mean that is off the sine's offset.
   std::vector<double> periods;
-  for (std::size_t i = 2; i < crossings.size(); ++i) periods.push_back(crossings[i] - crossings[i - 2]);
+  for (std::size_t i = 2; i < crossings.size(); ++i)
+    periods.push_back(crossings[i] - crossings[i - 2]);
   return model::Median(periods);
 }
 
@@ -271,12 +273,15 @@ int SmoothedSignal::run(std::size_t i) const {
 
 SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
   SmoothedSignal out = Unsmoothed(s.t, true);
-  SmoothRuns(s, options, [&out](const SmoothedSample& p) {
-    out.value[p.i] = p.value;
-    out.derivative[p.i] = p.derivative;
-    out.second_derivative[p.i] = p.second_derivative;
-    out.edge[p.i] = p.edge;
-  }, &out);
+  SmoothRuns(
+      s, options,
+      [&out](const SmoothedSample& p) {
+        out.value[p.i] = p.value;
+        out.derivative[p.i] = p.derivative;
+        out.second_derivative[p.i] = p.second_derivative;
+        out.edge[p.i] = p.edge;
+      },
+      &out);
   out.run_starts = RunStarts(s.t, options.gap_factor);
   return out;
 }
@@ -304,8 +309,8 @@ void ForEachSmoothed(const Signal& s, const SavitzkyGolayOptions& options,
 }
 
 std::vector<SampleWeights> SavitzkyGolayDerivativeWeights(const Signal& s,
-                                                         const SavitzkyGolayOptions& options,
-                                                         std::size_t begin, std::size_t end) {
+                                                          const SavitzkyGolayOptions& options,
+                                                          std::size_t begin, std::size_t end) {
   std::vector<SampleWeights> out;
   Eigen::VectorXd wv, wd, w2;
   for (const auto& [b, e] : Runs(s.t, options.gap_factor)) {
@@ -325,8 +330,7 @@ std::vector<SampleWeights> SavitzkyGolayDerivativeWeights(const Signal& s,
   return out;
 }
 
-double PositionNoiseAr1(const Signal& position, const SavitzkyGolayOptions& options,
-                        double sigma) {
+double PositionNoiseAr1(const Signal& position, const SavitzkyGolayOptions& options, double sigma) {
   const int w = options.window, q = std::min(options.order, options.window - 3) + 1;
   std::vector<std::pair<std::size_t, std::size_t>> blocks;
   for (const auto& [b, e] : Runs(position.t, options.gap_factor)) {

@@ -268,16 +268,18 @@ PrewhitenedCovariance PrewhitenedSandwich(const Eigen::MatrixXd& J, const Eigen:
   const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = J;
   for (std::size_t g = 0; g < plan.runs.size(); ++g) {
     sum.StartGroup(plan.rho[g]);
-    for (int i = plan.runs[g].first; i < plan.runs[g].second; ++i) sum.Add(rows.row(i).data(), r[i]);
+    for (int i = plan.runs[g].first; i < plan.runs[g].second; ++i)
+      sum.Add(rows.row(i).data(), r[i]);
   }
   const Eigen::MatrixXd& S = sum.Sum();
   out.blocks = sum.batches();
   // The scores sum to zero at the solution (p constraints): B/(B − p) as HC1's n/(n − p).
   const double correction =
       out.blocks > p ? static_cast<double>(out.blocks) / (out.blocks - p) : 1.0;
-  const Eigen::MatrixXd Ainv = bread_inverse ? *bread_inverse
-                                             : Eigen::MatrixXd((J.transpose() * J).ldlt().solve(
-                                                   Eigen::MatrixXd::Identity(p, p)));
+  const Eigen::MatrixXd Ainv =
+      bread_inverse
+          ? *bread_inverse
+          : Eigen::MatrixXd((J.transpose() * J).ldlt().solve(Eigen::MatrixXd::Identity(p, p)));
   out.covariance = correction * Ainv * S * Ainv.transpose();
   return out;
 }

@@ -38,8 +38,9 @@ std::vector<PruneCandidate> CandidatesOf(const std::vector<std::string>& names,
 int WorstInsignificant(const std::vector<PruneCandidate>& candidates,
                        const std::vector<std::string>& prunable, double max_correlation,
                        double* worst_pe, std::vector<std::string>* kept) {
-  const auto drag_terms = std::count_if(candidates.begin(), candidates.end(),
-                                        [](const PruneCandidate& c) { return IsDragParameter(c.name); });
+  const auto drag_terms =
+      std::count_if(candidates.begin(), candidates.end(),
+                    [](const PruneCandidate& c) { return IsDragParameter(c.name); });
   int worst = -1;
   *worst_pe = kInsignificantPercentileError;
   for (std::size_t c = 0; c < candidates.size(); ++c) {
@@ -51,12 +52,12 @@ int WorstInsignificant(const std::vector<PruneCandidate>& candidates,
     const bool non_physical = IsDragParameter(p.name) && p.value < 0;
     if (p.correlation > max_correlation && !non_physical) {
       if (kept) {
-        kept->push_back(
-            p.name + " = " + model::Significant(p.value, 4) + " ± " +
-            model::Significant(p.sigma, 4) + " is insignificant but kept: correlated at " +
-            model::Decimals(p.correlation, 2) +
-            " with another parameter, so dropping it would report that one's σ as if " +
-            p.name + " were exactly 0 (model selection, docs/identification.md)");
+        kept->push_back(p.name + " = " + model::Significant(p.value, 4) + " ± " +
+                        model::Significant(p.sigma, 4) +
+                        " is insignificant but kept: correlated at " +
+                        model::Decimals(p.correlation, 2) +
+                        " with another parameter, so dropping it would report that one's σ as if " +
+                        p.name + " were exactly 0 (model selection, docs/identification.md)");
       }
       continue;
     }

@@ -1,4 +1,4 @@
-// Model selection by significance (seed 000 §IV-D), shared by the steady-state and the
+// Model selection by significance (ref 000 §IV-D), shared by the steady-state and the
 // output-error fits: drop the prunable parameter with the largest percentile error above
 // 51.02% and refit, until every prunable parameter is significant.
 #pragma once
@@ -33,7 +33,7 @@ std::vector<PruneCandidate> CandidatesOf(const std::vector<std::string>& names,
 /// The index in `candidates` of the parameter to drop, or -1: the one named in `prunable`
 /// with the largest percentile error above 51.02% (first of equals), never the last drag term
 /// among the candidates (a model without drag has no steady state), nor one correlated with
-/// another above `max_correlation` (kDropCorrelation; 1: seed 000's rule, any) unless it is a
+/// another above `max_correlation` (kDropCorrelation; 1: ref 000's rule, any) unless it is a
 /// negative drag term (non-physical: fixed at its bound 0). *worst_pe is set to its
 /// percentile error. `kept`, when given, gets a note for every insignificant parameter kept
 /// for its correlation.

@@ -2,14 +2,13 @@
 
 #include <cmath>
 #include <map>
-#include <sstream>
 #include <tuple>
 
+#include "diagnosis/parallel.h"
+#include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
-#include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/util/seed.h"
-#include "diagnosis/parallel.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -38,8 +37,10 @@ double TrueParameter(const model::Truth& truth, model::Dof dof, const std::strin
   const auto it = truth.dofs.find(dof);
   if (it != truth.dofs.end()) {
     if (auto p = it->second.params.find(name); p != it->second.params.end()) return p->second;
-    if (name == model::param::kLinearDragNeg) return TrueParameter(truth, dof, model::param::kLinearDrag);
-    if (name == model::param::kQuadraticDragNeg) return TrueParameter(truth, dof, model::param::kQuadraticDrag);
+    if (name == model::param::kLinearDragNeg)
+      return TrueParameter(truth, dof, model::param::kLinearDrag);
+    if (name == model::param::kQuadraticDragNeg)
+      return TrueParameter(truth, dof, model::param::kQuadraticDrag);
   }
   return name.rfind(model::param::kEtaPrefix, 0) == 0 ? 1.0 : 0.0;
 }
@@ -58,25 +59,6 @@ const CoverageCell* MonteCarloReport::Find(const std::string& estimator, model::
     if (c.estimator == estimator && c.dof == dof && c.name == name) return &c;
   }
   return nullptr;
-}
-
-std::string MonteCarloReport::Table() const {
-  std::ostringstream os;
-  os.precision(4);
-  os << "estimator              dof    param                 truth        mean         sd"
-        "   mean σ  sd/σ   cover  ≤3σ   crb σ    sd/crb   n\n";
-  for (const auto& c : cells) {
-    char line[512];
-    std::snprintf(line, sizeof line,
-                  "%-22s %-6s %-20s %11.5g %11.5g %10.4g %8.4g %5.2f  %5.1f%% %4.0f%% %8.4g %6.2f %4d\n",
-                  c.estimator.c_str(), std::string(model::DofName(c.dof)).c_str(), c.name.c_str(),
-                  c.truth, c.mean, c.sd, c.mean_sigma, c.mean_sigma > 0 ? c.sd / c.mean_sigma : 0.0,
-                  100.0 * c.coverage(), c.n > 0 ? 100.0 * c.within3 / c.n : 0.0, c.crb_sigma,
-                  c.crb_sigma > 0 ? c.sd / c.crb_sigma : 0.0, c.n);
-    os << line;
-  }
-  os << "repetitions " << repetitions << ", failures " << failures << "\n";
-  return os.str();
 }
 
 namespace {
@@ -140,7 +122,8 @@ class CoverageTally {
       c.sd = a.n > 1 ? std::sqrt(std::max(0.0, (a.sum2 - a.sum * a.sum / a.n) / (a.n - 1))) : 0.0;
       c.mean_sigma = a.sum_sigma / a.n;
       if (c.estimator == "output_error" || c.estimator == "final") {
-        if (auto it = crb.find({std::get<1>(key), c.name}); it != crb.end()) c.crb_sigma = it->second;
+        if (auto it = crb.find({std::get<1>(key), c.name}); it != crb.end())
+          c.crb_sigma = it->second;
       }
       cells.push_back(c);
     }
@@ -163,7 +146,8 @@ std::map<std::pair<int, std::string>, double> CramerRaoSigmas(const model::Truth
   std::map<std::pair<int, std::string>, double> crb;
   std::vector<TrialData> trials;
   for (std::size_t i = 0; i < campaign.trials.size(); ++i) {
-    trials.push_back(PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.identify.data));
+    trials.push_back(
+        PrepareTrial(campaign.trials[i], static_cast<int>(i), campaign.vehicle, o.identify.data));
   }
   for (const DofIdentification& d : res.dofs) {
     if (!d.output_error || !d.output_error->ok()) continue;
@@ -219,7 +203,8 @@ MonteCarloReport RunMonteCarlo(const model::Truth& truth,
   if (o.threads != 1) identify.threads = 1;  // the repetitions share the cores
   diagnosis::ParallelFor(slots.size(), o.threads, [&](std::size_t rep) {
     try {
-      slots[rep].result = Identify(model::BuildVirtualCampaign(truth, designs, pool_of(int(rep))), identify);
+      slots[rep].result =
+          Identify(model::BuildVirtualCampaign(truth, designs, pool_of(int(rep))), identify);
     } catch (const std::exception& ex) {
       slots[rep].error = ex.what();
     }
@@ -231,7 +216,8 @@ MonteCarloReport RunMonteCarlo(const model::Truth& truth,
     const Slot& s = slots[rep];
     if (!s.error.empty()) {
       ++report.failures;
-      if (report.notes.size() < 5) report.notes.push_back("repetition " + std::to_string(rep) + ": " + s.error);
+      if (report.notes.size() < 5)
+        report.notes.push_back("repetition " + std::to_string(rep) + ": " + s.error);
       continue;
     }
     for (const DofIdentification& d : s.result.dofs) {
@@ -239,7 +225,8 @@ MonteCarloReport RunMonteCarlo(const model::Truth& truth,
     }
     if (o.cramer_rao && !crb_done) {
       crb_done = true;  // the first good repetition's campaign, rebuilt from its seed
-      crb = CramerRaoSigmas(truth, model::BuildVirtualCampaign(truth, designs, pool_of(rep)), s.result, o);
+      crb = CramerRaoSigmas(truth, model::BuildVirtualCampaign(truth, designs, pool_of(rep)),
+                            s.result, o);
     }
   }
   report.cells = tally.Cells(crb);

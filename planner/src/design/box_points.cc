@@ -2,22 +2,16 @@
 #include "uuvplan/planner/design/box_points.h"
 
 #include <algorithm>
+#include <cmath>
 
-#include "format.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/prior.h"
 
 namespace uuvplan::planner {
 namespace {
 
-using internal::Fmt;
-
-BoxPoint Point(model::Dof dof, double m, double drag_factor, const model::DragPrior& drag) {
-  BoxPoint p{m, drag_factor * drag.k, drag_factor * drag.kq, ""};
-  p.label = "m " + Fmt(m) + " " + model::Unit(model::param::kMass, dof) + ", drag ×" +
-            Fmt(drag_factor) + " of the prior (kq " + Fmt(p.kq) + " " +
-            model::Unit(model::param::kQuadraticDrag, dof) + ")";
-  return p;
+BoxPoint Point(double m, double drag_factor, const model::DragPrior& drag) {
+  return {m, drag_factor * drag.k, drag_factor * drag.kq, drag_factor};
 }
 
 }  // namespace
@@ -25,14 +19,13 @@ BoxPoint Point(model::Dof dof, double m, double drag_factor, const model::DragPr
 std::vector<BoxPoint> VerdictPoints(const model::Vehicle& vehicle, model::Dof dof,
                                     const BoxOptions& options) {
   const auto mb = vehicle.InertiaBounds(dof);
-  const model::DragPrior drag =
-      model::DragOf(vehicle, dof, options.fallback_drag_rel_sigma).drag;
+  const model::DragPrior drag = model::DragOf(vehicle, dof, options.fallback_drag_rel_sigma).drag;
   // The drag axis of APrioriBox: k and kq together × [1 − n·rs, 1 + n·rs] (at least 0.05).
   const double half = options.drag_sigmas * drag.rel_sigma;
   const double lo = std::max(0.05, 1.0 - half), hi = 1.0 + half;
-  std::vector<BoxPoint> out = {Point(dof, 0.5 * (mb[0] + mb[1]), 1.0, drag)};
+  std::vector<BoxPoint> out = {Point(0.5 * (mb[0] + mb[1]), 1.0, drag)};
   for (double m : {mb[0], mb[1]}) {
-    for (double f : {lo, hi}) out.push_back(Point(dof, m, f, drag));
+    for (double f : {lo, hi}) out.push_back(Point(m, f, drag));
   }
   return out;
 }
@@ -53,7 +46,7 @@ model::Vehicle VehicleOfTruth(const model::Truth& truth) {
     const auto k = t.params.find(model::param::kLinearDrag);
     const auto kq = t.params.find(model::param::kQuadraticDrag);
     if (m == t.params.end() || k == t.params.end() || kq == t.params.end()) continue;
-    v = VehicleAt(v, dof, BoxPoint{m->second, k->second, kq->second, ""});
+    v = VehicleAt(v, dof, BoxPoint{m->second, k->second, kq->second, std::nan("")});
   }
   return v;
 }

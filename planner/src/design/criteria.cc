@@ -10,8 +10,8 @@
 
 namespace uuvplan::planner {
 
-constexpr model::EnumNames<Criterion, 4> kCriterionNames{{{
-    {Criterion::kD, "D"}, {Criterion::kDs, "Ds"}, {Criterion::kA, "A"}, {Criterion::kE, "E"}}}};
+constexpr model::EnumNames<Criterion, 4> kCriterionNames{
+    {{{Criterion::kD, "D"}, {Criterion::kDs, "Ds"}, {Criterion::kA, "A"}, {Criterion::kE, "E"}}}};
 
 std::string_view CriterionName(Criterion c) { return kCriterionNames.Name(c); }
 

@@ -14,7 +14,7 @@ namespace {
 
 struct Sample {
   double t;
-  int channel;    // 0 position, 1 velocity
+  int channel;    // the state the sensor sees (1-DOF: 0 position, 1 velocity)
   double weight;  // w_k / sigma²
 };
 
@@ -25,12 +25,66 @@ void AddSensor(const model::SensorSpec& spec, int channel, double duration,
   }
   const double inv_var = SampleInformation(spec);
   const double span = duration * spec.rate_hz;
-  const long whole = model::CheckedFloor(span, "sensor samples (duration × rate)",
-                                         model::limits::kMaxTrialRows,
-                                         "a shorter trial or a lower sensor rate");
+  const long whole =
+      model::CheckedFloor(span, "sensor samples (duration × rate)", model::limits::kMaxTrialRows,
+                          "a shorter trial or a lower sensor rate");
   for (long k = 0; k <= whole; ++k) samples->push_back({k / spec.rate_hz, channel, inv_var});
   const double frac = span - whole;
   if (frac > 1e-9) samples->push_back({(whole + 1) / spec.rate_hz, channel, frac * inv_var});
+}
+
+// Every sensor sample and the end of the trial (weight 0: for the extremes only), sorted;
+// `times` the distinct sample times (the simulation's outputs) and row[i] sample i's among them.
+struct SampleGrid {
+  std::vector<Sample> samples;
+  std::vector<double> times;
+  std::vector<int> row;
+};
+
+SampleGrid GridOf(std::vector<Sample> samples, double duration) {
+  if (samples.empty()) throw std::invalid_argument("the DOF has no position or velocity sensor");
+  SampleGrid g;
+  g.samples = std::move(samples);
+  g.samples.push_back({duration, 0, 0.0});
+  std::sort(g.samples.begin(), g.samples.end(),
+            [](const Sample& a, const Sample& b) { return a.t < b.t; });
+  g.row.resize(g.samples.size());
+  for (std::size_t i = 0; i < g.samples.size(); ++i) {
+    if (g.times.empty() || g.samples[i].t > g.times.back() + 1e-12)
+      g.times.push_back(g.samples[i].t);
+    g.row[i] = static_cast<int>(g.times.size()) - 1;
+  }
+  return g;
+}
+
+// Σ_k rowᵀ·row over the first n rows of `weighted` (each √(w_k)/σ times ∂y_k/∂θ).
+Eigen::MatrixXd Gram(const Eigen::MatrixXd& weighted, int n) {
+  Eigen::MatrixXd full = Eigen::MatrixXd::Zero(weighted.cols(), weighted.cols());
+  full.selfadjointView<Eigen::Lower>().rankUpdate(weighted.topRows(n).transpose());
+  return full.selfadjointView<Eigen::Lower>();
+}
+
+// The position and velocity extremes over [0, duration] and the final velocity.
+void AddExtremes(const model::Trajectory& traj, const std::vector<double>& times, double duration,
+                 TrialResponse* r) {
+  r->position_min = r->position_max = 0.0;
+  r->velocity_min = r->velocity_max = 0.0;
+  for (std::size_t i = 0; i < times.size() && times[i] <= duration + 1e-12; ++i) {
+    r->position_min = std::min(r->position_min, traj.x(i, 0));
+    r->position_max = std::max(r->position_max, traj.x(i, 0));
+    r->velocity_min = std::min(r->velocity_min, traj.x(i, 1));
+    r->velocity_max = std::max(r->velocity_max, traj.x(i, 1));
+    if (std::abs(times[i] - duration) < 1e-12) r->final_velocity = traj.x(i, 1);
+  }
+}
+
+// M = Mθθ − Mθn·Mnn⁺·Mnθ of the information `full` of (θ, nuisance): θ's first np rows.
+Eigen::MatrixXd ProfiledOut(const Eigen::MatrixXd& full, int np) {
+  const int nn = static_cast<int>(full.rows()) - np;
+  const Eigen::MatrixXd Mtn = full.topRightCorner(np, nn);
+  const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> Mnn(full.bottomRightCorner(nn, nn));
+  const Eigen::MatrixXd M = full.topLeftCorner(np, np) - Mtn * Mnn.solve(Mtn.transpose());
+  return 0.5 * (M + M.transpose());
 }
 
 }  // namespace
@@ -45,45 +99,29 @@ TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd&
                             const model::Excitation& input, const model::DofSensors& sensors,
                             double duration, double step_s, bool with_information,
                             bool start_known) {
-  std::vector<Sample> samples;
-  if (sensors.position) AddSensor(*sensors.position, 0, duration, &samples);
-  if (sensors.velocity) AddSensor(*sensors.velocity, 1, duration, &samples);
-  if (samples.empty()) throw std::invalid_argument("the DOF has no position or velocity sensor");
-  samples.push_back({duration, 0, 0.0});  // the end of the trial, for the extremes only
-  std::sort(samples.begin(), samples.end(),
-            [](const Sample& a, const Sample& b) { return a.t < b.t; });
-  std::vector<double> times;
-  std::vector<int> row(samples.size());
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    if (times.empty() || samples[i].t > times.back() + 1e-12) times.push_back(samples[i].t);
-    row[i] = static_cast<int>(times.size()) - 1;
-  }
+  std::vector<Sample> sensor_samples;
+  if (sensors.position) AddSensor(*sensors.position, 0, duration, &sensor_samples);
+  if (sensors.velocity) AddSensor(*sensors.velocity, 1, duration, &sensor_samples);
+  const SampleGrid g = GridOf(std::move(sensor_samples), duration);
 
   model::TrialConditions conditions;
   conditions.input = &input;
   model::SimulationOptions options;
   options.step_s = step_s;
   options.sensitivities = with_information;
-  const model::Trajectory traj = model::SimulateMeasured(model, theta, conditions, times, options);
-
+  const model::Trajectory traj =
+      model::SimulateMeasured(model, theta, conditions, g.times, options);
   TrialResponse r;
-  r.position_min = r.position_max = 0.0;
-  r.velocity_min = r.velocity_max = 0.0;
-  for (std::size_t i = 0; i < times.size() && times[i] <= duration + 1e-12; ++i) {
-    r.position_min = std::min(r.position_min, traj.x(i, 0));
-    r.position_max = std::max(r.position_max, traj.x(i, 0));
-    r.velocity_min = std::min(r.velocity_min, traj.x(i, 1));
-    r.velocity_max = std::max(r.velocity_max, traj.x(i, 1));
-    if (std::abs(times[i] - duration) < 1e-12) r.final_velocity = traj.x(i, 1);
-  }
+  AddExtremes(traj, g.times, duration, &r);
   if (!with_information) return r;
 
-  // The information the identification can use: its output error (ident/src/estimators/output_error.cc)
-  // fits each trial's initial state with θ — the initial position χ0 whenever a position sensor
-  // is used, the initial velocity ξ0 unless the log is judged to start at rest — as seed 000's
-  // integral method (eqs. 16-19) fits m·ξ0 + k·χ0. Known exactly here, they lent a steady run
-  // the position lag v·m/k_L of its whole plateau as information on m (payload60 yaw-next-15:
-  // σ(m) predicted 0.053, achieved 0.50 kg·m²). So they are nuisance parameters, profiled out:
+  // The information the identification can use: its output error
+  // (ident/src/estimators/output_error.cc) fits each trial's initial state with θ — the initial
+  // position χ0 whenever a position sensor is used, the initial velocity ξ0 unless the log is
+  // judged to start at rest — as ref 000's integral method (eqs. 16-19) fits m·ξ0 + k·χ0. Known
+  // exactly here, they lent a steady run the position lag v·m/k_L of its whole plateau as
+  // information on m (payload60 yaw-next-15: σ(m) predicted 0.053, achieved 0.50 kg·m²). So they
+  // are nuisance parameters, profiled out:
   //   M = Mθθ − Mθn·Mnn⁺·Mnθ   of the information of (θ, χ0, ξ0),
   // with ∂y/∂χ0 = (1, 0) (no force depends on the position) and ∂y/∂ξ0 by a forward
   // difference, as the output error takes it. ξ0 is profiled out even where the output error
@@ -101,35 +139,55 @@ TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd&
     x_xi[1] = h_xi;
     model::SimulationOptions plain = options;
     plain.sensitivities = false;
-    traj_xi = model::SimulateMeasured(model, theta, conditions, times, plain, &x_xi);
+    traj_xi = model::SimulateMeasured(model, theta, conditions, g.times, plain, &x_xi);
   }
   // M = Σ_k w_k/σ² · s_kᵀ s_k, s_k the row of ∂y/∂(theta, χ0, ξ0) of the sample's channel.
-  Eigen::MatrixXd weighted(samples.size(), np + nn);
+  Eigen::MatrixXd weighted(g.samples.size(), np + nn);
   int n = 0;
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    if (samples[i].weight <= 0) continue;
-    const double w = std::sqrt(samples[i].weight);
-    const int c = samples[i].channel, k = row[i];
+  for (std::size_t i = 0; i < g.samples.size(); ++i) {
+    if (g.samples[i].weight <= 0) continue;
+    const double w = std::sqrt(g.samples[i].weight);
+    const int c = g.samples[i].channel, k = g.row[i];
     weighted.row(n).head(np) = w * traj.S[c].row(k);
     int col = np;
     if (free_chi0) weighted(n, col++) = c == 0 ? w : 0.0;
     if (!start_known) weighted(n, col) = w * (traj_xi.x(k, c) - traj.x(k, c)) / h_xi;
     ++n;
   }
-  Eigen::MatrixXd full = Eigen::MatrixXd::Zero(np + nn, np + nn);
-  full.selfadjointView<Eigen::Lower>().rankUpdate(weighted.topRows(n).transpose());
-  full = full.selfadjointView<Eigen::Lower>();
+  Eigen::MatrixXd full = Gram(weighted, n);
   if (start_known) {  // the block of θ: no nuisance column was made
     r.M = std::move(full);
     return r;
   }
-  const Eigen::MatrixXd Mtn = full.topRightCorner(np, nn);
-  const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> Mnn(
-      full.bottomRightCorner(nn, nn));
-  r.M = full.topLeftCorner(np, np) - Mtn * Mnn.solve(Mtn.transpose());
-  r.M = (0.5 * (r.M + r.M.transpose())).eval();
+  r.M = ProfiledOut(full, np);
   r.M_joint = std::move(full);
   return r;
+}
+
+Eigen::MatrixXd JointInformation(const model::MultiDofModel& model, const Eigen::VectorXd& theta,
+                                 const model::JointConditions& conditions,
+                                 const std::map<model::Dof, model::DofSensors>& sensors,
+                                 double duration, double step_s) {
+  std::vector<Sample> sensor_samples;
+  for (int i = 0; i < model.num_dofs(); ++i) {
+    const auto s = sensors.find(model.dof(i));
+    if (s == sensors.end()) continue;
+    const int position = model.state_offset(i);
+    if (s->second.position) AddSensor(*s->second.position, position, duration, &sensor_samples);
+    if (s->second.velocity) AddSensor(*s->second.velocity, position + 1, duration, &sensor_samples);
+  }
+  const SampleGrid g = GridOf(std::move(sensor_samples), duration);
+  model::SimulationOptions options;
+  options.step_s = step_s;
+  options.sensitivities = true;
+  const model::Trajectory traj = model::Simulate(model, theta, conditions, g.times, options);
+  Eigen::MatrixXd weighted(g.samples.size(), model.num_parameters());
+  int n = 0;
+  for (std::size_t i = 0; i < g.samples.size(); ++i) {
+    if (g.samples[i].weight <= 0) continue;
+    weighted.row(n++) = std::sqrt(g.samples[i].weight) * traj.S[g.samples[i].channel].row(g.row[i]);
+  }
+  return Gram(weighted, n);
 }
 
 PositionTrace TracePosition(const model::DofModel& model, const Eigen::VectorXd& theta,

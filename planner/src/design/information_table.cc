@@ -7,7 +7,7 @@
 
 #include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/planner/design/criteria.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 
 namespace uuvplan::planner {
 InformationSummary SummariseInformation(model::Dof dof, const std::vector<std::string>& names,
@@ -39,13 +39,13 @@ InformationSummary SummariseInformation(model::Dof dof, const std::vector<std::s
 ScheduleInformation InformationOf(const model::Vehicle& vehicle, const model::Pool& pool,
                                   const Schedule& schedule, const ScheduleOptions& options) {
   ScheduleInformation result;
-  std::map<model::Dof, std::unique_ptr<DofContext>> contexts;
+  std::map<model::Dof, std::unique_ptr<DofPlanningProblem>> contexts;
   std::map<model::Dof, Eigen::MatrixXd> totals;
   std::vector<std::string> notes;  // the planner's own notes were printed with the schedule
   for (const PlannedTrial& t : schedule.trials) {
     const model::Dof dof = t.design.dof;
     auto& ctx = contexts[dof];
-    if (!ctx) ctx = DofContext::APriori(vehicle, pool, dof, options.planner, &notes);
+    if (!ctx) ctx = DofPlanningProblem::APriori(vehicle, pool, dof, options.planner, &notes);
     const Eigen::VectorXd& centre = ctx->design_thetas()[0];  // DesignPoints(): centre first
     const Eigen::MatrixXd M = ctx->Information(t.design)[0];
     result.trials.push_back(SummariseInformation(dof, ctx->model().parameter_names(), centre, M));
@@ -57,7 +57,7 @@ ScheduleInformation InformationOf(const model::Vehicle& vehicle, const model::Po
     }
   }
   for (const auto& [dof, M] : totals) {
-    const DofContext& ctx = *contexts.at(dof);
+    const DofPlanningProblem& ctx = *contexts.at(dof);
     result.dofs[dof] =
         SummariseInformation(dof, ctx.model().parameter_names(), ctx.design_thetas()[0], M);
   }

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "design/design_evaluator.h"
-#include "uuvplan/planner/design/solver.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/planner/design/solver.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -165,14 +165,15 @@ class DesignNlp final : public Ipopt::TNLP {
   Ipopt::SolverReturn status_ = Ipopt::UNASSIGNED;
 };
 
-constexpr model::EnumNames<Ipopt::SolverReturn, 8> kReturnNames{{{
-    {Ipopt::SUCCESS, "SUCCESS"}, {Ipopt::MAXITER_EXCEEDED, "MAXITER_EXCEEDED"},
-    {Ipopt::STOP_AT_TINY_STEP, "STOP_AT_TINY_STEP"},
-    {Ipopt::STOP_AT_ACCEPTABLE_POINT, "STOP_AT_ACCEPTABLE_POINT"},
-    {Ipopt::LOCAL_INFEASIBILITY, "LOCAL_INFEASIBILITY"},
-    {Ipopt::RESTORATION_FAILURE, "RESTORATION_FAILURE"},
-    {Ipopt::ERROR_IN_STEP_COMPUTATION, "ERROR_IN_STEP_COMPUTATION"},
-    {Ipopt::INVALID_NUMBER_DETECTED, "INVALID_NUMBER_DETECTED"}}}};
+constexpr model::EnumNames<Ipopt::SolverReturn, 8> kReturnNames{
+    {{{Ipopt::SUCCESS, "SUCCESS"},
+      {Ipopt::MAXITER_EXCEEDED, "MAXITER_EXCEEDED"},
+      {Ipopt::STOP_AT_TINY_STEP, "STOP_AT_TINY_STEP"},
+      {Ipopt::STOP_AT_ACCEPTABLE_POINT, "STOP_AT_ACCEPTABLE_POINT"},
+      {Ipopt::LOCAL_INFEASIBILITY, "LOCAL_INFEASIBILITY"},
+      {Ipopt::RESTORATION_FAILURE, "RESTORATION_FAILURE"},
+      {Ipopt::ERROR_IN_STEP_COMPUTATION, "ERROR_IN_STEP_COMPUTATION"},
+      {Ipopt::INVALID_NUMBER_DETECTED, "INVALID_NUMBER_DETECTED"}}}};
 
 // Ipopt's name of a solver return; the others by number.
 std::string ReturnName(Ipopt::SolverReturn s) {

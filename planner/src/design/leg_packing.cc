@@ -33,7 +33,8 @@ bool Compatible(const std::map<int, int>& a, const std::map<int, int>& b) {
 // thrusters, within the pool and the trial duration limit.
 class LegPacker {
  public:
-  LegPacker(const DofContext& ctx, const SteadyDesignOptions& o, std::vector<SteadyLeg> legs)
+  LegPacker(const DofPlanningProblem& ctx, const SteadyDesignOptions& o,
+            std::vector<SteadyLeg> legs)
       : ctx_(ctx), o_(o), timer_(ctx, o), remaining_(std::move(legs)) {
     std::sort(remaining_.begin(), remaining_.end(),
               [](const SteadyLeg& a, const SteadyLeg& b) { return a.travel > b.travel; });
@@ -127,7 +128,7 @@ class LegPacker {
     return d;
   }
 
-  const DofContext& ctx_;
+  const DofPlanningProblem& ctx_;
   const SteadyDesignOptions& o_;
   SteadyLegTimer timer_;
   std::vector<SteadyLeg> remaining_;
@@ -140,8 +141,8 @@ class LegPacker {
 
 }  // namespace
 
-void PackTrials(const DofContext& ctx, const SteadyDesignOptions& o, const std::string& id_prefix,
-                SteadyDesignResult* result) {
+void PackTrials(const DofPlanningProblem& ctx, const SteadyDesignOptions& o,
+                const std::string& id_prefix, SteadyDesignResult* result) {
   LegPacker packer(ctx, o, result->legs);
   const int np = ctx.model().num_parameters();
   result->information.assign(ctx.design_thetas().size(), Eigen::MatrixXd::Zero(np, np));

@@ -8,15 +8,16 @@
 #include <nlopt.hpp>
 
 #include "design/design_evaluator.h"
-#include "uuvplan/planner/design/solver.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/planner/design/solver.h"
 
 namespace uuvplan::planner {
 namespace {
 
 using internal::DesignEvaluator;
 
-struct Context {
+// What NLopt hands each objective and constraint callback through its void* data.
+struct ObjectiveData {
   DesignEvaluator* ev;
   const SolverOptions* opt;
   const DesignProblem* p;
@@ -26,7 +27,7 @@ struct Context {
 double PenalisedObjective(unsigned n, const double* x, double* grad, void* data) {
   (void)n;
   (void)grad;  // derivative-free global methods only
-  auto* c = static_cast<Context*>(data);
+  auto* c = static_cast<ObjectiveData*>(data);
   const double *phi, *g;
   if (!c->ev->Values(x, &phi, &g)) return -1e10;
   std::vector<double> v(phi, phi + c->ev->J());
@@ -39,13 +40,13 @@ double PenalisedObjective(unsigned n, const double* x, double* grad, void* data)
 }
 
 // Local phase, epigraph variables z = (x, t) for maximin; z = x otherwise.
-struct LocalContext {
-  Context base;
+struct LocalObjectiveData {
+  ObjectiveData base;
   bool epigraph;
 };
 
 double LocalObjective(unsigned n, const double* z, double* grad, void* data) {
-  auto* c = static_cast<LocalContext*>(data);
+  auto* c = static_cast<LocalObjectiveData*>(data);
   const int nx = c->base.ev->n();
   if (c->epigraph) {
     if (grad) {
@@ -78,7 +79,7 @@ double LocalObjective(unsigned n, const double* z, double* grad, void* data) {
 // Vector constraint: [t - φ_j(x) for j (epigraph only), g_c(x)] <= 0.
 void LocalConstraints(unsigned m, double* result, unsigned n, const double* z, double* grad,
                       void* data) {
-  auto* c = static_cast<LocalContext*>(data);
+  auto* c = static_cast<LocalObjectiveData*>(data);
   const int nx = c->base.ev->n(), J = c->base.ev->J(), C = c->base.ev->C();
   const double *phi, *g;
   if (!c->base.ev->Values(z, &phi, &g)) {
@@ -107,10 +108,13 @@ void LocalConstraints(unsigned m, double* result, unsigned n, const double* z, d
   }
 }
 
-constexpr model::EnumNames<nlopt::result, 6> kResultNames{{{
-    {nlopt::SUCCESS, "SUCCESS"}, {nlopt::STOPVAL_REACHED, "STOPVAL_REACHED"},
-    {nlopt::FTOL_REACHED, "FTOL_REACHED"}, {nlopt::XTOL_REACHED, "XTOL_REACHED"},
-    {nlopt::MAXEVAL_REACHED, "MAXEVAL_REACHED"}, {nlopt::MAXTIME_REACHED, "MAXTIME_REACHED"}}}};
+constexpr model::EnumNames<nlopt::result, 6> kResultNames{
+    {{{nlopt::SUCCESS, "SUCCESS"},
+      {nlopt::STOPVAL_REACHED, "STOPVAL_REACHED"},
+      {nlopt::FTOL_REACHED, "FTOL_REACHED"},
+      {nlopt::XTOL_REACHED, "XTOL_REACHED"},
+      {nlopt::MAXEVAL_REACHED, "MAXEVAL_REACHED"},
+      {nlopt::MAXTIME_REACHED, "MAXTIME_REACHED"}}}};
 
 // NLopt's name of a result; the failures by number.
 std::string ResultName(nlopt::result r) {
@@ -128,7 +132,7 @@ std::string RunLocal(const DesignProblem& p, const SolverOptions& o, DesignEvalu
   const int m = (epigraph ? p.num_scenarios : 0) + p.num_constraints;
   nlopt::opt local(gradients ? nlopt::LD_SLSQP : nlopt::LN_COBYLA, nz);
   std::vector<double> lb(p.lower), ub(p.upper), z(x_start);
-  LocalContext lc{{ev, &o, &p}, epigraph};
+  LocalObjectiveData lc{{ev, &o, &p}, epigraph};
   if (epigraph) {
     const double *phi, *g;
     double t0 = -1e10;
@@ -170,7 +174,7 @@ SolverSummary SolveWithNlopt(const DesignProblem& p, const SolverOptions& o) {
   SolverSummary s;
   if (!internal::StartSummary("nlopt", o, &s)) return s;
   DesignEvaluator ev(p, o);
-  Context ctx{&ev, &o, &p};
+  ObjectiveData ctx{&ev, &o, &p};
   std::vector<double> start = p.x0;
   std::string raw;
   if (o.global != GlobalMethod::kNone && o.max_global_evaluations > 0) {

@@ -1,16 +1,16 @@
-// Seed 000's procedure on ROMEO as virtual trials (paper_procedure.h).
+// Ref 000's procedure on ROMEO as virtual trials (paper_procedure.h).
 #include "uuvplan/planner/design/paper_procedure.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "format.h"
 #include "loop/next_trial_policy.h"
 #include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/model_structure.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/parameter_box.h"
 #include "uuvplan/planner/design/seed_rules.h"
 #include "uuvplan/planner/design/sine_design.h"
@@ -20,8 +20,6 @@ namespace uuvplan::planner {
 namespace {
 
 using model::Dof;
-
-using internal::Fmt;
 
 struct Leg {
   std::string mapping;
@@ -36,7 +34,7 @@ double TravelFromRest(double v, double tau, double T) {
 }
 
 // The steady legs of one mapping (both directions it can hold), alternating direction at each
-// level (seed 000 §IV-D: "forwards and backwards"; Fig. 4: up and down).
+// level (ref 000 §IV-D: "forwards and backwards"; Fig. 4: up and down).
 std::vector<Leg> MappingLegs(const model::Vehicle& v, const model::Pool& pool, Dof dof, int mi,
                              double k, double kq, const PaperProcedureOptions& o,
                              std::vector<std::string>* notes) {
@@ -60,15 +58,15 @@ std::vector<Leg> MappingLegs(const model::Vehicle& v, const model::Pool& pool, D
         }
         continue;
       }
-      // Seed 000 eq. 7 with eta = 1 and no bias (what the pool team knows before the runs).
+      // Ref 000 eq. 7 with eta = 1 and no bias (what the pool team knows before the runs).
       double f = k * speed + kq * speed * speed;
       if (f < r.min_abs || f > r.max_abs) {
         const double c = std::clamp(f, r.min_abs, r.max_abs);
-        notes->push_back(std::string(model::DofName(dof)) + ": " + name + " level " +
-                         std::to_string(j) + " needs " + Fmt(f) + " " +
-                         std::string(model::ForceUnit(dof)) +
-                         ", outside what its thrusters give [" + Fmt(r.min_abs) + ", " +
-                         Fmt(r.max_abs) + "]: " + Fmt(c) + " used");
+        notes->push_back(
+            std::string(model::DofName(dof)) + ": " + name + " level " + std::to_string(j) +
+            " needs " + model::Significant(f, 3) + " " + std::string(model::ForceUnit(dof)) +
+            ", outside what its thrusters give [" + model::Significant(r.min_abs, 3) + ", " +
+            model::Significant(r.max_abs, 3) + "]: " + model::Significant(c, 3) + " used");
         f = c;
       }
       const double xi = SteadySpeed(k, kq, f);
@@ -125,7 +123,7 @@ std::vector<model::TrialDesign> PackLegs(Dof dof, const std::string& id_prefix,
   return out;
 }
 
-// The mapping of `dof` that is open water in direction `sign` (seed 000 Table I), or -1.
+// The mapping of `dof` that is open water in direction `sign` (ref 000 Table I), or -1.
 int OpenWaterMapping(const model::Vehicle& v, Dof dof, int sign) {
   for (int i : v.MappingsOf(dof)) {
     const model::OpenWater ow = v.mappings[i].open_water;
@@ -177,7 +175,7 @@ std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& v,
   const double k = box.Nominal("k"), kq = box.Nominal("kq");
 
   std::vector<model::TrialDesign> out;
-  // 1. Steady runs, seed 000 §III-A.
+  // 1. Steady runs, ref 000 §III-A.
   if (dof == Dof::kHeave) {
     std::vector<Leg> legs;
     for (int i : v.MappingsOf(dof)) {
@@ -197,7 +195,7 @@ std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& v,
       out.insert(out.end(), t.begin(), t.end());
     }
   }
-  // 2. The sine of seed 000 §IV-D.
+  // 2. The sine of ref 000 §IV-D.
   model::TrialDesign s;
   s.dof = dof;
   s.kind = model::TrialKind::kSine;
@@ -224,14 +222,17 @@ std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& v,
   s.id = "paper-" + name + "-sine";
   s.mapping = v.mappings[mi].name;
   std::vector<std::string> ctx_notes;
-  std::unique_ptr<DofContext> ctx = DofContext::APriori(v, pool, dof, o.planner, &ctx_notes);
+  std::unique_ptr<DofPlanningProblem> ctx =
+      DofPlanningProblem::APriori(v, pool, dof, o.planner, &ctx_notes);
   s.duration = LongestFittingDuration(*ctx, s, o.sine_max_duration_s);
   s.duration = std::floor(s.duration * 10.0) / 10.0;
-  notes->push_back(name + ": seed 000 sine " + Fmt(s.offset) + " + " + Fmt(s.amplitude) +
-                   "·sin(2π t/" + Fmt(2 * M_PI / s.omega) + " s) in " + s.mapping + " for " +
-                   Fmt(s.duration) + " s (" + Fmt(s.duration * s.omega / (2 * M_PI)) +
-                   " periods, the longest the pool allows up to " + Fmt(o.sine_max_duration_s) +
-                   " s)");
+  notes->push_back(name + ": seed 000 sine " + model::Significant(s.offset, 3) + " + " +
+                   model::Significant(s.amplitude, 3) + "·sin(2π t/" +
+                   model::Significant(2 * M_PI / s.omega, 3) + " s) in " + s.mapping + " for " +
+                   model::Significant(s.duration, 3) + " s (" +
+                   model::Significant(s.duration * s.omega / (2 * M_PI), 3) +
+                   " periods, the longest the pool allows up to " +
+                   model::Significant(o.sine_max_duration_s, 3) + " s)");
   out.push_back(std::move(s));
   return out;
 }
@@ -247,8 +248,8 @@ PaperProcedureResult RunPaperProcedure(const model::Truth& truth, const model::P
   for (Dof d : dofs) {
     auto designs = PaperProcedureDesigns(truth.vehicle, pool, d, o, &r.notes);
     std::vector<std::string> ctx_notes;
-    std::unique_ptr<DofContext> ctx =
-        DofContext::APriori(truth.vehicle, pool, d, o.planner, &ctx_notes);
+    std::unique_ptr<DofPlanningProblem> ctx =
+        DofPlanningProblem::APriori(truth.vehicle, pool, d, o.planner, &ctx_notes);
     for (const auto& design : designs) {
       PlannedTrial t;
       t.design = design;

@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <sstream>
 
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/prior.h"
+#include "uuvplan/model/util/seed.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::planner {
@@ -24,11 +26,8 @@ double NominalWithoutValue(const std::string& name, const BoxOptions& options) {
 // installation coefficients, their axis over the options' eta range.
 void AddDragAndEtaAxes(double drag_lo, double drag_hi, const std::vector<std::string>& etas,
                        const BoxOptions& options, ParameterBox* box) {
-  box->axes.push_back({"drag",
-                       {model::param::kLinearDrag, model::param::kQuadraticDrag},
-                       drag_lo,
-                       drag_hi,
-                       true});
+  box->axes.push_back(
+      {"drag", {model::param::kLinearDrag, model::param::kQuadraticDrag}, drag_lo, drag_hi, true});
   if (!etas.empty()) {
     box->axes.push_back({"eta", etas, options.eta_range[0] / options.eta_nominal,
                          options.eta_range[1] / options.eta_nominal, false});
@@ -63,6 +62,20 @@ ParameterValues ParameterBox::At(const std::vector<double>& factors) const {
 double ParameterBox::Nominal(const std::string& name, double fallback) const {
   auto it = nominal.find(name);
   return it == nominal.end() ? fallback : it->second;
+}
+
+std::vector<ParameterValues> ParameterBox::Sample(int n, std::uint64_t seed) const {
+  std::mt19937_64 rng(model::SplitMix64(seed));
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<ParameterValues> out;
+  std::vector<double> factors(axes.size());
+  for (int k = 0; k < n; ++k) {
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+      factors[a] = axes[a].lo + unit(rng) * (axes[a].hi - axes[a].lo);
+    }
+    out.push_back(At(factors));
+  }
+  return out;
 }
 
 std::vector<ParameterValues> ParameterBox::DesignPoints() const {
@@ -100,7 +113,7 @@ std::vector<ParameterValues> ParameterBox::CheckPoints(int per_axis) const {
 }
 
 // Centred on the model's nominal values (model/prior.h), except η: the box is centred on
-// options.eta_nominal, a planning assumption (installation losses are expected, seed 000
+// options.eta_nominal, a planning assumption (installation losses are expected, ref 000
 // Table III), not a prior.
 ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
                         const std::vector<std::string>& names, const BoxOptions& options,
@@ -125,6 +138,28 @@ ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
   const double half = options.drag_sigmas * rel;
   AddDragAndEtaAxes(std::max(0.05, 1.0 - half), 1.0 + half, etas, options, &box);
   return box;
+}
+
+ParameterBox JointAPrioriBox(const model::Vehicle& vehicle, const model::MultiDofModel& model,
+                             const BoxOptions& options, std::vector<std::string>* notes) {
+  ParameterBox joint;
+  for (int i = 0; i < model.num_dofs(); ++i) {
+    const std::string prefix = std::string(model::DofName(model.dof(i))) + ".";
+    std::vector<std::string> names;
+    for (int j = 0; j < model.num_parameters(); ++j) {
+      const auto [dof, local] = model.LocalName(j);
+      if (dof == model.dof(i)) names.push_back(local);
+    }
+    const ParameterBox box = APrioriBox(vehicle, model.dof(i), names, options, notes);
+    for (const auto& [name, value] : box.nominal) joint.nominal[prefix + name] = value;
+    for (BoxAxis axis : box.axes) {
+      axis.in_design = axis.name == "m";
+      axis.name = prefix + axis.name;
+      for (std::string& p : axis.params) p = prefix + p;
+      joint.axes.push_back(axis);
+    }
+  }
+  return joint;
 }
 
 ParameterBox EstimateBox(const ParameterValues& estimates, const ParameterValues& sigmas,

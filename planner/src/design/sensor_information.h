@@ -12,9 +12,7 @@
 namespace uuvplan::planner {
 
 /// σ², the variance of one sample (m², rad², (m/s)² or (rad/s)²).
-inline double NoiseVariance(const model::SensorSpec& sensor) {
-  return sensor.sigma * sensor.sigma;
-}
+inline double NoiseVariance(const model::SensorSpec& sensor) { return sensor.sigma * sensor.sigma; }
 
 /// 1/σ², the Fisher information of one sample.
 inline double SampleInformation(const model::SensorSpec& sensor) {

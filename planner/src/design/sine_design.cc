@@ -9,10 +9,9 @@
 #include "design/sine_family_objective.h"
 #include "design/travel_margin.h"
 #include "options_check.h"
-
 #include "uuvplan/model/effects.h"
-#include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/checked_count.h"
+#include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/fisher_information.h"
 #include "uuvplan/planner/design/seed_rules.h"
@@ -20,9 +19,10 @@
 
 namespace uuvplan::planner {
 
-constexpr model::EnumNames<DesignStatus, 3> kDesignStatusNames{{{
-    {DesignStatus::kOk, "ok"}, {DesignStatus::kInfeasible, "infeasible"},
-    {DesignStatus::kFailed, "failed"}}}};
+constexpr model::EnumNames<DesignStatus, 3> kDesignStatusNames{
+    {{{DesignStatus::kOk, "ok"},
+      {DesignStatus::kInfeasible, "infeasible"},
+      {DesignStatus::kFailed, "failed"}}}};
 
 std::string_view DesignStatusName(DesignStatus s) { return kDesignStatusNames.Name(s); }
 
@@ -31,8 +31,8 @@ bool SineDesignOptions::IsValid(std::string* error) const {
   check.Require(fixed_duration_s >= 0, "fixed_duration_s", fixed_duration_s, ">= 0")
       .Require(max_duration_s >= 0, "max_duration_s", max_duration_s, ">= 0")
       .Require(min_periods >= 0, "min_periods", min_periods, ">= 0")
-      .Require(min_amplitude_fraction >= 0 && min_amplitude_fraction <= 1,
-               "min_amplitude_fraction", min_amplitude_fraction, "in [0, 1]")
+      .Require(min_amplitude_fraction >= 0 && min_amplitude_fraction <= 1, "min_amplitude_fraction",
+               min_amplitude_fraction, "in [0, 1]")
       .Require(sign >= -1 && sign <= 1, "sign", sign, "-1, 0 or 1");
   return check.ok();
 }
@@ -43,7 +43,7 @@ namespace {
 // span (max over points of position - min over points of position) exceeds `available`.
 // The point with the fastest steady speed is traced first over [0, t_max]; the others only up
 // to where it overflows (the hull overflows no later than any single point does).
-double FirstOverflow(const DofContext& ctx, const model::DofModel& model,
+double FirstOverflow(const DofPlanningProblem& ctx, const model::DofModel& model,
                      const std::vector<Eigen::VectorXd>& thetas, const model::Excitation& input,
                      double t_max) {
   const double dt = ctx.step_s();
@@ -85,7 +85,8 @@ double FirstOverflow(const DofContext& ctx, const model::DofModel& model,
   }
   const std::size_t n_valid =
       model::CheckedCount<std::size_t>(horizon / dt, "sine design horizon samples",
-                                       model::limits::kMaxTrialRows, "a shorter trial") + 1;
+                                       model::limits::kMaxTrialRows, "a shorter trial") +
+      1;
   for (std::size_t i = 1; i < lo.size() && i < n_valid; ++i) {
     const double s1 = hi[i] - lo[i];
     if (s1 > avail) {
@@ -106,7 +107,7 @@ struct Candidate {
 
 class SineProblem {
  public:
-  SineProblem(const DofContext& ctx, const SineDesignOptions& o,
+  SineProblem(const DofPlanningProblem& ctx, const SineDesignOptions& o,
               const std::vector<Eigen::MatrixXd>& prior, const Candidate& c, double t_max)
       : ctx_(ctx),
         o_(o),
@@ -160,7 +161,7 @@ class SineProblem {
   }
 
   std::vector<double> Start() const {
-    // Seed 000 eq. 14-15: mid-range offset, the largest amplitude without reversal, ω_opt at
+    // Ref 000 eq. 14-15: mid-range offset, the largest amplitude without reversal, ω_opt at
     // the box centre for that force.
     const double mid = 0.5 * (c_.range.min_abs + c_.range.max_abs);
     const auto& th = ctx_.design_thetas().front();
@@ -175,17 +176,17 @@ class SineProblem {
   }
 
  private:
-  const DofContext& ctx_;
+  const DofPlanningProblem& ctx_;
   const SineDesignOptions& o_;
   SineFamilyObjective objective_;
   Candidate c_;
   double t_max_;
-  const DofContext::TrialModel* tm_ = nullptr;
+  const DofPlanningProblem::TrialModel* tm_ = nullptr;
 };
 
 // Ref 000 eq. 14's ω_opt = 1/(√3·t_c), t_c = m/k_L (eq. 13) at a force level, over the box's
 // design points, widened to [ω_min/4, 4·ω_max].
-std::array<double, 2> OptimalFrequencyRange(const DofContext& ctx, double force_abs) {
+std::array<double, 2> OptimalFrequencyRange(const DofPlanningProblem& ctx, double force_abs) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   const int ik = ctx.Index(model::param::kLinearDrag), iq = ctx.Index(model::param::kQuadraticDrag);
   for (const auto& th : ctx.design_thetas()) {
@@ -202,7 +203,7 @@ std::array<double, 2> OptimalFrequencyRange(const DofContext& ctx, double force_
 
 }  // namespace
 
-std::array<double, 2> SineFrequencyRange(const DofContext& ctx, double force_abs,
+std::array<double, 2> SineFrequencyRange(const DofPlanningProblem& ctx, double force_abs,
                                          double min_periods, double duration) {
   std::array<double, 2> w = OptimalFrequencyRange(ctx, force_abs);
   if (min_periods > 0) w[0] = std::max(w[0], 2 * M_PI * min_periods / duration);
@@ -210,11 +211,11 @@ std::array<double, 2> SineFrequencyRange(const DofContext& ctx, double force_abs
   return w;
 }
 
-double LongestFittingDuration(const DofContext& ctx, const model::TrialDesign& design,
+double LongestFittingDuration(const DofPlanningProblem& ctx, const model::TrialDesign& design,
                               double t_max) {
   if (!std::isfinite(ctx.available())) return t_max;
   const auto input = model::MakeExcitation(ctx.vehicle(), design);
-  const DofContext::TrialModel& tm = ctx.ModelFor(design);
+  const DofPlanningProblem::TrialModel& tm = ctx.ModelFor(design);
   return FirstOverflow(ctx, *tm.model, tm.check_thetas, *input, t_max);
 }
 
@@ -227,7 +228,8 @@ model::Direction DirectionOf(int sign) {
 // Mirror images: the standard model is odd in xi and phi (k·xi + kq·xi|xi|), so with no bias
 // and eta = 1 an open-water direction whose force range equals an earlier open-water
 // candidate's opposite direction has the same information; it is not designed twice.
-bool IsMirror(const DofContext& ctx, const std::vector<Candidate>& earlier, const Candidate& c) {
+bool IsMirror(const DofPlanningProblem& ctx, const std::vector<Candidate>& earlier,
+              const Candidate& c) {
   const auto& v = ctx.vehicle();
   bool mirror = false;
   for (const Candidate& e : earlier) {
@@ -242,7 +244,7 @@ bool IsMirror(const DofContext& ctx, const std::vector<Candidate>& earlier, cons
 
 // The (mapping, direction) pairs that can hold a sine without reversal, as the options allow;
 // why others cannot goes to `notes`.
-std::vector<Candidate> SineCandidates(const DofContext& ctx, const SineDesignOptions& o,
+std::vector<Candidate> SineCandidates(const DofPlanningProblem& ctx, const SineDesignOptions& o,
                                       std::vector<std::string>* notes) {
   const auto& v = ctx.vehicle();
   std::vector<Candidate> candidates;
@@ -273,7 +275,7 @@ std::vector<Candidate> SineCandidates(const DofContext& ctx, const SineDesignOpt
 }
 
 // The best sine over every candidate (robust criterion); false if no candidate gave one.
-bool OptimiseSine(const DofContext& ctx, const SineDesignOptions& o,
+bool OptimiseSine(const DofPlanningProblem& ctx, const SineDesignOptions& o,
                   const std::vector<Eigen::MatrixXd>& prior,
                   const std::vector<Candidate>& candidates, double t_max, const std::string& id,
                   SineDesignResult* result) {
@@ -294,8 +296,8 @@ bool OptimiseSine(const DofContext& ctx, const SineDesignOptions& o,
     so.extra_starts.push_back(p.x0);
     const SolverSummary summary = Solve(ctx.options().sine_backend, p, so);
     if (!summary.is_success()) {
-      result->notes.push_back(ctx.vehicle().mappings[c.mapping].name +
-                              (c.sign > 0 ? " +" : " -") + ": " + summary.BriefReport());
+      result->notes.push_back(ctx.vehicle().mappings[c.mapping].name + (c.sign > 0 ? " +" : " -") +
+                              ": " + summary.BriefReport());
     }
     if (!summary.is_success() || summary.objective <= best) continue;
     best = summary.objective;
@@ -313,7 +315,7 @@ bool OptimiseSine(const DofContext& ctx, const SineDesignOptions& o,
 // A "sine" whose amplitude vanishes is a steady run from rest: the force range left between
 // min_thrust and the speed limit is too narrow for a swing that adds more than the start from
 // rest does (VSOR yaw: [3.11, 4.25] N·m). Report it as what it is, and say why.
-void PlanFlatSineAsSteady(const DofContext& ctx, SineDesignResult* result) {
+void PlanFlatSineAsSteady(const DofPlanningProblem& ctx, SineDesignResult* result) {
   model::TrialDesign& d = result->trial.design;
   if (d.amplitude > 1e-3 * std::abs(d.offset)) return;
   const ForceRange range =
@@ -321,10 +323,12 @@ void PlanFlatSineAsSteady(const DofContext& ctx, SineDesignResult* result) {
   std::ostringstream s;
   const std::string unit(model::ForceUnit(d.dof));
   s << d.mapping << ": the best sine has no amplitude — a steady run from rest at "
-    << model::Significant(d.offset, 4) << " " << unit << " for " << model::Significant(d.duration, 4)
+    << model::Significant(d.offset, 4) << " " << unit << " for "
+    << model::Significant(d.duration, 4)
     << " s carries more information than any swing within the force range ["
     << model::Significant(range.min_abs, 4) << ", " << model::Significant(range.max_abs, 4) << "] "
-    << unit << " that min_thrust and the speed limit leave; planned as that steady run (a wider "
+    << unit
+    << " that min_thrust and the speed limit leave; planned as that steady run (a wider "
        "range — lower min_thrust, a larger max_rotation_rate / max_translation_speed — would "
        "allow a true sine)";
   result->notes.push_back(s.str());
@@ -338,7 +342,7 @@ void PlanFlatSineAsSteady(const DofContext& ctx, SineDesignResult* result) {
 }
 
 // The reported information and criterion: the real sensors (design_sensors() approximates).
-void Score(const DofContext& ctx, const SineDesignOptions& o,
+void Score(const DofPlanningProblem& ctx, const SineDesignOptions& o,
            const std::vector<Eigen::MatrixXd>& prior, SineDesignResult* result) {
   result->information = ctx.Information(result->trial.design);
   result->criterion_per_point = ctx.CriterionValues(WithPrior(result->information, prior),
@@ -348,7 +352,7 @@ void Score(const DofContext& ctx, const SineDesignOptions& o,
 
 // Hard constraints over the check grid; the design points bound the travel when it is
 // monotone in m and drag, else shorten the trial until the check grid fits too.
-void CheckAndFit(const DofContext& ctx, const SineDesignOptions& o,
+void CheckAndFit(const DofPlanningProblem& ctx, const SineDesignOptions& o,
                  const std::vector<Eigen::MatrixXd>& prior, SineDesignResult* result) {
   model::TrialDesign& d = result->trial.design;
   result->check = ctx.Check(d);
@@ -362,12 +366,12 @@ void CheckAndFit(const DofContext& ctx, const SineDesignOptions& o,
   result->trial.thrust_min = result->check.thrust_min;
 }
 
-void SetStatus(const DofContext& ctx, const SineDesignOptions& o,
+void SetStatus(const DofPlanningProblem& ctx, const SineDesignOptions& o,
                const std::vector<Eigen::MatrixXd>& prior, SineDesignResult* result) {
   const model::TrialDesign& d = result->trial.design;
   bool singular = false;
-  ctx.CriterionValues(WithPrior(result->information, prior), o.criterion,
-                      ctx.Indices(o.interest), &singular);
+  ctx.CriterionValues(WithPrior(result->information, prior), o.criterion, ctx.Indices(o.interest),
+                      &singular);
   if (!result->check.feasible) {
     result->status = DesignStatus::kInfeasible;
     std::ostringstream s;
@@ -393,7 +397,7 @@ void SetStatus(const DofContext& ctx, const SineDesignOptions& o,
 
 }  // namespace
 
-SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
+SineDesignResult DesignSine(const DofPlanningProblem& ctx, const SineDesignOptions& o,
                             const std::vector<Eigen::MatrixXd>& prior, const std::string& id) {
   SineDesignResult result;
   std::string error;
@@ -412,10 +416,11 @@ SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& o,
   const std::vector<Candidate> candidates = SineCandidates(ctx, o, &result.notes);
   if (candidates.empty()) {
     result.status = DesignStatus::kInfeasible;
-    result.message =
-        std::string("no mapping and direction of ") + std::string(model::DofName(ctx.dof())) +
-        " can hold a sine without propeller reversal" + (o.open_water_only ? " in open water" : "") +
-        (result.notes.empty() ? "" : " within the speed limit (see the notes)");
+    result.message = std::string("no mapping and direction of ") +
+                     std::string(model::DofName(ctx.dof())) +
+                     " can hold a sine without propeller reversal" +
+                     (o.open_water_only ? " in open water" : "") +
+                     (result.notes.empty() ? "" : " within the speed limit (see the notes)");
     return result;
   }
   if (!OptimiseSine(ctx, o, prior, candidates, t_max, id, &result)) {

@@ -8,7 +8,7 @@
 
 namespace uuvplan::planner {
 
-SineFamilyObjective::SineFamilyObjective(const DofContext& ctx, const SineDesignOptions& o,
+SineFamilyObjective::SineFamilyObjective(const DofPlanningProblem& ctx, const SineDesignOptions& o,
                                          const std::vector<Eigen::MatrixXd>& prior,
                                          double force_abs, double duration)
     : ctx_(ctx),
@@ -17,13 +17,13 @@ SineFamilyObjective::SineFamilyObjective(const DofContext& ctx, const SineDesign
       interest_(ctx.Indices(o.interest)),
       omega_(SineFrequencyRange(ctx, force_abs, o.min_periods, duration)) {}
 
-double SineFamilyObjective::Criteria(const DofContext::TrialModel& tm,
+double SineFamilyObjective::Criteria(const DofPlanningProblem::TrialModel& tm,
                                      const model::Excitation& input, double duration,
                                      double* phi) const {
   std::array<double, 2> travel;
-  const std::vector<double> criteria = ctx_.CriterionValues(
-      WithPrior(ctx_.DesignInformation(tm, input, duration, &travel), prior_), criterion_,
-      interest_);
+  const std::vector<double> criteria =
+      ctx_.CriterionValues(WithPrior(ctx_.DesignInformation(tm, input, duration, &travel), prior_),
+                           criterion_, interest_);
   std::copy(criteria.begin(), criteria.end(), phi);
   return travel[1] - travel[0];
 }

@@ -1,6 +1,6 @@
 // What the single sine (sine_design.cc) and the mapping-switched designs (switched_design.cc)
 // optimise: a trial's criterion at each design point of the box, on its information as the
-// optimisers see it (DofContext::DesignInformation) plus the prior; its travel over those
+// optimisers see it (DofPlanningProblem::DesignInformation) plus the prior; its travel over those
 // points within the pool's free travel less the sine family's margin; and the frequency
 // variable v of their waves, ω = ω_lo·(ω_hi/ω_lo)^v over SineFrequencyRange.
 #pragma once
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "uuvplan/model/excitation.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/design/sine_design.h"
 
 namespace uuvplan::planner {
@@ -19,13 +19,12 @@ class SineFamilyObjective {
  public:
   /// `force_abs`: the force level whose optimal frequencies span ω; `duration`: the longest
   /// trial (s), which must hold min_periods periods of ω_lo.
-  SineFamilyObjective(const DofContext& ctx, const SineDesignOptions& o,
-                      const std::vector<Eigen::MatrixXd>& prior, double force_abs,
-                      double duration);
+  SineFamilyObjective(const DofPlanningProblem& ctx, const SineDesignOptions& o,
+                      const std::vector<Eigen::MatrixXd>& prior, double force_abs, double duration);
 
   /// The trial `input` of `duration` s in its model `tm`: the criterion at design point j into
   /// phi[j]. Returns the span of its position over the design points (m or rad).
-  double Criteria(const DofContext::TrialModel& tm, const model::Excitation& input,
+  double Criteria(const DofPlanningProblem::TrialModel& tm, const model::Excitation& input,
                   double duration, double* phi) const;
   /// The travel constraint (<= 0: met) of a span: its excess over the free travel less the
   /// margin, relative to the free travel; −1 when the pool does not limit the DOF.
@@ -36,7 +35,7 @@ class SineFamilyObjective {
   const std::array<double, 2>& omega_range() const { return omega_; }
 
  private:
-  const DofContext& ctx_;
+  const DofPlanningProblem& ctx_;
   Criterion criterion_;
   const std::vector<Eigen::MatrixXd>& prior_;
   std::vector<int> interest_;

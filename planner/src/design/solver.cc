@@ -7,14 +7,13 @@
 #include <sstream>
 
 #include "options_check.h"
-
 #include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::planner {
 
-constexpr model::EnumNames<Robustness, 3> kRobustnessNames{{{
-    {Robustness::kNominal, "nominal"}, {Robustness::kMaximin, "maximin"},
-    {Robustness::kAverage, "average"}}}};
+constexpr model::EnumNames<Robustness, 3> kRobustnessNames{{{{Robustness::kNominal, "nominal"},
+                                                             {Robustness::kMaximin, "maximin"},
+                                                             {Robustness::kAverage, "average"}}}};
 
 std::string_view RobustnessName(Robustness r) { return kRobustnessNames.Name(r); }
 
@@ -22,15 +21,19 @@ std::string_view SolverBackendName(SolverBackend b) {
   return b == SolverBackend::kNlopt ? "nlopt" : "ipopt";
 }
 
-constexpr model::EnumNames<SolverStatus, 4> kSolverStatusNames{{{
-    {SolverStatus::kConverged, "converged"}, {SolverStatus::kMaxEvaluations, "max_evaluations"},
-    {SolverStatus::kInfeasible, "infeasible"}, {SolverStatus::kFailed, "failed"}}}};
+constexpr model::EnumNames<SolverStatus, 4> kSolverStatusNames{
+    {{{SolverStatus::kConverged, "converged"},
+      {SolverStatus::kMaxEvaluations, "max_evaluations"},
+      {SolverStatus::kInfeasible, "infeasible"},
+      {SolverStatus::kFailed, "failed"}}}};
 
 std::string_view SolverStatusName(SolverStatus s) { return kSolverStatusNames.Name(s); }
 
 bool SolverOptions::IsValid(std::string* error) const {
   internal::OptionsCheck check("SolverOptions", error);
-  check.Require(max_global_evaluations >= 0, "max_global_evaluations", max_global_evaluations, ">= 0")
+  check
+      .Require(max_global_evaluations >= 0, "max_global_evaluations", max_global_evaluations,
+               ">= 0")
       .Require(max_local_evaluations >= 1, "max_local_evaluations", max_local_evaluations, ">= 1")
       .Require(relative_tolerance > 0, "relative_tolerance", relative_tolerance, "> 0")
       .Require(fd_step > 0 && fd_step < 0.1, "fd_step", fd_step, "0 < fd_step < 0.1")

@@ -22,7 +22,7 @@ std::string_view SpeedLimitKey(model::Dof dof) {
 std::string SpeedLimitRefusal(const std::string& mapping, int sign, model::Dof dof, double min_abs,
                               double limit, const LowestDrag& drag) {
   const std::string unit = model::IsRotational(dof) ? "rad/s" : "m/s";
-  // The steady speed of min_thrust's least force at the lowest drag (seed 000 eq. 3 at rest:
+  // The steady speed of min_thrust's least force at the lowest drag (ref 000 eq. 3 at rest:
   // k·v + kq·v² = phi); the limit must exceed it for any force range to remain: 1% above,
   // rounded to 3 digits.
   const double needed = SteadySpeed(drag.k, drag.kq, min_abs);

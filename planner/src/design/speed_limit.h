@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "uuvplan/model/vehicle.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 
 namespace uuvplan::planner {
 

@@ -34,7 +34,7 @@ bool SteadyDesignOptions::IsValid(std::string* error) const {
 namespace {
 
 // Step 2: the information of each candidate from rest (M[c][j] at design point j).
-std::vector<std::vector<Eigen::MatrixXd>> CandidateInformation(const DofContext& ctx,
+std::vector<std::vector<Eigen::MatrixXd>> CandidateInformation(const DofPlanningProblem& ctx,
                                                                const std::vector<SteadyLeg>& legs) {
   std::vector<std::vector<Eigen::MatrixXd>> M;
   for (const SteadyLeg& leg : legs) M.push_back(ctx.Information(LegDesign(leg, ctx.dof(), "")));
@@ -42,7 +42,7 @@ std::vector<std::vector<Eigen::MatrixXd>> CandidateInformation(const DofContext&
 }
 
 // Number of legs: the options', or every informed parameter but m plus 2.
-int LegCount(const DofContext& ctx, const SteadyDesignOptions& o,
+int LegCount(const DofPlanningProblem& ctx, const SteadyDesignOptions& o,
              const std::vector<std::vector<Eigen::MatrixXd>>& M) {
   if (o.legs != 0) return o.legs;
   const int np = ctx.model().num_parameters();
@@ -52,7 +52,7 @@ int LegCount(const DofContext& ctx, const SteadyDesignOptions& o,
 }
 
 // Step 2: the approximate design's weights; false (status and message set) if it failed.
-bool SolveWeights(const DofContext& ctx, const SteadyDesignOptions& o,
+bool SolveWeights(const DofPlanningProblem& ctx, const SteadyDesignOptions& o,
                   const std::vector<std::vector<Eigen::MatrixXd>>& M, int N,
                   const std::vector<Eigen::MatrixXd>& prior, SteadyDesignResult* result) {
   const DesignProblem problem = SteadyWeightsProblem(ctx, M, N, prior, o.criterion);
@@ -73,24 +73,23 @@ bool SolveWeights(const DofContext& ctx, const SteadyDesignOptions& o,
 // A leg the exact design runs more than once is a replicate, not a slip: the D-optimal
 // weights put that share of the N legs on it (efficient rounding of N·w, Pukelsheim & Rieder
 // 1992), so a schedule may list the same run twice.
-void NoteReplicates(const DofContext& ctx, const std::vector<SteadyLeg>& legs, int N,
+void NoteReplicates(const DofPlanningProblem& ctx, const std::vector<SteadyLeg>& legs, int N,
                     SteadyDesignResult* result) {
   std::map<std::pair<std::string, double>, int> count;
   for (const SteadyLeg& l : legs) ++count[{l.mapping, l.force}];
   for (const auto& [leg, n] : count) {
     if (n < 2) continue;
-    result->notes.push_back(std::string(model::DofName(ctx.dof())) + ": the steady run " +
-                            DirName(leg.first, leg.second > 0 ? 1 : -1) + " at " +
-                            model::Significant(leg.second, 3) + " " +
-                            std::string(model::ForceUnit(ctx.dof())) + " runs " +
-                            std::to_string(n) + " times: the D-optimal design puts " +
-                            std::to_string(n) + " of its " + std::to_string(N) +
-                            " legs there (replicates, not a repeated entry)");
+    result->notes.push_back(
+        std::string(model::DofName(ctx.dof())) + ": the steady run " +
+        DirName(leg.first, leg.second > 0 ? 1 : -1) + " at " + model::Significant(leg.second, 3) +
+        " " + std::string(model::ForceUnit(ctx.dof())) + " runs " + std::to_string(n) +
+        " times: the D-optimal design puts " + std::to_string(n) + " of its " + std::to_string(N) +
+        " legs there (replicates, not a repeated entry)");
   }
 }
 
 // The criterion of the packed trials with the prior, and the status and notes.
-void Summarise(const DofContext& ctx, const SteadyDesignOptions& o,
+void Summarise(const DofPlanningProblem& ctx, const SteadyDesignOptions& o,
                const std::vector<Eigen::MatrixXd>& prior, const std::string& infeasible,
                SteadyDesignResult* result) {
   const std::string dof(model::DofName(ctx.dof()));
@@ -122,7 +121,7 @@ void Summarise(const DofContext& ctx, const SteadyDesignOptions& o,
 
 }  // namespace
 
-SteadyDesignResult DesignSteady(const DofContext& ctx, const SteadyDesignOptions& o,
+SteadyDesignResult DesignSteady(const DofPlanningProblem& ctx, const SteadyDesignOptions& o,
                                 const std::vector<Eigen::MatrixXd>& prior,
                                 const std::string& id_prefix) {
   SteadyDesignResult result;

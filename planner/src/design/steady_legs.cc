@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "design/sensor_information.h"
-#include "format.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/mapping.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/fisher_information.h"
 #include "uuvplan/planner/design/seed_rules.h"
 #include "uuvplan/planner/design/steady_design.h"
@@ -30,8 +30,8 @@ double SteadyLegTimer::HoldTime(double speed) const {
   const double target = o_.speed_rel_sigma * std::max(std::abs(speed), 1e-6);
   double t = std::numeric_limits<double>::infinity();
   if (s.position) {  // LS slope of N = rate·T positions: σ² = 12σ_p²/(rate·T³)
-    t = std::min(t, std::cbrt(12.0 * NoiseVariance(*s.position) /
-                              (s.position->rate_hz * target * target)));
+    t = std::min(
+        t, std::cbrt(12.0 * NoiseVariance(*s.position) / (s.position->rate_hz * target * target)));
   }
   if (s.velocity) {  // mean of N = rate·T velocities
     t = std::min(t, NoiseVariance(*s.velocity) / (s.velocity->rate_hz * target * target));
@@ -53,7 +53,7 @@ SteadyLegTimer::Timing SteadyLegTimer::TimeLeg(const std::vector<model::SegmentD
   d.segments.push_back({leg.force, horizon, leg.mapping});
   d.duration = t0 + horizon;
   const auto input = model::MakeExcitation(ctx_.vehicle(), d);
-  const DofContext::TrialModel& tm = ctx_.ModelFor(d);
+  const DofPlanningProblem::TrialModel& tm = ctx_.ModelFor(d);
   const model::DofModel& m = *tm.model;
   const int ik = m.ParameterIndex(model::param::kLinearDrag);
   const int iq = m.ParameterIndex(model::param::kQuadraticDrag);
@@ -110,7 +110,7 @@ bool SteadyLegTimer::MakeLeg(const std::string& mapping, int sign, double force_
                              SteadyLeg* leg) const {
   leg->mapping = mapping;
   leg->force = sign * force_abs;
-  // Horizon: twice the settling time of the slowest linearised response (seed 000 eq. 13,
+  // Horizon: twice the settling time of the slowest linearised response (ref 000 eq. 13,
   // t_c = m/k_L at the heaviest, least-dragged box point) plus the longest hold; the full
   // trial limit only if that was not enough.
   const double t_max = ctx_.options().max_trial_duration_s;
@@ -160,7 +160,6 @@ bool SteadyLegTimer::SmallestTimely(const std::string& mapping, int sign, double
 }  // namespace internal
 
 using internal::DirName;
-using internal::Fmt;
 
 model::TrialDesign LegDesign(const SteadyLeg& leg, model::Dof dof, const std::string& id) {
   model::TrialDesign d;
@@ -173,7 +172,7 @@ model::TrialDesign LegDesign(const SteadyLeg& leg, model::Dof dof, const std::st
   return d;
 }
 
-SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignOptions& o) {
+SteadyCandidates MakeSteadyCandidates(const DofPlanningProblem& ctx, const SteadyDesignOptions& o) {
   SteadyCandidates out;
   const auto& v = ctx.vehicle();
   internal::SteadyLegTimer sp(ctx, o);
@@ -191,9 +190,9 @@ SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignO
       double lo = r.min_abs * 1.02;  // a 2% margin over min_thrust
       SteadyLeg smallest;
       if (!sp.SmallestTimely(name, s, lo, r.max_abs, t_max, &lo, &smallest)) {
-        infeasible << " " << DirName(name, s) << ": no run from " << Fmt(lo, 4) << " to "
-                   << Fmt(r.max_abs, 4) << " " << model::ForceUnit(ctx.dof())
-                   << " settles and holds within " << t_max << " s;";
+        infeasible << " " << DirName(name, s) << ": no run from " << model::Significant(lo, 4)
+                   << " to " << model::Significant(r.max_abs, 4) << " "
+                   << model::ForceUnit(ctx.dof()) << " settles and holds within " << t_max << " s;";
         continue;
       }
       out.required_travel = std::max(out.required_travel, smallest.travel);
@@ -202,12 +201,13 @@ SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignO
         const model::Dof dof = ctx.dof();
         const bool turns = model::IsRotational(dof);
         const std::string unit(model::PositionUnit(dof));
-        m << DirName(name, s) << ": the smallest run (|phi| = " << Fmt(lo, 4) << " "
-          << model::ForceUnit(dof) << ", settles in " << Fmt(smallest.settle_s) << " s, holds "
-          << Fmt(smallest.hold_s) << " s) travels " << Fmt(smallest.travel, 4) << " " << unit
-          << " over the box; the " << (turns ? "tether allows " : "pool has ") << Fmt(avail, 4)
-          << " " << unit << (turns ? "" : " free") << ": needs "
-          << Fmt(ctx.pool().ExtentFor(dof, smallest.travel), 4)
+        m << DirName(name, s) << ": the smallest run (|phi| = " << model::Significant(lo, 4) << " "
+          << model::ForceUnit(dof) << ", settles in " << model::Significant(smallest.settle_s, 3)
+          << " s, holds " << model::Significant(smallest.hold_s, 3) << " s) travels "
+          << model::Significant(smallest.travel, 4) << " " << unit << " over the box; the "
+          << (turns ? "tether allows " : "pool has ") << model::Significant(avail, 4) << " " << unit
+          << (turns ? "" : " free") << ": needs "
+          << model::Significant(ctx.pool().ExtentFor(dof, smallest.travel), 4)
           << (turns ? " turns (max_turns)" : " m wall to wall");
         infeasible << " " << m.str() << ";";
         continue;

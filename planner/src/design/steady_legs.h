@@ -7,7 +7,7 @@
 
 #include "design/travel_margin.h"
 #include "uuvplan/model/trial_design.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/design/steady_design.h"
 
 namespace uuvplan::planner::internal {
@@ -18,7 +18,7 @@ std::string DirName(const std::string& mapping, int sign);
 // Times steady legs over the a priori box of a DOF.
 class SteadyLegTimer {
  public:
-  SteadyLegTimer(const DofContext& ctx, const SteadyDesignOptions& o) : ctx_(ctx), o_(o) {}
+  SteadyLegTimer(const DofPlanningProblem& ctx, const SteadyDesignOptions& o) : ctx_(ctx), o_(o) {}
 
   // Hold time for measuring a speed of magnitude `speed` to speed_rel_sigma.
   double HoldTime(double speed) const;
@@ -42,13 +42,13 @@ class SteadyLegTimer {
   // The smallest |force| in [lo, hi] whose run settles and holds within t_max: lo itself when
   // it does, else by bisection in log force (a short --max-duration: ROMEO surge's min_thrust
   // run takes 63 s, its 25 s runs at 183 N were refused with it). A larger force takes less
-  // of both: it settles sooner (the linearised drag grows with the speed, seed 000 eq. 13) and
+  // of both: it settles sooner (the linearised drag grows with the speed, ref 000 eq. 13) and
   // holds shorter (HoldTime ∝ 1/speed). False when none does.
   bool SmallestTimely(const std::string& mapping, int sign, double lo, double hi, double t_max,
                       double* force, SteadyLeg* leg) const;
 
  private:
-  const DofContext& ctx_;
+  const DofPlanningProblem& ctx_;
   const SteadyDesignOptions& o_;
 };
 
@@ -59,7 +59,7 @@ std::vector<SteadyLeg> ExactDesign(const std::vector<SteadyLeg>& candidates,
 // Step 4: packs result->legs into trials (`id_prefix`-1, -2, ...), each a chain of legs
 // alternating in direction, in compatible thrusters, within the pool and the trial duration
 // limit; their checks and information summed at each design point (leg_packing.cc).
-void PackTrials(const DofContext& ctx, const SteadyDesignOptions& o, const std::string& id_prefix,
-                SteadyDesignResult* result);
+void PackTrials(const DofPlanningProblem& ctx, const SteadyDesignOptions& o,
+                const std::string& id_prefix, SteadyDesignResult* result);
 
 }  // namespace uuvplan::planner::internal

@@ -37,7 +37,7 @@ struct WeightsData {
 };
 
 std::shared_ptr<const WeightsData> MakeWeightsData(
-    const DofContext& ctx, const std::vector<std::vector<Eigen::MatrixXd>>& M, int N,
+    const DofPlanningProblem& ctx, const std::vector<std::vector<Eigen::MatrixXd>>& M, int N,
     const std::vector<Eigen::MatrixXd>& prior, Criterion criterion) {
   const int C = static_cast<int>(M.size());
   const int J = static_cast<int>(ctx.design_thetas().size());
@@ -135,7 +135,7 @@ bool EvaluateWeights(const WeightsData& data, const double* w, double* phi, doub
 
 }  // namespace
 
-DesignProblem SteadyWeightsProblem(const DofContext& ctx,
+DesignProblem SteadyWeightsProblem(const DofPlanningProblem& ctx,
                                    const std::vector<std::vector<Eigen::MatrixXd>>& M, int N,
                                    const std::vector<Eigen::MatrixXd>& prior, Criterion criterion) {
   const int C = static_cast<int>(M.size());

@@ -25,7 +25,8 @@ constexpr int kMultisineHarmonics = 3;
 bool NoReversalBetween(const model::Vehicle& v, int pos, int neg) {
   for (const auto& [thruster, share_pos] : v.mappings[pos].shares) {
     for (const auto& [other, share_neg] : v.mappings[neg].shares) {
-      if (thruster == other && share_pos != 0 && share_neg != 0 && (share_pos > 0) != (share_neg < 0)) {
+      if (thruster == other && share_pos != 0 && share_neg != 0 &&
+          (share_pos > 0) != (share_neg < 0)) {
         return false;
       }
     }
@@ -50,9 +51,9 @@ std::array<double, 2> WaveRange(const std::vector<model::SineComponent>& c, doub
 
 class SwitchedProblem {
  public:
-  SwitchedProblem(const DofContext& ctx, model::InputFamily family, const SineDesignOptions& o,
-                  const std::vector<Eigen::MatrixXd>& prior, const SwitchPair& pair,
-                  double duration)
+  SwitchedProblem(const DofPlanningProblem& ctx, model::InputFamily family,
+                  const SineDesignOptions& o, const std::vector<Eigen::MatrixXd>& prior,
+                  const SwitchPair& pair, double duration)
       : ctx_(ctx),
         family_(family),
         objective_(ctx, o, prior, 0.5 * (pair.pos_range.max_abs + pair.neg_range.max_abs),
@@ -71,9 +72,12 @@ class SwitchedProblem {
 
   static int VariablesOf(model::InputFamily family) {
     switch (family) {
-      case model::InputFamily::kSwitchedSquare: return 5;
-      case model::InputFamily::kSwitchedSine: return 4;
-      default: return 2 * kMultisineHarmonics + 3;
+      case model::InputFamily::kSwitchedSquare:
+        return 5;
+      case model::InputFamily::kSwitchedSine:
+        return 4;
+      default:
+        return 2 * kMultisineHarmonics + 3;
     }
   }
   int num_variables() const { return VariablesOf(family_); }
@@ -117,9 +121,15 @@ class SwitchedProblem {
         continue;
       }
       switch (family_) {
-        case model::InputFamily::kSwitchedSquare: out.push_back({1.0, 1.0, v, 0.5, 0.75}); break;
-        case model::InputFamily::kSwitchedSine: out.push_back({1.0, 0.5, v, 0.0}); break;
-        default: out.push_back({v, 1.0, 0.3, 0.1, 0.0, 0.5, 0.5, 1.0, 0.5}); break;
+        case model::InputFamily::kSwitchedSquare:
+          out.push_back({1.0, 1.0, v, 0.5, 0.75});
+          break;
+        case model::InputFamily::kSwitchedSine:
+          out.push_back({1.0, 0.5, v, 0.0});
+          break;
+        default:
+          out.push_back({v, 1.0, 0.3, 0.1, 0.0, 0.5, 0.5, 1.0, 0.5});
+          break;
       }
     }
     return out;
@@ -185,10 +195,11 @@ class SwitchedProblem {
     const double scale = (1.0 - 1e-3) * Lerp(0.0, top - bottom, x[2 * kMultisineHarmonics + 1]) /
                          std::max(range[1] - range[0], 1e-12);
     for (auto& c : d->components) c.amplitude *= scale;
-    d->offset = Lerp(bottom - scale * range[0], top - scale * range[1], x[2 * kMultisineHarmonics + 2]);
+    d->offset =
+        Lerp(bottom - scale * range[0], top - scale * range[1], x[2 * kMultisineHarmonics + 2]);
   }
 
-  const DofContext& ctx_;
+  const DofPlanningProblem& ctx_;
   model::InputFamily family_;
   SineFamilyObjective objective_;
   SwitchPair pair_;
@@ -200,7 +211,7 @@ class SwitchedProblem {
 };
 
 // The trial's information (real sensors), criterion per point, check and status.
-void ScoreAndCheck(const DofContext& ctx, const SineDesignOptions& o,
+void ScoreAndCheck(const DofPlanningProblem& ctx, const SineDesignOptions& o,
                    const std::vector<Eigen::MatrixXd>& prior, SineDesignResult* r) {
   const model::TrialDesign& d = r->trial.design;
   r->information = ctx.Information(d);
@@ -227,7 +238,7 @@ void ScoreAndCheck(const DofContext& ctx, const SineDesignOptions& o,
 
 }  // namespace
 
-std::vector<SwitchPair> SwitchPairs(const DofContext& ctx) {
+std::vector<SwitchPair> SwitchPairs(const DofPlanningProblem& ctx) {
   const model::Vehicle& v = ctx.vehicle();
   std::vector<SwitchPair> pairs;
   for (int p : v.MappingsOf(ctx.dof())) {
@@ -244,7 +255,7 @@ std::vector<SwitchPair> SwitchPairs(const DofContext& ctx) {
   return pairs;
 }
 
-std::vector<SwitchPair> OneWayPairs(const DofContext& ctx, const OneWayHint& hint) {
+std::vector<SwitchPair> OneWayPairs(const DofPlanningProblem& ctx, const OneWayHint& hint) {
   const model::Vehicle& v = ctx.vehicle();
   std::vector<SwitchPair> out;
   for (int mi : v.MappingsOf(ctx.dof())) {
@@ -274,7 +285,7 @@ struct PairSolution {
 };
 
 // The family's optimisations, one per switch pair (DesignSwitched's doc).
-std::vector<PairTask> PairTasks(const DofContext& ctx, model::InputFamily family,
+std::vector<PairTask> PairTasks(const DofPlanningProblem& ctx, model::InputFamily family,
                                 const SineDesignOptions& o, const OneWayHint& hint) {
   const double longest = o.fixed_duration_s > 0
                              ? o.fixed_duration_s
@@ -301,7 +312,7 @@ std::vector<PairTask> PairTasks(const DofContext& ctx, model::InputFamily family
   return tasks;
 }
 
-PairSolution SolvePair(const DofContext& ctx, const PairTask& t, const SineDesignOptions& o,
+PairSolution SolvePair(const DofPlanningProblem& ctx, const PairTask& t, const SineDesignOptions& o,
                        const std::vector<Eigen::MatrixXd>& prior) {
   SwitchedProblem sp(ctx, t.family, o, prior, t.pair, t.duration);
   DesignProblem p;
@@ -328,8 +339,8 @@ PairSolution SolvePair(const DofContext& ctx, const PairTask& t, const SineDesig
 
 // Every task solved, on the context's threads (PlannerOptions::threads): each writes only its
 // own slot, so the solutions do not depend on the number of threads.
-std::vector<PairSolution> SolveAll(const DofContext& ctx, const std::vector<PairTask>& tasks,
-                                   const SineDesignOptions& o,
+std::vector<PairSolution> SolveAll(const DofPlanningProblem& ctx,
+                                   const std::vector<PairTask>& tasks, const SineDesignOptions& o,
                                    const std::vector<Eigen::MatrixXd>& prior) {
   // The costliest first (evaluations ∝ variables, SolvePair's budgets), so that no thread is
   // left with a multisine while the others idle; the order of solving changes no solution.
@@ -347,7 +358,7 @@ std::vector<PairSolution> SolveAll(const DofContext& ctx, const std::vector<Pair
 
 // The family's best solution (the first of equal objectives, in pair order), scored and
 // checked.
-SineDesignResult BestOfFamily(const DofContext& ctx, model::InputFamily family,
+SineDesignResult BestOfFamily(const DofPlanningProblem& ctx, model::InputFamily family,
                               const SineDesignOptions& o, const std::vector<Eigen::MatrixXd>& prior,
                               const std::string& id, const PairSolution* first,
                               const PairSolution* last) {
@@ -372,7 +383,7 @@ SineDesignResult BestOfFamily(const DofContext& ctx, model::InputFamily family,
 
 }  // namespace
 
-SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family,
+SineDesignResult DesignSwitched(const DofPlanningProblem& ctx, model::InputFamily family,
                                 const SineDesignOptions& o,
                                 const std::vector<Eigen::MatrixXd>& prior, const std::string& id,
                                 const OneWayHint& hint) {
@@ -380,7 +391,7 @@ SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family
   return BestOfFamily(ctx, family, o, prior, id, solved.data(), solved.data() + solved.size());
 }
 
-SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptions& o,
+SineDesignResult DesignInertiaTrial(const DofPlanningProblem& ctx, const SineDesignOptions& o,
                                     const std::vector<Eigen::MatrixXd>& prior,
                                     const std::string& id) {
   SineDesignResult best = DesignSine(ctx, o, prior, id);
@@ -393,9 +404,10 @@ SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptio
     const bool pos = d.Pushes(d.mapping, +1), neg = d.Pushes(d.mapping, -1);
     hint = {d.duration, d.mapping, pos == neg ? 0 : pos ? +1 : -1};
   }
-  best.notes.push_back("single sine: " + (best.status == DesignStatus::kOk
-                                              ? "robust criterion " + model::Significant(best.criterion, 4)
-                                              : best.message));
+  best.notes.push_back("single sine: " +
+                       (best.status == DesignStatus::kOk
+                            ? "robust criterion " + model::Significant(best.criterion, 4)
+                            : best.message));
   // Every family's pairs solved at once (on the context's threads), then judged family by
   // family in the order of o.families.
   std::vector<PairTask> tasks;
@@ -411,7 +423,8 @@ SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptio
         ctx, family, o, prior, id, solved.data() + (f ? ends[f - 1] : 0), solved.data() + ends[f]);
     std::ostringstream s;
     s << model::InputFamilyName(r.status == DesignStatus::kOk ? r.trial.design.family : family)
-      << ": " << (r.status == DesignStatus::kOk ? "robust criterion " + model::Significant(r.criterion, 4)
+      << ": "
+      << (r.status == DesignStatus::kOk ? "robust criterion " + model::Significant(r.criterion, 4)
                                         : r.message);
     best.notes.push_back(s.str());
     if (r.status != DesignStatus::kOk) continue;

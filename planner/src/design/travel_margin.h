@@ -1,7 +1,7 @@
-// How far inside the pool's free travel (DofContext::available) a design keeps its travel over
-// the box, so that the final check (DofContext::Check: a finer step, a denser box grid) agrees
-// with the travel the design computed for itself. Two values, one per kind of design: the
-// sine family traces its travel on the design points and steady legs on their own timing, and
+// How far inside the pool's free travel (DofPlanningProblem::available) a design keeps its travel
+// over the box, so that the final check (DofPlanningProblem::Check: a finer step, a denser box
+// grid) agrees with the travel the design computed for itself. Two values, one per kind of design:
+// the sine family traces its travel on the design points and steady legs on their own timing, and
 // each kept the margin it was tuned with.
 #pragma once
 

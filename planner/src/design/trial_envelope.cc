@@ -9,14 +9,15 @@
 
 namespace uuvplan::planner {
 
-PositionEnvelope EnvelopeOf(const DofContext& ctx, const model::TrialDesign& design, int points) {
+PositionEnvelope EnvelopeOf(const DofPlanningProblem& ctx, const model::TrialDesign& design,
+                            int points) {
   if (points < 2 || !(design.duration > 0)) {
     throw std::invalid_argument("EnvelopeOf: needs >= 2 points and a duration > 0");
   }
   const auto input = model::MakeExcitation(ctx.vehicle(), design);
-  const DofContext::TrialModel& tm = ctx.ModelFor(design);
+  const DofPlanningProblem::TrialModel& tm = ctx.ModelFor(design);
   const double dt = design.duration / (points - 1);
-  const double step = std::min(ctx.step_s(), 0.1);  // as DofContext::Check
+  const double step = std::min(ctx.step_s(), 0.1);  // as DofPlanningProblem::Check
   PositionEnvelope e;
   auto add = [&](const Eigen::VectorXd& theta, bool centre) {
     const PositionTrace trace = TracePosition(*tm.model, theta, *input, design.duration, dt, step);
@@ -72,7 +73,7 @@ ThrusterForces ThrusterForcesOf(const model::Vehicle& vehicle, const model::Tria
     f.nominal.push_back(phi);
     if (mapping < 0 || mapping >= static_cast<int>(vehicle.mappings.size())) continue;
     for (const auto& [thruster, share] : vehicle.mappings[mapping].shares) {
-      f.force[thruster][k] = share * phi;  // tau_i = share_i·phi_n (seed 000 Table I)
+      f.force[thruster][k] = share * phi;  // tau_i = share_i·phi_n (ref 000 Table I)
       if (share != 0) f.used[thruster] = true;
     }
   }
@@ -97,7 +98,8 @@ TrialProfile SampleProfile(const model::Vehicle& vehicle, const model::TrialDesi
   return p;
 }
 
-StartPosition StartOf(const model::Pool& pool, model::Dof dof, const std::array<double, 2>& travel) {
+StartPosition StartOf(const model::Pool& pool, model::Dof dof,
+                      const std::array<double, 2>& travel) {
   StartPosition s;
   const double free = pool.FreeTravel(dof), span = travel[1] - travel[0];
   // A travel longer than the free one starts from the negative end; without a limit (an

@@ -5,21 +5,19 @@
 
 #include <algorithm>
 #include <chrono>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
-#include "format.h"
 #include "loop/next_trial_policy.h"
 #include "options_check.h"
 #include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::planner {
 namespace {
-
-using internal::Fmt;
 using model::Dof;
 
 constexpr model::EnumNames<NextStatus, 5> kNextStatusNames{
@@ -149,11 +147,12 @@ std::string BudgetSpentMessage(const LoopOptions& options,
                                const std::vector<DofProgress>& progress) {
   std::ostringstream m;
   m << "trial budget of " << options.budget << " spent before the target of "
-    << Fmt(options.step.target_percent) << "%:";
+    << model::Significant(options.step.target_percent, 3) << "%:";
   for (const auto& p : progress) {
     if (p.converged) continue;
     m << " " << model::DofName(p.dof) << " " << p.worst << " at "
-      << (std::isfinite(p.worst_percent) ? Fmt(p.worst_percent) + "%" : "not estimated");
+      << (std::isfinite(p.worst_percent) ? model::Significant(p.worst_percent, 3) + "%"
+                                         : "not estimated");
     if (p.precise && !p.doubts.empty()) m << " but not trusted (" << p.doubts.front() << ")";
     m << ";";
   }
@@ -164,7 +163,7 @@ std::string BudgetSpentMessage(const LoopOptions& options,
 // Whether the loop stops before running the decided trial; if so, sets the result's status.
 bool LoopEnds(const internal::Decision& d, const LoopOptions& options, LoopResult* result) {
   if (d.status != NextStatus::kTrial) {
-    result->status = d.status == NextStatus::kConverged   ? LoopStatus::kConverged
+    result->status = d.status == NextStatus::kConverged    ? LoopStatus::kConverged
                      : d.status == NextStatus::kInfeasible ? LoopStatus::kInfeasible
                      : d.status == NextStatus::kStuck      ? LoopStatus::kStuck
                                                            : LoopStatus::kRefused;
@@ -249,7 +248,7 @@ LoopIteration RunIteration(internal::Decision d, const LoopOptions& options,
   return it;
 }
 
-// Issue #13: a design never runs again after `max_repeats` runs without new information; its
+// A design never runs again after `max_repeats` runs without new information; its
 // DOF is stuck (with the limit that keeps the planner on that design). True when it stopped.
 bool StopRepeat(internal::Planner& planner, const internal::Decision& d, const LoopResult& result,
                 const model::Campaign& campaign, const LoopOptions& options,
@@ -261,10 +260,9 @@ bool StopRepeat(internal::Planner& planner, const internal::Decision& d, const L
   if (idle < options.max_repeats) return false;
   const DofProgress* p = ProgressOf(d.progress, d.dof);
   CandidateGain gain = d.candidates.empty() ? CandidateGain{} : d.candidates.back();
-  std::string reason = "this design ran " + std::to_string(idle) +
-                       " times without new information; " +
-                       internal::StuckReason(planner, campaign, *p,
-                                             result.estimates.Find(d.dof), d.trial, gain);
+  std::string reason =
+      "this design ran " + std::to_string(idle) + " times without new information; " +
+      internal::StuckReason(planner, campaign, *p, result.estimates.Find(d.dof), d.trial, gain);
   memory->stopped[d.dof] = {d.dof, NextStatus::kStuck, reason};
   return true;
 }
@@ -278,11 +276,11 @@ void TrackConsistency(const LoopIteration& it, const LoopOptions& options,
   int& n = (*streak)[it.dof];
   n = p->consistency.consistent ? 0 : n + 1;
   if (n >= options.max_inconsistent) {
-    memory->stopped[it.dof] = {
-        it.dof, NextStatus::kRefused,
-        "estimates inconsistent across " + std::to_string(n) + " consecutive trials (last: " +
-            p->consistency.text + "): the model does not explain every trial, or its σ are "
-            "overconfident (try `uuvplan diagnose`)"};
+    memory->stopped[it.dof] = {it.dof, NextStatus::kRefused,
+                               "estimates inconsistent across " + std::to_string(n) +
+                                   " consecutive trials (last: " + p->consistency.text +
+                                   "): the model does not explain every trial, or its σ are "
+                                   "overconfident (try `uuvplan diagnose`)"};
   }
 }
 
@@ -292,21 +290,23 @@ bool DesignLoopOptions::IsValid(std::string* error) const {
   internal::OptionsCheck check("DesignLoopOptions", error);
   check
       .Require(target_percent > 0 && std::isfinite(target_percent), "target_percent",
-               Fmt(target_percent), "0 < target_percent < inf")
-      .Require(usable_percent > 0, "usable_percent", Fmt(usable_percent), "usable_percent > 0")
+               model::Significant(target_percent, 3), "0 < target_percent < inf")
+      .Require(usable_percent > 0, "usable_percent", model::Significant(usable_percent, 3),
+               "usable_percent > 0")
       .Require(consistency_level > 0 && consistency_level < 1, "consistency_level",
-               Fmt(consistency_level), "0 < consistency_level < 1")
-      .Require(max_trials_to_target > 0, "max_trials_to_target", Fmt(max_trials_to_target),
-               "> 0")
-      .Require(min_information_ratio > 0, "min_information_ratio", Fmt(min_information_ratio),
-               "> 0");
+               model::Significant(consistency_level, 3), "0 < consistency_level < 1")
+      .Require(max_trials_to_target > 0, "max_trials_to_target",
+               model::Significant(max_trials_to_target, 3), "> 0")
+      .Require(min_information_ratio > 0, "min_information_ratio",
+               model::Significant(min_information_ratio, 3), "> 0");
   return check.ok() && schedule.IsValid(error) && identify.IsValid(error);
 }
 
 bool LoopOptions::IsValid(std::string* error) const {
   internal::OptionsCheck check("LoopOptions", error);
   check.Require(budget >= 1, "budget", budget, "budget >= 1")
-      .Require(command_rate_hz > 0, "command_rate_hz", Fmt(command_rate_hz), "> 0")
+      .Require(command_rate_hz > 0, "command_rate_hz", model::Significant(command_rate_hz, 3),
+               "> 0")
       .Require(max_repeats >= 0, "max_repeats", max_repeats, "max_repeats >= 0")
       .Require(max_inconsistent >= 1, "max_inconsistent", max_inconsistent,
                "max_inconsistent >= 1");

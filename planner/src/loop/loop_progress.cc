@@ -3,14 +3,13 @@
 #include <cmath>
 
 #include "loop/loop_trust.h"
-#include "format.h"
 #include "loop/next_trial_policy.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/model_structure.h"
 #include "uuvplan/model/util/text.h"
-#include "uuvplan/planner/loop/design_loop.h"
 #include "uuvplan/planner/design/thrust_limits.h"
+#include "uuvplan/planner/loop/design_loop.h"
 
 namespace uuvplan::planner {
 
@@ -46,7 +45,7 @@ InterestParameter Interest(const model::Vehicle& vehicle, Dof dof,
   return q;
 }
 
-// Contract issue #5: "m, k (or kq where significant) and every η" — every η of the DOF's
+// "m, k (or kq where significant) and every η" — every η of the DOF's
 // mappings in a direction the thrusters can hold (the planner's model).
 std::vector<InterestParameter> InterestParameters(const model::Vehicle& vehicle, Dof dof,
                                                   const ident::DofIdentification* id) {
@@ -71,7 +70,7 @@ std::vector<InterestParameter> InterestParameters(const model::Vehicle& vehicle,
   return out;
 }
 
-// Why the DOF's estimates are not trusted yet (issue #13), and whether more trials of this
+// Why the DOF's estimates are not trusted yet, and whether more trials of this
 // model can change that (the refusal: precise and consistent, yet non-physical or invalid).
 void JudgeTrust(const ident::DofIdentification* id, const ident::DofIdentification* previous,
                 const DesignLoopOptions& options, DofProgress* p) {
@@ -99,7 +98,7 @@ void JudgeTrust(const ident::DofIdentification* id, const ident::DofIdentificati
   p->trusted = p->doubts.empty();
   if (p->precise && p->consistency.consistent && !wrong.empty()) {
     p->refusal = wrong.front() + " with every parameter of interest below " +
-                 internal::Fmt(options.target_percent) +
+                 model::Significant(options.target_percent, 3) +
                  "% and consistent across trials: more trials of this model will not change it "
                  "(the model misses an effect: try `uuvplan diagnose`)";
   }

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <limits>
 
-#include "format.h"
 #include "uuvplan/ident/stats/chi_square.h"
 #include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::planner {
 
@@ -19,15 +19,15 @@ std::string NonPhysical(const model::Vehicle& vehicle, model::Dof dof, const std
   if (f == nullptr) return "";
   const std::string unit = f->Unit(dof) == "1" ? "" : " " + std::string(f->Unit(dof));
   if (!f->Physical(value)) {
-    return name + " = " + internal::Fmt(value, 4) + unit + " is non-physical (expected " +
+    return name + " = " + model::Significant(value, 4) + unit + " is non-physical (expected " +
            f->PhysicalExpected() + ")";
   }
   // Translations only: the dry mass is weighed, a rotational inertia is computed from an
   // assumed mass distribution (ROMEO's file gives 93.75 kg·m² for a uniform box, the seed
   // measured 84 ± 5, §IV-D) and is no bound.
   if (f->above_dry_mass && !model::IsRotational(dof) && value <= vehicle.mass) {
-    return name + " = " + internal::Fmt(value, 4) + unit +
-           " is non-physical (below the vehicle's dry mass " + internal::Fmt(vehicle.mass, 4) +
+    return name + " = " + model::Significant(value, 4) + unit +
+           " is non-physical (below the vehicle's dry mass " + model::Significant(vehicle.mass, 4) +
            unit + ": added mass is positive)";
   }
   return "";
@@ -89,10 +89,11 @@ ConsistencyTest TestConsistency(const ident::DofIdentification& previous,
   z.cwiseAbs().maxCoeff(&w);
   t.worst = names[w];
   t.worst_sigmas = z(w);
-  t.text = "newest trial against the estimate before it: χ² = " + Fmt(t.chi2) + " on " +
-           std::to_string(n) + " parameter(s), p = " + Fmt(t.p_value, 2) +
-           (t.consistent ? " (consistent at " : " (INCONSISTENT at ") + Fmt(100 * level) +
-           "%; " + t.worst + " moved " + Fmt(t.worst_sigmas, 2) + " combined σ)";
+  t.text = "newest trial against the estimate before it: χ² = " + model::Significant(t.chi2, 3) +
+           " on " + std::to_string(n) + " parameter(s), p = " + model::Significant(t.p_value, 2) +
+           (t.consistent ? " (consistent at " : " (INCONSISTENT at ") +
+           model::Significant(100 * level, 3) + "%; " + t.worst + " moved " +
+           model::Significant(t.worst_sigmas, 2) + " combined σ)";
   return t;
 }
 
@@ -111,9 +112,11 @@ std::vector<std::string> ValidationDoubts(const ident::DofIdentification& id,
   }
   if (id.output_error && id.output_error->ok() &&
       id.output_error->residual_lag1 > max_residual_lag1) {
-    out.push_back("the model does not explain the measurements to their noise (output-error "
-                  "residuals' lag-1 autocorrelation " +
-                  Fmt(id.output_error->residual_lag1) + " > " + Fmt(max_residual_lag1) + ")");
+    out.push_back(
+        "the model does not explain the measurements to their noise (output-error "
+        "residuals' lag-1 autocorrelation " +
+        model::Significant(id.output_error->residual_lag1, 3) + " > " +
+        model::Significant(max_residual_lag1, 3) + ")");
   }
   return out;
 }

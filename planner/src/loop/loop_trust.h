@@ -1,4 +1,4 @@
-// Whether a DOF's estimates can be trusted by the design–identify loop (issue #13, design_loop.h):
+// Whether a DOF's estimates can be trusted by the design–identify loop (design_loop.h):
 // physical, not a priori fallbacks, validated, and consistent across the trials that produced
 // them. Internal to the planner library.
 #pragma once

@@ -9,7 +9,6 @@
 #include <set>
 #include <sstream>
 
-#include "format.h"
 #include "loop/loop_trust.h"
 #include "uuvplan/ident/stats/sub_matrix.h"
 #include "uuvplan/model/effects.h"
@@ -54,21 +53,23 @@ void DesignInputs(const model::Vehicle& vehicle, const ident::DofIdentification&
                                           : std::numeric_limits<double>::infinity();
     const bool nuisance = p.name == model::param::kBias || p.name == model::param::kBiasStep;
     if (Held(id, p.name)) {
-      notes->push_back(p.name + " = " + Fmt(p.value) +
+      notes->push_back(p.name + " = " + model::Significant(p.value, 3) +
                        " is not reliable (an a priori fallback): the design keeps its a priori "
                        "value");
       continue;
     }
     std::string wrong = NonPhysical(vehicle, id.dof, p.name, p.value);
     if (wrong.empty() && p.name == model::param::kMass && p.value > m_max) {
-      wrong = "m = " + Fmt(p.value) + " is implausible (above twice the a priori bound)";
+      wrong = "m = " + model::Significant(p.value, 3) +
+              " is implausible (above twice the a priori bound)";
     }
     if (!wrong.empty()) {
       notes->push_back(wrong + ": the design keeps its a priori value");
       continue;
     }
     if (!nuisance && !(percent < max_percent)) {
-      notes->push_back(p.name + " = " + Fmt(p.value) + " ± " + Fmt(p.sigma) +
+      notes->push_back(p.name + " = " + model::Significant(p.value, 3) + " ± " +
+                       model::Significant(p.sigma, 3) +
                        " is insignificant: the design keeps its a priori value");
       continue;
     }
@@ -108,7 +109,7 @@ std::set<Direction> PushedDirections(const model::TrialEntry& e) {
 }
 
 // The open-water directions of a DOF's mappings that its thrusters can hold: the reference of
-// the installation coefficients (seed 000 §II-A: η must be known for at least one mapping).
+// the installation coefficients (ref 000 §II-A: η must be known for at least one mapping).
 std::vector<Direction> OpenWaterDirections(const model::Vehicle& v, Dof dof) {
   std::vector<Direction> out;
   for (int i : v.MappingsOf(dof)) {
@@ -129,15 +130,15 @@ std::string DirectionName(const Direction& d) {
 // The next trial of one DOF, or a reason why there is none. In this order:
 //   1. No trial of the DOF has pushed in an open-water direction yet: one that does — without
 //      that reference the installation coefficients cannot be told from the inertia and the drag
-//      (seed 000 §II-A, eq. 3 is homogeneous in θ), and the estimates of m and k absorb η.
+//      (ref 000 §II-A, eq. 3 is homogeneous in θ), and the estimates of m and k absorb η.
 //   2. An installation coefficient of interest is not estimated yet: a trial pushing in its
 //      mapping and direction. The D criterion of DesignNextTrial does not ask for it by itself:
 //      it scores the parameters a trial reaches, and refining m with another open-water sine can
 //      score higher than opening a new direction.
-//   For 1 and 2 the a priori schedule's first trial that does it is taken (seed 000 order),
+//   For 1 and 2 the a priori schedule's first trial that does it is taken (ref 000 order),
 //   else DesignNextTrial with its sine restricted to that mapping and direction.
 //   3. Estimates not usable yet (m or the drag of interest insignificant): the a priori
-//      schedule, in order (seed 000 §III: steady runs, then the sine).
+//      schedule, in order (ref 000 §III: steady runs, then the sine).
 //   4. DesignNextTrial on all the DOF's parameters (box = estimates ± 2σ, prior = C⁻¹).
 class DofTrialPolicy {
  public:
@@ -183,16 +184,16 @@ class DofTrialPolicy {
   // surge in a 5 m pool it predicted σ(kq) down 29% where the trial achieved 78%).
   PredictedPrecision AtEstimates() const {
     std::vector<std::string> notes;
-    const auto probe = DofContext::APriori(planner_.vehicle, planner_.pool, dof_,
-                                           planner_.options.schedule.planner, &notes);
+    const auto probe = DofPlanningProblem::APriori(planner_.vehicle, planner_.pool, dof_,
+                                                   planner_.options.schedule.planner, &notes);
     ParameterBox centre;
     centre.nominal = probe->box().nominal;
     for (const auto& [name, value] : estimates_) {
       if (centre.nominal.count(name)) centre.nominal[name] = value;
     }
-    const DofContext ctx(planner_.vehicle, planner_.pool, dof_, std::move(centre),
-                         planner_.options.schedule.planner);
-    // The identification fixes what it dropped as insignificant (seed 000 §IV-D model
+    const DofPlanningProblem ctx(planner_.vehicle, planner_.pool, dof_, std::move(centre),
+                                 planner_.options.schedule.planner);
+    // The identification fixes what it dropped as insignificant (ref 000 §IV-D model
     // selection): so does the prediction, by a prior 1000× tighter than its σ before the drop
     // (k dropped leaves kq alone to explain the drag; left free, k and kq are confounded and
     // the predicted gain on kq was 10× too small).
@@ -209,8 +210,8 @@ class DofTrialPolicy {
     }
     PriorInformation prior;
     if (!names.empty()) prior = PriorInformation::FromCovariance(names, covariance);
-    return PredictPrecision(
-        ctx, TrialsInformation(ctx, {d_->trial}, names.empty() ? nullptr : &prior));
+    return PredictPrecision(ctx,
+                            TrialsInformation(ctx, {d_->trial}, names.empty() ? nullptr : &prior));
   }
 
   // Trials like this one to bring a parameter of value `value` to the target. One not determined
@@ -220,8 +221,9 @@ class DofTrialPolicy {
   // σ_now = ∞ is (σ_after/σ_target)²).
   void SetTrialsToTarget(double value, CandidateGain* g) const {
     const auto& o = planner_.options;
-    g->first_estimate = std::isinf(g->sigma_now) && std::isfinite(g->sigma_after) &&
-                        (!std::isfinite(value) || g->sigma_after < o.usable_percent / 100 * std::abs(value));
+    g->first_estimate =
+        std::isinf(g->sigma_now) && std::isfinite(g->sigma_after) &&
+        (!std::isfinite(value) || g->sigma_after < o.usable_percent / 100 * std::abs(value));
     g->trials_to_target = g->first_estimate
                               ? 1.0
                               : TrialsToTarget(g->sigma_now, g->sigma_after,
@@ -255,7 +257,7 @@ class DofTrialPolicy {
                                        : 1.0 - g.sigma_after / g.sigma_now;
       if (!(g.trials_to_target >= best.trials_to_target)) best = g;
     }
-    // The a priori schedule's trials are designed as a set (seed 000: steady runs at several
+    // The a priori schedule's trials are designed as a set (ref 000: steady runs at several
     // levels, then the sine): one alone may inform nothing, and each runs once.
     // A trial with no parameter above the target to bring down (every one below it but not
     // confirmed, or nothing estimated yet) is not judged by a gain it cannot have.
@@ -266,7 +268,7 @@ class DofTrialPolicy {
 
  private:
   // The DOF's trials run so far (by id), the directions its fit trials pushed in, and the a
-  // priori schedule's trials not run yet, in seed 000 order.
+  // priori schedule's trials not run yet, in ref 000 order.
   void ReadHistory() {
     std::set<std::string> run;
     for (const auto& e : campaign_.trials) {
@@ -322,8 +324,8 @@ class DofTrialPolicy {
   }
 
   std::string NotUsableYet() const {
-    return "estimates not usable yet: " + progress_.worst + " at " + Fmt(progress_.worst_percent) +
-           "%";
+    return "estimates not usable yet: " + progress_.worst + " at " +
+           model::Significant(progress_.worst_percent, 3) + "%";
   }
 
   bool TakeAPriori(const PlannedTrial& t, const std::string& why_this) {
@@ -333,7 +335,7 @@ class DofTrialPolicy {
     // Predicted precision after this trial: its information over the a priori box plus the
     // prior information of the estimates so far (what DesignNextTrial reports for its trials).
     std::vector<std::string> ctx_notes;
-    const std::unique_ptr<DofContext> ctx = DofContext::APriori(
+    const std::unique_ptr<DofPlanningProblem> ctx = DofPlanningProblem::APriori(
         planner_.vehicle, planner_.pool, dof_, planner_.options.schedule.planner, &ctx_notes);
     PriorInformation prior;
     if (!names_.empty()) prior = PriorInformation::FromCovariance(names_, covariance_);
@@ -442,15 +444,15 @@ void NoTrial(Decision* d) {
   std::ostringstream m;
   m << (d->status == NextStatus::kInfeasible ? "no trial can be planned for the DOFs still "
                                                "above the target:"
-        : d->status == NextStatus::kRefused ? "no convergence claimed:"
-                                            : "stuck: no trial this pool allows adds enough "
-                                              "information:");
+        : d->status == NextStatus::kRefused  ? "no convergence claimed:"
+                                             : "stuck: no trial this pool allows adds enough "
+                                               "information:");
   for (const auto& s : d->stops) m << " " << s.reason << ";";
   d->message = m.str();
 }
 
 std::string ConvergedMessage(const DesignLoopOptions& options) {
-  return "every parameter of interest is below " + Fmt(options.target_percent) +
+  return "every parameter of interest is below " + model::Significant(options.target_percent, 3) +
          "% percentile error, physical, not an a priori fallback, validated and consistent "
          "with the estimate before its newest trial: no further trial needed";
 }
@@ -569,8 +571,8 @@ std::size_t PlanBatch(Planner& planner, const model::Campaign& campaign,
   model::ParallelFor(to - from, planner.Threads(), [&](std::size_t k) {
     Candidate& c = (*out)[from + k];
     const DofProgress& p = *open[from + k];
-    c.planned = PlanCandidate(planner, campaign, p, estimates.Find(p.dof), &c.part, &c.gain,
-                              &c.why);
+    c.planned =
+        PlanCandidate(planner, campaign, p, estimates.Find(p.dof), &c.part, &c.gain, &c.why);
   });
   return to;
 }
@@ -621,7 +623,7 @@ void StopUnplanned(const DofProgress& p, const Candidate& c, Decision* d) {
 std::string NextTrialMessage(const DofProgress& p, const Decision& tried) {
   std::ostringstream m;
   m << model::DofName(p.dof) << " is furthest from the target (" << p.worst
-    << (std::isfinite(p.worst_percent) ? " at " + Fmt(p.worst_percent) + "%"
+    << (std::isfinite(p.worst_percent) ? " at " + model::Significant(p.worst_percent, 3) + "%"
                                        : std::string(" not estimated yet"))
     << (p.precise && !p.doubts.empty() ? ", not trusted yet: " + p.doubts.front() : "")
     << "): " << tried.source << " trial '" << tried.trial.design.id << "'";

@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "design/speed_limit.h"
-#include "format.h"
 #include "loop/next_trial_policy.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/thrust_limits.h"
@@ -17,9 +16,10 @@ namespace {
 using model::Dof;
 
 std::string GainText(const CandidateGain& g) {
-  std::string s = "cut σ(" + g.parameter + ") by " + Fmt(100.0 * g.gain, 2) + "%";
+  std::string s = "cut σ(" + g.parameter + ") by " + model::Significant(100.0 * g.gain, 2) + "%";
   if (std::isfinite(g.trials_to_target)) {
-    return s + " (about " + Fmt(std::ceil(g.trials_to_target), 3) + " such trials to the target)";
+    return s + " (about " + model::Significant(std::ceil(g.trials_to_target), 3) +
+           " such trials to the target)";
   }
   return s + " (no number of such trials reaches the target)";
 }
@@ -45,9 +45,9 @@ std::string ThrustLimit(const model::Vehicle& vehicle, const PlannedTrial& trial
       if (f == 0.0) continue;
       const ForceRange range = DirectionForceRange(vehicle, mi, f > 0 ? +1 : -1);
       if (range.feasible && std::abs(f) >= 0.95 * range.max_abs) {
-        return "thrust range: the trial asks " + Fmt(std::abs(f)) + " " + unit + " of the " +
-               Fmt(range.max_abs) + " " + unit + " " + demand.mapping +
-               " gives in that direction; stronger thrusters would lift it";
+        return "thrust range: the trial asks " + model::Significant(std::abs(f), 3) + " " + unit +
+               " of the " + model::Significant(range.max_abs, 3) + " " + unit + " " +
+               demand.mapping + " gives in that direction; stronger thrusters would lift it";
       }
     }
   }
@@ -63,8 +63,9 @@ std::string StuckReason(Planner& planner, const model::Campaign& campaign,
   const std::string name(model::DofName(dof));
   const std::string unit = model::IsRotational(dof) ? "N·m" : "N";
   std::ostringstream m;
-  m << name << " " << gain.parameter << " is stuck at " << Fmt(progress.worst_percent)
-    << "% (target " << Fmt(planner.options.target_percent) << "%): the best next trial ('"
+  m << name << " " << gain.parameter << " is stuck at "
+    << model::Significant(progress.worst_percent, 3) << "% (target "
+    << model::Significant(planner.options.target_percent, 3) << "%): the best next trial ('"
     << trial.design.id << "', " << model::TrialKindName(trial.design.kind) << " in "
     << trial.design.mapping << ") would " << GainText(gain) << ". Limit: ";
   std::string pool_note;
@@ -77,14 +78,16 @@ std::string StuckReason(Planner& planner, const model::Campaign& campaign,
     const double free = planner.pool.FreeTravel(dof);
     const bool planned = PlanCandidate(relaxed, campaign, progress, id, &scratch, &g2, &why);
     if (planned && !g2.negligible) {
-      m << "pool size — the trial travels " << Fmt(trial.travel[1] - trial.travel[0])
-        << " m of the " << Fmt(free) << " m of free " << model::Pool::SideName(dof)
-        << "; in a pool with twice the free travel (" << Fmt(big.WallToWall(dof))
+      m << "pool size — the trial travels "
+        << model::Significant(trial.travel[1] - trial.travel[0], 3) << " m of the "
+        << model::Significant(free, 3) << " m of free " << model::Pool::SideName(dof)
+        << "; in a pool with twice the free travel (" << model::Significant(big.WallToWall(dof), 3)
         << " m wall to wall) the best trial would " << GainText(g2);
       return m.str();
     }
     pool_note = planned ? "; a pool with twice the free travel would not lift it (its best trial "
-                          "would " + GainText(g2) + ")"
+                          "would " +
+                              GainText(g2) + ")"
                         : "";
   }
   const std::string thrust = ThrustLimit(planner.vehicle, trial, unit);
@@ -92,7 +95,7 @@ std::string StuckReason(Planner& planner, const model::Campaign& campaign,
     m << thrust << pool_note;
   } else if (model::IsRotational(dof)) {
     m << "rotation-rate limit — designs keep below "
-      << Fmt(SpeedLimitOf(planner.vehicle, dof, planner.options.schedule.planner))
+      << model::Significant(SpeedLimitOf(planner.vehicle, dof, planner.options.schedule.planner), 3)
       << " rad/s, where the drag of interest hardly acts; a higher max_rotation_rate in the "
          "vehicle file (if the vehicle's tether and drag fit allow it) would lift it";
   } else {

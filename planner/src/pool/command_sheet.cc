@@ -6,10 +6,10 @@
 #include <map>
 #include <memory>
 
+#include "uuvplan/model/simulator.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/planner/design/centred_travel.h"
-#include "uuvplan/planner/design/dof_context.h"
-#include "uuvplan/model/simulator.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -26,8 +26,9 @@ std::vector<double> RowTimes(const model::TrialDesign& d, double rate_hz) {
   }
   t.push_back(d.duration);
   std::sort(t.begin(), t.end());
-  t.erase(std::unique(t.begin(), t.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }),
-          t.end());
+  t.erase(
+      std::unique(t.begin(), t.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }),
+      t.end());
   while (!t.empty() && t.back() > d.duration + 1e-9) t.pop_back();
   return t;
 }
@@ -72,7 +73,7 @@ CommandSheet MakeCommandSheet(const model::Vehicle& vehicle, const model::Pool& 
   CommandSheet sheet;
   sheet.rate_hz = options.rate_hz;
   for (const model::Thruster& t : vehicle.thrusters) sheet.thrusters.push_back(t.name);
-  std::map<model::Dof, std::unique_ptr<DofContext>> contexts;
+  std::map<model::Dof, std::unique_ptr<DofPlanningProblem>> contexts;
   std::vector<std::string> notes;  // the planner's notes were printed with the schedule
   for (const PlannedTrial& trial : schedule.trials) {
     const model::TrialDesign& d = trial.design;
@@ -91,13 +92,15 @@ CommandSheet MakeCommandSheet(const model::Vehicle& vehicle, const model::Pool& 
     }
     c.command.row(static_cast<int>(c.t.size()) - 1).setZero();  // the end: every thruster stops
     auto& ctx = contexts[d.dof];
-    if (!ctx) ctx = DofContext::APriori(vehicle, pool, d.dof, options.schedule.planner, &notes);
-    const DofContext::TrialModel& tm = ctx->ModelFor(d);
+    if (!ctx)
+      ctx = DofPlanningProblem::APriori(vehicle, pool, d.dof, options.schedule.planner, &notes);
+    const DofPlanningProblem::TrialModel& tm = ctx->ModelFor(d);
     model::TrialConditions conditions;
     conditions.input = input.get();
     model::SimulationOptions so;
     so.step_s = std::min(ctx->step_s(), 0.1);
-    const model::Trajectory x = model::Simulate(*tm.model, tm.design_thetas[0], conditions, c.t, so);
+    const model::Trajectory x =
+        model::Simulate(*tm.model, tm.design_thetas[0], conditions, c.t, so);
     c.expected_position.assign(x.x.col(0).data(), x.x.col(0).data() + x.x.rows());
     PlaceStart(pool, trial, &c);
     sheet.trials.push_back(std::move(c));

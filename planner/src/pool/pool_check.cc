@@ -23,14 +23,14 @@ PoolCheckResult CheckPool(const model::Vehicle& vehicle, const model::Pool& pool
                           const Schedule& plan, const PoolCheckOptions& o) {
   PoolCheckResult result;
   result.feasible = true;
-  std::map<model::Dof, std::unique_ptr<DofContext>> contexts;
+  std::map<model::Dof, std::unique_ptr<DofPlanningProblem>> contexts;
   std::vector<model::Dof> order;
-  auto context = [&](model::Dof dof) -> DofContext& {
+  auto context = [&](model::Dof dof) -> DofPlanningProblem& {
     auto it = contexts.find(dof);
     if (it == contexts.end()) {
       it = contexts
-               .emplace(dof,
-                        DofContext::APriori(vehicle, pool, dof, o.schedule.planner, &result.notes))
+               .emplace(dof, DofPlanningProblem::APriori(vehicle, pool, dof, o.schedule.planner,
+                                                         &result.notes))
                .first;
       order.push_back(dof);
     }
@@ -59,7 +59,7 @@ PoolCheckResult CheckPool(const model::Vehicle& vehicle, const model::Pool& pool
   result.alternative = PlanSchedule(vehicle, pool, so);
   result.has_alternative = true;
   for (model::Dof dof : order) {
-    DofContext& ctx = *contexts.at(dof);
+    DofPlanningProblem& ctx = *contexts.at(dof);
     const auto plan_info = TrialsInformation(ctx, plan.trials);
     auto it = std::find_if(result.alternative.dofs.begin(), result.alternative.dofs.end(),
                            [&](const DofPlan& dp) { return dp.dof == dof; });

@@ -4,43 +4,49 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "design/travel_margin.h"
-#include "format.h"
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/parallel.h"
-#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::planner {
 namespace {
 
-using internal::Fmt;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-constexpr model::EnumNames<PoolLimit, 10> kLimitNames{{{
-    {PoolLimit::kNone, "none"}, {PoolLimit::kLength, "length"}, {PoolLimit::kWidth, "width"},
-    {PoolLimit::kDepth, "depth"}, {PoolLimit::kTether, "tether"},
-    {PoolLimit::kThrust, "thrust range"}, {PoolLimit::kNoReversal, "no reversal"},
-    {PoolLimit::kDuration, "duration"}, {PoolLimit::kInformation, "information"},
-    {PoolLimit::kRotationRate, "rotation rate"}}}};
+constexpr model::EnumNames<PoolLimit, 10> kLimitNames{
+    {{{PoolLimit::kNone, "none"},
+      {PoolLimit::kLength, "length"},
+      {PoolLimit::kWidth, "width"},
+      {PoolLimit::kDepth, "depth"},
+      {PoolLimit::kTether, "tether"},
+      {PoolLimit::kThrust, "thrust range"},
+      {PoolLimit::kNoReversal, "no reversal"},
+      {PoolLimit::kDuration, "duration"},
+      {PoolLimit::kInformation, "information"},
+      {PoolLimit::kRotationRate, "rotation rate"}}}};
 
-constexpr model::EnumNames<Hostability, 3> kHostabilityNames{{{
-    {Hostability::kAll, "all"}, {Hostability::kPart, "part"}, {Hostability::kNone, "none"}}}};
+constexpr model::EnumNames<Hostability, 3> kHostabilityNames{
+    {{{Hostability::kAll, "all"}, {Hostability::kPart, "part"}, {Hostability::kNone, "none"}}}};
 
 PoolLimit SpaceLimit(model::Dof dof) {
   switch (dof) {
-    case model::Dof::kSurge: return PoolLimit::kLength;
-    case model::Dof::kSway: return PoolLimit::kWidth;
-    case model::Dof::kHeave: return PoolLimit::kDepth;
-    default: return PoolLimit::kTether;
+    case model::Dof::kSurge:
+      return PoolLimit::kLength;
+    case model::Dof::kSway:
+      return PoolLimit::kWidth;
+    case model::Dof::kHeave:
+      return PoolLimit::kDepth;
+    default:
+      return PoolLimit::kTether;
   }
 }
 
 bool Has(const std::string& s, const char* what) { return s.find(what) != std::string::npos; }
 
-// The limit a failure text names (the planner's own messages, DofContext::Check's reasons).
-PoolLimit LimitOfText(model::Dof dof, const std::string& text) {
+// The limit the planner's own message names (DofPlan::message: the designs say what stops
+// them in words only).
+PoolLimit LimitOfMessage(model::Dof dof, const std::string& text) {
   if (Has(text, "travel") || Has(text, "rotation ")) return SpaceLimit(dof);
   if (Has(text, "reverses")) return PoolLimit::kNoReversal;
   if (Has(text, "min_thrust") || Has(text, "speed limit") || Has(text, "thrust")) {
@@ -52,16 +58,32 @@ PoolLimit LimitOfText(model::Dof dof, const std::string& text) {
   return PoolLimit::kInformation;
 }
 
+// The limit a given plan's trial check names (DofPlanningProblem::Check), the pool's space first.
+PoolLimit LimitOfCheck(model::Dof dof, const TrialCheck& check) {
+  if (check.exceeds_travel) return SpaceLimit(dof);
+  if (check.reversal) return PoolLimit::kNoReversal;
+  if (check.thrust_out_of_range) return PoolLimit::kThrust;
+  if (check.exceeds_duration) return PoolLimit::kDuration;
+  return PoolLimit::kInformation;
+}
+
 // The pool with `free` of free travel along `dof` (a larger side, or more turns).
 model::Pool Offering(const model::Pool& pool, model::Dof dof, double free) {
   model::Pool p = pool;
   p.name = pool.name + "-enlarged";
   const double wall = pool.WallToWallFor(free + kLargestTravelMargin);
   switch (dof) {
-    case model::Dof::kSurge: p.length = std::max(p.length, wall); break;
-    case model::Dof::kSway: p.width = std::max(p.width, wall); break;
-    case model::Dof::kHeave: p.depth = std::max(p.depth, wall); break;
-    default: p.max_turns = std::max(p.max_turns, (free + kLargestTravelMargin) / (2 * M_PI));
+    case model::Dof::kSurge:
+      p.length = std::max(p.length, wall);
+      break;
+    case model::Dof::kSway:
+      p.width = std::max(p.width, wall);
+      break;
+    case model::Dof::kHeave:
+      p.depth = std::max(p.depth, wall);
+      break;
+    default:
+      p.max_turns = std::max(p.max_turns, (free + kLargestTravelMargin) / (2 * M_PI));
   }
   return p;
 }
@@ -113,8 +135,8 @@ std::vector<char> HostedPoints(const model::Vehicle& vehicle, const model::Pool&
                                const std::vector<BoxPoint>& points) {
   std::vector<char> hosted(points.size(), 0);  // each point on its own (PlannerOptions::threads)
   model::ParallelFor(points.size(), so.planner.Threads(), [&](std::size_t i) {
-    hosted[i] = PlanSchedule(VehicleAt(vehicle, dof, points[i]), pool, so).status ==
-                PlanStatus::kOk;
+    hosted[i] =
+        PlanSchedule(VehicleAt(vehicle, dof, points[i]), pool, so).status == PlanStatus::kOk;
   });
   return hosted;
 }
@@ -156,80 +178,56 @@ Hostability Overall(const std::vector<DofVerdict>& dofs) {
 }
 
 // The verdict of one DOF from the planner's own plan of it in this pool.
-DofVerdict JudgeOwn(const DofPlan* p, model::Dof dof, const model::Pool& pool) {
+DofVerdict JudgeOwn(const DofPlan& p, const model::Pool& pool) {
   DofVerdict v;
-  v.dof = dof;
-  if (p == nullptr) {
-    v.limit = PoolLimit::kInformation;
-    v.reason = std::string(model::DofName(dof)) + " was not planned";
-    v.need = kInf;
-    return v;
-  }
-  v.determinacy = p->determinacy;
-  v.reach = p->reach;
-  for (const auto& t : p->trials) v.extent = std::max(v.extent, t.travel[1] - t.travel[0]);
-  v.hosted = p->status == DesignStatus::kOk && p->complete;
+  v.dof = p.dof;
+  v.determinacy = p.determinacy;
+  v.reach = p.reach;
+  for (const auto& t : p.trials) v.extent = std::max(v.extent, t.travel[1] - t.travel[0]);
+  v.hosted = p.status == DesignStatus::kOk && p.complete;
   v.need = v.extent;
   if (v.hosted) {
     v.hostability = Hostability::kAll;
     return v;
   }
-  v.reason = p->message;
-  const double free = pool.FreeTravel(dof);
-  v.below_target = p->determinacy.determined && !p->reach.reached;
+  v.message = p.message;
+  const double free = pool.FreeTravel(p.dof);
+  v.below_target = p.determinacy.determined && !p.reach.reached;
   if (v.below_target) {
     // Longer runs and swings inform the drag more: a larger pool, confirmed by planning
     // (ConfirmNeed); else the loop's own stuck limits (BelowTargetUnlifted).
-    v.limit = SpaceLimit(dof);
+    v.limit = SpaceLimit(p.dof);
     v.need = std::max(v.extent, std::isfinite(free) ? free : v.extent) * 1.5;
     return v;
   }
-  const double asked = std::isfinite(p->required_travel) ? p->required_travel : free;
-  bool space_note = Has(p->message, "travels");
-  for (const auto& n : p->notes) space_note = space_note || Has(n, "travels");
+  const double asked = std::isfinite(p.required_travel) ? p.required_travel : free;
+  bool space_note = Has(p.message, "travels");
+  for (const auto& n : p.notes) space_note = space_note || Has(n, "travels");
   if (space_note) {
-    v.limit = SpaceLimit(dof);
+    v.limit = SpaceLimit(p.dof);
     v.need = std::max({v.extent, asked, free});
   } else {
-    v.limit = LimitOfText(dof, p->message);
-    const bool space = v.limit == SpaceLimit(dof) || v.limit == PoolLimit::kInformation;
+    v.limit = LimitOfMessage(p.dof, p.message);
+    const bool space = v.limit == SpaceLimit(p.dof) || v.limit == PoolLimit::kInformation;
     // Trials that fit but do not determine: more room gives longer runs and swings.
     v.need = space ? std::max(v.extent, std::isfinite(free) ? free : v.extent) * 1.5 : kInf;
   }
   return v;
 }
 
-// "9.66 m of free depth (12.66 m wall to wall)" or "1080° (3 turns)" (angles for people in
-// degrees, docs/cli.md).
-std::string Travel(const model::Pool& pool, model::Dof dof, double free) {
-  std::ostringstream s;
-  if (model::IsRotational(dof)) {
-    s << model::AngleText(free);
-  } else {
-    s << Fmt(free, 4) << " m of free " << model::Pool::SideName(dof) << " ("
-      << Fmt(pool.WallToWallFor(free), 4) << " m wall to wall)";
-  }
-  return s.str();
-}
-
 // A DOF short of the target that no larger pool planned lifts: the loop's stuck rule names
 // what is left (stuck_limit.cc): the rotation-rate limit of a rotation, the no-reversal
 // limit of a translation (its drag seen over one speed range per direction).
-void BelowTargetUnlifted(const model::Pool& pool, DofVerdict* v) {
+void BelowTargetUnlifted(DofVerdict* v) {
   if (!v->below_target || v->need_verified) return;
-  const std::string tried = Travel(pool, v->dof, v->need);
+  v->unlifted = true;
+  v->unlifted_travel = v->need;
   v->limit = model::IsRotational(v->dof) ? PoolLimit::kRotationRate : PoolLimit::kNoReversal;
   v->need = kInf;
-  v->reason += " A pool offering " + tried + " does not lift it either: " +
-               (model::IsRotational(v->dof)
-                    ? "the designs keep below the rotation-rate limit, where the drag hardly acts"
-                    : "the trials never reverse a thruster, so the drag is seen over one speed "
-                      "range per direction") +
-               ".";
 }
 
-// A given plan's trials of `v.dof`: each must pass DofContext::Check in this pool. False when
-// one fails.
+// A given plan's trials of `v.dof`: each must pass DofPlanningProblem::Check in this pool. False
+// when one fails (the failing checks are the verdict's plan_checks).
 bool JudgePlanTrials(const std::vector<TrialPoolCheck>& checks, DofVerdict* v) {
   bool fits = true;
   for (const auto& c : checks) {
@@ -238,11 +236,9 @@ bool JudgePlanTrials(const std::vector<TrialPoolCheck>& checks, DofVerdict* v) {
                                                     // stays the planner's, searched as without it
     if (c.check.feasible) continue;
     fits = false;
-    const std::string why = model::Join(c.check.reasons, "; ");
-    if (v->hosted || v->limit == PoolLimit::kNone) v->limit = LimitOfText(v->dof, why);
+    if (v->hosted || v->limit == PoolLimit::kNone) v->limit = LimitOfCheck(v->dof, c.check);
     v->hosted = false;
     v->hostability = Hostability::kNone;
-    v->reason += (v->reason.empty() ? "" : " ") + std::string("plan trial '") + c.id + "': " + why;
     if (v->limit != SpaceLimit(v->dof)) v->need = kInf;
   }
   return fits;
@@ -263,43 +259,6 @@ RequiredPool Required(const model::Pool& pool, const std::vector<DofVerdict>& do
     r.turns = std::max(r.turns, pool.ExtentFor(d, free[model::Index(d)]));
   }
   return r;
-}
-
-std::string DofList(const std::vector<DofVerdict>& dofs, Hostability h) {
-  std::vector<std::string> names;
-  for (const auto& d : dofs) {
-    if (d.hostability == h) names.emplace_back(model::DofName(d.dof));
-  }
-  return model::Join(names);
-}
-
-// " to 5% (every parameter of interest's 100·σ/|θ|)": the precision judged at.
-std::string Goal(const PoolVerdict& v) {
-  return " to " + Fmt(v.goal.target_percent) + "% (every parameter of interest's 100·σ/|θ|)";
-}
-
-// "Pool P CAN host …", "… can host … for PART of the a priori box …", "… CANNOT host …".
-std::string Sentence(const PoolVerdict& v, const model::Pool& pool) {
-  std::ostringstream s;
-  s << "Pool " << pool.name;
-  switch (v.hostability) {
-    case Hostability::kAll:
-      s << " CAN host the identification of " << DofList(v.dofs, Hostability::kAll) << Goal(v);
-      break;
-    case Hostability::kPart:
-      s << " can host the identification of " << DofList(v.dofs, Hostability::kPart) << Goal(v)
-        << " for PART of the a priori box only (the first trials decide: `loop` and `next` run "
-           "and stop when the estimates fall outside it)";
-      break;
-    case Hostability::kNone:
-      s << " CANNOT host the identification of " << DofList(v.dofs, Hostability::kNone)
-        << Goal(v);
-      if (!v.dofs.empty() && !v.dofs.front().points.empty()) {
-        s << " for any vehicle of the a priori box checked (its centre and corners)";
-      }
-      break;
-  }
-  return s.str();
 }
 
 }  // namespace
@@ -331,7 +290,7 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
   std::vector<char> plan_fits;
   std::vector<std::size_t> not_hosted;
   for (const auto& p : own.dofs) {
-    DofVerdict& v = out.dofs.emplace_back(JudgeOwn(&p, p.dof, pool));
+    DofVerdict& v = out.dofs.emplace_back(JudgeOwn(p, pool));
     const bool own_hosted = v.hosted;
     plan_fits.push_back(JudgePlanTrials(out.plan_checks, &v));
     v.only_plan_fails = own_hosted && !v.hosted;
@@ -347,7 +306,7 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
     // plan's own need is its travel, Required).
     if (!v.only_plan_fails && std::isfinite(v.need) && vo.need_checks >= 0) {
       ConfirmNeed(vehicle, pool, options, vo, &v);
-      BelowTargetUnlifted(pool, &v);
+      BelowTargetUnlifted(&v);
     }
     // A given plan that fails its own checks is judged as given: no other point rescues it.
     if (vo.judge_points && plan_fits[i]) JudgePoints(vehicle, pool, options, &v);
@@ -355,8 +314,7 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
   for (const DofVerdict& v : out.dofs) out.hosted = out.hosted && v.hosted;
   out.required = Required(pool, out.dofs);
   out.hostability = Overall(out.dofs);
-  out.sentence = Sentence(out, pool);
-  if (own.dofs.empty()) out.sentence += ": " + own.message;
+  if (own.dofs.empty()) out.unplanned = own.message;
   return out;
 }
 
@@ -366,183 +324,18 @@ PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
   return JudgePool(vehicle, pool, options, PlanSchedule(vehicle, pool, options), plan, vo);
 }
 
-namespace {
-
-std::string DofLine(const DofVerdict& v, const model::Pool& pool) {
-  std::ostringstream s;
-  s << "  " << model::DofName(v.dof) << ": ";
-  if (v.hosted) {
-    const double free = pool.FreeTravel(v.dof);
-    s << "hosted; its trials span "
-      << (model::IsRotational(v.dof) ? model::AngleText(v.extent) : Fmt(v.extent, 4)) << " of the "
-      << Travel(pool, v.dof, free)
-      << (model::IsRotational(v.dof) ? " the tether allows" : "");
-    return s.str();
-  }
-  s << (v.hostability == Hostability::kPart ? "hosted for PART of the a priori box ("
-                                             : "NOT hosted (")
-    << PoolLimitName(v.limit) << "): ";
-  if (v.only_plan_fails) {
-    s << "the planner's own schedule is hosted here; the plan's trials need "
-      << Travel(pool, v.dof, v.extent) << ". ";
-  } else if (std::isfinite(v.need)) {
-    s << (v.need_verified ? "needs " : "needs at least ") << Travel(pool, v.dof, v.need)
-      << (v.need_verified ? ", confirmed by planning it there" : "");
-    if (v.need_verified && v.need_searched) {
-      if (v.need_refuted > pool.FreeTravel(v.dof)) {
-        s << " (planned with " << (model::IsRotational(v.dof) ? model::AngleText(v.need_refuted)
-                                                             : Fmt(v.need_refuted, 4) + " m free")
-          << ", not hosted)";
-      }
-    } else if (v.need_verified) {
-      s << " (not searched for the smallest: `uuvplan check-pool` does)";
-    }
-    s << ". ";
-  } else {
-    s << "no pool size lifts this limit. ";
-  }
-  s << v.reason;
-  if (v.points.empty()) return s.str();
-  std::vector<std::string> at, not_at;
-  for (const auto& p : v.points) (p.hosted ? at : not_at).push_back(p.point.label);
-  s << " Planned at the box's centre and corners"
-    << (v.points_start_known ? " (hosted at none with each trial's start estimated; below, "
-                               "counting it known, the upper bound of the information)"
-                             : "")
-    << ": hosted " << (at.empty() ? "at none" : "at " + model::Join(at, "; "))
-    << (not_at.empty() ? "" : "; not at " + model::Join(not_at, "; ")) << ".";
-  if (not_at.empty()) {
-    s << " Each is hosted when planned as a known vehicle; no one schedule hosts the whole box "
-         "(the robust design above), so the first trials decide which to run.";
-  }
-  return s.str();
-}
-
-// The pool to book instead: along each DOF not hosted whose limit a larger pool lifts, the
-// smallest found (ConfirmNeed); the other sides as this pool. A hosted pool gets no such line
-// (its trials fill the room they are given: not a minimum).
-std::string RequiredLine(const PoolVerdict& v, const model::Pool& pool) {
-  std::ostringstream r;
-  const RequiredPool& q = v.required;
-  std::vector<std::string> sides;
-  bool rotation = false, searched = false, planned = false;
-  double bracket = 0.0;  // the widest (need − refuted) / need of the sides searched
-  for (const auto& d : v.dofs) {
-    if (d.hosted || !std::isfinite(d.need)) continue;
-    // A given plan's own travel beyond what planning found: the plan as given needs that
-    // side (Required), the planner's own schedule less — say which is which.
-    const bool plan_side = v.plan_given && d.extent > d.need;
-    planned = planned || !plan_side;
-    if (d.need_searched && d.need > 0 && !plan_side) {
-      searched = true;
-      bracket = std::max(bracket, (d.need - d.need_refuted) / d.need);
-    }
-    if (model::IsRotational(d.dof)) {
-      rotation = true;
-      continue;
-    }
-    const double wall = d.dof == model::Dof::kSurge ? q.length
-                        : d.dof == model::Dof::kSway ? q.width : q.depth;
-    std::string side = std::string(model::Pool::SideName(d.dof)) +
-                       (d.need_verified || plan_side ? " " : " at least ") + Fmt(wall, 4) +
-                       " m wall to wall (" + Fmt(wall - 2 * pool.margin, 4) + " m free)";
-    if (plan_side) {
-      side += ", the plan's trials' travel over the box (the planner's own schedule " +
-              (d.only_plan_fails
-                   ? std::string("is hosted in this pool")
-                   : std::string(d.need_verified ? "is hosted from " : "needs at least ") +
-                         Fmt(pool.WallToWallFor(d.need), 4) + " m wall to wall") +
-              ")";
-    }
-    sides.push_back(side);
-  }
-  if (rotation) sides.push_back("tether " + Fmt(q.turns, 4) + " turns");
-  if (sides.empty()) return "  no pool size lifts the limits above";
-  if (!planned) {
-    r << "  a pool that hosts the plan as given";
-  } else if (searched) {
-    r << "  smallest pool found that hosts every DOF asked for";
-    if (bracket > 0) {
-      r << " (each side planned there; " << Fmt(100 * bracket, 2)
-        << "% less free travel, or less, was planned and does not host)";
-    }
-  } else {
-    r << "  a pool that hosts every DOF asked for (planned there; not the smallest: `uuvplan "
-         "check-pool` searches for it)";
-  }
-  r << ": " << model::Join(sides, "; ")
-    << (q.exists ? "; the rest as this pool" : "; but some DOF is limited by what no pool size lifts");
-  return r.str();
-}
-
-}  // namespace
-
-std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& pool) {
-  std::vector<std::string> out = {v.sentence};
-  std::ostringstream p;
-  p << "  pool: " << Fmt(pool.length, 4) << " x " << Fmt(pool.width, 4) << " x "
-    << Fmt(pool.depth, 4) << " m wall to wall, margin " << Fmt(pool.margin, 4) << " m: free "
-    << Fmt(pool.FreeTravel(model::Dof::kSurge), 4) << " x "
-    << Fmt(pool.FreeTravel(model::Dof::kSway), 4) << " x "
-    << Fmt(pool.FreeTravel(model::Dof::kHeave), 4) << " m; tether " << Fmt(pool.max_turns, 4)
-    << " turns";
-  out.push_back(p.str());
-  for (const auto& d : v.dofs) out.push_back(DofLine(d, pool));
-  if (!v.hosted) out.push_back(RequiredLine(v, pool));
-  std::vector<std::string> tilts;
-  for (const auto& d : v.dofs) {
-    if (d.dof == model::Dof::kRoll || d.dof == model::Dof::kPitch) {
-      tilts.emplace_back(model::DofName(d.dof));
-    }
-  }
-  if (!tilts.empty()) {
-    out.push_back("  assumption: " + model::Join(tilts) +
-                  " planned as a free rotation, like yaw: the decoupled model (seed 004 eq. 2) "
-                  "has no hydrostatic restoring moment (its bias is a constant moment), so a "
-                  "vehicle stable in " + model::Join(tilts) +
-                  " (metacentric height > 0) cannot make these turns; plan them only for a "
-                  "vehicle without one");
-  }
-  const bool bound = std::any_of(v.dofs.begin(), v.dofs.end(), [](const DofVerdict& d) {
-    return d.points_start_known;
-  });
-  if (v.hostability == Hostability::kPart) {
-    out.push_back(
-        "  assumption: judged over the whole a priori box (the vehicle file's inertia bounds and "
-        "drag prior); the pool hosts the vehicles at the points listed" +
-        std::string(bound ? " (for a DOF so marked, only counting each trial's start known: "
-                            "the loop's trials at its estimates must do better than the a "
-                            "priori schedule there)"
-                          : "") +
-        ", so the first trials decide: `loop` and `next` run, and a loop that then ends stuck "
-        "on a DOF above has met a vehicle outside the hostable part (status infeasible, exit "
-        "1)");
-  } else if (!v.hosted) {
-    out.push_back(
-        "  assumption: judged over the whole a priori box (its centre and four (m, drag) "
-        "corners each planned as a known vehicle, and again counting each trial's start "
-        "known, the upper bound of the information): no vehicle of the box is hosted, `loop` "
-        "refuses before any trial");
-  }
-  return out;
-}
-
 void ReadLoopEnd(const PoolVerdict& verdict, LoopResult* result) {
   if (verdict.hostability != Hostability::kPart || result->status != LoopStatus::kStuck) return;
-  std::vector<std::string> outside;
+  std::vector<model::Dof> outside;
   for (const auto& p : result->progress) {
     if (p.converged) continue;
     for (const auto& d : verdict.dofs) {
-      if (d.dof == p.dof && d.hostability == Hostability::kPart) {
-        outside.emplace_back(model::DofName(p.dof));
-      }
+      if (d.dof == p.dof && d.hostability == Hostability::kPart) outside.push_back(p.dof);
     }
   }
   if (outside.empty()) return;
   result->status = LoopStatus::kInfeasible;
-  result->message = "the first trials place " + model::Join(outside) +
-                    " outside the part of the a priori box the pool hosts (the verdict "
-                    "before any trial: " + verdict.sentence + "); " + result->message;
+  result->outside_part = outside;
 }
 
 }  // namespace uuvplan::planner

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the malformed-input suite (issue #15): tests/data/bad/cases/<format>_<case>.<ext>,
+"""Writes the malformed-input suite: tests/data/bad/cases/<format>_<case>.<ext>,
 mutations of the valid files of tests/data/io, and cases/expectations.tsv, which
 tests/cli/malformed_input_test.cc runs: every case must exit with status 2 and name its file
 and line or key. Regenerate after changing a case: python3 tests/data/bad/make_cases.py

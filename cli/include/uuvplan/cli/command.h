@@ -28,27 +28,30 @@ inline constexpr int kExitBadInput = 2;
 /// `run` returns the exit status. Input errors are thrown as model::InputError.
 struct Command {
   std::string name;
-  int order = 0;  ///< position in --help
+  int order = 0;  ///< position in --help: the story's order (plan, run, identify, diagnose)
   std::function<void(CLI::App& app, std::function<int()>* run)> add;
 };
 
 std::vector<Command>& Registry();
+
+/// --help's order: by `order` (each command's own), then by name.
+bool HelpOrder(const Command& a, const Command& b);
 
 struct CommandRegistration {
   explicit CommandRegistration(Command c) { Registry().push_back(std::move(c)); }
 };
 
 /// The command `name` (`description` in --help): when chosen, `bind` has added its flags to a
-/// fresh `Options` (whose initial values are the defaults) and `run` is called with them.
-template <typename Options>
+/// fresh `Flags` (each command's `<Command>Flags`, whose initial values are the defaults, the
+/// library Options' among them) and `run` is called with them.
+template <typename Flags>
 Command MakeCommand(std::string name, int order, std::string description,
-                    void (*bind)(CLI::App* sub, Options* options),
-                    int (*run)(const Options& options)) {
+                    void (*bind)(CLI::App* sub, Flags* flags), int (*run)(const Flags& flags)) {
   return {name, order, [=](CLI::App& app, std::function<int()>* chosen) {
-            auto options = std::make_shared<Options>();
+            auto flags = std::make_shared<Flags>();
             CLI::App* sub = app.add_subcommand(name, description);
-            bind(sub, options.get());
-            sub->callback([=] { *chosen = [=] { return run(*options); }; });
+            bind(sub, flags.get());
+            sub->callback([=] { *chosen = [=] { return run(*flags); }; });
           }};
 }
 

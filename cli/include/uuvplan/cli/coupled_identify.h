@@ -1,7 +1,7 @@
-// `uuvplan identify CAMPAIGN --model coupled`: the coupled 3-DOF horizontal model of seed 003
+// `uuvplan identify CAMPAIGN --model coupled`: the coupled 3-DOF horizontal model of ref 003
 // (model/coupled_model.h) from the campaign's fit trials, each a combined-mode log with the
-// force_ and vel_ columns of surge, sway and yaw, by the one-step integral least squares
-// (ident/estimators/coupled_ls.h). Prints the parameters with σ and units (and --json).
+// force_ and vel_ columns of surge, sway and yaw, by the multi-DOF model's one-step integral
+// least squares (ident/estimators/joint_ls.h). Prints the parameters with σ and units (and --json).
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 // `--sg-window N` of every command that prepares a campaign's trials (identify, diagnose,
 // score, report): the points of the Savitzky–Golay velocity filter (ident::TrialDataOptions;
-// by default seed 000 §IV-D's 21–41 for the sampling rate). One flag for all of them, so that
+// by default ref 000 §IV-D's 21–41 for the sampling rate). One flag for all of them, so that
 // a campaign gets the same velocity estimate, and so the same answer, from every command.
 #pragma once
 

@@ -1,5 +1,5 @@
 // `--method M [--forgetting λ]` of the commands that identify a campaign (identify, report):
-// which of the seeds' estimators runs (ident::Method) and the RLS forgetting factor (seed 004
+// which of the papers' estimators runs (ident::Method) and the RLS forgetting factor (ref 004
 // eq. 15).
 #pragma once
 

@@ -1,5 +1,5 @@
 // A parameter estimate as every estimator reports it: value, 1σ, percentile error and
-// significance (seed 000 §III-A, §IV-D), and whether it was dropped by model selection.
+// significance (ref 000 §III-A, §IV-D), and whether it was dropped by model selection.
 #pragma once
 
 #include <Eigen/Dense>

@@ -4,16 +4,16 @@
 //
 // Per DOF, four stages (ident/src/identify_stages.h, docs/identification.md):
 //  1. prepare: trials prepared (outliers excluded and reported, gaps found, velocity estimated
-//     by Savitzky–Golay, seed 000 §IV-D, the logged force held between rows), the DOF's fit and
+//     by Savitzky–Golay, ref 000 §IV-D, the logged force held between rows), the DOF's fit and
 //     validate trials, its model structure and start values (PriorTheta);
 //  2. estimate: steady-state segments detected (or taken from the user's windows) and the drag,
-//     bias, ballast step and installation coefficients fitted (seed 000 eqs. 7–12, 20), with
+//     bias, ballast step and installation coefficients fitted (ref 000 eqs. 7–12, 20), with
 //     model selection by significance (51.02%); the inertia by the integral method with the
-//     drag known (seed 000 eqs. 16–19), and the one-step integral least squares of all
-//     regressor-linear parameters (seeds 002/004);
+//     drag known (ref 000 eqs. 16–19), and the one-step integral least squares of all
+//     regressor-linear parameters (refs 002/004);
 //  3. refine: the output-error (maximum-likelihood) refinement of all parameters, started from
 //     the least-squares answer — the reported estimate when it converges;
-//  4. validate: plausibility of the estimates, free-run validation (velocity MAE, seed 002
+//  4. validate: plausibility of the estimates, free-run validation (velocity MAE, ref 002
 //     eq. 37; position RMS; residual whiteness).
 // Ill-posed cases (no excitation, too few steady segments, singular regressions, closed-loop
 // data) are reported with what would fix them; nothing is silently dropped.
@@ -33,9 +33,9 @@
 #include "uuvplan/ident/estimators/output_error.h"
 #include "uuvplan/ident/estimators/rls.h"
 #include "uuvplan/ident/estimators/steady_state.h"
+#include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/ident/stats/model_selection_options.h"
 #include "uuvplan/ident/summary.h"
-#include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/ident/validation.h"
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/model_structure.h"
@@ -45,14 +45,14 @@ namespace uuvplan::ident {
 enum class ClosedLoop { kAuto, kYes, kNo };
 
 /// The estimator run on each DOF (`identify --method`, docs/identification.md "Methods"), so
-/// that the seeds' methods can be compared on one campaign, each with its σ and its free-run
+/// that the papers' methods can be compared on one campaign, each with its σ and its free-run
 /// validation.
 enum class Method {
   kChain,         ///< "chain": the best chain — steady state + integral method or one-step LS,
                   ///< then the output error (closed-loop IV under feedback)
-  kLeastSquares,  ///< "ls": steady-state least squares (seed 000 eqs. 7–12, 20); m held a priori
+  kLeastSquares,  ///< "ls": steady-state least squares (ref 000 eqs. 7–12, 20); m held a priori
   kIntegral,      ///< "integral": steady state, then m by the integral method (000 eqs. 16–19)
-  kOneStep,       ///< "one-step": one-step integral LS (seed 002 eqs. 20–36, 004 eqs. 8–14)
+  kOneStep,       ///< "one-step": one-step integral LS (ref 002 eqs. 20–36, 004 eqs. 8–14)
   kRls,           ///< "rls": recursive LS with forgetting on the one-step rows (004 eq. 15)
   kOutputError,   ///< "output-error": output error (maximum likelihood) from the a priori values
 };
@@ -82,9 +82,9 @@ struct IdentifyOptions {
   ClosedLoopIvOptions closed_loop_iv;
   OutputErrorOptions output_error;
   ValidationOptions validation;
-  RlsOptions rls;                    ///< Method::kRls (λ: `--forgetting`)
+  RlsOptions rls;  ///< Method::kRls (λ: `--forgetting`)
   Method method = Method::kChain;
-  bool refine = true;                ///< run the output-error stage (Method::kChain only)
+  bool refine = true;  ///< run the output-error stage (Method::kChain only)
   /// The model selection of every stage (least squares, RLS, closed-loop IV, output error):
   /// it replaces the stages' own `selection`. `identify --no-prune` turns it off,
   /// `--seed-selection` drops whatever the correlation (kSeedDropCorrelation), whose σ then
@@ -137,7 +137,7 @@ struct DofIdentification {
   std::optional<SteadyStateResult> steady;
   std::optional<IntegralInertiaResult> inertia;
   std::optional<OneStepDofResult> one_step;
-  /// Method::kRls: the parameter trajectory (seed 004 Fig. 11) and the final estimate.
+  /// Method::kRls: the parameter trajectory (ref 004 Fig. 11) and the final estimate.
   std::optional<RlsDofResult> rls;
   std::optional<OutputErrorResult> output_error;
   /// Under feedback (closed_loop_suspected): the instrumental-variable estimate, reported
@@ -211,7 +211,7 @@ struct IdentifyResult {
 /// reported in the result.
 IdentifyResult Identify(const model::Campaign& campaign, const IdentifyOptions& options);
 /// The same, releasing each trial's log as soon as it is prepared (its columns are not needed
-/// after: a million-row log is 24 MB; issue #16). `campaign` keeps everything else.
+/// after: a million-row log is 24 MB). `campaign` keeps everything else.
 IdentifyResult IdentifyReleasingLogs(model::Campaign* campaign, const IdentifyOptions& options);
 
 /// A priori parameter values of a DOF model (vehicle inertia bounds' midpoint, drag prior,

@@ -1,15 +1,14 @@
 // Scoring a given parameter set on a campaign: the free-run simulation of each trial with the
-// model's parameters (no fit), scored by the velocity MAE of seed 002 eq. 37 and the position
+// model's parameters (no fit), scored by the velocity MAE of ref 002 eq. 37 and the position
 // RMS (validation.h). Two models of the same vehicle are compared on the same data by their
 // scores; `diagnose` measures its held-out gains with the same pooled MAE, so `uuvplan score`
 // on a vehicle written by `diagnose --write-vehicle` reproduces them.
 #pragma once
 
+#include <Eigen/Dense>
 #include <map>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/ident/validation.h"
@@ -36,8 +35,8 @@ double PooledVelocityMae(const model::DofModel& model, const Eigen::VectorXd& th
                          std::string* why, int* samples = nullptr);
 
 struct ScoreOptions {
-  TrialDataOptions data;  ///< trial preparation, as identify's and diagnose's default
-  double step_s = 0.02;   ///< RK4 step of the free runs (OutputErrorOptions::step_s)
+  TrialDataOptions data;         ///< trial preparation, as identify's and diagnose's default
+  double step_s = 0.02;          ///< RK4 step of the free runs (OutputErrorOptions::step_s)
   std::vector<model::Dof> dofs;  ///< DOFs to score; empty: every DOF the model gives
   int curve_points = 0;  ///< keep each free run for figures (ValidationOptions::curve_points)
   bool IsValid(std::string* error) const;

@@ -1,8 +1,8 @@
 // How well an identified model reproduces a trial (what users look at):
 //  - free-run simulation of the trial from its initial state with the logged force, compared
-//    with the measurement: the velocity mean absolute error of seed 002 eq. 37,
+//    with the measurement: the velocity mean absolute error of ref 002 eq. 37,
 //    e = mean(|ν_model − ν_measured|), and the position RMS error;
-//  - residual analysis as seed 004 §5.2: mean, standard deviation, normalised autocorrelation
+//  - residual analysis as ref 004 §5.2: mean, standard deviation, normalised autocorrelation
 //    with its 95% bounds ±1.96/√N (white unless more lags fall outside than white noise puts
 //    there 99% of the time: 3 of 20), and a histogram summary (bins, skewness, kurtosis).
 // Done on `fit` and `validate` trials alike, for cross-validation across trials (002 §6.1).
@@ -68,18 +68,18 @@ struct TrialFit {
   int trial = -1;
   std::string name;
   model::TrialUse use = model::TrialUse::kFit;
-  double velocity_mae = 0.0;   ///< seed 002 eq. 37 (m/s or rad/s)
+  double velocity_mae = 0.0;  ///< ref 002 eq. 37 (m/s or rad/s)
   int velocity_samples = 0;
   /// The same error of the zero-velocity model (ν ≡ 0: mean |ν_measured|) on the same samples:
   /// the baseline a usable model must beat (docs/identification.md, "Failure statuses").
   double zero_velocity_mae = 0.0;
   /// "measured" (vel_ column) or "estimated" (Savitzky–Golay derivative of the positions).
   std::string velocity_reference;
-  double position_rms = 0.0;   ///< m or rad; NaN without positions
+  double position_rms = 0.0;  ///< m or rad; NaN without positions
   int position_samples = 0;
-  ResidualAnalysis residuals;  ///< of the position (if measured) else velocity errors
-  std::string residual_signal; ///< "position" or "velocity"
-  FreeRunCurve curve;          ///< with ValidationOptions::curve_points > 0, else empty
+  ResidualAnalysis residuals;   ///< of the position (if measured) else velocity errors
+  std::string residual_signal;  ///< "position" or "velocity"
+  FreeRunCurve curve;           ///< with ValidationOptions::curve_points > 0, else empty
   double initial_position = 0.0, initial_velocity = 0.0;  ///< the free run's initial state
 };
 

@@ -1,4 +1,4 @@
-// A trial logged at the pool appended to its campaign (`uuvplan log`, issue #18 item 4), so
+// A trial logged at the pool appended to its campaign (`uuvplan log`), so
 // that `next` can run between two trials: the trial's CSV is copied into the campaign's
 // trials/<id>.csv (the input file is never modified) and campaign.yaml rewritten with one more
 // trial, each written atomically; the new campaign is read back whole (ReadCampaign's checks)
@@ -13,10 +13,10 @@
 namespace uuvplan::io {
 
 struct LoggedTrial {
-  std::string id;        ///< the trial's id: its file is trials/<id>.csv
-  std::string csv;       ///< the logged CSV
+  std::string id;   ///< the trial's id: its file is trials/<id>.csv
+  std::string csv;  ///< the logged CSV
   model::Dof dof = model::Dof::kSurge;
-  std::string mapping;   ///< empty: the vehicle's only mapping on `dof`
+  std::string mapping;  ///< empty: the vehicle's only mapping on `dof`
   int ballast_steps = 0;
   model::TrialUse use = model::TrialUse::kFit;
   std::optional<double> start;  ///< campaign clock (s)

@@ -10,9 +10,6 @@
 
 namespace uuvplan::io {
 
-/// The name of a trial's use in the campaign file and in results: fit | validate.
-const char* TrialUseName(model::TrialUse use);
-
 /// Reads the campaign YAML (or DIR/campaign.yaml when `path` is a directory), its vehicle (and
 /// pool) and every trial CSV.
 model::Campaign ReadCampaign(const std::string& path);

@@ -1,15 +1,48 @@
-// Reading back what `uuvplan loop --json` wrote (docs/cli.md): the history of the loop as
-// series over accumulated pool time — per DOF and parameter, the estimate and its achieved σ
-// after each trial, and the σ the planner predicted for the DOF whose trial it was.
+// The loop's JSON (docs/cli.md): what `uuvplan loop --json` writes, the parts of it `next
+// --json` shares (progress, candidates, predicted σ), and reading it back as the history of
+// the loop — series over accumulated pool time: per DOF and parameter, the estimate and its
+// achieved σ after each trial, and the σ the planner predicted for the DOF whose trial it was.
 #pragma once
 
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "uuvplan/model/dof.h"
+#include "uuvplan/model/pool.h"
+#include "uuvplan/planner/loop/design_loop.h"
+#include "uuvplan/planner/pool/pool_verdict.h"
 
 namespace uuvplan::io {
+
+/// [{"dof", "trial", "parameter", "sigma_now", "sigma_after", "gain", "trials_to_target",
+///   "first_estimate", "negligible"}] (SI; null for +inf).
+nlohmann::json CandidatesJson(const std::vector<planner::CandidateGain>& candidates);
+
+/// {<dof>: {"converged", "worst", "worst_percent", "trials", "usable", "status", "precise",
+///          "trusted", "doubts", "refusal", "consistency", "interest": {<name>: {"value",
+///          "sigma", "percent", "unit", "held", "physical", "flag"}}}} (null: not estimated).
+nlohmann::json ProgressJson(const std::vector<planner::DofProgress>& progress);
+
+/// {<dof>: {"sigma": {<name>: s}, "criterion", "value", "assumption"}} as in a schedule's
+/// "predicted".
+nlohmann::json PredictedJson(model::Dof dof, const planner::PredictedPrecision& predicted);
+
+/// `uuvplan loop --json`: {"iterations": [{"trial", "params", "dof", "source", "start",
+/// "pool_time", "predicted", "sigma", "candidates", "new_information", "progress", "notes"}],
+/// "converged", "pool_time", "status", "exit_status", "message" (read against the verdict,
+/// text::LoopEndMessage), "target", "budget", "seed", "dof_pool_time", "progress",
+/// "estimates", "verdict"}.
+nlohmann::json LoopResultJson(const planner::LoopResult& result,
+                              const planner::LoopOptions& options,
+                              const planner::PoolVerdict& verdict, const model::Pool& pool,
+                              int exit_status);
+
+/// A loop the pool verdict refused before any trial: no iterations, status "infeasible", the
+/// verdict's sentence as its message, and the verdict.
+nlohmann::json RefusedLoopJson(const planner::PoolVerdict& verdict, const model::Pool& pool,
+                               int exit_status);
 
 struct LoopPoint {
   int iteration = 0;       ///< 1-based
@@ -32,7 +65,7 @@ struct LoopHistory {
   double target_percent = 0.0;  ///< percentile error 100·σ/|θ| every parameter must reach
   double pool_time = 0.0;       ///< s
   /// What the predicted σ rest on: the last iteration's "predicted" assumption (or
-  /// planner::kUnrecordedSigmaAssumption for a file written before it was recorded).
+  /// kUnrecordedSigmaAssumption, schedule_json.h, for a file without one).
   std::string predicted_assumption;
   std::vector<LoopTrialRow> trials;
   /// Per DOF, per parameter name: one point per iteration that estimated it.

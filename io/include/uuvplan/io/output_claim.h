@@ -1,4 +1,4 @@
-// One writer per output directory (issue #15): a run that writes a campaign to `--out DIR`
+// One writer per output directory: a run that writes a campaign to `--out DIR`
 // claims DIR first — creates it empty if absent and holds an exclusive flock(2) on it — so that
 // a second run on the same DIR fails at once with "another run is writing DIR" instead of
 // racing it; the lock ends with the process, so a killed run leaves no stale lock. The campaign

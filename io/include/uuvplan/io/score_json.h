@@ -2,9 +2,8 @@
 // pooled velocity MAE of its fit and validate trials. SI units; NaN as null.
 #pragma once
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "uuvplan/ident/score.h"
 

@@ -1,4 +1,4 @@
-// Thrust mappings derived from the thrusters' geometry: seed 000 Table I found automatically.
+// Thrust mappings derived from the thrusters' geometry: ref 000 Table I found automatically.
 //
 // With B the configuration matrix (configuration_matrix.h), a mapping of DOF k is an allocation
 // tau = s·phi with B·s = e_k: a unit force (moment) on k and none on the other DOFs, each within

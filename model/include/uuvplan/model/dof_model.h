@@ -3,7 +3,7 @@
 //
 // State x = [chi, xi, phi_a]: position, velocity, and (with thruster lag only) actuator force.
 //   dchi/dt  = xi
-//   dxi/dt   = Σ_j F_j(xi, phi_a, ·; theta_j) / m                       (seed 000 eq. 3)
+//   dxi/dt   = Σ_j F_j(xi, phi_a, ·; theta_j) / m                       (ref 000 eq. 3)
 //   dphi_a/dt = (u - phi_a) / T,  u = u0·(|u0|/u_ref)^p,  u0 = sign(phi_n)·max(|phi_n| - d, 0)
 //                                  (lag T, dead zone d, thrust-map exponent p)
 // Without lag phi_a = u. Parameters theta = [m, term parameters..., lag, deadzone,
@@ -40,8 +40,8 @@ struct DofModelKernel;
 struct TrialConditions {
   const Excitation* input = nullptr;
   int ballast_steps = 0;
-  double start_time = 0.0;              ///< campaign clock at t = 0 (s)
-  const AuxVelocities* aux = nullptr;   ///< null: other DOFs at rest
+  double start_time = 0.0;             ///< campaign clock at t = 0 (s)
+  const AuxVelocities* aux = nullptr;  ///< null: other DOFs at rest
 };
 
 /// The input at one instant, sampled once per RK4 stage time (and once per step for a
@@ -90,8 +90,8 @@ class DofModel {
   /// and its actuator path for `theta`.
   InputSample SampleInput(double t, const TrialConditions& c, const double* theta) const;
   /// The term context at time t for state x and input `in`.
-  TermContext Context(double t, const double* x, const InputSample& in,
-                      const TrialConditions& c) const;
+  TermInputs TermInputsAt(double t, const double* x, const InputSample& in,
+                          const TrialConditions& c) const;
   /// Commanded force after the dead zone and the thrust map's shape:
   /// u = u0·(|u0|/u_ref)^p, u0 = sign(phi_n)·max(|phi_n| - d, 0).
   double ActuatorInput(double phi_n, const double* theta) const;
@@ -113,7 +113,7 @@ class DofModel {
     Linearize(t, x, SampleInput(t, c, theta), c, theta, dx, A, B);
   }
   /// Total force Σ F_j (N or N·m) at a context.
-  double TotalForce(const TermContext& tc, const double* theta) const;
+  double TotalForce(const TermInputs& tc, const double* theta) const;
 
  private:
   friend struct internal::DofModelKernel;  // the simulation loop's inlined derivative

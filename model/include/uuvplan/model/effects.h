@@ -1,10 +1,10 @@
 // The physical effects beyond the standard 1-DOF model (contract §diagnose): one table, each
 // entry declaring its name, the physics, its parameters (with units, null value and admissible
 // range), where it acts in the model (its own force term, a standard term, the actuator path
-// or the sensor), how diagnosis may propose it and how a finding of it reads. Simulation,
-// identification, planning and diagnosis all read this table; adding an effect is one entry
-// (effect_table.cc) plus its force term and tests (docs/architecture.md, "How to add an
-// effect").
+// or the sensor) and how diagnosis may propose it. Simulation, identification, planning and
+// diagnosis all read this table; adding an effect is one entry (effect_table.cc) plus its
+// force term, its finding's sentence (text/finding_text.h) and tests (docs/architecture.md,
+// "How to add an effect").
 #pragma once
 
 #include <functional>
@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "uuvplan/model/dof.h"
-#include "uuvplan/model/error_breakdown.h"
 #include "uuvplan/model/force_term.h"
 #include "uuvplan/model/mapping.h"
 #include "uuvplan/model/parameter.h"
@@ -32,9 +31,9 @@ enum class EffectSite {
 };
 
 /// What diagnosis knows of the data and of the current fit when it proposes an effect.
-struct ProposalContext {
+struct ProposalEvidence {
   Dof dof = Dof::kSurge;
-  const std::vector<std::string>* parameters = nullptr;  ///< of the current structure
+  const std::vector<std::string>* parameters = nullptr;   ///< of the current structure
   const std::map<std::string, double>* values = nullptr;  ///< current estimates
   double time_constant_s = 1.0;  ///< m / (k + 2·kq·|ξ|) at the typical speed
   double max_force = 0.0;        ///< largest |φⁿ| in the data (N or N·m)
@@ -42,7 +41,7 @@ struct ProposalContext {
   /// Mapping and direction of φⁿ present in the data, for thrust not in open water there.
   std::vector<std::pair<std::string, Direction>> closed_thrust_directions;
   std::vector<char> velocity_letters;  ///< measured in every trial, the own DOF's first
-  bool campaign_clock = false;  ///< every trial has a start, and they span some time
+  bool campaign_clock = false;         ///< every trial has a start, and they span some time
 
   bool Has(std::string_view parameter) const;
   double Value(std::string_view parameter, double fallback) const;
@@ -50,27 +49,13 @@ struct ProposalContext {
 
 /// One way diagnosis may extend a structure with an effect.
 struct Proposal {
-  std::string detail;                      ///< e.g. the coupling pair; empty for most
+  std::string detail;  ///< e.g. the coupling pair; empty for most
   /// The new parameters, in the order they enter theta, and their starting values.
   std::vector<std::pair<std::string, double>> start;
   std::map<std::string, double> settings;  ///< structure settings it needs (thrust_reference)
   /// Null values of the new parameters that are not the family's (asymmetric drag: the
   /// symmetric value).
   std::map<std::string, double> null;
-};
-
-/// An estimated parameter, as a finding reports it.
-struct ParameterValue {
-  std::string name;
-  double value = 0.0;
-  double sigma = 0.0;
-};
-
-/// What a finding's sentence may quote.
-struct FindingContext {
-  const std::vector<ParameterValue>& params;
-  const ErrorBreakdown& breakdown;
-  const std::string& detail;
 };
 
 /// A setting of an effect in a truth file that is not a parameter (thrust_map's reference
@@ -95,9 +80,7 @@ struct EffectEntry {
   /// kForceTerm: the term, given the DOF and the structure's parameters of this effect.
   std::function<std::unique_ptr<ForceTerm>(Dof, const std::vector<std::string>&)> make_term;
   /// Diagnosis: the extensions of the current structure it proposes (none: not applicable).
-  std::function<std::vector<Proposal>(const ProposalContext&)> propose;
-  /// Diagnosis: what the standard simulation gets wrong, in words, for a finding of it.
-  std::function<std::string(const FindingContext&)> describe;
+  std::function<std::vector<Proposal>(const ProposalEvidence&)> propose;
 
   bool Owns(std::string_view parameter) const;
 };

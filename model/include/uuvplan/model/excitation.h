@@ -37,7 +37,7 @@ class Excitation {
 
 /// phi_n = force from rest (contract §schedule `steady`).
 std::unique_ptr<Excitation> MakeSteadyExcitation(double force, int mapping, double duration);
-/// phi_n = offset + amplitude·sin(omega·t) (seed 000 eq. 15, contract §schedule `sine`).
+/// phi_n = offset + amplitude·sin(omega·t) (ref 000 eq. 15, contract §schedule `sine`).
 std::unique_ptr<Excitation> MakeSineExcitation(double offset, double amplitude, double omega,
                                                int mapping, double duration);
 
@@ -60,9 +60,9 @@ struct SineComponent {
   double phase = 0.0;      ///< rad
 };
 
-/// A mapping-switched waveform (issue #17): w(t) = offset + Σ_i a_i·sin(ω_i·t + p_i). Where
+/// A mapping-switched waveform: w(t) = offset + Σ_i a_i·sin(ω_i·t + p_i). Where
 /// w >= 0 the force is max(w, floor_pos) in mapping_pos, where w < 0 it is min(w, -floor_neg)
-/// in mapping_neg: each sign in the mapping that pushes that way in open water (seed 000 Table
+/// in mapping_neg: each sign in the mapping that pushes that way in open water (ref 000 Table
 /// I), so no thruster reverses, and |phi_n| never drops below the floors (min_thrust / share:
 /// at a zero crossing the force jumps from one mapping's floor to the other's).
 struct SwitchedWave {

@@ -1,5 +1,5 @@
-// Whether a thruster works in open water (installation coefficient eta = 1, seed 000 §II-A):
-// the rule that replaces seed 000 Table I's judgement ("the motion direction where the
+// Whether a thruster works in open water (installation coefficient eta = 1, ref 000 §II-A):
+// the rule that replaces ref 000 Table I's judgement ("the motion direction where the
 // propeller can be assumed to work in open water without remarkable interactions with the
 // vehicle hull and other propellers") when mappings are derived from the geometry.
 //

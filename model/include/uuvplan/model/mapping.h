@@ -1,6 +1,6 @@
-// Thrust mappings (seed 000 Table I): how a DOF's nominal force phi is shared among the
+// Thrust mappings (ref 000 Table I): how a DOF's nominal force phi is shared among the
 // thrusters, tau_i = share_i·phi, and in which direction of phi the thrusters work in open
-// water (installation coefficient eta = 1, seed 000 §II-A).
+// water (installation coefficient eta = 1, ref 000 §II-A).
 #pragma once
 
 #include <string>

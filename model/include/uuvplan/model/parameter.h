@@ -1,7 +1,7 @@
 // The parameter vocabulary: every parameter of a DOF model is named by a family, plain ("m",
 // "lag") or qualified ("eta.<mapping>.<pos|neg>", "coupling.<ab>"). A family declares its
 // unit, its null value (the value that means "no effect") and its admissible range. The
-// standard model's families are listed here (contract §Conventions, seed 000 eq. 3 and
+// standard model's families are listed here (contract §Conventions, ref 000 eq. 3 and
 // eq. 20); each effect declares its own in the effect table (effects.h). Identification,
 // planning and diagnosis ask this vocabulary, never a hand-written list of names.
 #pragma once
@@ -23,7 +23,7 @@ struct ParameterFamily {
   /// Unit for a translational / rotational DOF (N, N·m, ...); "1" for a pure number.
   std::string_view unit_linear{};
   std::string_view unit_rotational{};
-  double null_value = 0.0;  ///< "no effect" (eta: 1)
+  double null_value = 0.0;                                  ///< "no effect" (eta: 1)
   double lower = -std::numeric_limits<double>::infinity();  ///< admissible range
   double upper = std::numeric_limits<double>::infinity();
   /// Value before any fit where the null value cannot serve (a lag of 0 s has no 1/T);
@@ -44,21 +44,13 @@ struct ParameterFamily {
   /// Where a fit may go: the model is undefined (or unidentifiable) below this; NaN: anywhere.
   double fit_lower = std::numeric_limits<double>::quiet_NaN();
   bool fit_lower_open = false;
-  /// Physically admissible identified values (issue #13: drag >= 0, 0 < η <= 1.2, m above the
+  /// Physically admissible identified values (drag >= 0, 0 < η <= 1.2, m above the
   /// dry mass), where narrower than the file range [lower, upper]: the largest value a vehicle
   /// can have (NaN: `upper`), and whether a translational value must exceed the vehicle's dry
   /// mass (a rotational inertia in a vehicle file is computed, not weighed: no bound). An
   /// estimate outside is non-physical: a fit the loop must not converge on.
   double physical_upper = std::numeric_limits<double>::quiet_NaN();
   bool above_dry_mass = false;
-  /// Plausibility of a value an input file gives (issue #15), relative to the vehicle's own
-  /// scale (PlausibleScale: M, M·L², M·g, ...): |value| / scale within [plausible_ratio_lower,
-  /// plausible_ratio_upper]. Wide (orders of magnitude): it catches 1e308 and 1e-300, not
-  /// unusual vehicles. kNone: only the admissible range applies.
-  enum class Scale { kNone, kInertia, kForcePerSpeed, kForcePerSpeed2, kForce };
-  Scale plausible_scale = Scale::kNone;
-  double plausible_ratio_lower = 0.0;
-  double plausible_ratio_upper = std::numeric_limits<double>::infinity();
 
   /// `value` is finite and within the fit's range.
   bool Fittable(double value) const {
@@ -86,7 +78,7 @@ struct ParameterFamily {
 
 namespace param {
 // The standard model (contract §Conventions): m·dξ/dt = −k·ξ − kq·ξ|ξ| + η·φⁿ + bias
-// (+ bias_step per ballast step, seed 000 eq. 20).
+// (+ bias_step per ballast step, ref 000 eq. 20).
 inline constexpr const char* kMass = "m";
 inline constexpr const char* kLinearDrag = "k";
 inline constexpr const char* kQuadraticDrag = "kq";
@@ -106,54 +98,6 @@ inline constexpr const char* kThrustExponent = "thrust_exponent";
 /// Structure setting: the commanded force at which a thrust map of the wrong shape is right.
 inline constexpr const char* kThrustReference = "thrust_reference";
 }  // namespace param
-
-/// A quantity an input file gives that is not a model parameter, with the range any pool trial
-/// has (issue #15): wide, so that it refuses only nonsense (1e308, 1e-300, ms taken for s).
-/// Outside it the io layer refuses the file (exit 2) unless the user accepts it
-/// (--accept-implausible). Work limits (work_limits.h) apply whatever the user accepts.
-struct InputQuantity {
-  std::string_view what;  ///< "a vehicle mass"
-  std::string_view unit;  ///< "kg"
-  double lower = 0.0;
-  double upper = std::numeric_limits<double>::infinity();
-  bool Holds(double x) const { return x >= lower && x <= upper; }
-  /// "a vehicle mass in [0.01, 1e+07] kg".
-  std::string Expected() const;
-};
-
-namespace plausible {
-/// m/s²: weights are the scale of forces (PlausibleScale).
-inline constexpr double kGravity = 9.81;
-// From a 10 g micro-robot to a 10,000 t submarine; sizes from 1 cm to 500 m.
-inline constexpr InputQuantity kVehicleMass{"a vehicle mass", "kg", 0.01, 1e7};
-inline constexpr InputQuantity kVehicleSize{"a vehicle dimension", "m", 0.01, 500};
-/// Rotational inertia / (mass · largest dimension²): a uniform box is 1/12 = 0.083.
-inline constexpr InputQuantity kInertiaRatio{"an inertia / (mass · size²)", "1", 1e-4, 10};
-/// The largest thrust of one thruster / the vehicle's weight (a BlueROV's is about 0.5).
-inline constexpr InputQuantity kThrustToWeight{"a thruster's largest thrust / weight", "1", 0, 100};
-inline constexpr InputQuantity kSensorRate{"a sensor rate", "Hz", 0.01, 1e5};
-/// Sensor noise σ / (the largest vehicle dimension, or 1 rad for an angle) and per second.
-inline constexpr InputQuantity kSensorSigmaRatio{"a sensor σ / vehicle size (1 rad for angles)", "1",
-                                                 0, 100};
-inline constexpr InputQuantity kPoolDimension{"a pool dimension", "m", 0.1, 1e5};
-/// The deepest pool built is 60 m (Deep Dive Dubai); a depth above 100 m is a unit slip
-/// (a 5 m pool written in cm) more likely than a pool.
-inline constexpr InputQuantity kPoolDepth{"a pool depth", "m", 0.1, 100};
-/// The clearance kept from the walls, floor and surface is about a vehicle length (cases/):
-/// more than 20 m is a unit slip (1.5 m written in cm) more likely than a margin.
-inline constexpr InputQuantity kPoolMargin{"a pool margin", "m", 0, 20};
-/// A trial or leg from 1 ms to a day.
-inline constexpr InputQuantity kDuration{"a duration", "s", 1e-3, 86400};
-inline constexpr InputQuantity kIntegrationStep{"an integration step", "s", 1e-6, 1};
-/// The interval between a log's rows: the time column in s (in ms every interval reads 1000×).
-inline constexpr InputQuantity kSampleInterval{"a median sampling interval", "s", 1e-5, 10};
-/// A logged force or torque / (weight, or weight × size): 1e308 in one cell is not a force.
-inline constexpr InputQuantity kForceRatio{"a logged force / vehicle weight", "1", 0, 1000};
-}  // namespace plausible
-
-/// The scale of `family`'s plausibility on `dof` of `vehicle` (PlausibleScale), 0 for kNone:
-/// M or M·L² (inertia), M·g (/ 1 m/s, (1 m/s)²) or M·g·L for a rotation; g = 9.81 m/s².
-double PlausibleScale(const ParameterFamily& family, Dof dof, const struct Vehicle& vehicle);
 
 /// The standard model's families: m, k, kq, bias, bias_step.
 const std::vector<ParameterFamily>& StandardFamilies();

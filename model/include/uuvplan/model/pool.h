@@ -27,10 +27,14 @@ struct Pool {
   /// Wall-to-wall extent along a DOF (m): length, width or depth; infinite for rotations.
   double WallToWall(Dof dof) const {
     switch (dof) {
-      case Dof::kSurge: return length;
-      case Dof::kSway: return width;
-      case Dof::kHeave: return depth;
-      default: return std::numeric_limits<double>::infinity();
+      case Dof::kSurge:
+        return length;
+      case Dof::kSway:
+        return width;
+      case Dof::kHeave:
+        return depth;
+      default:
+        return std::numeric_limits<double>::infinity();
     }
   }
   /// Free travel along a DOF: wall to wall less the margin at both ends (m); for a rotation
@@ -48,10 +52,14 @@ struct Pool {
   /// The pool side a translation travels along ("length", "width", "depth"); "" otherwise.
   static std::string_view SideName(Dof dof) {
     switch (dof) {
-      case Dof::kSurge: return "length";
-      case Dof::kSway: return "width";
-      case Dof::kHeave: return "depth";
-      default: return "";
+      case Dof::kSurge:
+        return "length";
+      case Dof::kSway:
+        return "width";
+      case Dof::kHeave:
+        return "depth";
+      default:
+        return "";
     }
   }
 };

@@ -25,7 +25,7 @@ struct APrioriDrag {
 /// Terminal speed assumed at the largest thrust when the vehicle file gives no drag: CHOSEN
 /// 1 m/s for a translation and 1 rad/s for a rotation — a pool vehicle's thrusters are sized
 /// for about that (ROMEO's surge truth gives 0.9 m/s at 350 N, URIS's yaw 3.8 rad/s at its
-/// 8 N·m with a linear drag only, seed 004 Table 4).
+/// 8 N·m with a linear drag only, ref 004 Table 4).
 inline double TerminalSpeed(Dof /*dof*/) { return 1.0; }
 
 /// The vehicle file's drag fit (dofs.<dof>.drag); else the drag that holds the vehicle at

@@ -1,6 +1,8 @@
-// Free-run simulation of a DofModel from a given initial state with fixed-step RK4, and the
-// forward sensitivity equations dS/dt = A·S + B, S = ∂x/∂theta, integrated with the state
-// (the same RK4 stages), for Fisher information and output-error fits.
+// Free-run simulation of a DofModel or a MultiDofModel from a given initial state with
+// fixed-step RK4, and the forward sensitivity equations dS/dt = A·S + B, S = ∂x/∂theta,
+// integrated with the state (the same RK4 stages), for Fisher information and output-error
+// fits. One loop serves both models (simulator.cc), instantiated per model so that the 1-DOF
+// model's states unroll.
 #pragma once
 
 #include <Eigen/Dense>
@@ -8,13 +10,14 @@
 #include <vector>
 
 #include "uuvplan/model/dof_model.h"
+#include "uuvplan/model/multi_dof_model.h"
 #include "uuvplan/model/times_view.h"
 
 namespace uuvplan::model {
 
 struct SimulationOptions {
-  double step_s = 0.01;       ///< largest RK4 step (s); steps also end at every breakpoint
-  bool sensitivities = false; ///< also integrate S = ∂x/∂theta
+  double step_s = 0.01;        ///< largest RK4 step (s); steps also end at every breakpoint
+  bool sensitivities = false;  ///< also integrate S = ∂x/∂theta
 };
 
 struct Trajectory {
@@ -28,6 +31,12 @@ struct Trajectory {
 /// (sorted, >= 0). Every step ends at breakpoints of the input and at output times.
 Trajectory Simulate(const DofModel& model, const Eigen::VectorXd& theta,
                     const TrialConditions& conditions, TimesView output_times,
+                    const SimulationOptions& options, const Eigen::VectorXd* x0 = nullptr);
+
+/// The joint model (multi_dof_model.h) from x0 (default: rest), as Simulate above: x(i, s) is
+/// joint state s (MultiDofModel::state_offset), S[s](i, j) = ∂x_s(t_i)/∂θ_j of the global θ.
+Trajectory Simulate(const MultiDofModel& model, const Eigen::VectorXd& theta,
+                    const JointConditions& conditions, TimesView output_times,
                     const SimulationOptions& options, const Eigen::VectorXd* x0 = nullptr);
 
 /// One output of a simulation: its index in the output times, the state x (num_states values)

@@ -1,7 +1,7 @@
-// Thruster models of the seeds: the force a single thruster produces for a command.
-//   square (seed 000 eq. 6):  tau = c·V|V|, c = c_pos for V >= 0, c_neg for V < 0 (N/V²)
-//   poly2  (seed 002 eq. 1):  tau = a·V² + b·V for V >= 0, odd-extended: tau(-V) = -tau(V)
-// Both may carry a thrust deduction t (seed 003): tau_a = (1 - t)·tau.
+// Thruster models of the papers: the force a single thruster produces for a command.
+//   square (ref 000 eq. 6):  tau = c·V|V|, c = c_pos for V >= 0, c_neg for V < 0 (N/V²)
+//   poly2  (ref 002 eq. 1):  tau = a·V² + b·V for V >= 0, odd-extended: tau(-V) = -tau(V)
+// Both may carry a thrust deduction t (ref 003): tau_a = (1 - t)·tau.
 #pragma once
 
 #include <optional>
@@ -18,7 +18,7 @@ struct ThrustModel {
   double c_neg = 1.0;      ///< square: N/V² for V < 0
   double a = 1.0;          ///< poly2: N/V²
   double b = 0.0;          ///< poly2: N/V
-  double deduction = 0.0;  ///< thrust deduction t in [0, 1) (seed 003)
+  double deduction = 0.0;  ///< thrust deduction t in [0, 1) (ref 003)
   /// Commands with |V| below it give no thrust (command units, >= 0). Stored: the simulation,
   /// identification and planning of it are not implemented; Thrust() ignores it.
   double dead_band = 0.0;
@@ -37,8 +37,8 @@ struct Thruster {
   double command_max = 1.0;   ///< highest command
   /// Position and direction; absent when the vehicle file gives none (mappings from its table).
   std::optional<ThrusterGeometry> geometry;
-  /// Built to run both ways in service (e.g. a T200). The seeds' rule is false: a trial keeps
-  /// each thruster's sign (seed 000 §II-B).
+  /// Built to run both ways in service (e.g. a T200). The papers' rule is false: a trial keeps
+  /// each thruster's sign (ref 000 §II-B).
   bool reversible = false;
 
   /// Largest positive thrust over the command range (N, >= 0).

@@ -1,5 +1,5 @@
 // Sample times as the simulator and the estimators read them: a sorted array of doubles, or a
-// uniform decimal clock held as its parameters (issue #16: 8 bytes a sample of a long log).
+// uniform decimal clock held as its parameters (8 bytes a sample of a long log).
 // An array is not owned (its owner outlives the view); a clock is held by value.
 //
 // A uniform clock: t_k = (n0 + k·step)/scale − offset, with n0, step and scale = 10^d integers

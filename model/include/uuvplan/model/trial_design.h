@@ -25,10 +25,10 @@ inline constexpr EnumNames<TrialKind, 4> kTrialKindNames{{{
     {TrialKind::kSwitched, "switched"},
 }}};
 
-/// The input family a trial was designed in (issue #17, docs/planning.md §Designs): a plain
-/// steady run, leg chain or single-mapping sine (seed 000), or one of the mapping-switched
+/// The input family a trial was designed in (docs/planning.md §Designs): a plain
+/// steady run, leg chain or single-mapping sine (ref 000), or one of the mapping-switched
 /// families, where each sign of phi_n is pushed by the mapping that works in open water for it
-/// (seed 000 Table I: surge-front forward, surge-rear backward), so the vehicle oscillates about
+/// (ref 000 Table I: surge-front forward, surge-rear backward), so the vehicle oscillates about
 /// its start with no propeller reversing: a square wave (a `segments` trial alternating the two
 /// mappings), a sine or a multi-sine (`switched` trials), and a free piecewise-constant
 /// sequence (`segments`).
@@ -63,7 +63,7 @@ struct TrialDesign {
   double force = 0.0;     ///< steady: constant phi_n
   double offset = 0.0;    ///< sine: phi_n = offset + amplitude·sin(omega·t)
   double amplitude = 0.0;
-  double omega = 0.0;     ///< rad/s
+  double omega = 0.0;  ///< rad/s
   std::vector<SegmentDesign> segments;
   /// switched: phi_n from w(t) = offset + Σ components (excitation.h SwitchedWave): `mapping`
   /// where w >= 0 (|phi_n| >= floor_pos), `mapping_neg` where w < 0 (|phi_n| >= floor_neg).
@@ -85,6 +85,21 @@ struct TrialDesign {
   /// Whether phi_n takes the sign `sign` (±1) in `mapping` at some time: what excites the
   /// installation coefficient of that direction.
   bool Pushes(const std::string& mapping, int sign) const;
+};
+
+/// A trial that pushes several DOFs at once (ref 003 Table I's combined modes): one input per
+/// DOF of `dofs` (a design above in a mapping of that DOF; its own duration is ignored, the
+/// trial's holds), all over `duration` from rest. The DOFs it does not move are commanded 0.
+struct CombinedTrialDesign {
+  std::string id;
+  std::vector<Dof> dofs;  ///< the DOFs it moves: its mode (DofList: "surge+sway+yaw")
+  double duration = 0.0;  ///< s
+  std::vector<TrialDesign> inputs;
+
+  /// "" when the inputs are exactly one per DOF of `dofs`, else what is wrong.
+  std::string Check() const;
+  /// The input that moves `dof`, or null.
+  const TrialDesign* InputOf(Dof dof) const;
 };
 
 std::string_view TrialKindName(TrialKind kind);

@@ -22,7 +22,7 @@ struct AuxMotion {
 /// Defects of the virtual sensors (defaults: a clean but noisy sensor).
 struct SensorDefects {
   double dropout_probability = 0.0;  ///< probability a sample is missing
-  double outlier_probability = 0.0;  ///< probability of a multipath outlier (seed 000 Fig. 14)
+  double outlier_probability = 0.0;  ///< probability of a multipath outlier (ref 000 Fig. 14)
   double outlier_size = 0.0;         ///< outlier offset magnitude (m or rad); 0 = 20σ
   /// Lag-1 correlation ρ of successive samples' noise of a sensor: AR(1) noise
   /// e_i = ρ·e_{i−1} + √(1 − ρ²)·σ·n_i (stationary variance σ²; 0 = white), |ρ| < 1.

@@ -41,14 +41,15 @@ struct DofPrior {
 
 struct Vehicle {
   std::string name;
-  double mass = 0.0;                          ///< kg in air
-  std::array<double, 3> size = {0, 0, 0};     ///< m: length, width, height
-  std::map<Dof, double> inertia;              ///< kg·m², rigid body, optional per rotational DOF
+  double mass = 0.0;                       ///< kg in air
+  std::array<double, 3> size = {0, 0, 0};  ///< m: length, width, height
+  std::map<Dof, double> inertia;           ///< kg·m², rigid body, optional per rotational DOF
   std::array<double, 2> added_mass = {0.1, 1.0};  ///< default a priori bounds (fraction)
   std::vector<Thruster> thrusters;
-  double min_thrust = 0.0;                    ///< N: smallest |tau| of a working thruster
-  SpeedLimits speed_limits;                   ///< max_translation_speed, max_rotation_rate
-  std::vector<ThrustMapping> mappings;  ///< the file's table, then those derived (derived_mappings.h)
+  double min_thrust = 0.0;   ///< N: smallest |tau| of a working thruster
+  SpeedLimits speed_limits;  ///< max_translation_speed, max_rotation_rate
+  std::vector<ThrustMapping>
+      mappings;  ///< the file's table, then those derived (derived_mappings.h)
   MappingDerivationOptions mapping_derivation;  ///< jet_clearance, restoring
   std::map<Dof, DofPrior> priors;
   std::map<Dof, DofSensors> sensors;
@@ -58,7 +59,7 @@ struct Vehicle {
   std::vector<Dof> dofs_with_parameters;
 
   /// Rigid-body inertia of a DOF: the mass for translations; for rotations the given
-  /// inertia or that of a uniform box of `size` (seed 000 §IV-D: I_z = m(l² + w²)/12).
+  /// inertia or that of a uniform box of `size` (ref 000 §IV-D: I_z = m(l² + w²)/12).
   double RigidInertia(Dof dof) const;
   /// A priori added-mass bounds of a DOF as fractions (per-DOF value or the default).
   std::array<double, 2> AddedMassBounds(Dof dof) const;

@@ -1,4 +1,4 @@
-// The largest work an input may ask for (issue #15: no input may hang uuvplan or take more
+// The largest work an input may ask for (no input may hang uuvplan or take more
 // than 2 GB). Each limit is far above any pool trial and says what it bounds; the io layer
 // checks inputs against them before any work starts, naming the key that is too large, and
 // CheckedCount (util/checked_count.h) enforces them where a count is computed.
@@ -16,7 +16,7 @@ inline constexpr double kMaxSimulationSteps = 1e8;
 
 /// Rows of all the trials of one campaign, read or simulated (the campaign is held in memory).
 /// Identification holds ~245 B a row at worst (2,000 BlueROV gyro trials, 5.87e6 rows: 1,437 MB
-/// peak RSS, docs/performance.md), so 6e6 rows keep a campaign under issue #15's 2 GB.
+/// peak RSS, docs/performance.md), so 6e6 rows keep a campaign under 2 GB.
 inline constexpr double kMaxCampaignRows = 6e6;
 
 /// Rows of one logged trial (a CSV's line count, checked before it is read): no more than
@@ -25,7 +25,7 @@ inline constexpr double kMaxLogRows =
     kMaxCampaignRows < kMaxTrialRows ? kMaxCampaignRows : kMaxTrialRows;
 
 // No limit on (fit rows) × (fit trials) any more: the output error accumulates its normal
-// equations trial by trial (ident/estimators/block_least_squares.h), so its memory is O(rows + trials), not
-// rows × trials (issue #15: 2,000 trials of 2,934 rows, docs/performance.md).
+// equations trial by trial (ident/estimators/block_least_squares.h), so its memory is O(rows +
+// trials), not rows × trials (2,000 trials of 2,934 rows, docs/performance.md).
 
 }  // namespace uuvplan::model::limits

@@ -6,7 +6,7 @@
 //
 // Parameters of interest (as the loop's, design_loop.h): m; kq when determined, else k; every
 // installation coefficient of a direction the thrusters can hold. Determined: the worst
-// predicted σ over the box's design points is at most kInsignificantPercent (51.02%, seed 000
+// predicted σ over the box's design points is at most kInsignificantPercent (51.02%, ref 000
 // §IV-D) of the parameter's smallest a priori value.
 #pragma once
 
@@ -14,15 +14,15 @@
 #include <string>
 #include <vector>
 
-#include "uuvplan/planner/design/dof_context.h"
-#include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/design/sine_design.h"
 #include "uuvplan/planner/design/steady_design.h"
+#include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::planner {
 
 /// The loop's target (DesignLoopOptions::target_percent, `--target`): the largest percentile
-/// error 100·σ/|θ| of every parameter of interest. Issue #5: 5%.
+/// error 100·σ/|θ| of every parameter of interest. 5%.
 inline constexpr double kDefaultTargetPercent = 5.0;
 /// The loop's stuck rule (DesignLoopOptions::max_trials_to_target): a trial is negligible when
 /// reaching the target at its rate takes more than this many such trials.
@@ -41,15 +41,16 @@ struct PrecisionGoal {
 double TrialsToTarget(double sigma_now, double sigma_after, double sigma_target);
 
 struct Determinacy {
-  bool determined = false;            ///< every parameter of interest determined
-  std::string worst;                  ///< the parameter of interest with the largest error
-  double worst_percent = 0.0;         ///< its 100·σ/|θ| (+inf: no trial reaches it)
+  bool determined = false;                ///< every parameter of interest determined
+  std::string worst;                      ///< the parameter of interest with the largest error
+  double worst_percent = 0.0;             ///< its 100·σ/|θ| (+inf: no trial reaches it)
   std::vector<std::string> undetermined;  ///< "name (σ x% of its value)" or "name (no trial)"
 };
 
 /// The determinacy of ctx's parameters of interest given the information `info` (absolute,
 /// one matrix per design point of ctx's box).
-Determinacy InterestDeterminacy(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info);
+Determinacy InterestDeterminacy(const DofPlanningProblem& ctx,
+                                const std::vector<Eigen::MatrixXd>& info);
 
 /// Whether the loop can bring every parameter of interest to the target from `info` (the
 /// schedule's information at each design point of ctx's box) before its stuck rule stops it.
@@ -65,17 +66,17 @@ Determinacy InterestDeterminacy(const DofContext& ctx, const std::vector<Eigen::
 /// candidate's n exceeds N (at most 2N candidates; n ≤ N throughout counts as reached).
 struct TargetReach {
   bool reached = true;
-  std::string parameter;  ///< the bottleneck at the point reported
-  std::string trial;      ///< the loop's candidate there
-  int step = 0;           ///< its number after the schedule (1 = the first sequential trial)
-  double now_percent = 0.0;        ///< the bottleneck's 100·σ/|θ| before that candidate
+  std::string parameter;     ///< the bottleneck at the point reported
+  std::string trial;         ///< the loop's candidate there
+  int step = 0;              ///< its number after the schedule (1 = the first sequential trial)
+  double now_percent = 0.0;  ///< the bottleneck's 100·σ/|θ| before that candidate
   double per_trial_percent = 0.0;  ///< 100/(sqrt(ΔI)·|θ|) of the candidate
   double needed_percent = 0.0;     ///< the largest per-trial value that reaches the target
   /// n there: the first stuck point's (reached false), else the largest met.
   double trials = 0.0;
   std::string text;  ///< "kq reaches 18% per trial here …; the target 5% needs ≤ 12% …"
 };
-TargetReach ReachTarget(const DofContext& ctx, const SineDesignOptions& sine,
+TargetReach ReachTarget(const DofPlanningProblem& ctx, const SineDesignOptions& sine,
                         const SteadyDesignOptions& steady, std::vector<Eigen::MatrixXd> info,
                         const PrecisionGoal& goal, const std::string& id);
 
@@ -88,7 +89,8 @@ struct CompletionResult {
   std::vector<TrialCheck> checks;
   std::vector<std::string> notes;
 };
-CompletionResult CompleteWithLoopFamilies(const DofContext& ctx, const SineDesignOptions& sine,
+CompletionResult CompleteWithLoopFamilies(const DofPlanningProblem& ctx,
+                                          const SineDesignOptions& sine,
                                           const SteadyDesignOptions& steady,
                                           std::vector<Eigen::MatrixXd>* info,
                                           const std::string& id_prefix, int max_trials);

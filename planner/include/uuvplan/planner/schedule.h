@@ -12,7 +12,7 @@
 
 namespace uuvplan::planner {
 
-/// The nominal input sampled for replay (issue #17): phi_n (N or N·m) and the mapping in force
+/// The nominal input sampled for replay: phi_n (N or N·m) and the mapping in force
 /// at times at most 0.1 s apart, plus both sides of every jump.
 struct TrialProfile {
   std::vector<double> t;  ///< s from the trial start
@@ -46,16 +46,6 @@ inline constexpr const char* kPredictedSigmaAssumption =
     "as `identify` does (the velocity even where `identify` judges the start at rest and fixes "
     "it: there the prediction is cautious; docs/planning.md, \"Initial state\"); coloured noise "
     "or an unmodelled effect makes the achieved σ larger";
-
-/// What a schedule or loop JSON written before the planner recorded its assumption (e624b5c,
-/// 2026-11-28; no "assumption" key) rests on: the planner then counted each trial's initial
-/// state as known, which lends a steady run's start-up lag as information on m
-/// (docs/planning.md, "Initial state").
-inline constexpr const char* kUnrecordedSigmaAssumption =
-    "assumption not recorded in the file (written before the planner recorded it, e624b5c of "
-    "2026-11-28, when it counted each trial's initial position and velocity as known): these "
-    "predicted σ may be several times smaller than `identify` achieves; plan again for σ that "
-    "estimate the start";
 
 struct PredictedPrecision {
   std::map<std::string, double> sigma;  ///< predicted 1σ per parameter name

@@ -1,7 +1,7 @@
 // The planner's public entry points (the API `next` and `loop` build on):
 //
 //   PlanSchedule     the whole test schedule of a vehicle (a new payload): for each requested
-//                    DOF the steady runs for drag and installation coefficients (seed 000
+//                    DOF the steady runs for drag and installation coefficients (ref 000
 //                    §III-A), then one sine trial for the inertia designed given what the steady
 //                    runs leave unknown (§III-B), ordered, with durations, predicted σ per
 //                    parameter and total pool time (contract §schedule).
@@ -23,11 +23,11 @@
 #include "uuvplan/model/dof.h"
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
-#include "uuvplan/planner/determinacy.h"
-#include "uuvplan/planner/design/dof_context.h"
-#include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/design/sine_design.h"
 #include "uuvplan/planner/design/steady_design.h"
+#include "uuvplan/planner/determinacy.h"
+#include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::planner {
 
@@ -44,7 +44,7 @@ struct ScheduleOptions {
   /// leave a parameter of interest undetermined. CHOSEN 3: each adds one sine or leg; a DOF
   /// that three more do not determine is limited by the pool, not by the schedule's shape.
   int max_completion_trials = 3;
-  /// The precision a DOF's schedule must let the loop reach (issue #13: the verdict judges at
+  /// The precision a DOF's schedule must let the loop reach (the verdict judges at
   /// the loop's target): `complete` also needs ReachTarget (determinacy.h). `uuvplan
   /// schedule`, `check-pool`, `next` and `loop --target` set it; DesignLoopOptions shares the
   /// defaults.
@@ -96,11 +96,12 @@ ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& po
 /// Predicted precision of `info` (absolute, at each design point of ctx's box): worst σ per
 /// informed parameter, and the robust D criterion (relative units). Parameters no trial
 /// reaches are left out, with a note.
-PredictedPrecision PredictPrecision(const DofContext& ctx, const std::vector<Eigen::MatrixXd>& info,
+PredictedPrecision PredictPrecision(const DofPlanningProblem& ctx,
+                                    const std::vector<Eigen::MatrixXd>& info,
                                     std::vector<std::string>* notes = nullptr);
 
 /// The information of a list of trials of ctx's DOF at each design point (plus `prior`).
-std::vector<Eigen::MatrixXd> TrialsInformation(const DofContext& ctx,
+std::vector<Eigen::MatrixXd> TrialsInformation(const DofPlanningProblem& ctx,
                                                const std::vector<PlannedTrial>& trials,
                                                const PriorInformation* prior = nullptr);
 

@@ -1,4 +1,4 @@
-// The figures of a diagnosis (issue #18), per DOF diagnosed: the residual of each trial's
+// The figures of a diagnosis, per DOF diagnosed: the residual of each trial's
 // free run before (standard model) and after the extension (the extended model), and the
 // held-out gain of every candidate effect tested (docs/diagnosis.md).
 #pragma once

@@ -1,7 +1,7 @@
-// The figures of an identification, per DOF (issue #18): the measured signal against the free
-// run of the identified model for each trial (validation.h, seed 002 eq. 37), the residuals
-// and their normalised autocorrelation with the whiteness bounds ±1.96/√N (seed 004 §5.2),
-// each parameter with its σ band, and the RLS convergence (seed 004 Fig. 11).
+// The figures of an identification, per DOF: the measured signal against the free
+// run of the identified model for each trial (validation.h, ref 002 eq. 37), the residuals
+// and their normalised autocorrelation with the whiteness bounds ±1.96/√N (ref 004 §5.2),
+// each parameter with its σ band, and the RLS convergence (ref 004 Fig. 11).
 #pragma once
 
 #include <string>
@@ -19,7 +19,7 @@ Figure ResidualFigure(const ident::DofIdentification& dof, const std::string& st
 /// Each estimated parameter relative to its estimate, θ/θ̂ = 1 ± σ/|θ̂| and ± 2σ.
 Figure ParameterFigure(const ident::DofIdentification& dof, const std::string& stem);
 
-/// Seed 004 Fig. 11: each RLS coefficient (γ, θ_j/m) after every update, with its ±1σ band;
+/// Ref 004 Fig. 11: each RLS coefficient (γ, θ_j/m) after every update, with its ±1σ band;
 /// needs `dof.rls` (identify --method rls).
 Figure RlsConvergenceFigure(const ident::DofIdentification& dof, const std::string& stem);
 

@@ -1,5 +1,5 @@
-// The loop's figure (issue #18): per DOF, each parameter's percentile error 100·σ/|θ|
-// (seed 000 §III-A) against the accumulated pool time — achieved after each trial (solid,
+// The loop's figure: per DOF, each parameter's percentile error 100·σ/|θ|
+// (ref 000 §III-A) against the accumulated pool time — achieved after each trial (solid,
 // markers) and as the planner predicted it for the trial it planned (dashed) — with the target.
 #pragma once
 

@@ -13,7 +13,7 @@
 #include "uuvplan/io/loop_json.h"
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/report/diagnosis_figures.h"
 
@@ -26,8 +26,8 @@ struct ReportInputs {
   std::string vehicle_source;
   std::optional<model::Pool> pool;
   std::string pool_source;
-  std::optional<planner::Schedule> schedule;            ///< needs vehicle and pool for its figures
-  /// The pool verdict on the schedule (planner::VerdictLines, the sentence first) and where it
+  std::optional<planner::Schedule> schedule;  ///< needs vehicle and pool for its figures
+  /// The pool verdict on the schedule (text::VerdictLines, the sentence first) and where it
   /// comes from.
   struct Verdict {
     bool hosted = false;

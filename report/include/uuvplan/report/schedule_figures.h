@@ -1,7 +1,8 @@
-// The figures of a schedule, one per trial (issue #18): the position against time over the a
-// priori box (the envelope of the extreme vehicles of the pool check's grid, dof_context.h)
-// with the pool's walls and margins; each thruster's force against time with its limits,
-// min_thrust and the zero line (a reversal would cross it); the designed input phi_n(t).
+// The figures of a schedule, one per trial: the position against time over the a
+// priori box (the envelope of the extreme vehicles of the pool check's grid,
+// dof_planning_problem.h) with the pool's walls and margins; each thruster's force against time
+// with its limits, min_thrust and the zero line (a reversal would cross it); the designed input
+// phi_n(t).
 #pragma once
 
 #include <string>
@@ -9,7 +10,7 @@
 
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/vehicle.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/report/chart.h"
 

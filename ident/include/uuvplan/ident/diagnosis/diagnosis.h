@@ -1,4 +1,4 @@
-// Diagnosis (issue #5): what the standard model's simulation gets wrong, which physical effect
+// Diagnosis: what the standard model's simulation gets wrong, which physical effect
 // causes it, the extended model, and what the extension gains.
 //
 //  1. The standard model (contract: all η = 1, symmetric drag, no extra terms) is identified.
@@ -12,7 +12,7 @@
 //     (Bonferroni over the candidates), AND a new parameter at least `min_z` standard deviations
 //     from its null value (η = 1, others 0). Effects are added greedily, largest D first, and the
 //     rest re-tested against the extended model, so several effects can be combined.
-//  4. The gain of each finding is the velocity MAE (seed 002 eq. 37) of the free-run simulation
+//  4. The gain of each finding is the velocity MAE (ref 002 eq. 37) of the free-run simulation
 //     before and after adding it, on the `validate` trials, or by 2-fold cross-validation across
 //     trials when none is marked.
 // The driver times its stages — screen (the standard model identified, fitted and broken down),
@@ -20,20 +20,21 @@
 // input noise) — and DiagnosisResult::Summary() gives them in the pipelines' shape (summary.h).
 #pragma once
 
+#include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
-#include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "uuvplan/ident/estimate.h"
-#include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/estimators/output_error.h"
+#include "uuvplan/ident/identify.h"
 #include "uuvplan/ident/summary.h"
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/error_breakdown.h"
 #include "uuvplan/model/model_structure.h"
 
 namespace uuvplan::ident {
@@ -58,8 +59,6 @@ struct DiagnoseOptions {
   std::uint64_t seed = 1;  ///< of those redraws
   /// Effects to try, by name (model::Effects()); default: every one diagnosis may propose.
   std::vector<std::string> candidates = model::Effects().Diagnosable();
-  /// Print the standard model's fit on stderr (the CLI sets it from UUVPLAN_VERBOSE).
-  bool verbose = false;
   /// Threads for the candidate fits (0: one per core). The result does not depend on it.
   int threads = 0;
   /// Called at each stage of each DOF with a line saying what runs (the CLI prints it on
@@ -67,8 +66,8 @@ struct DiagnoseOptions {
   std::function<void(const std::string&)> progress;
   /// DOFs to diagnose; empty: every DOF with a fit trial.
   std::vector<model::Dof> dofs;
-  IdentifyOptions identify;        ///< for the nominal (standard-model) identification
-  OutputErrorOptions output_error; ///< for the candidate fits
+  IdentifyOptions identify;         ///< for the nominal (standard-model) identification
+  OutputErrorOptions output_error;  ///< for the candidate fits
   bool IsValid(std::string* error) const;
 };
 
@@ -139,7 +138,7 @@ struct StaticMapCandidate {
 struct Finding {
   std::string effect;  ///< name in the effect table (model/effects.h)
   model::Dof dof = model::Dof::kSurge;
-  std::string what;                       ///< what the standard simulation gets wrong
+  std::string detail;                     ///< the proposal's detail (a coupling's pair)
   std::vector<ParameterEstimate> params;  ///< the extension's parameters
   double statistic = 0.0;                 ///< likelihood ratio D
   int added_parameters = 0;
@@ -223,7 +222,6 @@ DiagnosisResult Diagnose(const model::Campaign& campaign, const DiagnoseOptions&
 /// The standard structure of the contract for a DOF: all η = 1 (no free η), symmetric drag,
 /// no effects; bias_step when the trials' ballast differs.
 model::ModelStructure NominalStructure(const model::Vehicle& vehicle, model::Dof dof,
-                                       const std::vector<std::string>& mappings_used,
-                                       bool ballast);
+                                       const std::vector<std::string>& mappings_used, bool ballast);
 
 }  // namespace uuvplan::ident

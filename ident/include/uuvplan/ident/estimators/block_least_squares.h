@@ -6,7 +6,7 @@
 //   J = [ 0    J_2 …  J_2θ ],           so JᵀJ is a block arrow: A_tt = J_tᵀJ_t,
 //       [ …            …   ]            A_tθ = J_tᵀJ_tθ, A_θθ = Σ_t J_tθᵀJ_tθ,
 //
-// and is never stored (memory grows with the trials, not trials × rows, issue #15). Each block's
+// and is never stored (memory grows with the trials, not trials × rows). Each block's
 // rows [J_t, J_tθ, r_t] are folded into a triangular factor by Householder QR in chunks of
 // kChunkRows rows; when the block ends, its first rows (its own columns: R_tt, R_tθ, q_t) are
 // kept and the rest is folded into the shared factor R_θθ (Golub & Van Loan §6.3, block-angular
@@ -80,8 +80,8 @@ class BlockLeastSquares : public BlockRowSink {
   Block open_;
   int filled_ = 0;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> chunk_;
-  Eigen::MatrixXd r_;          // the open block's factor
-  Eigen::MatrixXd shared_r_;   // (shared + 1)², the last column Qᵀr
+  Eigen::MatrixXd r_;         // the open block's factor
+  Eigen::MatrixXd shared_r_;  // (shared + 1)², the last column Qᵀr
   std::vector<Block> blocks_;
   // Normal-equation blocks, built by Finish: A_tt and A_tθ per block, A_θθ.
   std::vector<Eigen::MatrixXd> own_a_, cross_a_;

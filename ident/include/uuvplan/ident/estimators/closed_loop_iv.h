@@ -1,7 +1,7 @@
 // Identification under feedback: instrumental variables on the one-step integral rows, with the
 // rows d knots earlier as instruments (docs/identification.md, "Closed-loop data").
 //
-// The one-step rows (seeds 002/004) are Y_k = ξ̃(t_k) − ξ̃(t_{k−1}) = F_k·ψ + e_k, F_k the
+// The one-step rows (refs 002/004) are Y_k = ξ̃(t_k) − ξ̃(t_{k−1}) = F_k·ψ + e_k, F_k the
 // integrals over [t_{k−1}, t_k] of the commanded force and of the regressors along the
 // measured velocity. Under feedback the command reacts to the measured velocity, so ∫φ in F_k
 // carries the noise of ξ̃ at t_{k−1}, which is also in e_k: least squares (and the output
@@ -16,10 +16,10 @@
 // "System Identification" §8: lagged inputs and outputs as instruments, valid when the noise
 // is a moving average shorter than the lag) and its covariance the sandwich A⁻¹·X̂ᵀΩX̂·A⁻ᵀ,
 // A = X̂ᵀF, Ω the MA(1) of the rows' residuals (consecutive rows share a knot), as the one-step
-// least squares (least_squares.h Ma1VarianceModelCovariance). The same lag removes the errors-in-variables bias of the
-// noisy ξ̃ in F. The rows are weighted per trial by the inverse of the trial's residual
-// variance at a first pass weighted by the sensor (feasible GLS, two steps), since on real logs
-// model error and disturbances, not the sensor, set the rows' error.
+// least squares (least_squares.h Ma1VarianceModelCovariance). The same lag removes the
+// errors-in-variables bias of the noisy ξ̃ in F. The rows are weighted per trial by the inverse of
+// the trial's residual variance at a first pass weighted by the sensor (feasible GLS, two steps),
+// since on real logs model error and disturbances, not the sensor, set the rows' error.
 #pragma once
 
 #include <Eigen/Dense>
@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "uuvplan/ident/estimators/one_step_ls.h"
-#include "uuvplan/ident/stats/model_selection_options.h"
 #include "uuvplan/ident/prepare/trial_data.h"
+#include "uuvplan/ident/stats/model_selection_options.h"
 #include "uuvplan/model/dof_model.h"
 
 namespace uuvplan::ident {
@@ -51,11 +51,11 @@ struct ClosedLoopIvOptions {
 };
 
 struct ClosedLoopIvResult {
-  OneStepDofResult fit;    ///< ψ, physical θ, covariance, estimates (one-step layout)
-  int lag_knots = 0;       ///< d
-  int instrument_lags = 1; ///< L
-  double lag_s = 0.0;      ///< d in seconds (mean knot spacing × d)
-  bool residual_weights = false;  ///< the rows weighted by their trial's residuals
+  OneStepDofResult fit;            ///< ψ, physical θ, covariance, estimates (one-step layout)
+  int lag_knots = 0;               ///< d
+  int instrument_lags = 1;         ///< L
+  double lag_s = 0.0;              ///< d in seconds (mean knot spacing × d)
+  bool residual_weights = false;   ///< the rows weighted by their trial's residuals
   std::vector<std::string> notes;  ///< model selection's (insignificant parameters kept)
   bool ok() const { return fit.ok(); }
 };

@@ -1,4 +1,4 @@
-// Inertia by the integral method with the drag known (seed 000 §III-B, eqs. 16–19).
+// Inertia by the integral method with the drag known (ref 000 §III-B, eqs. 16–19).
 //
 // Integrating the model (3) from the start t_s of a run of samples removes the acceleration:
 //
@@ -54,18 +54,19 @@ struct IntegralInertiaResult {
   FitStatus status = FitStatus::kNoData;
   std::string message;
   double m = 0.0;
-  double sigma = 0.0;             ///< reported σ_m (HAC ⊕ propagated)
-  double sigma_eq11 = 0.0;        ///< seed 000 eqs. 11–12
-  double sigma_hac = 0.0;         ///< Newey–West only
-  double sigma_white = 0.0;       ///< known white sensor noise propagated (raw measured velocity; 0 otherwise)
+  double sigma = 0.0;       ///< reported σ_m (HAC ⊕ propagated)
+  double sigma_eq11 = 0.0;  ///< ref 000 eqs. 11–12
+  double sigma_hac = 0.0;   ///< Newey–West only
+  double sigma_white =
+      0.0;  ///< known white sensor noise propagated (raw measured velocity; 0 otherwise)
   /// Second-order errors in variables, √tr(Σ²)·|m̂|/b (part of sigma_white).
   double sigma_quadratic = 0.0;
-  double sigma_known = 0.0;       ///< from the known parameters' covariance
+  double sigma_known = 0.0;          ///< from the known parameters' covariance
   std::vector<double> run_c, run_b;  ///< per run of samples
   std::vector<int> run_trial;        ///< trial index of each run
   int num_samples = 0;
   double condition_number = 0.0;
-  ParameterEstimate estimate;     ///< "m"
+  ParameterEstimate estimate;  ///< "m"
   std::vector<std::string> notes;
   bool ok() const { return status == FitStatus::kOk; }
 };

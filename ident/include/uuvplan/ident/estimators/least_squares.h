@@ -1,7 +1,7 @@
 // Linear least squares y = H·theta + e with weights, the covariance of the estimate, and the
-// diagnosis of ill-posed regressions (seed 000 eqs. 11–12, seed 002 eq. 35, seed 004 eq. 12).
+// diagnosis of ill-posed regressions (ref 000 eqs. 11–12, ref 002 eq. 35, ref 004 eq. 12).
 //
-//   theta = (Hᵀ W H)⁻¹ Hᵀ W y                                  (seed 002 eq. 35, W = diag(w))
+//   theta = (Hᵀ W H)⁻¹ Hᵀ W y                                  (ref 002 eq. 35, W = diag(w))
 //   eq. 11/12 ("residual"):  Cov = s²·(Hᵀ W H)⁻¹,  s² = rᵀ W r / (n − p)
 //   known noise:             Cov = (Hᵀ W H)⁻¹          (w_i = 1/σ_i², the noise is known)
 //   conservative:            Cov = (Hᵀ W H)⁻¹, times s² when s²·(n − p) exceeds the 99% point of
@@ -25,14 +25,14 @@
 namespace uuvplan::ident {
 
 enum class CovarianceKind {
-  kResidual,      ///< seed 000 eqs. 11–12: noise variance estimated from the residuals
+  kResidual,      ///< ref 000 eqs. 11–12: noise variance estimated from the residuals
   kKnownNoise,    ///< weights are 1/σ² of a known noise
   kConservative,  ///< known noise, inflated by s² when the residuals are significantly larger
   /// Known noise, inflated by s² whenever s² > 1: Cov = max(1, s²)·(HᵀWH)⁻¹. For weights whose
   /// σ may be too small (coloured noise under-resolved by a short segment's lag-1), with few
   /// degrees of freedom to test s² against χ².
   kKnownNoiseAtLeast,
-  kNeweyWest,     ///< autocorrelation-robust sandwich (Bartlett kernel)
+  kNeweyWest,  ///< autocorrelation-robust sandwich (Bartlett kernel)
   /// Consecutive rows of a group share a noise term (e.g. y_k = … + e_k − e_{k−1}, and white
   /// errors besides): the residual is MA(1) within groups, Ω = γ0·I + γ1·(L + Lᵀ) with γ0, γ1
   /// the residual autocovariances at lags 0 and 1 (|γ1| <= γ0/2), Cov(θ) = A⁻¹HᵀΩHA⁻¹·n/(n−p).
@@ -70,10 +70,10 @@ struct LinearFit {
   std::string message;
   Eigen::VectorXd theta;
   Eigen::MatrixXd covariance;
-  Eigen::VectorXd residuals;     ///< y − H·theta (unweighted)
-  double sigma2 = 0.0;           ///< s² = rᵀWr/(n − p) (eq. 12 with weights)
-  int dof = 0;                   ///< n − p
-  double condition_number = 0.0; ///< of the column-scaled √W·H
+  Eigen::VectorXd residuals;          ///< y − H·theta (unweighted)
+  double sigma2 = 0.0;                ///< s² = rᵀWr/(n − p) (eq. 12 with weights)
+  int dof = 0;                        ///< n − p
+  double condition_number = 0.0;      ///< of the column-scaled √W·H
   std::vector<int> not_identifiable;  ///< column indices in a near-null combination
   Eigen::VectorXd singular_values;    ///< of the column-scaled √W·H, descending
 

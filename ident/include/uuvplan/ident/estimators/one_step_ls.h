@@ -1,6 +1,6 @@
-// One-step integral least squares of seeds 002 (eqs. 13–35) and 004 (eqs. 2–14).
+// One-step integral least squares of refs 002 (eqs. 13–35) and 004 (eqs. 2–14).
 //
-// Dividing the model by m gives, per DOF (seed 002 eq. 4, Table 2):
+// Dividing the model by m gives, per DOF (ref 002 eq. 4, Table 2):
 //
 //   dξ/dt = α·ξ + β·ξ|ξ| + γ·φ + δ,   α = −k/m, β = −kq/m, γ = 1/m, δ = bias/m
 //
@@ -9,13 +9,13 @@
 //   ξ̃(t_k) − ξ̃(t_{k−1}) = [∫ φ(ξ̃, φ) ds]·θ + ε_k                      (002 eqs. 20–26)
 //
 // stacked into Y = H·θ + ε (eqs. 27–34) and solved with measurement weights W⁻¹ (eq. 35);
-// several DOFs at once with block weights Λ_k (seed 004 eqs. 4, 12–14). Generalised to the
+// several DOFs at once with block weights Λ_k (ref 004 eqs. 4, 12–14). Generalised to the
 // model's terms: ψ = [γ, θ_j/m …] where γ multiplies the known force (open-water thrust and
 // fixed terms) and θ_j/m the integral of term j's regressor; the standard model gives
 // α = −ψ_k, β = −ψ_kq, δ = ψ_bias. The physical parameters follow (002 Table 2) with their
 // covariance by the delta method: m = 1/γ, θ_j = ψ_j/γ.
 //
-// Knots: the seeds use every sample; with a noisy filtered velocity in the regressors that
+// Knots: the papers use every sample; with a noisy filtered velocity in the regressors that
 // biases m low (errors in variables, notes/pitfalls.md), so by default knots are one
 // Savitzky–Golay window apart (the endpoint errors of consecutive rows are then nearly
 // independent, and the integrals of ξ̃ average the noise away). Rows share an endpoint, so
@@ -26,8 +26,9 @@
 // leverage-corrected residuals (Ma1VarianceModelCovariance): variance v_k = c0 + c1·A_k +
 // c2·A_k², A_k = (∂F_k/∂ξ)·ψ the row's sensitivity to a velocity error held over it (the
 // integral errors grow with the speed where the drag is quadratic), lag-1 correlation ρ pooled;
-// without them (iv_iterations = 0) the homoscedastic MA(1) (CovarianceKind::kDifferenced). Rows never span a large command step (runs are split there), and rows are
-// weighted by their trial's noise (trials filtered with different windows differ tenfold).
+// without them (iv_iterations = 0) the homoscedastic MA(1) (CovarianceKind::kDifferenced). Rows
+// never span a large command step (runs are split there), and rows are weighted by their trial's
+// noise (trials filtered with different windows differ tenfold).
 #pragma once
 
 #include <Eigen/Dense>
@@ -41,7 +42,7 @@
 
 namespace uuvplan::ident {
 
-/// Seed 002 Table 2: physical parameters of the coefficients [α, β, γ, δ].
+/// Ref 002 Table 2: physical parameters of the coefficients [α, β, γ, δ].
 struct SeedCoefficients {
   double alpha = 0.0, beta = 0.0, gamma = 0.0, delta = 0.0;
 };
@@ -49,22 +50,22 @@ struct PhysicalParameters {
   double m = 0.0;    ///< 1/γ
   double d_L = 0.0;  ///< −α/γ (k)
   double d_Q = 0.0;  ///< −β/γ (kq)
-  double b = 0.0;    ///< −δ/γ: VSOR's disturbance, τ = m·ẋ + d_L·x + d_Q·x|x| + b (002 eq. 2)
-  double bias = 0.0; ///< δ/γ = −b: the contract's bias, m·ξ̇ = … + φ + bias
+  double b = 0.0;  ///< −δ/γ: VSOR's disturbance, τ = m·ẋ + d_L·x + d_Q·x|x| + b (002 eq. 2)
+  double bias = 0.0;  ///< δ/γ = −b: the contract's bias, m·ξ̇ = … + φ + bias
 };
 PhysicalParameters ToPhysical(const SeedCoefficients& c);
 /// Jacobian ∂[m, d_L, d_Q, bias]/∂[α, β, γ, δ] for the delta method.
 Eigen::Matrix4d ToPhysicalJacobian(const SeedCoefficients& c);
 
 struct OneStepOptions {
-  /// Knot spacing (s): 0 = every sample (seeds 002/004); negative = one Savitzky–Golay window.
+  /// Knot spacing (s): 0 = every sample (refs 002/004); negative = one Savitzky–Golay window.
   double window_s = -1.0;
   /// Rows share their endpoint ξ̃(t_k) with the next row: the residuals are differences of a
   /// level noise, whose covariance is known up to σ² (kDifferenced); kNeweyWest and the
   /// seeds' kResidual (white residuals) are available.
   CovarianceKind covariance = CovarianceKind::kDifferenced;
   int newey_west_lags = 1;
-  double max_step_s = 0.05; ///< integration sub-step
+  double max_step_s = 0.05;  ///< integration sub-step
   double max_condition = 1e8;
   /// Errors in variables: ξ̃ in the integrals is noisy, which biases the plain least squares
   /// (m high by 10% on VSOR-like data). Instrumental variables remove the bias: the same
@@ -73,7 +74,7 @@ struct OneStepOptions {
   /// from the plain least-squares answer. The same simulation also corrects F, for measured
   /// velocities, for what the interpolation between samples misses (the ripple of a held
   /// command faster than the sensor: F += ∫h(ξ_sim) − ∫h(interpolated ξ_sim samples)).
-  /// 0 = the seeds' plain least squares.
+  /// 0 = the papers' plain least squares.
   int iv_iterations = 2;
   double simulation_step_s = 0.02;  ///< for the instruments' simulations
   /// Runs of rows end at large command steps (the filtered velocity is distorted across the
@@ -86,11 +87,11 @@ struct OneStepOptions {
 
 /// The rows of one DOF's regression: Y = F·ψ, with the model indices of ψ's entries.
 struct OneStepRows {
-  Eigen::MatrixXd F;         ///< rows × (1 + free.size()): [∫known, ∫h_free…]
-  Eigen::VectorXd Y;         ///< ξ̃(t_k) − ξ̃(t_{k−1})
-  std::vector<double> t;     ///< knot time t_k of each row (trial time)
-  std::vector<int> group;    ///< trial index of each row
-  std::vector<int> run;      ///< run of each row (rows of a run share endpoints), unique
+  Eigen::MatrixXd F;       ///< rows × (1 + free.size()): [∫known, ∫h_free…]
+  Eigen::VectorXd Y;       ///< ξ̃(t_k) − ξ̃(t_{k−1})
+  std::vector<double> t;   ///< knot time t_k of each row (trial time)
+  std::vector<int> group;  ///< trial index of each row
+  std::vector<int> run;    ///< run of each row (rows of a run share endpoints), unique
   /// 1/σ² of each row's noise (its trial's filtered-velocity noise, 2·(gain·σ_sensor)²): rows
   /// of trials filtered with different windows differ in noise by an order of magnitude.
   std::vector<double> weight;
@@ -123,14 +124,15 @@ Eigen::MatrixXd OneStepRegressors(const model::DofModel& model,
 OneStepRows ExcitedOneStepRows(const model::DofModel& model,
                                const std::vector<const TrialData*>& trials,
                                const Eigen::VectorXd& theta, std::vector<int> free,
-                               const OneStepOptions& options, std::vector<std::string>* not_excited);
+                               const OneStepOptions& options,
+                               std::vector<std::string>* not_excited);
 
 struct OneStepDofInput {
   const model::DofModel* model = nullptr;
   std::vector<const TrialData*> trials;
-  Eigen::VectorXd theta;   ///< values of the parameters not estimated
-  std::vector<int> free;   ///< empty: every regressor-linear parameter
-  double weight = 0.0;     ///< Λ for this DOF; 0: 1/noise_sigma²
+  Eigen::VectorXd theta;  ///< values of the parameters not estimated
+  std::vector<int> free;  ///< empty: every regressor-linear parameter
+  double weight = 0.0;    ///< Λ for this DOF; 0: 1/noise_sigma²
 };
 
 /// The instruments of rows R (built for `in`) at the physical parameters `theta_now`: Z, the
@@ -152,8 +154,8 @@ struct OneStepDofResult {
   std::vector<std::string> coefficient_names;  ///< "gamma", "<name>/m" …
   Eigen::VectorXd psi;
   Eigen::MatrixXd psi_covariance;
-  bool standard = false;          ///< [α, β, γ, δ] available
-  SeedCoefficients seed;          ///< when standard
+  bool standard = false;  ///< [α, β, γ, δ] available
+  SeedCoefficients seed;  ///< when standard
   Eigen::Matrix4d seed_covariance = Eigen::Matrix4d::Zero();
   /// Physical parameters in the model's layout (m and the free ones estimated; others as given).
   std::vector<std::string> names;
@@ -163,15 +165,16 @@ struct OneStepDofResult {
   std::vector<ParameterEstimate> estimates;  ///< m and the free parameters
   double condition_number = 0.0;
   std::vector<std::string> not_identifiable;
-  std::vector<std::string> not_excited;  ///< free parameters whose regressor is zero in these trials
+  std::vector<std::string>
+      not_excited;  ///< free parameters whose regressor is zero in these trials
   Eigen::VectorXd residuals;
   int num_rows = 0;
-  double cost = 0.0;  ///< J = (1/N)·Σ ε² (seed 004 eq. 5)
+  double cost = 0.0;          ///< J = (1/N)·Σ ε² (ref 004 eq. 5)
   bool instrumental = false;  ///< the estimate is the instrumental-variable one
   bool ok() const { return status == FitStatus::kOk; }
 };
 
-/// Seed 004: all DOFs in one stacked, weighted regression (block diagonal, so each DOF's
+/// Ref 004: all DOFs in one stacked, weighted regression (block diagonal, so each DOF's
 /// estimate equals its own weighted fit; the weights Λ matter only for a common cost).
 std::vector<OneStepDofResult> OneStepLeastSquares(const std::vector<OneStepDofInput>& dofs,
                                                   const OneStepOptions& options);

@@ -1,5 +1,5 @@
 // Output-error (maximum-likelihood) refinement: the free-run simulation of every trial is fitted
-// to the measured positions and velocities, beyond the seeds' equation-error methods.
+// to the measured positions and velocities, beyond the papers' equation-error methods.
 //
 //   min_z  ½ Σ_trials Σ_i ((y_i − ŷ_i(z)) / σ_i)²,   z = [θ_free, χ0 and ξ0 of each trial]
 //
@@ -15,8 +15,8 @@
 // tends to the Cramér–Rao bound (JᵀJ)⁻¹ computed from the same sensitivities at the truth. When
 // the residuals are not white (model error, real data) an autocorrelation-robust sandwich is
 // used instead (the scores prewhitened by an AR(1) of the residuals per trial and sensor, then
-// batch means: covariance.h; never below the white-noise covariance), and said so. Sensor samples faster than
-// the RK4 step are averaged into one-step bins (weight √n/σ) before fitting.
+// batch means: covariance.h; never below the white-noise covariance), and said so. Sensor samples
+// faster than the RK4 step are averaged into one-step bins (weight √n/σ) before fitting.
 #pragma once
 
 #include <Eigen/Dense>
@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "uuvplan/ident/estimate.h"
-#include "uuvplan/ident/stats/model_selection_options.h"
 #include "uuvplan/ident/prepare/trial_data.h"
+#include "uuvplan/ident/stats/model_selection_options.h"
 #include "uuvplan/model/dof_model.h"
 
 namespace uuvplan::ident {
@@ -34,8 +34,8 @@ enum class InitialVelocity { kAuto, kZero, kEstimate };
 
 struct OutputErrorOptions {
   int max_iterations = 40;
-  double tolerance = 1e-8;   ///< relative decrease of the cost and of the step to stop
-  double step_s = 0.02;      ///< RK4 step of the simulations (s)
+  double tolerance = 1e-8;  ///< relative decrease of the cost and of the step to stop
+  double step_s = 0.02;     ///< RK4 step of the simulations (s)
   /// Samples closer than half this are averaged into bins this long (s): the mean is a
   /// sufficient statistic while the motion is linear across a bin (τ of 0.3 s and more).
   double bin_s = 0.02;
@@ -80,14 +80,14 @@ struct OutputErrorResult {
   std::string message;
   std::vector<std::string> names;  ///< model layout
   Eigen::VectorXd theta;
-  Eigen::MatrixXd covariance;      ///< model layout, zero for fixed/dropped parameters
-  Eigen::MatrixXd crb;             ///< (JᵀJ)⁻¹ at the solution with the declared σ (model layout)
+  Eigen::MatrixXd covariance;  ///< model layout, zero for fixed/dropped parameters
+  Eigen::MatrixXd crb;         ///< (JᵀJ)⁻¹ at the solution with the declared σ (model layout)
   std::vector<ParameterState> state;
   std::vector<ParameterEstimate> estimates;  ///< estimated and dropped parameters
   std::vector<TrialInitialState> initial;
   int iterations = 0;
-  double cost = 0.0;     ///< ½‖r‖²
-  double sigma2 = 0.0;   ///< s²
+  double cost = 0.0;    ///< ½‖r‖²
+  double sigma2 = 0.0;  ///< s²
   int num_residuals = 0;
   double condition_number = 0.0;
   std::vector<std::string> not_identifiable;

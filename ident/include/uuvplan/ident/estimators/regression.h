@@ -7,8 +7,8 @@
 // (ForceTerm::Regressor) and zero for m and for parameters of non-linear terms, and h0 holds
 // the known part (the open-water thrust, η = 1) plus the value of every non-linear term at
 // fixed parameter values. Along a measured trial, the integrals of h and h0 over time
-// intervals are the columns of the integral methods (seed 000 eq. 16, seed 002 eqs. 20–23,
-// seed 004 eq. 10).
+// intervals are the columns of the integral methods (ref 000 eq. 16, ref 002 eqs. 20–23,
+// ref 004 eq. 10).
 #pragma once
 
 #include <Eigen/Dense>
@@ -24,13 +24,13 @@ std::vector<int> LinearParameters(const model::DofModel& model);
 
 /// h (num_parameters entries) and h0 at one context; `theta` supplies the values of the
 /// parameters of non-linear terms (and is not read for linear ones).
-void EvaluateRegressor(const model::DofModel& model, const model::TermContext& context,
+void EvaluateRegressor(const model::DofModel& model, const model::TermInputs& context,
                        const Eigen::VectorXd& theta, double* h, double* h0);
 
 /// The term context of a trial at time t with velocity xi (the actuator force is the held
 /// command through the model's dead zone at `theta`; thruster lag is not represented).
-model::TermContext MeasuredContext(const model::DofModel& model, const TrialData& trial,
-                                   double t, double xi, const Eigen::VectorXd& theta);
+model::TermInputs MeasuredTermInputs(const model::DofModel& model, const TrialData& trial, double t,
+                                     double xi, const Eigen::VectorXd& theta);
 
 /// Integrals of h and h0 along a trial's estimated velocity over the intervals
 /// [b_{i}, b_{i+1}] of `boundaries` (sorted, within [0, duration]). H is (intervals ×

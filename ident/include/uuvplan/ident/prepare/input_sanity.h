@@ -1,4 +1,4 @@
-// Unit and sign sanity of a campaign's logs, checked before any identification (issue #14):
+// Unit and sign sanity of a campaign's logs, checked before any identification:
 // the mistakes that identification would otherwise fit without complaint.
 //
 //  - rate vs angle: the logged rate against the derivative of the logged position (too noisy:
@@ -65,7 +65,7 @@ std::vector<InputProblem> CheckInputSanity(const model::Campaign& campaign,
                                            const InputSanityOptions& options = {});
 /// As above, with the logs' columns lent to the check instead of copied (the all-finite ones,
 /// else one with few gaps compacted in place) and given back bit for bit before it returns, on
-/// an exception too: a long log's check holds no second copy of it (issue #16).
+/// an exception too: a long log's check holds no second copy of it.
 std::vector<InputProblem> CheckInputSanity(model::Campaign* campaign,
                                            const InputSanityOptions& options = {});
 

@@ -1,4 +1,4 @@
-// Outliers (sonar multipath, seed 000 Fig. 14) and gaps (drop-outs, seed 000 Fig. 14 "missing
+// Outliers (sonar multipath, ref 000 Fig. 14) and gaps (drop-outs, ref 000 Fig. 14 "missing
 // sonar measurements") in a sampled signal. Each sample is predicted by a local quadratic fitted
 // to its neighbours (itself left out) between the same command steps; a sample whose residual
 // exceeds `threshold` robust standard deviations (1.4826·MAD of all residuals, at least
@@ -52,8 +52,7 @@ struct CommandSteps {
 /// With `steps`, each sample is predicted from the neighbours between the same two steps
 /// (where at least 4 are), and those within `protect_radius` of a step are not tested.
 std::vector<Outlier> DetectOutliers(const Signal& s, const OutlierOptions& options,
-                                    double known_sigma = -1.0,
-                                    const CommandSteps* steps = nullptr);
+                                    double known_sigma = -1.0, const CommandSteps* steps = nullptr);
 
 /// The warning for `excluded` of `total` samples of `signal` ("velocity") of `trial` excluded,
 /// or "" when at most `options.finding_fraction` of them.

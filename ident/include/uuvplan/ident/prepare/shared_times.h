@@ -1,5 +1,5 @@
 // Sample times that several signals share: a velocity estimate's times are its positions'
-// (8 bytes a sample of a long log, issue #16). A read-only std::vector<double> held by
+// (8 bytes a sample of a long log). A read-only std::vector<double> held by
 // reference count; copies share it, and a change detaches the changed copy first (copy on
 // write), so a SharedTimes behaves as a value. Times logged on a uniform decimal clock can be
 // held as that clock instead (CompactUniform; model::UniformClock: the very same doubles,

@@ -12,7 +12,7 @@ namespace uuvplan::ident {
 
 struct ColumnBasis;  // covariance.h
 
-/// The least-squares constant speed of a segment: chi(t) = c + v·t (seed 000 §III), or, from
+/// The least-squares constant speed of a segment: chi(t) = c + v·t (ref 000 §III), or, from
 /// velocity samples, their mean. sigma follows eqs. 11–12 (noise from the residuals) unless a
 /// known noise σ is given; when the residuals are positively autocorrelated beyond chance
 /// (lag-1 ρ > 2/√n), σ is inflated by √((1+ρ)/(1−ρ)).
@@ -35,7 +35,7 @@ SpeedFit ConstantSpeedFit(const Signal& position, double t0, double t1, double k
 SpeedFit MeanSpeedFit(const Signal& velocity, double t0, double t1, double known_sigma = -1.0);
 
 /// The steady speed of a segment that may still hold the tail of a transient: near a steady
-/// speed v∞ the model (3) is linear, ξ(t) = v∞ + A·e^{−(t−t0)/τ} (τ = m/k_L, seed 000 eq. 13),
+/// speed v∞ the model (3) is linear, ξ(t) = v∞ + A·e^{−(t−t0)/τ} (τ = m/k_L, ref 000 eq. 13),
 /// so chi(t) = c + v∞·(t − t̄) + B·e^{−(t−t0)/τ} (positions) or ξ(t) = v∞ + A·e^{−(t−t0)/τ}
 /// (velocities) is fitted, τ by a profile search, and σ(v∞) from the Gauss–Newton covariance
 /// of all four (three) parameters. A transient too small to detect by a constant-speed test

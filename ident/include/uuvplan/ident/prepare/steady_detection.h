@@ -28,7 +28,7 @@ struct SteadyDetectionOptions {
   int stride = 0;
   /// Fit the tail of the transient (SettlingSpeedFit) instead of a constant speed: the start
   /// is the first candidate whose settling fit is consistent with the noise (χ² within 2σ of
-  /// its degrees of freedom). False: seed 000's constant-speed fit after the settling tests.
+  /// its degrees of freedom). False: ref 000's constant-speed fit after the settling tests.
   bool transient_model = true;
   bool IsValid(std::string* error) const;
 };

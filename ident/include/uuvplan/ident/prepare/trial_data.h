@@ -2,7 +2,7 @@
 // DOF's position and velocity samples with outliers excluded (and reported), gaps found, the
 // logged force held between rows as the excitation (zero-order hold, notes/pitfalls.md), the
 // mapping in force on each row as a vehicle mapping index, the other DOFs' measured velocities
-// for coupling terms, and a smoothed velocity estimate (Savitzky–Golay, seed 000 §IV-D).
+// for coupling terms, and a smoothed velocity estimate (Savitzky–Golay, ref 000 §IV-D).
 //
 // Times are shifted so that the trial starts at t = 0: its first row with a force value (the
 // zero-order hold starts there; measurements logged before it are not used, with a note);
@@ -52,8 +52,8 @@ class LogAuxVelocities final : public model::AuxVelocities {
 };
 
 struct TrialData {
-  int index = -1;            ///< in the campaign's trial list
-  std::string name;          ///< file as written in the campaign
+  int index = -1;    ///< in the campaign's trial list
+  std::string name;  ///< file as written in the campaign
   std::string path;
   model::Dof dof = model::Dof::kSurge;
   model::TrialUse use = model::TrialUse::kFit;
@@ -62,8 +62,8 @@ struct TrialData {
   double time_offset = 0.0;  ///< log time of t = 0, the first force row (s)
   double duration = 0.0;     ///< s
 
-  Signal position;  ///< measured positions of the DOF, outliers removed
-  Signal velocity;  ///< measured velocities of the DOF, outliers removed
+  Signal position;               ///< measured positions of the DOF, outliers removed
+  Signal velocity;               ///< measured velocities of the DOF, outliers removed
   double position_sigma = -1.0;  ///< sensor noise used (declared, else estimated; <= 0 unknown)
   double velocity_sigma = -1.0;
   double position_sigma_estimated = -1.0;  ///< from the data (NoiseSigmaFromDifferences)
@@ -74,10 +74,10 @@ struct TrialData {
   SharedTimes force_t;
   std::vector<double> force;
   std::vector<int> mapping;
-  std::unique_ptr<model::Excitation> input;          ///< zero-order hold of the rows
-  std::vector<double> breakpoints;                   ///< input->Breakpoints(), sorted, cached
-  std::unique_ptr<LogAuxVelocities> aux;             ///< null when no other vel_ column
-  std::vector<std::string> mappings_used;            ///< vehicle mapping names seen
+  std::unique_ptr<model::Excitation> input;  ///< zero-order hold of the rows
+  std::vector<double> breakpoints;           ///< input->Breakpoints(), sorted, cached
+  std::unique_ptr<LogAuxVelocities> aux;     ///< null when no other vel_ column
+  std::vector<std::string> mappings_used;    ///< vehicle mapping names seen
   /// Times of the large command changes (steps of more than 5% of the force range, and
   /// mapping changes): the filtered velocity is distorted within half a filter window of them.
   std::vector<double> force_jumps;

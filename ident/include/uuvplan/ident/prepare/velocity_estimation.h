@@ -1,11 +1,11 @@
-// Velocity from measured positions (and smoothing of measured velocities), as the seeds do it:
-//  - off-line Savitzky–Golay polynomial smoothing/differentiation (seed 000 §IV-D: 4th order,
+// Velocity from measured positions (and smoothing of measured velocities), as the papers do it:
+//  - off-line Savitzky–Golay polynomial smoothing/differentiation (ref 000 §IV-D: 4th order,
 //    symmetric windows of 21–41 points chosen per DOF and sampling rate), as local polynomial
 //    least squares on the actual sample times so that jitter and drop-outs are handled; the
 //    filter never crosses a gap, and the first and last half-window of every run are flagged as
 //    edges (notes/pitfalls.md) and evaluated with the end polynomials;
 //  - numerical differentiation followed by a second-order Butterworth low-pass applied forwards
-//    and backwards (zero phase), as VSOR (seed 002 §6.1);
+//    and backwards (zero phase), as VSOR (ref 002 §6.1);
 //  - the time scale of a logged input, and a sensor's noise from its samples.
 // The steady-state segments and their speeds (ref 000 §III) are steady_detection.h's.
 #pragma once
@@ -20,14 +20,14 @@
 namespace uuvplan::ident {
 
 struct SavitzkyGolayOptions {
-  int order = 4;    ///< polynomial order (seed 000: 4)
-  int window = 21;  ///< points, odd (seed 000: 21 for 3.3 Hz sonar, 41 for 10 Hz heading)
+  int order = 4;    ///< polynomial order (ref 000: 4)
+  int window = 21;  ///< points, odd (ref 000: 21 for 3.3 Hz sonar, 41 for 10 Hz heading)
   /// A step longer than gap_factor × the median step starts a new run (never filtered across).
   double gap_factor = 3.0;
   bool IsValid(std::string* error) const;
 };
 
-/// The window seed 000 §IV-D would use at this sampling rate: about 4 s of samples, odd, within
+/// The window ref 000 §IV-D would use at this sampling rate: about 4 s of samples, odd, within
 /// 21–41 points (3.33 Hz sonar → 21, 10 Hz heading/depth → 41). When the input changes faster
 /// (`input_time_scale_s` > 0: the median leg of a piecewise-constant input, or the period of
 /// a smooth one), the span is also kept below a quarter of it so that the filter follows the
@@ -43,8 +43,8 @@ int ChosenWindow(int given, double rate_hz, double input_time_scale_s);
 double InputTimeScale(model::TimesView t, const std::vector<double>& force);
 
 /// A filter's output. Its value and derivative are computed in double and stored in float
-/// (8 bytes a sample, not 16, on a million-sample log; issue #16): the rounding, 6e-8 of the
-/// value, is 10⁻⁴–10⁻⁶ of the filtered noise of any sensor the seeds use (1 cm sonar at
+/// (8 bytes a sample, not 16, on a million-sample log): the rounding, 6e-8 of the
+/// value, is 10⁻⁴–10⁻⁶ of the filtered noise of any sensor the papers use (1 cm sonar at
 /// 100 Hz gives mm/s of velocity noise), so no estimate moves by a visible fraction of its σ.
 /// ForEachSmoothed hands out the doubles.
 struct SmoothedSignal {
@@ -52,7 +52,7 @@ struct SmoothedSignal {
   std::vector<float> value;               ///< smoothed signal
   std::vector<float> derivative;          ///< its time derivative (NaN where a run is too short)
   std::vector<double> second_derivative;  ///< its second time derivative (NaN if unknown)
-  std::vector<bool> edge;          ///< within half a window of a run end (trim before fitting)
+  std::vector<bool> edge;  ///< within half a window of a run end (trim before fitting)
   /// First sample of each run (runs are separated by gaps; the first starts at 0).
   std::vector<std::size_t> run_starts;
   /// The run of sample i.
@@ -98,8 +98,8 @@ struct SampleWeights {
 /// window, end polynomials and actual times): the linear map from the samples' noise to the
 /// derivative's, for its exact variance σ²·wᵀΩw (covariance.h, Ar1QuadraticForm).
 std::vector<SampleWeights> SavitzkyGolayDerivativeWeights(const Signal& s,
-                                                         const SavitzkyGolayOptions& options,
-                                                         std::size_t begin, std::size_t end);
+                                                          const SavitzkyGolayOptions& options,
+                                                          std::size_t begin, std::size_t end);
 
 /// The AR(1) coefficient of a position sensor's noise: the residuals of the filter's own local
 /// polynomial (options.order) fitted to consecutive, non-overlapping windows of
@@ -109,15 +109,14 @@ std::vector<SampleWeights> SavitzkyGolayDerivativeWeights(const Signal& s,
 /// Unlike the differences of raw − smoothed (NoiseAr1FromDifferences), whose smoother follows
 /// the slow part of the noise (0.5–0.66 read for 0.9), the bias of the fitted columns is
 /// accounted for exactly.
-double PositionNoiseAr1(const Signal& position, const SavitzkyGolayOptions& options,
-                        double sigma);
+double PositionNoiseAr1(const Signal& position, const SavitzkyGolayOptions& options, double sigma);
 
 /// Second-order Butterworth low-pass (cutoff_hz) applied forwards and backwards (zero phase) to
 /// uniformly sampled data at rate_hz; odd reflection at both ends.
 std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rate_hz,
                                         double cutoff_hz);
 
-/// VSOR velocity (seed 002 §6.1): central differences of the positions, then the zero-phase
+/// VSOR velocity (ref 002 §6.1): central differences of the positions, then the zero-phase
 /// Butterworth low-pass; runs are split at gaps; irregular steps use the actual times.
 SmoothedSignal ButterworthVelocity(const Signal& position, double cutoff_hz,
                                    double gap_factor = 3.0);

@@ -53,7 +53,8 @@ Prewhitening PlanPrewhitening(const Eigen::VectorXd& r, const std::vector<int>& 
 ///   g_b = A_b + c_b·Z_{e_b},   A_b = Σ_{i∈b} q_i J_i,   c_b = ρ·q_{e_b−1},
 ///   Z_{e_b} = Σ_{b'>b} ρ^{s_b' − e_b} W_b',   W_b = Σ_{i∈b} ρ^{i−s_b} J_i,
 /// and S = Σ_b [A_bA_bᵀ + μ_b W_bW_bᵀ + (m_b + v_b)W_bᵀ + W_b(m_b + v_b)ᵀ] with the forward sums
-///   m_{b+1} = ρ^{L_b}·m_b + c_b·A_b,   μ_{b+1} = ρ^{2L_b}·μ_b + c_b²,   v_{b+1} = ρ^{L_b}·(v_b + μ_b·W_b)
+///   m_{b+1} = ρ^{L_b}·m_b + c_b·A_b,   μ_{b+1} = ρ^{2L_b}·μ_b + c_b²,   v_{b+1} = ρ^{L_b}·(v_b +
+///   μ_b·W_b)
 /// (L_b the batch length; all zero at the start of a group). Memory O(columns²), whatever the rows.
 class WhitenedScoreSum {
  public:

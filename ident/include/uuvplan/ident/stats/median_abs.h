@@ -1,4 +1,4 @@
-// The median of |r| without a copy of r (issue #16: the output error's gross-error limit on a
+// The median of |r| without a copy of r (the output error's gross-error limit on a
 // million residuals held a 4 MB sorted copy).
 #pragma once
 

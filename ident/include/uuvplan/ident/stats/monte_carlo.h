@@ -24,8 +24,7 @@ namespace uuvplan::ident {
 /// campaign clock advancing by the trial's duration + pause_s; `uses` (may be shorter) marks
 /// trials validate, default fit.
 model::Campaign VirtualCampaign(const model::Truth& truth,
-                                const std::vector<model::TrialDesign>& designs,
-                                std::uint64_t seed,
+                                const std::vector<model::TrialDesign>& designs, std::uint64_t seed,
                                 const std::vector<model::TrialUse>& uses = {},
                                 double pause_s = 60.0, double command_rate_hz = 20.0);
 
@@ -51,11 +50,11 @@ struct CoverageCell {
   model::Dof dof = model::Dof::kSurge;
   std::string name;
   double truth = 0.0;
-  int n = 0;          ///< repetitions where the estimator reported this parameter with σ
+  int n = 0;  ///< repetitions where the estimator reported this parameter with σ
   int covered = 0;
-  int within3 = 0;    ///< |θ̂ − θ| <= 3σ
-  double mean = 0.0;  ///< of the estimates
-  double sd = 0.0;    ///< spread of the estimates
+  int within3 = 0;          ///< |θ̂ − θ| <= 3σ
+  double mean = 0.0;        ///< of the estimates
+  double sd = 0.0;          ///< spread of the estimates
   double mean_sigma = 0.0;  ///< mean reported σ
   double crb_sigma = 0.0;   ///< output error: √CRB at the truth (0 if not computed)
   double coverage() const { return n > 0 ? static_cast<double>(covered) / n : 0.0; }
@@ -68,8 +67,6 @@ struct MonteCarloReport {
   std::vector<std::string> notes;
   const CoverageCell* Find(const std::string& estimator, model::Dof dof,
                            const std::string& name) const;
-  /// A readable table, one line per cell.
-  std::string Table() const;
 };
 
 MonteCarloReport RunMonteCarlo(const model::Truth& truth,

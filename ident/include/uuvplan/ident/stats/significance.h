@@ -1,14 +1,14 @@
-// Percentile error and statistical significance of an estimate (seed 000 §III-A, §IV-D).
+// Percentile error and statistical significance of an estimate (ref 000 §III-A, §IV-D).
 #pragma once
 
 #include <limits>
 
 namespace uuvplan::ident {
 
-/// Percentile parameter error 100·sigma/|theta| (seed 000, after eq. 12).
+/// Percentile parameter error 100·sigma/|theta| (ref 000, after eq. 12).
 double PercentileError(double value, double sigma);
 
-/// Seed 000 §IV-D: a parameter whose percentile error exceeds 100/1.96 = 51.02% is
+/// Ref 000 §IV-D: a parameter whose percentile error exceeds 100/1.96 = 51.02% is
 /// statistically insignificant at 95% confidence (|theta|/sigma < z_0.975 = 1.96).
 inline constexpr double kInsignificantPercentileError = 100.0 / 1.959963984540054;
 
@@ -21,10 +21,10 @@ bool IsSignificant(double value, double sigma);
 /// parameter k correlated at ρ by ρ·(σ_k/σ_j)·θ_j while its σ shrinks to σ_k·√(1 − ρ²): a bias
 /// of up to 1.96·ρ/√(1 − ρ²) of the σ then reported, per drop. At ρ = 0.3 that is 0.62 σ (95%
 /// intervals keep ≥ 90% coverage) and σ_k shrinks by 4.6%; collinear k and kq (ρ 0.9–0.99)
-/// would be 4–14 σ off, more beyond (issue #14 review: payload60 heave, bias −3 N dropped at
+/// would be 4–14 σ off, more beyond (payload60 heave, bias −3 N dropped at
 /// 0.26 ± 1.54, gave k 36.2 ± 0.66 for 20: 25 σ).
 inline constexpr double kDropCorrelation = 0.3;
-/// Seed 000 §IV-D's own rule drops whatever the correlation (`identify --seed-selection`).
+/// Ref 000 §IV-D's own rule drops whatever the correlation (`identify --seed-selection`).
 inline constexpr double kSeedDropCorrelation = std::numeric_limits<double>::infinity();
 
 }  // namespace uuvplan::ident

@@ -3,7 +3,7 @@
 // the limit would make the cast undefined behaviour (UBSan float-cast-overflow) and the
 // allocation that follows a std::bad_alloc or a hang. Readers bound their inputs first with
 // the key in the message (planner/io plausibility); this is the last line, for any path they
-// did not foresee (issue #15).
+// did not foresee.
 #pragma once
 
 #include <algorithm>
@@ -22,8 +22,8 @@ namespace uuvplan::model {
 template <typename Int = long>
 Int CheckedCount(double x, const char* what, double limit, const char* hint) {
   // Every integer up to 2^53 is a double: the comparison below is exact.
-  const double max_exact = std::min({limit, 9007199254740992.0,
-                                     static_cast<double>(std::numeric_limits<Int>::max())});
+  const double max_exact =
+      std::min({limit, 9007199254740992.0, static_cast<double>(std::numeric_limits<Int>::max())});
   const double n = std::ceil(x - 1e-9);
   if (!(n >= 0 && n <= max_exact)) {
     throw InputError(what, "needs " + Significant(x, 3) + " (at most " + Significant(max_exact, 3) +

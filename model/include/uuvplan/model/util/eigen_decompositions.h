@@ -1,5 +1,5 @@
 // The Eigen decompositions of dynamic double matrices, compiled once (model/src/
-// eigen_decompositions.cc) instead of in every file that uses one (issue #16: JacobiSVD alone
+// eigen_decompositions.cc) instead of in every file that uses one (JacobiSVD alone
 // cost ~10 s of compile time in each of least_squares.cc, closed_loop_iv.cc and
 // velocity_estimation.cc; docs/performance.md, "Compile time"). The precompiled header of every
 // library and program includes it (CMakeLists.txt, uuvplan_pch), so no source needs to; without

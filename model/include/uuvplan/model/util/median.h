@@ -1,6 +1,6 @@
 // Medians of records: the whole, or a long record's from evenly spread values. At most ~20,000
 // of them give a sampling interval's median well within 1% (the factor-2 and factor-4 tests
-// that use it), in 160 KB instead of 8 bytes a sample (a million-row log, issue #16).
+// that use it), in 160 KB instead of 8 bytes a sample (a million-row log).
 #pragma once
 
 #include <algorithm>

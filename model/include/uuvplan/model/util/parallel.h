@@ -1,7 +1,7 @@
 // Runs independent jobs on a few threads. Each job writes only its own slot of the caller's
 // output, so the result does not depend on the number of threads or their timing. Shared by
 // identification, Monte Carlo and diagnosis (ident) and the loop's candidate evaluation
-// (planner): one pattern for every `--threads` option (issue #16).
+// (planner): one pattern for every `--threads` option.
 #pragma once
 
 #include <algorithm>

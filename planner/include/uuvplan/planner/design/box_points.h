@@ -1,4 +1,4 @@
-// Points of the a priori box as vehicles (issue #13, the three-valued pool verdict): a vehicle
+// Points of the a priori box as vehicles (the three-valued pool verdict): a vehicle
 // whose a priori box on a DOF is one point — its inertia bounds and drag prior shrunk to that
 // point (added-mass fraction m/rigid − 1 both ways, drag k, kq with rel_sigma 0) — so the
 // planner's own schedule and checks, unchanged, say whether a pool hosts that vehicle. The
@@ -6,7 +6,6 @@
 // judges the true vehicle (a degenerate box at the truth).
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "uuvplan/model/dof.h"
@@ -16,12 +15,13 @@
 
 namespace uuvplan::planner {
 
-/// One point of a DOF's a priori box: the inertia and the drag (k, kq).
+/// One point of a DOF's a priori box: the inertia and the drag (k, kq), a multiple of the
+/// drag prior (text::BoxPointLabel words it).
 struct BoxPoint {
-  double m = 0.0;   ///< kg (kg·m²)
-  double k = 0.0;   ///< N·s/m (N·m·s/rad)
-  double kq = 0.0;  ///< N·s²/m² (N·m·s²/rad²)
-  std::string label;  ///< "m 495 kg, drag ×0.5 of the prior (k 1.2 N·s/m, kq 12 N·s²/m²)"
+  double m = 0.0;            ///< kg (kg·m²)
+  double k = 0.0;            ///< N·s/m (N·m·s/rad)
+  double kq = 0.0;           ///< N·s²/m² (N·m·s²/rad²)
+  double drag_factor = 1.0;  ///< k and kq / the prior's (NaN: a point not of the box)
 };
 
 /// The centre, then the four (m, drag) corners of the a priori box of `dof` (APrioriBox's

@@ -1,14 +1,14 @@
 // Optimal-design criteria on a Fisher information matrix (Walter & Pronzato, "Identification
-// of parametric models", ch. 6; seed 000 §III-B for D). Every criterion is written so that
+// of parametric models", ch. 6; ref 000 §III-B for D). Every criterion is written so that
 // larger is better and in logarithmic form:
 //
-//   D   log det M                                  (seed 000: J = -log det M minimised)
+//   D   log det M                                  (ref 000: J = -log det M minimised)
 //   Ds  log det (M_ss - M_sn M_nn⁻¹ M_ns)          interest s, nuisance n marginalised
 //   A   -log tr (C_ss),  C = M⁻¹                   (A_s: trace of the interest block)
 //   E   log λ_min (M_ss - M_sn M_nn⁻¹ M_ns)
 //
 // M is taken in relative units, M_rel = D·M·D with D = diag(|theta_i|) (|theta_i| = 0: unit
-// scale), so that the criteria weigh percentile errors (seed 000 §III-A: 100·σ/|θ|) and are
+// scale), so that the criteria weigh percentile errors (ref 000 §III-A: 100·σ/|θ|) and are
 // comparable between the points of the a priori box. The log form makes the box average the
 // "ED" criterion (expected log det) and does not change any argmax or maximin solution.
 //

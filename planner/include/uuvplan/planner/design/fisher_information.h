@@ -14,17 +14,19 @@
 // from the strictly discrete information by at most one sample.
 //
 // The trial's initial state is not known to the identification: its output error fits the
-// initial position (position sensor) and velocity of every trial with θ (seed 000 eqs. 16-19
+// initial position (position sensor) and velocity of every trial with θ (ref 000 eqs. 16-19
 // fit m·ξ0 + k·χ0 likewise). M is the information on θ with those two profiled out (the Schur
 // complement of the information of θ, χ0, ξ0), so that a steady run's constant position lag
 // behind its start, which a free χ0 absorbs, is not counted as information on m.
 #pragma once
 
 #include <Eigen/Dense>
+#include <map>
 #include <vector>
 
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/excitation.h"
+#include "uuvplan/model/multi_dof_model.h"
 #include "uuvplan/model/vehicle.h"
 
 namespace uuvplan::planner {
@@ -62,6 +64,16 @@ TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd&
                             const model::Excitation& input, const model::DofSensors& sensors,
                             double duration, double step_s, bool with_information,
                             bool start_known = false);
+
+/// The Fisher information on the global θ of a joint trial (model/multi_dof_model.h) from
+/// rest, of the sensors of each of the model's DOFs (sensors.at(dof): its position state — in
+/// the planar model the pool-frame x, y and the heading ψ — and its body-frame velocity), as
+/// SimulateTrial's M with the initial state known (`start_known`): one simulation with the
+/// forward sensitivities. Throws std::invalid_argument as SimulateTrial.
+Eigen::MatrixXd JointInformation(const model::MultiDofModel& model, const Eigen::VectorXd& theta,
+                                 const model::JointConditions& conditions,
+                                 const std::map<model::Dof, model::DofSensors>& sensors,
+                                 double duration, double step_s);
 
 /// The position of the trial on a fine grid (every `step_s`) for constraint checks:
 /// returns the extremes over [0, duration] of every simulated step, not only sensor samples.

@@ -1,4 +1,4 @@
-// The information a schedule carries, for people checking a plan (issue #18 item 7): per trial
+// The information a schedule carries, for people checking a plan: per trial
 // and per DOF for the whole schedule, the Fisher information matrix (fisher_information.h) at
 // the nominal parameters (the centre of the a priori box, parameter_box.h), the D, A and E
 // criteria on its relative form (criteria.h), the predicted 1σ per parameter and the condition
@@ -34,7 +34,7 @@ struct InformationSummary {
 };
 
 struct ScheduleInformation {
-  std::vector<InformationSummary> trials;  ///< one per schedule trial, in schedule order
+  std::vector<InformationSummary> trials;         ///< one per schedule trial, in schedule order
   std::map<model::Dof, InformationSummary> dofs;  ///< each DOF's trials together
 };
 

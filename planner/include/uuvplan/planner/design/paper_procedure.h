@@ -1,6 +1,6 @@
-// The identification procedure of seed 000 as its authors ran it on ROMEO (§III–IV), written
+// The identification procedure of ref 000 as its authors ran it on ROMEO (§III–IV), written
 // as trials of the virtual pool: the yardstick the design–identify loop (design_loop.h) is
-// compared with (issue #5), run with the same sensors, truth, pool, pauses and Identify.
+// compared with, run with the same sensors, truth, pool, pauses and Identify.
 //
 // Per DOF, in the seed's order (§III: drag tests first, then a sinusoid for the inertia):
 //  1. Steady-state runs (§III-A, eqs. 7–10) in every thrust mapping of the DOF and in each
@@ -33,8 +33,8 @@
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/truth.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/loop/design_loop.h"
-#include "uuvplan/planner/design/dof_context.h"
 #include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::planner {
@@ -45,7 +45,7 @@ struct PaperProcedureOptions {
   /// Steady levels per mapping and direction. CHOSEN 3: the seed says "different constant
   /// applied thrusts" and Fig. 5 shows a handful per weight.
   int levels = 3;
-  /// Largest a priori steady speed, seed 000 §IV-D and Fig. 11.
+  /// Largest a priori steady speed, ref 000 §IV-D and Fig. 11.
   double max_translation_speed = 0.35;           ///< m/s
   double max_rotation_rate = 20.0 * M_PI / 180;  ///< rad/s
   /// Settling: 4 time constants leave 1.8% of a first-order step (the 2% band).
@@ -55,7 +55,7 @@ struct PaperProcedureOptions {
   double hold_s = 20.0;
   /// A leg stops when its a priori travel from rest reaches this fraction of the free travel.
   double travel_fraction = 0.9;
-  /// Heave weight tests: ballast steps 0..n-1 (seed 000 §IV-D: five experiments, 0-4).
+  /// Heave weight tests: ballast steps 0..n-1 (ref 000 §IV-D: five experiments, 0-4).
   int heave_experiments = 5;
   /// Longest sine trial (s). CHOSEN 120 s, the planner's own limit (SineDesignOptions), so that
   /// the comparison is not about trial length; rotations are not limited by the pool.
@@ -64,7 +64,7 @@ struct PaperProcedureOptions {
   PlannerOptions planner;
   std::uint64_t seed = 1;
   double command_rate_hz = 20.0;
-  /// Seed 000's identification as its authors ran it: its model selection too (insignificant
+  /// Ref 000's identification as its authors ran it: its model selection too (insignificant
   /// parameters dropped whatever their correlation).
   ident::IdentifyOptions identify = [] {
     ident::IdentifyOptions o;
@@ -88,7 +88,7 @@ struct PaperProcedureResult {
   std::vector<std::string> notes;
 };
 
-/// The trials of seed 000's procedure for one DOF (see above); notes say what was chosen.
+/// The trials of ref 000's procedure for one DOF (see above); notes say what was chosen.
 std::vector<model::TrialDesign> PaperProcedureDesigns(const model::Vehicle& vehicle,
                                                       const model::Pool& pool, model::Dof dof,
                                                       const PaperProcedureOptions& options,

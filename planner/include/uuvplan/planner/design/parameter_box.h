@@ -1,4 +1,4 @@
-// The a priori uncertainty of a DOF's parameters as a box (seed 000 §III-B): the inertia between
+// The a priori uncertainty of a DOF's parameters as a box (ref 000 §III-B): the inertia between
 // its added-mass bounds, the drag within its relative uncertainty, the installation coefficients
 // of non-open-water directions within their plausible range. Robust designs optimise the worst
 // case or the average over the box's vertices and centre; hard constraints are checked on a
@@ -9,11 +9,13 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "uuvplan/model/dof.h"
+#include "uuvplan/model/multi_dof_model.h"
 #include "uuvplan/model/vehicle.h"
 
 namespace uuvplan::planner {
@@ -40,6 +42,8 @@ struct ParameterBox {
   std::vector<ParameterValues> CheckPoints(int per_axis) const;
   /// Values at given factors (axis order), other parameters nominal.
   ParameterValues At(const std::vector<double>& factors) const;
+  /// `n` points drawn uniformly from the box, every axis in turn per point (seeded).
+  std::vector<ParameterValues> Sample(int n, std::uint64_t seed) const;
   /// Nominal value of a parameter, or `fallback`.
   double Nominal(const std::string& name, double fallback = 0.0) const;
 };
@@ -47,10 +51,10 @@ struct ParameterBox {
 struct BoxOptions {
   /// Half-width of the drag axis in units of the prior's rel_sigma: k, kq × [1 - n·rs, 1 + n·rs].
   double drag_sigmas = 1.0;
-  /// Nominal installation coefficient of a non-open-water direction. CHOSEN: seed 000 Tables
+  /// Nominal installation coefficient of a non-open-water direction. CHOSEN: ref 000 Tables
   /// II-IV report 0.56-0.89; 0.8 is the middle of that range rounded up.
   double eta_nominal = 0.8;
-  /// Range of eta in constraint checks (seed 000: 0.56-0.89; 1 = open water).
+  /// Range of eta in constraint checks (ref 000: 0.56-0.89; 1 = open water).
   std::array<double, 2> eta_range = {0.5, 1.0};
   /// Relative uncertainty assumed when a DOF has no a priori drag (model::DragOf's fallback).
   double fallback_drag_rel_sigma = 0.5;
@@ -63,6 +67,13 @@ struct BoxOptions {
 ParameterBox APrioriBox(const model::Vehicle& vehicle, model::Dof dof,
                         const std::vector<std::string>& parameter_names, const BoxOptions& options,
                         std::vector<std::string>* notes);
+
+/// The a priori box of a multi-DOF model's global θ: the product of its DOFs' boxes above (each
+/// over the DOF's parameters the model does not tie), named as the model names them ("sway.k";
+/// axes "sway.m", "sway.drag"). Only the inertia axes are design axes: the criterion at their
+/// 2^n vertices and the centre, the drags varying in the check points.
+ParameterBox JointAPrioriBox(const model::Vehicle& vehicle, const model::MultiDofModel& model,
+                             const BoxOptions& options, std::vector<std::string>* notes);
 
 /// A box about current estimates (for the next trial of a sequential design): m and the drag
 /// group each ± `n_sigma`·σ (relative σ capped at 0.9), eta within the a priori range.

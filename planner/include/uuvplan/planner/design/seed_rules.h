@@ -1,16 +1,16 @@
-// The closed-form design rules of seed 000 §III-B: the linearised time constant and the
+// The closed-form design rules of ref 000 §III-B: the linearised time constant and the
 // d-optimal single-sine frequency of a first-order system. Starting points for the optimiser.
 #pragma once
 
 namespace uuvplan::planner {
 
-/// Seed 000 eq. 13: linearised drag k_L = k + 2·kq·|xi*| about the regime speed xi*.
+/// Ref 000 eq. 13: linearised drag k_L = k + 2·kq·|xi*| about the regime speed xi*.
 double LinearisedDrag(double k, double kq, double regime_speed);
 
-/// Seed 000 eq. 13: time constant t_c = m / k_L (s).
+/// Ref 000 eq. 13: time constant t_c = m / k_L (s).
 double TimeConstant(double m, double k_linearised);
 
-/// Seed 000 eq. 14 (Goodwin & Payne): d-optimal sine frequency of a first-order system,
+/// Ref 000 eq. 14 (Goodwin & Payne): d-optimal sine frequency of a first-order system,
 /// omega_opt = 1 / (sqrt(3)·t_c) (rad/s).
 double DOptimalSineFrequency(double time_constant);
 

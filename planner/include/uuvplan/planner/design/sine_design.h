@@ -1,8 +1,8 @@
-// Robust optimal sinusoid trial (seed 000 eqs. 13-15): phi_n(t) = offset + amplitude·sin(ω·t)
+// Robust optimal sinusoid trial (ref 000 eqs. 13-15): phi_n(t) = offset + amplitude·sin(ω·t)
 // in one mapping and one direction, from rest, for a duration T, maximising the robust
 // criterion of the FULL nonlinear model's information over the a priori box.
 //
-// Seed 000 picks ω_opt = 1/(√3·t_c) (eq. 14, Goodwin & Payne for a linear first-order system
+// Ref 000 picks ω_opt = 1/(√3·t_c) (eq. 14, Goodwin & Payne for a linear first-order system
 // with the velocity measured) at a guessed t_c = m/k_L; that is the starting point here, not the
 // answer: the drag is quadratic, only the position may be measured, the pool is finite and m is
 // unknown within its bounds.
@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::planner {
@@ -36,7 +36,7 @@ struct SineDesignOptions {
   /// Longest sine trial (s), within the context's max_trial_duration_s. CHOSEN 120 s: seed
   /// 000 Fig. 14's sine trial lasts about 100 s. Rotations (no pool limit) run this long.
   double max_duration_s = 120.0;
-  /// At least this many periods in the trial. CHOSEN 2: seed 000 §IV-D excites "a couple of
+  /// At least this many periods in the trial. CHOSEN 2: ref 000 §IV-D excites "a couple of
   /// sinusoidal periods". With 1 the optimum on ROMEO surge degenerates into a single slow
   /// swell whose information comes mostly from the start from rest.
   double min_periods = 2.0;
@@ -44,10 +44,10 @@ struct SineDesignOptions {
   /// reversal). CHOSEN 0.5: below it the trial is a steady run with a ripple, which the steady
   /// design already covers; under the standard model most inertia information comes from the
   /// start from rest, and without this bound a schedule whose steady runs are already planned
-  /// drives the amplitude to zero (docs/planning.md). Seed 000's designs: 25/(35 - φ_min) and
+  /// drives the amplitude to zero (docs/planning.md). Ref 000's designs: 25/(35 - φ_min) and
   /// 4/(5 - φ_min), both above 0.7.
   double min_amplitude_fraction = 0.5;
-  /// Only directions where the mapping works in open water (eta = 1 known, seed 000 §IV-D): in
+  /// Only directions where the mapping works in open water (eta = 1 known, ref 000 §IV-D): in
   /// another direction eta scales the force and, without prior information on it, m cannot be
   /// told from eta·phi (the information is singular).
   bool open_water_only = true;
@@ -64,7 +64,7 @@ struct SineDesignOptions {
   /// the square one way (family `piecewise`, in the single sine's mapping and direction:
   /// switched_design.h OneWayPairs); the robust criterion chooses (docs/planning.md §1b).
   /// Off by default: on, ROMEO's heave loop misses m by 6σ — its short one-way trials leave an
-  /// installation coefficient held at 1 by identification (docs/planning.md §1b, issue #17).
+  /// installation coefficient held at 1 by identification (docs/planning.md §1b).
   bool one_way_families = false;
 
   bool IsValid(std::string* error) const;
@@ -88,18 +88,18 @@ struct SineDesignResult {
 /// Designs the sine trial of ctx's DOF. `prior` (per design point, absolute units, may be
 /// empty) is added to the trial's information: e.g. the steady runs of the same schedule, so
 /// the sine is designed for what they leave unknown. `id` names the trial.
-SineDesignResult DesignSine(const DofContext& ctx, const SineDesignOptions& options,
+SineDesignResult DesignSine(const DofPlanningProblem& ctx, const SineDesignOptions& options,
                             const std::vector<Eigen::MatrixXd>& prior, const std::string& id);
 
 /// The frequency range [ω_lo, ω_hi] of the design variable v for a force level: ref 000
 /// eq. 14's ω_opt over the box, from a quarter of the least to 4 times the largest; ω_lo
 /// raised so that `min_periods` periods fit in `duration` s (ω_hi then at least 2·ω_lo).
-std::array<double, 2> SineFrequencyRange(const DofContext& ctx, double force_abs,
+std::array<double, 2> SineFrequencyRange(const DofPlanningProblem& ctx, double force_abs,
                                          double min_periods, double duration);
 
 /// The longest duration (<= t_max) for which a trial keeps its travel over the box inside
 /// ctx.available(); t_max when the pool does not limit it (rotations).
-double LongestFittingDuration(const DofContext& ctx, const model::TrialDesign& design,
+double LongestFittingDuration(const DofPlanningProblem& ctx, const model::TrialDesign& design,
                               double t_max);
 
 }  // namespace uuvplan::planner

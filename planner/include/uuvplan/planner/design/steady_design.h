@@ -1,5 +1,5 @@
-// Steady-state runs for the drag and installation coefficients (seed 000 §III-A, eqs. 7-10),
-// and their packing into pool trials as back-and-forth legs (seed 000 Table I).
+// Steady-state runs for the drag and installation coefficients (ref 000 §III-A, eqs. 7-10),
+// and their packing into pool trials as back-and-forth legs (ref 000 Table I).
 //
 // A leg holds a constant nominal force phi in one mapping until the speed has settled
 // (|xi - xi*| <= tol·|xi*| at every point of the a priori box, xi* the steady speed of eq. 7)
@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "uuvplan/planner/design/dof_context.h"
-#include "uuvplan/planner/schedule.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/design/sine_design.h"
+#include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::planner {
 
@@ -38,7 +38,7 @@ struct SteadyDesignOptions {
   /// Settled: |xi - xi*| <= settle_tolerance·|xi*|. CHOSEN 2%, the usual settling band.
   double settle_tolerance = 0.02;
   double min_hold_s = 10.0;  ///< CHOSEN: a few sonar samples per metre at pool speeds
-  /// Hold long enough for σ(xi*)/xi* <= this. Seed 000 §III: "lower than 3%"; CHOSEN 2%.
+  /// Hold long enough for σ(xi*)/xi* <= this. Ref 000 §III: "lower than 3%"; CHOSEN 2%.
   double speed_rel_sigma = 0.02;
   int max_legs_per_trial = 4;
 
@@ -83,16 +83,17 @@ struct SteadyCandidates {
   std::string infeasible;  ///< why some directions cannot be run, or empty
   std::vector<std::string> notes;
 };
-SteadyCandidates MakeSteadyCandidates(const DofContext& ctx, const SteadyDesignOptions& options);
+SteadyCandidates MakeSteadyCandidates(const DofPlanningProblem& ctx,
+                                      const SteadyDesignOptions& options);
 
 /// Designs the steady runs of ctx's DOF; trial ids are `id_prefix` + "-1", "-2", ...
-SteadyDesignResult DesignSteady(const DofContext& ctx, const SteadyDesignOptions& options,
+SteadyDesignResult DesignSteady(const DofPlanningProblem& ctx, const SteadyDesignOptions& options,
                                 const std::vector<Eigen::MatrixXd>& prior,
                                 const std::string& id_prefix);
 
 /// The approximate design problem of step 2 for candidate informations M[c][j] (absolute),
 /// N legs: the same problem for either backend (tests cross-check NLopt and Ipopt on it).
-DesignProblem SteadyWeightsProblem(const DofContext& ctx,
+DesignProblem SteadyWeightsProblem(const DofPlanningProblem& ctx,
                                    const std::vector<std::vector<Eigen::MatrixXd>>& M, int N,
                                    const std::vector<Eigen::MatrixXd>& prior, Criterion criterion);
 

@@ -1,8 +1,8 @@
-// Robust optimal mapping-switched trials (issue #17): the inertia trial in the input families
+// Robust optimal mapping-switched trials: the inertia trial in the input families
 // beyond the single-mapping sine, and the choice among them by the robust criterion.
 //
 // A switched trial pushes each sign of phi_n with the mapping that works in open water for it
-// (seed 000 Table I: surge-front forward, surge-rear backward; yaw-fl-rr clockwise, yaw-fr-rl
+// (ref 000 Table I: surge-front forward, surge-rear backward; yaw-fl-rr clockwise, yaw-fr-rl
 // counter-clockwise; sway-left / sway-right), so the vehicle oscillates about its start instead
 // of crossing the pool, with no propeller ever reversing. Families (model::InputFamily):
 //
@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "uuvplan/model/trial_design.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/design/sine_design.h"
 
 namespace uuvplan::planner {
@@ -43,7 +43,7 @@ struct SwitchPair {
   /// halves of the square (and the whole wave) within its force range.
   int one_way = 0;
 };
-std::vector<SwitchPair> SwitchPairs(const DofContext& ctx);
+std::vector<SwitchPair> SwitchPairs(const DofPlanningProblem& ctx);
 
 /// What the one-way families take from the single sine (DesignInertiaTrial): its duration
 /// (s; it fits the vehicle's drift to the pool), mapping and direction. Empty: every
@@ -56,22 +56,22 @@ struct OneWayHint {
 /// Every mapping and direction of ctx's DOF in open water (eta known) whose force range is
 /// feasible, as one-way "pairs" (restricted to the hint's mapping and direction where it gives
 /// them): the families of a DOF that has no switch pair.
-std::vector<SwitchPair> OneWayPairs(const DofContext& ctx, const OneWayHint& hint = {});
+std::vector<SwitchPair> OneWayPairs(const DofPlanningProblem& ctx, const OneWayHint& hint = {});
 
 /// The best trial of one switched family over every switch pair of ctx's DOF (status kFailed
 /// with a message when the DOF has no pair or no feasible design). A DOF without a switch pair
 /// gets, when options.one_way_families, the square one way (family `piecewise`: two levels in
 /// one direction) over OneWayPairs(ctx, hint), at the fixed duration, else at the hint's, else
 /// the longest allowed.
-SineDesignResult DesignSwitched(const DofContext& ctx, model::InputFamily family,
+SineDesignResult DesignSwitched(const DofPlanningProblem& ctx, model::InputFamily family,
                                 const SineDesignOptions& options,
                                 const std::vector<Eigen::MatrixXd>& prior, const std::string& id,
                                 const OneWayHint& hint = {});
 
-/// The inertia trial: the single-mapping sine (seed 000, the fallback) and every family of
+/// The inertia trial: the single-mapping sine (ref 000, the fallback) and every family of
 /// options.families, the one with the largest robust criterion that passes its checks. The
 /// notes say what each family reached.
-SineDesignResult DesignInertiaTrial(const DofContext& ctx, const SineDesignOptions& options,
+SineDesignResult DesignInertiaTrial(const DofPlanningProblem& ctx, const SineDesignOptions& options,
                                     const std::vector<Eigen::MatrixXd>& prior,
                                     const std::string& id);
 

@@ -1,7 +1,7 @@
-// The thruster constraints of a trial (seed 000 §III-B): every working thruster's force
+// The thruster constraints of a trial (ref 000 §III-B): every working thruster's force
 // tau_i = share_i·phi_n(t) keeps its sign and stays above the vehicle's min_thrust for the whole
 // trial (no propeller reversal, no dead band: Δφ <= φ̂ in eq. 15), and stays within what the
-// thruster gives over its command range (thruster models of seed 000 eq. 6 / seed 002 eq. 1).
+// thruster gives over its command range (thruster models of ref 000 eq. 6 / ref 002 eq. 1).
 // A thruster idle in a segment (share 0 in that segment's mapping) is not working there; a
 // thruster that works in several segments must push the same way in all of them.
 #pragma once

@@ -1,7 +1,7 @@
 // What a planned trial does over the a priori box, as time series for figures and run sheets:
 // the position of the centre vehicle and the envelope of the box's check grid (the extreme
-// vehicles the pool check simulates, dof_context.h), and each thruster's force
-// tau_i(t) = share_i·phi_n(t) of the mapping in force (seed 000 Table I).
+// vehicles the pool check simulates, dof_planning_problem.h), and each thruster's force
+// tau_i(t) = share_i·phi_n(t) of the mapping in force (ref 000 Table I).
 #pragma once
 
 #include <string>
@@ -10,7 +10,7 @@
 #include "uuvplan/model/pool.h"
 #include "uuvplan/model/trial_design.h"
 #include "uuvplan/planner/design/centred_travel.h"
-#include "uuvplan/planner/design/dof_context.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/schedule.h"
 
 namespace uuvplan::planner {
@@ -23,7 +23,8 @@ struct PositionEnvelope {
 };
 
 /// The position of `design` from rest over `ctx`'s check grid at `points` (>= 2) times.
-PositionEnvelope EnvelopeOf(const DofContext& ctx, const model::TrialDesign& design, int points);
+PositionEnvelope EnvelopeOf(const DofPlanningProblem& ctx, const model::TrialDesign& design,
+                            int points);
 
 struct ThrusterForces {
   std::vector<double> t;  ///< s
@@ -39,7 +40,7 @@ struct ThrusterForces {
 ThrusterForces ThrusterForcesOf(const model::Vehicle& vehicle, const model::TrialDesign& design,
                                 int points);
 
-/// The nominal input phi_n(t) and the mapping in force, sampled for replay (issue #17; the
+/// The nominal input phi_n(t) and the mapping in force, sampled for replay (the
 /// schedule's trials at 0.1 s or 40 samples per period of a wave's fastest component): a
 /// uniform grid at most `max_spacing_s` apart from 0 to the duration, plus both sides of every
 /// jump (1e-9·duration before it and at it), so that a zero-order hold or a linear

@@ -1,22 +1,22 @@
-// The iterative design–identify loop (issue #5): identify from every trial logged so far, turn
+// The iterative design–identify loop: identify from every trial logged so far, turn
 // the estimates and their covariance into the a priori knowledge of the next design (box =
 // estimates ± 2σ, prior information = covariance⁻¹), and plan the single most informative next
 // trial; on the virtual vehicle, run it and repeat until every parameter of interest has a
-// percentile error 100·σ/|θ| (seed 000 §III-A) below the target.
+// percentile error 100·σ/|θ| (ref 000 §III-A) below the target.
 //
 // Thin orchestration: identification is ident::Identify, the a priori schedule PlanSchedule,
 // the sequential design DesignNextTrial (schedule_planner.h), the trials
 // model::VirtualCampaignBuilder. Files: design_loop.cc (next, loop), next_trial_policy.cc (which
 // DOF, which trial), loop_progress.cc (parameters of interest and their errors).
 // What this file decides:
-//   - parameters of interest per DOF (contract issue #5: "m, k (or kq where significant) and
+//   - parameters of interest per DOF ("m, k (or kq where significant) and
 //     every η"): m; kq when the identification finds it significant (percentile error below
-//     51.02%, seed 000 §IV-D), else k; every installation coefficient of the DOF's mappings
+//     51.02%, ref 000 §IV-D), else k; every installation coefficient of the DOF's mappings
 //     (one per non-open-water direction, as the planner's model has them; one not estimated
 //     yet counts as an infinite error). bias and bias_step are nuisance.
 //   - which DOF next: the one whose worst parameter of interest is furthest above the target;
 //   - which trial: while the DOF's estimates are not usable yet (no trial, or m or the drag of
-//     interest insignificant) the next trial of its a priori schedule, in seed 000 order (steady
+//     interest insignificant) the next trial of its a priori schedule, in ref 000 order (steady
 //     runs, then the sine, §III); afterwards DesignNextTrial.
 //   - pool time: trial durations plus a pause between consecutive trials (PlannerOptions::
 //     pause_s), the accounting of PlanSchedule.
@@ -41,12 +41,12 @@
 
 namespace uuvplan::planner {
 
-/// Seed 000 §IV-D: a parameter whose percentile error exceeds 51.02% is, at 95% confidence,
+/// Ref 000 §IV-D: a parameter whose percentile error exceeds 51.02% is, at 95% confidence,
 /// statistically insignificant.
 inline constexpr double kInsignificantPercent = 51.02;
 
 /// The loop's identification: every parameter of the structure kept
-/// (IdentifyOptions::selection.prune_insignificant = false). Seed 000 §IV-D's model selection
+/// (IdentifyOptions::selection.prune_insignificant = false). Ref 000 §IV-D's model selection
 /// refits without the parameters it finds insignificant, and the σ of that refit are
 /// conditional on the dropped ones being exactly 0: on random vehicles a dropped bias or linear
 /// drag that is small but not zero moved m, the drag and η by 4–281 of their σ while the loop
@@ -63,11 +63,11 @@ struct DesignLoopOptions {
   /// first). Empty: NextStep takes the DOFs the campaign has fit trials of (every DOF the
   /// vehicle can plan when it has none); RunLoop the DOFs the truth has parameters for.
   std::vector<model::Dof> dofs;
-  /// Largest percentile error 100·σ/|θ| (%) of every parameter of interest. Issue #5: 5%
+  /// Largest percentile error 100·σ/|θ| (%) of every parameter of interest. 5%
   /// (the default the pool verdict judges at, ScheduleOptions::precision).
   double target_percent = kDefaultTargetPercent;
   /// Estimates are usable for the sequential design once m and the drag of interest have a
-  /// percentile error below this (%). CHOSEN: seed 000's significance limit; before, the box
+  /// percentile error below this (%). CHOSEN: ref 000's significance limit; before, the box
   /// estimates ± 2σ would be wider than the a priori one and the a priori schedule is better.
   double usable_percent = kInsignificantPercent;
   /// Level of the χ² consistency test of each new trial against the previous estimate
@@ -104,7 +104,7 @@ struct InterestParameter {
   bool estimated = false;  ///< identified with a finite σ (and not held: see `held`)
   double value = std::numeric_limits<double>::quiet_NaN();
   double sigma = std::numeric_limits<double>::quiet_NaN();
-  /// 100·σ/|value| (seed 000 §III-A); +inf when not estimated or held.
+  /// 100·σ/|value| (ref 000 §III-A); +inf when not estimated or held.
   double percent = std::numeric_limits<double>::infinity();
   /// An a priori fallback: the identification held it (or a parameter it depends on) at its a
   /// priori value or calls it not reliable (ill-conditioned least squares). Its value and σ are
@@ -114,7 +114,7 @@ struct InterestParameter {
   std::string flag;      ///< why it is held or non-physical ("" when neither)
 };
 
-/// The χ² test of a DOF's newest trial against the estimate before it (issue #13): over the
+/// The χ² test of a DOF's newest trial against the estimate before it: over the
 /// parameters estimated (and reliable) in both, Δθ = θ_new − θ_prev and
 /// χ² = Δθᵀ (C_prev + C_new)⁻¹ Δθ on n = |Δθ| degrees of freedom, consistent when its survival
 /// probability is at least the level. C_prev + C_new bounds the covariance of Δθ from above
@@ -130,7 +130,7 @@ struct ConsistencyTest {
   bool consistent = false;  ///< tested and p_value >= level
   std::string worst;        ///< the parameter that moved by most of its combined σ
   double worst_sigmas = std::numeric_limits<double>::quiet_NaN();
-  std::string text;         ///< one sentence for people
+  std::string text;  ///< one sentence for people
 };
 
 /// How far a DOF is from the target.
@@ -140,18 +140,18 @@ struct DofProgress {
   std::vector<InterestParameter> interest;
   std::string worst;  ///< name of the parameter with the largest percentile error
   double worst_percent = std::numeric_limits<double>::infinity();
-  bool usable = false;     ///< estimates good enough for the sequential design
-  bool precise = false;    ///< every parameter of interest below the target by its own σ
-  /// Convergence (issue #13) needs more than precision: every parameter of interest physical,
+  bool usable = false;   ///< estimates good enough for the sequential design
+  bool precise = false;  ///< every parameter of interest below the target by its own σ
+  /// Convergence needs more than precision: every parameter of interest physical,
   /// none held, the model validated and the newest trial consistent with the estimate before it.
   bool trusted = false;
-  bool converged = false;         ///< precise and trusted
-  ConsistencyTest consistency;    ///< the newest trial against the estimate before it
+  bool converged = false;           ///< precise and trusted
+  ConsistencyTest consistency;      ///< the newest trial against the estimate before it
   std::vector<std::string> doubts;  ///< why the estimates are not trusted (empty when trusted)
   /// Precise and consistent, yet non-physical or failing validation: more trials of this model
   /// cannot make it right, the loop refuses to converge on it (its reason; "" otherwise).
   std::string refusal;
-  std::string status;      ///< the identification's status and message for the DOF
+  std::string status;  ///< the identification's status and message for the DOF
 };
 
 /// The parameters of interest of `dof` for a vehicle (m; kq when it is estimated and
@@ -204,10 +204,10 @@ struct NextStepResult {
   ident::IdentifyResult estimates;      ///< of the campaign (no DOF when it has no fit trial)
   std::vector<DofProgress> progress;    ///< per DOF of interest, before the next trial
   model::Dof dof = model::Dof::kSurge;  ///< of the next trial
-  /// "a priori schedule" (seed 000 order) or "sequential design" (DesignNextTrial).
+  /// "a priori schedule" (ref 000 order) or "sequential design" (DesignNextTrial).
   std::string source;
   PlannedTrial trial;
-  PredictedPrecision predicted;  ///< predicted σ of the DOF's parameters after the trial
+  PredictedPrecision predicted;           ///< predicted σ of the DOF's parameters after the trial
   std::vector<CandidateGain> candidates;  ///< every DOF's candidate trial, in the order tried
   std::vector<std::string> notes;
 };
@@ -223,7 +223,7 @@ struct LoopOptions {
   std::uint64_t seed = 1;         ///< trial i draws from model::StreamSeed(seed, i)
   double command_rate_hz = 20.0;  ///< virtual pool's command rate (VirtualPoolOptions)
   /// A design that already ran this many times without new information
-  /// (DesignLoopOptions::min_information_ratio) is not run again: its DOF is stuck. Issue #13:
+  /// (DesignLoopOptions::min_information_ratio) is not run again: its DOF is stuck:
   /// never more than twice.
   int max_repeats = 2;
   /// Consecutive failed consistency tests of a DOF before the loop refuses it. CHOSEN 3: one
@@ -240,15 +240,15 @@ struct LoopIteration {
   model::Dof dof = model::Dof::kSurge;
   std::string source;  ///< see NextStepResult::source
   PlannedTrial trial;
-  PredictedPrecision predicted;  ///< what the design expected after the trial
+  PredictedPrecision predicted;           ///< what the design expected after the trial
   std::vector<CandidateGain> candidates;  ///< the gain of every DOF's candidate trial
   /// Per parameter of the trial's DOF the design predicted σ for: [predicted at the estimates
   /// before the trial, achieved] σ after the trial (achieved NaN when not estimated).
   std::map<std::string, std::array<double, 2>> sigma;
   PredictedPrecision at_estimates;  ///< the trial's predicted σ at the estimates before it
-  bool new_information = true;  ///< some parameter of interest gained information (see above)
-  double start = 0.0;            ///< campaign clock at the trial's start (s)
-  double pool_time = 0.0;        ///< pool time so far, this trial included (s)
+  bool new_information = true;      ///< some parameter of interest gained information (see above)
+  double start = 0.0;               ///< campaign clock at the trial's start (s)
+  double pool_time = 0.0;           ///< pool time so far, this trial included (s)
   /// Estimates of every identified DOF after this trial (theta layout of each DOF).
   std::map<model::Dof, std::vector<ident::ParameterEstimate>> params;
   std::vector<DofProgress> progress;  ///< after this trial
@@ -268,6 +268,9 @@ std::string_view LoopStatusName(LoopStatus s);
 struct LoopResult {
   LoopStatus status = LoopStatus::kInfeasible;
   std::string message;
+  /// The DOFs hosted for part of the a priori box that the loop left stuck: it met a vehicle
+  /// outside the hostable part (ReadLoopEnd, pool_verdict.h; then status kInfeasible).
+  std::vector<model::Dof> outside_part;
   bool converged = false;
   std::vector<LoopIteration> iterations;
   std::vector<DofProgress> progress;           ///< final
@@ -290,7 +293,7 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
 bool SameDesign(const model::TrialDesign& a, const model::TrialDesign& b);
 
 /// The largest number of runs of one design (SameDesign) that brought no new information
-/// (LoopIteration::new_information) in `iterations`, over every design. Issue #13: at most
+/// (LoopIteration::new_information) in `iterations`, over every design. At most
 /// LoopOptions::max_repeats (2).
 int MostUninformativeRepeats(const std::vector<LoopIteration>& iterations);
 

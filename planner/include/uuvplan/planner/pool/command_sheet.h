@@ -1,6 +1,6 @@
-// What the pool team loads into the vehicle and reads at the pool side (issue #18 item 3): for
+// What the pool team loads into the vehicle and reads at the pool side: for
 // every trial of a schedule, each thruster's command against time — the trial's nominal force
-// φ_n(t) shared by its mapping, τ_i = share_i·φ_n (seed 000 Table I), turned into the
+// φ_n(t) shared by its mapping, τ_i = share_i·φ_n (ref 000 Table I), turned into the
 // thruster's command units by the inverse of its thrust model (model::ThrustModel::Command) —
 // and the expected position (the nominal vehicle, the centre of the a priori box); and the run
 // sheet: where to start, which way to head, how long, how far the vehicle is expected to go
@@ -50,7 +50,7 @@ struct TrialCommands {
 struct CommandSheet {
   std::vector<std::string> thrusters;  ///< vehicle order
   double rate_hz = 0.0;
-  std::vector<TrialCommands> trials;   ///< schedule order
+  std::vector<TrialCommands> trials;  ///< schedule order
 };
 
 struct CommandSheetOptions {

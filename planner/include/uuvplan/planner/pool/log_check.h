@@ -1,4 +1,4 @@
-// Is a logged trial the trial that was planned (`uuvplan log --plan`, issue #18 item 4)? The
+// Is a logged trial the trial that was planned (`uuvplan log --plan`)? The
 // log's nominal force column is what the vehicle was commanded, so it must follow the design's
 // φ_n(t) (trial_design.h) on the design's DOF, for about the design's duration.
 #pragma once

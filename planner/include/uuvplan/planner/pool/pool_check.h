@@ -1,5 +1,5 @@
 // Can a pool host a schedule (contract §check-pool)? Every trial is checked against the hard
-// constraints by simulation over the a priori box (dof_context.h): no propeller reversal,
+// constraints by simulation over the a priori box (dof_planning_problem.h): no propeller reversal,
 // min_thrust, thruster limits, travel inside length/width/depth - 2·margin, trial duration.
 // The answer says which constraint fails and by how much, the smallest pool that hosts the
 // schedule, and — when the pool cannot host it — the best schedule that fits this pool and the

@@ -7,20 +7,20 @@
 // interest (its steady runs, its sine and the loop's families, schedule_planner.h), lets the
 // loop bring them to its target before its stuck rule stops it (ReachTarget, determinacy.h:
 // "to this precision", ScheduleOptions::precision, `--target`) and, for a
-// given plan, every trial of the plan passes the hard constraints (DofContext::Check: thrusters,
-// no reversal, free length/width/depth over the a priori box, tether turns, duration). Otherwise
-// the limit that stops it and the DOF's need: the free travel (m, or rad of a rotation) with
-// which it would be hosted, checked by planning it again in a pool that offers it.
-// `required` covers EVERY DOF asked for, planned or not: per axis the largest of every trial's
-// extent (planned and given) and every DOF's need, wall to wall (+ 2·margin); for rotations
-// the tether's turns.
+// given plan, every trial of the plan passes the hard constraints (DofPlanningProblem::Check:
+// thrusters, no reversal, free length/width/depth over the a priori box, tether turns, duration).
+// Otherwise the limit that stops it and the DOF's need: the free travel (m, or rad of a rotation)
+// with which it would be hosted, checked by planning it again in a pool that offers it. `required`
+// covers EVERY DOF asked for, planned or not: per axis the largest of every trial's extent (planned
+// and given) and every DOF's need, wall to wall (+ 2·margin); for rotations the tether's turns.
 //
-// Three-valued (issue #13): the schedule is robust, planned for every vehicle of the a priori
+// Three-valued: the schedule is robust, planned for every vehicle of the a priori
 // box. A DOF it cannot host over the whole box is planned again at the box's centre and at its
 // four (m, drag) corners (box_points.h): hosted at some of them, it is hosted for PART of the
 // box — the first trials decide, and `uuvplan loop` / `next` run there; at none, for none. A
 // loop run in a part pool that ends stuck on a part DOF has met a vehicle outside the hostable
-// part: ReadLoopEnd makes that the pool's answer (infeasible, exit 1) with that sentence.
+// part: ReadLoopEnd makes that the pool's answer (infeasible, exit 1). The verdict is data; its
+// sentences are the text layer's (text/verdict_text.h).
 #pragma once
 
 #include <limits>
@@ -43,8 +43,18 @@ namespace uuvplan::planner {
 /// reversal, the trial duration limit, information (trials fit but do not determine it), or
 /// the rotation-rate limit (a rotation's drag, too slow to reach the target: the loop's stuck
 /// rule names it, stuck_limit.cc).
-enum class PoolLimit { kNone, kLength, kWidth, kDepth, kTether, kThrust, kNoReversal, kDuration,
-                       kInformation, kRotationRate };
+enum class PoolLimit {
+  kNone,
+  kLength,
+  kWidth,
+  kDepth,
+  kTether,
+  kThrust,
+  kNoReversal,
+  kDuration,
+  kInformation,
+  kRotationRate
+};
 std::string_view PoolLimitName(PoolLimit limit);
 
 /// For how much of the a priori box the pool hosts a DOF (or every DOF asked for): every
@@ -62,7 +72,9 @@ struct DofVerdict {
   model::Dof dof = model::Dof::kSurge;
   bool hosted = false;
   PoolLimit limit = PoolLimit::kNone;
-  std::string reason;  ///< why not hosted (empty when hosted)
+  /// Why the planner's own schedule does not host it (DofPlan::message; empty when it does).
+  /// A given plan's failing trials are the verdict's `plan_checks` of this DOF.
+  std::string message;
   /// Largest travel span of the DOF's trials in this pool (planned and given), free travel:
   /// m for a translation, rad for a rotation.
   double extent = 0.0;
@@ -74,10 +86,15 @@ struct DofVerdict {
   /// least this pool's).
   double need_refuted = 0.0;
   bool need_searched = false;  ///< `need` is the smallest found (VerdictOptions::need_bisections)
+  /// Short of the target, and a pool offering `unlifted_travel` (free travel, m or rad) was
+  /// planned and does not lift it: the loop's stuck rule names what is left (`limit`: the
+  /// rotation rate of a rotation, no reversal of a translation).
+  bool unlifted = false;
+  double unlifted_travel = 0.0;
   /// The planner's own schedule is hosted here; only a given plan's trials fail (no larger
   /// pool is searched: `need` is the planner's extent, `extent` the plan's).
   bool only_plan_fails = false;
-  Determinacy determinacy;     ///< of the planner's own schedule in this pool
+  Determinacy determinacy;  ///< of the planner's own schedule in this pool
   /// Determined, but the loop's target is out of reach of its trials in this pool
   /// (TargetReach of the schedule: the loop would end stuck).
   bool below_target = false;
@@ -97,7 +114,7 @@ struct DofVerdict {
 /// fills the room it is given: a smaller pool may host it too, not searched).
 struct RequiredPool {
   double length = 0.0, width = 0.0, depth = 0.0;  ///< m, wall to wall (free + 2·margin)
-  double turns = 0.0;                              ///< full turns about roll, pitch or yaw
+  double turns = 0.0;                             ///< full turns about roll, pitch or yaw
   bool exists = true;  ///< false: some DOF is limited by something no pool size lifts
 };
 
@@ -110,7 +127,8 @@ struct PoolVerdict {
   RequiredPool required;
   bool plan_given = false;
   std::vector<TrialPoolCheck> plan_checks;  ///< the given plan's trials, checked in this pool
-  std::string sentence;                     ///< one line: hosted or not, and why
+  /// Why nothing was planned (ScheduleResult::message when it planned no DOF).
+  std::string unplanned;
 };
 
 /// CHOSEN 6 with a 5% tolerance: the bracket shrinks up to 64×, to 5% for a first guess up to
@@ -154,17 +172,14 @@ PoolVerdict JudgePool(const model::Vehicle& vehicle, const model::Pool& pool,
                       const ScheduleOptions& options, const Schedule* plan = nullptr,
                       const VerdictOptions& verdict = {});
 
-/// The verdict as readable lines (units on every number, free vs wall to wall said), the
-/// first being `sentence`; the same in every command.
-std::vector<std::string> VerdictLines(const PoolVerdict& verdict, const model::Pool& pool);
-
 /// Whether `uuvplan loop` (and `next`) may run trials: the pool hosts the DOFs for all or part
 /// of the box.
 inline bool LoopMayRun(const PoolVerdict& v) { return v.hostability != Hostability::kNone; }
 
 /// A loop's end read against the verdict it ran under: in a pool hosted for part of the box, a
 /// loop stuck with a part DOF short of the target has met a vehicle outside the hostable part —
-/// status kInfeasible (the pool cannot host this vehicle) with that sentence before the stop's.
+/// status kInfeasible (the pool cannot host this vehicle), those DOFs in
+/// `result->outside_part`.
 void ReadLoopEnd(const PoolVerdict& verdict, LoopResult* result);
 
 }  // namespace uuvplan::planner
