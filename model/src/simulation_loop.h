@@ -84,8 +84,10 @@ template <int kNx>
 // GCC cannot see that a DofModel of three states has a thruster lag (DofModel::has_lag), so
 // that the kernel writes every state's slope: its -Wmaybe-uninitialized on the stage arrays
 // below is a false positive.
+#if defined(__GNUC__) && !defined(__clang__)  // clang has no -Wmaybe-uninitialized
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 
 // One classical RK4 step on x: x += h/6·(k1 + 2k2 + 2k3 + k4), the input sampled at the
 // step's start, middle and end (in_a, in_m, in_e).
@@ -136,7 +138,9 @@ template <class System>
   for (int s = 0; s < nx; ++s) x[s] += (h / 6.0) * (k1[s] + 2 * k2[s] + 2 * k3[s] + k4[s]);
 }
 
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 // Hands the outputs due by time t (output_times[i] - shift <= t) to `visit` or stores them in
 // `out`; returns the index of the next output.
