@@ -8,6 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "derived_mapping_keys.h"
+#include "speed_limit_keys.h"
+#include "thruster_installation_yaml.h"
 #include "uuvplan/io/plausibility.h"
 #include "uuvplan/model/util/text.h"
 #include "vehicle_keys.h"
@@ -32,13 +35,13 @@ ThrustModel ParseThrust(const Value& v) {
   const Value kind = m.Required("model");
   if (Choice(kind, {"square", "poly2"}, "a thrust model") == 0) {
     // ref 000 eq. 6: tau = c·V|V|, c by sign of V.
-    m.AllowOnly({"model", "c_pos", "c_neg", "deduction"});
+    m.AllowOnly({"model", "c_pos", "c_neg", "deduction", "dead_band"});
     model.kind = ThrustModel::Kind::kSquare;
     model.c_pos = Positive(m.Required("c_pos"));
     model.c_neg = Positive(m.Required("c_neg"));
   } else {
     // ref 002 eq. 1: tau = a·V² + b·V for V >= 0, which must grow to give thrust at all.
-    m.AllowOnly({"model", "a", "b", "deduction"});
+    m.AllowOnly({"model", "a", "b", "deduction", "dead_band"});
     model.kind = ThrustModel::Kind::kPoly2;
     model.a = NonNegative(m.Required("a"));
     model.b = AnyNumber(m.Required("b"));
@@ -53,9 +56,12 @@ ThrustModel ParseThrust(const Value& v) {
   return model;
 }
 
-Thruster ParseThruster(const Value& v, const std::vector<Thruster>& previous, double mass) {
+Thruster ParseThruster(const Value& v, const std::vector<Thruster>& previous, double mass,
+                       const std::array<double, 3>& size) {
   const MapValue m(v, "a thruster {name, thrust, command}");
-  m.AllowOnly({"name", "thrust", "command"});
+  std::vector<std::string_view> keys = {"name", "thrust", "command"};
+  keys.insert(keys.end(), kThrusterInstallationKeys.begin(), kThrusterInstallationKeys.end());
+  m.AllowOnly(keys);
   Thruster t;
   const Value name = m.Required("name");
   t.name = Name(name, "a thruster name");
@@ -69,15 +75,17 @@ Thruster ParseThruster(const Value& v, const std::vector<Thruster>& previous, do
   if (!(range[0] < range[1])) command.Expected(expectation);
   t.command_min = range[0];
   t.command_max = range[1];
+  ParseThrusterInstallation(m, size, &t);
   CheckPlausibleThruster(v, t, mass);
   return t;
 }
 
-std::vector<Thruster> ParseThrusters(const Value& v, double mass) {
+std::vector<Thruster> ParseThrusters(const Value& v, double mass,
+                                     const std::array<double, 3>& size) {
   const std::string expectation = "a list of at least one thruster {name, thrust, command}";
   std::vector<Thruster> thrusters;
   for (const Value& item : List(v, expectation)) {
-    thrusters.push_back(ParseThruster(item, thrusters, mass));
+    thrusters.push_back(ParseThruster(item, thrusters, mass, size));
   }
   if (thrusters.empty()) v.Expected(expectation);
   return thrusters;
@@ -213,10 +221,12 @@ DofSensors ParseDofSensors(const Value& v, double size) {
 Vehicle ParseVehicle(const MapValue& root, bool truth) {
   if (truth) {
     root.AllowOnly({"name", "mass", "size", "inertia", "added_mass", "thrusters", "min_thrust",
-                    "mappings", "dofs", "sensors", "virtual_pool"});
+                    "mappings", "jet_clearance", "restoring", "max_translation_speed",
+                    "max_rotation_rate", "dofs", "sensors", "virtual_pool"});
   } else {
     root.AllowOnly({"name", "mass", "size", "inertia", "added_mass", "thrusters", "min_thrust",
-                    "mappings", "dofs", "sensors"});
+                    "mappings", "jet_clearance", "restoring", "max_translation_speed",
+                    "max_rotation_rate", "dofs", "sensors"});
   }
   Vehicle vehicle;
   vehicle.name = Name(root.Required("name"), "a vehicle name");
@@ -237,9 +247,14 @@ Vehicle ParseVehicle(const MapValue& root, bool truth) {
   if (const Value v = root.Optional("added_mass"); !v.absent()) {
     vehicle.added_mass = AddedMassBounds(v);
   }
-  vehicle.thrusters = ParseThrusters(root.Required("thrusters"), vehicle.mass);
+  vehicle.thrusters = ParseThrusters(root.Required("thrusters"), vehicle.mass, vehicle.size);
   if (const Value v = root.Optional("min_thrust"); !v.absent()) vehicle.min_thrust = NonNegative(v);
-  vehicle.mappings = ParseMappings(root.Required("mappings"), vehicle.thrusters);
+  vehicle.speed_limits = ParseSpeedLimits(root);
+  if (const Value v = root.Optional("mappings"); !v.absent()) {
+    vehicle.mappings = ParseMappings(v, vehicle.thrusters);
+  }
+  vehicle.mapping_derivation = ParseMappingDerivation(root);
+  AddDerivedMappings(root, &vehicle);
   if (const Value v = root.Optional("dofs"); !v.absent()) {
     const MapValue priors(v, "a map {<dof>: {drag, added_mass}}");
     for (const MapValue::Entry& e : priors.entries()) {

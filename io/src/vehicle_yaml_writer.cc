@@ -13,6 +13,8 @@
 #include <string>
 #include <utility>
 
+#include "speed_limit_keys.h"
+#include "thruster_installation_yaml.h"
 #include "uuvplan/io/files.h"
 #include "uuvplan/io/number_text.h"
 #include "uuvplan/io/vehicle_yaml.h"
@@ -81,8 +83,12 @@ void EmitThruster(YAML::Emitter& out, const Thruster& t) {
   if (t.model.deduction != 0.0) {
     out << YAML::Key << "deduction" << YAML::Value << FileNumber(t.model.deduction);
   }
+  if (t.model.dead_band != 0.0) {
+    out << YAML::Key << "dead_band" << YAML::Value << FileNumber(t.model.dead_band);
+  }
   out << YAML::EndMap << YAML::Key << "command" << YAML::Value;
   EmitPair(out, {t.command_min, t.command_max});
+  EmitThrusterInstallation(out, t);
   out << YAML::EndMap;
 }
 
@@ -213,6 +219,7 @@ void WriteVehicleYaml(const std::string& path, const Vehicle& v, const std::stri
   for (const auto& t : v.thrusters) EmitThruster(out, t);
   out << YAML::EndSeq;
   out << YAML::Key << "min_thrust" << YAML::Value << FileNumber(v.min_thrust);
+  EmitSpeedLimits(out, v.speed_limits);
   EmitMappings(out, v);
   EmitDofs(out, v);
   EmitPerDof(out, "sensors", v.sensors, [&out](const DofSensors& s) {

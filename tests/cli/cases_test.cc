@@ -29,7 +29,7 @@ std::string Case(const std::string& name, const std::string& file) {
 }
 
 TEST(Cases, EveryFileLoads) {
-  for (const char* name : {"romeo", "vsor", "uris"}) {
+  for (const char* name : {"romeo", "vsor", "uris", "bluerov2"}) {
     SCOPED_TRACE(name);
     EXPECT_NO_THROW(ReadVehicle(Case(name, "vehicle.yaml")));
     EXPECT_NO_THROW(ReadPool(Case(name, "pool.yaml")));
@@ -59,7 +59,16 @@ void ExpectSameVehicle(const Vehicle& a, const Vehicle& b) {
     EXPECT_EQ(x.model.deduction, y.model.deduction);
     EXPECT_EQ(x.command_min, y.command_min);
     EXPECT_EQ(x.command_max, y.command_max);
+    EXPECT_EQ(x.model.dead_band, y.model.dead_band);
+    EXPECT_EQ(x.reversible, y.reversible);
+    ASSERT_EQ(x.geometry.has_value(), y.geometry.has_value());
+    if (x.geometry) {
+      EXPECT_EQ(x.geometry->position, y.geometry->position);
+      EXPECT_EQ(x.geometry->direction, y.geometry->direction);
+    }
   }
+  EXPECT_EQ(a.mapping_derivation.jet_clearance, b.mapping_derivation.jet_clearance);
+  EXPECT_EQ(a.mapping_derivation.restoring, b.mapping_derivation.restoring);
   ASSERT_EQ(a.mappings.size(), b.mappings.size());
   for (std::size_t i = 0; i < a.mappings.size(); ++i) {
     EXPECT_EQ(a.mappings[i].name, b.mappings[i].name);
@@ -108,7 +117,7 @@ void ExpectSameVehicle(const Vehicle& a, const Vehicle& b) {
 
 // A truth file is the vehicle file plus the truth: the two must never drift apart.
 TEST(Cases, TruthFilesRepeatTheirVehicle) {
-  for (const char* name : {"romeo", "vsor", "uris"}) {
+  for (const char* name : {"romeo", "vsor", "uris", "bluerov2"}) {
     SCOPED_TRACE(name);
     const Vehicle v = ReadVehicle(Case(name, "vehicle.yaml"));
     ExpectSameVehicle(v, ReadTruth(Case(name, "truth.yaml")).vehicle);

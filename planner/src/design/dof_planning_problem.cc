@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "design/sensor_information.h"
+#include "design/speed_limit.h"
 #include "options_check.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
@@ -144,8 +145,7 @@ DofPlanningProblem::DofPlanningProblem(const model::Vehicle& vehicle, const mode
 
 ForceRange DofPlanningProblem::ForceRangeFor(int mapping, int sign) const {
   ForceRange r = DirectionForceRange(vehicle_, mapping, sign);
-  const double limit =
-      model::IsRotational(dof_) ? options_.max_rotation_rate : options_.max_translation_speed;
+  const double limit = SpeedLimitOf(vehicle_, dof_, options_);
   if (!r.feasible || !(limit > 0)) return r;
   // phi at which k·xi + kq·xi² = phi reaches the limit at the lowest drag of the box.
   const int ik = Index(model::param::kLinearDrag), iq = Index(model::param::kQuadraticDrag);
@@ -163,17 +163,8 @@ ForceRange DofPlanningProblem::ForceRangeFor(int mapping, int sign) const {
     r.max_abs = phi;
     if (!(r.max_abs > r.min_abs)) {
       r.feasible = false;
-      std::ostringstream s;
-      s << "mapping '" << vehicle_.mappings[mapping].name << "' "
-        << (sign > 0 ? "positive" : "negative") << ": min_thrust needs |phi| >= " << r.min_abs
-        << ", which drives " << model::DofName(dof_) << " beyond the speed limit " << limit
-        << (model::IsRotational(dof_) ? " rad/s (max_rotation_rate)"
-                                      : " m/s (max_translation_speed)")
-        << " at the lowest a priori drag (k = " << k_low << ", kq = " << kq_low
-        << "; the limit is reached at |phi| = " << phi
-        << "): give the vehicle file an a priori drag fit for " << model::DofName(dof_)
-        << " or a lower min_thrust";
-      r.reason = s.str();
+      r.reason = SpeedLimitRefusal(vehicle_.mappings[mapping].name, sign, dof_, r.min_abs, limit,
+                                   {k_low, kq_low, phi});
     }
   }
   return r;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "design/speed_limit.h"
 #include "loop/next_trial_policy.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/thrust_limits.h"
@@ -94,9 +95,9 @@ std::string StuckReason(Planner& planner, const model::Campaign& campaign,
     m << thrust << pool_note;
   } else if (model::IsRotational(dof)) {
     m << "rotation-rate limit — designs keep below "
-      << model::Significant(planner.options.schedule.planner.max_rotation_rate, 3)
-      << " rad/s, where the drag of interest hardly acts; a higher PlannerOptions::"
-         "max_rotation_rate (if the vehicle's tether and drag fit allow it) would lift it";
+      << model::Significant(SpeedLimitOf(planner.vehicle, dof, planner.options.schedule.planner), 3)
+      << " rad/s, where the drag of interest hardly acts; a higher max_rotation_rate in the "
+         "vehicle file (if the vehicle's tether and drag fit allow it) would lift it";
   } else {
     m << "no reversal — the planner's trials push one direction per mapping and never reverse a "
          "thruster within a trial, so the drag is seen over one speed range; trials that "

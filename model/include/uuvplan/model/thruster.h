@@ -4,7 +4,10 @@
 // Both may carry a thrust deduction t (ref 003): tau_a = (1 - t)·tau.
 #pragma once
 
+#include <optional>
 #include <string>
+
+#include "uuvplan/model/thruster_geometry.h"
 
 namespace uuvplan::model {
 
@@ -16,6 +19,9 @@ struct ThrustModel {
   double a = 1.0;          ///< poly2: N/V²
   double b = 0.0;          ///< poly2: N/V
   double deduction = 0.0;  ///< thrust deduction t in [0, 1) (ref 003)
+  /// Commands with |V| below it give no thrust (command units, >= 0). Stored: the simulation,
+  /// identification and planning of it are not implemented; Thrust() ignores it.
+  double dead_band = 0.0;
 
   /// Thrust (N) for a command V (command units, e.g. volts).
   double Thrust(double command) const;
@@ -29,6 +35,11 @@ struct Thruster {
   ThrustModel model;
   double command_min = -1.0;  ///< lowest command (e.g. V)
   double command_max = 1.0;   ///< highest command
+  /// Position and direction; absent when the vehicle file gives none (mappings from its table).
+  std::optional<ThrusterGeometry> geometry;
+  /// Built to run both ways in service (e.g. a T200). The papers' rule is false: a trial keeps
+  /// each thruster's sign (ref 000 §II-B).
+  bool reversible = false;
 
   /// Largest positive thrust over the command range (N, >= 0).
   double MaxForwardThrust() const;

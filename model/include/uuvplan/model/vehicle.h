@@ -10,6 +10,8 @@
 
 #include "uuvplan/model/dof.h"
 #include "uuvplan/model/mapping.h"
+#include "uuvplan/model/mapping_derivation_options.h"
+#include "uuvplan/model/speed_limits.h"
 #include "uuvplan/model/thruster.h"
 
 namespace uuvplan::model {
@@ -56,8 +58,11 @@ struct Vehicle {
   std::map<Dof, double> inertia;           ///< kg·m², rigid body, optional per rotational DOF
   std::array<double, 2> added_mass = {0.1, 1.0};  ///< default a priori bounds (fraction)
   std::vector<Thruster> thrusters;
-  double min_thrust = 0.0;  ///< N: smallest |tau| of a working thruster
-  std::vector<ThrustMapping> mappings;
+  double min_thrust = 0.0;   ///< N: smallest |tau| of a working thruster
+  SpeedLimits speed_limits;  ///< max_translation_speed, max_rotation_rate
+  std::vector<ThrustMapping>
+      mappings;  ///< the file's table, then those derived (derived_mappings.h)
+  MappingDerivationOptions mapping_derivation;  ///< jet_clearance, restoring
   std::map<Dof, DofPrior> priors;
   std::map<Dof, DofSensors> sensors;
   /// The model of each DOF whose parameters the file also gives (`dofs.<dof>.params`, effects
