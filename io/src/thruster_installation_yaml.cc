@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "uuvplan/io/number_text.h"
-#include "uuvplan/io/number_text.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::io {
