@@ -191,7 +191,8 @@ TEST(ReadVehicleTest, UnknownTopLevelKeyListsTheAllowedKeys) {
   EXPECT_THAT(ErrorOf([&] { ReadVehicle(dir.Path("vehicle.yaml")); }),
               HasSubstr(At("vehicle.yaml", line) +
                         " unknown key 'mas' (allowed: name, mass, size, inertia, added_mass, "
-                        "thrusters, min_thrust, mappings, dofs, sensors)"));
+                        "thrusters, min_thrust, mappings, jet_clearance, restoring, "
+                        "max_translation_speed, max_rotation_rate, dofs, sensors)"));
 }
 
 TEST(ReadVehicleTest, UnknownNestedKeyListsTheAllowedKeysOfItsModel) {
@@ -200,7 +201,7 @@ TEST(ReadVehicleTest, UnknownNestedKeyListsTheAllowedKeysOfItsModel) {
   EXPECT_THAT(ErrorOf([&] { ReadVehicle(dir.Path("vehicle.yaml")); }),
               HasSubstr(At("vehicle.yaml", line) +
                         " thrusters[0].thrust: unknown key 'cneg' (allowed: model, c_pos, c_neg, "
-                        "deduction)"));
+                        "deduction, dead_band)"));
 }
 
 TEST(ReadVehicleTest, Poly2CoefficientInSquareModel) {
