@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 
+#include "support/every_effect.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/simulator.h"
 
@@ -61,44 +62,12 @@ int main(int argc, char** argv) {
   v.mass = 450;
   v.mappings = {{"front", Dof::kSurge, {}, OpenWater::kPositive},
                 {"rear", Dof::kSurge, {}, OpenWater::kNegative}};
-  ModelStructure s;
-  s.dof = Dof::kSurge;
-  // Every effect of the table on (docs/performance.md).
-  s.parameters = {"k",
-                  "k_neg",
-                  "kq",
-                  "kq_neg",
-                  "bias",
-                  "bias_step",
-                  "eta.front.neg",
-                  "eta.rear.pos",
-                  "lag",
-                  "deadzone",
-                  "advance_loss",
-                  "coupling.vr",
-                  "coupling.rr",
-                  "sensor_delay",
-                  "drift",
-                  "thrust_exponent"};
-  s.settings["thrust_reference"] = 60.0;
+  // Every effect of the table on (docs/performance.md), coupled to the sway speed too.
+  ModelStructure s = uuvplan::testing::EveryEffectStructure(60.0);
+  s.parameters.push_back("coupling.vr");
   const DofModel model(v, s);
-  const std::map<std::string, double> named = {{"m", 890},
-                                               {"k", 46.9},
-                                               {"k_neg", 57.9},
-                                               {"kq", 306.2},
-                                               {"kq_neg", 331.4},
-                                               {"bias", 1.5},
-                                               {"bias_step", 0.7},
-                                               {"eta.front.neg", 0.89},
-                                               {"eta.rear.pos", 0.73},
-                                               {"advance_loss", 2.0},
-                                               {"coupling.vr", 100.0},
-                                               {"coupling.rr", 30.0},
-                                               {"drift", -2e-4},
-                                               {"lag", 0.4},
-                                               {"deadzone", 3.0},
-                                               {"sensor_delay", 0.3},
-                                               {"thrust_exponent", -0.3}};
+  std::map<std::string, double> named = uuvplan::testing::EveryEffectValues();
+  named["coupling.vr"] = 100.0;
   const Eigen::VectorXd theta = model.Theta(named);
   const double duration = 600.0, rate = 100.0;
   const auto sine = MakeSineExcitation(35.0, 25.0, 2 * M_PI / 26, 0, duration);

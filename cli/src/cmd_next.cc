@@ -23,6 +23,7 @@
 #include "uuvplan/io/next_json.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/loop/design_loop.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
@@ -60,6 +61,14 @@ void PrintNextTrial(const planner::NextStepResult& r, std::ostream& out) {
   }
 }
 
+// What `next` says before its message when it plans no trial.
+constexpr model::EnumNames<planner::NextStatus, 4> kNoTrialLeads{{{
+    {planner::NextStatus::kConverged, "No trial needed"},
+    {planner::NextStatus::kInfeasible, "No trial can be planned"},
+    {planner::NextStatus::kStuck, "No trial adds enough information"},
+    {planner::NextStatus::kRefused, "Convergence refused"},
+}}};
+
 // Why a candidate has no bottleneck parameter (CandidateGain::parameter empty).
 std::string NoBottleneck(const std::vector<planner::DofProgress>& progress, model::Dof dof) {
   for (const auto& p : progress) {
@@ -87,22 +96,10 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
   out << "Parameters of interest (m; kq where significant, else k; every η):\n";
   text::PrintProgress(r.progress, target, out);
   out << "\n";
-  switch (r.status) {
-    case planner::NextStatus::kTrial:
-      PrintNextTrial(r, out);
-      break;
-    case planner::NextStatus::kConverged:
-      out << "No trial needed: " << r.message << "\n";
-      break;
-    case planner::NextStatus::kInfeasible:
-      out << "No trial can be planned: " << r.message << "\n";
-      break;
-    case planner::NextStatus::kStuck:
-      out << "No trial adds enough information: " << r.message << "\n";
-      break;
-    case planner::NextStatus::kRefused:
-      out << "Convergence refused: " << r.message << "\n";
-      break;
+  if (r.status == planner::NextStatus::kTrial) {
+    PrintNextTrial(r, out);
+  } else {
+    out << kNoTrialLeads.Name(r.status) << ": " << r.message << "\n";
   }
   for (const auto& c : r.candidates) {
     if (c.parameter.empty()) {

@@ -128,10 +128,8 @@ ThrustMapping ParseMapping(const std::string& name, const Value& v,
   mapping.dof = DofValue(m.Required("dof"));
   mapping.shares = ParseShares(m.Required("shares"), thrusters);
   if (const Value ow = m.Optional("open_water"); !ow.absent()) {
-    constexpr OpenWater kValues[] = {OpenWater::kPositive, OpenWater::kNegative, OpenWater::kBoth,
-                                     OpenWater::kNone};
-    mapping.open_water = kValues[Choice(ow, {"positive", "negative", "both", "none"},
-                                        "the direction of open-water thrust")];
+    mapping.open_water =
+        EnumValue(ow, model::kOpenWaterNames, "the direction of open-water thrust");
   }
   return mapping;
 }

@@ -43,6 +43,24 @@ std::string VelocityPair(std::string_view q, Dof, const Vehicle&) {
              : "two velocity letters of u v w p q r (e.g. 'vr')";
 }
 
+// An entry: its contract name, the physics in one line, where it acts and its parameter
+// families (the families' details and how diagnosis proposes it are the caller's).
+EffectEntry Entry(std::string name, std::string physics, EffectSite site,
+                  std::vector<ParameterFamily> parameters) {
+  EffectEntry e;
+  e.name = std::move(name);
+  e.physics = std::move(physics);
+  e.site = site;
+  e.parameters = std::move(parameters);
+  return e;
+}
+
+// `p` as diagnosis's proposals: none when it adds no parameter.
+std::vector<Proposal> Proposals(const Proposal& p) {
+  if (p.start.empty()) return {};
+  return {p};
+}
+
 // One proposal adding parameter `name` at `start`, unless the structure has it.
 std::vector<Proposal> SingleIfAbsent(const ProposalEvidence& c, const char* name, double start) {
   if (c.Has(name)) return {};
@@ -54,12 +72,12 @@ std::vector<Proposal> SingleIfAbsent(const ProposalEvidence& c, const char* name
 // η < 1 (ref 000 eq. 3, Table I): the thrust of a mapping and direction that is not in open
 // water, one η per such direction present in the data.
 EffectEntry InstallationLoss() {
-  EffectEntry e;
-  e.name = "installation_loss";
-  e.physics = "η < 1: propeller–hull / propeller–propeller interaction for a mapping and direction";
-  e.site = EffectSite::kStandardTerm;
-  e.parameters = {{param::kEtaPrefix, "installation coefficient of <mapping>.<pos|neg>", "1", "1",
-                   1.0, 0.0, 2.0}};
+  EffectEntry e =
+      Entry("installation_loss",
+            "η < 1: propeller–hull / propeller–propeller interaction for a mapping and direction",
+            EffectSite::kStandardTerm,
+            {{param::kEtaPrefix, "installation coefficient of <mapping>.<pos|neg>", "1", "1", 1.0,
+              0.0, 2.0}});
   ParameterFamily& eta = e.parameters[0];
   eta.lower_open = true;
   eta.expected = "an installation coefficient in (0, 2]";
@@ -74,21 +92,20 @@ EffectEntry InstallationLoss() {
       const std::string name = EtaName(mapping, dir);
       if (!c.Has(name)) p.start.push_back({name, 1.0});
     }
-    return p.start.empty() ? std::vector<Proposal>{} : std::vector<Proposal>{p};
+    return Proposals(p);
   };
   return e;
 }
 
 // Drag differs with the direction of motion: (k, kq) for ξ ≥ 0, (k_neg, kq_neg) for ξ < 0.
 EffectEntry AsymmetricDrag() {
-  EffectEntry e;
-  e.name = "asymmetric_drag";
-  e.physics = "drag differs between positive and negative motion (k±, kq±)";
-  e.site = EffectSite::kStandardTerm;
-  e.parameters = {{param::kLinearDragNeg, "linear drag for negative motion", "N·s/m", "N·m·s/rad",
-                   0.0, 0.0, kInf},
-                  {param::kQuadraticDragNeg, "quadratic drag for negative motion", "N·s²/m²",
-                   "N·m·s²/rad²", 0.0, 0.0, kInf}};
+  EffectEntry e =
+      Entry("asymmetric_drag", "drag differs between positive and negative motion (k±, kq±)",
+            EffectSite::kStandardTerm,
+            {{param::kLinearDragNeg, "linear drag for negative motion", "N·s/m", "N·m·s/rad", 0.0,
+              0.0, kInf},
+             {param::kQuadraticDragNeg, "quadratic drag for negative motion", "N·s²/m²",
+              "N·m·s²/rad²", 0.0, 0.0, kInf}});
   e.parameters[0].defaults_to = param::kLinearDrag;  // symmetric unless given
   e.parameters[1].defaults_to = param::kQuadraticDrag;
   e.propose = [](const ProposalEvidence& c) {
@@ -104,18 +121,17 @@ EffectEntry AsymmetricDrag() {
       p.null[negative] = c.Value(positive, 0.0);
       p.start.push_back({negative, p.null[negative]});
     }
-    return p.start.empty() ? std::vector<Proposal>{} : std::vector<Proposal>{p};
+    return Proposals(p);
   };
   return e;
 }
 
 // T·dφ_a/dt = u − φ_a: the thrust follows the command through a first-order lag.
 EffectEntry ThrusterLag() {
-  EffectEntry e;
-  e.name = "thruster_lag";
-  e.physics = "thrust follows the command through first-order actuator dynamics";
-  e.site = EffectSite::kActuator;
-  e.parameters = {{param::kLag, "time constant T of the thrust", "s", "s", 0.0, 0.0, kInf, 0.1}};
+  EffectEntry e =
+      Entry("thruster_lag", "thrust follows the command through first-order actuator dynamics",
+            EffectSite::kActuator,
+            {{param::kLag, "time constant T of the thrust", "s", "s", 0.0, 0.0, kInf, 0.1}});
   e.parameters[0].lower_open = true;
   e.parameters[0].fit_lower = 0.0;  // T > 0: the lag divides by it
   e.parameters[0].fit_lower_open = true;
@@ -127,11 +143,9 @@ EffectEntry ThrusterLag() {
 
 // u0 = sign(φ)·max(|φ| − d, 0): no thrust for small commands.
 EffectEntry Deadzone() {
-  EffectEntry e;
-  e.name = "deadzone";
-  e.physics = "no thrust for small commanded force";
-  e.site = EffectSite::kActuator;
-  e.parameters = {{param::kDeadzone, "width d of the dead band", "N", "N·m", 0.0, 0.0, kInf}};
+  EffectEntry e =
+      Entry("deadzone", "no thrust for small commanded force", EffectSite::kActuator,
+            {{param::kDeadzone, "width d of the dead band", "N", "N·m", 0.0, 0.0, kInf}});
   e.parameters[0].fit_lower = 0.0;
   e.propose = [](const ProposalEvidence& c) {
     return SingleIfAbsent(c, param::kDeadzone, 0.02 * c.max_force);
@@ -141,12 +155,11 @@ EffectEntry Deadzone() {
 
 // −c_a·sqrt(|φ_a|)·ξ (ref 000 eq. 5 with |n| ∝ sqrt|φ|, v_a = ξ).
 EffectEntry AdvanceSpeedLoss() {
-  EffectEntry e;
-  e.name = "advance_speed_loss";
-  e.physics = "thrust falls with the speed of advance (τ = c·n|n| − c_s·|n|·v_a)";
-  e.site = EffectSite::kForceTerm;
-  e.parameters = {
-      {param::kAdvanceLoss, "advance-speed loss c_a", "N^½·s/m", "(N·m)^½·s/rad", 0.0, 0.0, kInf}};
+  EffectEntry e = Entry("advance_speed_loss",
+                        "thrust falls with the speed of advance (τ = c·n|n| − c_s·|n|·v_a)",
+                        EffectSite::kForceTerm,
+                        {{param::kAdvanceLoss, "advance-speed loss c_a", "N^½·s/m", "(N·m)^½·s/rad",
+                          0.0, 0.0, kInf}});
   e.make_term = [](Dof, const std::vector<std::string>&) { return MakeAdvanceLossTerm(); };
   e.propose = [](const ProposalEvidence& c) { return SingleIfAbsent(c, param::kAdvanceLoss, 0.0); };
   return e;
@@ -154,14 +167,13 @@ EffectEntry AdvanceSpeedLoss() {
 
 // Σ c_ab·a·b over velocity letters (ref 003 3-DOF model: surge v·r and r², yaw u·r).
 EffectEntry Coupling() {
-  EffectEntry e;
-  e.name = "coupling";
-  e.physics =
-      "motion in another DOF drives this one (e.g. surge speed × yaw rate terms of the "
-      "3-DOF model)";
-  e.site = EffectSite::kForceTerm;
-  e.parameters = {{param::kCouplingPrefix, "coefficient c_ab of the force c_ab·a·b", "N/(a·b)",
-                   "N·m/(a·b)", 0.0, -kInf, kInf}};
+  EffectEntry e =
+      Entry("coupling",
+            "motion in another DOF drives this one (e.g. surge speed × yaw rate terms of the "
+            "3-DOF model)",
+            EffectSite::kForceTerm,
+            {{param::kCouplingPrefix, "coefficient c_ab of the force c_ab·a·b", "N/(a·b)",
+              "N·m/(a·b)", 0.0, -kInf, kInf}});
   e.parameters[0].file_key = "coefficients";
   e.parameters[0].check_qualifier = VelocityPair;
   e.reads_other_motion = true;
@@ -193,11 +205,9 @@ EffectEntry Coupling() {
 
 // y(t) = x(t − τ): the measurement lags the motion.
 EffectEntry SensorDelay() {
-  EffectEntry e;
-  e.name = "sensor_delay";
-  e.physics = "the measurement lags the motion by a fixed time";
-  e.site = EffectSite::kSensor;
-  e.parameters = {{param::kSensorDelay, "delay τ of the measurement", "s", "s", 0.0, 0.0, kInf}};
+  EffectEntry e =
+      Entry("sensor_delay", "the measurement lags the motion by a fixed time", EffectSite::kSensor,
+            {{param::kSensorDelay, "delay τ of the measurement", "s", "s", 0.0, 0.0, kInf}});
   e.parameters[0].fit_lower = 0.0;  // the measurement cannot precede the motion
   e.propose = [](const ProposalEvidence& c) {
     return SingleIfAbsent(c, param::kSensorDelay, 0.05 * c.time_constant_s);
@@ -207,13 +217,13 @@ EffectEntry SensorDelay() {
 
 // drift·t_c·φ_a: the thrust changes slowly over the campaign clock t_c (battery).
 EffectEntry ParameterDrift() {
-  EffectEntry e;
-  e.name = "parameter_drift";
-  e.physics = "a parameter changes slowly during the campaign (e.g. thrust falling with battery)";
-  e.site = EffectSite::kForceTerm;
+  EffectEntry e =
+      Entry("parameter_drift",
+            "a parameter changes slowly during the campaign (e.g. thrust falling with battery)",
+            EffectSite::kForceTerm,
+            {{param::kDrift, "relative change of thrust per second of campaign", "1/s", "1/s", 0.0,
+              -kInf, kInf}});
   e.needs_campaign_clock = true;
-  e.parameters = {{param::kDrift, "relative change of thrust per second of campaign", "1/s", "1/s",
-                   0.0, -kInf, kInf}};
   e.make_term = [](Dof, const std::vector<std::string>&) { return MakeDriftTerm(); };
   e.propose = [](const ProposalEvidence& c) {
     // Drift needs trials spread over the campaign clock.
@@ -224,12 +234,11 @@ EffectEntry ParameterDrift() {
 
 // u = u0·(|u0|/u_ref)^p: a thrust map wrong in shape (notes/pitfalls.md).
 EffectEntry ThrustMap() {
-  EffectEntry e;
-  e.name = "thrust_map";
-  e.physics = "the thrust map is wrong in shape: the delivered force is u0·(|u0|/u_ref)^p";
-  e.site = EffectSite::kActuator;
-  e.parameters = {{param::kThrustExponent, "exponent p of the delivered force's shape", "1", "1",
-                   0.0, -1.0, kInf}};
+  EffectEntry e = Entry(
+      "thrust_map", "the thrust map is wrong in shape: the delivered force is u0·(|u0|/u_ref)^p",
+      EffectSite::kActuator,
+      {{param::kThrustExponent, "exponent p of the delivered force's shape", "1", "1", 0.0, -1.0,
+        kInf}});
   e.parameters[0].lower_open = true;
   e.parameters[0].expected = "a number > -1 (the delivered force must grow with the command)";
   // 1 + p ≥ 0.05 keeps a fit off the flat map, where m, drag and p cannot be told apart.

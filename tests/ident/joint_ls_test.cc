@@ -8,23 +8,21 @@
 #include <cmath>
 #include <cstdio>
 
+#include "support/asv.h"
 #include "support/coupled_campaign.h"
 #include "uuvplan/ident/diagnosis/diagnosis.h"
-#include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/model/coupled_model.h"
 #include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::ident {
 namespace {
 
-model::Truth AsvTruth() {
-  return io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/truth.yaml");
-}
+using testing::AsvCoupledModel;
+using testing::AsvTruth;
 
-// The ASV's coupled model to fit, and its true θ.
-model::MultiDofModel Coupled() { return model::CoupledHorizontalModel(AsvTruth().vehicle); }
+// `truth`'s θ of the ASV's coupled model.
 Eigen::VectorXd TrueTheta(const model::Truth& truth) {
-  return model::CoupledThetaOfTruth(Coupled(), truth);
+  return model::CoupledThetaOfTruth(AsvCoupledModel(), truth);
 }
 int InertiaIndex(int i) { return 4 * i; }  // [m, k, kq, bias] of surge, sway, yaw
 
@@ -35,7 +33,7 @@ std::vector<const model::TrialLog*> Pointers(const std::vector<model::TrialLog>&
 }
 
 JointLsResult Fit(const std::vector<model::TrialLog>& logs) {
-  return JointOneStepLeastSquares(Coupled(), Pointers(logs), JointLsOptions{});
+  return JointOneStepLeastSquares(AsvCoupledModel(), Pointers(logs), JointLsOptions{});
 }
 
 // The case's own truth: every parameter within 3σ, and the σ small enough to mean something

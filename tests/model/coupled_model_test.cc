@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "uuvplan/io/truth_yaml.h"
+#include "support/asv.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/virtual_pool.h"
@@ -17,18 +17,9 @@ namespace {
 
 using Horizontal = Eigen::Vector3d;
 
-Truth AsvTruth() {
-  return io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/truth.yaml");
-}
-
-// The ASV's parameters: [m, k, kq, bias] of surge, sway, yaw.
-Eigen::VectorXd AsvTheta() {
-  Eigen::VectorXd theta(12);
-  theta << 330, 30, 90, 1.5, 510, 80, 260, -2.0, 177, 40, 60, 0.5;
-  return theta;
-}
-
-MultiDofModel Model() { return CoupledHorizontalModel(AsvTruth().vehicle); }
+using testing::AsvCoupledModel;
+using testing::AsvTheta;
+using testing::AsvTruth;
 
 // The joint state at rest but for the velocities ν.
 Eigen::VectorXd StateOf(const MultiDofModel& m, const Horizontal& nu) {
@@ -69,7 +60,7 @@ Horizontal Acceleration(const MultiDofModel& m, const Eigen::VectorXd& theta, co
 }
 
 TEST(CoupledModel, NamesAndUnitsComeFromTheVocabulary) {
-  const MultiDofModel m = Model();
+  const MultiDofModel m = AsvCoupledModel();
   const std::vector<std::string>& names = m.parameter_names();
   ASSERT_EQ(names.size(), 12u);
   EXPECT_EQ(names[5], "sway.k");
@@ -82,7 +73,7 @@ TEST(CoupledModel, NamesAndUnitsComeFromTheVocabulary) {
 // Ref 003: with x_g = 0 and Y_ṙ = 0, C_RB + C_A is skew-symmetric, so the Coriolis and
 // centripetal forces do no work: νᵀ·C(ν)·ν = 0 for every ν (exact up to rounding).
 TEST(CoupledModel, CoriolisDoesNoWork) {
-  const MultiDofModel m = Model();
+  const MultiDofModel m = AsvCoupledModel();
   const Eigen::VectorXd theta = AsvTheta();
   std::mt19937_64 rng(3);
   std::normal_distribution<double> n(0.0, 1.0);
@@ -100,7 +91,7 @@ TEST(CoupledModel, CoriolisDoesNoWork) {
 
 // The regressor form m_i·ν̇_i + r_i(ν)·θ = τ_i holds for the accelerations the model gives.
 TEST(CoupledModel, RegressorReproducesTheEquations) {
-  const MultiDofModel m = Model();
+  const MultiDofModel m = AsvCoupledModel();
   const Eigen::VectorXd theta = AsvTheta();
   std::mt19937_64 rng(5);
   std::normal_distribution<double> n(0.0, 1.0);
@@ -115,7 +106,7 @@ TEST(CoupledModel, RegressorReproducesTheEquations) {
 }
 
 TEST(CoupledModel, AdmissibleNamesTheFirstBadParameter) {
-  const MultiDofModel m = Model();
+  const MultiDofModel m = AsvCoupledModel();
   Eigen::VectorXd theta = AsvTheta();
   EXPECT_EQ(m.Inadmissible(theta), "");
   theta[m.ParameterIndex("sway.kq")] = -3.0;
@@ -126,7 +117,7 @@ TEST(CoupledModel, AdmissibleNamesTheFirstBadParameter) {
 // Without drag or thrust the kinetic energy ½(m_u u² + m_v v² + m_r r²) is conserved (the
 // Coriolis terms do no work): RK4 at 10 ms over 20 s keeps it to 1e-6.
 TEST(CoupledSimulator, ConservesEnergyWithoutDrag) {
-  const MultiDofModel m = Model();
+  const MultiDofModel m = AsvCoupledModel();
   Eigen::VectorXd theta = Eigen::VectorXd::Zero(12);
   theta << 330, 0, 0, 0, 510, 0, 0, 0, 177, 0, 0, 0;
   const Horizontal nu0(1.0, 0.3, 0.4);
@@ -147,7 +138,7 @@ TEST(CoupledSimulator, ConservesEnergyWithoutDrag) {
 
 // A steady turn under constant thrust: the state settles where the equations balance.
 TEST(CoupledSimulator, SettlesInASteadyTurn) {
-  const MultiDofModel m = Model();
+  const MultiDofModel m = AsvCoupledModel();
   const Eigen::VectorXd theta = AsvTheta();
   const Horizontal tau(80, 0, 20);
   std::vector<std::unique_ptr<Excitation>> thrust;

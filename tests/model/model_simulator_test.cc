@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "support/every_effect.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/excitation.h"
@@ -95,41 +96,9 @@ struct FullModel {
   std::unique_ptr<DofModel> model;
   Eigen::VectorXd theta;
   FullModel() {
-    structure.dof = Dof::kSurge;
-    structure.parameters = {"k",
-                            "k_neg",
-                            "kq",
-                            "kq_neg",
-                            "bias",
-                            "bias_step",
-                            "eta.front.neg",
-                            "eta.rear.pos",
-                            "lag",
-                            "deadzone",
-                            "advance_loss",
-                            "coupling.rr",
-                            "sensor_delay",
-                            "drift",
-                            "thrust_exponent"};
-    structure.settings["thrust_reference"] = 40.0;
+    structure = testing::EveryEffectStructure(40.0);
     model = std::make_unique<DofModel>(vehicle, structure);
-    std::map<std::string, double> p = {{"m", 890},
-                                       {"k", 46.9},
-                                       {"k_neg", 57.9},
-                                       {"kq", 306.2},
-                                       {"kq_neg", 331.4},
-                                       {"bias", 1.5},
-                                       {"bias_step", 0.7},
-                                       {"eta.front.neg", 0.89},
-                                       {"eta.rear.pos", 0.73},
-                                       {"advance_loss", 2.0},
-                                       {"coupling.rr", 30.0},
-                                       {"drift", -2e-4},
-                                       {"lag", 0.4},
-                                       {"deadzone", 3.0},
-                                       {"sensor_delay", 0.3},
-                                       {"thrust_exponent", -0.3}};
-    theta = model->Theta(p);
+    theta = model->Theta(testing::EveryEffectValues());
   }
 };
 

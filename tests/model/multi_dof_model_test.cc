@@ -5,22 +5,14 @@
 #include <cmath>
 #include <vector>
 
-#include "uuvplan/io/vehicle_yaml.h"
-#include "uuvplan/model/coupled_model.h"
+#include "support/asv.h"
 #include "uuvplan/model/simulator.h"
 
 namespace uuvplan::model {
 namespace {
 
-Vehicle Asv() {
-  return io::ReadVehicle(std::string(UUVPLAN_SOURCE_DIR) + "/cases/asv/vehicle.yaml");
-}
-
-Eigen::VectorXd AsvTheta() {
-  Eigen::VectorXd theta(12);
-  theta << 330, 30, 90, 1.5, 510, 80, 260, -2.0, 177, 40, 60, 0.5;
-  return theta;
-}
+using testing::AsvCoupledModel;
+using testing::AsvTheta;
 
 // Sines on every DOF of the coupled model (η = 1).
 struct Sines {
@@ -37,7 +29,7 @@ struct Sines {
 // A model of one DOF without ties is its DofModel: the same state and sensitivities, with every
 // standard term, thruster lag and a free η on.
 TEST(MultiDofModel, OneDofIsTheDofModel) {
-  const Vehicle v = Asv();
+  const Vehicle v = testing::AsvTruth().vehicle;
   ModelStructure s;
   s.dof = Dof::kSurge;
   s.Add("lag");
@@ -63,7 +55,7 @@ TEST(MultiDofModel, OneDofIsTheDofModel) {
 }
 
 TEST(MultiDofModel, TiesMapTheGlobalThetaOnEachDof) {
-  const MultiDofModel m = CoupledHorizontalModel(Asv());
+  const MultiDofModel m = AsvCoupledModel();
   const Eigen::VectorXd theta = AsvTheta();
   const int yaw = m.DofIndex(Dof::kYaw), surge = m.DofIndex(Dof::kSurge);
   const Eigen::VectorXd local = m.LocalTheta(yaw, theta);
@@ -75,7 +67,7 @@ TEST(MultiDofModel, TiesMapTheGlobalThetaOnEachDof) {
 // A = ∂f/∂x (the coupling's cross partials and the planar kinematics among them) and
 // B = ∂f/∂θ = Σ_i ∂f/∂θ_i·T_i against central differences, off the axes (ψ, u, v, r ≠ 0).
 TEST(MultiDofModel, JacobiansMatchFiniteDifferences) {
-  const MultiDofModel m = CoupledHorizontalModel(Asv());
+  const MultiDofModel m = AsvCoupledModel();
   const Sines sines(m);
   const Eigen::VectorXd theta = AsvTheta();
   const int nx = m.num_states(), np = m.num_parameters();
@@ -110,7 +102,7 @@ TEST(MultiDofModel, JacobiansMatchFiniteDifferences) {
 // The forward sensitivities integrated with the joint state against central differences of
 // whole simulations.
 TEST(MultiDofModel, SensitivitiesMatchFiniteDifferences) {
-  const MultiDofModel m = CoupledHorizontalModel(Asv());
+  const MultiDofModel m = AsvCoupledModel();
   const Sines sines(m);
   const Eigen::VectorXd theta = AsvTheta();
   SimulationOptions o;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::text {
@@ -181,6 +182,13 @@ std::string RequiredLine(const PoolVerdict& v, const model::Pool& pool) {
   return r.str();
 }
 
+// Whether the pool hosts the identification, in words (VerdictAnswer).
+constexpr model::EnumNames<Hostability, 3> kVerdictAnswers{{{
+    {Hostability::kAll, "CAN host it"},
+    {Hostability::kPart, "can host it for PART of the a priori box only"},
+    {Hostability::kNone, "CANNOT host it"},
+}}};
+
 }  // namespace
 
 std::string VerdictSentence(const PoolVerdict& v, const model::Pool& pool) {
@@ -193,17 +201,7 @@ std::string BoxPointLabel(const planner::BoxPoint& p, model::Dof dof) {
          model::Unit(model::param::kQuadraticDrag, dof) + ")";
 }
 
-std::string VerdictAnswer(Hostability h) {
-  switch (h) {
-    case Hostability::kAll:
-      return "CAN host it";
-    case Hostability::kPart:
-      return "can host it for PART of the a priori box only";
-    case Hostability::kNone:
-      break;
-  }
-  return "CANNOT host it";
-}
+std::string VerdictAnswer(Hostability h) { return std::string(kVerdictAnswers.Name(h)); }
 
 std::string DofReason(const PoolVerdict& verdict, const DofVerdict& d, const model::Pool& pool) {
   std::string reason = d.message;

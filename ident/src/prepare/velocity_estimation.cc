@@ -243,9 +243,10 @@ double InputTimeScale(model::TimesView t, const std::vector<double>& f) {
 
 namespace {
 
-// A smoothed signal at times t with nothing estimated yet (NaN, every sample an edge, run 0),
-// its second derivative sized only `with_second_derivative`.
-SmoothedSignal Unsmoothed(const SharedTimes& t, bool with_second_derivative) {
+// A smoothed signal at times t with nothing estimated yet (NaN, every sample an edge), its runs
+// split at gaps longer than gap_factor × the median step, its second derivative sized only
+// `with_second_derivative`.
+SmoothedSignal Unsmoothed(const SharedTimes& t, double gap_factor, bool with_second_derivative) {
   SmoothedSignal out;
   const std::size_t n = t.size();
   out.t = t;
@@ -253,15 +254,8 @@ SmoothedSignal Unsmoothed(const SharedTimes& t, bool with_second_derivative) {
   out.derivative.assign(n, kNaN);
   if (with_second_derivative) out.second_derivative.assign(n, kNaN);
   out.edge.assign(n, true);
-  if (n > 0) out.run_starts = {0};
+  for (const auto& run : Runs(t, gap_factor)) out.run_starts.push_back(run.first);
   return out;
-}
-
-// The first sample of each of the runs SmoothRuns and ButterworthVelocity filter separately.
-std::vector<std::size_t> RunStarts(const SharedTimes& t, double gap_factor) {
-  std::vector<std::size_t> starts;
-  for (const auto& run : Runs(t, gap_factor)) starts.push_back(run.first);
-  return starts;
 }
 
 }  // namespace
@@ -272,7 +266,7 @@ int SmoothedSignal::run(std::size_t i) const {
 }
 
 SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& options) {
-  SmoothedSignal out = Unsmoothed(s.t, true);
+  SmoothedSignal out = Unsmoothed(s.t, options.gap_factor, true);
   SmoothRuns(
       s, options,
       [&out](const SmoothedSample& p) {
@@ -282,13 +276,12 @@ SmoothedSignal SavitzkyGolay(const Signal& s, const SavitzkyGolayOptions& option
         out.edge[p.i] = p.edge;
       },
       &out);
-  out.run_starts = RunStarts(s.t, options.gap_factor);
   return out;
 }
 
 SmoothedSignal SavitzkyGolayRate(const Signal& s, const SavitzkyGolayOptions& options,
                                  double* first_value) {
-  SmoothedSignal out = Unsmoothed(s.t, false);
+  SmoothedSignal out = Unsmoothed(s.t, options.gap_factor, false);
   *first_value = kNaN;
   SmoothRuns(
       s, options,
@@ -299,7 +292,6 @@ SmoothedSignal SavitzkyGolayRate(const Signal& s, const SavitzkyGolayOptions& op
         out.edge[p.i] = p.edge;
       },
       &out);
-  out.run_starts = RunStarts(s.t, options.gap_factor);
   return out;
 }
 
@@ -399,8 +391,7 @@ std::vector<double> ButterworthFiltFilt(const std::vector<double>& y, double rat
 }
 
 SmoothedSignal ButterworthVelocity(const Signal& p, double cutoff_hz, double gap_factor) {
-  SmoothedSignal out = Unsmoothed(p.t, true);
-  out.run_starts = RunStarts(p.t, gap_factor);
+  SmoothedSignal out = Unsmoothed(p.t, gap_factor, true);
   for (const auto& [b, e] : Runs(p.t, gap_factor)) {
     const std::size_t m = e - b;
     if (m < 3) continue;

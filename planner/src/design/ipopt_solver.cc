@@ -165,6 +165,7 @@ class DesignNlp final : public Ipopt::TNLP {
   Ipopt::SolverReturn status_ = Ipopt::UNASSIGNED;
 };
 
+// Ipopt's names of its solver returns; the others by number (RETURN(n)).
 constexpr model::EnumNames<Ipopt::SolverReturn, 8> kReturnNames{
     {{{Ipopt::SUCCESS, "SUCCESS"},
       {Ipopt::MAXITER_EXCEEDED, "MAXITER_EXCEEDED"},
@@ -174,12 +175,6 @@ constexpr model::EnumNames<Ipopt::SolverReturn, 8> kReturnNames{
       {Ipopt::RESTORATION_FAILURE, "RESTORATION_FAILURE"},
       {Ipopt::ERROR_IN_STEP_COMPUTATION, "ERROR_IN_STEP_COMPUTATION"},
       {Ipopt::INVALID_NUMBER_DETECTED, "INVALID_NUMBER_DETECTED"}}}};
-
-// Ipopt's name of a solver return; the others by number.
-std::string ReturnName(Ipopt::SolverReturn s) {
-  const std::string_view name = kReturnNames.Name(s);
-  return name != "?" ? std::string(name) : "RETURN(" + std::to_string(static_cast<int>(s)) + ")";
-}
 
 }  // namespace
 
@@ -201,7 +196,7 @@ SolverSummary SolveWithIpopt(const DesignProblem& p, const SolverOptions& o) {
     return s;
   }
   const Ipopt::ApplicationReturnStatus rs = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(nlp));
-  s.raw_status = ReturnName(nlp->status()) + " (application status " +
+  s.raw_status = kReturnNames.NameOrNumber(nlp->status(), "RETURN") + " (application status " +
                  std::to_string(static_cast<int>(rs)) + ")";
   switch (nlp->status()) {
     case Ipopt::SUCCESS:

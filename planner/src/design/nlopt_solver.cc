@@ -108,6 +108,7 @@ void LocalConstraints(unsigned m, double* result, unsigned n, const double* z, d
   }
 }
 
+// NLopt's names of its results; the failures by number (FAILURE(n)).
 constexpr model::EnumNames<nlopt::result, 6> kResultNames{
     {{{nlopt::SUCCESS, "SUCCESS"},
       {nlopt::STOPVAL_REACHED, "STOPVAL_REACHED"},
@@ -115,12 +116,6 @@ constexpr model::EnumNames<nlopt::result, 6> kResultNames{
       {nlopt::XTOL_REACHED, "XTOL_REACHED"},
       {nlopt::MAXEVAL_REACHED, "MAXEVAL_REACHED"},
       {nlopt::MAXTIME_REACHED, "MAXTIME_REACHED"}}}};
-
-// NLopt's name of a result; the failures by number.
-std::string ResultName(nlopt::result r) {
-  const std::string_view name = kResultNames.Name(r);
-  return name != "?" ? std::string(name) : "FAILURE(" + std::to_string(static_cast<int>(r)) + ")";
-}
 
 // One local run from x_start; returns the backend's result name.
 std::string RunLocal(const DesignProblem& p, const SolverOptions& o, DesignEvaluator* ev,
@@ -162,7 +157,7 @@ std::string RunLocal(const DesignProblem& p, const SolverOptions& o, DesignEvalu
   }
   double f = 0.0;
   try {
-    return ResultName(local.optimize(z, f));
+    return kResultNames.NameOrNumber(local.optimize(z, f), "FAILURE");
   } catch (const std::exception& e) {
     return std::string("EXCEPTION: ") + e.what();  // the best point is kept by the evaluator
   }
@@ -193,7 +188,8 @@ SolverSummary SolveWithNlopt(const DesignProblem& p, const SolverOptions& o) {
     std::vector<double> x = p.x0;
     double f = 0.0;
     try {
-      raw = (mlsl ? "MLSL:" : "DIRECT-L:") + ResultName(global.optimize(x, f));
+      raw = (mlsl ? "MLSL:" : "DIRECT-L:") +
+            kResultNames.NameOrNumber(global.optimize(x, f), "FAILURE");
     } catch (const std::exception& e) {
       raw = std::string("global EXCEPTION: ") + e.what();
     }

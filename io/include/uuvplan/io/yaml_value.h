@@ -9,12 +9,14 @@
 
 #include <array>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "uuvplan/io/place.h"
 #include "uuvplan/model/dof.h"
+#include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::io {
 
@@ -93,6 +95,14 @@ std::string Name(const Value& v, const std::string& expectation = "a name");
 /// One of `choices`; returns its index.
 int Choice(const Value& v, std::initializer_list<std::string_view> choices,
            const std::string& what);
+/// The value `names` gives the scalar at `v`; otherwise Expected(what and the names).
+template <typename E, std::size_t N>
+E EnumValue(const Value& v, const model::EnumNames<E, N>& names, const std::string& what) {
+  if (v.node().IsScalar()) {
+    if (const std::optional<E> e = names.Parse(v.node().Scalar())) return *e;
+  }
+  v.Expected(what + " (" + names.List() + ")");
+}
 model::Dof DofValue(const Value& v);
 /// A key of a per-DOF map must be a DOF name.
 model::Dof DofKey(const MapValue::Entry& e);

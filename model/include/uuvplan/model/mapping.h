@@ -8,10 +8,18 @@
 #include <vector>
 
 #include "uuvplan/model/dof.h"
+#include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::model {
 
 enum class OpenWater { kPositive, kNegative, kBoth, kNone };
+/// The vehicle file's names of OpenWater (its `open_water` key).
+inline constexpr EnumNames<OpenWater, 4> kOpenWaterNames{{{
+    {OpenWater::kPositive, "positive"},
+    {OpenWater::kNegative, "negative"},
+    {OpenWater::kBoth, "both"},
+    {OpenWater::kNone, "none"},
+}}};
 
 /// Direction of the nominal force phi: eta is defined per mapping and per direction.
 enum class Direction { kPos, kNeg };

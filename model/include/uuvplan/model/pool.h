@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "uuvplan/model/dof.h"
+#include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::model {
 
@@ -51,16 +52,9 @@ struct Pool {
   }
   /// The pool side a translation travels along ("length", "width", "depth"); "" otherwise.
   static std::string_view SideName(Dof dof) {
-    switch (dof) {
-      case Dof::kSurge:
-        return "length";
-      case Dof::kSway:
-        return "width";
-      case Dof::kHeave:
-        return "depth";
-      default:
-        return "";
-    }
+    constexpr EnumNames<Dof, 3> kSideNames{
+        {{{Dof::kSurge, "length"}, {Dof::kSway, "width"}, {Dof::kHeave, "depth"}}}};
+    return IsRotational(dof) ? "" : kSideNames.Name(dof);
   }
 };
 

@@ -22,6 +22,13 @@ struct EnumNames {
     }
     return "?";
   }
+  /// The name of `value`, or "<prefix>(<number>)" for a value the table leaves out (a
+  /// library's return codes beyond those it names).
+  std::string NameOrNumber(E value, std::string_view prefix) const {
+    const std::string_view name = Name(value);
+    if (name != "?") return std::string(name);
+    return std::string(prefix) + "(" + std::to_string(static_cast<int>(value)) + ")";
+  }
   /// The value named `name`, or nullopt.
   constexpr std::optional<E> Parse(std::string_view name) const {
     for (const auto& [e, n] : entries) {
