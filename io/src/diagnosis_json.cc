@@ -4,6 +4,7 @@
 
 #include "uuvplan/io/identify_json.h"
 #include "uuvplan/io/json_value.h"
+#include "uuvplan/text/diagnosis_notes_text.h"
 #include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::io {
@@ -144,8 +145,8 @@ json DiagnosisJson(const ident::DiagnosisResult& r) {
           {"standard", standard},
           {"extended", extended},
           {"not_diagnosed", not_diagnosed},
-          {"warnings", r.warnings},
-          {"notes", r.notes}};
+          {"warnings", text::NoteTexts(r.warnings)},
+          {"notes", text::NoteTexts(r.notes)}};
 }
 
 }  // namespace uuvplan::io

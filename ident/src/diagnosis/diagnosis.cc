@@ -213,14 +213,14 @@ double AicGain(const CandidateTest& t) { return t.statistic - 2.0 * t.added_para
 
 // Why each other scored candidate of a round was not chosen: within 2 of the chosen one's AIC
 // and not separated by the held-out data either (paired difference within 2σ, or no σ: a
-// single held-out unit), it "cannot be told from" it, and is returned for the warning; else,
-// with enough gain of its own, the chosen one fits the fit trials better.
-std::vector<std::string> LabelRivals(const std::vector<Significant>& significant,
-                                     const std::vector<DiagnosisGain>& gains, int best,
-                                     model::Dof dof, double min_gain, DiagnosisResult* result) {
+// single held-out unit), it "cannot be told from" it, and its test's index is returned for the
+// warning; else, with enough gain of its own, the chosen one fits the fit trials better.
+std::vector<int> LabelRivals(const std::vector<Significant>& significant,
+                             const std::vector<DiagnosisGain>& gains, int best, model::Dof dof,
+                             double min_gain, DiagnosisResult* result) {
   const CandidateTest& chosen = result->tests[significant[best].test];
   const std::string unit(model::VelocityUnit(dof));
-  std::vector<std::string> alike;
+  std::vector<int> alike;
   for (std::size_t i = 0; i < significant.size(); ++i) {
     if (static_cast<int>(i) == best || !gains[i].scored) continue;
     CandidateTest& t = result->tests[significant[i].test];
@@ -230,8 +230,7 @@ std::vector<std::string> LabelRivals(const std::vector<Significant>& significant
                                model::Significant(sigma, 2) + " " + unit + " against " +
                                CandidateName(chosen) + "'s";
     if (std::abs(AicGain(chosen) - AicGain(t)) <= 2 && !(delta > 2 * sigma)) {
-      alike.push_back(CandidateName(t) + " (held-out gain " + model::Significant(100 * t.gain, 3) +
-                      "%, D = " + model::Significant(t.statistic, 4) + ")");
+      alike.push_back(significant[i].test);
       t.not_chosen = "cannot be told from " + CandidateName(chosen) + " (D " +
                      model::Significant(t.statistic, 4) + " against " +
                      model::Significant(chosen.statistic, 4) + "; " + paired + ")";
@@ -285,17 +284,17 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
   clock->Lap("measure");
   if (best < 0) return false;
   const CandidateTest& chosen = result->tests[significant[best].test];
-  const std::vector<std::string> alike =
+  const std::vector<int> alike =
       LabelRivals(significant, gains, best, d->dof, options.min_gain, result);
   if (!alike.empty()) {
-    result->warnings.push_back(
-        dof + ": these trials cannot tell " + CandidateName(chosen) + " (held-out gain " +
-        model::Significant(100 * chosen.gain, 3) +
-        "%, D = " + model::Significant(chosen.statistic, 4) + ") from " + model::Join(alike) +
-        ": " + CandidateName(chosen) +
-        " is kept for its larger likelihood on the fit trials, but either may be the cause; "
-        "trials where their predictions differ (other command levels or directions) are needed "
-        "to separate them");
+    DiagnosisNote w{DiagnosisNoteKind::kCannotTell, d->dof, {}, {}};
+    const auto quote = [&w](const CandidateTest& t) {
+      w.names.push_back(CandidateName(t));
+      w.numbers.insert(w.numbers.end(), {t.gain, t.statistic});
+    };
+    quote(chosen);
+    for (int k : alike) quote(result->tests[k]);
+    result->warnings.push_back(std::move(w));
   }
   Accept(&significant[best], gains[best], used, d, result);
   clock->Lap("extend");
@@ -377,20 +376,20 @@ void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& option
     for (const auto& [key, v] : c.proposal.settings) without.settings.erase(key);
     StructureFit refit = diagnosis::FitPhysical(vehicle, without, d->fit, start, d->current.dropped,
                                                 options.output_error, d->current.values);
-    const std::string name = std::string(model::DofName(d->dof)) + ": " + c.effect->name;
     if (!refit.oe.ok()) {
-      result->notes.push_back(
-          name + " kept although " + value + " (< " + model::Significant(options.min_z, 2) +
-          "σ) in the final model: the refit without it failed (" + refit.oe.message + ")");
+      result->notes.push_back({DiagnosisNoteKind::kKeptRefitFailed,
+                               d->dof,
+                               {c.effect->name, value, refit.oe.message},
+                               {options.min_z}});
       return;
     }
     CandidateTest& t = result->tests[d->tests[weakest]];
     t.accepted = false;
     t.removed = value + " in the final model (< " + model::Significant(options.min_z, 2) + "σ)";
-    result->notes.push_back(name + " accepted in round " + std::to_string(t.round + 1) +
-                            ", then removed: " + t.removed +
-                            "; the model refitted without it (the gains of the other findings "
-                            "were measured with it in)");
+    result->notes.push_back({DiagnosisNoteKind::kRemoved,
+                             d->dof,
+                             {c.effect->name, t.removed},
+                             {static_cast<double>(t.round + 1)}});
     d->current = std::move(refit);
     d->found.erase(d->found.begin() + weakest);
     d->accepted.erase(d->accepted.begin() + weakest);
@@ -438,22 +437,13 @@ void FinalParameters(const model::Campaign& campaign, const DiagnoseOptions& opt
 // Caveats printed beside the findings of a DOF.
 void AddCaveats(const DofIdentification& nominal, const DiagnoseOptions& options,
                 bool campaign_clock, Dof dof, DiagnosisResult* result) {
-  const std::string name(model::DofName(dof));
   for (const std::string& effect : options.candidates) {
     const model::EffectEntry* entry = model::Effects().Find(effect);
     if (campaign_clock || !entry || !entry->needs_campaign_clock) continue;
-    result->notes.push_back(name + ": " + effect +
-                            " not tested: the campaign gives no `start` time "
-                            "for every trial, so the campaign clock is unknown");
+    result->notes.push_back({DiagnosisNoteKind::kNeedsCampaignClock, dof, {effect}, {}});
   }
   if (nominal.closed_loop_suspected) {
-    result->warnings.push_back(
-        name +
-        ": closed-loop data suspected (see the identification's warning): the logged force "
-        "reacts to the motion through a controller, so an effect found here may describe the "
-        "loop rather than the vehicle (a controller's delay looks like a sensor delay or "
-        "a thruster lag, its gains like drag or a thrust-map shape); confirm with open-loop "
-        "trials");
+    result->warnings.push_back({DiagnosisNoteKind::kClosedLoopSuspected, dof, {}, {}});
   }
 }
 
@@ -502,7 +492,6 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   const OutputErrorOptions& oe = options.output_error;
   // Within the admissible ranges too: the standard model with a negative drag is no model.
   d.current = diagnosis::FitPhysical(campaign.vehicle, nominal.structure, d.fit, start, {}, oe, {});
-  const std::string name(model::DofName(d.dof));
   if (!d.current.oe.ok()) {
     result->not_diagnosed[d.dof] =
         "the output-error fit of its standard model failed (" + d.current.oe.message + ")";
@@ -527,10 +516,7 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   AddInputNoise(campaign, options, &d, result);
   FinalParameters(campaign, options, &d);
   for (const std::string& p : d.current.held_at_bound) {
-    result->notes.push_back(name + ": the extended model holds " + p + " at its admissible bound " +
-                            model::Significant(d.current.held.at(p), 4) + " " +
-                            model::Unit(p, d.dof) +
-                            " (the free fit puts it outside: model/parameter.h)");
+    result->notes.push_back({DiagnosisNoteKind::kHeldAtBound, d.dof, {p}, {d.current.held.at(p)}});
   }
   clock->Lap("measure");
   result->findings.insert(result->findings.end(), d.found.begin(), d.found.end());

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "uuvplan/ident/diagnosis/diagnosis_note.h"
 #include "uuvplan/ident/estimate.h"
 #include "uuvplan/ident/estimators/output_error.h"
 #include "uuvplan/ident/identify.h"
@@ -197,9 +198,10 @@ struct DiagnosisResult {
   /// The standard model per DOF diagnosed, as diagnosis fits it (output error, every parameter
   /// free: the "before" of the first finding), with its free runs in `fit` likewise.
   std::vector<DofIdentification> standard;
-  /// What limits the findings' meaning (e.g. closed-loop data), to show beside them.
-  std::vector<std::string> warnings;
-  std::vector<std::string> notes;
+  /// What limits the findings' meaning (e.g. closed-loop data), to show beside them, and the
+  /// remarks on how they were reached (text/diagnosis_notes_text.h words both).
+  std::vector<DiagnosisNote> warnings;
+  std::vector<DiagnosisNote> notes;
   /// The DOFs asked for (or with a fit trial), in the order diagnosed.
   std::vector<model::Dof> dofs;
   /// The DOFs refused, and why: the standard model's identification failed (a diagnosis of a
