@@ -17,8 +17,6 @@ pending=(
   ident/src/identify_prepare.cc
   ident/src/identify_refine.cc
   ident/src/identify_validate.cc
-  ident/src/prepare/trial_data.cc
-  ident/src/score.cc
   ident/src/stats/monte_carlo.cc
   model/src/trial_log.cc
   planner/src/design/combined_design.cc

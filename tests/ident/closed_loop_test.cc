@@ -25,6 +25,7 @@
 #include "uuvplan/io/io.h"
 #include "uuvplan/model/util/seed.h"
 #include "uuvplan/text/diagnosis_notes_text.h"
+#include "uuvplan/text/trial_notes_text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -200,7 +201,8 @@ TEST(ClosedLoopTest, MeasurementsBeforeTheFirstForceRowAreNotUsed) {
   EXPECT_DOUBLE_EQ(d.time_offset, kBacklog);
   ASSERT_FALSE(d.velocity.t.empty());
   EXPECT_GE(d.velocity.t.front(), 0.0);
-  EXPECT_THAT(d.notes, ::testing::Contains(::testing::HasSubstr("precede its first force row")));
+  EXPECT_THAT(text::NoteTexts(d.notes),
+              ::testing::Contains(::testing::HasSubstr("precede its first force row")));
   const IdentifyResult a = Identify(plain, SurgeOptions(plain.vehicle));
   const IdentifyResult b = Identify(backlog, SurgeOptions(backlog.vehicle));
   ASSERT_EQ(a.dofs.size(), 1u);
