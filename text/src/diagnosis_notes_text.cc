@@ -26,6 +26,13 @@ std::string CannotTell(const DiagnosisNote& n) {
          "to separate them";
 }
 
+// "kq_neg = 421 ± 156 N·s²/m², 0.7σ from kq = 177", or "…σ from 'no effect'".
+std::string DistanceText(const ident::NullDistance& d, model::Dof dof) {
+  return d.parameter + " = " + Significant(d.value, 4) + " ± " + Significant(d.sigma, 4) + " " +
+         model::Unit(d.parameter, dof) + ", " + Significant(d.z, 2) + "σ from " +
+         (d.against.empty() ? "'no effect'" : d.against + " = " + Significant(d.against_value, 4));
+}
+
 std::string Sentence(const DiagnosisNote& n) {
   switch (n.kind) {
     case DiagnosisNoteKind::kNeedsCampaignClock:
@@ -41,11 +48,13 @@ std::string Sentence(const DiagnosisNote& n) {
     case DiagnosisNoteKind::kCannotTell:
       return CannotTell(n);
     case DiagnosisNoteKind::kKeptRefitFailed:
-      return n.names[0] + " kept although " + n.names[1] + " (< " + Significant(n.numbers[0], 2) +
-             "σ) in the final model: the refit without it failed (" + n.names[2] + ")";
+      return n.names[0] + " kept although " + DistanceText(n.removal.weakest, n.dof) + " (< " +
+             Significant(n.removal.min_z, 2) +
+             "σ) in the final model: the refit without it failed (" + n.names[1] + ")";
     case DiagnosisNoteKind::kRemoved:
       return n.names[0] + " accepted in round " + std::to_string(static_cast<int>(n.numbers[0])) +
-             ", then removed: " + n.names[1] +
+             ", then removed: " + DistanceText(n.removal.weakest, n.dof) +
+             " in the final model (< " + Significant(n.removal.min_z, 2) + "σ)" +
              "; the model refitted without it (the gains of the other findings were measured "
              "with it in)";
     case DiagnosisNoteKind::kHeldAtBound:
@@ -75,6 +84,27 @@ std::vector<std::string> NoteTexts(const std::vector<DiagnosisNote>& notes) {
   std::vector<std::string> texts;
   for (const DiagnosisNote& n : notes) texts.push_back(NoteText(n));
   return texts;
+}
+
+std::string NotChosenText(const ident::CandidateTest& test) {
+  if (!test.not_chosen) return "";
+  const ident::NotChosen& n = *test.not_chosen;
+  const std::string paired = "held-out MAE " + Significant(n.mae_difference, 2) + " ± " +
+                             Significant(n.mae_difference_sigma, 2) + " " +
+                             std::string(model::VelocityUnit(test.dof)) + " against " + n.chosen +
+                             "'s";
+  if (n.cannot_tell) {
+    return "cannot be told from " + n.chosen + " (D " + Significant(n.statistic, 4) + " against " +
+           Significant(n.chosen_statistic, 4) + "; " + paired + ")";
+  }
+  return n.chosen + " fits the fit trials better (D " + Significant(n.chosen_statistic, 4) +
+         " against " + Significant(n.statistic, 4) + "; " + paired + ")";
+}
+
+std::string RemovedText(const ident::CandidateTest& test) {
+  if (!test.removed) return "";
+  return DistanceText(test.removed->weakest, test.dof) + " in the final model (< " +
+         Significant(test.removed->min_z, 2) + "σ)";
 }
 
 }  // namespace uuvplan::text

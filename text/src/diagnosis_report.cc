@@ -171,10 +171,10 @@ void PrintCandidateTests(const ident::DiagnosisResult& r, std::ostream& out) {
   for (const auto& t : r.tests) {
     std::string verdict = t.significant ? "significant" : "not significant";
     if (std::isfinite(t.gain)) {
-      verdict += t.accepted             ? ", ACCEPTED"
-                 : !t.removed.empty()   ? ", accepted, then removed: " + t.removed
-                 : t.not_chosen.empty() ? ", not enough gain"
-                                        : ", not chosen: " + t.not_chosen;
+      verdict += t.accepted      ? ", ACCEPTED"
+                 : t.removed     ? ", accepted, then removed: " + RemovedText(t)
+                 : !t.not_chosen ? ", not enough gain"
+                                 : ", not chosen: " + NotChosenText(t);
     }
     if (!std::isfinite(t.gain) && !t.unscored.empty()) {
       verdict += ", held-out gain cannot be scored: " + t.unscored;

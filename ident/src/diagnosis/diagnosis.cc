@@ -216,28 +216,22 @@ double AicGain(const CandidateTest& t) { return t.statistic - 2.0 * t.added_para
 // single held-out unit), it "cannot be told from" it, and its test's index is returned for the
 // warning; else, with enough gain of its own, the chosen one fits the fit trials better.
 std::vector<int> LabelRivals(const std::vector<Significant>& significant,
-                             const std::vector<DiagnosisGain>& gains, int best, model::Dof dof,
-                             double min_gain, DiagnosisResult* result) {
+                             const std::vector<DiagnosisGain>& gains, int best, double min_gain,
+                             DiagnosisResult* result) {
   const CandidateTest& chosen = result->tests[significant[best].test];
-  const std::string unit(model::VelocityUnit(dof));
   std::vector<int> alike;
   for (std::size_t i = 0; i < significant.size(); ++i) {
     if (static_cast<int>(i) == best || !gains[i].scored) continue;
     CandidateTest& t = result->tests[significant[i].test];
     double delta = 0.0, sigma = 0.0;
     diagnosis::PairedDifference(gains[i].after_by_unit, gains[best].after_by_unit, &delta, &sigma);
-    const std::string paired = "held-out MAE " + model::Significant(delta, 2) + " ± " +
-                               model::Significant(sigma, 2) + " " + unit + " against " +
-                               CandidateName(chosen) + "'s";
+    const NotChosen why{false, CandidateName(chosen), t.statistic, chosen.statistic, delta, sigma};
     if (std::abs(AicGain(chosen) - AicGain(t)) <= 2 && !(delta > 2 * sigma)) {
       alike.push_back(significant[i].test);
-      t.not_chosen = "cannot be told from " + CandidateName(chosen) + " (D " +
-                     model::Significant(t.statistic, 4) + " against " +
-                     model::Significant(chosen.statistic, 4) + "; " + paired + ")";
+      t.not_chosen = why;
+      t.not_chosen->cannot_tell = true;
     } else if (gains[i].relative >= min_gain) {
-      t.not_chosen = CandidateName(chosen) + " fits the fit trials better (D " +
-                     model::Significant(chosen.statistic, 4) + " against " +
-                     model::Significant(t.statistic, 4) + "; " + paired + ")";
+      t.not_chosen = why;
     }
   }
   return alike;
@@ -284,10 +278,9 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
   clock->Lap("measure");
   if (best < 0) return false;
   const CandidateTest& chosen = result->tests[significant[best].test];
-  const std::vector<int> alike =
-      LabelRivals(significant, gains, best, d->dof, options.min_gain, result);
+  const std::vector<int> alike = LabelRivals(significant, gains, best, options.min_gain, result);
   if (!alike.empty()) {
-    DiagnosisNote w{DiagnosisNoteKind::kCannotTell, d->dof, {}, {}};
+    DiagnosisNote w{DiagnosisNoteKind::kCannotTell, d->dof, {}, {}, {}};
     const auto quote = [&w](const CandidateTest& t) {
       w.names.push_back(CandidateName(t));
       w.numbers.insert(w.numbers.end(), {t.gain, t.statistic});
@@ -301,12 +294,12 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
   return true;
 }
 
-// How far parameter `name` of `c` lies from "no effect" in `f`, in σ (and its text): against
+// How far parameter `name` of `c` lies from "no effect" in `f`, in σ (and its figures): against
 // the parameter it defaults to in the same fit when it has one (k_neg − k, with the σ of the
 // difference: "symmetric" means the final k, not the k of the round that proposed it), else
 // against the proposal's null value. -1 when it has no σ (held at a bound).
 double ZFromNull(const Candidate& c, const StructureFit& f, const std::string& name,
-                 std::string* text) {
+                 NullDistance* distance) {
   const std::vector<std::string>& names = f.oe.names;
   const auto at = [&](const std::string& n) {
     return static_cast<int>(std::find(names.begin(), names.end(), n) - names.begin());
@@ -316,20 +309,17 @@ double ZFromNull(const Candidate& c, const StructureFit& f, const std::string& n
   const model::ParameterFamily* family = model::FamilyOf(name);
   const int j = family && !family->defaults_to.empty() ? at(std::string(family->defaults_to)) : n;
   double null_value = model::NullValue(name), variance = f.oe.covariance(i, i);
-  std::string against = "'no effect'";
+  std::string against;
   if (j < n && f.oe.state[j] == ParameterState::kEstimated) {
     null_value = f.oe.theta[j];
     variance += f.oe.covariance(j, j) - 2 * f.oe.covariance(i, j);
-    against = names[j] + " = " + model::Significant(null_value, 4);
+    against = names[j];
   } else if (const auto null = c.proposal.null.find(name); null != c.proposal.null.end()) {
     null_value = null->second;
   }
   if (!(variance > 0)) return -1.0;
   const double z = std::abs(f.oe.theta[i] - null_value) / std::sqrt(variance);
-  *text = name + " = " + model::Significant(f.oe.theta[i], 4) + " ± " +
-          model::Significant(std::sqrt(f.oe.covariance(i, i)), 4) + " " +
-          model::Unit(name, f.structure.dof) + ", " + model::Significant(z, 2) + "σ from " +
-          against;
+  *distance = {name, f.oe.theta[i], std::sqrt(f.oe.covariance(i, i)), z, against, null_value};
   return z;
 }
 
@@ -346,23 +336,23 @@ void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& option
   while (!d->found.empty()) {
     int weakest = -1;
     double weakest_z = options.min_z;
-    std::string value;
+    NullDistance value;
     for (std::size_t i = 0; i < d->accepted.size(); ++i) {
       const Candidate& c = d->accepted[i];
       double z = -1.0;
-      std::string text;
+      NullDistance strongest;
       for (const std::string& name : c.added) {
-        std::string t;
+        NullDistance t;
         const double zi = ZFromNull(c, d->current, name, &t);
         if (zi > z) {
           z = zi;
-          text = t;
+          strongest = t;
         }
       }
       if (z >= 0 && z < weakest_z) {
         weakest = static_cast<int>(i);
         weakest_z = z;
-        value = text;
+        value = strongest;
       }
     }
     if (weakest < 0) return;
@@ -379,17 +369,19 @@ void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& option
     if (!refit.oe.ok()) {
       result->notes.push_back({DiagnosisNoteKind::kKeptRefitFailed,
                                d->dof,
-                               {c.effect->name, value, refit.oe.message},
-                               {options.min_z}});
+                               {c.effect->name, refit.oe.message},
+                               {},
+                               {value, options.min_z}});
       return;
     }
     CandidateTest& t = result->tests[d->tests[weakest]];
     t.accepted = false;
-    t.removed = value + " in the final model (< " + model::Significant(options.min_z, 2) + "σ)";
+    t.removed = Removal{value, options.min_z};
     result->notes.push_back({DiagnosisNoteKind::kRemoved,
                              d->dof,
-                             {c.effect->name, t.removed},
-                             {static_cast<double>(t.round + 1)}});
+                             {c.effect->name},
+                             {static_cast<double>(t.round + 1)},
+                             *t.removed});
     d->current = std::move(refit);
     d->found.erase(d->found.begin() + weakest);
     d->accepted.erase(d->accepted.begin() + weakest);
@@ -440,10 +432,10 @@ void AddCaveats(const DofIdentification& nominal, const DiagnoseOptions& options
   for (const std::string& effect : options.candidates) {
     const model::EffectEntry* entry = model::Effects().Find(effect);
     if (campaign_clock || !entry || !entry->needs_campaign_clock) continue;
-    result->notes.push_back({DiagnosisNoteKind::kNeedsCampaignClock, dof, {effect}, {}});
+    result->notes.push_back({DiagnosisNoteKind::kNeedsCampaignClock, dof, {effect}, {}, {}});
   }
   if (nominal.closed_loop_suspected) {
-    result->warnings.push_back({DiagnosisNoteKind::kClosedLoopSuspected, dof, {}, {}});
+    result->warnings.push_back({DiagnosisNoteKind::kClosedLoopSuspected, dof, {}, {}, {}});
   }
 }
 
@@ -516,7 +508,8 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   AddInputNoise(campaign, options, &d, result);
   FinalParameters(campaign, options, &d);
   for (const std::string& p : d.current.held_at_bound) {
-    result->notes.push_back({DiagnosisNoteKind::kHeldAtBound, d.dof, {p}, {d.current.held.at(p)}});
+    result->notes.push_back(
+        {DiagnosisNoteKind::kHeldAtBound, d.dof, {p}, {d.current.held.at(p)}, {}});
   }
   clock->Lap("measure");
   result->findings.insert(result->findings.end(), d.found.begin(), d.found.end());

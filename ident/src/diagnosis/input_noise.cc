@@ -28,8 +28,11 @@ bool LoggedVelocityNoise(const model::Vehicle& vehicle, const model::ModelStruct
         if (d == s.dof || model::VelocityLetter(d) != letter) continue;
         const auto it = vehicle.sensors.find(d);
         if (it == vehicle.sensors.end() || !it->second.velocity) {
-          notes->push_back(
-              {DiagnosisNoteKind::kNoCouplingSensor, s.dof, {std::string(model::DofName(d))}, {}});
+          notes->push_back({DiagnosisNoteKind::kNoCouplingSensor,
+                            s.dof,
+                            {std::string(model::DofName(d))},
+                            {},
+                            {}});
           return false;
         }
         (*noise)[d] = it->second.velocity->sigma;
@@ -100,13 +103,16 @@ void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
     ++used;
   }
   if (used < replicates / 2) {
-    notes->push_back({DiagnosisNoteKind::kInputNoiseRefitsFailed, f->structure.dof, {}, {}});
+    notes->push_back({DiagnosisNoteKind::kInputNoiseRefitsFailed, f->structure.dof, {}, {}, {}});
     return;
   }
   f->oe.covariance += cov / used;
   UpdateSigmas(f);
-  notes->push_back(
-      {DiagnosisNoteKind::kInputNoiseIncluded, f->structure.dof, {}, {static_cast<double>(used)}});
+  notes->push_back({DiagnosisNoteKind::kInputNoiseIncluded,
+                    f->structure.dof,
+                    {},
+                    {static_cast<double>(used)},
+                    {}});
 }
 
 }  // namespace uuvplan::ident::diagnosis

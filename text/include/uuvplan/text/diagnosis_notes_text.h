@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/ident/diagnosis/diagnosis_note.h"
 
 namespace uuvplan::text {
@@ -14,5 +15,11 @@ std::string NoteText(const ident::DiagnosisNote& note);
 
 /// NoteText of each note, in order.
 std::vector<std::string> NoteTexts(const std::vector<ident::DiagnosisNote>& notes);
+
+/// Why `test` was not chosen ("cannot be told from deadzone (D …; held-out MAE …)"), or "".
+std::string NotChosenText(const ident::CandidateTest& test);
+
+/// Why `test` was removed after being accepted ("kq_neg = … in the final model (< 3σ)"), or "".
+std::string RemovedText(const ident::CandidateTest& test);
 
 }  // namespace uuvplan::text

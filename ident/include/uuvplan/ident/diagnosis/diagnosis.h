@@ -179,10 +179,10 @@ struct CandidateTest {
   bool accepted = false;  ///< significant, held-out gain ≥ min_gain, and chosen in its round
   /// A significant candidate with enough held-out gain that was not chosen: which one was, and
   /// whether the held-out data can tell the two apart (paired difference of their MAE > 2σ).
-  std::string not_chosen;
+  std::optional<NotChosen> not_chosen;
   /// Accepted, then removed by the final model's backward test: its new parameters no longer
   /// min_z σ from their null values once the effects found after it are in (which, and why).
-  std::string removed;
+  std::optional<Removal> removed;
   int round = 0;  ///< greedy round (0 = against the standard model)
 };
 

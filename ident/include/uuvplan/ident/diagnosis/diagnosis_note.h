@@ -11,6 +11,34 @@
 
 namespace uuvplan::ident {
 
+/// A new parameter's distance from its null value in a fit: `value` ± `sigma` (the parameter's
+/// unit), `z` σ from `against` = `against_value` (the parameter it defaults to), or from 'no
+/// effect' when `against` is empty.
+struct NullDistance {
+  std::string parameter;
+  double value = 0.0, sigma = 0.0, z = 0.0;
+  std::string against;
+  double against_value = 0.0;
+};
+
+/// Why a significant candidate with enough held-out gain was not chosen: the held-out data
+/// cannot tell it from the chosen one (`cannot_tell`), or the chosen one fits the fit trials
+/// better. D of both, and the paired held-out MAE difference δ ± σ against the chosen one
+/// (velocity unit of the DOF).
+struct NotChosen {
+  bool cannot_tell = false;
+  std::string chosen;  ///< the chosen candidate's name ("deadzone", "coupling vr")
+  double statistic = 0.0, chosen_statistic = 0.0;
+  double mae_difference = 0.0, mae_difference_sigma = 0.0;
+};
+
+/// An effect accepted, then found weak in the final model: its strongest new parameter
+/// (`weakest`) is under `min_z` σ from its null value.
+struct Removal {
+  NullDistance weakest;
+  double min_z = 0.0;
+};
+
 /// What a DiagnosisNote says; the comment lists what it quotes, in `names` then `numbers` order.
 enum class DiagnosisNoteKind {
   /// names {effect}: the effect needs the campaign clock, which the campaign does not give.
@@ -20,11 +48,11 @@ enum class DiagnosisNoteKind {
   /// names {chosen, rival 1, …}, numbers {held-out gain, D} of the chosen one then of each
   /// rival (gain as a fraction): the trials cannot tell the chosen effect from its rivals.
   kCannotTell,
-  /// names {effect, its weakest parameter's distance from null (diagnosis' text), the refit's
-  /// message}, numbers {min_z}: the effect is kept although weak, its removal's refit failed.
+  /// names {effect, the refit's message}, `removal`: the effect is kept although weak, its
+  /// removal's refit failed.
   kKeptRefitFailed,
-  /// names {effect, why removed (CandidateTest::removed)}, numbers {round, 1-based}: accepted
-  /// then removed by the final model's backward test.
+  /// names {effect}, numbers {round, 1-based}, `removal`: accepted then removed by the final
+  /// model's backward test.
   kRemoved,
   /// names {parameter}, numbers {value, in the parameter's unit}: the extended model holds it
   /// at its admissible bound.
@@ -54,6 +82,7 @@ struct DiagnosisNote {
   model::Dof dof = model::Dof::kSurge;
   std::vector<std::string> names;  ///< names (and quoted texts) in the order of the kind's list
   std::vector<double> numbers;     ///< numbers in the order of the kind's list
+  Removal removal;                 ///< kKeptRefitFailed and kRemoved: the weak parameter
 };
 
 }  // namespace uuvplan::ident
