@@ -15,6 +15,7 @@
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/score_json.h"
 #include "uuvplan/text/quantity_text.h"
+#include "uuvplan/text/score_notes_text.h"
 #include "uuvplan/text/text_table.h"
 
 namespace uuvplan::cli {
@@ -60,7 +61,7 @@ void PrintScores(const ident::ScoreResult& r, const ScoreFlags& co, std::ostream
         << "), all " << text::Quantity(d.velocity_mae_all, unit, 4)
         << (d.problem.empty() ? "" : "; cannot be scored: " + d.problem) << "\n";
   }
-  for (const std::string& n : r.notes) out << "note: " << n << "\n";
+  for (const ident::ScoreNote& n : r.notes) out << "note: " << text::NoteText(n) << "\n";
 }
 
 int RunScore(const ScoreFlags& co) {

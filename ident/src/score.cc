@@ -107,8 +107,7 @@ ScoreResult ScoreCampaign(const model::Campaign& campaign, const model::Truth& g
                                                          dof) != options.dofs.end();
     if (!asked) continue;
     if (!given.dofs.count(dof)) {
-      result.notes.push_back(campaign.trials[i].file + ": not scored: the model gives no dofs." +
-                             std::string(model::DofName(dof)) + ".params");
+      result.notes.push_back({ScoreNoteKind::kNoModelForDof, campaign.trials[i].file, dof});
       continue;
     }
     prepared[dof].push_back(

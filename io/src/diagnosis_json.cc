@@ -4,6 +4,7 @@
 
 #include "uuvplan/io/identify_json.h"
 #include "uuvplan/io/json_value.h"
+#include "uuvplan/text/diagnosis_notes_text.h"
 #include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::io {
@@ -101,14 +102,21 @@ json FindingJson(const ident::DiagnosisResult& r, const ident::Finding& f) {
 }
 
 json CandidateTestJson(const ident::CandidateTest& t) {
-  return {{"effect", t.effect},           {"dof", std::string(model::DofName(t.dof))},
-          {"detail", t.detail},           {"round", t.round},
-          {"statistic", t.statistic},     {"added_parameters", t.added_parameters},
-          {"p_value", t.p_value},         {"max_z", JsonNumber(t.max_z)},
-          {"significant", t.significant}, {"gain", JsonNumber(t.gain)},
-          {"unscored", t.unscored},       {"non_physical", t.non_physical},
-          {"accepted", t.accepted},       {"not_chosen", t.not_chosen},
-          {"removed", t.removed}};
+  return {{"effect", t.effect},
+          {"dof", std::string(model::DofName(t.dof))},
+          {"detail", t.detail},
+          {"round", t.round},
+          {"statistic", t.statistic},
+          {"added_parameters", t.added_parameters},
+          {"p_value", t.p_value},
+          {"max_z", JsonNumber(t.max_z)},
+          {"significant", t.significant},
+          {"gain", JsonNumber(t.gain)},
+          {"unscored", t.unscored},
+          {"non_physical", t.non_physical},
+          {"accepted", t.accepted},
+          {"not_chosen", text::NotChosenText(t)},
+          {"removed", text::RemovedText(t)}};
 }
 
 json BreakdownJson(const ident::ErrorBreakdown& b) {
@@ -144,8 +152,8 @@ json DiagnosisJson(const ident::DiagnosisResult& r) {
           {"standard", standard},
           {"extended", extended},
           {"not_diagnosed", not_diagnosed},
-          {"warnings", r.warnings},
-          {"notes", r.notes}};
+          {"warnings", text::NoteTexts(r.warnings)},
+          {"notes", text::NoteTexts(r.notes)}};
 }
 
 }  // namespace uuvplan::io

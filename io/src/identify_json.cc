@@ -19,6 +19,7 @@
 
 #include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/io/json_value.h"
+#include "uuvplan/text/trial_notes_text.h"
 
 namespace uuvplan::io {
 namespace {
@@ -247,7 +248,7 @@ json TrialReportJson(const ident::TrialReport& t) {
           {"use", std::string(model::TrialUseName(t.use))},
           {"outliers", outliers},
           {"gaps", gaps},
-          {"notes", t.notes}};
+          {"notes", text::NoteTexts(t.notes)}};
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/io/json_value.h"
+#include "uuvplan/text/score_notes_text.h"
 
 namespace uuvplan::io {
 
@@ -33,7 +34,7 @@ json ScoreJson(const ident::ScoreResult& r, const std::string& vehicle,
           {"campaign", campaign},
           {"trials", trials},
           {"dofs", dofs},
-          {"notes", r.notes}};
+          {"notes", text::NoteTexts(r.notes)}};
 }
 
 }  // namespace uuvplan::io

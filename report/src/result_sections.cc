@@ -4,6 +4,7 @@
 #include "figure_parts.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/report/sections.h"
+#include "uuvplan/text/diagnosis_notes_text.h"
 #include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::report {
@@ -117,7 +118,7 @@ Section DiagnosisSection(const ident::DiagnosisResult& r) {
                                                   " effect(s) found beyond the standard model.");
   for (const auto& [dof, why] : r.not_diagnosed)
     s.paragraphs.push_back(DofText(dof) + " not diagnosed: " + why);
-  for (const auto& w : r.warnings) s.paragraphs.push_back("Warning: " + w);
+  for (const auto& w : r.warnings) s.paragraphs.push_back("Warning: " + text::NoteText(w));
   s.tables.push_back(FindingTable(r));
   s.tables.push_back(TestTable(r));
   return s;

@@ -24,6 +24,8 @@
 #include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/model/util/seed.h"
+#include "uuvplan/text/diagnosis_notes_text.h"
+#include "uuvplan/text/trial_notes_text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -199,7 +201,8 @@ TEST(ClosedLoopTest, MeasurementsBeforeTheFirstForceRowAreNotUsed) {
   EXPECT_DOUBLE_EQ(d.time_offset, kBacklog);
   ASSERT_FALSE(d.velocity.t.empty());
   EXPECT_GE(d.velocity.t.front(), 0.0);
-  EXPECT_THAT(d.notes, ::testing::Contains(::testing::HasSubstr("precede its first force row")));
+  EXPECT_THAT(text::NoteTexts(d.notes),
+              ::testing::Contains(::testing::HasSubstr("precede its first force row")));
   const IdentifyResult a = Identify(plain, SurgeOptions(plain.vehicle));
   const IdentifyResult b = Identify(backlog, SurgeOptions(backlog.vehicle));
   ASSERT_EQ(a.dofs.size(), 1u);
@@ -223,11 +226,13 @@ TEST(ClosedLoopTest, VirtualClosedLoopWithoutClockIsQualifiedByDiagnosis) {
   o.identify = SurgeOptions(c.vehicle);
   const DiagnosisResult r = Diagnose(c, o);
   ASSERT_EQ(r.warnings.size(), 1u);
-  EXPECT_THAT(r.warnings[0], ::testing::HasSubstr("surge: closed-loop data suspected"));
+  EXPECT_THAT(text::NoteText(r.warnings[0]),
+              ::testing::HasSubstr("surge: closed-loop data suspected"));
   ASSERT_EQ(r.breakdowns.size(), 1u);
   EXPECT_TRUE(std::isnan(r.breakdowns[0].drift_per_hour));
   for (const CandidateTest& t : r.tests) EXPECT_NE(t.effect, "parameter_drift");
-  EXPECT_THAT(r.notes, ::testing::Contains(::testing::HasSubstr("parameter_drift not tested")));
+  EXPECT_THAT(text::NoteTexts(r.notes),
+              ::testing::Contains(::testing::HasSubstr("parameter_drift not tested")));
 }
 
 TEST(ClosedLoopTest, InstrumentalIntervalsCoverTheTruth) {

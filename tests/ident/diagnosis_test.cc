@@ -15,6 +15,7 @@
 #include "support/real_data.h"
 #include "uuvplan/ident/stats/chi_square.h"
 #include "uuvplan/io/io.h"
+#include "uuvplan/text/diagnosis_notes_text.h"
 #include "uuvplan/text/finding_text.h"
 
 namespace uuvplan::ident {
@@ -108,7 +109,7 @@ TEST(DiagnosisTest, CouplingSigmaIncludesTheNoiseOfTheLoggedVelocities) {
   EXPECT_DOUBLE_EQ(a.findings[0].params[0].value, b.findings[0].params[0].value);
   EXPECT_GT(a.findings[0].params[0].sigma, b.findings[0].params[0].sigma);
   bool noted = false;
-  for (const auto& n : a.notes)
+  for (const std::string& n : text::NoteTexts(a.notes))
     noted = noted || n.find("noise of the logged velocities") != std::string::npos;
   EXPECT_TRUE(noted);
 }
@@ -150,11 +151,13 @@ TEST(DiagnosisTest, RealClosedLoopLogsWithoutClockAreQualified) {
   o.dofs = {model::Dof::kHeave};
   const DiagnosisResult r = Diagnose(campaign, o);
   ASSERT_EQ(r.warnings.size(), 1u);
-  EXPECT_THAT(r.warnings[0], ::testing::HasSubstr("heave: closed-loop data suspected"));
+  EXPECT_THAT(text::NoteText(r.warnings[0]),
+              ::testing::HasSubstr("heave: closed-loop data suspected"));
   ASSERT_EQ(r.breakdowns.size(), 1u);
   EXPECT_TRUE(std::isnan(r.breakdowns[0].drift_per_hour));
   for (const CandidateTest& t : r.tests) EXPECT_NE(t.effect, "parameter_drift");
-  EXPECT_THAT(r.notes, ::testing::Contains(::testing::HasSubstr("parameter_drift not tested")));
+  EXPECT_THAT(text::NoteTexts(r.notes),
+              ::testing::Contains(::testing::HasSubstr("parameter_drift not tested")));
 }
 
 }  // namespace

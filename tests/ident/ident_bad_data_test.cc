@@ -12,6 +12,7 @@
 #include "uuvplan/ident/prepare/trial_data.h"
 #include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/text/trial_notes_text.h"
 
 namespace uuvplan::ident {
 namespace {
@@ -118,7 +119,7 @@ TEST(BadDataTest, AllNaNVelocityColumnBesideUsablePositionsIsAWarningNamingTheCo
   EXPECT_NE(y->status, IdentifyStatus::kFailed) << y->message;
   EXPECT_EQ(y->status, IdentifyStatus::kWarnings);
   EXPECT_TRUE(AnyContains(y->warnings, "vel_yaw", "no usable value"));
-  EXPECT_TRUE(AnyContains(r.trials[0].notes, "vel_yaw"));
+  EXPECT_TRUE(AnyContains(text::NoteTexts(r.trials[0].notes), "vel_yaw"));
 }
 
 TEST(BadDataTest, MissingOrEmptyForceColumnIsAnInputError) {
@@ -208,7 +209,7 @@ TEST(BadDataTest, GapsAreFoundAndReported) {
   for (const auto& g : r.trials[3].gaps) found = found || (g.t0 < 70.5 && g.t1 > 84.5);
   EXPECT_TRUE(found);
   EXPECT_NE(r.status, IdentifyStatus::kFailed);
-  EXPECT_TRUE(AnyContains(r.trials[3].notes, "gap"));
+  EXPECT_TRUE(AnyContains(text::NoteTexts(r.trials[3].notes), "gap"));
 }
 
 TEST(BadDataTest, ClosedLoopLogIsFlaggedAndTheInertiaNotTrusted) {

@@ -6,6 +6,7 @@
 #include <iomanip>
 
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/text/diagnosis_notes_text.h"
 #include "uuvplan/text/finding_text.h"
 #include "uuvplan/text/identify_table.h"
 #include "uuvplan/text/quantity_text.h"
@@ -170,10 +171,10 @@ void PrintCandidateTests(const ident::DiagnosisResult& r, std::ostream& out) {
   for (const auto& t : r.tests) {
     std::string verdict = t.significant ? "significant" : "not significant";
     if (std::isfinite(t.gain)) {
-      verdict += t.accepted             ? ", ACCEPTED"
-                 : !t.removed.empty()   ? ", accepted, then removed: " + t.removed
-                 : t.not_chosen.empty() ? ", not enough gain"
-                                        : ", not chosen: " + t.not_chosen;
+      verdict += t.accepted      ? ", ACCEPTED"
+                 : t.removed     ? ", accepted, then removed: " + RemovedText(t)
+                 : !t.not_chosen ? ", not enough gain"
+                                 : ", not chosen: " + NotChosenText(t);
     }
     if (!std::isfinite(t.gain) && !t.unscored.empty()) {
       verdict += ", held-out gain cannot be scored: " + t.unscored;
@@ -200,7 +201,7 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
   for (const auto& [dof, why] : r.not_diagnosed) {
     out << "  FAILED: " << model::DofName(dof) << " not diagnosed: " << why << "\n";
   }
-  for (const auto& w : r.warnings) out << "  WARNING: " << w << "\n";
+  for (const auto& w : r.warnings) out << "  WARNING: " << NoteText(w) << "\n";
   if (r.findings.empty()) {
     // breakdowns: one per DOF whose standard model could be fitted and diagnosed.
     if (r.breakdowns.empty()) {
@@ -220,7 +221,7 @@ void PrintDiagnosis(const ident::DiagnosisResult& r, std::ostream& out) {
   out << "\nCandidate effects tested (significant: p < 1e-3 and a new parameter >= 3 sigma from "
          "'no effect'; accepted: also >= 0.5% better on held-out data):\n";
   PrintCandidateTests(r, out);
-  for (const auto& n : r.notes) out << "note: " << n << "\n";
+  for (const auto& n : r.notes) out << "note: " << NoteText(n) << "\n";
 }
 
 }  // namespace uuvplan::text

@@ -213,32 +213,25 @@ double AicGain(const CandidateTest& t) { return t.statistic - 2.0 * t.added_para
 
 // Why each other scored candidate of a round was not chosen: within 2 of the chosen one's AIC
 // and not separated by the held-out data either (paired difference within 2σ, or no σ: a
-// single held-out unit), it "cannot be told from" it, and is returned for the warning; else,
-// with enough gain of its own, the chosen one fits the fit trials better.
-std::vector<std::string> LabelRivals(const std::vector<Significant>& significant,
-                                     const std::vector<DiagnosisGain>& gains, int best,
-                                     model::Dof dof, double min_gain, DiagnosisResult* result) {
+// single held-out unit), it "cannot be told from" it, and its test's index is returned for the
+// warning; else, with enough gain of its own, the chosen one fits the fit trials better.
+std::vector<int> LabelRivals(const std::vector<Significant>& significant,
+                             const std::vector<DiagnosisGain>& gains, int best, double min_gain,
+                             DiagnosisResult* result) {
   const CandidateTest& chosen = result->tests[significant[best].test];
-  const std::string unit(model::VelocityUnit(dof));
-  std::vector<std::string> alike;
+  std::vector<int> alike;
   for (std::size_t i = 0; i < significant.size(); ++i) {
     if (static_cast<int>(i) == best || !gains[i].scored) continue;
     CandidateTest& t = result->tests[significant[i].test];
     double delta = 0.0, sigma = 0.0;
     diagnosis::PairedDifference(gains[i].after_by_unit, gains[best].after_by_unit, &delta, &sigma);
-    const std::string paired = "held-out MAE " + model::Significant(delta, 2) + " ± " +
-                               model::Significant(sigma, 2) + " " + unit + " against " +
-                               CandidateName(chosen) + "'s";
+    const NotChosen why{false, CandidateName(chosen), t.statistic, chosen.statistic, delta, sigma};
     if (std::abs(AicGain(chosen) - AicGain(t)) <= 2 && !(delta > 2 * sigma)) {
-      alike.push_back(CandidateName(t) + " (held-out gain " + model::Significant(100 * t.gain, 3) +
-                      "%, D = " + model::Significant(t.statistic, 4) + ")");
-      t.not_chosen = "cannot be told from " + CandidateName(chosen) + " (D " +
-                     model::Significant(t.statistic, 4) + " against " +
-                     model::Significant(chosen.statistic, 4) + "; " + paired + ")";
+      alike.push_back(significant[i].test);
+      t.not_chosen = why;
+      t.not_chosen->cannot_tell = true;
     } else if (gains[i].relative >= min_gain) {
-      t.not_chosen = CandidateName(chosen) + " fits the fit trials better (D " +
-                     model::Significant(chosen.statistic, 4) + " against " +
-                     model::Significant(t.statistic, 4) + "; " + paired + ")";
+      t.not_chosen = why;
     }
   }
   return alike;
@@ -285,29 +278,28 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
   clock->Lap("measure");
   if (best < 0) return false;
   const CandidateTest& chosen = result->tests[significant[best].test];
-  const std::vector<std::string> alike =
-      LabelRivals(significant, gains, best, d->dof, options.min_gain, result);
+  const std::vector<int> alike = LabelRivals(significant, gains, best, options.min_gain, result);
   if (!alike.empty()) {
-    result->warnings.push_back(
-        dof + ": these trials cannot tell " + CandidateName(chosen) + " (held-out gain " +
-        model::Significant(100 * chosen.gain, 3) +
-        "%, D = " + model::Significant(chosen.statistic, 4) + ") from " + model::Join(alike) +
-        ": " + CandidateName(chosen) +
-        " is kept for its larger likelihood on the fit trials, but either may be the cause; "
-        "trials where their predictions differ (other command levels or directions) are needed "
-        "to separate them");
+    DiagnosisNote w{DiagnosisNoteKind::kCannotTell, d->dof, {}, {}, {}};
+    const auto quote = [&w](const CandidateTest& t) {
+      w.names.push_back(CandidateName(t));
+      w.numbers.insert(w.numbers.end(), {t.gain, t.statistic});
+    };
+    quote(chosen);
+    for (int k : alike) quote(result->tests[k]);
+    result->warnings.push_back(std::move(w));
   }
   Accept(&significant[best], gains[best], used, d, result);
   clock->Lap("extend");
   return true;
 }
 
-// How far parameter `name` of `c` lies from "no effect" in `f`, in σ (and its text): against
+// How far parameter `name` of `c` lies from "no effect" in `f`, in σ (and its figures): against
 // the parameter it defaults to in the same fit when it has one (k_neg − k, with the σ of the
 // difference: "symmetric" means the final k, not the k of the round that proposed it), else
 // against the proposal's null value. -1 when it has no σ (held at a bound).
 double ZFromNull(const Candidate& c, const StructureFit& f, const std::string& name,
-                 std::string* text) {
+                 NullDistance* distance) {
   const std::vector<std::string>& names = f.oe.names;
   const auto at = [&](const std::string& n) {
     return static_cast<int>(std::find(names.begin(), names.end(), n) - names.begin());
@@ -317,20 +309,17 @@ double ZFromNull(const Candidate& c, const StructureFit& f, const std::string& n
   const model::ParameterFamily* family = model::FamilyOf(name);
   const int j = family && !family->defaults_to.empty() ? at(std::string(family->defaults_to)) : n;
   double null_value = model::NullValue(name), variance = f.oe.covariance(i, i);
-  std::string against = "'no effect'";
+  std::string against;
   if (j < n && f.oe.state[j] == ParameterState::kEstimated) {
     null_value = f.oe.theta[j];
     variance += f.oe.covariance(j, j) - 2 * f.oe.covariance(i, j);
-    against = names[j] + " = " + model::Significant(null_value, 4);
+    against = names[j];
   } else if (const auto null = c.proposal.null.find(name); null != c.proposal.null.end()) {
     null_value = null->second;
   }
   if (!(variance > 0)) return -1.0;
   const double z = std::abs(f.oe.theta[i] - null_value) / std::sqrt(variance);
-  *text = name + " = " + model::Significant(f.oe.theta[i], 4) + " ± " +
-          model::Significant(std::sqrt(f.oe.covariance(i, i)), 4) + " " +
-          model::Unit(name, f.structure.dof) + ", " + model::Significant(z, 2) + "σ from " +
-          against;
+  *distance = {name, f.oe.theta[i], std::sqrt(f.oe.covariance(i, i)), z, against, null_value};
   return z;
 }
 
@@ -347,23 +336,23 @@ void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& option
   while (!d->found.empty()) {
     int weakest = -1;
     double weakest_z = options.min_z;
-    std::string value;
+    NullDistance value;
     for (std::size_t i = 0; i < d->accepted.size(); ++i) {
       const Candidate& c = d->accepted[i];
       double z = -1.0;
-      std::string text;
+      NullDistance strongest;
       for (const std::string& name : c.added) {
-        std::string t;
+        NullDistance t;
         const double zi = ZFromNull(c, d->current, name, &t);
         if (zi > z) {
           z = zi;
-          text = t;
+          strongest = t;
         }
       }
       if (z >= 0 && z < weakest_z) {
         weakest = static_cast<int>(i);
         weakest_z = z;
-        value = text;
+        value = strongest;
       }
     }
     if (weakest < 0) return;
@@ -377,20 +366,22 @@ void RemoveVanished(const model::Vehicle& vehicle, const DiagnoseOptions& option
     for (const auto& [key, v] : c.proposal.settings) without.settings.erase(key);
     StructureFit refit = FitPhysical(vehicle, without, d->fit, start, d->current.dropped,
                                      options.output_error, d->current.values);
-    const std::string name = std::string(model::DofName(d->dof)) + ": " + c.effect->name;
     if (!refit.oe.ok()) {
-      result->notes.push_back(
-          name + " kept although " + value + " (< " + model::Significant(options.min_z, 2) +
-          "σ) in the final model: the refit without it failed (" + refit.oe.message + ")");
+      result->notes.push_back({DiagnosisNoteKind::kKeptRefitFailed,
+                               d->dof,
+                               {c.effect->name, refit.oe.message},
+                               {},
+                               {value, options.min_z}});
       return;
     }
     CandidateTest& t = result->tests[d->tests[weakest]];
     t.accepted = false;
-    t.removed = value + " in the final model (< " + model::Significant(options.min_z, 2) + "σ)";
-    result->notes.push_back(name + " accepted in round " + std::to_string(t.round + 1) +
-                            ", then removed: " + t.removed +
-                            "; the model refitted without it (the gains of the other findings "
-                            "were measured with it in)");
+    t.removed = Removal{value, options.min_z};
+    result->notes.push_back({DiagnosisNoteKind::kRemoved,
+                             d->dof,
+                             {c.effect->name},
+                             {static_cast<double>(t.round + 1)},
+                             *t.removed});
     d->current = std::move(refit);
     d->found.erase(d->found.begin() + weakest);
     d->accepted.erase(d->accepted.begin() + weakest);
@@ -438,22 +429,13 @@ void FinalParameters(const model::Campaign& campaign, const DiagnoseOptions& opt
 // Caveats printed beside the findings of a DOF.
 void AddCaveats(const DofIdentification& nominal, const DiagnoseOptions& options,
                 bool campaign_clock, Dof dof, DiagnosisResult* result) {
-  const std::string name(model::DofName(dof));
   for (const std::string& effect : options.candidates) {
     const model::EffectEntry* entry = model::Effects().Find(effect);
     if (campaign_clock || !entry || !entry->needs_campaign_clock) continue;
-    result->notes.push_back(name + ": " + effect +
-                            " not tested: the campaign gives no `start` time "
-                            "for every trial, so the campaign clock is unknown");
+    result->notes.push_back({DiagnosisNoteKind::kNeedsCampaignClock, dof, {effect}, {}, {}});
   }
   if (nominal.closed_loop_suspected) {
-    result->warnings.push_back(
-        name +
-        ": closed-loop data suspected (see the identification's warning): the logged force "
-        "reacts to the motion through a controller, so an effect found here may describe the "
-        "loop rather than the vehicle (a controller's delay looks like a sensor delay or "
-        "a thruster lag, its gains like drag or a thrust-map shape); confirm with open-loop "
-        "trials");
+    result->warnings.push_back({DiagnosisNoteKind::kClosedLoopSuspected, dof, {}, {}, {}});
   }
 }
 
@@ -476,7 +458,6 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   const OutputErrorOptions& oe = options.output_error;
   // Within the admissible ranges too: the standard model with a negative drag is no model.
   d.current = FitPhysical(campaign.vehicle, nominal.structure, d.fit, start, {}, oe, {});
-  const std::string name(model::DofName(d.dof));
   if (!d.current.oe.ok()) {
     result->not_diagnosed[d.dof] =
         "the output-error fit of its standard model failed (" + d.current.oe.message + ")";
@@ -501,10 +482,8 @@ void DiagnoseDof(const model::Campaign& campaign, const DiagnoseOptions& options
   AddInputNoise(campaign, options, &d, result);
   FinalParameters(campaign, options, &d);
   for (const std::string& p : d.current.held_at_bound) {
-    result->notes.push_back(name + ": the extended model holds " + p + " at its admissible bound " +
-                            model::Significant(d.current.held.at(p), 4) + " " +
-                            model::Unit(p, d.dof) +
-                            " (the free fit puts it outside: model/parameter.h)");
+    result->notes.push_back(
+        {DiagnosisNoteKind::kHeldAtBound, d.dof, {p}, {d.current.held.at(p)}, {}});
   }
   clock->Lap("measure");
   result->findings.insert(result->findings.end(), d.found.begin(), d.found.end());

@@ -66,7 +66,7 @@ void PairedDifference(const std::vector<std::pair<double, int>>& a,
 void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
                              const TrialDataOptions& data, const OutputErrorOptions& oe,
                              int replicates, std::uint64_t seed, int threads, StructureFit* f,
-                             std::vector<std::string>* notes);
+                             std::vector<DiagnosisNote>* notes);
 
 /// The corrected static thrust map of each mapping of `trials` that `f`'s thrust_map effect
 /// implies (diagnosis.h CorrectedThrustMap); empty without one.

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <optional>
 #include <random>
-#include <sstream>
 
 #include "diagnosis_internal.h"
 #include "parallel.h"
@@ -22,16 +21,18 @@ using model::Dof;
 // Velocity sensor σ of each other DOF a coupling term reads; false (and a note) when the
 // vehicle file declares no such sensor.
 bool LoggedVelocityNoise(const model::Vehicle& vehicle, const model::ModelStructure& s,
-                         std::map<Dof, double>* noise, std::vector<std::string>* notes) {
+                         std::map<Dof, double>* noise, std::vector<DiagnosisNote>* notes) {
   for (const std::string& parameter : s.WithPrefix(model::param::kCouplingPrefix)) {
     for (char letter : model::Qualifier(parameter)) {
       for (Dof d : model::kAllDofs) {
         if (d == s.dof || model::VelocityLetter(d) != letter) continue;
         const auto it = vehicle.sensors.find(d);
         if (it == vehicle.sensors.end() || !it->second.velocity) {
-          notes->push_back(std::string(model::DofName(s.dof)) + ": the vehicle file declares no " +
-                           std::string(model::DofName(d)) +
-                           " velocity sensor; the coupling's σ ignore the noise of its log");
+          notes->push_back({DiagnosisNoteKind::kNoCouplingSensor,
+                            s.dof,
+                            {std::string(model::DofName(d))},
+                            {},
+                            {}});
           return false;
         }
         (*noise)[d] = it->second.velocity->sigma;
@@ -77,8 +78,7 @@ void UpdateSigmas(StructureFit* f) {
 void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
                              const TrialDataOptions& data, const OutputErrorOptions& oe,
                              int replicates, std::uint64_t seed, int threads, StructureFit* f,
-                             std::vector<std::string>* notes) {
-  const std::string dof(model::DofName(f->structure.dof));
+                             std::vector<DiagnosisNote>* notes) {
   std::map<Dof, double> noise;
   if (!LoggedVelocityNoise(campaign.vehicle, f->structure, &noise, notes)) return;
   if (noise.empty() || replicates < 2) return;
@@ -103,17 +103,16 @@ void AddInputNoiseCovariance(const model::Campaign& campaign, const Trials& fit,
     ++used;
   }
   if (used < replicates / 2) {
-    notes->push_back(dof +
-                     ": refits with perturbed other-DOF velocities failed; the coupling's σ "
-                     "ignore the noise of their logs");
+    notes->push_back({DiagnosisNoteKind::kInputNoiseRefitsFailed, f->structure.dof, {}, {}, {}});
     return;
   }
   f->oe.covariance += cov / used;
   UpdateSigmas(f);
-  std::ostringstream s;
-  s << dof << ": σ include the noise of the logged velocities the coupling uses (" << used
-    << " refits with that noise redrawn)";
-  notes->push_back(s.str());
+  notes->push_back({DiagnosisNoteKind::kInputNoiseIncluded,
+                    f->structure.dof,
+                    {},
+                    {static_cast<double>(used)},
+                    {}});
 }
 
 }  // namespace uuvplan::ident::diagnosis

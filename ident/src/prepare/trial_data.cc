@@ -257,7 +257,7 @@ void UnwrapHeading(Signal* pos, TrialData* d) {
     pos->y[i] += offset;
   }
   if (jumps > 0)
-    d->notes.push_back("heading unwrapped (" + std::to_string(jumps) + " jumps of 2π)");
+    d->notes.push_back({TrialNoteKind::kHeadingUnwrapped, {}, {static_cast<double>(jumps)}});
 }
 
 // The share of a record's samples in motion (not exactly 0) that repeat the previous value
@@ -303,21 +303,18 @@ Signal Clean(Signal s, double declared, const char* what, const TrialDataOptions
     }
     *out.outliers = DetectOutliers(s, test, declared, &steps);
     if (!out.outliers->empty()) {
-      d->notes.push_back(std::to_string(out.outliers->size()) + " " + what +
-                         " outlier(s) excluded (first at t = " +
-                         model::Significant(out.outliers->front().t + d->time_offset, 4) +
-                         " s, residual " + model::Significant(out.outliers->front().residual, 4) +
-                         ")");
+      d->notes.push_back(
+          {TrialNoteKind::kOutliersExcluded,
+           {what},
+           {static_cast<double>(out.outliers->size()), out.outliers->front().t + d->time_offset,
+            out.outliers->front().residual}});
       s = RemoveSamples(s, *out.outliers);
     }
   }
   *out.estimated = NoiseSigmaFromDifferences(s);
   *out.sigma = declared > 0 ? declared : *out.estimated;
   if (declared > 0 && *out.estimated > 0 && (*out.estimated > 3 * declared)) {
-    d->notes.push_back(std::string(what) + " noise estimated from the data (" +
-                       model::Significant(*out.estimated, 4) +
-                       ") is more than 3× the declared sensor sigma (" +
-                       model::Significant(declared, 4) + ")");
+    d->notes.push_back({TrialNoteKind::kNoiseAboveDeclared, {what}, {*out.estimated, declared}});
   }
   return s;
 }
@@ -370,16 +367,16 @@ void CleanMeasurements(Measurements m, const model::Vehicle& vehicle, const Tria
   if (m.position_column && !d->has_position()) d->unusable_columns.push_back("pos_" + dof_name);
   if (m.velocity_column && !d->has_velocity()) d->unusable_columns.push_back("vel_" + dof_name);
   for (const std::string& c : d->unusable_columns) {
-    d->notes.push_back("column " + c + " has fewer than 3 values (all NaN?): not used");
+    d->notes.push_back({TrialNoteKind::kUnusableColumn, {c}, {}});
   }
   const Signal& main = d->has_velocity() ? d->velocity : d->position;
   d->gaps = FindGaps(main.t, o.gap_factor);
   if (!d->gaps.empty()) {
     double longest = 0.0;
     for (const Gap& g : d->gaps) longest = std::max(longest, g.t1 - g.t0);
-    d->notes.push_back(std::to_string(d->gaps.size()) + " gap(s) in the " +
-                       (d->has_velocity() ? "velocity" : "position") + " samples (longest " +
-                       model::Significant(longest, 4) + " s); filters do not cross them");
+    const char* signal = d->has_velocity() ? "velocity" : "position";
+    d->notes.push_back(
+        {TrialNoteKind::kGaps, {signal}, {static_cast<double>(d->gaps.size()), longest}});
   }
 }
 
@@ -481,10 +478,7 @@ double FirstForceTime(const model::TrialLog& log, Dof dof, TrialData* d) {
   std::size_t i = 0;
   while (i < f.size() && std::isnan(f[i])) ++i;
   if (i == 0 || i >= f.size()) return log.t.front();
-  d->notes.push_back(
-      "the first " + model::Significant(log.t[i] - log.t.front(), 4) +
-      " s of the log precede its first force row (t = " + model::Significant(log.t[i], 4) +
-      " s): their measurements are not used (the force there was not logged)");
+  d->notes.push_back({TrialNoteKind::kBeforeFirstForce, {}, {log.t[i] - log.t.front(), log.t[i]}});
   return log.t[i];
 }
 
@@ -513,7 +507,7 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
   if (given_up) *given_up = model::TrialLog{};  // `log` is gone from here on
   CleanMeasurements(std::move(m), vehicle, o, &d);
   EstimateVelocity(o, where, &d);
-  for (std::string& n : log_notes) d.notes.push_back(std::move(n));
+  for (std::string& n : log_notes) d.notes.push_back({TrialNoteKind::kLog, {std::move(n)}, {}});
   return d;
 }
 

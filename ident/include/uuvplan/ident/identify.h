@@ -169,7 +169,7 @@ struct TrialReport {
   double time_offset = 0.0;
   std::vector<Outlier> position_outliers, velocity_outliers;  ///< times in trial time
   std::vector<Gap> gaps;
-  std::vector<std::string> notes;
+  std::vector<TrialNote> notes;
 };
 
 /// What an identification did, in the style of Ceres' Solver::Summary: the status, the wall

@@ -15,6 +15,7 @@
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/dof_model.h"
 #include "uuvplan/model/truth.h"
+#include "uuvplan/model/util/enum_names.h"
 
 namespace uuvplan::ident {
 
@@ -55,10 +56,26 @@ struct TrialScore {
   TrialFit fit;  ///< the free run's scores (validation.h)
 };
 
+/// What a ScoreNote says.
+enum class ScoreNoteKind {
+  kNoModelForDof,  ///< the trial's DOF has no dofs.<dof>.params in the model scored
+};
+
+inline constexpr model::EnumNames<ScoreNoteKind, 1> kScoreNoteKindNames{{{
+    {ScoreNoteKind::kNoModelForDof, "no_model_for_dof"},
+}}};
+
+/// A remark on the scoring (text/score_notes_text.h words it).
+struct ScoreNote {
+  ScoreNoteKind kind = ScoreNoteKind::kNoModelForDof;
+  std::string trial;  ///< the trial's file
+  model::Dof dof = model::Dof::kSurge;
+};
+
 struct ScoreResult {
   std::vector<TrialScore> trials;  ///< campaign order, trials of the scored DOFs
   std::vector<DofScore> dofs;
-  std::vector<std::string> notes;  ///< trials skipped (no model for their DOF)
+  std::vector<ScoreNote> notes;  ///< trials skipped (no model for their DOF)
 };
 
 /// Scores `given` (a vehicle with dofs.<dof>.params and effects, model/truth.h) on every trial

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "uuvplan/ident/diagnosis/diagnosis_note.h"
 #include "uuvplan/ident/estimate.h"
 #include "uuvplan/ident/estimators/output_error.h"
 #include "uuvplan/ident/identify.h"
@@ -178,10 +179,10 @@ struct CandidateTest {
   bool accepted = false;  ///< significant, held-out gain ≥ min_gain, and chosen in its round
   /// A significant candidate with enough held-out gain that was not chosen: which one was, and
   /// whether the held-out data can tell the two apart (paired difference of their MAE > 2σ).
-  std::string not_chosen;
+  std::optional<NotChosen> not_chosen;
   /// Accepted, then removed by the final model's backward test: its new parameters no longer
   /// min_z σ from their null values once the effects found after it are in (which, and why).
-  std::string removed;
+  std::optional<Removal> removed;
   int round = 0;  ///< greedy round (0 = against the standard model)
 };
 
@@ -197,9 +198,10 @@ struct DiagnosisResult {
   /// The standard model per DOF diagnosed, as diagnosis fits it (output error, every parameter
   /// free: the "before" of the first finding), with its free runs in `fit` likewise.
   std::vector<DofIdentification> standard;
-  /// What limits the findings' meaning (e.g. closed-loop data), to show beside them.
-  std::vector<std::string> warnings;
-  std::vector<std::string> notes;
+  /// What limits the findings' meaning (e.g. closed-loop data), to show beside them, and the
+  /// remarks on how they were reached (text/diagnosis_notes_text.h words both).
+  std::vector<DiagnosisNote> warnings;
+  std::vector<DiagnosisNote> notes;
   /// The DOFs asked for (or with a fit trial), in the order diagnosed.
   std::vector<model::Dof> dofs;
   /// The DOFs refused, and why: the standard model's identification failed (a diagnosis of a

@@ -17,6 +17,7 @@
 
 #include "uuvplan/ident/prepare/outliers.h"
 #include "uuvplan/ident/prepare/steady_detection.h"
+#include "uuvplan/ident/prepare/trial_note.h"
 #include "uuvplan/ident/prepare/velocity_estimation.h"
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/dof_model.h"
@@ -107,7 +108,7 @@ struct TrialData {
 
   std::vector<Outlier> position_outliers, velocity_outliers;
   std::vector<Gap> gaps;
-  std::vector<std::string> notes;
+  std::vector<TrialNote> notes;  ///< what preparing it did (text/trial_notes_text.h)
   /// Measurement columns of the DOF present in the log but without usable values (all NaN or
   /// fewer than 3 samples), e.g. "vel_yaw": not used, and said so (Identify warns).
   std::vector<std::string> unusable_columns;
