@@ -31,7 +31,10 @@ model::ModelStructure WrittenStructure(const model::ModelStructure& base,
 
 std::shared_ptr<const model::DofModel> FitWrittenModel(const StageInputs& c, DofIdentification* r) {
   const auto written = c.vehicle.models.find(r->dof);
-  if (written == c.vehicle.models.end() || r->status == IdentifyStatus::kFailed) return nullptr;
+  // A standard model that fits only with non-physical values misses an effect: the file's
+  // model may hold it (diagnosis refits such a DOF too).
+  const bool fitted = r->status != IdentifyStatus::kFailed || r->failed_only_non_physical;
+  if (written == c.vehicle.models.end() || !fitted || r->theta.size() == 0) return nullptr;
   std::vector<std::string> added;
   const model::ModelStructure structure = WrittenStructure(r->structure, written->second, &added);
   if (added.empty()) return nullptr;
@@ -47,6 +50,12 @@ std::shared_ptr<const model::DofModel> FitWrittenModel(const StageInputs& c, Dof
                           ") could not be fitted on this campaign: " + fit.oe.message +
                           "; the standard model's estimates are reported");
     return nullptr;
+  }
+  if (r->status == IdentifyStatus::kFailed) {
+    r->notes.push_back("the standard model alone fits only with non-physical values (" +
+                       r->message + ")");
+    r->status = IdentifyStatus::kOk;  // ValidateStage states it for the file's model
+    r->failed_only_non_physical = false;
   }
   *r = WithStructureFit(*r, fit);
   r->output_error = fit.oe;

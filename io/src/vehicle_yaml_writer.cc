@@ -138,10 +138,9 @@ void EmitModel(YAML::Emitter& out, const DofParameters& model) {
   Texts eta;
   std::map<std::string, Texts> plain;  // effect -> key -> value
   std::map<std::string, std::map<std::string, Texts>> qualified;
-  if (model.identified()) {
-    out << YAML::Comment("identified: estimates, rounded from their 1σ (sigma)");
-  }
-  out << YAML::Key << "params" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "params" << YAML::Value;
+  if (model.identified()) out << YAML::Comment("identified: estimates rounded from their 1σ");
+  out << YAML::BeginMap;
   for (const auto& [name, value] : model.params) {
     const EffectEntry* owner = Effects().OwnerOf(name);
     const ParameterFamily* family = FamilyOf(name);
@@ -188,9 +187,9 @@ void EmitDofs(YAML::Emitter& out, const Vehicle& v) {
     out << YAML::Key << std::string(DofName(dof)) << YAML::Value << YAML::BeginMap;
     if (const auto p = v.priors.find(dof); p != v.priors.end() && p->second.drag) {
       const DragPrior& d = *p->second.drag;
-      out << YAML::Comment("a priori");
       out << YAML::Key << "drag" << YAML::Value;
       EmitFlowMap(out, {{"k", d.k}, {"kq", d.kq}, {"rel_sigma", d.rel_sigma}});
+      out << YAML::Comment("a priori");
     }
     if (const auto p = v.priors.find(dof); p != v.priors.end() && p->second.added_mass) {
       out << YAML::Key << "added_mass" << YAML::Value;

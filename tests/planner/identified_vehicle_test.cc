@@ -30,7 +30,7 @@ model::Vehicle WithIdentifiedSurge(model::Vehicle v, const model::DofParameters&
 TEST(PlanningBox, AnIdentifiedModelCentresTheBoxAtThreeSigma) {
   model::DofParameters surge;
   surge.params = {{"m", 900.0}, {"k", 45.0}, {"kq", 300.0}};
-  surge.sigma = {{"m", 30.0}, {"k", 5.0}, {"kq", 20.0}};
+  surge.sigma = {{"m", 30.0}, {"k", 3.0}, {"kq", 20.0}};
   const model::Vehicle v = WithIdentifiedSurge(testing::Romeo(), surge);
   const std::vector<std::string> names = {"m", "k", "kq", "bias"};
   std::vector<std::string> notes;
@@ -42,10 +42,18 @@ TEST(PlanningBox, AnIdentifiedModelCentresTheBoxAtThreeSigma) {
   EXPECT_NEAR(box.axes[0].lo, 1.0 - 3.0 * 30.0 / 900.0, 1e-12);
   EXPECT_NEAR(box.axes[0].hi, 1.0 + 3.0 * 30.0 / 900.0, 1e-12);
   ASSERT_EQ(box.axes[1].name, "drag");  // k and kq together: the wider of 3σ/|θ|
-  EXPECT_NEAR(box.axes[1].hi, 1.0 + 3.0 * 5.0 / 45.0, 1e-12);
+  EXPECT_NEAR(box.axes[1].hi, 1.0 + 3.0 * 20.0 / 300.0, 1e-12);
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_THAT(notes[0], HasSubstr("surge: planned about the identified model"));
   EXPECT_THAT(notes[0], HasSubstr("m = 900 ± 30 kg"));
+
+  // An insignificant k (± 3σ = ± 200%) does not widen the drag axis beyond the vehicle file's
+  // a priori ± rel_sigma (cases/romeo: 0.3): an estimate only narrows what was known.
+  surge.sigma["k"] = 30.0;
+  const ParameterBox capped = PlanningBox(WithIdentifiedSurge(testing::Romeo(), surge),
+                                          model::Dof::kSurge, names, BoxOptions{}, nullptr);
+  EXPECT_NEAR(capped.axes[1].lo, 0.7, 1e-12);
+  EXPECT_NEAR(capped.axes[1].hi, 1.3, 1e-12);
 
   // Without σ (a hand-written model) the box stays the a priori one.
   surge.sigma.clear();

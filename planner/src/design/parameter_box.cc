@@ -214,7 +214,8 @@ ParameterBox BoxAboutEstimates(const ParameterBox& apriori, const std::vector<st
 
 namespace {
 
-// "m = 0.575 ± 0.073 kg·m², k = 4.29 ± 0.1 N·m·s/rad": the estimates a box is centred on.
+// "m = 0.575 ± 0.073 kg·m², k = 4.29 ± 0.1 N·m·s/rad": the estimates a box is centred on (a
+// parameter held, σ 0, as "η = 1 (held)").
 std::string EstimatesText(model::Dof dof, const model::DofParameters& model,
                           const std::vector<std::string>& names) {
   std::string text;
@@ -222,10 +223,29 @@ std::string EstimatesText(model::Dof dof, const model::DofParameters& model,
     const auto value = model.params.find(name);
     const auto sigma = model.sigma.find(name);
     if (value == model.params.end() || sigma == model.sigma.end()) continue;
-    text += (text.empty() ? "" : ", ") + name + " = " + model::Significant(value->second, 4) +
-            " ± " + model::Significant(sigma->second, 2) + " " + model::Unit(name, dof);
+    const std::string unit = model::Unit(name, dof);
+    text += (text.empty() ? "" : ", ") + name + " = " + model::Significant(value->second, 4);
+    if (sigma->second > 0) {
+      text += " ± " + model::Significant(sigma->second, 2) + (unit.empty() ? "" : " " + unit);
+    } else {
+      text += (unit.empty() ? "" : " " + unit) + " (held)";
+    }
   }
   return text;
+}
+
+// No axis of `box` wider than the same axis of `apriori` (as factors of their own centres):
+// an estimate narrows what was known a priori, never widens it (an insignificant k at
+// ± 300% would otherwise make the drag box wider than the vehicle file's ± rel_sigma).
+void NoWiderThan(const ParameterBox& apriori, ParameterBox* box) {
+  for (BoxAxis& axis : box->axes) {
+    for (const BoxAxis& a : apriori.axes) {
+      if (a.name != axis.name || axis.hi - axis.lo <= a.hi - a.lo) continue;
+      const double centre = 0.5 * (axis.lo + axis.hi), half = 0.5 * (a.hi - a.lo);
+      axis.lo = std::max(0.05, centre - half);
+      axis.hi = centre + half;
+    }
+  }
 }
 
 }  // namespace
@@ -241,11 +261,14 @@ ParameterBox PlanningBox(const model::Vehicle& vehicle, model::Dof dof,
   if (notes) {
     notes->push_back(std::string(model::DofName(dof)) +
                      ": planned about the identified model of the vehicle file ± " +
-                     model::Significant(options.estimate_sigmas, 3) + "σ (" +
+                     model::Significant(options.estimate_sigmas, 3) +
+                     "σ, no wider than the a priori box (" +
                      EstimatesText(dof, model->second, names) + ")");
   }
-  return BoxAboutEstimates(apriori, names, model->second.params, model->second.sigma,
-                           options.estimate_sigmas, options);
+  ParameterBox box = BoxAboutEstimates(apriori, names, model->second.params, model->second.sigma,
+                                       options.estimate_sigmas, options);
+  NoWiderThan(apriori, &box);
+  return box;
 }
 
 }  // namespace uuvplan::planner
