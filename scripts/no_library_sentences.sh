@@ -17,6 +17,7 @@ pending=(
   ident/src/identify_prepare.cc
   ident/src/identify_refine.cc
   ident/src/identify_validate.cc
+  ident/src/identify_written_model.cc
   ident/src/stats/monte_carlo.cc
   model/src/trial_log.cc
   planner/src/design/combined_design.cc

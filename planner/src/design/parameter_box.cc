@@ -223,7 +223,8 @@ std::string EstimatesText(model::Dof dof, const model::DofParameters& model,
     const auto value = model.params.find(name);
     const auto sigma = model.sigma.find(name);
     if (value == model.params.end() || sigma == model.sigma.end()) continue;
-    const std::string unit = model::Unit(name, dof);
+    std::string unit = model::Unit(name, dof);
+    if (unit == "1") unit.clear();  // a ratio (η)
     text += (text.empty() ? "" : ", ") + name + " = " + model::Significant(value->second, 4);
     if (sigma->second > 0) {
       text += " ± " + model::Significant(sigma->second, 2) + (unit.empty() ? "" : " " + unit);
