@@ -34,7 +34,7 @@ std::string SigmaNumber(double sigma) {
 
 std::string EstimateNumber(double value, double sigma) {
   if (!(sigma > 0) || !std::isfinite(sigma) || !std::isfinite(value)) return FileNumber(value);
-  const int place = static_cast<int>(std::floor(std::log10(sigma))) - 1;  // σ's 2nd digit
+  const int place = static_cast<int>(std::floor(std::log10(sigma))) - 2;  // past σ's 2nd digit
   const double unit = std::pow(10.0, place);
   if (std::abs(value) < 0.5 * unit) return "0";
   const int leading = static_cast<int>(std::floor(std::log10(std::abs(value))));

@@ -47,8 +47,8 @@ TEST(VehicleModelIo, WrittenModelReadsBackWithSigmaEffectsAndSettings) {
   const DofTruth& back = read.dofs.at(Dof::kSurge);
   EXPECT_EQ(back.params.at("bias_step"), 0.0);  // the truth reader's default (one ballast level)
   for (const auto& [name, value] : m.params) {
-    // An estimate is rounded at its σ's second significant digit: at most 5% of σ away.
-    EXPECT_NEAR(back.params.at(name), value, 0.05 * m.sigma.at(name)) << name;
+    // An estimate is rounded one digit past its σ's second: at most 0.5% of σ away.
+    EXPECT_NEAR(back.params.at(name), value, 0.005 * m.sigma.at(name)) << name;
     // σ to 2 significant digits: at most 5% of itself away.
     EXPECT_NEAR(back.sigma.at(name), m.sigma.at(name), 0.05 * m.sigma.at(name)) << name;
     EXPECT_EQ(v.models.at(Dof::kSurge).params.at(name), back.params.at(name)) << name;
@@ -70,22 +70,22 @@ TEST(VehicleModelIo, WrittenNumbersAreRoundedFromSigmaAndShort) {
   io::WriteVehicleYaml(path, v, "readable");
   const std::string text = ReadText(path);
   EXPECT_THAT(text, HasSubstr("mass: 6.621\n"));
-  EXPECT_THAT(text, HasSubstr("m: 0.575\n"));  // σ 0.073: the thousandths
-  EXPECT_THAT(text, HasSubstr("k: 4.29\n"));   // σ 0.10: the hundredths
-  EXPECT_THAT(text, HasSubstr("m: 0.073\n"));  // σ, two digits
+  EXPECT_THAT(text, HasSubstr("m: 0.5751\n"));  // σ 0.073: the ten-thousandths
+  EXPECT_THAT(text, HasSubstr("k: 4.291\n"));   // σ 0.10: the thousandths
+  EXPECT_THAT(text, HasSubstr("m: 0.073\n"));   // σ, two digits
   EXPECT_THAT(text, HasSubstr("kq: 0.3333333333\n"));
   EXPECT_THAT(text, HasSubstr("# identified"));  // the identified part is labelled
   EXPECT_THAT(text, HasSubstr("# a priori"));
   const Vehicle back = io::ReadVehicle(path);
   EXPECT_EQ(back.mass, 6.621);
-  EXPECT_EQ(back.models.at(Dof::kSurge).params.at("m"), 0.575);
+  EXPECT_EQ(back.models.at(Dof::kSurge).params.at("m"), 0.5751);
 }
 
 TEST(FileNumbers, EstimateDigitsFollowSigma) {
-  EXPECT_EQ(io::EstimateNumber(890.4321, 25.0), "890");
-  EXPECT_EQ(io::EstimateNumber(0.57512, 0.073), "0.575");
-  EXPECT_EQ(io::EstimateNumber(-3.14159, 0.0012), "-3.1416");
-  EXPECT_EQ(io::EstimateNumber(0.003, 0.5), "0");        // below σ's second digit: 0.00 ± 0.50
+  EXPECT_EQ(io::EstimateNumber(890.4321, 25.0), "890.4");
+  EXPECT_EQ(io::EstimateNumber(0.57512, 0.073), "0.5751");
+  EXPECT_EQ(io::EstimateNumber(-3.141592, 0.0012), "-3.14159");
+  EXPECT_EQ(io::EstimateNumber(0.0003, 0.5), "0");       // below the rounding place: 0.000 ± 0.50
   EXPECT_EQ(io::EstimateNumber(12345.0, 0.0), "12345");  // held: exact
   EXPECT_EQ(io::SigmaNumber(0.0731234), "0.073");
   EXPECT_EQ(io::SigmaNumber(0.0), "0");

