@@ -127,14 +127,13 @@ std::vector<Eigen::MatrixXd> PriorPerPoint(const DofPlanningProblem& ctx,
 
 // The box about the estimates (± box_sigmas σ); an axis whose parameters have no estimate with
 // a σ keeps the range of the box the vehicle gives (PlanningBox).
-ParameterBox BoxAboutEstimates(const model::Vehicle& vehicle, const model::Pool& pool,
-                               model::Dof dof, const ParameterValues& estimates,
-                               const ParameterValues& sigmas, const NextTrialOptions& o,
-                               std::vector<std::string>* notes) {
+ParameterBox NextTrialBox(const model::Vehicle& vehicle, const model::Pool& pool, model::Dof dof,
+                          const ParameterValues& estimates, const ParameterValues& sigmas,
+                          const NextTrialOptions& o, std::vector<std::string>* notes) {
   std::unique_ptr<DofPlanningProblem> probe =
       DofPlanningProblem::APriori(vehicle, pool, dof, o.schedule.planner, notes);
-  return planner::BoxAboutEstimates(probe->box(), probe->model().parameter_names(), estimates,
-                                    sigmas, o.box_sigmas, o.schedule.planner.box);
+  return BoxAboutEstimates(probe->box(), probe->model().parameter_names(), estimates, sigmas,
+                           o.box_sigmas, o.schedule.planner.box);
 }
 
 // The DOF's trial families, each designed on the information of the prior and of the trials
@@ -351,7 +350,7 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
   for (std::size_t i = 0; i < names.size(); ++i) {
     sigmas[names[i]] = std::sqrt(std::max(0.0, covariance(i, i)));
   }
-  ParameterBox box = BoxAboutEstimates(vehicle, pool, dof, estimates, sigmas, o, &result.notes);
+  ParameterBox box = NextTrialBox(vehicle, pool, dof, estimates, sigmas, o, &result.notes);
   DofPlanningProblem ctx(vehicle, pool, dof, std::move(box), o.schedule.planner);
   const PriorInformation prior = PriorInformation::FromCovariance(names, covariance);
   const std::vector<Eigen::MatrixXd> M0 = PriorPerPoint(ctx, &prior);
