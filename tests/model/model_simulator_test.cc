@@ -16,17 +16,6 @@
 namespace uuvplan::model {
 namespace {
 
-Vehicle TwoMappingVehicle() {
-  Vehicle v;
-  v.name = "test";
-  v.mass = 450;
-  v.size = {1.3, 0.9, 1.0};
-  ThrustMapping front{"front", Dof::kSurge, {}, OpenWater::kPositive};
-  ThrustMapping rear{"rear", Dof::kSurge, {}, OpenWater::kNegative};
-  v.mappings = {front, rear};
-  return v;
-}
-
 // m·dxi/dt = -k·xi + a + b·sin(w·t) from rest:
 //   xi(t) = a/k·(1 - e^{-t/tc}) + b/(k² + m²w²)·(k·sin wt - m·w·cos wt + m·w·e^{-t/tc})
 double LinearSineVelocity(double m, double k, double a, double b, double w, double t) {
@@ -37,7 +26,7 @@ double LinearSineVelocity(double m, double k, double a, double b, double w, doub
 }
 
 TEST(SimulatorTest, Rk4ConvergesAtFourthOrderOnTheLinearModel) {
-  const Vehicle v = TwoMappingVehicle();
+  const Vehicle v = testing::FrontRearVehicle();
   ModelStructure s;
   s.dof = Dof::kSurge;
   s.Remove("kq");
@@ -68,7 +57,7 @@ TEST(SimulatorTest, Rk4ConvergesAtFourthOrderOnTheLinearModel) {
 TEST(SimulatorTest, StepsEndAtSegmentBreakpoints) {
   // A force step at t = 1.3 s inside a 1 s RK4 step would cost the method its order; steps
   // end at breakpoints, so the coarse simulation matches the analytic one to RK4 accuracy.
-  const Vehicle v = TwoMappingVehicle();
+  const Vehicle v = testing::FrontRearVehicle();
   ModelStructure s;
   s.dof = Dof::kSurge;
   s.Remove("kq");
@@ -91,7 +80,7 @@ TEST(SimulatorTest, StepsEndAtSegmentBreakpoints) {
 // Every effect on: asymmetric drag, two mappings with free eta, ballast, lag, dead zone,
 // advance loss, coupling to an exogenous yaw rate, drift, sensor delay, thrust-map shape.
 struct FullModel {
-  Vehicle vehicle = TwoMappingVehicle();
+  Vehicle vehicle = testing::FrontRearVehicle();
   ModelStructure structure;
   std::unique_ptr<DofModel> model;
   Eigen::VectorXd theta;
@@ -184,7 +173,7 @@ TEST(DofModelTest, LinearizeMatchesFiniteDifferences) {
 
 TEST(DofModelTest, LinearizeWithoutLagMatchesFiniteDifferences) {
   // Without lag the actuator path (dead zone, thrust-map shape) enters ∂(ΣF/m)/∂θ directly.
-  Vehicle vehicle = TwoMappingVehicle();
+  Vehicle vehicle = testing::FrontRearVehicle();
   ModelStructure s;
   s.dof = Dof::kSurge;
   s.Add("deadzone");
@@ -369,7 +358,7 @@ TEST(ExcitationTest, SwitchedMultisineAgreesWithLibmAtStageTimesAndSwitches) {
 
 TEST(VehicleTest, RomeoYawInertiaOfAUniformBox) {
   // Ref 000 §IV-D: I_r = (1/12)·450·(1.3² + 0.9²) = 93.75 kg·m².
-  Vehicle v = TwoMappingVehicle();
+  Vehicle v = testing::FrontRearVehicle();
   EXPECT_NEAR(v.RigidInertia(Dof::kYaw), 93.75, 1e-12);
   EXPECT_DOUBLE_EQ(v.RigidInertia(Dof::kSurge), 450.0);
   v.inertia[Dof::kYaw] = 84.0;  // a given inertia wins over the box

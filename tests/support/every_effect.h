@@ -7,8 +7,21 @@
 #include <string>
 
 #include "uuvplan/model/model_structure.h"
+#include "uuvplan/model/vehicle.h"
 
 namespace uuvplan::testing {
+
+/// A 450 kg vehicle (ROMEO's mass and size) with the surge mappings "front" (open water forward)
+/// and "rear" (open water backward) and no thrusters: the DOF model needs only the mappings.
+inline model::Vehicle FrontRearVehicle() {
+  model::Vehicle v;
+  v.name = "test";
+  v.mass = 450;
+  v.size = {1.3, 0.9, 1.0};
+  v.mappings = {{"front", model::Dof::kSurge, {}, model::OpenWater::kPositive},
+                {"rear", model::Dof::kSurge, {}, model::OpenWater::kNegative}};
+  return v;
+}
 
 /// Asymmetric drag, ballast, a free η of front.neg and rear.pos, thruster lag, dead zone,
 /// advance loss, coupling to the yaw rate (coupling.rr), drift, sensor delay and the thrust
