@@ -38,13 +38,22 @@ std::shared_ptr<const model::DofModel> FitWrittenModel(const StageInputs& c, Dof
   std::vector<std::string> added;
   const model::ModelStructure structure = WrittenStructure(r->structure, written->second, &added);
   if (added.empty()) return nullptr;
-  Values start = written->second.params;  // the effects from the file's values
+  // Two starts, the lower cost kept: the file's model as written (its m, drag and bias belong
+  // with its effects), and its effects with the standard fit's estimates of the rest. When the
+  // standard model is badly wrong (the effects are large) its estimates lead the fit to another
+  // optimum: on a thrust map with a lag the loop's estimates moved by 50σ between trials.
+  Values with_standard = written->second.params;
   for (std::size_t i = 0; i < r->parameter_names.size(); ++i) {
-    start[r->parameter_names[i]] = r->theta[static_cast<Eigen::Index>(i)];  // the rest estimated
+    with_standard[r->parameter_names[i]] = r->theta[static_cast<Eigen::Index>(i)];
   }
+  Values as_written = with_standard;  // the file's values where it has them (η: the campaign's)
+  for (const auto& [name, value] : written->second.params) as_written[name] = value;
   const std::string list = model::Join(added, ", ");
-  const StructureFit fit =
-      FitPhysical(c.vehicle, structure, c.trials.fit, start, {}, c.output_error, start);
+  StructureFit fit = FitPhysical(c.vehicle, structure, c.trials.fit, with_standard, {},
+                                 c.output_error, with_standard);
+  StructureFit other =
+      FitPhysical(c.vehicle, structure, c.trials.fit, as_written, {}, c.output_error, as_written);
+  if (other.oe.ok() && (!fit.oe.ok() || other.oe.cost < fit.oe.cost)) fit = std::move(other);
   if (!fit.oe.ok()) {
     r->warnings.push_back("the vehicle file's model (with " + list +
                           ") could not be fitted on this campaign: " + fit.oe.message +

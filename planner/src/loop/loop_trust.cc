@@ -62,6 +62,8 @@ ConsistencyTest TestConsistency(const ident::DofIdentification& previous,
   for (int j = 0; j < static_cast<int>(current.params.size()); ++j) {
     const int i = ident::FindEstimate(previous.params, current.params[j].name);
     if (i < 0 || !Usable(previous, i) || !Usable(current, j)) continue;
+    // A variance the covariance holds as 0 (a parameter its fit held) tests nothing.
+    if (!(previous.covariance(i, i) > 0) || !(current.covariance(j, j) > 0)) continue;
     a.push_back(i);
     b.push_back(j);
     names.push_back(current.params[j].name);
@@ -80,8 +82,14 @@ ConsistencyTest TestConsistency(const ident::DofIdentification& previous,
   const Eigen::VectorXd s = c.diagonal().cwiseSqrt().cwiseInverse();
   const Eigen::VectorXd z = s.asDiagonal() * d;
   const Eigen::MatrixXd cz = s.asDiagonal() * c * s.asDiagonal();
-  t.tested = true;
   t.chi2 = z.dot(cz.completeOrthogonalDecomposition().solve(z));
+  if (!std::isfinite(t.chi2)) {
+    t.text =
+        "the newest trial cannot be tested against the estimate before it (their "
+        "covariance is not finite)";
+    return t;
+  }
+  t.tested = true;
   t.dof = n;
   t.p_value = ident::ChiSquareSurvival(t.chi2, n);
   t.consistent = t.p_value >= level;
