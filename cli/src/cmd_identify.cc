@@ -112,25 +112,6 @@ void RefuseChainOptionsWithCoupled(const IdentifyFlags& co) {
   }
 }
 
-// The identified model of every DOF into --write-vehicle's file; nothing written (false) when
-// a DOF failed: the file would mix an identified model with a failed one's a priori box.
-bool WriteIdentifiedVehicle(const IdentifyFlags& co, const model::Vehicle& vehicle,
-                            const ident::IdentifyResult& result) {
-  std::vector<const ident::DofIdentification*> dofs;
-  for (const ident::DofIdentification& d : result.dofs) {
-    if (d.status == ident::IdentifyStatus::kFailed) {
-      std::cerr << "uuvplan: identify: error: " << co.write_vehicle
-                << " not written: " << model::DofName(d.dof) << " was not identified\n";
-      return false;
-    }
-    dofs.push_back(&d);
-  }
-  return WriteModelVehicle("identify", co.write_vehicle, co.campaign, vehicle, dofs,
-                           "the identified model,\nsigma: 1σ of each parameter (0: held, not "
-                           "estimated).\nEvery command reads it: schedule, next and loop plan "
-                           "about these estimates.");
-}
-
 int RunIdentify(const IdentifyFlags& co) {
   if (co.model_kind == "coupled") RefuseChainOptionsWithCoupled(co);
   CheckFilterWindow(co.identify.data);
@@ -155,7 +136,11 @@ int RunIdentify(const IdentifyFlags& co) {
   if (!co.json.empty()) WriteJson(co.json, io::IdentifyJson(result));
   PrintBriefOnTerminal(result.Summary().Brief());
   const bool written =
-      co.write_vehicle.empty() || WriteIdentifiedVehicle(co, campaign.vehicle, result);
+      co.write_vehicle.empty() ||
+      WriteIdentifiedVehicle("identify", co.write_vehicle, co.campaign, campaign.vehicle, result,
+                             "the identified model,\nsigma: 1σ of each parameter (0: held, not "
+                             "estimated).\nEvery command reads it: schedule, next and loop plan "
+                             "about these estimates.");
   return result.status == ident::IdentifyStatus::kFailed || !written ? kExitActionNeeded : kExitOk;
 }
 

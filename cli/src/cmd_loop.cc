@@ -1,25 +1,30 @@
 // `uuvplan loop --truth TRUTH.yaml --pool POOL [--target PCT] [--budget N] [--seed N]
-// [--dof D]... [--json F] [--verbose]`: the design–identify loop against the virtual vehicle
-// of a truth file (planner/loop/design_loop.h, docs/loop.md): plan the most informative next trial,
-// run it on the virtual vehicle, identify from every trial so far, and repeat until every
-// parameter of interest (m; kq where significant, else k; every η) has a percentile error
-// below the target, or the trial budget is spent. Prints each iteration (trial planned,
-// estimates, σ, pool time) and the total pool time. Deterministic for a given seed.
+// [--dof D]... [--diagnose] [--json F] [--write-vehicle OUT] [--verbose]`: the design–identify
+// loop against the virtual vehicle of a truth file (planner/loop/design_loop.h, docs/loop.md):
+// plan the most informative next trial, run it on the virtual vehicle, identify from every
+// trial so far (with --diagnose, diagnose it and add the effects found to the model), and
+// repeat until every parameter of interest (m; kq where significant, else k; every η) has a
+// percentile error below the target, or the trial budget is spent. Prints each iteration
+// (trial planned, estimates, σ, effects added, pool time) and the total pool time.
+// Deterministic for a given seed.
 // Exit status (docs/cli.md, docs/loop.md): 0 converged; 1 a DOF cannot be given the trial it
 // needs in this pool; 2 bad input; 4 budget spent; 5 stuck (no trial the pool allows adds
 // information); 6 convergence refused (estimates inconsistent, non-physical or invalid).
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "uuvplan/cli/command.h"
 #include "uuvplan/cli/exit_status.h"
+#include "uuvplan/cli/model_vehicle_file.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/loop_json.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/model/thrust_reference.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/loop/design_loop.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
@@ -38,7 +43,9 @@ struct LoopFlags {
   std::string pool;
   std::vector<std::string> dofs;
   std::string json;
+  std::string write_vehicle;
   bool verbose = false;
+  bool diagnose = false;
   planner::LoopOptions loop;  ///< --target, --budget, --seed bound here
 };
 
@@ -74,6 +81,12 @@ void PrintIteration(const planner::LoopIteration& it, double target, bool verbos
     if (p.consistency.tested) out << "      " << p.consistency.text << "\n";
   }
   if (!it.sigma.empty()) out << "      " << SigmaLine(it) << "\n";
+  for (const auto& e : it.effects_entered) {
+    out << "      + " << text::EffectEnteredText(it.dof, e) << "\n";
+  }
+  for (const auto& e : it.effects_left) {
+    out << "      - " << text::EffectLeftText(it.dof, e) << "\n";
+  }
   if (verbose) {
     for (const auto& n : it.notes) out << "     note: " << n << "\n";
   }
@@ -101,6 +114,25 @@ std::vector<model::Dof> SimulableDofs(const LoopFlags& o, const model::Truth& tr
   return dofs;
 }
 
+// The truth restated at the thrust_map reference of each DOF's final estimate (a thrust map's m,
+// drag and bias depend on it: model/thrust_reference.h), with a line saying so.
+model::Truth AtEstimatesThrustReference(model::Truth truth, const ident::IdentifyResult& estimates,
+                                        std::ostream& out) {
+  for (auto& [dof, t] : truth.dofs) {
+    const ident::DofIdentification* id = estimates.Find(dof);
+    const auto& settings = id ? id->structure.settings : std::map<std::string, double>{};
+    const auto ref = settings.find(model::param::kThrustReference);
+    const auto own = t.settings.find(model::param::kThrustReference);
+    if (ref == settings.end() || own == t.settings.end() || own->second == ref->second) continue;
+    static_cast<model::DofParameters&>(t) = model::AtThrustReference(t, ref->second);
+    out << "  " << model::DofName(dof) << ": the truth restated at the estimate's thrust map "
+        << "reference " << text::Quantity(ref->second, model::Unit(model::param::kBias, dof))
+        << " (it has " << text::Quantity(own->second, model::Unit(model::param::kBias, dof))
+        << "): m, drag and bias scale with it\n";
+  }
+  return truth;
+}
+
 void PrintLoopSummary(const planner::LoopResult& r, const planner::LoopOptions& lo,
                       const model::Truth& truth, const std::string& message, std::ostream& out) {
   out << "\n"
@@ -114,8 +146,10 @@ void PrintLoopSummary(const planner::LoopResult& r, const planner::LoopOptions& 
     out << "; " << model::DofName(dof) << " " << model::DurationText(t);
   }
   out << "\nassumption: " << planner::kPredictedSigmaAssumption;
+  if (lo.diagnose) out << "\nassumption: " << text::DiagnosedModelAssumption();
   out << "\n\nFinal estimates against the truth:\n";
-  text::PrintProgress(r.progress, lo.step.target_percent, out, &truth);
+  const model::Truth compared = AtEstimatesThrustReference(truth, r.estimates, out);
+  text::PrintProgress(r.progress, lo.step.target_percent, out, &compared);
 }
 
 int RunLoopCommand(const LoopFlags& o) {
@@ -124,6 +158,10 @@ int RunLoopCommand(const LoopFlags& o) {
   const model::Pool pool = io::ReadPool(o.pool);
   planner::LoopOptions lo = o.loop;
   lo.step.dofs = SimulableDofs(o, truth);
+  if (o.diagnose) {
+    lo.diagnose.emplace();
+    lo.diagnose->threads = lo.step.identify.threads;
+  }
   const double target = lo.step.target_percent;
   std::ostream& out = ReportStream(o.json);
   out << "Design–identify loop on the virtual '" << truth.vehicle.name << "' of " << o.truth
@@ -158,6 +196,14 @@ int RunLoopCommand(const LoopFlags& o) {
   if (!o.json.empty()) {
     WriteJson(o.json, io::LoopResultJson(r, lo, verdict, pool, ExitStatus(r.status)));
   }
+  if (!o.write_vehicle.empty() &&
+      !WriteIdentifiedVehicle("loop", o.write_vehicle, "--truth " + o.truth + " --pool " + o.pool,
+                              truth.vehicle, r.estimates,
+                              "the model the loop identified last,\nsigma: 1σ of each "
+                              "parameter (0: held, not estimated).\nEvery command reads it: "
+                              "schedule, next and loop plan about these estimates.")) {
+    return ExitStatus(r.status) == 0 ? 1 : ExitStatus(r.status);
+  }
   return ExitStatus(r.status);
 }
 
@@ -173,6 +219,12 @@ void BindLoop(CLI::App* sub, LoopFlags* o) {
                   "DOF to identify (repeatable; default: every DOF the truth has parameters "
                   "for)");
   AddJsonOption(sub, &o->json, "also write the result");
+  sub->add_flag("--diagnose", o->diagnose,
+                "after each identification, diagnose the DOF's trials and add the effects found "
+                "to the model later trials are identified in");
+  sub->add_option("--write-vehicle", o->write_vehicle,
+                  "write the truth's vehicle with the model identified last (estimates, σ and "
+                  "the effects added), for schedule, next and identify");
   sub->add_flag("--verbose", o->verbose, "print each iteration's design and identification notes");
   AddThreadsOption(sub, {&o->loop.step.schedule.planner.threads, &o->loop.step.identify.threads},
                    "planning the DOFs' candidate trials and each iteration's identification");

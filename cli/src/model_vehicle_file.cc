@@ -44,4 +44,24 @@ bool WriteModelVehicle(const std::string& command, const std::string& path,
   return true;
 }
 
+bool WriteIdentifiedVehicle(const std::string& command, const std::string& path,
+                            const std::string& campaign_path, const model::Vehicle& vehicle,
+                            const ident::IdentifyResult& result, const std::string& comment) {
+  std::vector<const ident::DofIdentification*> dofs;
+  for (const ident::DofIdentification& d : result.dofs) {
+    if (d.status == ident::IdentifyStatus::kFailed) {
+      std::cerr << "uuvplan: " << command << ": error: " << path
+                << " not written: " << model::DofName(d.dof) << " was not identified\n";
+      return false;
+    }
+    dofs.push_back(&d);
+  }
+  if (dofs.empty()) {
+    std::cerr << "uuvplan: " << command << ": error: " << path
+              << " not written: no DOF was identified\n";
+    return false;
+  }
+  return WriteModelVehicle(command, path, campaign_path, vehicle, dofs, comment);
+}
+
 }  // namespace uuvplan::cli

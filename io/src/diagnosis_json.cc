@@ -78,6 +78,18 @@ json StaticMapsJson(const ident::Finding& f) {
   return out;
 }
 
+}  // namespace
+
+json GainJson(const ident::DiagnosisGain& gain) {
+  return {{"metric", gain.metric},
+          {"before", gain.before},
+          {"after", gain.after},
+          {"relative", JsonNumber(gain.relative)},
+          {"on", gain.on}};
+}
+
+namespace {
+
 json FindingJson(const ident::DiagnosisResult& r, const ident::Finding& f) {
   json params = json::object();
   for (const auto& p : f.params) params[p.name] = {{"value", p.value}, {"sigma", p.sigma}};
@@ -87,12 +99,7 @@ json FindingJson(const ident::DiagnosisResult& r, const ident::Finding& f) {
           {"dof", std::string(model::DofName(f.dof))},
           {"what", text::FindingSentence(r, f)},
           {"extension", {{"params", params}}},
-          {"gain",
-           {{"metric", f.gain.metric},
-            {"before", f.gain.before},
-            {"after", f.gain.after},
-            {"relative", JsonNumber(f.gain.relative)},
-            {"on", f.gain.on}}},
+          {"gain", GainJson(f.gain)},
           {"thrust_maps", maps},
           {"static_maps", StaticMapsJson(f)},
           {"chosen_map", f.chosen_map},

@@ -4,12 +4,14 @@
 #include <cmath>
 #include <limits>
 
+#include "uuvplan/io/diagnosis_json.h"
 #include "uuvplan/io/identify_json.h"
 #include "uuvplan/io/json_value.h"
 #include "uuvplan/io/pool_verdict_json.h"
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/text/loop_text.h"
 #include "uuvplan/text/verdict_text.h"
 
 namespace uuvplan::io {
@@ -91,6 +93,23 @@ json SigmaJson(const planner::LoopIteration& it) {
   return j;
 }
 
+json EffectsEnteredJson(const planner::LoopIteration& it) {
+  json j = json::array();
+  for (const auto& e : it.effects_entered) {
+    json params = json::object();
+    for (const auto& p : e.params) {
+      params[p.name] = {{"value", JsonNumber(p.value)},
+                        {"sigma", JsonNumber(p.sigma)},
+                        {"unit", model::Unit(p.name, it.dof)}};
+    }
+    j.push_back({{"effect", e.effect},
+                 {"detail", e.detail},
+                 {"params", params},
+                 {"gain", GainJson(e.gain)}});
+  }
+  return j;
+}
+
 json IterationJson(const planner::LoopIteration& it) {
   json params = json::object();
   for (const auto& [dof, estimates] : it.params) {
@@ -109,6 +128,8 @@ json IterationJson(const planner::LoopIteration& it) {
           {"sigma", SigmaJson(it)},
           {"candidates", CandidatesJson(it.candidates)},
           {"new_information", it.new_information},
+          {"effects_entered", EffectsEnteredJson(it)},
+          {"effects_left", it.effects_left},
           {"progress", ProgressJson(it.progress)},
           {"notes", it.notes}};
 }
@@ -130,6 +151,9 @@ json LoopResultJson(const planner::LoopResult& r, const planner::LoopOptions& lo
           {"target", lo.step.target_percent},
           {"budget", lo.budget},
           {"seed", lo.seed},
+          {"diagnose", lo.diagnose.has_value()},
+          {"diagnose_assumption",
+           lo.diagnose ? json(std::string(text::DiagnosedModelAssumption())) : json(nullptr)},
           {"dof_pool_time", dof_time},
           {"progress", ProgressJson(r.progress)},
           {"estimates", IdentifyJson(r.estimates)},
@@ -173,8 +197,28 @@ void ReadIteration(const JsonValue& it, int index, LoopHistory* h) {
   const planner::PlannedTrial trial = TrialFromJson(it.Required("trial", "the trial run"));
   const model::Dof dof = DofKey(it.Required("dof"), String(it.Required("dof"), "a DOF name"));
   const double pool_time = NonNegativeNumber(it.Required("pool_time"), "a number >= 0 (s)");
-  h->trials.push_back({index, trial.design.id, std::string(model::TrialKindName(trial.design.kind)),
-                       trial.design.mapping, dof, trial.design.duration, pool_time});
+  h->trials.push_back({index,
+                       trial.design.id,
+                       std::string(model::TrialKindName(trial.design.kind)),
+                       trial.design.mapping,
+                       dof,
+                       trial.design.duration,
+                       pool_time,
+                       {},
+                       {}});
+  if (const auto entered = it.Optional("effects_entered")) {
+    if (!entered->json().is_array()) entered->Expected("an array of effects");
+    for (std::size_t i = 0; i < entered->json().size(); ++i) {
+      const JsonValue e = entered->Item(i);
+      h->trials.back().effects_entered.push_back(String(e.Required("effect"), "an effect name"));
+    }
+  }
+  if (const auto left = it.Optional("effects_left")) {
+    if (!left->json().is_array()) left->Expected("an array of effect names");
+    for (std::size_t i = 0; i < left->json().size(); ++i) {
+      h->trials.back().effects_left.push_back(String(left->Item(i), "an effect name"));
+    }
+  }
   const JsonValue params = it.Required("params", "the estimates after the trial");
   if (!params.json().is_object()) params.Expected("an object of DOFs");
   for (const auto& [dof_name, p] : params.json().items()) {

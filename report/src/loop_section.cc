@@ -1,10 +1,25 @@
 // The loop's history: its trials and the estimates after the last one.
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/report/sections.h"
 
 namespace uuvplan::report {
+
+namespace {
+
+// "+ thrust_map, + thruster_lag, − sensor_delay": effects `loop --diagnose` added and removed.
+std::string ModelChangeCell(const io::LoopTrialRow& r) {
+  std::vector<std::string> items;
+  for (const auto& e : r.effects_entered) items.push_back("+ " + e);
+  for (const auto& e : r.effects_left) items.push_back("− " + e);
+  return model::Join(items, ", ");
+}
+
+}  // namespace
 
 Section LoopSection(const io::LoopHistory& h) {
   Section s{"loop", "Loop history", {}, {}, {}};
@@ -14,11 +29,13 @@ Section LoopSection(const io::LoopHistory& h) {
                          " min), target " + Number(h.target_percent) + " %." +
                          (h.message.empty() ? "" : " " + h.message));
   Table trials{"Trials in the order run",
-               {"#", "trial", "DOF", "kind", "mapping", "duration (s)", "pool time after (s)"},
+               {"#", "trial", "DOF", "kind", "mapping", "duration (s)", "pool time after (s)",
+                "model change after it"},
                {}};
   for (const io::LoopTrialRow& r : h.trials) {
     trials.rows.push_back({std::to_string(r.iteration), r.id, std::string(model::DofName(r.dof)),
-                           r.kind, r.mapping, Number(r.duration), Number(r.pool_time)});
+                           r.kind, r.mapping, Number(r.duration), Number(r.pool_time),
+                           ModelChangeCell(r)});
   }
   s.tables.push_back(std::move(trials));
   Table last{"Estimates after the last trial (" +

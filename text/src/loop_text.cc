@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <string_view>
 
 #include "uuvplan/ident/stats/monte_carlo.h"
 #include "uuvplan/model/parameter.h"
@@ -36,6 +37,34 @@ std::string PercentAgainst(double p, double target) {
 }
 
 }  // namespace
+
+std::string EffectEnteredText(model::Dof dof, const planner::EffectEntered& e) {
+  std::ostringstream s;
+  s << e.effect << (e.detail.empty() ? "" : " (" + e.detail + ")") << " added to the "
+    << model::DofName(dof) << " model:";
+  const char* sep = " ";
+  for (const auto& p : e.params) {
+    s << sep << p.name << " " << ValueSigma(p.value, p.sigma, model::Unit(p.name, dof));
+    sep = ", ";
+  }
+  if (e.gain.scored) {
+    s << "; velocity MAE " << model::Significant(100.0 * e.gain.relative, 2) << "% lower on "
+      << e.gain.on;
+  }
+  return s.str();
+}
+
+std::string_view DiagnosedModelAssumption() {
+  return "each DOF's model is the one the diagnosis of its trials found; a thruster lag and a "
+         "sensor delay (or other look-alike effects) can be taken for each other on responses "
+         "slower than them, and the estimates are then those of the wrong model "
+         "(docs/validation.md, \"The loop finds hidden effects\")";
+}
+
+std::string EffectLeftText(model::Dof dof, const std::string& effect) {
+  return effect + " removed from the " + std::string(model::DofName(dof)) +
+         " model: the diagnosis of every trial so far no longer finds it";
+}
 
 std::string InterestText(model::Dof dof, const planner::InterestParameter& q, double target) {
   std::ostringstream s;

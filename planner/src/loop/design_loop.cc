@@ -9,6 +9,7 @@
 #include <limits>
 #include <sstream>
 
+#include "loop/loop_diagnosis.h"
 #include "loop/next_trial_policy.h"
 #include "options_check.h"
 #include "uuvplan/model/campaign_builder.h"
@@ -46,19 +47,12 @@ std::vector<Dof> CampaignDofs(const model::Campaign& c) {
   return out;
 }
 
-// Identification of one DOF from its own trials (what Identify does per DOF), so that the loop
-// re-identifies only the DOF that got a new trial. Input errors become a failed DOF.
-ident::DofIdentification IdentifyDof(const model::Campaign& campaign, Dof dof,
-                                     const ident::IdentifyOptions& options) {
-  model::Campaign sub;
-  sub.path = campaign.path;
-  sub.vehicle_file = campaign.vehicle_file;
-  sub.vehicle = campaign.vehicle;
-  sub.pool_file = campaign.pool_file;
-  sub.pool = campaign.pool;
-  for (const auto& e : campaign.trials) {
-    if (e.dof == dof) sub.trials.push_back(e);
-  }
+// Identification of one DOF from its own trials (what Identify does per DOF) in `vehicle`'s
+// model, so that the loop re-identifies only the DOF that got a new trial. Input errors become
+// a failed DOF.
+ident::DofIdentification IdentifyDof(const model::Campaign& campaign, const model::Vehicle& vehicle,
+                                     Dof dof, const ident::IdentifyOptions& options) {
+  const model::Campaign sub = internal::DofCampaign(campaign, vehicle, dof);
   ident::IdentifyOptions o = options;
   o.dofs = {dof};
   try {
@@ -138,7 +132,7 @@ std::map<Dof, ident::DofIdentification> PreviousEstimates(const model::Campaign&
         break;
       }
     }
-    out.emplace(dof, IdentifyDof(earlier, dof, options));
+    out.emplace(dof, IdentifyDof(earlier, earlier.vehicle, dof, options));
   }
   return out;
 }
@@ -209,11 +203,41 @@ void MeasureGain(const DofProgress* before, const LoopOptions& options, LoopIter
   }
 }
 
+// Identifies the trial's DOF in the working model and, under LoopOptions::diagnose, diagnoses
+// it; when effects enter, identifies it again in the extended model. Keeps the estimate before
+// it for the consistency test, unless the model changed (the two are then not comparable).
+ident::DofIdentification IdentifyTrialDof(const LoopOptions& options,
+                                          const model::Campaign& campaign,
+                                          const ident::IdentifyResult& estimates,
+                                          internal::WorkingModel* working,
+                                          internal::LoopMemory* memory, LoopIteration* it) {
+  const ident::IdentifyOptions& io = options.step.identify;
+  ident::DofIdentification id = IdentifyDof(campaign, working->vehicle, it->dof, io);
+  memory->previous.erase(it->dof);
+  if (options.diagnose) {
+    internal::ModelChange change = internal::AdoptFindings(campaign, it->dof, *options.diagnose,
+                                                           options.settled_aic_gap, working);
+    const std::string dof(model::DofName(it->dof));
+    if (!change.note.empty()) it->notes.push_back(dof + ": diagnose: " + change.note);
+    memory->model_doubts[it->dof] = working->doubts[it->dof];
+    if (change.changed()) {
+      it->effects_entered = std::move(change.entered);
+      it->effects_left = std::move(change.left);
+      return IdentifyDof(campaign, working->vehicle, it->dof, io);
+    }
+  }
+  if (const ident::DofIdentification* old = estimates.Find(it->dof)) {
+    memory->previous.emplace(it->dof, *old);
+  }
+  return id;
+}
+
 // Runs the decided trial in the virtual pool, re-identifies its DOF (keeping the identification
 // before it for the consistency test) and measures progress.
 LoopIteration RunIteration(internal::Decision d, const LoopOptions& options,
                            const std::vector<Dof>& dofs, model::VirtualCampaignBuilder* builder,
-                           ident::IdentifyResult* estimates, internal::LoopMemory* memory) {
+                           ident::IdentifyResult* estimates, internal::WorkingModel* working,
+                           internal::LoopMemory* memory) {
   LoopIteration it;
   it.index = static_cast<int>(builder->campaign().trials.size());
   it.dof = d.dof;
@@ -228,13 +252,10 @@ LoopIteration RunIteration(internal::Decision d, const LoopOptions& options,
   builder->Append(d.trial.design);
   it.pool_time = builder->clock() - options.step.schedule.planner.pause_s;
   const model::Campaign& campaign = builder->campaign();
-  ident::DofIdentification id = IdentifyDof(campaign, d.dof, options.step.identify);
+  ident::DofIdentification id =
+      IdentifyTrialDof(options, campaign, *estimates, working, memory, &it);
   for (const auto& w : id.warnings) {
     it.notes.push_back(std::string(model::DofName(d.dof)) + ": identify: " + w);
-  }
-  memory->previous.erase(d.dof);
-  if (const ident::DofIdentification* old = estimates->Find(d.dof)) {
-    memory->previous.emplace(d.dof, *old);
   }
   UpdateEstimates(std::move(id), campaign.trials.size(), estimates);
   for (const auto& x : estimates->dofs) it.params[x.dof] = x.params;
@@ -243,6 +264,7 @@ LoopIteration RunIteration(internal::Decision d, const LoopOptions& options,
     it.progress.push_back(EvaluateProgress(
         campaign.vehicle, dof, estimates->Find(dof), internal::FitTrials(campaign, dof),
         options.step, prev == memory->previous.end() ? nullptr : &prev->second));
+    internal::AddModelDoubts(*memory, &it.progress.back());
   }
   MeasureGain(ProgressOf(d.progress, d.dof), options, &it);
   return it;
@@ -308,9 +330,10 @@ bool LoopOptions::IsValid(std::string* error) const {
       .Require(command_rate_hz > 0, "command_rate_hz", model::Significant(command_rate_hz, 3),
                "> 0")
       .Require(max_repeats >= 0, "max_repeats", max_repeats, "max_repeats >= 0")
-      .Require(max_inconsistent >= 1, "max_inconsistent", max_inconsistent,
-               "max_inconsistent >= 1");
-  return check.ok() && step.IsValid(error);
+      .Require(max_inconsistent >= 1, "max_inconsistent", max_inconsistent, "max_inconsistent >= 1")
+      .Require(settled_aic_gap >= 0, "settled_aic_gap", model::Significant(settled_aic_gap, 3),
+               ">= 0");
+  return check.ok() && step.IsValid(error) && (!diagnose || diagnose->IsValid(error));
 }
 
 std::string_view NextStatusName(NextStatus s) { return kNextStatusNames.Name(s); }
@@ -341,7 +364,7 @@ NextStepResult NextStep(const model::Campaign& campaign, const model::Pool& pool
     r.estimates.message = "no fit trial yet: nothing to identify";
   }
   internal::Planner planner{campaign.vehicle, pool, options, {}};
-  const internal::LoopMemory memory{PreviousEstimates(campaign, dofs, options.identify), {}};
+  const internal::LoopMemory memory{PreviousEstimates(campaign, dofs, options.identify), {}, {}};
   internal::Decision d = internal::Decide(planner, campaign, dofs, r.estimates, memory);
   r.status = d.status;
   r.candidates = std::move(d.candidates);
@@ -412,6 +435,7 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
   internal::Planner planner{truth.vehicle, pool, options.step, {}};
   planner.Prepare(dofs);  // every DOF starts with its a priori schedule: plan them at once
   internal::LoopMemory memory;
+  internal::WorkingModel working{truth.vehicle, {}, {}};
   std::map<Dof, int> inconsistent;
   std::map<Dof, std::vector<model::TrialDesign>> per_dof;
   for (;;) {
@@ -422,7 +446,7 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
     if (LoopEnds(d, options, &result)) break;
     if (StopRepeat(planner, d, result, builder.campaign(), options, &memory)) continue;
     LoopIteration it =
-        RunIteration(std::move(d), options, dofs, &builder, &result.estimates, &memory);
+        RunIteration(std::move(d), options, dofs, &builder, &result.estimates, &working, &memory);
     TrackConsistency(it, options, &inconsistent, &memory);
     per_dof[it.dof].push_back(it.trial.design);
     result.pool_time = it.pool_time;

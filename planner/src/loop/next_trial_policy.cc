@@ -526,6 +526,28 @@ int FitTrials(const model::Campaign& campaign, Dof dof) {
   return trials;
 }
 
+void AddModelDoubts(const LoopMemory& memory, DofProgress* p) {
+  const auto doubts = memory.model_doubts.find(p->dof);
+  if (doubts == memory.model_doubts.end() || doubts->second.empty()) return;
+  p->doubts.insert(p->doubts.end(), doubts->second.begin(), doubts->second.end());
+  p->trusted = false;
+  p->converged = false;
+}
+
+model::Campaign DofCampaign(const model::Campaign& campaign, const model::Vehicle& vehicle,
+                            Dof dof) {
+  model::Campaign sub;
+  sub.path = campaign.path;
+  sub.vehicle_file = campaign.vehicle_file;
+  sub.vehicle = vehicle;
+  sub.pool_file = campaign.pool_file;
+  sub.pool = campaign.pool;
+  for (const auto& e : campaign.trials) {
+    if (e.dof == dof) sub.trials.push_back(e);
+  }
+  return sub;
+}
+
 bool PlanCandidate(Planner& planner, const model::Campaign& campaign, const DofProgress& progress,
                    const ident::DofIdentification* id, Decision* d, CandidateGain* gain,
                    std::string* why) {
@@ -588,6 +610,7 @@ std::vector<DofProgress> ProgressOfEach(const Planner& planner, const model::Cam
     progress.push_back(EvaluateProgress(planner.vehicle, dof, estimates.Find(dof),
                                         FitTrials(campaign, dof), planner.options,
                                         prev == memory.previous.end() ? nullptr : &prev->second));
+    AddModelDoubts(memory, &progress.back());
   }
   return progress;
 }

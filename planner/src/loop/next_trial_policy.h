@@ -68,7 +68,13 @@ struct Decision {
 struct LoopMemory {
   std::map<model::Dof, ident::DofIdentification> previous;
   std::map<model::Dof, DofStop> stopped;
+  /// Why a DOF's model itself is in doubt (`loop --diagnose`: the diagnosis cannot tell an
+  /// effect of the model from another): its estimates are not trusted while these stand.
+  std::map<model::Dof, std::vector<std::string>> model_doubts;
 };
+
+/// Adds the DOF's model doubts of `memory` to `p`: not trusted, not converged.
+void AddModelDoubts(const LoopMemory& memory, DofProgress* p);
 
 /// The next trial of `campaign` among `dofs` given its identification `estimates`: the DOF
 /// furthest above the target (ties in the order of `dofs`) whose candidate trial adds
@@ -97,5 +103,9 @@ std::vector<model::Dof> DofsOrTruths(const model::Truth& truth,
 
 /// Fit trials of `dof` in the campaign.
 int FitTrials(const model::Campaign& campaign, model::Dof dof);
+
+/// The trials of `dof` in `campaign` (fit and validate, in order), as a campaign of `vehicle`.
+model::Campaign DofCampaign(const model::Campaign& campaign, const model::Vehicle& vehicle,
+                            model::Dof dof);
 
 }  // namespace uuvplan::planner::internal

@@ -1,4 +1,4 @@
-// `--write-vehicle OUT` of `identify` and `diagnose`: the campaign's vehicle with the model
+// `--write-vehicle OUT` of `identify`, `diagnose` and `loop`: the campaign's vehicle with the model
 // each DOF was identified with (dofs.<dof>.params, effects and sigma, io/vehicle_yaml.h), the
 // file every command reads back — `schedule`, `next` and `loop` plan about its estimates.
 #pragma once
@@ -19,5 +19,12 @@ bool WriteModelVehicle(const std::string& command, const std::string& path,
                        const std::string& campaign_path, model::Vehicle vehicle,
                        const std::vector<const ident::DofIdentification*>& dofs,
                        const std::string& comment);
+
+/// WriteModelVehicle with every DOF of `result`; false, with the reason on stderr and nothing
+/// written, when a DOF failed (the file would mix an identified model with a failed one's a
+/// priori box) or none was identified.
+bool WriteIdentifiedVehicle(const std::string& command, const std::string& path,
+                            const std::string& campaign_path, const model::Vehicle& vehicle,
+                            const ident::IdentifyResult& result, const std::string& comment);
 
 }  // namespace uuvplan::cli

@@ -10,4 +10,8 @@ namespace uuvplan::io {
 /// {"nominal": <identify result>, "findings": [...], "tests": [...], "breakdown": {...}}.
 nlohmann::json DiagnosisJson(const ident::DiagnosisResult& result);
 
+/// A finding's held-out gain: {"metric", "before", "after", "relative", "on"} (relative null
+/// when not scored).
+nlohmann::json GainJson(const ident::DiagnosisGain& gain);
+
 }  // namespace uuvplan::io

@@ -30,10 +30,13 @@ nlohmann::json ProgressJson(const std::vector<planner::DofProgress>& progress);
 nlohmann::json PredictedJson(model::Dof dof, const planner::PredictedPrecision& predicted);
 
 /// `uuvplan loop --json`: {"iterations": [{"trial", "params", "dof", "source", "start",
-/// "pool_time", "predicted", "sigma", "candidates", "new_information", "progress", "notes"}],
-/// "converged", "pool_time", "status", "exit_status", "message" (read against the verdict,
-/// text::LoopEndMessage), "target", "budget", "seed", "dof_pool_time", "progress",
-/// "estimates", "verdict"}.
+/// "pool_time", "predicted", "sigma", "candidates", "new_information", "effects_entered":
+/// [{"effect", "detail", "params": {<name>: {"value", "sigma", "unit"}}, "gain"}],
+/// "effects_left": [name], "progress",
+/// "notes"}], "converged", "pool_time", "status", "exit_status", "message" (read against the
+/// verdict, text::LoopEndMessage), "target", "budget", "seed", "diagnose", "diagnose_assumption"
+/// (text::DiagnosedModelAssumption, null without diagnosis), "dof_pool_time",
+/// "progress", "estimates", "verdict"}.
 nlohmann::json LoopResultJson(const planner::LoopResult& result,
                               const planner::LoopOptions& options,
                               const planner::PoolVerdict& verdict, const model::Pool& pool,
@@ -56,7 +59,9 @@ struct LoopTrialRow {
   int iteration = 0;
   std::string id, kind, mapping;
   model::Dof dof = model::Dof::kSurge;
-  double duration = 0.0, pool_time = 0.0;  ///< s
+  double duration = 0.0, pool_time = 0.0;    ///< s
+  std::vector<std::string> effects_entered;  ///< added to the DOF's model after this trial
+  std::vector<std::string> effects_left;     ///< removed from it (loop --diagnose)
 };
 
 struct LoopHistory {

@@ -27,10 +27,12 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "uuvplan/ident/diagnosis/diagnosis.h"
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/model/campaign.h"
 #include "uuvplan/model/dof.h"
@@ -230,8 +232,32 @@ struct LoopOptions {
   /// failure is an overconfident early σ the next trials correct (VSOR yaw), three in a row a
   /// model that does not explain the trials.
   int max_inconsistent = 3;
+  /// `loop --diagnose`: after each identification of a DOF with two fit trials or more (the
+  /// held-out data a finding needs), diagnose its trials (ident::Diagnose, these options; its
+  /// `dofs` is replaced by the DOF). When the effects it accepts differ from the model's, its
+  /// extended model becomes the DOF's model, which the DOF is identified in at once and in every
+  /// later identification (the written-model stage of identify): the diagnosis of every trial
+  /// so far decides, so an effect it no longer finds leaves. nullopt: the standard model
+  /// throughout.
+  std::optional<ident::DiagnoseOptions> diagnose;
+  /// Under `diagnose`, a DOF's model is settled when each effect the diagnosis accepted leads
+  /// every other significant candidate of its round by at least this AIC difference; until
+  /// then its estimates are not trusted (no convergence). CHOSEN 10: "essentially no support"
+  /// for the other model (Burnham & Anderson 2002, §2.6). A thruster lag and a sensor delay
+  /// differ little on slow responses: on the loop's first trials the diagnosis had preferred
+  /// the delay to a true lag by less, and the loop converged on it (docs/validation.md).
+  double settled_aic_gap = 10.0;
 
   bool IsValid(std::string* error) const;
+};
+
+/// An effect `loop --diagnose` added to a DOF's model after a trial.
+struct EffectEntered {
+  std::string effect;  ///< name in the effect table (model/effects.h)
+  std::string detail;  ///< the finding's detail (a coupling's pair)
+  /// Its parameters as the diagnosis estimated them (then refitted with the rest of the model).
+  std::vector<ident::ParameterEstimate> params;
+  ident::DiagnosisGain gain;  ///< held-out gain over the model without it
 };
 
 /// One trial of the loop and what identification made of it.
@@ -252,8 +278,12 @@ struct LoopIteration {
   /// Estimates of every identified DOF after this trial (theta layout of each DOF).
   std::map<model::Dof, std::vector<ident::ParameterEstimate>> params;
   std::vector<DofProgress> progress;  ///< after this trial
-  double wall_seconds = 0.0;          ///< design + run + identification
-  std::vector<std::string> notes;     ///< identification warnings and design notes
+  double wall_seconds = 0.0;          ///< design + run + identification (+ diagnosis)
+  /// Effects the diagnosis after this trial added to its DOF's model (LoopOptions::diagnose),
+  /// and those it no longer found (effect name, a coupling's pair after it).
+  std::vector<EffectEntered> effects_entered;
+  std::vector<std::string> effects_left;
+  std::vector<std::string> notes;  ///< identification warnings and design notes
 };
 
 enum class LoopStatus {
