@@ -15,6 +15,7 @@
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/planner/design/parameter_box.h"
+#include "uuvplan/planner/pool/pool_verdict.h"
 #include "uuvplan/planner/schedule_planner.h"
 
 namespace uuvplan::planner {
@@ -89,6 +90,11 @@ TEST(IdentifiedVehicleSchedule, AchievedSigmaIsWithinAFactorTwoOfThePredicted) {
   const ScheduleResult plan = PlanSchedule(vehicle, testing::RomeoPool(), o);
   ASSERT_EQ(plan.status, PlanStatus::kOk) << plan.message;
   EXPECT_THAT(plan.dofs[0].notes, ::testing::Contains(HasSubstr("identified model")));
+  // The verdict names the box it judged: the one about the estimates, for this file only.
+  EXPECT_TRUE(
+      JudgePoolOnChecks(vehicle, testing::RomeoPool(), o, plan, nullptr, {}).identified_box);
+  EXPECT_FALSE(
+      JudgePoolOnChecks(truth.vehicle, testing::RomeoPool(), o, plan, nullptr, {}).identified_box);
   const PredictedPrecision& predicted = plan.schedule.predicted.at(model::Dof::kSurge);
   std::vector<model::TrialDesign> designs;
   for (const PlannedTrial& t : plan.schedule.trials) designs.push_back(t.design);

@@ -46,6 +46,16 @@ TEST(VerdictText, TheSentenceSaysHowMuchOfTheBoxThePoolHosts) {
                                            "a priori box only"),
             std::string::npos);
   EXPECT_EQ(VerdictAnswer(Hostability::kNone), "CANNOT host it");
+  // A vehicle file with an identified model is planned about its estimates: the box named is
+  // that one, in the sentence, the DOF's line, the assumption and the short answer.
+  v.identified_box = true;
+  EXPECT_NE(VerdictSentence(v, kPool).find("for PART of the box about the identified model only"),
+            std::string::npos);
+  for (const auto& line : VerdictLines(v, kPool)) {
+    EXPECT_EQ(line.find("a priori box"), std::string::npos) << line;
+  }
+  EXPECT_EQ(VerdictAnswer(Hostability::kPart, true),
+            "can host it for PART of the box about the identified model only");
   PoolVerdict nothing;
   nothing.unplanned = "no DOF can be planned";
   EXPECT_NE(VerdictSentence(nothing, kPool).find("CANNOT host the identification of  to"),

@@ -46,6 +46,11 @@ std::string Goal(const PoolVerdict& v) {
          "% (every parameter of interest's 100·σ/|θ|)";
 }
 
+// "a priori box", or the box about the vehicle file's estimates the planner used instead.
+std::string Box(bool identified_box) {
+  return identified_box ? "box about the identified model" : "a priori box";
+}
+
 // "Pool P CAN host …", "… can host … for PART of the a priori box …", "… CANNOT host …".
 std::string Sentence(const PoolVerdict& v, const model::Pool& pool) {
   std::ostringstream s;
@@ -56,13 +61,15 @@ std::string Sentence(const PoolVerdict& v, const model::Pool& pool) {
       break;
     case Hostability::kPart:
       s << " can host the identification of " << DofList(v.dofs, Hostability::kPart) << Goal(v)
-        << " for PART of the a priori box only (the first trials decide: `loop` and `next` run "
-           "and stop when the estimates fall outside it)";
+        << " for PART of the " << Box(v.identified_box)
+        << " only (the first trials decide: `loop` and `next` run and stop when the estimates "
+           "fall outside it)";
       break;
     case Hostability::kNone:
       s << " CANNOT host the identification of " << DofList(v.dofs, Hostability::kNone) << Goal(v);
       if (!v.dofs.empty() && !v.dofs.front().points.empty()) {
-        s << " for any vehicle of the a priori box checked (its centre and corners)";
+        s << " for any vehicle of the " << Box(v.identified_box)
+          << " checked (its centre and corners)";
       }
       break;
   }
@@ -81,8 +88,9 @@ std::string DofLine(const PoolVerdict& verdict, const DofVerdict& v, const model
       << (model::IsRotational(v.dof) ? " the tether allows" : "");
     return s.str();
   }
-  s << (v.hostability == Hostability::kPart ? "hosted for PART of the a priori box ("
-                                            : "NOT hosted (")
+  s << (v.hostability == Hostability::kPart
+            ? "hosted for PART of the " + Box(verdict.identified_box) + " ("
+            : std::string("NOT hosted ("))
     << planner::PoolLimitName(v.limit) << "): ";
   if (v.only_plan_fails) {
     s << "the planner's own schedule is hosted here; the plan's trials need "
@@ -201,7 +209,12 @@ std::string BoxPointLabel(const planner::BoxPoint& p, model::Dof dof) {
          model::Unit(model::param::kQuadraticDrag, dof) + ")";
 }
 
-std::string VerdictAnswer(Hostability h) { return std::string(kVerdictAnswers.Name(h)); }
+std::string VerdictAnswer(Hostability h, bool identified_box) {
+  if (h == Hostability::kPart && identified_box) {
+    return "can host it for PART of the " + Box(true) + " only";
+  }
+  return std::string(kVerdictAnswers.Name(h));
+}
 
 std::string DofReason(const PoolVerdict& verdict, const DofVerdict& d, const model::Pool& pool) {
   std::string reason = d.message;
@@ -253,8 +266,11 @@ std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& p
                                  [](const DofVerdict& d) { return d.points_start_known; });
   if (v.hostability == Hostability::kPart) {
     out.push_back(
-        "  assumption: judged over the whole a priori box (the vehicle file's inertia bounds and "
-        "drag prior); the pool hosts the vehicles at the points listed" +
+        "  assumption: judged over the whole " + Box(v.identified_box) +
+        (v.identified_box ? " (the vehicle file's estimates ± their σ, within its a priori "
+                            "bounds)"
+                          : " (the vehicle file's inertia bounds and drag prior)") +
+        "; the pool hosts the vehicles at the points listed" +
         std::string(bound ? " (for a DOF so marked, only counting each trial's start known: "
                             "the loop's trials at its estimates must do better than the a "
                             "priori schedule there)"
@@ -264,8 +280,9 @@ std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& p
         "1)");
   } else if (!v.hosted) {
     out.push_back(
-        "  assumption: judged over the whole a priori box (its centre and four (m, drag) "
-        "corners each planned as a known vehicle, and again counting each trial's start "
+        "  assumption: judged over the whole " + Box(v.identified_box) +
+        " (its centre and four (m, drag) corners each planned as a known vehicle, and again "
+        "counting each trial's start "
         "known, the upper bound of the information): no vehicle of the box is hosted, `loop` "
         "refuses before any trial");
   }
@@ -282,9 +299,10 @@ std::string LoopEndMessage(const planner::LoopResult& result, const PoolVerdict&
   if (result.outside_part.empty()) return result.message;
   std::vector<std::string> outside;
   for (const model::Dof dof : result.outside_part) outside.emplace_back(model::DofName(dof));
-  return "the first trials place " + model::Join(outside) +
-         " outside the part of the a priori box the pool hosts (the verdict before any trial: " +
-         VerdictSentence(verdict, pool) + "); " + result.message;
+  return "the first trials place " + model::Join(outside) + " outside the part of the " +
+         Box(verdict.identified_box) +
+         " the pool hosts (the verdict before any trial: " + VerdictSentence(verdict, pool) +
+         "); " + result.message;
 }
 
 }  // namespace uuvplan::text

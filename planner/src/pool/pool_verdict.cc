@@ -287,6 +287,10 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
   out.plan_given = plan_checks != nullptr;
   if (plan_checks != nullptr) out.plan_checks = *plan_checks;
   out.hosted = !own.dofs.empty();
+  for (const auto& p : own.dofs) {
+    const auto m = vehicle.models.find(p.dof);
+    if (m != vehicle.models.end() && m->second.identified()) out.identified_box = true;
+  }
   std::vector<char> plan_fits;
   std::vector<std::size_t> not_hosted;
   for (const auto& p : own.dofs) {

@@ -13,13 +13,15 @@
 
 namespace uuvplan::text {
 
-/// One line: "Pool P CAN host …", "… can host … for PART of the a priori box …",
-/// "… CANNOT host …", and why nothing was planned when nothing was.
+/// One line: "Pool P CAN host …", "… can host … for PART of the a priori box …" (the box about
+/// the identified model when the vehicle file has one), "… CANNOT host …", and why nothing was
+/// planned when nothing was.
 std::string VerdictSentence(const planner::PoolVerdict& verdict, const model::Pool& pool);
 
 /// The answer to "can this pool host it?" in the verdict's own words: "CAN host it", "can
-/// host it for PART of the a priori box only", "CANNOT host it".
-std::string VerdictAnswer(planner::Hostability hostability);
+/// host it for PART of the a priori box only" (of the box about the identified model when
+/// `identified_box`: PoolVerdict::identified_box), "CANNOT host it".
+std::string VerdictAnswer(planner::Hostability hostability, bool identified_box = false);
 
 /// A point of the a priori box of `dof`: "m 495 kg, drag ×0.5 of the prior (kq 12 N·s²/m²)".
 std::string BoxPointLabel(const planner::BoxPoint& point, model::Dof dof);

@@ -129,6 +129,9 @@ struct PoolVerdict {
   std::vector<TrialPoolCheck> plan_checks;  ///< the given plan's trials, checked in this pool
   /// Why nothing was planned (ScheduleResult::message when it planned no DOF).
   std::string unplanned;
+  /// Some DOF's box is centred on the vehicle file's identified model (PlanningBox), not its
+  /// a priori bounds: "the a priori box" of the fields above is that box for such a DOF.
+  bool identified_box = false;
 };
 
 /// CHOSEN 6 with a 5% tolerance: the bracket shrinks up to 64×, to 5% for a first guess up to
