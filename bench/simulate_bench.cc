@@ -57,11 +57,7 @@ double BestMs(int reps, F&& f) {
 int main(int argc, char** argv) {
   const int reps = argc > 1 ? std::atoi(argv[1]) : 20;
   const bool state_only = argc > 2 && std::string(argv[2]) == "state";  // for profiling
-  Vehicle v;
-  v.name = "bench";
-  v.mass = 450;
-  v.mappings = {{"front", Dof::kSurge, {}, OpenWater::kPositive},
-                {"rear", Dof::kSurge, {}, OpenWater::kNegative}};
+  const Vehicle v = uuvplan::testing::FrontRearVehicle();
   // Every effect of the table on (docs/performance.md), coupled to the sway speed too.
   ModelStructure s = uuvplan::testing::EveryEffectStructure(60.0);
   s.parameters.push_back("coupling.vr");

@@ -135,12 +135,9 @@ int RunIdentify(const IdentifyFlags& co) {
   text::PrintIdentifyTable(result, out);
   if (!co.json.empty()) WriteJson(co.json, io::IdentifyJson(result));
   PrintBriefOnTerminal(result.Summary().Brief());
-  const bool written =
-      co.write_vehicle.empty() ||
-      WriteIdentifiedVehicle("identify", co.write_vehicle, co.campaign, campaign.vehicle, result,
-                             "the identified model,\nsigma: 1σ of each parameter (0: held, not "
-                             "estimated).\nEvery command reads it: schedule, next and loop plan "
-                             "about these estimates.");
+  const bool written = co.write_vehicle.empty() ||
+                       WriteIdentifiedVehicle("identify", co.write_vehicle, co.campaign,
+                                              campaign.vehicle, result, "the identified model");
   return result.status == ident::IdentifyStatus::kFailed || !written ? kExitActionNeeded : kExitOk;
 }
 

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -118,16 +119,17 @@ std::vector<model::Dof> SimulableDofs(const LoopFlags& o, const model::Truth& tr
 // drag and bias depend on it: model/thrust_reference.h), with a line saying so.
 model::Truth AtEstimatesThrustReference(model::Truth truth, const ident::IdentifyResult& estimates,
                                         std::ostream& out) {
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
   for (auto& [dof, t] : truth.dofs) {
     const ident::DofIdentification* id = estimates.Find(dof);
-    const auto& settings = id ? id->structure.settings : std::map<std::string, double>{};
-    const auto ref = settings.find(model::param::kThrustReference);
+    if (id == nullptr) continue;
+    const double to = id->structure.Setting(model::param::kThrustReference, kNone);
     const auto own = t.settings.find(model::param::kThrustReference);
-    if (ref == settings.end() || own == t.settings.end() || own->second == ref->second) continue;
-    static_cast<model::DofParameters&>(t) = model::AtThrustReference(t, ref->second);
+    const double from = own == t.settings.end() ? kNone : own->second;
+    if (!std::isfinite(to) || !model::RestateThrustReference(to, &t)) continue;
+    const std::string unit = model::Unit(model::param::kBias, dof);
     out << "  " << model::DofName(dof) << ": the truth restated at the estimate's thrust map "
-        << "reference " << text::Quantity(ref->second, model::Unit(model::param::kBias, dof))
-        << " (it has " << text::Quantity(own->second, model::Unit(model::param::kBias, dof))
+        << "reference " << text::Quantity(to, unit) << " (it has " << text::Quantity(from, unit)
         << "): m, drag and bias scale with it\n";
   }
   return truth;
@@ -198,10 +200,7 @@ int RunLoopCommand(const LoopFlags& o) {
   }
   if (!o.write_vehicle.empty() &&
       !WriteIdentifiedVehicle("loop", o.write_vehicle, "--truth " + o.truth + " --pool " + o.pool,
-                              truth.vehicle, r.estimates,
-                              "the model the loop identified last,\nsigma: 1σ of each "
-                              "parameter (0: held, not estimated).\nEvery command reads it: "
-                              "schedule, next and loop plan about these estimates.")) {
+                              truth.vehicle, r.estimates, "the model the loop identified last")) {
     return ExitStatus(r.status) == 0 ? 1 : ExitStatus(r.status);
   }
   return ExitStatus(r.status);

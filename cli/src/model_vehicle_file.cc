@@ -46,7 +46,7 @@ bool WriteModelVehicle(const std::string& command, const std::string& path,
 
 bool WriteIdentifiedVehicle(const std::string& command, const std::string& path,
                             const std::string& campaign_path, const model::Vehicle& vehicle,
-                            const ident::IdentifyResult& result, const std::string& comment) {
+                            const ident::IdentifyResult& result, const std::string& what) {
   std::vector<const ident::DofIdentification*> dofs;
   for (const ident::DofIdentification& d : result.dofs) {
     if (d.status == ident::IdentifyStatus::kFailed) {
@@ -61,7 +61,11 @@ bool WriteIdentifiedVehicle(const std::string& command, const std::string& path,
               << " not written: no DOF was identified\n";
     return false;
   }
-  return WriteModelVehicle(command, path, campaign_path, vehicle, dofs, comment);
+  return WriteModelVehicle(command, path, campaign_path, vehicle, dofs,
+                           what +
+                               ",\nsigma: 1σ of each parameter (0: held, not estimated).\n"
+                               "Every command reads it: schedule, next and loop plan about "
+                               "these estimates.");
 }
 
 }  // namespace uuvplan::cli

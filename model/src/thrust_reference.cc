@@ -20,24 +20,24 @@ bool ScalesWithThrust(const std::string& name) {
 
 }  // namespace
 
-DofParameters AtThrustReference(DofParameters model, double reference) {
-  const auto p = model.params.find(param::kThrustExponent);
-  const auto r = model.settings.find(param::kThrustReference);
-  if (p == model.params.end() || r == model.settings.end() || r->second == reference) {
-    return model;
+bool RestateThrustReference(double reference, DofParameters* model) {
+  const auto p = model->params.find(param::kThrustExponent);
+  const auto r = model->settings.find(param::kThrustReference);
+  if (p == model->params.end() || r == model->settings.end() || r->second == reference) {
+    return false;
   }
   const double c = std::pow(reference / r->second, p->second);
-  for (auto& [name, value] : model.params) {
+  for (auto& [name, value] : model->params) {
     // The advance-speed loss c_a·√|φ|·ξ: the delivered force is c times the restated one, so
     // c_a·√c·√|φ'|·ξ, divided by c: c_a/√c.
     const double scale = ScalesWithThrust(name)        ? c
                          : name == param::kAdvanceLoss ? std::sqrt(c)
                                                        : 1.0;
     value /= scale;
-    if (auto s = model.sigma.find(name); s != model.sigma.end()) s->second /= scale;
+    if (auto s = model->sigma.find(name); s != model->sigma.end()) s->second /= scale;
   }
   r->second = reference;
-  return model;
+  return true;
 }
 
 }  // namespace uuvplan::model

@@ -242,6 +242,16 @@ TEST(Cli, DiagnoseWithNothingDiagnosableExitsOneAndSaysSo) {
 }
 
 // The ROMEO truth run on `plan` (a plan file) into dir/c, as `simulate --seed 3`; its exit status.
+// A ROMEO surge plan of two trials: "a", steps of 60 then 20 N in surge-front, and `b`.
+std::string SurgePlanWith(const std::string& b) {
+  return R"({"trials": [
+  {"id": "a", "dof": "surge", "kind": "segments", "duration": 40, "mapping": "surge-front",
+   "segments": [{"force": 60, "duration": 20, "mapping": "surge-front"},
+                {"force": 20, "duration": 20, "mapping": "surge-front"}]},
+  )" + b +
+         "]}";
+}
+
 int SimulateRomeo(const TempDir& dir, const std::string& plan) {
   return RunTool("simulate --truth '" + kRomeoTruth + "' --plan '" + plan + "' --out '" +
                      (dir / "c") + "' --seed 3",
@@ -254,14 +264,10 @@ int SimulateRomeo(const TempDir& dir, const std::string& plan) {
 // without a model is refused by `score` with the key it needs (exit 2).
 TEST(Cli, DiagnoseWritesTheModelAndScoreScoresIt) {
   const TempDir dir;
-  const std::string plan = dir.Write("plan.json",
-                                     R"({"trials": [
-  {"id": "a", "dof": "surge", "kind": "segments", "duration": 40, "mapping": "surge-front",
-   "segments": [{"force": 60, "duration": 20, "mapping": "surge-front"},
-                {"force": 20, "duration": 20, "mapping": "surge-front"}]},
+  const std::string plan = dir.Write("plan.json", SurgePlanWith(R"(
   {"id": "b", "dof": "surge", "kind": "segments", "duration": 40, "mapping": "surge-front",
    "segments": [{"force": 30, "duration": 20, "mapping": "surge-front"},
-                {"force": 70, "duration": 20, "mapping": "surge-front"}]}]})");
+                {"force": 70, "duration": 20, "mapping": "surge-front"}]})"));
   ASSERT_EQ(SimulateRomeo(dir, plan), 0);
   const std::string model = dir / "model.yaml";
   const ToolRun d = RunTool("diagnose '" + (dir / "c") + "' --write-vehicle '" + model + "'", dir);
@@ -316,13 +322,9 @@ TEST(Cli, DiagnoseWritesTheModelAndScoreScoresIt) {
 // and the date; `schedule` on that file plans about the estimates and says so.
 TEST(Cli, IdentifyWritesTheModelAndScheduleUsesIt) {
   const TempDir dir;
-  const std::string plan = dir.Write("plan.json",
-                                     R"({"trials": [
-  {"id": "a", "dof": "surge", "kind": "segments", "duration": 40, "mapping": "surge-front",
-   "segments": [{"force": 60, "duration": 20, "mapping": "surge-front"},
-                {"force": 20, "duration": 20, "mapping": "surge-front"}]},
+  const std::string plan = dir.Write("plan.json", SurgePlanWith(R"(
   {"id": "b", "dof": "surge", "kind": "sine", "duration": 52, "mapping": "surge-front",
-   "offset": 35, "amplitude": 25, "omega": 0.2417}]})");
+   "offset": 35, "amplitude": 25, "omega": 0.2417})"));
   ASSERT_EQ(SimulateRomeo(dir, plan), 0);
   const std::string model = dir / "identified.yaml";
   const ToolRun i = RunTool("identify '" + (dir / "c") + "' --write-vehicle '" + model + "'", dir);

@@ -1,5 +1,5 @@
-// model::AtThrustReference (model/thrust_reference.h): a thrust map stated at another reference
-// force, with m, drag, bias and coupling rescaled, is the same dynamics.
+// model::RestateThrustReference (model/thrust_reference.h): a thrust map stated at another
+// reference force, with m, drag, bias and coupling rescaled, is the same dynamics.
 #include "uuvplan/model/thrust_reference.h"
 
 #include <gtest/gtest.h>
@@ -20,9 +20,7 @@ namespace {
 Eigen::MatrixXd FreeRun(const DofParameters& p) {
   ModelStructure s = testing::EveryEffectStructure(p.settings.at("thrust_reference"));
   const DofModel model(testing::FrontRearVehicle(), s);
-  Eigen::VectorXd theta(model.num_parameters());
-  for (int j = 0; j < model.num_parameters(); ++j)
-    theta[j] = p.params.at(model.parameter_names()[j]);
+  const Eigen::VectorXd theta = model.Theta(p.params);
   const auto input = MakeSineExcitation(35, 25, 2 * M_PI / 26, 0, 60);
   std::vector<double> times;
   for (double t = 0.5; t <= 60; t += 0.5) times.push_back(t);
@@ -35,7 +33,8 @@ TEST(ThrustReferenceTest, RestatedModelMovesTheSame) {
   DofParameters p;
   p.params = testing::EveryEffectValues();
   p.settings["thrust_reference"] = 60.0;
-  const DofParameters q = AtThrustReference(p, 25.0);
+  DofParameters q = p;
+  ASSERT_TRUE(RestateThrustReference(25.0, &q));
   EXPECT_EQ(q.settings.at("thrust_reference"), 25.0);
   // c = (25/60)^-0.3 = 1.3006: m, drag, bias, bias_step, coupling divided by it; the rest kept.
   const double c = std::pow(25.0 / 60.0, -0.3);
@@ -56,7 +55,8 @@ TEST(ThrustReferenceTest, RestatedModelMovesTheSame) {
 TEST(ThrustReferenceTest, AModelWithoutThrustMapIsUnchanged) {
   DofParameters p;
   p.params = {{"m", 890}, {"k", 46.9}};
-  const DofParameters q = AtThrustReference(p, 25.0);
+  DofParameters q = p;
+  EXPECT_FALSE(RestateThrustReference(25.0, &q));
   EXPECT_EQ(q.params, p.params);
   EXPECT_TRUE(q.settings.empty());
 }

@@ -22,11 +22,8 @@ std::set<std::string> FinalEffects(const planner::LoopResult& r) {
 
 std::vector<ParameterCheck> Checks(model::Truth truth, model::Dof dof,
                                    const ident::DofIdentification& id) {
-  const auto ref = id.structure.settings.find(model::param::kThrustReference);
-  model::DofTruth& t = truth.dofs.at(dof);
-  if (ref != id.structure.settings.end()) {
-    static_cast<model::DofParameters&>(t) = model::AtThrustReference(t, ref->second);
-  }
+  const double ref = id.structure.Setting(model::param::kThrustReference, 0.0);
+  if (ref > 0) model::RestateThrustReference(ref, &truth.dofs.at(dof));
   std::vector<ParameterCheck> out;
   for (const auto& e : id.params) {
     if (e.state != ident::ParameterState::kEstimated) continue;

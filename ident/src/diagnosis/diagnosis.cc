@@ -28,6 +28,10 @@ model::ModelStructure NominalStructure(const model::Vehicle& vehicle, Dof dof,
   return s;
 }
 
+std::string CandidateName(const std::string& effect, const std::string& detail) {
+  return detail.empty() || effect != "coupling" ? effect : effect + " " + detail;
+}
+
 bool DiagnoseOptions::IsValid(std::string* error) const {
   auto fail = [&](const std::string& m) {
     if (error) *error = "DiagnoseOptions::" + m;
@@ -203,14 +207,6 @@ void ReleaseHeld(const model::Vehicle& vehicle, const DiagnoseOptions& options,
   if (free.oe.ok() && free.oe.cost <= fit->oe.cost) *fit = std::move(free);
 }
 
-// "deadzone" or "coupling vr": a candidate as the report names it.
-std::string CandidateName(const CandidateTest& t) {
-  return t.effect + (t.detail.empty() || t.effect != "coupling" ? "" : " " + t.detail);
-}
-
-// A candidate's AIC gain over the current model on the fit trials: D − 2·Δp.
-double AicGain(const CandidateTest& t) { return t.statistic - 2.0 * t.added_parameters; }
-
 // Why each other scored candidate of a round was not chosen: within 2 of the chosen one's AIC
 // and not separated by the held-out data either (paired difference within 2σ, or no σ: a
 // single held-out unit), it "cannot be told from" it, and its test's index is returned for the
@@ -225,8 +221,10 @@ std::vector<int> LabelRivals(const std::vector<Significant>& significant,
     CandidateTest& t = result->tests[significant[i].test];
     double delta = 0.0, sigma = 0.0;
     diagnosis::PairedDifference(gains[i].after_by_unit, gains[best].after_by_unit, &delta, &sigma);
-    const NotChosen why{false, CandidateName(chosen), t.statistic, chosen.statistic, delta, sigma};
-    if (std::abs(AicGain(chosen) - AicGain(t)) <= 2 && !(delta > 2 * sigma)) {
+    const NotChosen why{false,       CandidateName(chosen.effect, chosen.detail),
+                        t.statistic, chosen.statistic,
+                        delta,       sigma};
+    if (std::abs(chosen.AicGain() - t.AicGain()) <= 2 && !(delta > 2 * sigma)) {
       alike.push_back(significant[i].test);
       t.not_chosen = why;
       t.not_chosen->cannot_tell = true;
@@ -259,14 +257,14 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
   std::vector<int> order(significant.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return AicGain(result->tests[significant[a].test]) >
-           AicGain(result->tests[significant[b].test]);
+    return result->tests[significant[a].test].AicGain() >
+           result->tests[significant[b].test].AicGain();
   });
   std::vector<DiagnosisGain> gains(significant.size());
   int best = -1;
   for (int i : order) {
     const CandidateTest& t = result->tests[significant[i].test];
-    if (best >= 0 && AicGain(result->tests[significant[best].test]) - AicGain(t) > 2) break;
+    if (best >= 0 && result->tests[significant[best].test].AicGain() - t.AicGain() > 2) break;
     Progress(options, dof + ": held-out gain of " + t.effect);
     ReleaseHeld(vehicle, options, *d, &significant[i].fit);
     gains[i] = diagnosis::HeldOutGain(vehicle, d->current, significant[i].fit, d->fit, d->validate,
@@ -282,7 +280,7 @@ bool ExtendOnce(const model::Vehicle& vehicle, const DiagnoseOptions& options, b
   if (!alike.empty()) {
     DiagnosisNote w{DiagnosisNoteKind::kCannotTell, d->dof, {}, {}, {}};
     const auto quote = [&w](const CandidateTest& t) {
-      w.names.push_back(CandidateName(t));
+      w.names.push_back(CandidateName(t.effect, t.detail));
       w.numbers.insert(w.numbers.end(), {t.gain, t.statistic});
     };
     quote(chosen);

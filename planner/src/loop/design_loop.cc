@@ -203,33 +203,29 @@ void MeasureGain(const DofProgress* before, const LoopOptions& options, LoopIter
   }
 }
 
-// Identifies the trial's DOF in the working model and, under LoopOptions::diagnose, diagnoses
-// it; when effects enter, identifies it again in the extended model. Keeps the estimate before
-// it for the consistency test, unless the model changed (the two are then not comparable).
+// Under LoopOptions::diagnose, diagnoses the trial's DOF first (its model may change), then
+// identifies it in the working model. Keeps the estimate before it for the consistency test,
+// unless the model changed (the two are then not comparable).
 ident::DofIdentification IdentifyTrialDof(const LoopOptions& options,
                                           const model::Campaign& campaign,
                                           const ident::IdentifyResult& estimates,
                                           internal::WorkingModel* working,
                                           internal::LoopMemory* memory, LoopIteration* it) {
-  const ident::IdentifyOptions& io = options.step.identify;
-  ident::DofIdentification id = IdentifyDof(campaign, working->vehicle, it->dof, io);
   memory->previous.erase(it->dof);
+  bool changed = false;
   if (options.diagnose) {
     internal::ModelChange change = internal::AdoptFindings(campaign, it->dof, *options.diagnose,
                                                            options.settled_aic_gap, working);
     const std::string dof(model::DofName(it->dof));
     if (!change.note.empty()) it->notes.push_back(dof + ": diagnose: " + change.note);
     memory->model_doubts[it->dof] = working->doubts[it->dof];
-    if (change.changed()) {
-      it->effects_entered = std::move(change.entered);
-      it->effects_left = std::move(change.left);
-      return IdentifyDof(campaign, working->vehicle, it->dof, io);
-    }
+    changed = change.changed();
+    it->effects_entered = std::move(change.entered);
+    it->effects_left = std::move(change.left);
   }
-  if (const ident::DofIdentification* old = estimates.Find(it->dof)) {
-    memory->previous.emplace(it->dof, *old);
-  }
-  return id;
+  const ident::DofIdentification* old = estimates.Find(it->dof);
+  if (old != nullptr && !changed) memory->previous.emplace(it->dof, *old);
+  return IdentifyDof(campaign, working->vehicle, it->dof, options.step.identify);
 }
 
 // Runs the decided trial in the virtual pool, re-identifies its DOF (keeping the identification

@@ -12,11 +12,6 @@
 namespace uuvplan::planner::internal {
 namespace {
 
-// "thruster_lag", "coupling vr": an effect as the loop's model holds it (a coupling per pair).
-std::string EffectKey(const std::string& effect, const std::string& detail) {
-  return detail.empty() || effect != "coupling" ? effect : effect + " " + detail;
-}
-
 // The effect is significant by the likelihood ratio on top of the diagnosis's final model (its
 // last round's test): a look-alike the final model holds instead leaves nothing for it.
 bool StillSignificant(const ident::DiagnosisResult& r, model::Dof dof, const std::string& key) {
@@ -25,7 +20,8 @@ bool StillSignificant(const ident::DiagnosisResult& r, model::Dof dof, const std
     if (t.dof == dof) last = std::max(last, t.round);
   }
   return std::any_of(r.tests.begin(), r.tests.end(), [&](const ident::CandidateTest& t) {
-    return t.dof == dof && t.round == last && t.significant && EffectKey(t.effect, t.detail) == key;
+    return t.dof == dof && t.round == last && t.significant &&
+           ident::CandidateName(t.effect, t.detail) == key;
   });
 }
 
@@ -64,9 +60,6 @@ const ident::DofIdentification* ExtendedOf(const ident::DiagnosisResult& r, mode
   return nullptr;
 }
 
-// A candidate's AIC gain over the model of its round on the fit trials: D − 2·Δp.
-double AicGain(const ident::CandidateTest& t) { return t.statistic - 2.0 * t.added_parameters; }
-
 // Per effect the diagnosis accepted into `found`, every other significant candidate of the same
 // round whose AIC gain comes within `gap` of it: the trials do not yet say which of the two the
 // vehicle has.
@@ -75,15 +68,15 @@ std::vector<std::string> Ambiguities(const ident::DiagnosisResult& r, model::Dof
   std::vector<std::string> out;
   for (const ident::CandidateTest& chosen : r.tests) {
     if (chosen.dof != dof || !chosen.accepted ||
-        !found.count(EffectKey(chosen.effect, chosen.detail))) {
+        !found.count(ident::CandidateName(chosen.effect, chosen.detail))) {
       continue;
     }
     for (const ident::CandidateTest& t : r.tests) {
       if (t.dof != dof || t.round != chosen.round || !t.significant ||
-          found.count(EffectKey(t.effect, t.detail))) {
+          found.count(ident::CandidateName(t.effect, t.detail))) {
         continue;
       }
-      const double lead = AicGain(chosen) - AicGain(t);
+      const double lead = chosen.AicGain() - t.AicGain();
       if (lead >= gap) continue;
       out.push_back("model not settled: the diagnosis chose " + chosen.effect + " over " +
                     t.effect + " with an AIC lead of " + model::Significant(lead, 2) +
@@ -117,7 +110,7 @@ ModelChange AdoptFindings(const model::Campaign& campaign, model::Dof dof,
   std::set<std::string> found;
   std::set<std::string>& known = working->effects[dof];
   for (const ident::Finding& f : r.findings) {
-    const std::string key = EffectKey(f.effect, f.detail);
+    const std::string key = ident::CandidateName(f.effect, f.detail);
     if (f.dof != dof || InStandardStructure(f)) continue;
     found.insert(key);
     if (!known.count(key)) change.entered.push_back({f.effect, f.detail, f.params, f.gain});

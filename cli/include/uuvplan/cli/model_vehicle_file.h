@@ -20,11 +20,12 @@ bool WriteModelVehicle(const std::string& command, const std::string& path,
                        const std::vector<const ident::DofIdentification*>& dofs,
                        const std::string& comment);
 
-/// WriteModelVehicle with every DOF of `result`; false, with the reason on stderr and nothing
-/// written, when a DOF failed (the file would mix an identified model with a failed one's a
-/// priori box) or none was identified.
+/// WriteModelVehicle with every DOF of `result`, headed by `what` ("the identified model") and
+/// what its σ are and who reads it; false, with the reason on stderr and nothing written, when
+/// a DOF failed (the file would mix an identified model with a failed one's a priori box) or
+/// none was identified.
 bool WriteIdentifiedVehicle(const std::string& command, const std::string& path,
                             const std::string& campaign_path, const model::Vehicle& vehicle,
-                            const ident::IdentifyResult& result, const std::string& comment);
+                            const ident::IdentifyResult& result, const std::string& what);
 
 }  // namespace uuvplan::cli

@@ -12,8 +12,8 @@
 
 namespace uuvplan::model {
 
-/// `model` restated at thrust reference `reference` (> 0); returned as is when it has no
-/// thrust_map (no thrust_exponent or thrust_reference) or already has that reference.
-DofParameters AtThrustReference(DofParameters model, double reference);
+/// Restates `model` at thrust reference `reference` (> 0). False, and `model` unchanged, when
+/// it has no thrust_map (no thrust_exponent or thrust_reference) or already has that reference.
+bool RestateThrustReference(double reference, DofParameters* model);
 
 }  // namespace uuvplan::model

@@ -184,7 +184,14 @@ struct CandidateTest {
   /// min_z σ from their null values once the effects found after it are in (which, and why).
   std::optional<Removal> removed;
   int round = 0;  ///< greedy round (0 = against the standard model)
+
+  /// Its AIC gain over the model of its round on the fit trials: D − 2·Δp.
+  double AicGain() const { return statistic - 2.0 * added_parameters; }
 };
+
+/// "deadzone" or "coupling vr": a candidate or finding as reports name it (a coupling by its
+/// pair; other effects' detail is not part of the name).
+std::string CandidateName(const std::string& effect, const std::string& detail);
 
 struct DiagnosisResult {
   IdentifyResult nominal;

@@ -237,8 +237,8 @@ struct LoopOptions {
   /// `dofs` is replaced by the DOF). When the effects it accepts differ from the model's, its
   /// extended model becomes the DOF's model, which the DOF is identified in at once and in every
   /// later identification (the written-model stage of identify): the diagnosis of every trial
-  /// so far decides, so an effect it no longer finds leaves. nullopt: the standard model
-  /// throughout.
+  /// so far decides; an effect leaves when it is no longer significant on top of the diagnosed
+  /// model. nullopt: the standard model throughout.
   std::optional<ident::DiagnoseOptions> diagnose;
   /// Under `diagnose`, a DOF's model is settled when each effect the diagnosis accepted leads
   /// every other significant candidate of its round by at least this AIC difference; until
