@@ -59,7 +59,7 @@ void ParseSigma(const Value& v, DofTruth* truth) {
 // dofs.<dof>.params, .effects and .sigma of a truth file (or of a vehicle file with a model,
 // as `diagnose --write-vehicle` writes it); nullopt when the DOF has no params.
 std::optional<DofTruth> ParseTruthDof(const Value& v, Dof dof, const Vehicle& vehicle) {
-  const MapValue m(v, "a map {drag, added_mass, params, effects, sigma}");
+  const MapValue m(v, "a map {drag, added_mass, params, effects, sigma, origin}");
   const Value effects = m.Optional("effects");
   if (!m.Has("params")) {
     if (!effects.absent()) m.Required("params");  // effects act on the true parameters
@@ -76,6 +76,10 @@ std::optional<DofTruth> ParseTruthDof(const Value& v, Dof dof, const Vehicle& ve
     }
   }
   if (const Value sigma = m.Optional("sigma"); !sigma.absent()) ParseSigma(sigma, &truth);
+  if (const Value origin = m.Optional("origin"); !origin.absent()) {
+    if (truth.sigma.empty()) origin.Expected("no origin without sigma (a model known to ±σ)");
+    truth.origin = Name(origin, "where the model with σ comes from (a sentence)");
+  }
   return truth;
 }
 

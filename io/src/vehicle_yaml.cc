@@ -19,8 +19,6 @@ namespace uuvplan::io {
 
 using namespace model;  // NOLINT: the vocabulary of the vehicle file
 
-namespace {
-
 // Added-mass bounds are fractions of the rigid-body value: 0 <= lo <= hi.
 std::array<double, 2> AddedMassBounds(const Value& v) {
   const std::string expectation = "[lo, hi] with 0 <= lo <= hi (fractions of the rigid-body value)";
@@ -28,6 +26,8 @@ std::array<double, 2> AddedMassBounds(const Value& v) {
   if (!(b[0] >= 0 && b[0] <= b[1])) v.Expected(expectation);
   return b;
 }
+
+namespace {
 
 ThrustModel ParseThrust(const Value& v) {
   const MapValue m(v, "a map {model: square, c_pos, c_neg} or {model: poly2, a, b}");
@@ -180,8 +180,8 @@ DragPrior ParseDrag(const Value& v, Dof dof, const Vehicle& vehicle) {
 // an identified model (`diagnose --write-vehicle`), adds params, effects and sigma (read by
 // ParseTruthDof).
 DofPrior ParsePrior(const Value& v, Dof dof, const Vehicle& vehicle) {
-  const MapValue m(v, "a map {drag, added_mass, params, effects, sigma}");
-  m.AllowOnly({"drag", "added_mass", "params", "effects", "sigma"});
+  const MapValue m(v, "a map {drag, added_mass, params, effects, sigma, origin}");
+  m.AllowOnly({"drag", "added_mass", "params", "effects", "sigma", "origin"});
   DofPrior prior;
   if (const Value d = m.Optional("drag"); !d.absent()) prior.drag = ParseDrag(d, dof, vehicle);
   if (const Value a = m.Optional("added_mass"); !a.absent()) prior.added_mass = AddedMassBounds(a);
@@ -217,6 +217,7 @@ DofSensors ParseDofSensors(const Value& v, double size) {
 
 // The vehicle keys of `root`; a truth file may also have virtual_pool (read by ReadTruth).
 Vehicle ParseVehicle(const MapValue& root, bool truth) {
+  if (root.Has("base")) return ParsePayloadVehicle(root, truth);
   if (truth) {
     root.AllowOnly({"name", "mass", "size", "inertia", "added_mass", "thrusters", "min_thrust",
                     "mappings", "jet_clearance", "restoring", "max_translation_speed",
@@ -259,14 +260,17 @@ Vehicle ParseVehicle(const MapValue& root, bool truth) {
       vehicle.priors[DofKey(e)] = ParsePrior(e.value, DofKey(e), vehicle);
     }
   }
-  if (const Value v = root.Optional("sensors"); !v.absent()) {
-    const MapValue sensors(v, "a map {<dof>: {position, velocity}}");
-    for (const MapValue::Entry& e : sensors.entries()) {
-      const Dof dof = DofKey(e);
-      vehicle.sensors[dof] = ParseDofSensors(e.value, IsRotational(dof) ? 1.0 : largest);
-    }
-  }
+  if (const Value v = root.Optional("sensors"); !v.absent()) ParseSensors(v, &vehicle);
   return vehicle;
+}
+
+void ParseSensors(const Value& v, Vehicle* vehicle) {
+  const double largest = *std::max_element(vehicle->size.begin(), vehicle->size.end());
+  const MapValue sensors(v, "a map {<dof>: {position, velocity}}");
+  for (const MapValue::Entry& e : sensors.entries()) {
+    const Dof dof = DofKey(e);
+    vehicle->sensors[dof] = ParseDofSensors(e.value, IsRotational(dof) ? 1.0 : largest);
+  }
 }
 
 Vehicle ReadVehicle(const std::string& path) {

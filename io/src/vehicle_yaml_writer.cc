@@ -139,7 +139,11 @@ void EmitModel(YAML::Emitter& out, const DofParameters& model) {
   std::map<std::string, Texts> plain;  // effect -> key -> value
   std::map<std::string, std::map<std::string, Texts>> qualified;
   out << YAML::Key << "params" << YAML::Value;
-  if (model.identified()) out << YAML::Comment("identified: estimates rounded from their 1σ");
+  if (!model.origin.empty()) {
+    out << YAML::Comment("a priori (origin below), rounded from its 1σ");
+  } else if (model.identified()) {
+    out << YAML::Comment("identified: estimates rounded from their 1σ");
+  }
   out << YAML::BeginMap;
   for (const auto& [name, value] : model.params) {
     const EffectEntry* owner = Effects().OwnerOf(name);
@@ -202,6 +206,7 @@ void EmitDofs(YAML::Emitter& out, const Vehicle& v) {
         out << YAML::Key << "sigma" << YAML::Value;
         EmitSigmas(out, model.sigma);
       }
+      if (!model.origin.empty()) out << YAML::Key << "origin" << YAML::Value << model.origin;
     }
     out << YAML::EndMap;
   }

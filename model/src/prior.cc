@@ -9,11 +9,8 @@
 
 namespace uuvplan::model {
 
-namespace {
-
-// Bluff-body quadratic drag (prior.h).
-double BluffBodyQuadraticDrag(const Vehicle& vehicle, Dof dof) {
-  const double l = vehicle.size[0], w = vehicle.size[1], h = vehicle.size[2];
+double BluffBodyQuadraticDrag(const std::array<double, 3>& size, Dof dof) {
+  const double l = size[0], w = size[1], h = size[2];
   constexpr double kRho = 1000.0, kCd = 1.0;
   switch (dof) {
     case Dof::kSurge:
@@ -31,6 +28,8 @@ double BluffBodyQuadraticDrag(const Vehicle& vehicle, Dof dof) {
   }
   return 0.0;
 }
+
+namespace {
 
 // The largest generalised force (N or N·m) the thrusters give along `dof`: over its mappings
 // and both directions, the force at which the first working thruster reaches its limit. 0 when
@@ -75,7 +74,7 @@ APrioriDrag DragOf(const Vehicle& vehicle, Dof dof, double fallback_rel_sigma) {
     const double kq = thrust / (1.1 * v * v);
     return {{0.1 * kq * v, kq, fallback_rel_sigma}, DragSource::kThrustRange, thrust};
   }
-  const double kq = BluffBodyQuadraticDrag(vehicle, dof);
+  const double kq = BluffBodyQuadraticDrag(vehicle.size, dof);
   return {{0.1 * kq, kq, fallback_rel_sigma}, DragSource::kBluffBody, 0.0};
 }
 

@@ -9,6 +9,7 @@
 #include "options_check.h"
 #include "uuvplan/model/effects.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
@@ -281,6 +282,24 @@ struct NextCandidates {
   }
 };
 
+// A trial restricted to one direction of one mapping (SineDesignOptions::mappings and sign: the
+// loop's trial for a direction not pushed yet) informs no installation coefficient of another
+// direction: without prior information on them the information is singular and no sine is
+// designed. Each gets the information of σ = 10 (an η lies in [0, 1]: no knowledge, yet above
+// kSingularThreshold): the D criterion is then that of the parameters the trial reaches, up to
+// a constant (log det of a block-diagonal matrix).
+void HoldUnreachedEtas(const DofPlanningProblem& ctx, const SineDesignOptions& sine,
+                       std::vector<Eigen::MatrixXd>* information) {
+  if (sine.sign == 0 || sine.mappings.size() != 1) return;
+  const std::string reached = std::string(model::param::kEtaPrefix) + sine.mappings.front() +
+                              (sine.sign > 0 ? ".pos" : ".neg");
+  const std::vector<std::string>& names = ctx.model().parameter_names();
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (!model::StartsWith(names[i], model::param::kEtaPrefix) || names[i] == reached) continue;
+    for (Eigen::MatrixXd& m : *information) m(i, i) += 1e-2;
+  }
+}
+
 }  // namespace
 
 ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& pool,
@@ -353,7 +372,8 @@ NextTrialResult DesignNextTrial(const model::Vehicle& vehicle, const model::Pool
   ParameterBox box = NextTrialBox(vehicle, pool, dof, estimates, sigmas, o, &result.notes);
   DofPlanningProblem ctx(vehicle, pool, dof, std::move(box), o.schedule.planner);
   const PriorInformation prior = PriorInformation::FromCovariance(names, covariance);
-  const std::vector<Eigen::MatrixXd> M0 = PriorPerPoint(ctx, &prior);
+  std::vector<Eigen::MatrixXd> M0 = PriorPerPoint(ctx, &prior);
+  HoldUnreachedEtas(ctx, o.schedule.sine, &M0);
   result.criterion_before =
       Aggregate(ctx.options().robustness, ctx.CriterionValues(M0, o.criterion, {}));
 

@@ -231,7 +231,7 @@ TEST(ReadVehicleTest, ModelParamsAreChecked) {
   dir.Edit("vehicle.yaml", "    params: {m: -800}", "    paramz: {m: 800}");
   EXPECT_THAT(ErrorOf([&] { ReadVehicle(dir.Path("vehicle.yaml")); }),
               HasSubstr("dofs.heave: unknown key 'paramz' (allowed: drag, added_mass, params, "
-                        "effects, sigma)"));
+                        "effects, sigma, origin)"));
 }
 
 TEST(ReadVehicleTest, UnknownDofKey) {

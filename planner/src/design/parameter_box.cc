@@ -260,8 +260,10 @@ ParameterBox PlanningBox(const model::Vehicle& vehicle, model::Dof dof,
   }
   const ParameterBox apriori = APrioriBox(vehicle, dof, names, options, nullptr);
   if (notes) {
-    notes->push_back(std::string(model::DofName(dof)) +
-                     ": planned about the identified model of the vehicle file ± " +
+    const std::string about = model->second.origin.empty()
+                                  ? "the identified model of the vehicle file"
+                                  : model->second.origin;
+    notes->push_back(std::string(model::DofName(dof)) + ": planned about " + about + " ± " +
                      model::Significant(options.estimate_sigmas, 3) +
                      "σ, no wider than the a priori box (" +
                      EstimatesText(dof, model->second, names) + ")");

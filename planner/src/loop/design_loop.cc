@@ -359,7 +359,7 @@ NextStepResult NextStep(const model::Campaign& campaign, const model::Pool& pool
     r.estimates.status = ident::IdentifyStatus::kFailed;
     r.estimates.message = "no fit trial yet: nothing to identify";
   }
-  internal::Planner planner{campaign.vehicle, pool, options, {}};
+  internal::Planner planner{campaign.vehicle, pool, options, {}, {}};
   const internal::LoopMemory memory{PreviousEstimates(campaign, dofs, options.identify), {}, {}};
   internal::Decision d = internal::Decide(planner, campaign, dofs, r.estimates, memory);
   r.status = d.status;
@@ -428,7 +428,7 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
   virtual_pool.unwrap_headings = true;  // as `uuvplan next` reads the logs
   virtual_pool.pool = pool;
   model::VirtualCampaignBuilder builder(truth, virtual_pool);
-  internal::Planner planner{truth.vehicle, pool, options.step, {}};
+  internal::Planner planner{truth.vehicle, pool, options.step, {}, {}};
   planner.Prepare(dofs);  // every DOF starts with its a priori schedule: plan them at once
   internal::LoopMemory memory;
   internal::WorkingModel working{truth.vehicle, {}, {}};
@@ -445,6 +445,7 @@ LoopResult RunLoop(const model::Truth& truth, const model::Pool& pool, const Loo
         RunIteration(std::move(d), options, dofs, &builder, &result.estimates, &working, &memory);
     TrackConsistency(it, options, &inconsistent, &memory);
     per_dof[it.dof].push_back(it.trial.design);
+    planner.run[it.dof].push_back(it.trial);
     result.pool_time = it.pool_time;
     it.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (on_iteration) on_iteration(it);

@@ -24,6 +24,7 @@ using model::Dof;
 using Direction = std::pair<std::string, int>;  // (mapping, sign ±1)
 
 constexpr const char* kAPrioriSource = "a priori schedule";
+constexpr const char* kKnownModelSource = "design about the vehicle file's model";
 
 int Sign(double x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
 
@@ -140,6 +141,9 @@ std::string DirectionName(const Direction& d) {
 //   3. Estimates not usable yet (m or the drag of interest insignificant): the a priori
 //      schedule, in order (ref 000 §III: steady runs, then the sine).
 //   4. DesignNextTrial on all the DOF's parameters (box = estimates ± 2σ, prior = C⁻¹).
+// A DOF whose model the vehicle file gives with σ (identified, or a payload on an identified
+// base) takes DesignNextTrial's trial about that model before its estimates are usable, when the
+// trial's predicted σ make them usable; else it follows the order above.
 class DofTrialPolicy {
  public:
   DofTrialPolicy(Planner& planner, const model::Campaign& campaign, const DofProgress& progress,
@@ -155,6 +159,7 @@ class DofTrialPolicy {
     ReadHistory();
     ChooseWanted();
     ReadEstimates(id);
+    if (KnownModel() && !progress_.usable && SequentialFirst()) return true;
     for (const Direction& w : want_) {
       if (const PlannedTrial* t = PendingPushing(w)) {
         return TakeAPriori(*t, DirectionName(w) + ": " + want_why_);
@@ -182,7 +187,12 @@ class DofTrialPolicy {
   // The planned trial's predicted σ at the current estimates (the centre of the design's box;
   // the design's own prediction is the worst over the box, pessimistic by design: on ROMEO
   // surge in a 5 m pool it predicted σ(kq) down 29% where the trial achieved 78%).
-  PredictedPrecision AtEstimates() const {
+  PredictedPrecision AtEstimates() const { return PrecisionAt({d_->trial}, true); }
+
+  // The predicted σ after `trials` at the current estimates (the box's centre), with the
+  // information of the estimates so far as prior (`with_estimates`) or none.
+  PredictedPrecision PrecisionAt(const std::vector<PlannedTrial>& trials,
+                                 bool with_estimates) const {
     std::vector<std::string> notes;
     const auto probe = DofPlanningProblem::APriori(planner_.vehicle, planner_.pool, dof_,
                                                    planner_.options.schedule.planner, &notes);
@@ -210,8 +220,8 @@ class DofTrialPolicy {
     }
     PriorInformation prior;
     if (!names.empty()) prior = PriorInformation::FromCovariance(names, covariance);
-    return PredictPrecision(ctx,
-                            TrialsInformation(ctx, {d_->trial}, names.empty() ? nullptr : &prior));
+    const PriorInformation* p = with_estimates && !names.empty() ? &prior : nullptr;
+    return PredictPrecision(ctx, TrialsInformation(ctx, trials, p));
   }
 
   // Trials like this one to bring a parameter of value `value` to the target. One not determined
@@ -258,10 +268,13 @@ class DofTrialPolicy {
       if (!(g.trials_to_target >= best.trials_to_target)) best = g;
     }
     // The a priori schedule's trials are designed as a set (ref 000: steady runs at several
-    // levels, then the sine): one alone may inform nothing, and each runs once.
+    // levels, then the sine): one alone may inform nothing, and each runs once. So are the
+    // first trials about a model the vehicle file gives (SequentialFirst: taken only when
+    // they make the estimates usable).
     // A trial with no parameter above the target to bring down (every one below it but not
     // confirmed, or nothing estimated yet) is not judged by a gain it cannot have.
-    best.negligible = d_->source != kAPrioriSource && !best.parameter.empty() &&
+    best.negligible = d_->source != kAPrioriSource && d_->source != kKnownModelSource &&
+                      !best.parameter.empty() &&
                       !(best.trials_to_target <= planner_.options.max_trials_to_target);
     return best;
   }
@@ -314,6 +327,89 @@ class DofTrialPolicy {
         dropped_.push_back({p.name, p.sigma_before_drop});
       }
     }
+  }
+
+  // The vehicle file gives the DOF's model with σ (identified, or a payload on an identified
+  // base): its box (parameter_box.h PlanningBox) is narrow enough to design in before any
+  // estimate is usable.
+  bool KnownModel() const {
+    const auto model = planner_.vehicle.models.find(dof_);
+    return model != planner_.vehicle.models.end() && model->second.identified();
+  }
+
+  // The sequential design about the vehicle file's model (steps 1, 2 and 4): designed with the
+  // file's σ as prior information where the data have no usable estimate yet (its box the
+  // file's ± estimate_sigmas σ), taken when the information of the DOF's trials so far and this
+  // one alone, at the model's values, makes m and the drag usable (the identification uses no
+  // prior); else the a priori schedule, whose steady runs at several levels tell k from kq
+  // where one trial cannot (e.g. in a narrow pool).
+  bool SequentialFirst() {
+    const Decision before = *d_;
+    const auto data_names = names_;
+    const Eigen::MatrixXd data_covariance = covariance_;
+    AddFilePrior();
+    NextTrialOptions next = SequentialOptions();
+    next.box_sigmas = planner_.options.schedule.planner.box.estimate_sigmas;
+    std::string why;
+    bool designed = DesignForWanted(next, &why);
+    if (!designed) {
+      const NextTrialResult nt = Design(next, "design about the vehicle file's model", &why);
+      designed = nt.status == DesignStatus::kOk && Accept(nt);
+    }
+    names_ = data_names;
+    covariance_ = data_covariance;
+    if (!designed) return Restore(before, why);
+    d_->source = kKnownModelSource;
+    std::vector<PlannedTrial> trials = planner_.run[dof_];
+    trials.push_back(d_->trial);
+    if (MakesUsable(PrecisionAt(trials, false))) return true;
+    return Restore(before,
+                   "the design about the vehicle file's model would leave m or the "
+                   "drag unusable after it");
+  }
+
+  // The file's σ, as a diagonal covariance, of the parameters the data have no usable estimate
+  // of (names_ and covariance_ extended; estimates_ keeps the data's values where it has them).
+  void AddFilePrior() {
+    const model::DofParameters& model = planner_.vehicle.models.at(dof_);
+    std::vector<std::pair<std::string, double>> added;
+    for (const auto& [name, sigma] : model.sigma) {
+      const bool known = std::find(names_.begin(), names_.end(), name) != names_.end();
+      if (!known && sigma > 0 && model.params.count(name)) added.push_back({name, sigma});
+    }
+    const auto n = static_cast<Eigen::Index>(names_.size());
+    const auto total = n + static_cast<Eigen::Index>(added.size());
+    Eigen::MatrixXd c = Eigen::MatrixXd::Zero(total, total);
+    c.topLeftCorner(n, n) = covariance_;
+    for (std::size_t i = 0; i < added.size(); ++i) {
+      names_.push_back(added[i].first);
+      estimates_.emplace(added[i].first, model.params.at(added[i].first));
+      c(n + static_cast<Eigen::Index>(i), n + static_cast<Eigen::Index>(i)) =
+          added[i].second * added[i].second;
+    }
+    covariance_ = c;
+  }
+
+  // m and the drag (kq, or k where the file's kq is 0) predicted within the usable percentile
+  // error of the file's values.
+  bool MakesUsable(const PredictedPrecision& predicted) const {
+    const model::DofParameters& model = planner_.vehicle.models.at(dof_);
+    const auto within = [&](const std::string& name) {
+      const auto value = model.params.find(name);
+      const auto sigma = predicted.sigma.find(name);
+      return value != model.params.end() && sigma != predicted.sigma.end() &&
+             sigma->second < planner_.options.usable_percent / 100 * std::abs(value->second);
+    };
+    const auto kq = model.params.find(model::param::kQuadraticDrag);
+    const bool quadratic = kq != model.params.end() && kq->second != 0.0;
+    return within(model::param::kMass) &&
+           within(quadratic ? model::param::kQuadraticDrag : model::param::kLinearDrag);
+  }
+
+  bool Restore(const Decision& before, const std::string& why) {
+    *d_ = before;
+    d_->notes.push_back(name_ + ": " + why + ": the a priori schedule");
+    return false;
   }
 
   const PlannedTrial* PendingPushing(const Direction& w) const {

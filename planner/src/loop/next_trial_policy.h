@@ -32,6 +32,9 @@ struct Planner {
   const model::Pool& pool;
   const DesignLoopOptions& options;
   std::map<model::Dof, ScheduleResult> schedules;
+  /// The trials the loop ran, by DOF (RunLoop records them): the information of a DOF's first
+  /// trials about a model the vehicle file gives, before identification can use them.
+  std::map<model::Dof, std::vector<PlannedTrial>> run;
 
   const ScheduleResult& APriori(model::Dof dof);
   /// Plans the a priori schedules of `dofs` not planned yet, on Threads() threads.

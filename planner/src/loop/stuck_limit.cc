@@ -71,7 +71,7 @@ std::string StuckReason(Planner& planner, const model::Campaign& campaign,
   std::string pool_note;
   if (!model::IsRotational(dof)) {
     const model::Pool big = Doubled(planner.pool);
-    Planner relaxed{planner.vehicle, big, planner.options, {}};
+    Planner relaxed{planner.vehicle, big, planner.options, {}, planner.run};
     Decision scratch;
     CandidateGain g2;
     std::string why;

@@ -59,6 +59,13 @@ inline constexpr InputQuantity kIntegrationStep{"an integration step", "s", 1e-6
 inline constexpr InputQuantity kSampleInterval{"a median sampling interval", "s", 1e-5, 10};
 /// A logged force or torque / (weight, or weight × size): 1e308 in one cell is not a force.
 inline constexpr InputQuantity kForceRatio{"a logged force / vehicle weight", "1", 0, 1000};
+/// A payload's mass / the water it displaces: from foam (about 100) to tungsten (19,300); a
+/// volume in litres where m³ are asked reads 1000× too light.
+inline constexpr InputQuantity kPayloadDensity{"a payload's mean density (mass / volume)", "kg/m³",
+                                               50, 25000};
+/// The distance of a payload's centre from the base's / the base's largest dimension: more than
+/// 10 is a unit slip (cm for m), not a payload.
+inline constexpr InputQuantity kPayloadOffsetRatio{"a payload's offset / base size", "1", 0, 10};
 }  // namespace plausible
 
 /// From now on, an implausible value is passed to `warn` instead of refused (nullptr: refused).

@@ -3,6 +3,7 @@
 // robust box).
 #pragma once
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -27,6 +28,11 @@ struct APrioriDrag {
 /// for about that (ROMEO's surge truth gives 0.9 m/s at 350 N, URIS's yaw 3.8 rad/s at its
 /// 8 N·m with a linear drag only, ref 004 Table 4).
 inline double TerminalSpeed(Dof /*dof*/) { return 1.0; }
+
+/// The quadratic drag of a bluff box of `size` (length, width, height): ½·ρ·C_D·A for a
+/// translation (ρ = 1000 kg/m³, C_D = 1, A the frontal area across the DOF), ρ·C_D·h·l⁴/64 for
+/// a rotation (h along the axis, l the longer side across it), in N·s²/m² or N·m·s²/rad².
+double BluffBodyQuadraticDrag(const std::array<double, 3>& size, Dof dof);
 
 /// The vehicle file's drag fit (dofs.<dof>.drag); else the drag that holds the vehicle at
 /// TerminalSpeed v_t under the largest thrust F_max of its mappings along the DOF, with a

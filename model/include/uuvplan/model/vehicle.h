@@ -47,7 +47,10 @@ struct DofParameters {
   std::map<std::string, double> settings;  ///< structure settings of its effects (effects.h)
   /// 1σ of identified parameters by name; empty in a hand-written truth.
   std::map<std::string, double> sigma;
-  /// An identified model: its values are estimates with a σ.
+  /// Where a model with σ that no campaign identified comes from (the base's estimates with a
+  /// payload's rules, payload.h); empty for an identified model or a truth.
+  std::string origin;
+  /// A model known to ±σ: identified, or derived from an identified one (`origin`).
   bool identified() const { return !sigma.empty(); }
 };
 
