@@ -10,24 +10,6 @@
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::ident::stages {
-namespace {
-
-// The standard structure `base` extended by every parameter and setting of `written` it lacks.
-model::ModelStructure WrittenStructure(const model::ModelStructure& base,
-                                       const model::DofParameters& written,
-                                       std::vector<std::string>* added) {
-  model::ModelStructure s = base;
-  for (const auto& [name, value] : written.params) {
-    if (name == model::param::kMass || s.Has(name) || name == model::param::kBiasStep) continue;
-    if (model::StartsWith(name, model::param::kEtaPrefix)) continue;  // η: the campaign's mappings
-    s.Add(name);
-    added->push_back(name);
-  }
-  for (const auto& [key, value] : written.settings) s.settings.emplace(key, value);
-  return s;
-}
-
-}  // namespace
 
 std::shared_ptr<const model::DofModel> FitWrittenModel(const StageInputs& c, DofIdentification* r) {
   const auto written = c.vehicle.models.find(r->dof);
@@ -36,7 +18,8 @@ std::shared_ptr<const model::DofModel> FitWrittenModel(const StageInputs& c, Dof
   const bool fitted = r->status != IdentifyStatus::kFailed || r->failed_only_non_physical;
   if (written == c.vehicle.models.end() || !fitted || r->theta.size() == 0) return nullptr;
   std::vector<std::string> added;
-  const model::ModelStructure structure = WrittenStructure(r->structure, written->second, &added);
+  const model::ModelStructure structure =
+      model::WithWrittenEffects(r->structure, written->second, &added);
   if (added.empty()) return nullptr;
   // Two starts, the lower cost kept: the file's model as written (its m, drag and bias belong
   // with its effects), and its effects with the standard fit's estimates of the rest. When the

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/model/vehicle.h"
 
@@ -61,6 +62,18 @@ ModelStructure ModelStructure::Standard(const Vehicle& vehicle, Dof dof,
     }
   }
   return s;
+}
+
+ModelStructure WithWrittenEffects(ModelStructure base, const DofParameters& written,
+                                  std::vector<std::string>* added) {
+  for (const auto& [name, value] : written.params) {
+    if (name == param::kMass || name == param::kBiasStep || base.Has(name)) continue;
+    if (StartsWith(name, param::kEtaPrefix)) continue;
+    base.Add(name);
+    if (added) added->push_back(name);
+  }
+  for (const auto& [key, value] : written.settings) base.settings.emplace(key, value);
+  return base;
 }
 
 }  // namespace uuvplan::model

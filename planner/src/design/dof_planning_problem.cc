@@ -63,10 +63,21 @@ int PlannerOptions::Threads() const {
 
 namespace {
 
+// `s` with the effects of the model the vehicle file gives the DOF with σ (identified, or
+// derived from an identified base): the Fisher information then covers their parameters too
+// (a lag, a thrust exponent, ...), at the file's values.
+model::ModelStructure WithFileEffects(const model::Vehicle& v, model::Dof dof,
+                                      model::ModelStructure s) {
+  const auto model = v.models.find(dof);
+  if (model == v.models.end() || !model->second.identified()) return s;
+  return model::WithWrittenEffects(std::move(s), model->second);
+}
+
+// The standard model of the DOF's mappings, with the file's effects.
 model::ModelStructure StructureFor(const model::Vehicle& v, model::Dof dof) {
   std::vector<std::string> names;
   for (int i : v.MappingsOf(dof)) names.push_back(v.mappings[i].name);
-  return model::ModelStructure::Standard(v, dof, names, false);
+  return WithFileEffects(v, dof, model::ModelStructure::Standard(v, dof, names, false));
 }
 
 void RequireDesignable(const model::Vehicle& v, model::Dof dof) {
@@ -244,7 +255,7 @@ const DofPlanningProblem::TrialModel& DofPlanningProblem::ModelFor(
   auto tm = std::make_unique<TrialModel>();
   model::ModelStructure s = model::ModelStructure::Standard(vehicle_, dof_, {}, false);
   for (const std::string& eta : etas) s.Add(eta);
-  tm->model = std::make_unique<model::DofModel>(vehicle_, s);
+  tm->model = std::make_unique<model::DofModel>(vehicle_, WithFileEffects(vehicle_, dof_, s));
   for (const auto& n : tm->model->parameter_names()) tm->to_dof.push_back(Index(n));
   auto sub = [&](const Eigen::VectorXd& th) {
     Eigen::VectorXd out(tm->to_dof.size());

@@ -14,6 +14,7 @@
 namespace uuvplan::model {
 
 struct Vehicle;
+struct DofParameters;
 
 struct ModelStructure {
   Dof dof = Dof::kSurge;
@@ -40,5 +41,12 @@ struct ModelStructure {
   static ModelStructure Standard(const Vehicle& vehicle, Dof dof,
                                  const std::vector<std::string>& mappings_used, bool ballast);
 };
+
+/// `base` extended by every parameter and setting of `written` (a model a vehicle file gives:
+/// its effects, as `diagnose --write-vehicle` writes them) that it lacks; m, bias_step and η
+/// stay as `base` has them (they follow the campaign's ballast and mappings). `added`, when
+/// given, receives the parameters added.
+ModelStructure WithWrittenEffects(ModelStructure base, const DofParameters& written,
+                                  std::vector<std::string>* added = nullptr);
 
 }  // namespace uuvplan::model
