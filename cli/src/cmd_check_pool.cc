@@ -124,7 +124,8 @@ int RunCheckPool(const CheckPoolFlags& o) {
   std::ostream& out = ReportStream(o.json);
   out << "Pool " << pool.name << " for " << vehicle.name << ", "
       << (o.plan.empty() ? "the planner's own schedule" : "plan " + o.plan) << ": "
-      << text::VerdictAnswer(verdict.hostability, verdict.identified_box) << "\n\n";
+      << text::VerdictAnswer(verdict.hostability, verdict.identified_box, verdict.derived_box)
+      << "\n\n";
   PrintTrialChecks(r, out);
   text::PrintVerdict(verdict, pool, out);
   if (r.has_alternative) PrintAlternative(r, out);

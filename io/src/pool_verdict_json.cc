@@ -73,6 +73,7 @@ nlohmann::json PoolVerdictJson(const planner::PoolVerdict& v, const model::Pool&
   return {{"hosted", v.hosted},
           {"hostability", std::string(planner::HostabilityName(v.hostability))},
           {"identified_box", v.identified_box},
+          {"derived_box", v.derived_box},
           {"sentence", text::VerdictSentence(v, pool)},
           {"lines", text::VerdictLines(v, pool)},
           {"dofs", dofs},

@@ -56,6 +56,18 @@ TEST(VerdictText, TheSentenceSaysHowMuchOfTheBoxThePoolHosts) {
   }
   EXPECT_EQ(VerdictAnswer(Hostability::kPart, true),
             "can host it for PART of the box about the identified model only");
+  // A payload on an identified base: the box is the base's estimates with the payload's rules,
+  // not an identified model of this vehicle.
+  v.derived_box = true;
+  EXPECT_NE(VerdictSentence(v, kPool).find(
+                "for PART of the box about the base's estimates with the payload only"),
+            std::string::npos);
+  for (const auto& line : VerdictLines(v, kPool)) {
+    EXPECT_EQ(line.find("identified model"), std::string::npos) << line;
+  }
+  EXPECT_EQ(VerdictAnswer(Hostability::kPart, true, true),
+            "can host it for PART of the box about the base's estimates with the payload only");
+  v.derived_box = false;
   PoolVerdict nothing;
   nothing.unplanned = "no DOF can be planned";
   EXPECT_NE(VerdictSentence(nothing, kPool).find("CANNOT host the identification of  to"),

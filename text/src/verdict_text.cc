@@ -47,7 +47,8 @@ std::string Goal(const PoolVerdict& v) {
 }
 
 // "a priori box", or the box about the vehicle file's estimates the planner used instead.
-std::string Box(bool identified_box) {
+std::string Box(bool identified_box, bool derived_box) {
+  if (derived_box) return "box about the base's estimates with the payload";
   return identified_box ? "box about the identified model" : "a priori box";
 }
 
@@ -61,14 +62,14 @@ std::string Sentence(const PoolVerdict& v, const model::Pool& pool) {
       break;
     case Hostability::kPart:
       s << " can host the identification of " << DofList(v.dofs, Hostability::kPart) << Goal(v)
-        << " for PART of the " << Box(v.identified_box)
+        << " for PART of the " << Box(v.identified_box, v.derived_box)
         << " only (the first trials decide: `loop` and `next` run and stop when the estimates "
            "fall outside it)";
       break;
     case Hostability::kNone:
       s << " CANNOT host the identification of " << DofList(v.dofs, Hostability::kNone) << Goal(v);
       if (!v.dofs.empty() && !v.dofs.front().points.empty()) {
-        s << " for any vehicle of the " << Box(v.identified_box)
+        s << " for any vehicle of the " << Box(v.identified_box, v.derived_box)
           << " checked (its centre and corners)";
       }
       break;
@@ -89,7 +90,7 @@ std::string DofLine(const PoolVerdict& verdict, const DofVerdict& v, const model
     return s.str();
   }
   s << (v.hostability == Hostability::kPart
-            ? "hosted for PART of the " + Box(verdict.identified_box) + " ("
+            ? "hosted for PART of the " + Box(verdict.identified_box, verdict.derived_box) + " ("
             : std::string("NOT hosted ("))
     << planner::PoolLimitName(v.limit) << "): ";
   if (v.only_plan_fails) {
@@ -209,9 +210,9 @@ std::string BoxPointLabel(const planner::BoxPoint& p, model::Dof dof) {
          model::Unit(model::param::kQuadraticDrag, dof) + ")";
 }
 
-std::string VerdictAnswer(Hostability h, bool identified_box) {
+std::string VerdictAnswer(Hostability h, bool identified_box, bool derived_box) {
   if (h == Hostability::kPart && identified_box) {
-    return "can host it for PART of the " + Box(true) + " only";
+    return "can host it for PART of the " + Box(true, derived_box) + " only";
   }
   return std::string(kVerdictAnswers.Name(h));
 }
@@ -266,10 +267,12 @@ std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& p
                                  [](const DofVerdict& d) { return d.points_start_known; });
   if (v.hostability == Hostability::kPart) {
     out.push_back(
-        "  assumption: judged over the whole " + Box(v.identified_box) +
-        (v.identified_box ? " (the vehicle file's estimates ± their σ, within its a priori "
-                            "bounds)"
-                          : " (the vehicle file's inertia bounds and drag prior)") +
+        "  assumption: judged over the whole " + Box(v.identified_box, v.derived_box) +
+        (v.derived_box      ? " (the base's estimates with the payload's rules, ± their σ, "
+                              "within the a priori bounds)"
+         : v.identified_box ? " (the vehicle file's estimates ± their σ, within its a priori "
+                              "bounds)"
+                            : " (the vehicle file's inertia bounds and drag prior)") +
         "; the pool hosts the vehicles at the points listed" +
         std::string(bound ? " (for a DOF so marked, only counting each trial's start known: "
                             "the loop's trials at its estimates must do better than the a "
@@ -280,7 +283,7 @@ std::vector<std::string> VerdictLines(const PoolVerdict& v, const model::Pool& p
         "1)");
   } else if (!v.hosted) {
     out.push_back(
-        "  assumption: judged over the whole " + Box(v.identified_box) +
+        "  assumption: judged over the whole " + Box(v.identified_box, v.derived_box) +
         " (its centre and four (m, drag) corners each planned as a known vehicle, and again "
         "counting each trial's start "
         "known, the upper bound of the information): no vehicle of the box is hosted, `loop` "
@@ -300,7 +303,7 @@ std::string LoopEndMessage(const planner::LoopResult& result, const PoolVerdict&
   std::vector<std::string> outside;
   for (const model::Dof dof : result.outside_part) outside.emplace_back(model::DofName(dof));
   return "the first trials place " + model::Join(outside) + " outside the part of the " +
-         Box(verdict.identified_box) +
+         Box(verdict.identified_box, verdict.derived_box) +
          " the pool hosts (the verdict before any trial: " + VerdictSentence(verdict, pool) +
          "); " + result.message;
 }

@@ -289,7 +289,9 @@ PoolVerdict JudgePoolOnChecks(const model::Vehicle& vehicle, const model::Pool& 
   out.hosted = !own.dofs.empty();
   for (const auto& p : own.dofs) {
     const auto m = vehicle.models.find(p.dof);
-    if (m != vehicle.models.end() && m->second.identified()) out.identified_box = true;
+    if (m == vehicle.models.end() || !m->second.identified()) continue;
+    out.identified_box = true;
+    out.derived_box = out.derived_box || !m->second.origin.empty();
   }
   std::vector<char> plan_fits;
   std::vector<std::size_t> not_hosted;

@@ -20,8 +20,10 @@ std::string VerdictSentence(const planner::PoolVerdict& verdict, const model::Po
 
 /// The answer to "can this pool host it?" in the verdict's own words: "CAN host it", "can
 /// host it for PART of the a priori box only" (of the box about the identified model when
-/// `identified_box`: PoolVerdict::identified_box), "CANNOT host it".
-std::string VerdictAnswer(planner::Hostability hostability, bool identified_box = false);
+/// `identified_box`, about the base's estimates when also `derived_box`: PoolVerdict), "CANNOT
+/// host it".
+std::string VerdictAnswer(planner::Hostability hostability, bool identified_box = false,
+                          bool derived_box = false);
 
 /// A point of the a priori box of `dof`: "m 495 kg, drag ×0.5 of the prior (kq 12 N·s²/m²)".
 std::string BoxPointLabel(const planner::BoxPoint& point, model::Dof dof);

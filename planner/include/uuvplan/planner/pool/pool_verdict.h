@@ -132,6 +132,9 @@ struct PoolVerdict {
   /// Some DOF's box is centred on the vehicle file's identified model (PlanningBox), not its
   /// a priori bounds: "the a priori box" of the fields above is that box for such a DOF.
   bool identified_box = false;
+  /// That model is derived from a base vehicle's estimates with a payload's rules
+  /// (model/payload.h; DofParameters::origin), not identified on this vehicle.
+  bool derived_box = false;
 };
 
 /// CHOSEN 6 with a 5% tolerance: the bracket shrinks up to 64×, to 5% for a first guess up to
