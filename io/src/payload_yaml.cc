@@ -38,10 +38,8 @@ std::array<double, 3> Triple(const Value& v, const std::string& expectation) {
 // "<mapping>.<pos|neg>" of one of the base's mappings.
 std::string Blocked(const Value& v, const Vehicle& base) {
   const std::string text = Name(v, "<mapping>.<pos|neg>");
-  const auto dot = text.rfind('.');
-  const std::string mapping = dot == std::string::npos ? text : text.substr(0, dot);
-  const std::string direction = dot == std::string::npos ? "" : text.substr(dot + 1);
-  if (base.MappingIndex(mapping) < 0 || (direction != "pos" && direction != "neg")) {
+  const auto q = ParseEtaQualifier(text);
+  if (!q || base.MappingIndex(q->first) < 0) {
     v.Expected("<mapping>.<pos|neg> of one of the base's mappings");
   }
   return text;

@@ -41,18 +41,16 @@ void ScaleRange(const std::string& name, const std::array<double, 2>& f, DofPara
   SetRange(name, std::max(0.0, v - s3) * f[0], (v + s3) * f[1], model);
 }
 
-// "eta.<mapping>.<pos|neg>" → the mapping loses that open-water direction.
+// "<mapping>.<pos|neg>" → the mapping loses that open-water direction.
 void Block(const std::string& qualifier, Vehicle* vehicle) {
-  const auto dot = qualifier.rfind('.');
-  const std::string mapping = qualifier.substr(0, dot == std::string::npos ? 0 : dot);
-  const std::string direction = dot == std::string::npos ? "" : qualifier.substr(dot + 1);
-  const int index = vehicle->MappingIndex(mapping);
-  if (index < 0 || (direction != "pos" && direction != "neg")) {
+  const auto q = ParseEtaQualifier(qualifier);
+  const int index = q ? vehicle->MappingIndex(q->first) : -1;
+  if (index < 0) {
     throw InputError("payload.blocks",
                      "expected <mapping>.<pos|neg> of the base, got '" + qualifier + "'");
   }
   OpenWater& ow = vehicle->mappings[index].open_water;
-  const bool pos = direction == "pos";
+  const bool pos = q->second == Direction::kPos;
   if (ow == OpenWater::kBoth) {
     ow = pos ? OpenWater::kNegative : OpenWater::kPositive;
   } else if (ow == (pos ? OpenWater::kPositive : OpenWater::kNegative)) {

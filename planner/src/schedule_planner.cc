@@ -291,8 +291,8 @@ struct NextCandidates {
 void HoldUnreachedEtas(const DofPlanningProblem& ctx, const SineDesignOptions& sine,
                        std::vector<Eigen::MatrixXd>* information) {
   if (sine.sign == 0 || sine.mappings.size() != 1) return;
-  const std::string reached = std::string(model::param::kEtaPrefix) + sine.mappings.front() +
-                              (sine.sign > 0 ? ".pos" : ".neg");
+  const std::string reached = model::EtaName(
+      sine.mappings.front(), sine.sign > 0 ? model::Direction::kPos : model::Direction::kNeg);
   const std::vector<std::string>& names = ctx.model().parameter_names();
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (!model::StartsWith(names[i], model::param::kEtaPrefix) || names[i] == reached) continue;

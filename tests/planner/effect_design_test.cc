@@ -1,4 +1,4 @@
-// Designs for effects (issue #45): a vehicle file whose identified model has a thruster lag is
+// Designs for effects: a vehicle file whose identified model has a thruster lag is
 // planned with the lag in its Fisher information (the planner's model is the standard one plus
 // the file's effects, dof_planning_problem.cc), so the schedule predicts σ(lag); Monte Carlo over
 // the schedule run in the virtual pool and identified confirms it.

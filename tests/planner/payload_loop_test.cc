@@ -1,4 +1,4 @@
-// A payload on a known vehicle (issue #45, docs/planning.md "A payload on a known vehicle"):
+// A payload on a known vehicle (docs/planning.md "A payload on a known vehicle"):
 // payload60 as its skid on the frame `loop` identified (cases/payload60/on-frame-truth.yaml)
 // against the same vehicle described from scratch (truth.yaml), in the same pool, loop seed 1
 // (the CLI's). Known, the loop designs about the frame's estimates from its first trial instead of

@@ -1,4 +1,4 @@
-// Designs for effects (issue #45): payload60's frame with a hidden thruster lag in surge, the
+// Designs for effects: payload60's frame with a hidden thruster lag in surge, the
 // vehicle file that `identify --write-vehicle` would write for it, and the lag identified on a
 // schedule's trials run in the virtual pool. Shared by tests/planner/effect_design_test.cc (10
 // seeds) and tests/validation/effect_design_validation.cc (full size, docs/validation.md).

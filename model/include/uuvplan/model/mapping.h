@@ -3,7 +3,9 @@
 // water (installation coefficient eta = 1, ref 000 §II-A).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -40,6 +42,8 @@ struct ThrustMapping {
 
 /// "eta.<mapping>.pos" / "eta.<mapping>.neg" (contract §identify).
 std::string EtaName(const std::string& mapping, Direction d);
+/// The mapping and direction of "<mapping>.<pos|neg>" (an η name without "eta."), or nullopt.
+std::optional<std::pair<std::string, Direction>> ParseEtaQualifier(std::string_view qualifier);
 std::string_view OpenWaterName(OpenWater ow);
 
 }  // namespace uuvplan::model

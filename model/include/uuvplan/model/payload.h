@@ -1,4 +1,4 @@
-// A payload on a known vehicle (issue #45, docs/planning.md "A payload on a known vehicle"): the
+// A payload on a known vehicle (docs/planning.md "A payload on a known vehicle"): the
 // vehicle the base file describes — usually identified by `identify`, `loop` or `diagnose
 // --write-vehicle` — with a body of known mass, displacement, size and place added. What the
 // payload changes is bounded by rules from its geometry; what it does not change (thrusters,
