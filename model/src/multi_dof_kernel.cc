@@ -142,6 +142,10 @@ namespace uuvplan::model {
 Trajectory Simulate(const MultiDofModel& model, const Eigen::VectorXd& theta,
                     const JointConditions& c, TimesView output_times,
                     const SimulationOptions& options, const Eigen::VectorXd* x0) {
+  if (options.initial_velocity_column) {
+    throw std::invalid_argument(
+        "Simulate: SimulationOptions::initial_velocity_column is for a 1-DOF model only");
+  }
   const internal::JointSystem sys(model, c, theta);
   return internal::IntegrateSystem(sys, output_times, 0.0, options, x0, nullptr);
 }

@@ -61,24 +61,41 @@ template <class System>
 }
 
 // K = A·St + B with St = S + c·K_prev (c = 0 for the first stage). S, St, K are row-major
-// nx × np (row s: the sensitivities of state s); A (nx × nx) and B (nx × np) as the kernel
-// writes them; kNx: nx when known at compile time (0: the argument).
+// nx × np (row s: the sensitivities of state s); A (nx × nx) and B (nx × nb) as the kernel
+// writes them, nb <= np: the columns past nb (an initial state's) have no B; kNx: nx when known
+// at compile time (0: the argument).
 template <int kNx>
 [[gnu::always_inline]] inline void SensitivitySlope(int n_states, const double* A, const double* B,
-                                                    const double* S, const double* k_prev,
+                                                    int nb, const double* S, const double* k_prev,
                                                     double c_prev, int np, double* St, double* K) {
   const int nx = kNx > 0 ? kNx : n_states;
   const int ns = nx * np;
   for (int j = 0; j < ns; ++j) St[j] = k_prev ? S[j] + c_prev * k_prev[j] : S[j];
   for (int r = 0; r < nx; ++r) {
     double* Kr = K + r * np;
-    const double* Br = B + r * np;
+    const double* Br = B + r * nb;
     for (int j = 0; j < np; ++j) {
-      double v = Br[j];
+      double v = j < nb ? Br[j] : 0.0;
       for (int q = 0; q < nx; ++q) v += A[r * nx + q] * St[q * np + j];
       Kr[j] = v;
     }
   }
+}
+
+// A bound on the spectral radius of A (nx × nx, row-major), the model's fastest local rate
+// (1/s): a DOF model's Jacobian is triangular in (actuator, velocity, position) — no force
+// reads the position and the lag state reads only the command — so its eigenvalues are its
+// diagonal; a force that reads the position adds the pair's natural frequency √|A_ij·A_ji|
+// (the 2 × 2 block's eigenvalues (a ± √(a² + 4·A_ij·A_ji))/2).
+inline double FastestRate(int nx, const double* A) {
+  double diagonal = 0.0, pair = 0.0;
+  for (int i = 0; i < nx; ++i) {
+    diagonal = std::max(diagonal, std::abs(A[i * nx + i]));
+    for (int j = i + 1; j < nx; ++j) {
+      pair = std::max(pair, std::sqrt(std::abs(A[i * nx + j] * A[j * nx + i])));
+    }
+  }
+  return diagonal + pair;
 }
 
 // GCC cannot see that a DofModel of three states has a thruster lag (DofModel::has_lag), so
@@ -111,29 +128,28 @@ template <class System>
 
 // One RK4 step on x and on S = ∂x/∂theta by the forward sensitivity equations dS/dt = A·S + B
 // (A = ∂f/∂x, B = ∂f/∂theta), with StateStep's stages, each linearised: S, the stage argument St,
-// the stage slopes K1–K4 (SensitivitySlope), B and A are the caller's buffers.
+// the stage slopes K1–K4 (SensitivitySlope), B and A are the caller's buffers. S has np
+// columns, the model's parameters and then any initial state's (SensitivitySlope).
 template <class System>
-[[gnu::always_inline]] inline void SensitivityStep(const System& sys, double ta, double tm,
-                                                   double te, double h,
-                                                   const typename System::Input& in_a,
-                                                   const typename System::Input& in_m,
-                                                   const typename System::Input& in_e, double* x,
-                                                   double* S, double* St, double* K1, double* K2,
-                                                   double* K3, double* K4, double* B, double* A) {
+[[gnu::always_inline]] inline void SensitivityStep(
+    const System& sys, double ta, double tm, double te, double h,
+    const typename System::Input& in_a, const typename System::Input& in_m,
+    const typename System::Input& in_e, double* x, int np, double* S, double* St, double* K1,
+    double* K2, double* K3, double* K4, double* B, double* A) {
   constexpr int kMax = System::kMaxStates;
-  const int nx = StatesOf(sys), np = sys.num_parameters(), ns = nx * np;
+  const int nx = StatesOf(sys), nb = sys.num_parameters(), ns = nx * np;
   double k1[kMax], k2[kMax], k3[kMax], k4[kMax], xt[kMax];
   sys.Linearize(ta, x, in_a, k1, A, B);
-  SensitivitySlope<System::kStates>(nx, A, B, S, nullptr, 0.0, np, St, K1);
+  SensitivitySlope<System::kStates>(nx, A, B, nb, S, nullptr, 0.0, np, St, K1);
   for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k1[s];
   sys.Linearize(tm, xt, in_m, k2, A, B);
-  SensitivitySlope<System::kStates>(nx, A, B, S, K1, 0.5 * h, np, St, K2);
+  SensitivitySlope<System::kStates>(nx, A, B, nb, S, K1, 0.5 * h, np, St, K2);
   for (int s = 0; s < nx; ++s) xt[s] = x[s] + 0.5 * h * k2[s];
   sys.Linearize(tm, xt, in_m, k3, A, B);
-  SensitivitySlope<System::kStates>(nx, A, B, S, K2, 0.5 * h, np, St, K3);
+  SensitivitySlope<System::kStates>(nx, A, B, nb, S, K2, 0.5 * h, np, St, K3);
   for (int s = 0; s < nx; ++s) xt[s] = x[s] + h * k3[s];
   sys.Linearize(te, xt, in_e, k4, A, B);
-  SensitivitySlope<System::kStates>(nx, A, B, S, K3, h, np, St, K4);
+  SensitivitySlope<System::kStates>(nx, A, B, nb, S, K3, h, np, St, K4);
   for (int j = 0; j < ns; ++j) S[j] += (h / 6.0) * (K1[j] + 2.0 * K2[j] + 2.0 * K3[j] + K4[j]);
   for (int s = 0; s < nx; ++s) x[s] += (h / 6.0) * (k1[s] + 2 * k2[s] + 2 * k3[s] + k4[s]);
 }
@@ -163,7 +179,9 @@ template <class System>
 
 // Integrates `sys` from x0 at t = 0 and records the state at output_times[i] - shift (the state
 // x0 for shifted times before 0), or hands it to `visit` (nothing stored). Every RK4 step ends
-// at the input's breakpoints and at the (shifted) output times, which are merged on the fly.
+// at the input's breakpoints and at the (shifted) output times, which are merged on the fly;
+// the steps between two such ends are equal, at most step_s, and with
+// options.time_constant_fraction c at most c/FastestRate of the last linearisation.
 // The one loop of every model (DofSystem, internal::JointSystem); its buffers are local (a
 // class holding them was 8% slower in the planner: stores through its pointers forced reloads
 // of every member).
@@ -171,19 +189,21 @@ template <class System>
 Trajectory IntegrateSystem(const System& sys, TimesView output_times, double shift,
                            const SimulationOptions& options, const Eigen::VectorXd* x0,
                            const OutputVisitor* visit) {
-  const int nx = StatesOf(sys), np = sys.num_parameters();
+  const bool sens = options.sensitivities;
+  const bool velocity_column = sens && options.initial_velocity_column;
+  const int nx = StatesOf(sys), nb = sys.num_parameters(), np = nb + (velocity_column ? 1 : 0);
   Trajectory out;
   if (visit) {
     CheckOutputTimes(output_times, options);
   } else {
     out = SizedOutput(nx, np, output_times, options);
   }
-  const bool sens = options.sensitivities;
   const std::size_t n_out = output_times.size();
   double x[System::kMaxStates] = {};
   for (int s = 0; x0 && s < nx && s < x0->size(); ++s) x[s] = (*x0)[s];
   const int ns = sens ? nx * np : 0;
-  std::vector<double> S(ns, 0.0), St(ns), K1(ns), K2(ns), K3(ns), K4(ns), B(ns);
+  std::vector<double> S(ns, 0.0), St(ns), K1(ns), K2(ns), K3(ns), K4(ns), B(nx * nb);
+  if (velocity_column) S[1 * np + nb] = 1.0;  // ∂ξ(0)/∂ξ0 (state 1: the velocity)
   double A[System::kMaxStates * System::kMaxStates];
   const double* S_out = sens ? S.data() : nullptr;
   std::size_t next_out = Record(output_times, shift, 0.0, 0, x, S_out, nx, np, visit, &out);
@@ -196,11 +216,21 @@ Trajectory IntegrateSystem(const System& sys, TimesView output_times, double shi
   const bool held = sys.held();
   double t = 0.0;
   typename System::Input in_a = sys.Sample(0.0);
+  const bool local_step = sens && options.time_constant_fraction > 0;
+  double rate = 0.0;  // FastestRate at the last linearisation (local_step)
+  if (local_step) {
+    double dx[System::kMaxStates];
+    sys.Linearize(0.0, x, in_a, dx, A, B.data());
+    rate = FastestRate(nx, A);
+  }
   while (next_out < n_out) {
     while (next_break < breaks.size() && breaks[next_break] <= t) ++next_break;
     double b = output_times[next_out] - shift;
     if (next_break < breaks.size()) b = std::min(b, breaks[next_break]);
-    const int n = std::max(1, CheckedCount<int>((b - t) / options.step_s, "simulation step count",
+    const double longest = local_step && rate > 0
+                               ? std::min(options.step_s, options.time_constant_fraction / rate)
+                               : options.step_s;
+    const int n = std::max(1, CheckedCount<int>((b - t) / longest, "simulation step count",
                                                 limits::kMaxSimulationSteps, "a longer step"));
     const double h = (b - t) / n;
     for (int k = 0; k < n; ++k) {
@@ -213,13 +243,14 @@ Trajectory IntegrateSystem(const System& sys, TimesView output_times, double shi
         sys.Refresh(te, &in_e);
       }
       if (sens) {
-        SensitivityStep(sys, ta, tm, te, h, in_a, in_m, in_e, x, S.data(), St.data(), K1.data(),
+        SensitivityStep(sys, ta, tm, te, h, in_a, in_m, in_e, x, np, S.data(), St.data(), K1.data(),
                         K2.data(), K3.data(), K4.data(), B.data(), A);
       } else {
         StateStep(sys, ta, tm, te, h, in_a, in_m, in_e, x);
       }
       in_a = in_e;
     }
+    if (local_step) rate = FastestRate(nx, A);
     t = b;
     if (next_break < breaks.size() && breaks[next_break] <= t) in_a = sys.Sample(t);  // right limit
     next_out = Record(output_times, shift, t, next_out, x, S_out, nx, np, visit, &out);

@@ -195,25 +195,39 @@ TEST(DofModelTest, LinearizeWithoutLagMatchesFiniteDifferences) {
   }
 }
 
-TEST(SimulatorTest, SensitivitiesMatchFiniteDifferencesOfTheSimulation) {
+// Every effect's model on a 40 s sine (30 ± 20 N, 0.25 rad/s) with a yaw rate beside it,
+// sampled every second.
+struct SineTrial {
   FullModel f;
-  const auto input = MakeSineExcitation(30.0, 20.0, 0.25, 0, 40.0);
-  const YawRate aux;
-  const TrialConditions c{input.get(), 1, 50.0, &aux};
-  std::vector<double> times;
-  for (int i = 1; i <= 40; ++i) times.push_back(i * 1.0);
+  std::unique_ptr<Excitation> input = MakeSineExcitation(30.0, 20.0, 0.25, 0, 40.0);
+  YawRate aux;
+  TrialConditions c{input.get(), 1, 50.0, &aux};
+  std::vector<double> times = [] {
+    std::vector<double> t;
+    for (int i = 1; i <= 40; ++i) t.push_back(i * 1.0);
+    return t;
+  }();
+  Trajectory Run(const SimulationOptions& o, const Eigen::VectorXd& theta) const {
+    return SimulateMeasured(*f.model, theta, c, times, o);
+  }
+  Trajectory Run(const SimulationOptions& o) const { return Run(o, f.theta); }
+};
+
+TEST(SimulatorTest, SensitivitiesMatchFiniteDifferencesOfTheSimulation) {
+  const SineTrial trial;
+  const FullModel& f = trial.f;
   SimulationOptions o;
   o.step_s = 0.02;
   o.sensitivities = true;
-  const Trajectory tr = SimulateMeasured(*f.model, f.theta, c, times, o);
+  const Trajectory tr = trial.Run(o);
   o.sensitivities = false;
   for (int j = 0; j < f.model->num_parameters(); ++j) {
     const double h = 1e-5 * std::max(1.0, std::abs(f.theta[j]));
     Eigen::VectorXd tp = f.theta, tm = f.theta;
     tp[j] += h;
     tm[j] -= h;
-    const Trajectory yp = SimulateMeasured(*f.model, tp, c, times, o);
-    const Trajectory ym = SimulateMeasured(*f.model, tm, c, times, o);
+    const Trajectory yp = trial.Run(o, tp);
+    const Trajectory ym = trial.Run(o, tm);
     for (int s = 0; s < 2; ++s) {
       const Eigen::VectorXd fd = (yp.x.col(s) - ym.x.col(s)) / (2 * h);
       const double scale = std::max(1e-3, fd.cwiseAbs().maxCoeff());
@@ -221,6 +235,62 @@ TEST(SimulatorTest, SensitivitiesMatchFiniteDifferencesOfTheSimulation) {
       // they agree with the FD of the discrete simulation to FD accuracy (~1e-6 relative).
       EXPECT_LT((tr.S[s].col(j) - fd).cwiseAbs().maxCoeff(), 1e-4 * scale)
           << f.model->parameter_names()[j] << " output " << s;
+    }
+  }
+}
+
+// ∂x/∂ξ0 as the last sensitivity column: on the linear model m·dξ/dt = −k·ξ + F the velocity's
+// is e^{−t/tc} and the position's tc·(1 − e^{−t/tc}), tc = m/k (from rest or not: linear).
+TEST(SimulatorTest, InitialVelocityColumnIsTheClosedForm) {
+  const Vehicle v = testing::FrontRearVehicle();
+  ModelStructure s;
+  s.dof = Dof::kSurge;
+  s.Remove("kq");
+  s.Remove("bias");
+  const DofModel model(v, s);
+  const double m = 890, k = 212.25, tc = m / k;
+  Eigen::VectorXd theta(2);
+  theta << m, k;
+  const auto input = MakeSineExcitation(35, 25, 2 * M_PI / 26, 0, 60);
+  std::vector<double> times;
+  for (int i = 1; i <= 60; ++i) times.push_back(i * 1.0);
+  SimulationOptions o;
+  o.step_s = 0.05;
+  o.sensitivities = true;
+  o.initial_velocity_column = true;
+  const Trajectory tr = Simulate(model, theta, TrialConditions{input.get()}, times, o);
+  ASSERT_EQ(tr.S[1].cols(), 3);
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double e = std::exp(-times[i] / tc);
+    // RK4 at h = 0.05 s ≪ tc = 4.2 s: a global error ~ (h/tc)⁴ ≈ 2e-8 of the response.
+    EXPECT_NEAR(tr.S[1](i, 2), e, 1e-7) << "t = " << times[i];
+    EXPECT_NEAR(tr.S[0](i, 2), tc * (1 - e), 1e-6) << "t = " << times[i];
+  }
+}
+
+// The local step (time_constant_fraction, from a largest step of 1 s) on every effect, the lag
+// included: the same state and sensitivities as a fine fixed step, to the accuracy that half the
+// local time constant gives.
+TEST(SimulatorTest, LocalStepFollowsTheLocalTimeConstant) {
+  const SineTrial trial;
+  SimulationOptions fine;
+  fine.step_s = 0.001;
+  fine.sensitivities = true;
+  fine.initial_velocity_column = true;
+  const Trajectory ref = trial.Run(fine);
+  SimulationOptions local = fine;
+  local.step_s = 1.0;
+  local.time_constant_fraction = 0.5;
+  const Trajectory tr = trial.Run(local);
+  for (int s = 0; s < 2; ++s) {
+    const double scale = std::max(1e-3, ref.x.col(s).cwiseAbs().maxCoeff());
+    // RK4 at h·ρ ≤ 0.5: a local error ≤ 0.5⁵/120 ≈ 3e-4 of the fastest mode per step, which
+    // decays within a time constant: well within 1e-3 of the response's scale.
+    EXPECT_LT((tr.x.col(s) - ref.x.col(s)).cwiseAbs().maxCoeff(), 1e-3 * scale) << "state " << s;
+    for (int j = 0; j < tr.S[s].cols(); ++j) {
+      const double sj = std::max(1e-6, ref.S[s].col(j).cwiseAbs().maxCoeff());
+      EXPECT_LT((tr.S[s].col(j) - ref.S[s].col(j)).cwiseAbs().maxCoeff(), 1e-3 * sj)
+          << "state " << s << " column " << j;
     }
   }
 }

@@ -279,8 +279,8 @@ std::vector<Eigen::MatrixXd> DofPlanningProblem::Information(
   const TrialModel& tm = ModelFor(design);
   std::vector<Eigen::MatrixXd> out;
   for (const auto& th : tm.design_thetas) {
-    const TrialResponse r = SimulateTrial(*tm.model, th, *input, sensors_, design.duration, step_s_,
-                                          true, options_.start_known);
+    const TrialResponse r = SimulateTrial(*tm.model, th, *input, sensors_, design.duration,
+                                          options_.max_step_s, true, options_.start_known);
     out.push_back(tm.Embed(r.M, model_->num_parameters()));
   }
   return out;
@@ -292,8 +292,8 @@ std::vector<Eigen::MatrixXd> DofPlanningProblem::DesignInformation(
   std::vector<Eigen::MatrixXd> out;
   *travel = {0.0, 0.0};
   for (const auto& th : tm.design_thetas) {
-    const TrialResponse r = SimulateTrial(*tm.model, th, input, design_sensors_, duration, step_s_,
-                                          true, options_.start_known);
+    const TrialResponse r = SimulateTrial(*tm.model, th, input, design_sensors_, duration,
+                                          options_.max_step_s, true, options_.start_known);
     (*travel)[0] = std::min((*travel)[0], r.position_min);
     (*travel)[1] = std::max((*travel)[1], r.position_max);
     out.push_back(tm.Embed(r.M, model_->num_parameters()));

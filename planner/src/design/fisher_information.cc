@@ -90,7 +90,7 @@ Eigen::MatrixXd ProfiledOut(const Eigen::MatrixXd& full, int np) {
 }  // namespace
 
 double ChooseStep(double shortest_time_constant_s, double max_step_s) {
-  double h = shortest_time_constant_s / 2.0;
+  double h = kStepPerTimeConstant * shortest_time_constant_s;
   if (!(h > 0) || !std::isfinite(h)) h = max_step_s;
   return std::min(h, max_step_s);
 }
@@ -109,6 +109,10 @@ TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd&
   model::SimulationOptions options;
   options.step_s = step_s;
   options.sensitivities = with_information;
+  // ∂y/∂ξ0 (below) as the sensitivities' last column, and each step at most half the local
+  // time constant (ChooseStep's rule where the trial is, not at the box's fastest point).
+  options.initial_velocity_column = with_information && !start_known;
+  options.time_constant_fraction = with_information ? kStepPerTimeConstant : 0.0;
   const model::Trajectory traj =
       model::SimulateMeasured(model, theta, conditions, g.times, options);
   TrialResponse r;
@@ -123,24 +127,15 @@ TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd&
   // information on m (payload60 yaw-next-15: σ(m) predicted 0.053, achieved 0.50 kg·m²). So they
   // are nuisance parameters, profiled out:
   //   M = Mθθ − Mθn·Mnn⁺·Mnθ   of the information of (θ, χ0, ξ0),
-  // with ∂y/∂χ0 = (1, 0) (no force depends on the position) and ∂y/∂ξ0 by a forward
-  // difference, as the output error takes it. ξ0 is profiled out even where the output error
-  // would fix it at 0: a start judged at rest is only at rest within the test's resolution, and
-  // the information a known ξ0 adds (a steady run's start-up curvature) is what an undetected
-  // residual velocity biases (payload60 yaw: 0.01 rad/s moves m by 1.4 σ of that information).
+  // with ∂y/∂χ0 = (1, 0) (no force depends on the position) and ∂y/∂ξ0 = S_ξ0 from
+  // dS_ξ0/dt = A·S_ξ0, S_ξ0(0) = (0, 1) (the simulation's last sensitivity column). ξ0 is profiled
+  // out even where the output error would fix it at 0: a start judged at rest is only at rest
+  // within the test's resolution, and the information a known ξ0 adds (a steady run's start-up
+  // curvature) is what an undetected residual velocity biases (payload60 yaw: 0.01 rad/s moves m
+  // by 1.4 σ of that information).
   const int np = model.num_parameters();
   const bool free_chi0 = static_cast<bool>(sensors.position) && !start_known;
   const int nn = start_known ? 0 : (free_chi0 ? 1 : 0) + 1;
-  // ∂y/∂ξ0 by a forward difference, its step relative to the trial's largest speed.
-  const double h_xi = 1e-6 * std::max({std::abs(r.velocity_min), std::abs(r.velocity_max), 1e-3});
-  model::Trajectory traj_xi;
-  if (!start_known) {
-    Eigen::VectorXd x_xi = Eigen::VectorXd::Zero(model.num_states());
-    x_xi[1] = h_xi;
-    model::SimulationOptions plain = options;
-    plain.sensitivities = false;
-    traj_xi = model::SimulateMeasured(model, theta, conditions, g.times, plain, &x_xi);
-  }
   // M = Σ_k w_k/σ² · s_kᵀ s_k, s_k the row of ∂y/∂(theta, χ0, ξ0) of the sample's channel.
   Eigen::MatrixXd weighted(g.samples.size(), np + nn);
   int n = 0;
@@ -148,10 +143,10 @@ TrialResponse SimulateTrial(const model::DofModel& model, const Eigen::VectorXd&
     if (g.samples[i].weight <= 0) continue;
     const double w = std::sqrt(g.samples[i].weight);
     const int c = g.samples[i].channel, k = g.row[i];
-    weighted.row(n).head(np) = w * traj.S[c].row(k);
+    weighted.row(n).head(np) = w * traj.S[c].row(k).head(np);
     int col = np;
     if (free_chi0) weighted(n, col++) = c == 0 ? w : 0.0;
-    if (!start_known) weighted(n, col) = w * (traj_xi.x(k, c) - traj.x(k, c)) / h_xi;
+    if (!start_known) weighted(n, col) = w * traj.S[c](k, np);
     ++n;
   }
   Eigen::MatrixXd full = Gram(weighted, n);

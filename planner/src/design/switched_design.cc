@@ -284,6 +284,32 @@ struct PairSolution {
   model::TrialDesign design;  ///< decoded from summary.x
 };
 
+// Two pairs pose the same design problem when both of each are in open water (no η to
+// tell them apart) with the same force ranges: mirror-placed thrusters (a BlueROV2's two
+// vertical ones) alternated either way. The first is solved; BestOfFamily keeps the first of
+// equal objectives, so the answer is the same.
+bool SameProblem(const DofPlanningProblem& ctx, const SwitchPair& a, const SwitchPair& b) {
+  const auto open = [&](const SwitchPair& p) {
+    const auto& m = ctx.vehicle().mappings;
+    return m[p.pos].IsOpenWater(model::Direction::kPos) &&
+           m[p.neg].IsOpenWater(model::Direction::kNeg);
+  };
+  const auto same = [](const ForceRange& x, const ForceRange& y) {
+    return x.min_abs == y.min_abs && x.max_abs == y.max_abs;
+  };
+  return a.one_way == b.one_way && open(a) && open(b) && same(a.pos_range, b.pos_range) &&
+         same(a.neg_range, b.neg_range);
+}
+
+bool SameAsAnEarlierPair(const DofPlanningProblem& ctx, const std::vector<SwitchPair>& pairs,
+                         const SwitchPair& pair) {
+  for (const SwitchPair& earlier : pairs) {
+    if (&earlier == &pair) return false;
+    if (SameProblem(ctx, earlier, pair)) return true;
+  }
+  return false;
+}
+
 // The family's optimisations, one per switch pair (DesignSwitched's doc).
 std::vector<PairTask> PairTasks(const DofPlanningProblem& ctx, model::InputFamily family,
                                 const SineDesignOptions& o, const OneWayHint& hint) {
@@ -303,6 +329,7 @@ std::vector<PairTask> PairTasks(const DofPlanningProblem& ctx, model::InputFamil
   }
   std::vector<PairTask> tasks;
   for (const SwitchPair& pair : pairs) {
+    if (SameAsAnEarlierPair(ctx, pairs, pair)) continue;
     // One way the vehicle drifts: the longest trial is not the best; the sine's duration is.
     const double duration = pair.one_way != 0 && o.fixed_duration_s <= 0 && hint.duration_s > 0
                                 ? hint.duration_s

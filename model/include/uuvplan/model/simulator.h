@@ -18,6 +18,13 @@ namespace uuvplan::model {
 struct SimulationOptions {
   double step_s = 0.01;        ///< largest RK4 step (s); steps also end at every breakpoint
   bool sensitivities = false;  ///< also integrate S = ∂x/∂theta
+  /// With sensitivities, a last column of S: ∂x/∂ξ0, the sensitivity to the initial velocity
+  /// (dS/dt = A·S from S(0) = e_velocity; the 1-DOF model only).
+  bool initial_velocity_column = false;
+  /// With sensitivities and > 0: each step between outputs at most this fraction of the
+  /// shortest local time constant 1/ρ(A), A = ∂f/∂x at the previous step (step_s stays the
+  /// largest). 0: every step step_s.
+  double time_constant_fraction = 0.0;
 };
 
 struct Trajectory {

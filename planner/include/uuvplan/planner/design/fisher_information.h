@@ -47,15 +47,21 @@ struct TrialResponse {
   double final_velocity = 0.0;  ///< velocity at the end of the trial
 };
 
-/// The RK4 step used for a DOF: half the shortest time constant m/k_L over the box, at most
-/// `max_step_s` (steps also end at every sensor sample). On ROMEO surge the predicted σ then
-/// differ from those at a 0.01 s step by less than 1e-6 relative
+/// The RK4 step as a fraction of the time constant it resolves: half of it.
+inline constexpr double kStepPerTimeConstant = 0.5;
+
+/// The RK4 step of a DOF's plain simulations: half the shortest time constant m/k_L over the
+/// box, at most `max_step_s` (steps also end at every sensor sample). SimulateTrial's
+/// information applies the rule where the trial is: each step at most half the local time
+/// constant (model::SimulationOptions::time_constant_fraction). On ROMEO surge the predicted σ
+/// then differ from those at a 0.01 s step by less than 1e-6 relative
 /// (tests/planner/fisher_information_test.cc checks the convergence).
 double ChooseStep(double shortest_time_constant_s, double max_step_s = 0.5);
 
 /// Simulates `input` from rest for `duration` at `theta` and returns the position/velocity
 /// extremes and, if `with_information`, the Fisher information of the DOF's sensors on theta,
-/// the initial position and velocity profiled out (one more plain simulation for ∂y/∂ξ0).
+/// the initial position and velocity profiled out. `step_s` is the largest step: with
+/// information each step is also at most half the local time constant.
 /// Throws std::invalid_argument if the DOF has no sensor, or a sensor has rate <= 0 or
 /// sigma <= 0 (the vehicle reader rejects those first).
 /// With `start_known` M is the information with the initial state known instead (theta's block
