@@ -202,7 +202,7 @@ Trajectory IntegrateSystem(const System& sys, TimesView output_times, double shi
   double x[System::kMaxStates] = {};
   for (int s = 0; x0 && s < nx && s < x0->size(); ++s) x[s] = (*x0)[s];
   const int ns = sens ? nx * np : 0;
-  std::vector<double> S(ns, 0.0), St(ns), K1(ns), K2(ns), K3(ns), K4(ns), B(nx * nb);
+  std::vector<double> S(ns, 0.0), St(ns), K1(ns), K2(ns), K3(ns), K4(ns), B(sens ? nx * nb : 0);
   if (velocity_column) S[1 * np + nb] = 1.0;  // ∂ξ(0)/∂ξ0 (state 1: the velocity)
   double A[System::kMaxStates * System::kMaxStates];
   const double* S_out = sens ? S.data() : nullptr;

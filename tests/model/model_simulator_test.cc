@@ -25,13 +25,22 @@ double LinearSineVelocity(double m, double k, double a, double b, double w, doub
          b / d * (k * std::sin(w * t) - m * w * std::cos(w * t) + m * w * std::exp(-t / tc));
 }
 
+// Surge of the front/rear vehicle with linear drag only: m·dξ/dt = −k·ξ + F, θ = (m, k).
+struct LinearSurge {
+  static ModelStructure Structure() {
+    ModelStructure s;
+    s.dof = Dof::kSurge;
+    s.Remove("kq");
+    s.Remove("bias");
+    return s;
+  }
+  const Vehicle vehicle = testing::FrontRearVehicle();
+  const DofModel model{vehicle, Structure()};
+};
+
 TEST(SimulatorTest, Rk4ConvergesAtFourthOrderOnTheLinearModel) {
-  const Vehicle v = testing::FrontRearVehicle();
-  ModelStructure s;
-  s.dof = Dof::kSurge;
-  s.Remove("kq");
-  s.Remove("bias");
-  const DofModel model(v, s);
+  const LinearSurge linear;
+  const DofModel& model = linear.model;
   const double m = 890, k = 212.25, a = 35, b = 25, w = 2 * M_PI / 26;  // ref 000 §IV-D
   Eigen::VectorXd theta(2);
   theta << m, k;
@@ -57,12 +66,8 @@ TEST(SimulatorTest, Rk4ConvergesAtFourthOrderOnTheLinearModel) {
 TEST(SimulatorTest, StepsEndAtSegmentBreakpoints) {
   // A force step at t = 1.3 s inside a 1 s RK4 step would cost the method its order; steps
   // end at breakpoints, so the coarse simulation matches the analytic one to RK4 accuracy.
-  const Vehicle v = testing::FrontRearVehicle();
-  ModelStructure s;
-  s.dof = Dof::kSurge;
-  s.Remove("kq");
-  s.Remove("bias");
-  const DofModel model(v, s);
+  const LinearSurge linear;
+  const DofModel& model = linear.model;
   Eigen::VectorXd theta(2);
   theta << 100.0, 50.0;  // t_c = 2 s
   const auto input = MakeSegmentsExcitation({{20.0, 1.3, 0}, {-10.0, 3.0, 1}});
@@ -242,12 +247,8 @@ TEST(SimulatorTest, SensitivitiesMatchFiniteDifferencesOfTheSimulation) {
 // ∂x/∂ξ0 as the last sensitivity column: on the linear model m·dξ/dt = −k·ξ + F the velocity's
 // is e^{−t/tc} and the position's tc·(1 − e^{−t/tc}), tc = m/k (from rest or not: linear).
 TEST(SimulatorTest, InitialVelocityColumnIsTheClosedForm) {
-  const Vehicle v = testing::FrontRearVehicle();
-  ModelStructure s;
-  s.dof = Dof::kSurge;
-  s.Remove("kq");
-  s.Remove("bias");
-  const DofModel model(v, s);
+  const LinearSurge linear;
+  const DofModel& model = linear.model;
   const double m = 890, k = 212.25, tc = m / k;
   Eigen::VectorXd theta(2);
   theta << m, k;
