@@ -6,6 +6,8 @@
 # to build-fuzz/findings/<target>-*; the script then exits 1. Each finding must become a case
 # of tests/data/bad (docs/validation.md, "Fuzzing").
 # Usage: scripts/fuzz.sh [SECONDS] [TARGET...]     TARGET: csv vehicle pool truth campaign plan
+#   UUVPLAN_FUZZ_BUILD_DIR, UUVPLAN_SANITIZE_OPT: the build directory and optimisation level
+#   (scripts/sanitize.sh --quick sets both: build-fuzz-quick/, -O0).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-60}"

@@ -148,7 +148,7 @@ void BindCheckPool(CLI::App* sub, CheckPoolFlags* o) {
       ->check(TrialDuration());
 }
 
-const CommandRegistration kRegistration(MakeCommand<CheckPoolFlags>(
+const CommandRegistration kCheckPoolRegistration(MakeCommand<CheckPoolFlags>(
     "check-pool", 20,
     "Can this pool host the trials (a plan, or the planner's own schedule), and if not "
     "what would: the smallest pool and the best schedule that fits (exit 1 if not).",

@@ -324,7 +324,7 @@ void BindDemo(CLI::App* sub, DemoFlags* o) {
   sub->add_option("--seed", o->seed, "seed of the virtual pool's noise")->capture_default_str();
 }
 
-const CommandRegistration kRegistration(MakeCommand<DemoFlags>(
+const CommandRegistration kDemoRegistration(MakeCommand<DemoFlags>(
     "demo", 80,
     "The whole story on the built-in ROMEO case, no files needed: the a priori schedule "
     "and pool check, the design-identify loop converging, and a diagnosis of the paper's "

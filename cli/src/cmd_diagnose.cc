@@ -87,7 +87,7 @@ void BindDiagnose(CLI::App* sub, DiagnoseFlags* o) {
       ->check(CLI::NonNegativeNumber);
 }
 
-const CommandRegistration kRegistration(MakeCommand<DiagnoseFlags>(
+const CommandRegistration kDiagnoseRegistration(MakeCommand<DiagnoseFlags>(
     "diagnose", 82,
     "What the standard model's simulation gets wrong on measured trials, which physical "
     "effect causes it (" +

@@ -181,7 +181,7 @@ void BindIdentify(CLI::App* sub, IdentifyFlags* o) {
   AddThreadsOption(sub, {&o->identify.threads}, "preparing the trials and fitting the DOFs");
 }
 
-const CommandRegistration kRegistration(MakeCommand<IdentifyFlags>(
+const CommandRegistration kIdentifyRegistration(MakeCommand<IdentifyFlags>(
     "identify", 40,
     "Estimate every DOF's parameters (m, k, kq, bias, bias_step, eta) with standard "
     "deviations from a campaign, and score the identified model by free-run simulation "

@@ -123,7 +123,7 @@ void BindLog(CLI::App* sub, LogFlags* o) {
   sub->add_option("--start", o->start, "start time on the campaign clock (s)");
 }
 
-const CommandRegistration kRegistration(MakeCommand<LogFlags>(
+const CommandRegistration kLogRegistration(MakeCommand<LogFlags>(
     "log", 44,
     "Append a trial logged at the pool to its campaign (checked against the plan with "
     "--plan), so that `next` can run between trials.",

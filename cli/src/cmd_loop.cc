@@ -229,7 +229,7 @@ void BindLoop(CLI::App* sub, LoopFlags* o) {
                    "planning the DOFs' candidate trials and each iteration's identification");
 }
 
-const CommandRegistration kRegistration(MakeCommand<LoopFlags>(
+const CommandRegistration kLoopRegistration(MakeCommand<LoopFlags>(
     "loop", 46,
     "Design → run (virtual) → identify → re-plan until every parameter of interest's "
     "percentile error is below the target, or the trial budget is spent.",

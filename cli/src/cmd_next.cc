@@ -167,7 +167,7 @@ void BindNext(CLI::App* sub, NextFlags* o) {
                    "identifying (trials and DOFs) and planning the DOFs' candidate trials");
 }
 
-const CommandRegistration kRegistration(MakeCommand<NextFlags>(
+const CommandRegistration kNextRegistration(MakeCommand<NextFlags>(
     "next", 45,
     "Identify from the trials so far, then plan the single most informative next trial "
     "(sequential design: box = estimates ± 2σ, prior information = covariance⁻¹).",

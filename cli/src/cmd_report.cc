@@ -189,7 +189,7 @@ void BindReport(CLI::App* sub, ReportFlags* o) {
   AddAcceptUnitsFlag(sub, &o->accept_units);
 }
 
-const CommandRegistration kRegistration(MakeCommand<ReportFlags>(
+const CommandRegistration kReportRegistration(MakeCommand<ReportFlags>(
     "report", 95,
     "Write a self-contained HTML report (vehicle, pool, schedule or estimates, validation, "
     "diagnosis, loop history; figures embedded) and its figures as PNG and SVG.",

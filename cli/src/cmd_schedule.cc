@@ -198,7 +198,7 @@ void BindSchedule(CLI::App* sub, ScheduleFlags* o) {
       "--no-sine", [o] { o->schedule.sine_trial = false; }, "plan no sine trial");
 }
 
-const CommandRegistration kRegistration(MakeCommand<ScheduleFlags>(
+const CommandRegistration kScheduleRegistration(MakeCommand<ScheduleFlags>(
     "schedule", 10,
     "The test schedule of a vehicle in a pool: steady runs and legs for drag and "
     "installation coefficients, a sine trial for the inertia, robust over the a priori "

@@ -91,7 +91,7 @@ void BindScore(CLI::App* sub, ScoreFlags* o) {
   AddFilterWindowOption(sub, &o->data);
 }
 
-const CommandRegistration kRegistration(MakeCommand<ScoreFlags>(
+const CommandRegistration kScoreRegistration(MakeCommand<ScoreFlags>(
     "score", 85,
     "Free-run error of every trial of a campaign for the parameter set of a vehicle file, "
     "without fitting: two models compared on the same data.",

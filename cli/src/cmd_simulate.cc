@@ -264,7 +264,7 @@ void BindSimulate(CLI::App* sub, SimulateFlags* o) {
   AddJsonOption(sub, &o->json, "also write a summary", /*check_now=*/false);
 }
 
-const CommandRegistration kRegistration(MakeCommand<SimulateFlags>(
+const CommandRegistration kSimulateRegistration(MakeCommand<SimulateFlags>(
     "simulate", 30,
     "Run a plan on the virtual vehicle of a truth file and write the campaign (campaign.yaml, "
     "vehicle.yaml, trials/<id>.csv) as a pool team would log it.",

@@ -222,8 +222,8 @@ LeastSquaresAnswer RlsAnswer(const StageInputs& c, const IdentifyOptions& o, Dof
 
 // Under feedback (closed_loop_iv.h): the instrumental-variable estimate of m and every
 // regressor-linear parameter, the non-linear ones at the least-squares answer's values.
-void ClosedLoop(const StageInputs& c, const IdentifyOptions& o, const LeastSquaresAnswer& ls,
-                DofIdentification* r) {
+void EstimateUnderFeedback(const StageInputs& c, const IdentifyOptions& o,
+                           const LeastSquaresAnswer& ls, DofIdentification* r) {
   if (!r->closed_loop_suspected) return;
   ClosedLoopIvOptions iv = o.closed_loop_iv;
   iv.selection = o.selection;
@@ -257,7 +257,7 @@ LeastSquaresAnswer EstimateStage(const StageInputs& c, const IdentifyOptions& o,
   }
   if (o.method == Method::kChain || o.method == Method::kOneStep) OneStep(c, o, &ls, r);
   ChooseAnswer(c, o.method, &ls, r);
-  if (o.method == Method::kChain) ClosedLoop(c, o, ls, r);
+  if (o.method == Method::kChain) EstimateUnderFeedback(c, o, ls, r);
   return ls;
 }
 

@@ -7,6 +7,7 @@
 #include "uuvplan/ident/identify.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/numbers.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/model/virtual_pool.h"
 
@@ -14,7 +15,7 @@ namespace uuvplan::ident {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using model::kNaN;
 
 // Velocity MAE pooled over the samples of `fits` (those of use `use` when given).
 double PoolMae(const std::vector<TrialFit>& fits, std::string* why, int* samples,

@@ -5,10 +5,11 @@
 #include <limits>
 
 #include "uuvplan/model/simulator.h"
+#include "uuvplan/model/util/numbers.h"
 
 namespace uuvplan::ident {
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using model::kNaN;
 }
 
 template <class Real>

@@ -11,6 +11,7 @@
 #include "uuvplan/io/schedule_json.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
+#include "uuvplan/model/util/numbers.h"
 #include "uuvplan/text/loop_text.h"
 #include "uuvplan/text/verdict_text.h"
 
@@ -175,7 +176,7 @@ json RefusedLoopJson(const planner::PoolVerdict& verdict, const model::Pool& poo
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using model::kNaN;
 
 model::Dof DofKey(const JsonValue& at, const std::string& name) {
   const auto dof = model::ParseDof(name);

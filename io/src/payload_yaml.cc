@@ -27,14 +27,6 @@ struct BaseCycle : InputError {
   using InputError::InputError;
 };
 
-std::array<double, 3> Triple(const Value& v, const std::string& expectation) {
-  const std::vector<Value> items = List(v, expectation);
-  if (items.size() != 3) v.Expected(expectation);
-  std::array<double, 3> out{};
-  for (int i = 0; i < 3; ++i) out[i] = AnyNumber(items[i]);
-  return out;
-}
-
 // "<mapping>.<pos|neg>" of one of the base's mappings.
 std::string Blocked(const Value& v, const Vehicle& base) {
   const std::string text = Name(v, "<mapping>.<pos|neg>");

@@ -19,14 +19,6 @@ namespace {
 // ([1, 1, 0]) is a mistake the reader refuses rather than guesses.
 constexpr double kUnitTolerance = 1e-3;
 
-std::array<double, 3> Triple(const Value& v, const std::string& expectation) {
-  const std::vector<Value> items = List(v, expectation);
-  if (items.size() != 3) v.Expected(expectation);
-  std::array<double, 3> x{};
-  for (int i = 0; i < 3; ++i) x[i] = NumberIf(items[i], expectation, [](double) { return true; });
-  return x;
-}
-
 // Within the vehicle's size of its centre on each axis: a box twice the vehicle's, which a
 // thruster on an outrigger fits and a position in mm does not.
 std::array<double, 3> ParsePosition(const Value& v, const std::array<double, 3>& size) {

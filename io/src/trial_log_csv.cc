@@ -22,6 +22,7 @@
 #include "uuvplan/io/number_text.h"
 #include "uuvplan/io/place.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/numbers.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/model/work_limits.h"
 
@@ -31,7 +32,7 @@ using namespace model;  // NOLINT: the vocabulary of the trial log
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using model::kNaN;
 constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
 constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 

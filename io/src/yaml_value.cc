@@ -166,6 +166,14 @@ std::array<double, 2> Pair(const Value& v, const std::string& expectation) {
   return {AnyNumber(items[0]), AnyNumber(items[1])};
 }
 
+std::array<double, 3> Triple(const Value& v, const std::string& expectation) {
+  const std::vector<Value> items = List(v, expectation);
+  if (items.size() != 3) v.Expected(expectation);
+  std::array<double, 3> x{};
+  for (int i = 0; i < 3; ++i) x[i] = NumberIf(items[i], expectation, [](double) { return true; });
+  return x;
+}
+
 std::string ReadableFile(const Value& v) {
   const std::string written = Name(v, "a file name");
   const std::string path = ResolveBeside(v.file(), written);

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/util/numbers.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/criteria.h"
 #include "uuvplan/planner/design/thrust_limits.h"
@@ -14,7 +15,7 @@
 namespace uuvplan::planner {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using model::kInf;
 
 // 100·(worst σ over the design points)/(smallest |θ| there) of parameter i; +inf when a point
 // leaves it unreached (NaN σ) or unidentifiable (+inf σ), or its a priori value is 0.
@@ -59,7 +60,7 @@ std::vector<std::string> InterestNames(const DofPlanningProblem& ctx,
 }
 
 // The robust D criterion of (info + trial information) and the trial's information.
-struct Candidate {
+struct CandidateTrial {
   PlannedTrial trial;
   TrialCheck check;
   std::vector<Eigen::MatrixXd> information;
@@ -75,7 +76,7 @@ double RobustD(const DofPlanningProblem& ctx, const std::vector<Eigen::MatrixXd>
 
 void ConsiderSine(const DofPlanningProblem& ctx, SineDesignOptions so,
                   const std::vector<Eigen::MatrixXd>& info, const std::string& id,
-                  Candidate* best) {
+                  CandidateTrial* best) {
   so.criterion = Criterion::kD;
   so.interest.clear();
   const SineDesignResult sn = DesignSine(ctx, so, info, id);
@@ -87,7 +88,7 @@ void ConsiderSine(const DofPlanningProblem& ctx, SineDesignOptions so,
 
 void ConsiderSteadyLegs(const DofPlanningProblem& ctx, const SteadyDesignOptions& o,
                         const std::vector<Eigen::MatrixXd>& info, const std::string& id,
-                        Candidate* best) {
+                        CandidateTrial* best) {
   for (const SteadyLeg& leg : MakeSteadyCandidates(ctx, o).legs) {
     const model::TrialDesign d = LegDesign(leg, ctx.dof(), id);
     std::vector<Eigen::MatrixXd> m = ctx.Information(d);
@@ -171,10 +172,10 @@ std::string ReachText(const TargetReach& r, const PrecisionGoal& goal) {
 
 // DesignNextTrial's choice on `info`: the better by robust D of the D-optimal sine on every
 // parameter and every steady leg from rest (criterion -inf: none fits).
-Candidate LoopChoice(const DofPlanningProblem& ctx, const SineDesignOptions& sine,
-                     const SteadyDesignOptions& steady, const std::vector<Eigen::MatrixXd>& info,
-                     const std::string& id) {
-  Candidate best;
+CandidateTrial LoopChoice(const DofPlanningProblem& ctx, const SineDesignOptions& sine,
+                          const SteadyDesignOptions& steady,
+                          const std::vector<Eigen::MatrixXd>& info, const std::string& id) {
+  CandidateTrial best;
   ConsiderSine(ctx, sine, info, id, &best);
   ConsiderSteadyLegs(ctx, steady, info, id, &best);
   return best;
@@ -213,7 +214,7 @@ TargetReach ReachTarget(const DofPlanningProblem& ctx, const SineDesignOptions& 
   out.trials = -1.0;
   const int steps = 2 * static_cast<int>(std::ceil(goal.max_trials_to_target));
   for (int k = 1; k <= steps && std::count(open.begin(), open.end(), true) > 0; ++k) {
-    const Candidate next = LoopChoice(ctx, sine, steady, info, id + "-" + std::to_string(k));
+    const CandidateTrial next = LoopChoice(ctx, sine, steady, info, id + "-" + std::to_string(k));
     for (std::size_t j = 0; j < points; ++j) {
       if (!open[j]) continue;
       TargetReach here;
@@ -252,7 +253,7 @@ CompletionResult CompleteWithLoopFamilies(const DofPlanningProblem& ctx,
     const Determinacy det = InterestDeterminacy(ctx, *info);
     if (det.determined) break;
     const std::string id = id_prefix + "-" + std::to_string(n);
-    Candidate best;
+    CandidateTrial best;
     // An undetermined η first, in its own direction (the loop's step 2), else D on all.
     for (const std::string& u : det.undetermined) {
       if (!model::StartsWith(u, model::param::kEtaPrefix) || std::isfinite(best.criterion))

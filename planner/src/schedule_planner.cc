@@ -11,6 +11,7 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/parameter.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/numbers.h"
 #include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/switched_design.h"
@@ -234,7 +235,7 @@ DofPlan PlanDof(const model::Vehicle& vehicle, const model::Pool& pool, model::D
   return plan;
 }
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using model::kInf;
 
 // The ranking of DesignNextTrial's candidates; the best so far is in the result's trial.
 struct NextCandidates {

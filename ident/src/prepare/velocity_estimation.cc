@@ -8,11 +8,12 @@
 #include "options_check.h"
 #include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/model/util/median.h"
+#include "uuvplan/model/util/numbers.h"
 
 namespace uuvplan::ident {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using model::kNaN;
 
 }  // namespace
 

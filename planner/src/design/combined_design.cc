@@ -218,7 +218,7 @@ void AddCramerRao(const Setup& s, CombinedDesign* d) {
 
 // How far the envelope reaches in each direction the constraints bound: per translational DOF
 // both ends of its travel, per rotation its turns.
-std::vector<double> Reach(const model::MultiDofModel& model, const CombinedEnvelope& e) {
+std::vector<double> ReachOfAxes(const model::MultiDofModel& model, const CombinedEnvelope& e) {
   std::vector<double> r;
   for (int i = 0; i < model.num_dofs(); ++i) {
     if (model::IsRotational(model.dof(i))) {
@@ -239,11 +239,11 @@ std::size_t AddExtremes(const Setup& s, const model::CombinedTrialDesign& trial,
                         std::vector<Eigen::VectorXd>* check_points) {
   const CombinedInputs in = internal::InputsOf(s.model, s.vehicle, trial);
   std::vector<double> reach =
-      Reach(s.model, internal::TrackEnvelope(s.model, in, trial, *check_points, s.o));
+      ReachOfAxes(s.model, internal::TrackEnvelope(s.model, in, trial, *check_points, s.o));
   std::vector<int> best(reach.size(), -1);
   for (std::size_t k = 0; k < probes.size(); ++k) {
     const std::vector<double> r =
-        Reach(s.model, internal::TrackEnvelope(s.model, in, trial, {probes[k]}, s.o));
+        ReachOfAxes(s.model, internal::TrackEnvelope(s.model, in, trial, {probes[k]}, s.o));
     for (std::size_t c = 0; c < r.size(); ++c) {
       if (r[c] > reach[c] + 1e-3) {
         reach[c] = r[c];

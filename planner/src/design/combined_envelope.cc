@@ -7,12 +7,13 @@
 #include <sstream>
 
 #include "uuvplan/model/simulator.h"
+#include "uuvplan/model/util/numbers.h"
 
 namespace uuvplan::planner {
 namespace {
 
 constexpr double kTwoPi = 2.0 * M_PI;
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using model::kInf;
 // m kept free beyond the travel at each wall: the planner's 0.2 s RK4 track differs from a
 // 0.01 s one by < 1 cm on the ASV (docs/planning.md §5).
 constexpr double kTrackSlack = 0.05;

@@ -657,7 +657,7 @@ namespace {
 
 // One DOF's candidate trial, planned on its own (PlanCandidate into an empty Decision): the
 // candidates of several DOFs can be planned at once and taken in Decide's order after.
-struct Candidate {
+struct PolicyCandidate {
   bool planned = false;
   Decision part;  ///< what the policy decided (trial, predictions, notes)
   CandidateGain gain;
@@ -665,7 +665,7 @@ struct Candidate {
 };
 
 // `d` with the candidate's trial and notes, as PlanCandidate on `d` itself leaves it.
-Decision WithCandidate(const Decision& d, const Candidate& c) {
+Decision WithCandidate(const Decision& d, const PolicyCandidate& c) {
   Decision tried = d;
   for (const auto& n : c.part.notes) tried.notes.push_back(n);
   tried.dof = c.part.dof;
@@ -681,13 +681,13 @@ Decision WithCandidate(const Decision& d, const Candidate& c) {
 std::size_t PlanBatch(Planner& planner, const model::Campaign& campaign,
                       const ident::IdentifyResult& estimates,
                       const std::vector<const DofProgress*>& open, std::size_t from,
-                      std::vector<Candidate>* out) {
+                      std::vector<PolicyCandidate>* out) {
   const std::size_t to = std::min(open.size(), from + model::Workers(planner.Threads()));
   std::vector<Dof> dofs;
   for (std::size_t i = from; i < to; ++i) dofs.push_back(open[i]->dof);
   planner.Prepare(dofs);
   model::ParallelFor(to - from, planner.Threads(), [&](std::size_t k) {
-    Candidate& c = (*out)[from + k];
+    PolicyCandidate& c = (*out)[from + k];
     const DofProgress& p = *open[from + k];
     c.planned =
         PlanCandidate(planner, campaign, p, estimates.Find(p.dof), &c.part, &c.gain, &c.why);
@@ -726,7 +726,7 @@ std::vector<const DofProgress*> FurthestFirst(const std::vector<DofProgress>& pr
 // A DOF without a candidate trial stops: infeasible (the pool verdict's answer: no trial for a
 // DOF that has none yet), or stuck when its trials ran in this pool and no further trial fits
 // (at its estimates ± 2σ): held by a limit of this pool, with what stops the next trial.
-void StopUnplanned(const DofProgress& p, const Candidate& c, Decision* d) {
+void StopUnplanned(const DofProgress& p, const PolicyCandidate& c, Decision* d) {
   const std::string name(model::DofName(p.dof));
   if (p.trials > 0) {
     AddStop(p.dof, NextStatus::kStuck,
@@ -766,7 +766,7 @@ Decision Decide(Planner& planner, const model::Campaign& campaign, const std::ve
   for (const DofProgress* p : order) {
     if (!memory.stopped.count(p->dof) && p->refusal.empty()) open.push_back(p);
   }
-  std::vector<Candidate> candidates(open.size());
+  std::vector<PolicyCandidate> candidates(open.size());
   std::size_t next = 0;  // the next entry of `open`; those before it are planned
   for (const DofProgress* p : order) {
     const std::string name(model::DofName(p->dof));
@@ -780,7 +780,7 @@ Decision Decide(Planner& planner, const model::Campaign& campaign, const std::ve
     }
     const std::size_t i = std::find(open.begin(), open.end(), p) - open.begin();
     if (i >= next) next = PlanBatch(planner, campaign, estimates, open, i, &candidates);
-    const Candidate& c = candidates[i];
+    const PolicyCandidate& c = candidates[i];
     Decision tried = WithCandidate(d, c);
     if (!c.planned) {
       d.notes = tried.notes;

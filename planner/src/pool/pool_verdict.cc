@@ -7,12 +7,13 @@
 
 #include "design/travel_margin.h"
 #include "uuvplan/model/util/enum_names.h"
+#include "uuvplan/model/util/numbers.h"
 #include "uuvplan/model/util/parallel.h"
 
 namespace uuvplan::planner {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using model::kInf;
 
 constexpr model::EnumNames<PoolLimit, 10> kLimitNames{
     {{{PoolLimit::kNone, "none"},

@@ -110,6 +110,8 @@ model::Dof DofKey(const MapValue::Entry& e);
 std::vector<Value> List(const Value& v, const std::string& expectation);
 /// [lo, hi] of two numbers.
 std::array<double, 2> Pair(const Value& v, const std::string& expectation);
+/// [x, y, z] of three numbers; otherwise Expected(expectation).
+std::array<double, 3> Triple(const Value& v, const std::string& expectation);
 /// A file named at `v` (relative to v's file), which must be readable; returns its path.
 std::string ReadableFile(const Value& v);
 
