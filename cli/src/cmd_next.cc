@@ -1,8 +1,11 @@
-// `uuvplan next CAMPAIGN --pool POOL [--dof D]... [--target PCT] [--json F]`: identify from
-// every trial logged so far, turn the estimates and their covariance into the a priori
-// knowledge of the design (box = estimates ± 2σ, prior information = covariance⁻¹) and plan the
-// single most informative next trial (planner/loop/design_loop.h, docs/loop.md) — what a pool team
-// runs between two trials. The result can be run with `simulate --plan` (its "trial").
+// `uuvplan next CAMPAIGN --pool POOL [--dof D]... [--target PCT] [--json F] [--commands DIR]`:
+// identify from every trial logged so far, turn the estimates and their covariance into the a
+// priori knowledge of the design (box = estimates ± 2σ, prior information = covariance⁻¹) and
+// plan the single most informative next trial (planner/loop/design_loop.h, docs/loop.md) — what
+// a pool team runs between two trials. The result can be run with `simulate --plan` (its
+// "trial"); --commands writes its command file and run-sheet line as `schedule --commands`.
+// The pool verdict is judged over what is known now: for each DOF identified, the box about its
+// estimates that `schedule` plans over for the file `identify --write-vehicle` writes.
 // Exit status (docs/cli.md): 0 a trial is planned and the pool hosts the identification of the
 // DOFs driven for all or part of the a priori box (the pool verdict, planner/pool/pool_verdict.h,
 // printed as `schedule` prints it), or the DOFs have converged (then "trial" is null); 1 no
@@ -19,6 +22,8 @@
 
 #include "uuvplan/cli/command.h"
 #include "uuvplan/cli/exit_status.h"
+#include "uuvplan/ident/score.h"
+#include "uuvplan/io/command_files.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/next_json.h"
 #include "uuvplan/model/input_error.h"
@@ -26,6 +31,7 @@
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/loop/design_loop.h"
+#include "uuvplan/planner/pool/command_sheet.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
 #include "uuvplan/text/identify_table.h"
 #include "uuvplan/text/loop_text.h"
@@ -41,6 +47,7 @@ struct NextFlags {
   std::string pool;
   std::vector<std::string> dofs;
   std::string json;
+  std::string commands;  ///< --commands DIR: the next trial's command file and run sheet
   bool accept_units = false;
   planner::DesignLoopOptions design;  ///< --target bound here
 };
@@ -123,6 +130,24 @@ void PrintNextStep(const planner::NextStepResult& r, const model::Campaign& camp
   }
 }
 
+// --commands DIR: the planned trial's thruster commands and its run-sheet line, over the box
+// the verdict is judged on (`known`: the vehicle with the current estimates).
+void WriteNextCommands(const NextFlags& o, const planner::NextStepResult& r,
+                       const model::Vehicle& known, const model::Pool& pool,
+                       const planner::ScheduleOptions& so, std::ostream& out) {
+  if (o.commands.empty()) return;
+  if (r.status != planner::NextStatus::kTrial) {
+    out << "\nNo trial planned: " << o.commands << " not written.\n";
+    return;
+  }
+  planner::Schedule next;
+  next.trials.push_back(r.trial);
+  planner::CommandSheetOptions co;
+  co.schedule = so;
+  io::WriteCommandFiles(o.commands, planner::MakeCommandSheet(known, pool, next, co), known, pool);
+  out << "\nCommands of " << r.trial.design.id << " and its run-sheet line: " << o.commands << "\n";
+}
+
 int RunNext(const NextFlags& o) {
   const model::Campaign campaign = ReadCampaignForIdentification(o.campaign, o.accept_units);
   const model::Pool pool = io::ReadPool(o.pool);
@@ -132,7 +157,8 @@ int RunNext(const NextFlags& o) {
   // The pool verdict of the DOFs driven (schedule's and check-pool's answer for them).
   planner::ScheduleOptions so = options.ScheduleAtTarget();
   for (const auto& p : r.progress) so.dofs.push_back(p.dof);
-  const planner::PoolVerdict verdict = planner::JudgePool(campaign.vehicle, pool, so);
+  const model::Vehicle known = ident::WithIdentifiedModels(campaign.vehicle, r.estimates);
+  const planner::PoolVerdict verdict = planner::JudgePool(known, pool, so);
   // A DOF that ran trials here and gets no further one is stuck (5) in a pool the verdict
   // hosts; in one it hosts for part of the box or none, the pool's answer is 1 (as `loop`'s,
   // planner::ReadLoopEnd). A trial is planned (0) where the loop may run: all or part.
@@ -144,6 +170,7 @@ int RunNext(const NextFlags& o) {
   std::ostream& out = ReportStream(o.json);
   PrintNextStep(r, campaign, pool, o, out);
   text::PrintVerdict(verdict, pool, out);
+  WriteNextCommands(o, r, known, pool, so, out);
   if (!o.json.empty()) {
     // The pool's answer is the status a script reads (as `loop`'s).
     WriteJson(o.json, io::NextStepJson(r, o.design.target_percent, verdict, pool, exit_status,
@@ -162,6 +189,9 @@ void BindNext(CLI::App* sub, NextFlags* o) {
                   "has trials of, or every DOF the vehicle can plan)");
   AddTargetOption(sub, &o->design.target_percent);
   AddJsonOption(sub, &o->json, "also write the result");
+  sub->add_option("--commands", o->commands,
+                  "write the next trial's thruster commands (CSV) and its run-sheet line "
+                  "(Markdown) into this new directory");
   AddAcceptUnitsFlag(sub, &o->accept_units);
   AddThreadsOption(sub, {&o->design.schedule.planner.threads, &o->design.identify.threads},
                    "identifying (trials and DOFs) and planning the DOFs' candidate trials");

@@ -61,6 +61,15 @@ model::DofTruth ModelOf(const DofIdentification& identification) {
   return m;
 }
 
+model::Vehicle WithIdentifiedModels(model::Vehicle vehicle, const IdentifyResult& result) {
+  for (const DofIdentification& d : result.dofs) {
+    if (d.status == IdentifyStatus::kFailed) continue;
+    const model::DofTruth m = ModelOf(d);
+    if (Inadmissible(m).empty()) vehicle.models[d.dof] = m;
+  }
+  return vehicle;
+}
+
 std::string Inadmissible(const model::DofParameters& m) {
   for (const auto& [name, value] : m.params) {
     const model::ParameterFamily* family = model::FamilyOf(name);

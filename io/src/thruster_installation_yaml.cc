@@ -46,12 +46,13 @@ std::array<double, 3> ParseDirection(const Value& v) {
   return d;
 }
 
-// thrust.dead_band: commands with |V| below it give no thrust; it must leave some command.
+// thrust.dead_band: commands within it of neutral give no thrust; it must leave some command.
 void ParseDeadBand(const MapValue& m, Thruster* t) {
   const MapValue thrust(m.Required("thrust"), "a thrust model");
   const Value band = thrust.Optional("dead_band");
   if (band.absent()) return;
-  const double reach = std::max(std::abs(t->command_min), std::abs(t->command_max));
+  const double reach =
+      std::max(std::abs(t->command_min - t->neutral), std::abs(t->command_max - t->neutral));
   t->model.dead_band =
       NumberIf(band,
                "a dead band >= 0 in command units, below the command range's reach " +

@@ -56,10 +56,27 @@ ThrustModel ParseThrust(const Value& v) {
   return model;
 }
 
+// neutral: the command at which the thruster stops, within its range (0 when not given, which
+// the range must then hold: a PWM range [1100, 1900] read as distances from 0 would make every
+// command a full one).
+double ParseNeutral(const MapValue& m, const Value& command, const Thruster& t) {
+  const std::string range = "[" + model::Significant(t.command_min, 6) + ", " +
+                            model::Significant(t.command_max, 6) + "]";
+  const Value neutral = m.Optional("neutral");
+  if (neutral.absent()) {
+    if (t.command_min <= 0 && 0 <= t.command_max) return 0.0;
+    command.Fail("the command range " + range +
+                 " does not hold 0: give the command at which the thruster stops as "
+                 "`neutral:` (1500 for a PWM ESC driven from 1100 to 1900 µs)");
+  }
+  return NumberIf(neutral, "the command at which the thruster stops, within its range " + range,
+                  [&t](double x) { return x >= t.command_min && x <= t.command_max; });
+}
+
 Thruster ParseThruster(const Value& v, const std::vector<Thruster>& previous, double mass,
                        const std::array<double, 3>& size) {
   const MapValue m(v, "a thruster {name, thrust, command}");
-  std::vector<std::string_view> keys = {"name", "thrust", "command"};
+  std::vector<std::string_view> keys = {"name", "thrust", "command", "neutral"};
   keys.insert(keys.end(), kThrusterInstallationKeys.begin(), kThrusterInstallationKeys.end());
   m.AllowOnly(keys);
   Thruster t;
@@ -75,6 +92,7 @@ Thruster ParseThruster(const Value& v, const std::vector<Thruster>& previous, do
   if (!(range[0] < range[1])) command.Expected(expectation);
   t.command_min = range[0];
   t.command_max = range[1];
+  t.neutral = ParseNeutral(m, command, t);
   ParseThrusterInstallation(m, size, &t);
   CheckPlausibleThruster(v, t, mass);
   return t;

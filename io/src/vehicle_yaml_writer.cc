@@ -88,6 +88,7 @@ void EmitThruster(YAML::Emitter& out, const Thruster& t) {
   }
   out << YAML::EndMap << YAML::Key << "command" << YAML::Value;
   EmitPair(out, {t.command_min, t.command_max});
+  if (t.neutral != 0.0) out << YAML::Key << "neutral" << YAML::Value << FileNumber(t.neutral);
   EmitThrusterInstallation(out, t);
   out << YAML::EndMap;
 }

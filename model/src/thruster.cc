@@ -51,11 +51,11 @@ std::pair<double, double> ThrustRange(const ThrustModel& m, double lo, double hi
 }  // namespace
 
 double Thruster::MaxForwardThrust() const {
-  return std::max(0.0, ThrustRange(model, command_min, command_max).second);
+  return std::max(0.0, ThrustRange(model, command_min - neutral, command_max - neutral).second);
 }
 
 double Thruster::MaxReverseThrust() const {
-  return std::max(0.0, -ThrustRange(model, command_min, command_max).first);
+  return std::max(0.0, -ThrustRange(model, command_min - neutral, command_max - neutral).first);
 }
 
 }  // namespace uuvplan::model

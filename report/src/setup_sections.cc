@@ -20,7 +20,8 @@ Table ThrusterTable(const model::Vehicle& v) {
   for (const model::Thruster& th : v.thrusters) {
     const bool square = th.model.kind == model::ThrustModel::Kind::kSquare;
     t.rows.push_back({th.name, square ? "square c·V|V|" : "poly2 a·V² + b·V",
-                      Number(th.command_min) + " … " + Number(th.command_max),
+                      Number(th.command_min) + " … " + Number(th.command_max) +
+                          (th.neutral != 0.0 ? " (stopped at " + Number(th.neutral) + ")" : ""),
                       Number(th.MaxForwardThrust()), Number(th.MaxReverseThrust())});
   }
   return t;

@@ -3,7 +3,8 @@
 // would run them — each thruster's command held until the next row, turned into thrust by the
 // thruster's model and into the DOF's force through the mapping the working thrusters form —
 // find no propeller reversal, no thruster beyond its command range or under min_thrust, and no
-// wall reached from the run sheet's start, on the ROMEO, VSOR and URIS schedules.
+// wall reached from the run sheet's start, on the ROMEO, VSOR and URIS schedules and on ROMEO
+// driven by PWM (commands about a neutral of 1500 µs).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -72,14 +73,16 @@ void ForceOfRow(const model::Vehicle& v, model::Dof dof, const std::vector<doubl
   *phi = 0.0;
   *mapping = -1;
   std::vector<bool> working(v.thrusters.size());
-  for (std::size_t i = 0; i < v.thrusters.size(); ++i) working[i] = row[1 + i] != 0.0;
+  for (std::size_t i = 0; i < v.thrusters.size(); ++i) {
+    working[i] = row[1 + i] != v.thrusters[i].neutral;
+  }
   for (int m = 0; m < static_cast<int>(v.mappings.size()); ++m) {
     if (v.mappings[m].dof != dof) continue;
     std::vector<bool> uses(v.thrusters.size());
     double num = 0, den = 0;
     for (const auto& [i, share] : v.mappings[m].shares) {
       uses[i] = share != 0.0;
-      num += share * v.thrusters[i].model.Thrust(row[1 + i]);
+      num += share * v.thrusters[i].Thrust(row[1 + i]);
       den += share * share;
     }
     if (uses == working && den > 0) *phi = num / den, *mapping = m;
@@ -95,10 +98,10 @@ void CheckThrusters(const model::Vehicle& v, const std::string& id, const Comman
       const double u = row[1 + i];
       EXPECT_GE(u, th.command_min) << id << " " << th.name << " below its command range";
       EXPECT_LE(u, th.command_max) << id << " " << th.name << " beyond its command range";
-      if (u == 0.0) continue;
-      // 1e-9 relative: the file's 8 significant digits of the command, squared by the model.
-      EXPECT_GE(std::abs(th.model.Thrust(u)), v.min_thrust * (1 - 1e-6)) << id << " " << th.name;
-      const int s = u > 0 ? 1 : -1;
+      if (u == th.neutral) continue;
+      // 1e-6 relative: the file's 8 significant digits of the command, squared by the model.
+      EXPECT_GE(std::abs(th.Thrust(u)), v.min_thrust * (1 - 1e-6)) << id << " " << th.name;
+      const int s = u > th.neutral ? 1 : -1;
       EXPECT_TRUE(sign == 0 || s == sign) << id << " " << th.name << " reverses";
       sign = s;
     }
@@ -142,26 +145,35 @@ std::array<double, 2> ReplayOverBox(const model::Vehicle& v, const model::Pool& 
   return travel;
 }
 
-void ReplayCase(const std::string& name) {
-  const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + name;
+// Plans `vehicle_file` in `pool_file` (`schedule` with `args`), replays every trial's command
+// file and returns them by trial id.
+std::map<std::string, CommandRows> ReplaySchedule(const std::string& vehicle_file,
+                                                  const std::string& pool_file,
+                                                  const std::string& args) {
+  const std::string name = vehicle_file;
   const TempDir scratch;
   const ToolRun run =
-      RunTool("schedule '" + dir + "/vehicle.yaml' --pool '" + dir + "/pool.yaml' --json '" +
+      RunTool("schedule '" + vehicle_file + "' --pool '" + pool_file + "' " + args + " --json '" +
                   (scratch / "plan.json") + "' --commands '" + (scratch / "commands") + "'",
               scratch);
-  ASSERT_TRUE(run.status == 0 || run.status == 1) << run.err;
-  const model::Vehicle v = io::ReadVehicle(dir + "/vehicle.yaml");
-  const model::Pool pool = io::ReadPool(dir + "/pool.yaml");
+  std::map<std::string, CommandRows> files;
+  EXPECT_TRUE(run.status == 0 || run.status == 1) << run.err;
+  if (run.status != 0 && run.status != 1) return files;
+  const model::Vehicle v = io::ReadVehicle(vehicle_file);
+  const model::Pool pool = io::ReadPool(pool_file);
   const planner::Schedule plan = io::ReadScheduleJson(scratch / "plan.json");
   const auto starts = StartsFromRunSheet(ReadText(scratch / "commands/run_sheet.md"));
-  ASSERT_FALSE(plan.trials.empty());
+  EXPECT_FALSE(plan.trials.empty());
   for (const planner::PlannedTrial& trial : plan.trials) {
     const std::string& id = trial.design.id;
     const model::Dof dof = trial.design.dof;
     const CommandRows c = ReadCommandCsv(scratch / ("commands/" + id + ".csv"));
-    ASSERT_EQ(c.header.size(), v.thrusters.size() + 2) << id;
+    files[id] = c;
+    EXPECT_EQ(c.header.size(), v.thrusters.size() + 2) << id;
+    if (c.header.size() != v.thrusters.size() + 2) continue;
     CheckThrusters(v, id, c);
-    ASSERT_EQ(starts.count(id), 1u) << id << " not on the run sheet";
+    EXPECT_EQ(starts.count(id), 1u) << id << " not on the run sheet";
+    if (starts.count(id) != 1) continue;
     const std::array<double, 2> travel = ReplayOverBox(v, pool, dof, c);
     const double start = starts.at(id);
     // Margin lines from the run sheet's start; 1 cm (or 0.1°) of tolerance: the start is printed
@@ -174,11 +186,51 @@ void ReplayCase(const std::string& name) {
     EXPECT_GE(start + travel[0], low - tolerance) << name << " " << id << " crosses the margin";
     EXPECT_LE(start + travel[1], high + tolerance) << name << " " << id << " crosses the margin";
   }
+  return files;
+}
+
+void ReplayCase(const std::string& name) {
+  const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + name;
+  ReplaySchedule(dir + "/vehicle.yaml", dir + "/pool.yaml", "");
 }
 
 TEST(CommandFiles, RomeoReplayStaysWithinLimitsAndWalls) { ReplayCase("romeo"); }
 TEST(CommandFiles, VsorReplayStaysWithinLimitsAndWalls) { ReplayCase("vsor"); }
 TEST(CommandFiles, UrisReplayStaysWithinLimitsAndWalls) { ReplayCase("uris"); }
+
+// ROMEO's thrusters driven by PWM: an ESC takes 1100–1900 µs and stops at 1500, and
+// V = (u − 1500 µs)/40 maps that onto ROMEO's ±10 V, so c = c_V/40² per µs². Every command
+// file stays in [1100, 1900], idles and stops every thruster at exactly 1500, and replays like
+// ROMEO's (yaw: the DOF whose mappings use all four horizontal thrusters).
+TEST(CommandFiles, PwmDrivenRomeoStaysInItsRangeAndStopsAtNeutral) {
+  const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
+  std::string text = ReadText(romeo + "vehicle.yaml");
+  const std::string volts = "thrust: {model: square, c_pos: 1.02, c_neg: 1.09}, command: [-10, 10]";
+  const std::string pwm =
+      "thrust: {model: square, c_pos: 0.0006375, c_neg: 0.00068125}, command: [1100, 1900], "
+      "neutral: 1500";
+  int replaced = 0;
+  for (std::size_t at; (at = text.find(volts)) != std::string::npos; ++replaced) {
+    text.replace(at, volts.size(), pwm);
+  }
+  ASSERT_EQ(replaced, 8);  // every thruster of ROMEO
+  const TempDir scratch;
+  scratch.Write("vehicle.yaml", text);
+  const auto files = ReplaySchedule(scratch / "vehicle.yaml", romeo + "pool.yaml", "--dof yaw");
+  ASSERT_FALSE(files.empty());
+  for (const auto& [id, c] : files) {
+    ASSERT_FALSE(c.rows.empty()) << id;
+    int driven = 0;
+    for (const auto& row : c.rows) {
+      for (std::size_t i = 1; i + 1 < row.size(); ++i) driven += row[i] != 1500.0;
+    }
+    EXPECT_GT(driven, 0) << id << ": no thruster driven";
+    const auto& last = c.rows.back();
+    for (std::size_t i = 1; i + 1 < last.size(); ++i) {
+      EXPECT_EQ(last[i], 1500.0) << id << " " << c.header[i] << " does not stop at neutral";
+    }
+  }
+}
 
 TEST(CommandFiles, AnExistingDirectoryIsNeverOverwritten) {
   const std::string dir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo";

@@ -23,9 +23,12 @@ double Delivered(double phi, const Shape& s) {
   return u0 == 0.0 ? 0.0 : u0 * std::pow(std::abs(u0) / s.reference, s.p);
 }
 
-// The command of `thruster` that gives thruster force f (bisection: Thrust is monotonic).
+// The command from neutral of `thruster` that gives thruster force f (bisection: Thrust is
+// monotonic).
 double CommandFor(const model::Thruster& thruster, double f) {
-  double lo = f >= 0 ? 0.0 : thruster.command_min, hi = f >= 0 ? thruster.command_max : 0.0;
+  const double low = thruster.command_min - thruster.neutral;
+  const double high = thruster.command_max - thruster.neutral;
+  double lo = f >= 0 ? 0.0 : low, hi = f >= 0 ? high : 0.0;
   for (int i = 0; i < 60; ++i) {
     const double mid = 0.5 * (lo + hi);
     (thruster.model.Thrust(mid) < f ? lo : hi) = mid;

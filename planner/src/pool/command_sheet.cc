@@ -60,10 +60,11 @@ void PlaceStart(const model::Pool& pool, const PlannedTrial& trial, TrialCommand
 }  // namespace
 
 Eigen::VectorXd ThrusterCommands(const model::Vehicle& vehicle, int mapping, double phi) {
-  Eigen::VectorXd v = Eigen::VectorXd::Zero(static_cast<int>(vehicle.thrusters.size()));
+  Eigen::VectorXd v(static_cast<int>(vehicle.thrusters.size()));
+  for (std::size_t i = 0; i < vehicle.thrusters.size(); ++i) v[i] = vehicle.thrusters[i].neutral;
   if (mapping < 0) return v;
   for (const auto& [thruster, share] : vehicle.mappings[mapping].shares) {
-    v[thruster] = vehicle.thrusters[thruster].model.Command(share * phi);
+    v[thruster] = vehicle.thrusters[thruster].Command(share * phi);
   }
   return v;
 }
@@ -90,7 +91,8 @@ CommandSheet MakeCommandSheet(const model::Vehicle& vehicle, const model::Pool& 
       c.command.row(static_cast<int>(i)) =
           ThrusterCommands(vehicle, input->Mapping(c.t[i]), input->Force(c.t[i]));
     }
-    c.command.row(static_cast<int>(c.t.size()) - 1).setZero();  // the end: every thruster stops
+    c.command.row(static_cast<int>(c.t.size()) - 1) =  // the end: every thruster stops
+        ThrusterCommands(vehicle, -1, 0.0).transpose();
     auto& ctx = contexts[d.dof];
     if (!ctx)
       ctx = DofPlanningProblem::APriori(vehicle, pool, d.dof, options.schedule.planner, &notes);

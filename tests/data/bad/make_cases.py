@@ -75,6 +75,11 @@ vehicle_case("thrust_huge", r"c_pos: 1.02", "c_pos: 1e308", "thrusters[0]: impla
              line_shift=-1)
 vehicle_case("command_reversed", r"command: \[-10, 10\]", "command: [10, -10]",
              "thrusters[0].command: expected a command range")
+vehicle_case("command_pwm_no_neutral", r"command: \[-10, 10\]", "command: [1100, 1900]",
+             "thrusters[0].command: the command range [1100, 1900] does not hold 0")
+vehicle_case("neutral_outside", r"command: \[-10, 10\]", "command: [-10, 10]\n    neutral: 12",
+             "thrusters[0].neutral: expected the command at which the thruster stops",
+             line_shift=1)
 vehicle_case("unknown_key", r"^min_thrust: .*", "colour: red", "unknown key 'colour'")
 vehicle_case("duplicate_key", r"^min_thrust: .*", "mass: 450", "key 'mass' appears twice")
 vehicle_case("share_unknown", r"shares: \{HFL: 0.5, HFR: 0.5\}", "shares: {HFL: 0.5, HXX: 0.5}",

@@ -28,6 +28,12 @@ model::DofTruth ModelOf(const struct DofIdentification& identification);
 /// would accept it), else the first that does not, e.g. "k = -0.31 (expected a number >= 0)".
 std::string Inadmissible(const model::DofParameters& model);
 
+/// `vehicle` with the model of each DOF `result` identified (ModelOf), as the file `identify
+/// --write-vehicle` writes it: the planner's box of such a DOF is then the estimates'
+/// (planner/design/parameter_box.h, PlanningBox). A DOF that failed or whose model is
+/// inadmissible keeps what `vehicle` had.
+model::Vehicle WithIdentifiedModels(model::Vehicle vehicle, const struct IdentifyResult& result);
+
 /// Velocity MAE of the free runs of `trials` pooled over their samples (trials without a
 /// velocity sample add nothing). NaN, with the reason in `why`, when a free run cannot be
 /// simulated or no sample is left; `samples` (optional) receives the number pooled.

@@ -1,7 +1,8 @@
 // Thruster models of the papers: the force a single thruster produces for a command.
 //   square (ref 000 eq. 6):  tau = c·V|V|, c = c_pos for V >= 0, c_neg for V < 0 (N/V²)
 //   poly2  (ref 002 eq. 1):  tau = a·V² + b·V for V >= 0, odd-extended: tau(-V) = -tau(V)
-// Both may carry a thrust deduction t (ref 003): tau_a = (1 - t)·tau.
+// Both may carry a thrust deduction t (ref 003): tau_a = (1 - t)·tau. V is the command's distance
+// from the thruster's neutral (the command at which it stops: 0 V, or 1500 µs for a PWM ESC).
 #pragma once
 
 #include <optional>
@@ -23,9 +24,9 @@ struct ThrustModel {
   /// identification and planning of it are not implemented; Thrust() ignores it.
   double dead_band = 0.0;
 
-  /// Thrust (N) for a command V (command units, e.g. volts).
-  double Thrust(double command) const;
-  /// The command that gives `thrust` (N): the inverse of Thrust (both models are odd-signed and
+  /// Thrust (N) for V, the command from neutral (command units, e.g. volts).
+  double Thrust(double v) const;
+  /// The V that gives `thrust` (N): the inverse of Thrust (both models are odd-signed and
   /// monotonic), in closed form; it may lie outside a thruster's command range.
   double Command(double thrust) const;
 };
@@ -33,13 +34,19 @@ struct ThrustModel {
 struct Thruster {
   std::string name;
   ThrustModel model;
-  double command_min = -1.0;  ///< lowest command (e.g. V)
+  double command_min = -1.0;  ///< lowest command (e.g. V, or µs of PWM)
   double command_max = 1.0;   ///< highest command
+  double neutral = 0.0;       ///< the command at which it stops, in [command_min, command_max]
   /// Position and direction; absent when the vehicle file gives none (mappings from its table).
   std::optional<ThrusterGeometry> geometry;
   /// Built to run both ways in service (e.g. a T200). The papers' rule is false: a trial keeps
   /// each thruster's sign (ref 000 §II-B).
   bool reversible = false;
+
+  /// Thrust (N) for a command as the thruster takes it: the model of its distance from neutral.
+  double Thrust(double command) const { return model.Thrust(command - neutral); }
+  /// The command as the thruster takes it that gives `thrust` (N); neutral for none.
+  double Command(double thrust) const { return neutral + model.Command(thrust); }
 
   /// Largest positive thrust over the command range (N, >= 0).
   double MaxForwardThrust() const;

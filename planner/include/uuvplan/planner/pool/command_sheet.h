@@ -65,8 +65,8 @@ struct CommandSheetOptions {
 CommandSheet MakeCommandSheet(const model::Vehicle& vehicle, const model::Pool& pool,
                               const Schedule& schedule, const CommandSheetOptions& options);
 
-/// The commands of every thruster (vehicle order) for nominal force `phi` in mapping `mapping`
-/// (-1: none, every thruster idle).
+/// The commands of every thruster (vehicle order), as each takes them, for nominal force `phi`
+/// in mapping `mapping` (-1: none, every thruster at its neutral).
 Eigen::VectorXd ThrusterCommands(const model::Vehicle& vehicle, int mapping, double phi);
 
 }  // namespace uuvplan::planner
