@@ -77,7 +77,8 @@ std::string RunSheetMarkdown(const planner::CommandSheet& sheet, const model::Ve
      << " in each thruster's command units, rows every "
      << model::Significant(1.0 / sheet.rate_hz, 3)
      << " s and at every change, each held until the next row) ends with every thruster stopped.\n"
-     << "- Expected travel: from the start, over every vehicle of the a priori box.\n"
+     << "- Expected travel: from the start, over every vehicle of the box planned over (the a "
+        "priori box, or the box about the estimates where the vehicle is identified).\n"
      << "- Abort: stop the thrusters when the vehicle reaches either distance from the start (a "
         "margin line; for a rotation the tether's twist limit).\n\n"
      << "| # | trial | DOF | kind | mapping | start | heading | duration | expected travel | "
