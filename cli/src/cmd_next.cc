@@ -31,7 +31,6 @@
 #include "uuvplan/model/util/enum_names.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/loop/design_loop.h"
-#include "uuvplan/planner/pool/command_sheet.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
 #include "uuvplan/text/identify_table.h"
 #include "uuvplan/text/loop_text.h"
@@ -142,9 +141,7 @@ void WriteNextCommands(const NextFlags& o, const planner::NextStepResult& r,
   }
   planner::Schedule next;
   next.trials.push_back(r.trial);
-  planner::CommandSheetOptions co;
-  co.schedule = so;
-  io::WriteCommandFiles(o.commands, planner::MakeCommandSheet(known, pool, next, co), known, pool);
+  io::WriteScheduleCommands(o.commands, known, pool, next, so);
   out << "\nCommands of " << r.trial.design.id << " and its run-sheet line: " << o.commands << "\n";
 }
 

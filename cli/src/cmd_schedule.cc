@@ -23,7 +23,6 @@
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/coupled_design.h"
 #include "uuvplan/planner/design/information_table.h"
-#include "uuvplan/planner/pool/command_sheet.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/planner/schedule_planner.h"
@@ -156,12 +155,7 @@ int RunSchedule(const ScheduleFlags& o) {
     WriteJson(o.json, io::ScheduleResultJson(
                           r, planner::InformationOf(vehicle, pool, r.schedule, so), verdict, pool));
   }
-  if (!o.commands.empty()) {
-    planner::CommandSheetOptions co;
-    co.schedule = so;
-    io::WriteCommandFiles(o.commands, planner::MakeCommandSheet(vehicle, pool, r.schedule, co),
-                          vehicle, pool);
-  }
+  if (!o.commands.empty()) io::WriteScheduleCommands(o.commands, vehicle, pool, r.schedule, so);
   return VerdictExit(verdict);
 }
 

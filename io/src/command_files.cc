@@ -97,4 +97,12 @@ void WriteCommandFiles(const std::string& dir, const planner::CommandSheet& shee
   WriteNewDirectory(dir, files, "--commands", "the command files");
 }
 
+void WriteScheduleCommands(const std::string& dir, const model::Vehicle& vehicle,
+                           const model::Pool& pool, const planner::Schedule& schedule,
+                           const planner::ScheduleOptions& options) {
+  planner::CommandSheetOptions sheet;
+  sheet.schedule = options;
+  WriteCommandFiles(dir, planner::MakeCommandSheet(vehicle, pool, schedule, sheet), vehicle, pool);
+}
+
 }  // namespace uuvplan::io

@@ -51,8 +51,8 @@ void ParseDeadBand(const MapValue& m, Thruster* t) {
   const MapValue thrust(m.Required("thrust"), "a thrust model");
   const Value band = thrust.Optional("dead_band");
   if (band.absent()) return;
-  const double reach =
-      std::max(std::abs(t->command_min - t->neutral), std::abs(t->command_max - t->neutral));
+  const auto [lo, hi] = t->SpanFromNeutral();
+  const double reach = std::max(std::abs(lo), std::abs(hi));
   t->model.dead_band =
       NumberIf(band,
                "a dead band >= 0 in command units, below the command range's reach " +

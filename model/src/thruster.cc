@@ -51,11 +51,13 @@ std::pair<double, double> ThrustRange(const ThrustModel& m, double lo, double hi
 }  // namespace
 
 double Thruster::MaxForwardThrust() const {
-  return std::max(0.0, ThrustRange(model, command_min - neutral, command_max - neutral).second);
+  const auto [lo, hi] = SpanFromNeutral();
+  return std::max(0.0, ThrustRange(model, lo, hi).second);
 }
 
 double Thruster::MaxReverseThrust() const {
-  return std::max(0.0, -ThrustRange(model, command_min - neutral, command_max - neutral).first);
+  const auto [lo, hi] = SpanFromNeutral();
+  return std::max(0.0, -ThrustRange(model, lo, hi).first);
 }
 
 }  // namespace uuvplan::model

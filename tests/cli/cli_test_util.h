@@ -70,4 +70,14 @@ inline ToolRun RunTool(const std::string& args, const TempDir& scratch) {
   return r;
 }
 
+/// The pool team's first hour on ROMEO (cases/romeo): three short surge trials, a steady run
+/// each way and a sine, as a plan for `simulate --plan`.
+inline constexpr const char* kRomeoFirstSurgeTrials = R"({"trials": [
+  {"id": "surge_steady", "dof": "surge", "kind": "steady", "duration": 20,
+   "mapping": "surge-front", "force": 35},
+  {"id": "surge_back", "dof": "surge", "kind": "steady", "duration": 20,
+   "mapping": "surge-rear", "force": -35},
+  {"id": "surge_sine", "dof": "surge", "kind": "sine", "duration": 30, "mapping": "surge-front",
+   "offset": 30, "amplitude": 20, "omega": 0.4}]})";
+
 }  // namespace uuvplan::cli_test

@@ -150,7 +150,6 @@ std::array<double, 2> ReplayOverBox(const model::Vehicle& v, const model::Pool& 
 std::map<std::string, CommandRows> ReplaySchedule(const std::string& vehicle_file,
                                                   const std::string& pool_file,
                                                   const std::string& args) {
-  const std::string name = vehicle_file;
   const TempDir scratch;
   const ToolRun run =
       RunTool("schedule '" + vehicle_file + "' --pool '" + pool_file + "' " + args + " --json '" +
@@ -183,8 +182,10 @@ std::map<std::string, CommandRows> ReplaySchedule(const std::string& vehicle_fil
     const double tolerance = rotation ? 0.1 * M_PI / 180 : 0.01;
     const double low = rotation ? -pool.FreeTravel(dof) / 2 : pool.margin;
     const double high = rotation ? pool.FreeTravel(dof) / 2 : pool.WallToWall(dof) - pool.margin;
-    EXPECT_GE(start + travel[0], low - tolerance) << name << " " << id << " crosses the margin";
-    EXPECT_LE(start + travel[1], high + tolerance) << name << " " << id << " crosses the margin";
+    EXPECT_GE(start + travel[0], low - tolerance)
+        << vehicle_file << " " << id << " crosses the margin";
+    EXPECT_LE(start + travel[1], high + tolerance)
+        << vehicle_file << " " << id << " crosses the margin";
   }
   return files;
 }

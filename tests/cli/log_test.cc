@@ -21,20 +21,11 @@ using ::testing::StartsWith;
 
 const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
 
-// Three short ROMEO trials, one of each kind (the pool team's first hour).
-const char* kPlan = R"({"trials": [
-  {"id": "surge_steady", "dof": "surge", "kind": "steady", "duration": 20,
-   "mapping": "surge-front", "force": 35},
-  {"id": "surge_back", "dof": "surge", "kind": "steady", "duration": 20,
-   "mapping": "surge-rear", "force": -35},
-  {"id": "surge_sine", "dof": "surge", "kind": "sine", "duration": 30, "mapping": "surge-front",
-   "offset": 30, "amplitude": 20, "omega": 0.4}]})";
-
 struct PoolDay {
   TempDir scratch;
   std::string plan, logged, campaign;
   PoolDay() {
-    plan = scratch.Write("plan.json", kPlan);
+    plan = scratch.Write("plan.json", kRomeoFirstSurgeTrials);
     logged = scratch / "logged";  // what the pool's loggers wrote (the virtual pool here)
     const ToolRun sim = RunTool("simulate --truth " + kCases + "truth.yaml --plan " + plan +
                                     " --out " + logged + " --seed 7",

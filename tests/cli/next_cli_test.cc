@@ -20,15 +20,6 @@ using ::testing::HasSubstr;
 
 const std::string kRomeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
 
-// The pool team's first three trials (one steady run each way, one sine).
-const char* kFirstTrials = R"({"trials": [
-  {"id": "surge_steady", "dof": "surge", "kind": "steady", "duration": 20,
-   "mapping": "surge-front", "force": 35},
-  {"id": "surge_back", "dof": "surge", "kind": "steady", "duration": 20,
-   "mapping": "surge-rear", "force": -35},
-  {"id": "surge_sine", "dof": "surge", "kind": "sine", "duration": 30, "mapping": "surge-front",
-   "offset": 30, "amplitude": 20, "omega": 0.4}]})";
-
 // The line of `text` that starts with "Verdict: ".
 std::string VerdictLine(const std::string& text) {
   std::istringstream in(text);
@@ -40,7 +31,7 @@ std::string VerdictLine(const std::string& text) {
 
 TEST(NextCli, VerdictIsJudgedOnTheEstimatesAndCommandsAreWritten) {
   const TempDir scratch;
-  const std::string plan = scratch.Write("plan.json", kFirstTrials);
+  const std::string plan = scratch.Write("plan.json", kRomeoFirstSurgeTrials);
   const std::string pool = scratch.Write("six.yaml",
                                          "name: six\nlength: 6\nwidth: 12\ndepth: 5\n"
                                          "margin: 1\n");

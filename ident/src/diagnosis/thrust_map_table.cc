@@ -26,8 +26,7 @@ double Delivered(double phi, const Shape& s) {
 // The command from neutral of `thruster` that gives thruster force f (bisection: Thrust is
 // monotonic).
 double CommandFor(const model::Thruster& thruster, double f) {
-  const double low = thruster.command_min - thruster.neutral;
-  const double high = thruster.command_max - thruster.neutral;
+  const auto [low, high] = thruster.SpanFromNeutral();
   double lo = f >= 0 ? 0.0 : low, hi = f >= 0 ? high : 0.0;
   for (int i = 0; i < 60; ++i) {
     const double mid = 0.5 * (lo + hi);

@@ -28,4 +28,10 @@ std::string RunSheetMarkdown(const planner::CommandSheet& sheet, const model::Ve
 void WriteCommandFiles(const std::string& dir, const planner::CommandSheet& sheet,
                        const model::Vehicle& vehicle, const model::Pool& pool);
 
+/// The command files of `schedule` (planner::MakeCommandSheet at 20 Hz, travel and abort lines
+/// over the box `options` plan over), written as WriteCommandFiles writes them.
+void WriteScheduleCommands(const std::string& dir, const model::Vehicle& vehicle,
+                           const model::Pool& pool, const planner::Schedule& schedule,
+                           const planner::ScheduleOptions& options);
+
 }  // namespace uuvplan::io

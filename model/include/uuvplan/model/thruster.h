@@ -5,6 +5,7 @@
 // from the thruster's neutral (the command at which it stops: 0 V, or 1500 µs for a PWM ESC).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -47,6 +48,10 @@ struct Thruster {
   double Thrust(double command) const { return model.Thrust(command - neutral); }
   /// The command as the thruster takes it that gives `thrust` (N); neutral for none.
   double Command(double thrust) const { return neutral + model.Command(thrust); }
+  /// The command range as distances from neutral: the V range of its thrust model.
+  std::array<double, 2> SpanFromNeutral() const {
+    return {command_min - neutral, command_max - neutral};
+  }
 
   /// Largest positive thrust over the command range (N, >= 0).
   double MaxForwardThrust() const;
