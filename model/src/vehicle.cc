@@ -52,4 +52,14 @@ std::vector<int> Vehicle::MappingsOf(Dof dof) const {
   return out;
 }
 
+bool Vehicle::Reverses(int mapping) const {
+  bool working = false;
+  for (const auto& [thruster, share] : mappings.at(mapping).shares) {
+    if (share == 0.0) continue;
+    if (!thrusters.at(thruster).reversible) return false;
+    working = true;
+  }
+  return working;
+}
+
 }  // namespace uuvplan::model

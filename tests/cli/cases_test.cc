@@ -67,6 +67,8 @@ void ExpectSameVehicle(const Vehicle& a, const Vehicle& b) {
       EXPECT_EQ(x.geometry->direction, y.geometry->direction);
     }
   }
+  EXPECT_EQ(a.speed_limits.translation, b.speed_limits.translation);
+  EXPECT_EQ(a.speed_limits.rotation, b.speed_limits.rotation);
   EXPECT_EQ(a.mapping_derivation.jet_clearance, b.mapping_derivation.jet_clearance);
   EXPECT_EQ(a.mapping_derivation.restoring, b.mapping_derivation.restoring);
   ASSERT_EQ(a.mappings.size(), b.mappings.size());

@@ -1,6 +1,7 @@
 // Trial designs for people (trial_text.h).
 #include "uuvplan/text/trial_text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -10,14 +11,39 @@
 namespace uuvplan::text {
 namespace {
 
+// Segments listed one by one up to this many; a longer square wave is summarised.
+constexpr std::size_t kListedSegments = 4;
+
+// "switched-square 1.2 N·m yaw-all / -0.4 N·m yaw-all, 97 pieces of 0.2–1.4 s": a square wave
+// (switched_design.h) of more than kListedSegments pieces, by its two levels.
+bool SquareText(const model::TrialDesign& d, const std::string& unit, std::ostream& s) {
+  const bool square =
+      d.family == model::InputFamily::kSwitchedSquare || d.family == model::InputFamily::kPiecewise;
+  if (!square || d.segments.size() <= kListedSegments) return false;
+  double shortest = d.segments.front().duration, longest = shortest;
+  for (const auto& g : d.segments) {
+    shortest = std::min(shortest, g.duration);
+    longest = std::max(longest, g.duration);
+  }
+  const auto level = [&](const model::SegmentDesign& g) {
+    return model::Significant(g.force, 3) + unit + " " +
+           (g.mapping.empty() ? d.mapping : g.mapping);
+  };
+  s << model::InputFamilyName(d.family) << " " << level(d.segments[0]) << " / "
+    << level(d.segments[1]) << ", " << d.segments.size() << " pieces of "
+    << model::Significant(shortest, 2) << "–" << model::Significant(longest, 2) << " s";
+  return true;
+}
+
 void SegmentsText(const model::TrialDesign& d, const ForceTextStyle& style, const std::string& unit,
                   std::ostream& s) {
+  if (SquareText(d, unit, s)) return;
   for (std::size_t i = 0; i < d.segments.size(); ++i) {
     const auto& g = d.segments[i];
     const bool named =
         !g.mapping.empty() && (style.every_segment_mapping || g.mapping != d.mapping);
-    s << (i ? " | " : "") << g.force << unit << " " << std::setprecision(0) << g.duration
-      << style.segment_seconds << std::setprecision(1) << (named ? " " + g.mapping : "");
+    s << (i ? " | " : "") << g.force << unit << " " << model::Significant(g.duration, 2)
+      << style.segment_seconds << (named ? " " + g.mapping : "");
   }
 }
 

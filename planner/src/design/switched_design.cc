@@ -243,7 +243,9 @@ std::vector<SwitchPair> SwitchPairs(const DofPlanningProblem& ctx) {
   std::vector<SwitchPair> pairs;
   for (int p : v.MappingsOf(ctx.dof())) {
     for (int n : v.MappingsOf(ctx.dof())) {
-      if (p == n || !NoReversalBetween(v, p, n)) continue;
+      // A mapping whose thrusters all reverse alternates with itself: the zero-mean families
+      // (a square, sine or multisine about zero), which keep the vehicle about its start.
+      if (p == n ? !v.Reverses(p) : !NoReversalBetween(v, p, n)) continue;
       if (!v.mappings[p].IsOpenWater(model::Direction::kPos) &&
           !v.mappings[n].IsOpenWater(model::Direction::kNeg)) {
         continue;  // neither half's eta known: m is confounded with both
@@ -252,6 +254,10 @@ std::vector<SwitchPair> SwitchPairs(const DofPlanningProblem& ctx) {
       if (pair.pos_range.feasible && pair.neg_range.feasible) pairs.push_back(pair);
     }
   }
+  // The pairs that reverse no thruster first: of two that pose the same problem the first is
+  // solved (CoveredByAnotherPair), and the seeds' rule is kept where it costs nothing.
+  std::stable_partition(pairs.begin(), pairs.end(),
+                        [](const SwitchPair& pair) { return pair.pos != pair.neg; });
   return pairs;
 }
 
@@ -284,28 +290,35 @@ struct PairSolution {
   model::TrialDesign design;  ///< decoded from summary.x
 };
 
-// Two pairs pose the same design problem when both of each are in open water (no η to
-// tell them apart) with the same force ranges: mirror-placed thrusters (a BlueROV2's two
-// vertical ones) alternated either way. The first is solved; BestOfFamily keeps the first of
-// equal objectives, so the answer is the same.
-bool SameProblem(const DofPlanningProblem& ctx, const SwitchPair& a, const SwitchPair& b) {
+// Pair `a` covers pair `b` when both of each are in open water (no η to tell them apart: the
+// information depends on φⁿ(t) alone) and each of a's force ranges contains b's: every design
+// of b is one of a. Mirror-placed thrusters (a BlueROV2's two vertical ones) alternated either
+// way cover each other; a reversible mapping alternating with itself is covered by a pair of
+// its vectored thrusters whose forward thrust exceeds the reverse (a T200: 51.5 against 40 N).
+bool Covers(const DofPlanningProblem& ctx, const SwitchPair& a, const SwitchPair& b) {
   const auto open = [&](const SwitchPair& p) {
     const auto& m = ctx.vehicle().mappings;
     return m[p.pos].IsOpenWater(model::Direction::kPos) &&
            m[p.neg].IsOpenWater(model::Direction::kNeg);
   };
-  const auto same = [](const ForceRange& x, const ForceRange& y) {
-    return x.min_abs == y.min_abs && x.max_abs == y.max_abs;
+  const auto contains = [](const ForceRange& x, const ForceRange& y) {
+    return x.min_abs <= y.min_abs && x.max_abs >= y.max_abs;
   };
-  return a.one_way == b.one_way && open(a) && open(b) && same(a.pos_range, b.pos_range) &&
-         same(a.neg_range, b.neg_range);
+  return a.one_way == b.one_way && open(a) && open(b) && contains(a.pos_range, b.pos_range) &&
+         contains(a.neg_range, b.neg_range);
 }
 
-bool SameAsAnEarlierPair(const DofPlanningProblem& ctx, const std::vector<SwitchPair>& pairs,
-                         const SwitchPair& pair) {
-  for (const SwitchPair& earlier : pairs) {
-    if (&earlier == &pair) return false;
-    if (SameProblem(ctx, earlier, pair)) return true;
+// Whether another pair covers `pair`: solving it could only find a design the other's search
+// space holds. Of pairs that cover each other (the same problem) the first is kept.
+bool CoveredByAnotherPair(const DofPlanningProblem& ctx, const std::vector<SwitchPair>& pairs,
+                          const SwitchPair& pair) {
+  bool earlier = true;
+  for (const SwitchPair& other : pairs) {
+    if (&other == &pair) {
+      earlier = false;
+      continue;
+    }
+    if (Covers(ctx, other, pair) && (earlier || !Covers(ctx, pair, other))) return true;
   }
   return false;
 }
@@ -329,7 +342,7 @@ std::vector<PairTask> PairTasks(const DofPlanningProblem& ctx, model::InputFamil
   }
   std::vector<PairTask> tasks;
   for (const SwitchPair& pair : pairs) {
-    if (SameAsAnEarlierPair(ctx, pairs, pair)) continue;
+    if (CoveredByAnotherPair(ctx, pairs, pair)) continue;
     // One way the vehicle drifts: the longest trial is not the best; the sine's duration is.
     const double duration = pair.one_way != 0 && o.fixed_duration_s <= 0 && hint.duration_s > 0
                                 ? hint.duration_s

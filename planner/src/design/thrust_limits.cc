@@ -93,7 +93,7 @@ ThrustCheck CheckThrust(const model::Vehicle& v, const model::Excitation& input,
   c.thrust_min = std::isfinite(worst_min) ? worst_min : 0.0;
   for (int i = 0; i < nt; ++i) {
     c.thrust_max_ratio = std::max(c.thrust_max_ratio, ratio_max[i]);
-    if (sign_seen[i] == 3) {
+    if (sign_seen[i] == 3 && !v.thrusters[i].reversible) {
       c.reversal = true;
       c.reasons.push_back("thruster " + v.thrusters[i].name +
                           " reverses (pushes both ways during the trial); seed 000 §III-B keeps "

@@ -87,6 +87,9 @@ struct Vehicle {
   int ThrusterIndex(const std::string& name) const;
   /// Mappings acting on `dof`, in file order.
   std::vector<int> MappingsOf(Dof dof) const;
+  /// Whether mapping `mapping` may push both ways within one trial: every thruster working in
+  /// it is reversible (Thruster::reversible). False for a mapping with no working thruster.
+  bool Reverses(int mapping) const;
 };
 
 }  // namespace uuvplan::model

@@ -4,7 +4,10 @@
 // A switched trial pushes each sign of phi_n with the mapping that works in open water for it
 // (ref 000 Table I: surge-front forward, surge-rear backward; yaw-fl-rr clockwise, yaw-fr-rl
 // counter-clockwise; sway-left / sway-right), so the vehicle oscillates about its start instead
-// of crossing the pool, with no propeller ever reversing. Families (model::InputFamily):
+// of crossing the pool, with no propeller ever reversing. Thrusters built to reverse (a T200)
+// push both signs in one mapping: the same families about zero, the input of the 2016 BlueROV
+// thesis (a random telegraph signal) kept in the middle of a small tank. Families
+// (model::InputFamily):
 //
 //   switched-square  ±levels in the two mappings, period P, duty δ (the positive share of a
 //                    period), phase ψ (the share of a period elapsed at t = 0): a `segments`
@@ -35,7 +38,10 @@ namespace uuvplan::planner {
 
 /// A pair of mappings that can alternate: `pos` pushes phi_n > 0 and `neg` phi_n < 0 without
 /// any thruster working in both with opposite signs, at least one of them in open water (the
-/// other's eta is then estimated jointly and enters the information).
+/// other's eta is then estimated jointly and enters the information); or one mapping whose
+/// thrusters are all reversible (model::Vehicle::Reverses), pos == neg: the zero-mean families,
+/// each working thruster crossing from +min_thrust to −min_thrust at once (never idling in its
+/// dead band).
 struct SwitchPair {
   int pos = -1, neg = -1;
   ForceRange pos_range, neg_range;

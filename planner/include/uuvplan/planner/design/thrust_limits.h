@@ -3,7 +3,8 @@
 // trial (no propeller reversal, no dead band: Δφ <= φ̂ in eq. 15), and stays within what the
 // thruster gives over its command range (thruster models of ref 000 eq. 6 / ref 002 eq. 1).
 // A thruster idle in a segment (share 0 in that segment's mapping) is not working there; a
-// thruster that works in several segments must push the same way in all of them.
+// thruster that works in several segments must push the same way in all of them, unless it is
+// built to reverse (model::Thruster::reversible): then only min_thrust and its range bind.
 #pragma once
 
 #include <string>
