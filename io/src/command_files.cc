@@ -2,6 +2,7 @@
 #include "uuvplan/io/command_files.h"
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "uuvplan/io/new_directory.h"
@@ -16,11 +17,23 @@ std::string Along(model::Dof dof, double x) {
   return model::IsRotational(dof) ? model::AngleText(x) : model::Significant(x, 3) + " m";
 }
 
+// A start coordinate or abort line, marked by hand to the centimetre (command_sheet.h): "1.60 m".
+std::string Centimetres(double metres) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << (std::abs(metres) < 0.005 ? 0.0 : metres) << " m";
+  return s.str();
+}
+
+// An abort line: metres to the centimetre, or degrees for a rotation; signed.
+std::string AbortText(model::Dof dof, double x) {
+  return (x >= 0 ? "+" : "") + (model::IsRotational(dof) ? model::AngleText(x) : Centimetres(x));
+}
+
 std::string Signed(model::Dof dof, double x) { return (x >= 0 ? "+" : "") + Along(dof, x); }
 
 std::string StartText(const planner::TrialCommands& t) {
-  return "x " + model::Significant(t.start[0], 4) + " m, y " + model::Significant(t.start[1], 4) +
-         " m, z " + model::Significant(t.start[2], 4) + " m";
+  return "x " + Centimetres(t.start[0]) + ", y " + Centimetres(t.start[1]) + ", z " +
+         Centimetres(t.start[2]);
 }
 
 std::string HeadingText(const planner::TrialCommands& t) {
@@ -35,7 +48,7 @@ std::string RunSheetRow(int order, const planner::TrialCommands& t) {
       << model::TrialKindName(t.kind) << " | " << model::Join(t.mappings) << " | " << StartText(t)
       << " | " << HeadingText(t) << " | " << model::DurationText(t.duration) << " | "
       << Along(t.dof, t.travel[0]) << " to " << Along(t.dof, t.travel[1]) << " | "
-      << Signed(t.dof, t.abort[0]) << " / " << Signed(t.dof, t.abort[1]) << " | " << t.id
+      << AbortText(t.dof, t.abort[0]) << " / " << AbortText(t.dof, t.abort[1]) << " | " << t.id
       << ".csv |\n";
   return row.str();
 }
@@ -80,7 +93,8 @@ std::string RunSheetMarkdown(const planner::CommandSheet& sheet, const model::Ve
      << "- Expected travel: from the start, over every vehicle of the box planned over (the a "
         "priori box, or the box about the estimates where the vehicle is identified).\n"
      << "- Abort: stop the thrusters when the vehicle reaches either distance from the start (a "
-        "margin line; for a rotation the tether's twist limit).\n\n"
+        "margin line; for a rotation the tether's twist limit). Starts and abort lines are to "
+        "the centimetre, each within 5 mm of the exact line.\n\n"
      << "| # | trial | DOF | kind | mapping | start | heading | duration | expected travel | "
         "abort at | commands |\n"
      << "|---|---|---|---|---|---|---|---|---|---|---|\n";

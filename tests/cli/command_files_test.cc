@@ -7,6 +7,7 @@
 // driven by PWM (commands about a neutral of 1500 µs).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -64,6 +65,33 @@ std::map<std::string, double> StartsFromRunSheet(const std::string& text) {
     }
   }
   return starts;
+}
+
+// Every translation's start and abort lines on the run sheet are marked to the centimetre
+// ("1.60 m", command_sheet.h) and the abort lines are the margin lines seen from that start,
+// each within the 5 mm of its rounding. Returns the number of translation rows checked.
+int ExpectMarkedToTheCentimetre(const std::string& sheet, const model::Pool& pool) {
+  const std::regex row(
+      R"(^\| \d+ \| (\S+) \| (surge|sway|heave) \|[^|]*\|[^|]*\| x (\S+) m, y (\S+) m, z (\S+) m \|[^|]*\|[^|]*\|[^|]*\| (\S+) m / (\S+) m \|)");
+  const std::regex centimetres(R"([-+]?\d+\.\d\d)");
+  std::istringstream in(sheet);
+  int rows = 0;
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (!std::regex_search(line, m, row)) continue;
+    ++rows;
+    for (int i : {3, 4, 5, 6, 7}) {
+      EXPECT_TRUE(std::regex_match(m[i].str(), centimetres)) << m[1] << ": " << m[i];
+    }
+    const model::Dof dof = *model::ParseDof(m[2].str());
+    const double start = std::stod(m[dof == model::Dof::kSurge  ? 3
+                                     : dof == model::Dof::kSway ? 4
+                                                                : 5]);
+    // 5 mm of rounding, 1e-9 for the decimal text.
+    EXPECT_NEAR(start + std::stod(m[6]), pool.margin, 0.005 + 1e-9) << m[1];
+    EXPECT_NEAR(start + std::stod(m[7]), pool.WallToWall(dof) - pool.margin, 0.005 + 1e-9) << m[1];
+  }
+  return rows;
 }
 
 // φ_n and the mapping the non-idle thrusters of a row form: the mapping of `dof` whose thrusters
@@ -163,6 +191,11 @@ std::map<std::string, CommandRows> ReplaySchedule(const std::string& vehicle_fil
   const planner::Schedule plan = io::ReadScheduleJson(scratch / "plan.json");
   const auto starts = StartsFromRunSheet(ReadText(scratch / "commands/run_sheet.md"));
   EXPECT_FALSE(plan.trials.empty());
+  const auto translations =
+      std::count_if(plan.trials.begin(), plan.trials.end(),
+                    [](const auto& t) { return !model::IsRotational(t.design.dof); });
+  EXPECT_EQ(ExpectMarkedToTheCentimetre(ReadText(scratch / "commands/run_sheet.md"), pool),
+            translations);
   for (const planner::PlannedTrial& trial : plan.trials) {
     const std::string& id = trial.design.id;
     const model::Dof dof = trial.design.dof;
@@ -175,9 +208,9 @@ std::map<std::string, CommandRows> ReplaySchedule(const std::string& vehicle_fil
     if (starts.count(id) != 1) continue;
     const std::array<double, 2> travel = ReplayOverBox(v, pool, dof, c);
     const double start = starts.at(id);
-    // Margin lines from the run sheet's start; 1 cm (or 0.1°) of tolerance: the start is printed
-    // to 4 significant digits (< 5 mm in these pools) and the held commands move the vehicle by
-    // millimetres from the planned continuous sine.
+    // Margin lines from the run sheet's start; 1 cm (or 0.1°) of tolerance: the start is marked
+    // to the centimetre (5 mm) and the held commands move the vehicle by millimetres from the
+    // planned continuous sine.
     const bool rotation = model::IsRotational(dof);
     const double tolerance = rotation ? 0.1 * M_PI / 180 : 0.01;
     const double low = rotation ? -pool.FreeTravel(dof) / 2 : pool.margin;

@@ -43,18 +43,24 @@ std::vector<std::string> MappingsOf(const model::TrialDesign& d) {
   return names;
 }
 
+double ToCentimetre(double metres) { return std::round(metres * 100.0) / 100.0; }
+
 // Where the run starts and where it is aborted (command_sheet.h, "Start and abort").
 void PlaceStart(const model::Pool& pool, const PlannedTrial& trial, TrialCommands* c) {
-  const double slack = pool.FreeTravel(c->dof) - (trial.travel[1] - trial.travel[0]);
+  const double free = pool.FreeTravel(c->dof);
+  const double slack = free - (trial.travel[1] - trial.travel[0]);
   c->travel = trial.travel;
   c->abort = CentreTravel(slack, trial.travel).ends;
-  c->start = {pool.length / 2, pool.width / 2, pool.depth / 2};
+  c->start = {ToCentimetre(pool.length / 2), ToCentimetre(pool.width / 2),
+              ToCentimetre(pool.depth / 2)};
   if (model::IsRotational(c->dof)) {
-    c->start_twist = -pool.FreeTravel(c->dof) / 2 - c->abort[0];
-  } else {
-    const int axis = c->dof == model::Dof::kSurge ? 0 : c->dof == model::Dof::kSway ? 1 : 2;
-    c->start[axis] = pool.margin - c->abort[0];
+    c->start_twist = -free / 2 - c->abort[0];
+    return;
   }
+  const int axis = c->dof == model::Dof::kSurge ? 0 : c->dof == model::Dof::kSway ? 1 : 2;
+  c->start[axis] = ToCentimetre(pool.margin - c->abort[0]);
+  const double behind = pool.margin - c->start[axis];  // the margin lines from that start
+  c->abort = {ToCentimetre(behind), ToCentimetre(behind + free)};
 }
 
 }  // namespace

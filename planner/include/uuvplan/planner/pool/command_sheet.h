@@ -12,7 +12,10 @@
 // margin lines lie at a_neg = lo − slack/2 and a_pos = hi + slack/2 from the start (a_pos − a_neg
 // = F; trial_envelope.h, CentreTravel): the run is aborted when the vehicle reaches either.
 // The start is then margin − a_neg from the wall behind (from the surface for heave), or a
-// twist of −F/2 − a_neg for a rotation.
+// twist of −F/2 − a_neg for a rotation. A person marks a translation's start and abort lines to
+// the centimetre: the start is rounded to it, and the abort lines are the margin lines measured
+// from that start, rounded to it too (each within 5 mm of the exact line; the designs keep their
+// travel 5–10 mm inside, travel_margin.h).
 #pragma once
 
 #include <Eigen/Dense>
