@@ -12,6 +12,7 @@
 
 #include "uuvplan/cli/command.h"
 #include "uuvplan/cli/exit_status.h"
+#include "uuvplan/cli/planning_progress.h"
 #include "uuvplan/io/check_pool_json.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/schedule_json.h"
@@ -113,7 +114,10 @@ int RunCheckPool(const CheckPoolFlags& o) {
   planner::PoolCheckOptions check = o.check;
   check.schedule.dofs = ParseDofFlags(o.dofs);
   CheckDofsPlannable(check.schedule.dofs, vehicle, o.vehicle);
+  const auto progress = ShowPlanningProgress("check-pool", &check.schedule);
   const TrialsToCheck checked = ChooseTrials(o, vehicle, pool, check.schedule);
+  check.schedule.dof_planned = nullptr;  // the verdict plans the box's points
+  progress("checking the trials over the box; judging the pool, searching for the smallest");
   const planner::PoolCheckResult r = planner::CheckPool(vehicle, pool, checked.plan, check);
   // The plan's trials are checked once (CheckPool, same options) and judged on those checks.
   // The command that answers "and if not, what would": it searches for the smallest pool.

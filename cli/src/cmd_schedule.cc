@@ -14,6 +14,7 @@
 #include "uuvplan/cli/command.h"
 #include "uuvplan/cli/coupled_schedule.h"
 #include "uuvplan/cli/exit_status.h"
+#include "uuvplan/cli/planning_progress.h"
 #include "uuvplan/io/command_files.h"
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/pool_verdict_json.h"
@@ -146,7 +147,10 @@ int RunSchedule(const ScheduleFlags& o) {
   CheckDofsPlannable(so.dofs, vehicle, o.vehicle);
   std::string error;
   if (!so.IsValid(&error)) throw model::InputError("options", error);
+  const auto progress = ShowPlanningProgress("schedule", &so);
   const planner::ScheduleResult r = planner::PlanSchedule(vehicle, pool, so);
+  so.dof_planned = nullptr;  // the verdict plans the box's points: not the schedule's DOFs
+  progress("judging the pool verdict at the box's centre and corners");
   const planner::PoolVerdict verdict = planner::JudgePool(vehicle, pool, so, r, nullptr);
   std::ostream& out = ReportStream(o.json);
   PrintSchedule(r, vehicle, pool, out);

@@ -320,8 +320,10 @@ ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& po
   // Each DOF is planned on its own (DofPlanningProblem per DOF), on PlannerOptions::Threads
   // threads.
   std::vector<DofPlan> plans(dofs.size());
-  model::ParallelFor(dofs.size(), o.planner.Threads(),
-                     [&](std::size_t i) { plans[i] = PlanDof(vehicle, pool, dofs[i], o); });
+  model::ParallelFor(dofs.size(), o.planner.Threads(), [&](std::size_t i) {
+    plans[i] = PlanDof(vehicle, pool, dofs[i], o);
+    if (o.dof_planned) o.dof_planned(dofs[i]);
+  });
   int planned = 0, complete = 0;
   for (DofPlan& plan : plans) {
     if (plan.status == DesignStatus::kOk) {

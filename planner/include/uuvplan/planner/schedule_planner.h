@@ -16,6 +16,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -51,6 +52,9 @@ struct ScheduleOptions {
   PrecisionGoal precision;
   /// Information from earlier trials per DOF (absolute units); added to every design.
   std::map<model::Dof, PriorInformation> prior;
+  /// Called when a DOF's plan is done, from the thread that planned it (PlannerOptions::threads:
+  /// the callee serialises); the CLI prints progress with it. Empty: nothing is called.
+  std::function<void(model::Dof)> dof_planned;
 
   bool IsValid(std::string* error) const;
 };
