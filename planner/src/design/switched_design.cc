@@ -291,10 +291,11 @@ struct PairSolution {
 };
 
 // Pair `a` covers pair `b` when both of each are in open water (no η to tell them apart: the
-// information depends on φⁿ(t) alone) and each of a's force ranges contains b's: every design
-// of b is one of a. Mirror-placed thrusters (a BlueROV2's two vertical ones) alternated either
-// way cover each other; a reversible mapping alternating with itself is covered by a pair of
-// its vectored thrusters whose forward thrust exceeds the reverse (a T200: 51.5 against 40 N).
+// information depends on φⁿ(t) alone) and each of a's force ranges has b's floor (the clamp at
+// a crossing) and reaches at least as far: every design of b is one of a. Mirror-placed
+// thrusters (a BlueROV2's two vertical ones) alternated either way cover each other; a
+// reversible mapping alternating with itself is covered by a pair of its vectored thrusters
+// whose forward thrust exceeds the reverse (a T200: 51.5 against 40 N).
 bool Covers(const DofPlanningProblem& ctx, const SwitchPair& a, const SwitchPair& b) {
   const auto open = [&](const SwitchPair& p) {
     const auto& m = ctx.vehicle().mappings;
@@ -302,7 +303,7 @@ bool Covers(const DofPlanningProblem& ctx, const SwitchPair& a, const SwitchPair
            m[p.neg].IsOpenWater(model::Direction::kNeg);
   };
   const auto contains = [](const ForceRange& x, const ForceRange& y) {
-    return x.min_abs <= y.min_abs && x.max_abs >= y.max_abs;
+    return x.min_abs == y.min_abs && x.max_abs >= y.max_abs;
   };
   return a.one_way == b.one_way && open(a) && open(b) && contains(a.pos_range, b.pos_range) &&
          contains(a.neg_range, b.neg_range);
