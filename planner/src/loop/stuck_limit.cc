@@ -54,6 +54,14 @@ std::string ThrustLimit(const model::Vehicle& vehicle, const PlannedTrial& trial
   return "";
 }
 
+// Whether a mapping of `dof` may reverse its thrusters (model::Vehicle::Reverses).
+bool ReversesAny(const model::Vehicle& vehicle, Dof dof) {
+  for (int m : vehicle.MappingsOf(dof)) {
+    if (vehicle.Reverses(m)) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::string StuckReason(Planner& planner, const model::Campaign& campaign,
@@ -98,6 +106,10 @@ std::string StuckReason(Planner& planner, const model::Campaign& campaign,
       << model::Significant(SpeedLimitOf(planner.vehicle, dof, planner.options.schedule.planner), 3)
       << " rad/s, where the drag of interest hardly acts; a higher max_rotation_rate in the "
          "vehicle file (if the vehicle's tether and drag fit allow it) would lift it";
+  } else if (ReversesAny(planner.vehicle, dof)) {
+    m << "the trial families — a thruster reverses only in the switched families about zero, "
+         "and those do not lift it; a model that needs less of the drag would"
+      << pool_note;
   } else {
     m << "no reversal — the planner's trials push one direction per mapping and never reverse a "
          "thruster within a trial, so the drag is seen over one speed range; trials that "
