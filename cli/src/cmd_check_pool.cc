@@ -63,14 +63,15 @@ void CheckPlanMappings(const planner::Schedule& plan, const model::Vehicle& vehi
 }
 
 TrialsToCheck ChooseTrials(const CheckPoolFlags& o, const model::Vehicle& vehicle,
-                           const model::Pool& pool, const planner::ScheduleOptions& so) {
+                           const model::Pool& pool, const planner::ScheduleOptions& so,
+                           const PlanningProgress& progress) {
   TrialsToCheck t;
   t.plan_given = !o.plan.empty();
   if (t.plan_given) {  // read and checked before planning: a bad file fails at once
     t.plan = io::ReadScheduleJson(o.plan);
     CheckPlanMappings(t.plan, vehicle, o.plan);
   }
-  t.own = planner::PlanSchedule(vehicle, pool, so);
+  t.own = planner::PlanSchedule(vehicle, pool, so, progress.dof_planned);
   if (!t.plan_given) t.plan = t.own.schedule;
   return t;
 }
@@ -114,10 +115,9 @@ int RunCheckPool(const CheckPoolFlags& o) {
   planner::PoolCheckOptions check = o.check;
   check.schedule.dofs = ParseDofFlags(o.dofs);
   CheckDofsPlannable(check.schedule.dofs, vehicle, o.vehicle);
-  const auto progress = ShowPlanningProgress("check-pool", &check.schedule);
-  const TrialsToCheck checked = ChooseTrials(o, vehicle, pool, check.schedule);
-  check.schedule.dof_planned = nullptr;  // the verdict plans the box's points
-  progress("checking the trials over the box; judging the pool, searching for the smallest");
+  const PlanningProgress progress = ShowPlanningProgress("check-pool");
+  const TrialsToCheck checked = ChooseTrials(o, vehicle, pool, check.schedule, progress);
+  progress.line("checking the trials over the box; judging the pool, searching for the smallest");
   const planner::PoolCheckResult r = planner::CheckPool(vehicle, pool, checked.plan, check);
   // The plan's trials are checked once (CheckPool, same options) and judged on those checks.
   // The command that answers "and if not, what would": it searches for the smallest pool.

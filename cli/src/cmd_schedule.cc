@@ -147,10 +147,9 @@ int RunSchedule(const ScheduleFlags& o) {
   CheckDofsPlannable(so.dofs, vehicle, o.vehicle);
   std::string error;
   if (!so.IsValid(&error)) throw model::InputError("options", error);
-  const auto progress = ShowPlanningProgress("schedule", &so);
-  const planner::ScheduleResult r = planner::PlanSchedule(vehicle, pool, so);
-  so.dof_planned = nullptr;  // the verdict plans the box's points: not the schedule's DOFs
-  progress("judging the pool verdict at the box's centre and corners");
+  const PlanningProgress progress = ShowPlanningProgress("schedule");
+  const planner::ScheduleResult r = planner::PlanSchedule(vehicle, pool, so, progress.dof_planned);
+  progress.line("judging the pool verdict at the box's centre and corners");
   const planner::PoolVerdict verdict = planner::JudgePool(vehicle, pool, so, r, nullptr);
   std::ostream& out = ReportStream(o.json);
   PrintSchedule(r, vehicle, pool, out);

@@ -8,15 +8,15 @@
 
 namespace uuvplan::cli {
 
-std::function<void(const std::string&)> ShowPlanningProgress(const std::string& command,
-                                                             planner::ScheduleOptions* o) {
-  auto progress = TerminalProgress(command);
+PlanningProgress ShowPlanningProgress(const std::string& command) {
+  PlanningProgress p;
+  p.line = TerminalProgress(command);
   auto lock = std::make_shared<std::mutex>();
-  o->dof_planned = [progress, lock](model::Dof dof) {
+  p.dof_planned = [line = p.line, lock](model::Dof dof) {
     const std::lock_guard<std::mutex> held(*lock);
-    progress(std::string(model::DofName(dof)) + " planned");
+    line(std::string(model::DofName(dof)) + " planned");
   };
-  return progress;
+  return p;
 }
 
 }  // namespace uuvplan::cli

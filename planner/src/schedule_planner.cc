@@ -304,7 +304,8 @@ void HoldUnreachedEtas(const DofPlanningProblem& ctx, const SineDesignOptions& s
 }  // namespace
 
 ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& pool,
-                            const ScheduleOptions& o) {
+                            const ScheduleOptions& o,
+                            const std::function<void(model::Dof)>& dof_planned) {
   ScheduleResult result;
   std::string error;
   if (!o.IsValid(&error)) {
@@ -322,7 +323,7 @@ ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& po
   std::vector<DofPlan> plans(dofs.size());
   model::ParallelFor(dofs.size(), o.planner.Threads(), [&](std::size_t i) {
     plans[i] = PlanDof(vehicle, pool, dofs[i], o);
-    if (o.dof_planned) o.dof_planned(dofs[i]);
+    if (dof_planned) dof_planned(dofs[i]);
   });
   int planned = 0, complete = 0;
   for (DofPlan& plan : plans) {

@@ -6,14 +6,17 @@
 #include <functional>
 #include <string>
 
-#include "uuvplan/planner/schedule_planner.h"
+#include "uuvplan/model/dof.h"
 
 namespace uuvplan::cli {
 
-/// Sets o->dof_planned to print "<dof> planned" through a TerminalProgress of `command` (its
-/// calls serialised: the DOFs are planned on several threads) and returns that progress, for
-/// the lines that follow ("judging the pool verdict ...").
-std::function<void(const std::string&)> ShowPlanningProgress(const std::string& command,
-                                                             planner::ScheduleOptions* o);
+/// A TerminalProgress of `command` (command.h) for the lines of a run ("judging the pool
+/// verdict ..."), and through it the one that prints "<dof> planned", for PlanSchedule's
+/// dof_planned (its calls serialised: the DOFs are planned on several threads).
+struct PlanningProgress {
+  std::function<void(const std::string&)> line;
+  std::function<void(model::Dof)> dof_planned;
+};
+PlanningProgress ShowPlanningProgress(const std::string& command);
 
 }  // namespace uuvplan::cli

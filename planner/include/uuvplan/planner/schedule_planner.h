@@ -52,9 +52,6 @@ struct ScheduleOptions {
   PrecisionGoal precision;
   /// Information from earlier trials per DOF (absolute units); added to every design.
   std::map<model::Dof, PriorInformation> prior;
-  /// Called when a DOF's plan is done, from the thread that planned it (PlannerOptions::threads:
-  /// the callee serialises); the CLI prints progress with it. Empty: nothing is called.
-  std::function<void(model::Dof)> dof_planned;
 
   bool IsValid(std::string* error) const;
 };
@@ -94,8 +91,12 @@ struct ScheduleResult {
   std::vector<std::string> notes;
 };
 
+/// The schedule of every DOF of options.dofs. `dof_planned` (optional) is called as each DOF's
+/// plan is done, from the thread that planned it (PlannerOptions::threads: the callee
+/// serialises); the CLI prints progress with it.
 ScheduleResult PlanSchedule(const model::Vehicle& vehicle, const model::Pool& pool,
-                            const ScheduleOptions& options);
+                            const ScheduleOptions& options,
+                            const std::function<void(model::Dof)>& dof_planned = {});
 
 /// Predicted precision of `info` (absolute, at each design point of ctx's box): worst σ per
 /// informed parameter, and the robust D criterion (relative units). Parameters no trial
