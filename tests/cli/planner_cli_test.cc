@@ -10,6 +10,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "planner/planner_test_util.h"
 
@@ -67,68 +68,88 @@ TEST(PlannerCli, ScheduleAndCheckPool) {
   fs::remove_all(dir);
 }
 
+// The output and exit status of `uuvplan ARGS`, its output kept in dir/name.
+int RunToText(const std::filesystem::path& dir, const std::string& args, const std::string& name,
+              std::string* text) {
+  const std::filesystem::path out = dir / name;
+  const std::string cmd = std::string(UUVPLAN_BINARY) + " " + args + " > " + out.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(out);
+  text->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// A fresh directory for one test's files, removed at its end.
+struct VerdictDir {
+  explicit VerdictDir(const std::string& name)
+      : path(std::filesystem::temp_directory_path() /
+             ("uuvplan_verdict_cli_" + name + "_" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(path);
+  }
+  ~VerdictDir() { std::filesystem::remove_all(path); }
+  std::filesystem::path path;
+};
+
+// The texts of ROMEO surge's schedule, check-pool (own and --plan) in the pool `pool` (each
+// expected to exit 1: no pool is promised before the first trials), in this order.
+std::vector<std::string> PlanAndCheck(const VerdictDir& dir, const std::filesystem::path& pool) {
+  const std::string v = planner::testing::RomeoPath("vehicle.yaml"),
+                    p = " --pool " + pool.string() + " --dof surge",
+                    plan = (dir.path / "plan.json").string();
+  std::vector<std::string> texts(3);
+  EXPECT_EQ(RunToText(dir.path, "schedule " + v + p + " --json " + plan, "a.txt", &texts[0]), 1);
+  EXPECT_EQ(RunToText(dir.path, "check-pool " + v + p, "b.txt", &texts[1]), 1);
+  EXPECT_EQ(RunToText(dir.path, "check-pool " + v + p + " --plan " + plan, "c.txt", &texts[2]), 1);
+  return texts;
+}
+
 // The same inputs, one answer: schedule, check-pool (own and --plan) and the start of loop on
 // ROMEO surge in a pool 3 m long (hosted for no vehicle of the a priori box) all exit 1 with the
-// same verdict sentence; in a 6 m pool (hosted for part of the box) they print the same "PART"
-// verdict, schedule and check-pool exit 1 (nothing can be promised before the first trials)
-// and loop runs — and converges (docs/planning.md, "The pool verdict").
-TEST(PlannerCli, ScheduleCheckPoolAndLoopGiveOneVerdict) {
-  namespace fs = std::filesystem;
-  const fs::path dir =
-      fs::temp_directory_path() / ("uuvplan_verdict_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path small = dir / "small.yaml";
+// same verdict sentence (docs/planning.md, "The pool verdict").
+TEST(PlannerCli, ScheduleCheckPoolAndLoopRefuseAPoolAlike) {
+  const VerdictDir dir("none");
+  const std::filesystem::path small = dir.path / "small.yaml";
   std::ofstream(small) << "name: small\nlength: 3\nwidth: 12\ndepth: 5\nmargin: 1\n";
-  const std::string v = planner::testing::RomeoPath("vehicle.yaml"),
-                    p = " --pool " + small.string();
-  const std::string plan = (dir / "plan.json").string();
-  auto run = [&](const std::string& args, const std::string& name, std::string* text) {
-    const fs::path out = dir / name;
-    const std::string cmd =
-        std::string(UUVPLAN_BINARY) + " " + args + " > " + out.string() + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    std::ifstream in(out);
-    text->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  };
   // The precision judged at is in the sentence: the loop's default target.
   const std::string sentence = "Pool small CANNOT host the identification of surge to 5% ";
-  std::string a, b, c, d;
-  EXPECT_EQ(run("schedule " + v + p + " --dof surge --json " + plan, "a.txt", &a), 1);
-  EXPECT_EQ(run("check-pool " + v + p + " --dof surge", "b.txt", &b), 1);
-  EXPECT_EQ(run("check-pool " + v + p + " --dof surge --plan " + plan, "c.txt", &c), 1);
-  const std::string loop_json = (dir / "loop.json").string();
-  EXPECT_EQ(run("loop --truth " + planner::testing::RomeoPath("truth.yaml") + p +
-                    " --dof surge --json " + loop_json,
-                "d.txt", &d),
+  std::vector<std::string> texts = PlanAndCheck(dir, small);
+  std::string d;
+  const std::string loop_json = (dir.path / "loop.json").string();
+  EXPECT_EQ(RunToText(dir.path,
+                      "loop --truth " + planner::testing::RomeoPath("truth.yaml") + " --pool " +
+                          small.string() + " --dof surge --json " + loop_json,
+                      "d.txt", &d),
             1);
-  for (const std::string* t : {&a, &b, &c, &d}) {
-    EXPECT_NE(t->find(sentence), std::string::npos) << *t;
-  }
+  texts.push_back(d);
+  for (const std::string& t : texts) EXPECT_NE(t.find(sentence), std::string::npos) << t;
   // The refused loop still writes its JSON: the verdict, status and exit status.
   std::ifstream in(loop_json);
   std::string e((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(e.find("\"status\": \"infeasible\""), std::string::npos) << e;
   EXPECT_NE(e.find("\"exit_status\": 1"), std::string::npos) << e;
   EXPECT_NE(e.find(sentence), std::string::npos) << e;
-  // Part of the box: the same sentence everywhere; the loop runs.
-  const fs::path six = dir / "six.yaml";
+}
+
+// Part of the box: in a 6 m pool (hosted for part of the box) the same commands print the same
+// "PART" verdict, schedule and check-pool exit 1 (nothing can be promised before the first
+// trials) and loop runs — and converges.
+TEST(PlannerCli, ScheduleCheckPoolAndLoopHostPartOfTheBoxAlike) {
+  const VerdictDir dir("part");
+  const std::filesystem::path six = dir.path / "six.yaml";
   std::ofstream(six) << "name: six\nlength: 6\nwidth: 12\ndepth: 5\nmargin: 1\n";
-  const std::string q = " --pool " + six.string();
   const std::string part =
       "Pool six can host the identification of surge to 5% (every "
       "parameter of interest's 100·σ/|θ|) for PART of the a priori box only";
-  EXPECT_EQ(run("schedule " + v + q + " --dof surge --json " + plan, "e.txt", &a), 1);
-  EXPECT_EQ(run("check-pool " + v + q + " --dof surge", "f.txt", &b), 1);
-  EXPECT_EQ(run("check-pool " + v + q + " --dof surge --plan " + plan, "g.txt", &c), 1);
-  EXPECT_EQ(run("loop --truth " + planner::testing::RomeoPath("truth.yaml") + q + " --dof surge",
-                "h.txt", &d),
+  std::vector<std::string> texts = PlanAndCheck(dir, six);
+  std::string d;
+  EXPECT_EQ(RunToText(dir.path,
+                      "loop --truth " + planner::testing::RomeoPath("truth.yaml") + " --pool " +
+                          six.string() + " --dof surge",
+                      "h.txt", &d),
             0);
-  for (const std::string* t : {&a, &b, &c, &d}) {
-    EXPECT_NE(t->find(part), std::string::npos) << *t;
-  }
+  texts.push_back(d);
+  for (const std::string& t : texts) EXPECT_NE(t.find(part), std::string::npos) << t;
   EXPECT_NE(d.find("Converged after"), std::string::npos) << d;
-  fs::remove_all(dir);
 }
 
 }  // namespace
