@@ -84,16 +84,17 @@ int RunLog(const LogFlags& o) {
   std::optional<model::TrialDesign> design;
   if (!o.plan.empty()) design = PlannedDesign(o.plan, o.id);
   const io::LoggedTrial trial = TrialOf(o, design ? &*design : nullptr);
+  io::LogCheck planned;
   if (design) {
-    const auto problems =
-        planner::CompareLogWithDesign(*design, trial.dof, trial.mapping, io::ReadTrialLog(o.csv));
-    if (!problems.empty()) {
+    planned = [&](const model::TrialLog& log) {
+      const auto problems = planner::CompareLogWithDesign(*design, trial.dof, trial.mapping, log);
+      if (problems.empty()) return;
       throw model::InputError(o.csv, "not the planned trial " + o.id + " of " + o.plan + ": " +
                                          model::Join(problems, "; ") +
                                          " (log it without --plan if it is meant to differ)");
-    }
+    };
   }
-  const model::Campaign c = io::AppendLoggedTrial(o.campaign, trial);
+  const model::Campaign c = io::AppendLoggedTrial(o.campaign, trial, planned);
   const model::TrialEntry& e = c.trials.back();
   const double span = e.log.t.empty() ? 0.0 : e.log.t.back() - e.log.t.front();
   std::cout << "Logged " << o.id << " (" << model::DofName(e.dof) << ", mapping "

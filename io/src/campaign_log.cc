@@ -36,8 +36,9 @@ void CheckNewId(const model::Campaign& campaign, const std::string& id, const st
   }
 }
 
-// Throws, naming the input CSV or the flag, unless the log can be a trial of `dof` in `mapping`.
-void CheckLog(const model::Vehicle& vehicle, const LoggedTrial& trial) {
+// The log, read through the vehicle (ReadTrialOf); throws, naming the input CSV or the flag,
+// unless it can be a trial of `dof` in `mapping`.
+model::TrialLog CheckedLog(const model::Vehicle& vehicle, const LoggedTrial& trial) {
   std::vector<std::string> names;
   for (const model::ThrustMapping& m : vehicle.mappings) {
     if (m.dof == trial.dof) names.push_back(m.name);
@@ -53,27 +54,31 @@ void CheckLog(const model::Vehicle& vehicle, const LoggedTrial& trial) {
                                              std::to_string(names.size()) + " mappings on " + dof +
                                              " (" + model::Join(names) + ")");
   }
-  const model::TrialLog log = ReadTrialLog(trial.csv, names);
+  const std::string mapping = trial.mapping.empty() ? names.front() : trial.mapping;
+  model::TrialLog log = ReadTrialOf(trial.csv, vehicle, trial.dof, mapping);
   if (!log.HasForce(trial.dof)) {
     throw model::InputError(trial.csv, "no force_" + dof +
                                            " column: expected the nominal force "
                                            "of the trial's DOF (--dof " +
-                                           dof + ")");
+                                           dof + ") or every thruster's cmd_<thruster>");
   }
   if (!log.HasPosition(trial.dof) && !log.HasVelocity(trial.dof)) {
     throw model::InputError(trial.csv, "no pos_" + dof + " or vel_" + dof + " column");
   }
+  return log;
 }
 
 }  // namespace
 
-model::Campaign AppendLoggedTrial(const std::string& campaign_path, const LoggedTrial& trial) {
+model::Campaign AppendLoggedTrial(const std::string& campaign_path, const LoggedTrial& trial,
+                                  const LogCheck& check) {
   model::Campaign campaign = ReadCampaign(campaign_path);
   const fs::path yaml = campaign.path;
   const fs::path dir = yaml.parent_path().empty() ? fs::path(".") : yaml.parent_path();
   const std::string file = "trials/" + trial.id + ".csv";
   CheckNewId(campaign, trial.id, file, dir);
-  CheckLog(campaign.vehicle, trial);
+  const model::TrialLog log = CheckedLog(campaign.vehicle, trial);
+  if (check) check(log);
   model::TrialEntry entry;
   entry.file = file;
   entry.dof = trial.dof;

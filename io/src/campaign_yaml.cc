@@ -53,8 +53,9 @@ std::string TrialMapping(const MapValue& m, Dof dof, const Vehicle& vehicle) {
 // A trial's log must hold its DOF's nominal force and a measured position or velocity.
 void CheckTrialColumns(const TrialEntry& trial, const Value& where) {
   const std::string dof(DofName(trial.dof));
-  const std::string need =
-      " (a " + dof + " trial needs force_" + dof + " and pos_" + dof + " or vel_" + dof + ")";
+  const std::string need = " (a " + dof + " trial needs force_" + dof +
+                           " or every thruster's cmd_<thruster>, and pos_" + dof + " or vel_" +
+                           dof + ")";
   const auto has_sample = [](const std::vector<double>& c) {
     return std::any_of(c.begin(), c.end(), [](double x) { return !std::isnan(x); });
   };
@@ -98,9 +99,7 @@ TrialEntry ParseTrial(const Value& v, const Vehicle& vehicle, const TrialEntry* 
                  " s (trials are listed in the order they were run)");
     }
   }
-  std::vector<std::string> mappings;
-  for (int i : vehicle.MappingsOf(trial.dof)) mappings.push_back(vehicle.mappings[i].name);
-  trial.log = ReadTrialLog(trial.path, mappings);
+  trial.log = ReadTrialOf(trial.path, vehicle, trial.dof, trial.mapping);
   CheckTrialColumns(trial, v);
   return trial;
 }

@@ -1,8 +1,9 @@
 // Trial logs as CSV (contract §Trial log, docs/formats.md): lines starting with '#' are
 // comments, the first other line is the header, then one row per time with as many
 // comma-separated cells as the header (no quoting). Known columns are t, force_<dof>,
-// pos_<dof>, vel_<dof> and mapping; any other column is ignored with a note. An empty cell is
-// a missing sample (NaN; -1 in the mapping column). Angles (pos_roll/pitch/yaw) are unwrapped.
+// pos_<dof>, vel_<dof>, cmd_<thruster> and mapping; any other column is ignored with a note. An
+// empty cell is a missing sample (NaN; -1 in the mapping column). Angles (pos_roll/pitch/yaw) are
+// unwrapped.
 //
 // The reader streams the file through a fixed buffer and stores only the known columns, so a
 // log of a million rows costs little more than its numbers (bench/csv_read_bench.cc).
@@ -21,6 +22,7 @@
 
 #include "uuvplan/io/number_text.h"
 #include "uuvplan/io/place.h"
+#include "uuvplan/model/commanded_force.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/numbers.h"
 #include "uuvplan/model/util/text.h"
@@ -188,6 +190,12 @@ class TrialLogParser {
       if (name.substr(0, p.text.size()) != p.text) continue;
       if (auto dof = ParseDof(name.substr(p.text.size()))) return &(*p.columns)[Index(*dof)];
     }
+    // A thruster's command: the reader does not know the vehicle; ForceFromCommands checks
+    // the name (a map's values keep their address as others are added).
+    constexpr std::string_view kCommand = "cmd_";
+    if (name.size() > kCommand.size() && name.substr(0, kCommand.size()) == kCommand) {
+      return &log_.commands[std::string(name.substr(kCommand.size()))];
+    }
     return nullptr;
   }
 
@@ -354,6 +362,15 @@ TrialLog ReadTrialLog(const std::string& path) { return TrialLogParser(path, nul
 
 TrialLog ReadTrialLog(const std::string& path, const std::vector<std::string>& mappings) {
   return TrialLogParser(path, &mappings).Parse();
+}
+
+TrialLog ReadTrialOf(const std::string& path, const Vehicle& vehicle, Dof dof,
+                     const std::string& mapping) {
+  std::vector<std::string> mappings;
+  for (int i : vehicle.MappingsOf(dof)) mappings.push_back(vehicle.mappings[i].name);
+  TrialLog log = ReadTrialLog(path, mappings);
+  ForceFromCommands(vehicle, dof, mapping, path, &log);
+  return log;
 }
 
 }  // namespace uuvplan::io

@@ -59,6 +59,18 @@ std::vector<OutputColumn> OutputColumns(const std::string& path, const TrialLog&
       columns.push_back(c);
     }
   }
+  for (const auto& [thruster, values] : log.commands) {
+    if (thruster.empty() || thruster.find_first_of(",\n\r") != std::string::npos) {
+      throw std::invalid_argument("WriteTrialLog " + path + ": thruster name '" + thruster +
+                                  "' cannot be written in a CSV header");
+    }
+    if (values.size() != log.size()) {
+      throw std::invalid_argument("WriteTrialLog " + path + ": column cmd_" + thruster + " has " +
+                                  std::to_string(values.size()) + " values for " +
+                                  std::to_string(log.size()) + " times");
+    }
+    columns.push_back({"cmd_" + thruster, &values});
+  }
   return columns;
 }
 

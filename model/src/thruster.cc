@@ -6,6 +6,7 @@
 namespace uuvplan::model {
 
 double ThrustModel::Thrust(double v) const {
+  if (std::abs(v) < dead_band) return 0.0;
   double tau = 0.0;
   switch (kind) {
     case Kind::kSquare:  // ref 000 eq. 6
@@ -32,6 +33,10 @@ double ThrustModel::Command(double thrust) const {
       break;
   }
   return std::copysign(v, thrust);
+}
+
+double ThrustModel::EdgeThrust(int sign) const {
+  return dead_band > 0 ? std::abs(Thrust(std::copysign(dead_band, sign))) : 0.0;
 }
 
 namespace {

@@ -1,5 +1,7 @@
 #include "uuvplan/model/vehicle.h"
 
+#include <algorithm>
+
 namespace uuvplan::model {
 
 double Vehicle::RigidInertia(Dof dof) const {
@@ -60,6 +62,14 @@ bool Vehicle::Reverses(int mapping) const {
     working = true;
   }
   return working;
+}
+
+double Vehicle::WorkingThrustFloor() const {
+  double floor = min_thrust;
+  for (const Thruster& t : thrusters) {
+    floor = std::max({floor, t.model.EdgeThrust(+1), t.model.EdgeThrust(-1)});
+  }
+  return floor;
 }
 
 }  // namespace uuvplan::model

@@ -262,7 +262,8 @@ TEST(ReadCampaignTest, TrialWithoutForceOfItsDof) {
   EXPECT_THAT(ErrorOf([&] { ReadCampaign(dir.Path("campaign.yaml")); }),
               HasSubstr(At("campaign.yaml", line - 1) +
                         " trials[2]: trials/yaw_0.csv has no 'force_sway' column (a sway trial "
-                        "needs force_sway and pos_sway or vel_sway)"));
+                        "needs force_sway or every thruster's cmd_<thruster>, and pos_sway or "
+                        "vel_sway)"));
 }
 
 TEST(ReadCampaignTest, TrialWithoutPositionOrVelocityOfItsDof) {
@@ -270,7 +271,8 @@ TEST(ReadCampaignTest, TrialWithoutPositionOrVelocityOfItsDof) {
   dir.Write("trials/yaw_0.csv", "t,force_yaw,vel_surge\n0,1,2\n");
   EXPECT_THAT(ErrorOf([&] { ReadCampaign(dir.Path("campaign.yaml")); }),
               HasSubstr("trials[2]: trials/yaw_0.csv has no 'pos_yaw' or 'vel_yaw' column (a yaw "
-                        "trial needs force_yaw and pos_yaw or vel_yaw)"));
+                        "trial needs force_yaw or every thruster's cmd_<thruster>, and pos_yaw or "
+                        "vel_yaw)"));
 }
 
 TEST(ReadCampaignTest, TrialForceColumnWithoutValues) {

@@ -8,6 +8,7 @@
 
 #include "uuvplan/model/simulator.h"
 #include "uuvplan/model/util/numbers.h"
+#include "uuvplan/planner/design/thrust_limits.h"
 
 namespace uuvplan::planner {
 namespace {
@@ -66,7 +67,7 @@ void ThrustEnvelope(const model::Vehicle& vehicle, const model::CombinedTrialDes
     if (!works[i]) continue;
     // Sign kept: the whole range on one side of zero, min_thrust clear of it.
     const double clear = std::max(lo[i], -hi[i]);
-    e->thrust_margin = std::min(e->thrust_margin, clear - vehicle.min_thrust);
+    e->thrust_margin = std::min(e->thrust_margin, clear - vehicle.WorkingThrustFloor());
   }
 }
 
@@ -189,14 +190,15 @@ void ThrustBound(const model::Vehicle& vehicle, const model::CombinedTrialDesign
     if (!works[i]) continue;
     const auto& th = vehicle.thrusters[i];
     const double limit = c[i] >= 0 ? th.MaxForwardThrust() : th.MaxReverseThrust();
-    e->thrust_margin = std::min(e->thrust_margin, std::abs(c[i]) - w[i] - vehicle.min_thrust);
+    e->thrust_margin =
+        std::min(e->thrust_margin, std::abs(c[i]) - w[i] - vehicle.WorkingThrustFloor());
     e->thrust_load = std::max(e->thrust_load, (std::abs(c[i]) + w[i]) / limit);
   }
 }
 
 std::vector<double> Constraints(const model::MultiDofModel& model, const CombinedEnvelope& e,
                                 const model::Vehicle& vehicle, const model::Pool& pool) {
-  std::vector<double> g = {-e.thrust_margin / std::max(vehicle.min_thrust, 1.0),
+  std::vector<double> g = {-e.thrust_margin / std::max(vehicle.WorkingThrustFloor(), 1.0),
                            e.thrust_load - 1.0};
   for (int i = 0; i < model.num_dofs(); ++i) {
     const model::Dof d = model.dof(i);
@@ -205,7 +207,7 @@ std::vector<double> Constraints(const model::MultiDofModel& model, const Combine
                     ? e.turns / pool.max_turns - 1.0
                     : (span[1] - span[0] + 2 * kTrackSlack) / pool.FreeTravel(d) - 1.0);
   }
-  g.push_back(e.closed_water_force / std::max(vehicle.min_thrust, 1.0));
+  g.push_back(e.closed_water_force / std::max(vehicle.WorkingThrustFloor(), 1.0));
   return g;
 }
 
@@ -220,8 +222,9 @@ std::vector<std::string> Reasons(const model::MultiDofModel& model, const Combin
   };
   if (!e.finite) out.push_back("a simulation over the box diverged");
   if (g[0] > 1e-9) {
-    s << "a thruster comes within " << e.thrust_margin + vehicle.min_thrust
-      << " N of zero (min_thrust " << vehicle.min_thrust << " N) or reverses";
+    const double floor = vehicle.WorkingThrustFloor();
+    s << "a thruster comes within " << e.thrust_margin + floor << " N of zero ("
+      << FloorName(vehicle) << " " << floor << " N) or reverses";
     add();
   }
   if (g[1] > 1e-9) {

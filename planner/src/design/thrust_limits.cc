@@ -10,6 +10,11 @@
 
 namespace uuvplan::planner {
 
+std::string FloorName(const model::Vehicle& v) {
+  return v.WorkingThrustFloor() > v.min_thrust ? "the thrusters' dead band edge (thrust.dead_band)"
+                                               : "min_thrust";
+}
+
 ForceRange DirectionForceRange(const model::Vehicle& v, int mapping, int sign) {
   ForceRange r;
   if (mapping < 0 || mapping >= static_cast<int>(v.mappings.size())) {
@@ -32,15 +37,15 @@ ForceRange DirectionForceRange(const model::Vehicle& v, int mapping, int sign) {
     r.reason = "mapping '" + m.name + "' has no working thruster";
     return r;
   }
-  r.min_abs = v.min_thrust / min_share;
+  r.min_abs = v.WorkingThrustFloor() / min_share;
   r.max_abs = max_abs;
   r.feasible = r.max_abs > r.min_abs;
   if (!r.feasible) {
     std::ostringstream s;
     s << "mapping '" << m.name << "' " << (sign > 0 ? "positive" : "negative")
       << ": the thrusters give at most |phi| = " << model::Significant(r.max_abs, 4) << " "
-      << model::ForceUnit(m.dof) << " but min_thrust needs " << model::Significant(r.min_abs, 4)
-      << " " << model::ForceUnit(m.dof);
+      << model::ForceUnit(m.dof) << " but " << FloorName(v) << " needs "
+      << model::Significant(r.min_abs, 4) << " " << model::ForceUnit(m.dof);
     r.reason = s.str();
   }
   return r;
@@ -107,12 +112,13 @@ ThrustCheck CheckThrust(const model::Vehicle& v, const model::Excitation& input,
       c.reasons.push_back(s.str());
     }
   }
-  if (worst_min_thruster >= 0 && worst_min < v.min_thrust - 1e-9) {
+  const double floor = v.WorkingThrustFloor();
+  if (worst_min_thruster >= 0 && worst_min < floor - 1e-9) {
     c.below_min = true;
     std::ostringstream s;
     s << "thruster " << v.thrusters[worst_min_thruster].name << " falls to |tau| = " << worst_min
-      << " N at t = " << worst_min_t << " s, below min_thrust " << v.min_thrust << " N by "
-      << v.min_thrust - worst_min << " N";
+      << " N at t = " << worst_min_t << " s, below " << FloorName(v) << " " << floor << " N by "
+      << floor - worst_min << " N";
     c.reasons.push_back(s.str());
   }
   return c;

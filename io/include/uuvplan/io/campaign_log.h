@@ -5,6 +5,7 @@
 // before it replaces the old one, so a bad log leaves the campaign as it was.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -25,6 +26,10 @@ struct LoggedTrial {
 /// Appends `trial` to the campaign at `campaign_path` (campaign.yaml or its directory) and
 /// returns the campaign as read back. model::InputError (nothing changed) when the campaign or
 /// the CSV is bad, or the id is taken (in the campaign or as a file under trials/).
-model::Campaign AppendLoggedTrial(const std::string& campaign_path, const LoggedTrial& trial);
+/// `check`, when given, sees the log as identification will (force columns from any commands)
+/// before anything is written, and throws to refuse it.
+using LogCheck = std::function<void(const model::TrialLog&)>;
+model::Campaign AppendLoggedTrial(const std::string& campaign_path, const LoggedTrial& trial,
+                                  const LogCheck& check = {});
 
 }  // namespace uuvplan::io

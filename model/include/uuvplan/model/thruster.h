@@ -21,15 +21,20 @@ struct ThrustModel {
   double a = 1.0;          ///< poly2: N/V²
   double b = 0.0;          ///< poly2: N/V
   double deduction = 0.0;  ///< thrust deduction t in [0, 1) (ref 003)
-  /// Commands with |V| below it give no thrust (command units, >= 0). Stored: the simulation,
-  /// identification and planning of it are not implemented; Thrust() ignores it.
+  /// Commands with |V| below it give no thrust (command units, >= 0); beyond it the curve
+  /// above holds as measured from neutral (a T200's ±25 µs about 1500 µs).
   double dead_band = 0.0;
 
-  /// Thrust (N) for V, the command from neutral (command units, e.g. volts).
+  /// Thrust (N) for V, the command from neutral (command units, e.g. volts); 0 inside the
+  /// dead band.
   double Thrust(double v) const;
-  /// The V that gives `thrust` (N): the inverse of Thrust (both models are odd-signed and
-  /// monotonic), in closed form; it may lie outside a thruster's command range.
+  /// The V that gives `thrust` (N): the inverse of Thrust outside the dead band (both models
+  /// are odd-signed and monotonic), in closed form; it may lie outside a thruster's command
+  /// range, and inside the dead band for a thrust below EdgeThrust (which none then gives).
   double Command(double thrust) const;
+  /// The least thrust magnitude (N) the thruster gives pushing with `sign` (+1 or -1): that at
+  /// the dead band's edge, 0 without a dead band.
+  double EdgeThrust(int sign) const;
 };
 
 struct Thruster {

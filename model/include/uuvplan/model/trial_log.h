@@ -1,8 +1,10 @@
 // A trial log as read from / written to CSV (contract §Trial log): time, and per DOF the
-// nominal force, measured position and velocity. Missing samples are NaN.
+// nominal force, measured position and velocity, or per thruster its command. Missing samples
+// are NaN.
 #pragma once
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,9 @@ struct TrialLog {
   DofColumns force;       ///< force_<dof>: N or N·m
   DofColumns position;    ///< pos_<dof>: m or rad (unwrapped)
   DofColumns velocity;    ///< vel_<dof>: m/s or rad/s
+  /// cmd_<thruster>: each thruster's command as it takes it (e.g. µs of PWM), by name; the
+  /// force columns follow from them (ForceFromCommands, commanded_force.h).
+  std::map<std::string, std::vector<double>> commands;
   /// Optional `mapping` column: index into mapping_names per row, -1 = empty cell.
   std::vector<int> mapping;
   std::vector<std::string> mapping_names;
