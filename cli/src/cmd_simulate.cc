@@ -1,11 +1,13 @@
-// `uuvplan simulate --truth TRUTH.yaml --plan PLAN.json --out DIR [--seed N] [--step S]
-// [--json F]`: runs a plan on the virtual vehicle of a truth file (model/virtual_pool.h) and
-// writes the campaign as a pool team would log it: DIR/campaign.yaml, DIR/vehicle.yaml and
-// DIR/trials/<id>.csv. DIR must be new or empty; it is written whole or not at all.
+// `uuvplan simulate --truth TRUTH.yaml --plan PLAN.json --out DIR [--pool POOL] [--seed N]
+// [--step S] [--json F]`: runs a plan on the virtual vehicle of a truth file
+// (model/virtual_pool.h) and writes the campaign as a pool team would log it: DIR/campaign.yaml,
+// DIR/vehicle.yaml and DIR/trials/<id>.csv. DIR must be new or empty; it is written whole or not
+// at all. With --pool, exit 1 when a trial of the truth leaves the pool's free volume.
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -37,6 +39,7 @@ struct SimulateFlags {
   std::string out;
   double step_s = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the truth's step
   std::string json;
+  std::string pool;  ///< --pool: the free volume every trial of the truth must keep
   model::VirtualCampaignOptions campaign;  ///< --seed bound here; its pause_s between trials
 };
 
@@ -122,6 +125,41 @@ std::vector<std::string> SaturationNotes(const planner::Schedule& plan, const mo
     }
   }
   return notes;
+}
+
+// Where trial `t` of the truth goes in the pool, from the negative end of its free travel (the
+// rear or port wall's margin line, the surface's, or the tether's counter-clockwise end): the
+// planned start plus the truth's travel (model::TrueTravel), or the travel alone from 0 when the
+// plan places no start. "" when it stays within [0, FreeTravel].
+std::string LeavesThePool(const planner::PlannedTrial& t, const model::Truth& truth,
+                          const model::TrialEntry& entry, const model::Pool& pool,
+                          double command_rate_hz) {
+  const model::TrialDesign& d = t.design;
+  const double free = pool.FreeTravel(d.dof);
+  if (!std::isfinite(free)) return "";
+  const auto travel = model::TrueTravel(truth, d, entry.start, command_rate_hz);
+  const bool rotation = model::IsRotational(d.dof);
+  const double start = t.start.from.empty() ? -travel[0]
+                       : rotation           ? t.start.value * M_PI / 180.0
+                                            : t.start.value - pool.margin;
+  const double lo = start + travel[0], hi = start + travel[1];
+  if (lo >= -1e-9 && hi <= free + 1e-9) return "";
+  const double scale = rotation ? 180.0 / M_PI : 1.0;
+  const std::string unit = rotation ? " deg" : " m";
+  std::ostringstream s;
+  s << "trial '" << d.id << "': the truth's " << model::DofName(d.dof);
+  if (t.start.from.empty()) {
+    s << " spans " << model::Significant((hi - lo) * scale, 3) << unit
+      << " (the plan places no start)";
+  } else {
+    s << " goes from " << model::Significant(lo * scale, 3) << " to "
+      << model::Significant(hi * scale, 3) << unit << " from "
+      << (rotation ? t.start.from : "the margin line of " + t.start.from) << " (planned start "
+      << model::Significant(t.start.value, 4) << " " << t.start.unit << ")";
+  }
+  s << "; pool " << pool.name << " leaves " << model::Significant(free * scale, 3) << unit
+    << " free";
+  return s.str();
 }
 
 // --out must be new or empty: nothing is overwritten.
@@ -221,6 +259,8 @@ int RunSimulate(const SimulateFlags& options) {
   }
   const planner::Schedule plan = io::ReadScheduleJson(o.plan);
   CheckPlanAgainstTruth(plan, truth, o.plan, o.truth);
+  std::optional<model::Pool> pool;
+  if (!o.pool.empty()) pool = io::ReadPool(o.pool);
 
   std::vector<model::TrialDesign> designs;
   for (const auto& t : plan.trials) designs.push_back(t.design);
@@ -242,11 +282,18 @@ int RunSimulate(const SimulateFlags& options) {
       << model::DurationText(totals.trial_time) << " of trials, "
       << model::DurationText(totals.clock) << " of pool time with pauses\n"
       << "Campaign: " << campaign_path << "\n";
+  std::vector<std::string> outside;
+  for (std::size_t i = 0; pool && i < plan.trials.size(); ++i) {
+    std::string s =
+        LeavesThePool(plan.trials[i], truth, campaign.trials[i], *pool, o.campaign.command_rate_hz);
+    if (!s.empty()) outside.push_back(std::move(s));
+  }
+  for (const std::string& s : outside) out << "NOT IN THE POOL: " << s << "\n";
   if (!o.json.empty()) {
     WriteJson(o.json, io::SimulationJson(campaign, designs, campaign_path, o.campaign.seed,
                                          truth.integration_step_s));
   }
-  return kExitOk;
+  return outside.empty() ? kExitOk : kExitActionNeeded;
 }
 
 void BindSimulate(CLI::App* sub, SimulateFlags* o) {
@@ -257,6 +304,9 @@ void BindSimulate(CLI::App* sub, SimulateFlags* o) {
       ->required();
   sub->add_option("--out", o->out, "campaign directory to create (must be new or empty)")
       ->required();
+  sub->add_option("--pool", o->pool,
+                  "pool file (YAML): every trial of the truth checked against its free volume "
+                  "(exit 1 if one leaves it; the campaign is written all the same)");
   sub->add_option("--seed", o->campaign.seed, "seed of the sensor noise, drop-outs and outliers")
       ->capture_default_str();
   sub->add_option("--step", o->step_s,

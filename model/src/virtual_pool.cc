@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <random>
+#include <string>
 
 #include "pool_sampling.h"
 #include "uuvplan/model/dof_model.h"
@@ -91,6 +94,53 @@ Sampled MeasureJoint(const MultiDofModel& model, const Eigen::VectorXd& theta,
   return s;
 }
 
+// The truth's model of a trial's DOF at its parameters (those it does not name at the
+// standard model's neutral values), driven by the trial's commands held at the controller's
+// rate from rest: what the virtual pool's sensors see before their noise.
+class TruthRun {
+ public:
+  TruthRun(const Truth& truth, const TrialDesign& design, double start_time, double command_rate_hz)
+      : model_(truth.vehicle, TruthStructure(truth, design.dof)),
+        theta_(model_.Theta(Params(truth, design), &kNeutral)),
+        commands_(HeldCommands(truth.vehicle, design, command_rate_hz)),
+        held_(MakeHeldExcitation(commands_.t, commands_.force, commands_.mapping, design.duration)),
+        aux_(truth.dofs.at(design.dof).aux_motion),
+        conditions_{held_.get(), design.ballast_steps, start_time, &aux_} {
+    sim_.step_s = truth.integration_step_s;
+  }
+  TruthRun(const TruthRun&) = delete;  // conditions_ points into it
+  TruthRun& operator=(const TruthRun&) = delete;
+
+  const Commands& commands() const { return commands_; }
+  /// The state (position, velocity, ...) at `times` (s from the start).
+  Trajectory At(const std::vector<double>& times) const {
+    return SimulateMeasured(model_, theta_, conditions_, times, sim_);
+  }
+
+ private:
+  static const std::map<std::string, double>& Params(const Truth& truth,
+                                                     const TrialDesign& design) {
+    const auto it = truth.dofs.find(design.dof);
+    if (it == truth.dofs.end()) {
+      throw InputError("truth", "no dofs." + std::string(DofName(design.dof)) +
+                                    ".params for trial '" + design.id + "'");
+    }
+    return it->second.params;
+  }
+  inline static const std::map<std::string, double> kNeutral = {{param::kBias, 0.0},
+                                                                {param::kQuadraticDrag, 0.0},
+                                                                {param::kLinearDrag, 0.0},
+                                                                {param::kBiasStep, 0.0}};
+
+  DofModel model_;
+  Eigen::VectorXd theta_;
+  Commands commands_;
+  std::unique_ptr<Excitation> held_;
+  SineAux aux_;
+  TrialConditions conditions_;
+  SimulationOptions sim_;
+};
+
 }  // namespace
 
 ModelStructure TruthStructure(const Truth& truth, Dof dof) {
@@ -110,11 +160,6 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
                          const VirtualPoolOptions& options) {
   const Vehicle& v = truth.vehicle;
   const Dof dof = design.dof;
-  const auto truth_it = truth.dofs.find(dof);
-  if (truth_it == truth.dofs.end()) {
-    throw InputError(
-        "truth", "no dofs." + std::string(DofName(dof)) + ".params for trial '" + design.id + "'");
-  }
   const auto sensors_it = v.sensors.find(dof);
   if (sensors_it == v.sensors.end() ||
       (!sensors_it->second.position && !sensors_it->second.velocity)) {
@@ -122,29 +167,17 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
                      "sensors." + std::string(DofName(dof)) + ": no position or velocity sensor");
   }
   const DofSensors& sensors = sensors_it->second;
-
-  // The truth model; parameters it does not name take the standard model's neutral values.
-  const DofModel model(v, TruthStructure(truth, dof));
-  const std::map<std::string, double> neutral = {{param::kBias, 0.0},
-                                                 {param::kQuadraticDrag, 0.0},
-                                                 {param::kLinearDrag, 0.0},
-                                                 {param::kBiasStep, 0.0}};
-  const Eigen::VectorXd theta = model.Theta(truth_it->second.params, &neutral);
-
-  const Commands cmd = HeldCommands(v, design, options.command_rate_hz);
+  const TruthRun run(truth, design, start_time, options.command_rate_hz);
+  const Commands& cmd = run.commands();
   const std::vector<double>& cmd_t = cmd.t;
-  const auto held = MakeHeldExcitation(cmd.t, cmd.force, cmd.mapping, design.duration);
-  const SineAux aux(truth_it->second.aux_motion);
-  TrialConditions conditions{held.get(), design.ballast_steps, start_time, &aux};
-  SimulationOptions sim;
-  sim.step_s = truth.integration_step_s;
+  const auto truth_it = truth.dofs.find(dof);
 
   std::mt19937_64 rng(SplitMix64(options.seed));
   std::vector<std::vector<double>> grids = {cmd_t};
   std::vector<double> pos_t, vel_t, pos_y, vel_y;
   if (sensors.position) {
     pos_t = SampleTimes(sensors.position->rate_hz, design.duration);
-    const Trajectory y = SimulateMeasured(model, theta, conditions, pos_t, sim);
+    const Trajectory y = run.At(pos_t);
     pos_y = Corrupt(y.x.col(0), *sensors.position, truth.defects, rng);
     if (IsRotational(dof)) {
       for (double& a : pos_y) a = std::isnan(a) ? a : WrapAngle(a);
@@ -153,7 +186,7 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
   }
   if (sensors.velocity) {
     vel_t = SampleTimes(sensors.velocity->rate_hz, design.duration);
-    const Trajectory y = SimulateMeasured(model, theta, conditions, vel_t, sim);
+    const Trajectory y = run.At(vel_t);
     vel_y = Corrupt(y.x.col(1), *sensors.velocity, truth.defects, rng);
     grids.push_back(vel_t);
   }
@@ -169,6 +202,14 @@ TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double s
   for (const auto& a : aux_measured) log.velocity[Index(a.dof)] = OnRows(log.t, a.t, a.y);
   LogMappingColumn(v, cmd, &log);
   return log;
+}
+
+std::array<double, 2> TrueTravel(const Truth& truth, const TrialDesign& design, double start_time,
+                                 double command_rate_hz) {
+  const TruthRun run(truth, design, start_time, command_rate_hz);
+  constexpr double kSampleHz = 20.0;  // 0.05 s: a few mm of a trial's steepest motion
+  const Trajectory x = run.At(SampleTimes(kSampleHz, design.duration));
+  return {x.x.col(0).minCoeff(), x.x.col(0).maxCoeff()};
 }
 
 TrialLog RunCombinedTrial(const Truth& truth, const MultiDofModel& model,

@@ -4,6 +4,7 @@
 // given seed.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,6 +28,11 @@ ModelStructure TruthStructure(const Truth& truth, Dof dof);
 /// Runs one trial; `start_time` is its start on the campaign clock (for drift).
 TrialLog RunVirtualTrial(const Truth& truth, const TrialDesign& design, double start_time,
                          const VirtualPoolOptions& options);
+
+/// The truth's noise-free position over one trial run from rest as RunVirtualTrial runs it (m or
+/// rad from where it starts): its least and largest, sampled 0.05 s apart.
+std::array<double, 2> TrueTravel(const Truth& truth, const TrialDesign& design, double start_time,
+                                 double command_rate_hz);
 
 /// Runs one combined trial (trial_design.h) on `model`, the joint model of `truth` at θ
 /// `theta`: each moved DOF's commands at the controller's rate, held between rows; each
