@@ -26,21 +26,38 @@ double TruthOf(const model::Truth& truth, model::Dof dof, const std::string& nam
   return model::NullValue(name);
 }
 
+EstimateCheck Check(const model::Truth& truth, model::Dof dof, const std::string& name,
+                    double value, double sigma) {
+  EstimateCheck c;
+  c.dof = dof;
+  c.name = name;
+  c.value = value;
+  c.sigma = sigma;
+  c.truth = TruthOf(truth, dof, name);
+  c.z = (c.value - c.truth) / c.sigma;
+  c.within3 = std::abs(c.z) <= 3.0;  // the loop's criterion
+  return c;
+}
+
+std::vector<EstimateCheck> EveryCheck(const model::Truth& truth,
+                                      const planner::LoopIteration& last) {
+  std::vector<EstimateCheck> out;
+  for (const auto& [dof, params] : last.params) {
+    for (const ident::ParameterEstimate& p : params) {
+      if (p.state != ident::ParameterState::kEstimated) continue;
+      out.push_back(Check(truth, dof, p.name, p.value, p.sigma));
+    }
+  }
+  return out;
+}
+
 std::vector<EstimateCheck> InterestChecks(const model::Truth& truth,
                                           const std::vector<planner::DofProgress>& progress) {
   std::vector<EstimateCheck> out;
   for (const auto& p : progress) {
     for (const auto& q : p.interest) {
       if (!q.estimated || q.held) continue;
-      EstimateCheck c;
-      c.dof = p.dof;
-      c.name = q.name;
-      c.value = q.value;
-      c.sigma = q.sigma;
-      c.truth = TruthOf(truth, p.dof, q.name);
-      c.z = (c.value - c.truth) / c.sigma;
-      c.within3 = std::abs(c.z) <= 3.0;  // the loop's criterion
-      out.push_back(c);
+      out.push_back(Check(truth, p.dof, q.name, q.value, q.sigma));
     }
   }
   return out;
@@ -134,6 +151,7 @@ LoopCaseOutcome RunLoopCase(const std::string& name, const model::Truth& truth,
       break;  // measured below
   }
   if (r.converged) c.interest = InterestChecks(truth, r.progress);
+  if (!r.iterations.empty()) c.every = EveryCheck(truth, r.iterations.back());
   c.most_repeats = planner::MostUninformativeRepeats(r.iterations);
   c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return c;
@@ -165,6 +183,10 @@ void LoopTally::Add(const LoopCaseOutcome& c, int max_repeats) {
       ++interest;
       within3 += e.within3 ? 1 : 0;
     }
+    for (const auto& e : c.every) {
+      ++every;
+      every_within3 += e.within3 ? 1 : 0;
+    }
   }
   most_repeats = std::max(most_repeats, c.most_repeats);
   if (c.most_repeats > max_repeats) {
@@ -195,6 +217,13 @@ std::string CaseLine(const LoopCaseOutcome& c) {
       << " ± " << Significant(e.sigma, 3) << " (truth " << Significant(e.truth, 4) << ", "
       << Significant(e.z, 3) << "σ)" << (e.within3 ? "" : "  > 3σ");
   }
+  const auto inside = std::count_if(c.every.begin(), c.every.end(),
+                                    [](const EstimateCheck& e) { return e.within3; });
+  o << "\n    every estimated parameter within 3σ: " << inside << "/" << c.every.size();
+  for (const auto& e : c.every) {
+    if (!e.within3)
+      o << " (" << model::DofName(e.dof) << " " << e.name << ": " << Significant(e.z, 3) << "σ)";
+  }
   o << "\n    reach: " << c.reach;
   if (c.status != planner::LoopStatus::kConverged) o << "\n    reason: " << c.message;
   return o.str();
@@ -213,6 +242,8 @@ std::string TallyText(const LoopTally& t) {
     << t.at_truth[0][0] + t.at_truth[0][1] << "; parameters of interest within 3σ " << t.within3
     << "/" << t.interest;
   if (t.interest > 0) o << " (" << Significant(100.0 * t.within3 / t.interest, 3) << "%)";
+  o << "; every estimated parameter within 3σ " << t.every_within3 << "/" << t.every;
+  if (t.every > 0) o << " (" << Significant(100.0 * t.every_within3 / t.every, 3) << "%)";
   o << "; most runs of one design without new information " << t.most_repeats;
   for (const auto& f : t.failures) o << "\n  FAIL " << f;
   return o.str();

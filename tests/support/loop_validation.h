@@ -51,7 +51,9 @@ struct LoopCaseOutcome {
   /// before any trial there, RunLoop must not claim the contrary).
   bool agree = false;
   std::vector<EstimateCheck> interest;  ///< final parameters of interest (estimated, not held)
-  int most_repeats = 0;                 ///< planner::MostUninformativeRepeats
+  /// Every parameter the last fit estimated, of every DOF (not those held or dropped).
+  std::vector<EstimateCheck> every;
+  int most_repeats = 0;  ///< planner::MostUninformativeRepeats
 };
 
 /// Runs the verdict and the loop (seed `seed`, defaults otherwise) on `truth` in `pool`.
@@ -67,7 +69,8 @@ struct LoopTally {
   /// The verdict at the true vehicle (box_points.h) against the loop: [hosted at the truth?]
   /// [converged?] counts (the measurement behind choosing the three-valued verdict).
   int at_truth[2][2] = {{0, 0}, {0, 0}};
-  int interest = 0, within3 = 0;  ///< over converged cases
+  int interest = 0, within3 = 0;     ///< over converged cases
+  int every = 0, every_within3 = 0;  ///< every estimated parameter, over converged cases
   int most_repeats = 0;
   std::vector<std::string> failures;  ///< every broken claim, one sentence each
 

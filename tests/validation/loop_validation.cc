@@ -1,7 +1,8 @@
 // Full-size validation of the loop (docs/validation.md "The loop on every vehicle"):
-// ROMEO, VSOR, URIS and payload60 (the 60 kg payload) in their own pools and N seeded random
-// vehicles (tests/support/random_vehicle.h, truth MakeRandomTruth) through the pool verdict and
-// planner::RunLoop; tallies of tests/support/loop_validation.h. Exit status 1 when a claim fails.
+// ROMEO, VSOR, URIS, payload60 (the 60 kg payload) and BlueROV2 in their own pools and N seeded
+// random vehicles (tests/support/random_vehicle.h, truth MakeRandomTruth) through the pool verdict
+// and planner::RunLoop; tallies of tests/support/loop_validation.h. Exit status 1 when a claim
+// fails.
 //
 //   loop_validation [N=20] [first_seed=1] [max_dofs=2] [cases=1]
 //
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
     std::cout << t::CaseLine(c) << std::endl;
   };
   if (seed_cases) {
-    for (const char* c : {"romeo", "vsor", "uris", "payload60"}) {
+    for (const char* c : {"romeo", "vsor", "uris", "payload60", "bluerov2"}) {
       report(t::RunLoopCase(c, uuvplan::io::ReadTruth(CasePath(c, "truth.yaml")),
                             uuvplan::io::ReadPool(CasePath(c, "pool.yaml")), 1));
     }
