@@ -175,7 +175,8 @@ ForceRange DofPlanningProblem::ForceRangeFor(int mapping, int sign) const {
     if (!(r.max_abs > r.min_abs)) {
       r.feasible = false;
       r.reason = SpeedLimitRefusal(vehicle_.mappings[mapping].name, sign, dof_, r.min_abs, limit,
-                                   {k_low, kq_low, phi});
+                                   {k_low, kq_low, phi},
+                                   vehicle_.WorkingThrustFloor() > vehicle_.min_thrust);
     }
   }
   return r;

@@ -20,15 +20,16 @@ std::string_view SpeedLimitKey(model::Dof dof) {
 }
 
 std::string SpeedLimitRefusal(const std::string& mapping, int sign, model::Dof dof, double min_abs,
-                              double limit, const LowestDrag& drag) {
+                              double limit, const LowestDrag& drag, bool dead_band_floor) {
   const std::string unit = model::IsRotational(dof) ? "rad/s" : "m/s";
   // The steady speed of min_thrust's least force at the lowest drag (ref 000 eq. 3 at rest:
   // k·v + kq·v² = phi); the limit must exceed it for any force range to remain: 1% above,
   // rounded to 3 digits.
   const double needed = SteadySpeed(drag.k, drag.kq, min_abs);
   std::ostringstream s;
-  s << "mapping '" << mapping << "' " << (sign > 0 ? "positive" : "negative")
-    << ": min_thrust needs |phi| >= " << min_abs << ", which drives " << model::DofName(dof)
+  s << "mapping '" << mapping << "' " << (sign > 0 ? "positive" : "negative") << ": "
+    << (dead_band_floor ? "the thrusters' dead band edge" : "min_thrust")
+    << " needs |phi| >= " << min_abs << ", which drives " << model::DofName(dof)
     << " beyond the speed limit " << limit << " " << unit << " (" << SpeedLimitKey(dof)
     << ") at the lowest a priori drag (k = " << drag.k << ", kq = " << drag.kq
     << "; the limit is reached at |phi| = " << drag.phi_at_limit << "): ";
@@ -36,7 +37,8 @@ std::string SpeedLimitRefusal(const std::string& mapping, int sign, model::Dof d
     s << "'" << SpeedLimitKey(dof) << ": " << model::Significant(1.01 * needed, 3) << "' (" << unit
       << ") in the vehicle file, ";
   }
-  s << "a lower min_thrust or an a priori drag fit for " << model::DofName(dof) << " would lift it";
+  s << (dead_band_floor ? "a narrower thrust.dead_band" : "a lower min_thrust")
+    << " or an a priori drag fit for " << model::DofName(dof) << " would lift it";
   return s.str();
 }
 

@@ -26,8 +26,10 @@ struct LowestDrag {
 
 /// "mapping 'M' positive: min_thrust needs |phi| >= A, which drives yaw beyond the speed limit
 /// 0.35 rad/s (max_rotation_rate) ...: max_rotation_rate: V in the vehicle file ... would lift
-/// it", V the steady speed min_thrust's |phi| reaches at the lowest drag, rounded up.
+/// it", V the steady speed min_thrust's |phi| reaches at the lowest drag, rounded up. With
+/// `dead_band_floor` the floor is a thruster's dead band edge (Vehicle::WorkingThrustFloor) and
+/// the sentence names thrust.dead_band instead.
 std::string SpeedLimitRefusal(const std::string& mapping, int sign, model::Dof dof, double min_abs,
-                              double limit, const LowestDrag& drag);
+                              double limit, const LowestDrag& drag, bool dead_band_floor);
 
 }  // namespace uuvplan::planner

@@ -90,8 +90,9 @@ struct Vehicle {
   /// Whether mapping `mapping` may push both ways within one trial: every thruster working in
   /// it is reversible (Thruster::reversible). False for a mapping with no working thruster.
   bool Reverses(int mapping) const;
-  /// The least |tau| (N) a working thruster may be asked for: min_thrust, or the thrust at a
-  /// thruster's dead band edge where that is larger (a design never idles in a dead band).
+  /// The least |tau| (N) a working thruster may be asked for: min_thrust, or the largest thrust
+  /// at any thruster's dead band edge, either way, where that is larger (a design never idles in
+  /// a dead band; one floor for every thruster, on the safe side).
   double WorkingThrustFloor() const;
 };
 
