@@ -61,7 +61,8 @@ io::LoggedTrial TrialOf(const LogFlags& o, const model::TrialDesign* design) {
   } else {
     throw model::InputError("--dof", "required without --plan (the trial's DOF)");
   }
-  t.mapping = !o.mapping.empty() ? o.mapping : design ? design->mapping : "";
+  const bool planned_dof = design && design->dof == t.dof;  // else refused in RunLog
+  t.mapping = !o.mapping.empty() ? o.mapping : planned_dof ? design->mapping : "";
   return t;
 }
 
@@ -93,6 +94,9 @@ int RunLog(const LogFlags& o) {
                                          model::Join(problems, "; ") +
                                          " (log it without --plan if it is meant to differ)");
     };
+    // Another DOF than the plan's is refused before the campaign is read (CompareLogWithDesign
+    // names only the DOF then, whatever the log holds).
+    if (design->dof != trial.dof) planned(model::TrialLog{});
   }
   const model::Campaign c = io::AppendLoggedTrial(o.campaign, trial, planned);
   const model::TrialEntry& e = c.trials.back();

@@ -255,6 +255,11 @@ int RunSimulate(const SimulateFlags& options) {
   if (!std::isnan(o.step_s)) truth.integration_step_s = o.step_s;
   if (const nlohmann::json root = io::LoadJson(o.plan);
       io::IsCombinedScheduleJson(root, model::kCoupledModelName)) {
+    if (!o.pool.empty()) {
+      throw InputError("--pool",
+                       "not checked for a coupled plan (its planar track is checked "
+                       "by the planner over the box): leave it out");
+    }
     return RunCoupledSimulate(o, truth, root);
   }
   const planner::Schedule plan = io::ReadScheduleJson(o.plan);
@@ -290,8 +295,10 @@ int RunSimulate(const SimulateFlags& options) {
   }
   for (const std::string& s : outside) out << "NOT IN THE POOL: " << s << "\n";
   if (!o.json.empty()) {
-    WriteJson(o.json, io::SimulationJson(campaign, designs, campaign_path, o.campaign.seed,
-                                         truth.integration_step_s));
+    nlohmann::json j = io::SimulationJson(campaign, designs, campaign_path, o.campaign.seed,
+                                          truth.integration_step_s);
+    if (pool) j["outside_pool"] = outside;  // one sentence per trial that leaves it
+    WriteJson(o.json, j);
   }
   return outside.empty() ? kExitOk : kExitActionNeeded;
 }

@@ -40,12 +40,6 @@ std::vector<const std::vector<double>*> CommandColumns(const Vehicle& vehicle,
     }
     columns.push_back(&it->second);
   }
-  for (Dof d : kAllDofs) {
-    if (log.HasForce(d)) {
-      throw InputError(file, "column 'force_" + std::string(DofName(d)) +
-                                 "' beside cmd_ columns: give the force one way");
-    }
-  }
   return columns;
 }
 
@@ -95,12 +89,14 @@ double NominalForce(const Vehicle& vehicle, const ThrustMapping& m, const std::s
   for (const auto& [i, s] : m.shares) share[i] = s;
   double largest = 0.0, fit = 0.0, norm = 0.0;
   for (std::size_t i = 0; i < thrust.size(); ++i) {
+    if (share[i] == 0.0) continue;  // an empty cell of a thruster outside it blanks nothing
     largest = std::max(largest, std::abs(thrust[i][row]));
     fit += share[i] * thrust[i][row];
     norm += share[i] * share[i];
   }
+  const double allowed = std::max(kForeignThrustFraction * largest, vehicle.WorkingThrustFloor());
   for (std::size_t i = 0; i < thrust.size(); ++i) {
-    if (share[i] != 0.0 || !(std::abs(thrust[i][row]) > kForeignThrustFraction * largest)) continue;
+    if (share[i] != 0.0 || !(std::abs(thrust[i][row]) > allowed)) continue;
     throw InputError(file, "column 'cmd_" + vehicle.thrusters[i].name + "' at " +
                                RowPlace(log, row) + ": thruster " + vehicle.thrusters[i].name +
                                " pushes " + Significant(thrust[i][row], 3) + " N in a row of " +
@@ -120,6 +116,7 @@ void GeneralisedForces(const Vehicle& vehicle, Dof dof,
     std::vector<double>& force = log->force[k];
     force.assign(log->size(), 0.0);
     for (std::size_t i = 0; i < thrust.size(); ++i) {
+      if (b(k, i) == 0.0) continue;  // nor here
       for (std::size_t r = 0; r < force.size(); ++r) force[r] += b(k, i) * thrust[i][r];
     }
   }
@@ -130,6 +127,9 @@ void GeneralisedForces(const Vehicle& vehicle, Dof dof,
 void ForceFromCommands(const Vehicle& vehicle, Dof dof, const std::string& mapping,
                        const std::string& file, TrialLog* log) {
   if (log->commands.empty()) return;
+  const bool has_force =
+      std::any_of(kAllDofs.begin(), kAllDofs.end(), [&](Dof d) { return log->HasForce(d); });
+  if (has_force) return;  // the force as logged; cmd_ columns are then other columns
   const auto columns = CommandColumns(vehicle, file, *log);
   const auto thrust = Thrusts(vehicle, file, *log, columns);
   const std::vector<int> mappings = RowMappings(vehicle, mapping, *log);

@@ -88,6 +88,13 @@ TEST(Log, RefusesTheWrongTrialAndATakenIdLeavingTheCampaignAsItWas) {
   EXPECT_EQ(wrong.status, 2);
   EXPECT_THAT(wrong.err, StartsWith("uuvplan: error: "));
   EXPECT_THAT(wrong.err, HasSubstr("not the planned trial surge_sine"));
+  // Another DOF than the plan's is named as such, not as a mapping flag never given.
+  const ToolRun other = RunTool("log " + campaign_dir + " " + day.Csv("surge_back") +
+                                    " --trial surge_sine --dof sway --plan " + day.plan,
+                                day.scratch);
+  EXPECT_EQ(other.status, 2);
+  EXPECT_THAT(other.err,
+              HasSubstr("not the planned trial surge_sine of " + day.plan + ": DOF sway"));
   const ToolRun again = RunTool(
       "log " + campaign_dir + " " + day.Csv("surge_steady") + " --trial surge_steady --dof surge",
       day.scratch);

@@ -80,6 +80,15 @@ TEST(SimulatePool, ATrialThatLeavesTheFreeVolumeIsNamed) {
   EXPECT_THAT(late.out, HasSubstr("from the margin line of the rear wall (negative surge) "
                                   "(planned start 2.5 m); pool roomy leaves"));
   EXPECT_EQ(Simulate(dir, placed, Pool(dir, "long", span + 1.5), "long").status, 0);
+  // The JSON carries the same sentences.
+  const ToolRun json =
+      RunTool("simulate --truth '" + kTruth + "' --plan '" + placed + "' --out '" + (dir / "json") +
+                  "' --pool '" + (dir / "roomy.yaml") + "' --json '" + (dir / "s.json") + "'",
+              dir);
+  EXPECT_EQ(json.status, 1);
+  EXPECT_THAT(
+      cli_test::ReadText(dir / "s.json"),
+      HasSubstr("\"outside_pool\": [\n    \"trial 'push': the truth's surge goes from 1 to"));
 }
 
 }  // namespace

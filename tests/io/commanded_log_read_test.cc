@@ -59,6 +59,30 @@ TEST(ReadCommandedLog, ForceOfTheMappingAndOfTheGeometry) {
   EXPECT_NEAR(yaw[0], 0.0, 1e-12);
   EXPECT_NEAR(yaw[1], 0.2 * 4.0 - 0.2 * 1.0, 1e-12);
   EXPECT_TRUE(log.commands.empty());
+  // A log that gives the force keeps it: its cmd_ columns, thrusters or not, are other columns.
+  const TrialLog forced = io::ReadTrialOf(dir.Write("forced.csv",
+                                                    "t,force_surge,cmd_L,cmd_depth,pos_surge\n"
+                                                    "0,3,1700,7,0\n"),
+                                          v, Dof::kSurge, "surge-all");
+  EXPECT_EQ(forced.force[Index(Dof::kSurge)], std::vector<double>{3.0});
+  EXPECT_FALSE(forced.HasForce(Dof::kYaw));
+  EXPECT_THAT(forced.notes, ::testing::Contains("ignored column 'cmd_depth' (the log gives force_ "
+                                                "columns)"));
+}
+
+// Rows at rest: a thruster outside the mapping trimming by a hair is no other mapping, and an
+// empty cell of it blanks no force it does not act on.
+TEST(ReadCommandedLog, IdleRowsAndEmptyCellsOfOtherThrusters) {
+  ScratchDir dir;
+  Vehicle v = io::ReadVehicle(dir.Write("v.yaml", kPwmVehicle));
+  v.min_thrust = 0.5;  // N: the floor a working thruster keeps
+  const TrialLog log = io::ReadTrialOf(dir.Write("rest.csv",
+                                                 "t,cmd_L,cmd_R,cmd_V,pos_surge\n"
+                                                 "0,1500,1500,1501,0\n"
+                                                 "1,1700,1700,,0\n"),
+                                       v, Dof::kSurge, "surge-all");
+  EXPECT_EQ(log.force[Index(Dof::kSurge)], (std::vector<double>{0.0, 8.0}));
+  EXPECT_NEAR(log.force[Index(Dof::kYaw)][1], 0.0, 1e-12);  // V at the centre: no yaw
 }
 
 TEST(ReadCommandedLog, FaultsNameTheColumnAndTheRow) {
@@ -72,8 +96,6 @@ TEST(ReadCommandedLog, FaultsNameTheColumnAndTheRow) {
               HasSubstr("log.csv: column 'cmd_X': expected a thruster of vehicle 'pwm' (L, R, V)"));
   EXPECT_THAT(read("t,cmd_L,cmd_R,pos_surge\n0,1500,1500,0\n"),
               HasSubstr("no column 'cmd_V': a log of commands gives every thruster's"));
-  EXPECT_THAT(read("t,cmd_L,cmd_R,cmd_V,force_surge,pos_surge\n0,1500,1500,1500,0,0\n"),
-              HasSubstr("column 'force_surge' beside cmd_ columns: give the force one way"));
   // 0.5 is a −1…1 setpoint, not µs of PWM.
   EXPECT_THAT(read("t,cmd_L,cmd_R,cmd_V,pos_surge\n0,1500,1500,1500,0\n1,0.5,1500,1500,0\n"),
               HasSubstr("column 'cmd_L' at t = 1 s (data row 2): expected a command within "

@@ -31,7 +31,8 @@ TEST(DeadBandFloor, TheEdgeAboveMinThrustIsTheFloor) {
   const ThrustCheck c = CheckThrust(v, *input, 20.0);
   EXPECT_TRUE(c.below_min);
   ASSERT_FALSE(c.reasons.empty());
-  EXPECT_THAT(c.reasons.back(), HasSubstr("below the thrusters' dead band edge (thrust.dead_band)"));
+  EXPECT_THAT(c.reasons.back(),
+              HasSubstr("below the thrusters' dead band edge (thrust.dead_band)"));
 }
 
 }  // namespace

@@ -14,17 +14,19 @@
 
 namespace uuvplan::model {
 
-/// A thruster outside the row's mapping may push at most this fraction of the row's largest
-/// thrust: more means the row was not run in that mapping (a wrong `mapping` cell or trial
-/// mapping), not the rounding of a command or a thruster spinning down.
+/// A thruster outside the row's mapping may push at most this fraction of the largest thrust of
+/// the mapping's thrusters in that row (or the vehicle's working floor, where larger): more
+/// means the row was not run in that mapping (a wrong `mapping` cell or trial mapping), not the
+/// rounding of a command or a thruster spinning down.
 inline constexpr double kForeignThrustFraction = 0.1;
 
 /// Turns log->commands into force columns (and clears them): force_<dof> of the trial's DOF
 /// from the mapping of each row (its `mapping` cell, else `mapping`), and with full geometry
-/// force_<d> of every other DOF the thrusters push. An empty command cell gives an empty force
-/// cell. A log without commands is left as it is. Throws InputError naming `file`, the column
-/// and, for a row, its time: a cmd_ column that names no thruster of the vehicle, a thruster
-/// without its column, a force_ column beside commands, a command outside the thruster's
+/// force_<d> of every other DOF the thrusters push. An empty command cell of a thruster that
+/// acts on a force gives an empty cell of that force. A log without commands, or with force_
+/// columns, is left as it is (io::ReadTrialOf then ignores its cmd_ columns with a note). Throws
+/// InputError naming `file`, the column and, for a row, its time: a cmd_ column that names no
+/// thruster of the vehicle, a thruster without its column, a command outside the thruster's
 /// range, a thruster outside the row's mapping pushing (kForeignThrustFraction).
 void ForceFromCommands(const Vehicle& vehicle, Dof dof, const std::string& mapping,
                        const std::string& file, TrialLog* log);
