@@ -369,9 +369,7 @@ TrialLog ReadTrialOf(const std::string& path, const Vehicle& vehicle, Dof dof,
   std::vector<std::string> mappings;
   for (int i : vehicle.MappingsOf(dof)) mappings.push_back(vehicle.mappings[i].name);
   TrialLog log = ReadTrialLog(path, mappings);
-  const bool has_force =
-      std::any_of(kAllDofs.begin(), kAllDofs.end(), [&](Dof d) { return log.HasForce(d); });
-  if (has_force) {  // the force as logged: cmd_ columns are other columns then
+  if (log.HasAnyForce()) {  // the force as logged: cmd_ columns are other columns then
     for (const auto& [name, values] : log.commands) {
       log.notes.push_back("ignored column 'cmd_" + name + "' (the log gives force_ columns)");
     }

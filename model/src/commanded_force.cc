@@ -80,13 +80,23 @@ std::vector<int> RowMappings(const Vehicle& vehicle, const std::string& mapping,
   return rows;
 }
 
-// phi of one row in `m`: the least-squares fit of tau_i = share_i·phi (ref 000 Table I);
-// throws when a thruster `m` does not use pushes (kForeignThrustFraction).
-double NominalForce(const Vehicle& vehicle, const ThrustMapping& m, const std::string& file,
+// Each mapping's share of every thruster (0 for one it does not use), in the vehicle's order.
+std::vector<std::vector<double>> ShareRows(const Vehicle& vehicle) {
+  std::vector<std::vector<double>> rows;
+  for (const ThrustMapping& m : vehicle.mappings) {
+    rows.emplace_back(vehicle.thrusters.size(), 0.0);
+    for (const auto& [i, s] : m.shares) rows.back()[i] = s;
+  }
+  return rows;
+}
+
+// phi of one row in `m` (shares `share`): the least-squares fit of tau_i = share_i·phi
+// (ref 000 Table I); throws when a thruster `m` does not use pushes more than
+// kForeignThrustFraction of the row's largest thrust in `m` and the working floor `floor`.
+double NominalForce(const Vehicle& vehicle, const ThrustMapping& m,
+                    const std::vector<double>& share, double floor, const std::string& file,
                     const TrialLog& log, std::size_t row,
                     const std::vector<std::vector<double>>& thrust) {
-  std::vector<double> share(thrust.size(), 0.0);
-  for (const auto& [i, s] : m.shares) share[i] = s;
   double largest = 0.0, fit = 0.0, norm = 0.0;
   for (std::size_t i = 0; i < thrust.size(); ++i) {
     if (share[i] == 0.0) continue;  // an empty cell of a thruster outside it blanks nothing
@@ -94,7 +104,7 @@ double NominalForce(const Vehicle& vehicle, const ThrustMapping& m, const std::s
     fit += share[i] * thrust[i][row];
     norm += share[i] * share[i];
   }
-  const double allowed = std::max(kForeignThrustFraction * largest, vehicle.WorkingThrustFloor());
+  const double allowed = std::max(kForeignThrustFraction * largest, floor);
   for (std::size_t i = 0; i < thrust.size(); ++i) {
     if (share[i] != 0.0 || !(std::abs(thrust[i][row]) > allowed)) continue;
     throw InputError(file, "column 'cmd_" + vehicle.thrusters[i].name + "' at " +
@@ -126,19 +136,20 @@ void GeneralisedForces(const Vehicle& vehicle, Dof dof,
 
 void ForceFromCommands(const Vehicle& vehicle, Dof dof, const std::string& mapping,
                        const std::string& file, TrialLog* log) {
-  if (log->commands.empty()) return;
-  const bool has_force =
-      std::any_of(kAllDofs.begin(), kAllDofs.end(), [&](Dof d) { return log->HasForce(d); });
-  if (has_force) return;  // the force as logged; cmd_ columns are then other columns
+  // A log that gives the force keeps it: its cmd_ columns are other columns then.
+  if (log->commands.empty() || log->HasAnyForce()) return;
   const auto columns = CommandColumns(vehicle, file, *log);
   const auto thrust = Thrusts(vehicle, file, *log, columns);
   const std::vector<int> mappings = RowMappings(vehicle, mapping, *log);
+  const std::vector<std::vector<double>> shares = ShareRows(vehicle);
+  const double floor = vehicle.WorkingThrustFloor();
   std::vector<double>& force = log->force[Index(dof)];
   force.resize(log->size());
   for (std::size_t r = 0; r < force.size(); ++r) {
-    force[r] = mappings[r] < 0
-                   ? kNaN
-                   : NominalForce(vehicle, vehicle.mappings[mappings[r]], file, *log, r, thrust);
+    const int m = mappings[r];
+    force[r] =
+        m < 0 ? kNaN
+              : NominalForce(vehicle, vehicle.mappings[m], shares[m], floor, file, *log, r, thrust);
   }
   if (HasFullGeometry(vehicle.thrusters)) GeneralisedForces(vehicle, dof, thrust, log);
   log->commands.clear();

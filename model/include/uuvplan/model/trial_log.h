@@ -33,6 +33,12 @@ struct TrialLog {
   bool HasForce(Dof d) const { return !force[Index(d)].empty(); }
   bool HasPosition(Dof d) const { return !position[Index(d)].empty(); }
   bool HasVelocity(Dof d) const { return !velocity[Index(d)].empty(); }
+  bool HasAnyForce() const {
+    for (const auto& column : force) {
+      if (!column.empty()) return true;
+    }
+    return false;
+  }
 };
 
 /// One kind of a log's columns: &TrialLog::force, &TrialLog::position or &TrialLog::velocity.
