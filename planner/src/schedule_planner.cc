@@ -134,8 +134,10 @@ ParameterBox NextTrialBox(const model::Vehicle& vehicle, const model::Pool& pool
                           const NextTrialOptions& o, std::vector<std::string>* notes) {
   std::unique_ptr<DofPlanningProblem> probe =
       DofPlanningProblem::APriori(vehicle, pool, dof, o.schedule.planner, notes);
-  return BoxAboutEstimates(probe->box(), probe->model().parameter_names(), estimates, sigmas,
-                           o.box_sigmas, o.schedule.planner.box);
+  ParameterBox box = BoxAboutEstimates(probe->box(), probe->model().parameter_names(), estimates,
+                                       sigmas, o.box_sigmas, o.schedule.planner.box);
+  ClampToLeastInertia(vehicle, dof, probe->box(), &box, notes);
+  return box;
 }
 
 // The DOF's trial families, each designed on the information of the prior and of the trials

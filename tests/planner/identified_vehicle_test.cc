@@ -14,6 +14,8 @@
 #include "uuvplan/io/io.h"
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/campaign_builder.h"
+#include "uuvplan/model/input_error.h"
+#include "uuvplan/planner/design/dof_planning_problem.h"
 #include "uuvplan/planner/design/parameter_box.h"
 #include "uuvplan/planner/pool/pool_verdict.h"
 #include "uuvplan/planner/schedule_planner.h"
@@ -62,6 +64,58 @@ TEST(PlanningBox, AnIdentifiedModelCentresTheBoxAtThreeSigma) {
   const ParameterBox apriori = PlanningBox(plain, model::Dof::kSurge, names, BoxOptions{}, nullptr);
   const auto bounds = plain.InertiaBounds(model::Dof::kSurge);
   EXPECT_NEAR(apriori.Nominal("m"), 0.5 * (bounds[0] + bounds[1]), 1e-9);
+}
+
+// A translation's m is at least the dry mass (added mass is positive, Fossen 2011 §6.3.1): a box
+// about an estimate reaching below it starts there, its centre moved inside; one entirely below
+// it is the a priori box (a diverged fit, which would otherwise be planned over time constants
+// of milliseconds), with a note.
+TEST(PlanningBox, NoInertiaBelowTheLeastPhysical) {
+  const model::Vehicle romeo = testing::Romeo();
+  const double dry = romeo.mass;
+  const std::vector<std::string> names = {"m", "k", "kq", "bias"};
+  model::DofParameters surge;
+  surge.params = {{"m", 0.96 * dry}, {"k", 45.0}, {"kq", 300.0}};
+  surge.sigma = {{"m", 0.02 * dry}, {"k", 3.0}, {"kq", 20.0}};
+  std::vector<std::string> notes;
+  const ParameterBox part = PlanningBox(WithIdentifiedSurge(romeo, surge), model::Dof::kSurge,
+                                        names, BoxOptions{}, &notes);
+  ASSERT_EQ(part.axes[0].name, "m");
+  // ± 3σ is [0.9, 1.02] dry masses (narrower than the a priori box); what is left, [1, 1.02],
+  // centred at 1.01.
+  EXPECT_NEAR(part.Nominal("m"), 1.01 * dry, 1e-9 * dry);
+  EXPECT_NEAR(part.Nominal("m") * part.axes[0].lo, dry, 1e-9 * dry);
+  EXPECT_NEAR(part.Nominal("m") * part.axes[0].hi, 1.02 * dry, 1e-9 * dry);
+
+  surge.params["m"] = 0.3 * dry;
+  surge.sigma["m"] = 0.05 * dry;
+  notes.clear();
+  const ParameterBox below = PlanningBox(WithIdentifiedSurge(romeo, surge), model::Dof::kSurge,
+                                         names, BoxOptions{}, &notes);
+  const auto bounds = romeo.InertiaBounds(model::Dof::kSurge);
+  EXPECT_NEAR(below.Nominal("m") * below.axes[0].lo, bounds[0], 1e-9 * dry);
+  EXPECT_NEAR(below.Nominal("m") * below.axes[0].hi, bounds[1], 1e-9 * dry);
+  EXPECT_THAT(notes.back(), HasSubstr("below the least physical"));
+
+  // A rotation's inertia in a vehicle file is computed, not weighed: half of it is the floor.
+  EXPECT_DOUBLE_EQ(LeastInertia(romeo, model::Dof::kYaw),
+                   0.5 * romeo.RigidInertia(model::Dof::kYaw));
+  EXPECT_DOUBLE_EQ(LeastInertia(romeo, model::Dof::kSurge), dry);
+}
+
+// A box whose fastest time constant is under the planner's least (an inertia in the wrong unit)
+// is refused at once, naming the time constant, instead of simulated in microsecond steps.
+TEST(PlanningBox, ATimeConstantOfMicrosecondsIsRefusedAtOnce) {
+  model::Vehicle v = testing::Romeo();
+  v.inertia[model::Dof::kYaw] = 1e-6;  // kg·m² as if given in tonne·m²
+  try {
+    DofPlanningProblem::APriori(v, testing::RomeoPool(), model::Dof::kYaw, PlannerOptions{},
+                                nullptr);
+    FAIL() << "the planning problem was built";
+  } catch (const model::InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("reaches a time constant of"));
+    EXPECT_THAT(e.what(), HasSubstr("under the planner's least 2 ms"));
+  }
 }
 
 // ROMEO's surge truth (cases/romeo/truth.yaml) as if identified with 5% σ, written and read

@@ -49,6 +49,7 @@ bool PlannerOptions::IsValid(std::string* error) const {
   check.Require(max_trial_duration_s > 0, "max_trial_duration_s", max_trial_duration_s, "> 0")
       .Require(pause_s >= 0, "pause_s", pause_s, ">= 0")
       .Require(max_step_s > 0, "max_step_s", max_step_s, "> 0")
+      .Require(least_time_constant_s >= 0, "least_time_constant_s", least_time_constant_s, ">= 0")
       .Require(check_grid >= 2, "check_grid", check_grid, ">= 2")
       .Require(box.drag_sigmas >= 0, "box.drag_sigmas", box.drag_sigmas, ">= 0")
       .Require(threads >= 0, "threads", threads, ">= 0 (0: one per core)");
@@ -92,6 +93,20 @@ void RequireDesignable(const model::Vehicle& v, model::Dof dof) {
     throw model::InputError("vehicle '" + v.name + "': mappings",
                             "no thrust mapping acts on " + d + ": it cannot be excited");
   }
+}
+
+// A box whose fastest point has a time constant under `least` would be simulated in steps of
+// half of it (ChooseStep): refused, so that no design runs for hours.
+void RequireBoundedWork(const model::Vehicle& v, model::Dof dof, double tc_min, double least) {
+  if (tc_min >= least) return;
+  const std::string d(model::DofName(dof));
+  throw model::InputError(
+      "vehicle '" + v.name + "': " + d,
+      "the planning box of " + d + " reaches a time constant of " +
+          model::Significant(1e3 * tc_min, 3) + " ms (m over the drag at the largest thrust), " +
+          "under the planner's least " + model::Significant(1e3 * least, 3) +
+          " ms: its simulations would take more steps than a design may; check the units of the "
+          "inertia and the drag (kg or kg·m², N·s/m or N·m·s/rad)");
 }
 
 }  // namespace
@@ -147,6 +162,7 @@ DofPlanningProblem::DofPlanningProblem(const model::Vehicle& vehicle, const mode
   }
   if (!std::isfinite(tc_min_)) tc_min_ = 1.0;
   if (tc_max_ <= 0) tc_max_ = tc_min_;
+  RequireBoundedWork(vehicle, dof, tc_min_, options_.least_time_constant_s);
   step_s_ = ChooseStep(tc_min_, options_.max_step_s);
   design_sensors_ = sensors_;
   for (auto* spec : {&design_sensors_.position, &design_sensors_.velocity}) {

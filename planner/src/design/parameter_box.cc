@@ -271,7 +271,46 @@ ParameterBox PlanningBox(const model::Vehicle& vehicle, model::Dof dof,
   ParameterBox box = BoxAboutEstimates(apriori, names, model->second.params, model->second.sigma,
                                        options.estimate_sigmas, options);
   NoWiderThan(apriori, &box);
+  ClampToLeastInertia(vehicle, dof, apriori, &box, notes);
   return box;
+}
+
+double LeastInertia(const model::Vehicle& vehicle, model::Dof dof) {
+  return (model::IsRotational(dof) ? 0.5 : 1.0) * vehicle.RigidInertia(dof);
+}
+
+void ClampToLeastInertia(const model::Vehicle& vehicle, model::Dof dof, const ParameterBox& apriori,
+                         ParameterBox* box, std::vector<std::string>* notes) {
+  const double least = LeastInertia(vehicle, dof);
+  const std::string& mass = model::param::kMass;
+  const double nominal = box->Nominal(mass);
+  if (!(least > 0) || !(nominal > 0)) return;
+  for (BoxAxis& axis : box->axes) {
+    if (axis.name != "m") continue;
+    if (axis.hi * nominal >= least) {
+      axis.lo = std::max(axis.lo, least / nominal);
+      if (axis.lo > 1.0) {  // the centre moves into what is left of the axis
+        const double centre = 0.5 * (axis.lo + axis.hi);
+        box->nominal[mass] = centre * nominal;
+        axis.lo /= centre;
+        axis.hi /= centre;
+      }
+      return;
+    }
+    for (const BoxAxis& a : apriori.axes) {
+      if (a.name == "m") axis = a;
+    }
+    box->nominal[mass] = apriori.Nominal(mass);
+    if (notes) {
+      const std::string unit = model::Unit(mass, dof);
+      notes->push_back(std::string(model::DofName(dof)) + ": the estimate of m (" +
+                       model::Significant(nominal, 3) + " " + unit + ", box up to " +
+                       model::Significant(axis.hi * nominal, 3) +
+                       ") lies below the least physical " + model::Significant(least, 3) + " " +
+                       unit + ": planned over the a priori m of the vehicle file instead");
+    }
+    return;
+  }
 }
 
 }  // namespace uuvplan::planner

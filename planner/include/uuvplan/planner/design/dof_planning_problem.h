@@ -64,6 +64,13 @@ struct PlannerOptions {
   double pause_s = 60.0;
   /// Largest RK4 step (s); the step is otherwise half the shortest time constant.
   double max_step_s = 0.5;
+  /// Shortest time constant (s) over the box the planner simulates; a box reaching below it is
+  /// refused (model::InputError naming the time constant), so that a design's work stays bounded:
+  /// at most max_trial_duration_s / (least / 2) RK4 steps per simulation. CHOSEN 2 ms: a
+  /// BlueROV2's fastest, yaw at full thrust, is about 60 ms; 2 ms is a time constant no vehicle
+  /// a pool hosts reaches (a design then runs in minutes, not hours) and one that only a wrong
+  /// unit or a diverged estimate gives.
+  double least_time_constant_s = 2e-3;
   /// Values per box axis in hard-constraint checks (>= 2; 3 adds the axis midpoints).
   int check_grid = 3;
   /// Largest steady speed a design may ask for (0: no limit), at the fastest point of the box.

@@ -92,6 +92,21 @@ ParameterBox BoxAboutEstimates(const ParameterBox& apriori,
                                const ParameterValues& estimates, const ParameterValues& sigmas,
                                double n_sigma, const BoxOptions& options);
 
+/// The least inertia `dof` can physically have: a submerged body's added mass matrix is positive
+/// definite (Fossen 2011 §6.3.1), so a translation's m is at least the weighed dry mass; a
+/// rotational inertia in a vehicle file is computed from an assumed mass distribution and errs
+/// by tens of percent (ROMEO's file gives 93.75 kg·m², seed 000 §IV-D measured 84 ± 5 with the
+/// added inertia), so CHOSEN half of it is the rotations' floor.
+double LeastInertia(const model::Vehicle& vehicle, model::Dof dof);
+
+/// No inertia below LeastInertia in `box`, whose design points are simulated with steps of a
+/// fraction of the box's shortest time constant: an estimate of m far too low (a loop's early
+/// fit) would make that milliseconds and a design minutes. The m axis starts at the floor (its
+/// centre moved inside); when all of it lies below, it is `apriori`'s m axis and nominal, with a
+/// note.
+void ClampToLeastInertia(const model::Vehicle& vehicle, model::Dof dof, const ParameterBox& apriori,
+                         ParameterBox* box, std::vector<std::string>* notes);
+
 /// The box a design of `dof` starts from: about the identified model the vehicle file gives
 /// for it (vehicle.models, ± options.estimate_sigmas σ) when it has one, with a note naming
 /// the estimates; else APrioriBox.
