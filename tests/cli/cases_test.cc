@@ -21,11 +21,11 @@ using io::ReadPool;
 using io::ReadTruth;
 using io::ReadVehicle;
 
-const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/cases/";
+const std::string kCasesDir = std::string(UUVPLAN_SOURCE_DIR) + "/cases/";
 constexpr double kPi = 3.14159265358979323846;
 
 std::string Case(const std::string& name, const std::string& file) {
-  return kCases + name + "/" + file;
+  return kCasesDir + name + "/" + file;
 }
 
 TEST(Cases, EveryFileLoads) {

@@ -13,6 +13,9 @@
 
 namespace uuvplan::cli_test {
 
+/// cases/romeo/ of the source tree, with its trailing slash.
+inline const std::string kRomeoCase = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
+
 /// A new empty directory under the system's temporary directory, removed with its contents.
 class TempDir {
  public:

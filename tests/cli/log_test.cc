@@ -19,22 +19,20 @@ using ::testing::HasSubstr;
 using ::testing::Not;
 using ::testing::StartsWith;
 
-const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
-
 struct PoolDay {
   TempDir scratch;
   std::string plan, logged, campaign;
   PoolDay() {
     plan = scratch.Write("plan.json", kRomeoFirstSurgeTrials);
     logged = scratch / "logged";  // what the pool's loggers wrote (the virtual pool here)
-    const ToolRun sim = RunTool("simulate --truth " + kCases + "truth.yaml --plan " + plan +
+    const ToolRun sim = RunTool("simulate --truth " + kRomeoCase + "truth.yaml --plan " + plan +
                                     " --out " + logged + " --seed 7",
                                 scratch);
     EXPECT_EQ(sim.status, 0) << sim.err;
     std::filesystem::create_directories(scratch / "campaign");
     campaign = scratch.Write(
         "campaign/campaign.yaml",
-        "vehicle: " + logged + "/vehicle.yaml\npool: " + kCases + "pool.yaml\ntrials: []\n");
+        "vehicle: " + logged + "/vehicle.yaml\npool: " + kRomeoCase + "pool.yaml\ntrials: []\n");
   }
   std::string Csv(const std::string& id) const { return logged + "/trials/" + id + ".csv"; }
 };
@@ -56,7 +54,7 @@ TEST(Log, CampaignGrownOneTrialAtATimeFeedsNext) {
     EXPECT_EQ(ReadText(day.scratch / ("campaign/trials/" + id + ".csv")), before);
     const std::string json = day.scratch / "next.json";
     const ToolRun next = RunTool(
-        "next " + day.campaign + " --pool " + kCases + "pool.yaml --dof surge --json " + json,
+        "next " + day.campaign + " --pool " + kRomeoCase + "pool.yaml --dof surge --json " + json,
         day.scratch);
     // 0 planned or converged, 1 the pool cannot host what is still needed, 5 stuck: each a
     // verdict on these trials; 2 or 3 would be the campaign refused or a crash.

@@ -17,7 +17,7 @@
 namespace uuvplan::cli_test {
 namespace {
 
-const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/tests/data/bad/cases";
+const std::string kBadCases = std::string(UUVPLAN_SOURCE_DIR) + "/tests/data/bad/cases";
 const std::string kData = std::string(UUVPLAN_SOURCE_DIR) + "/tests/data";
 
 struct BadCase {
@@ -41,7 +41,7 @@ std::vector<std::string> Split(const std::string& text, const std::string& separ
 }
 
 std::vector<BadCase> ReadCases() {
-  std::ifstream in(kCases + "/expectations.tsv");
+  std::ifstream in(kBadCases + "/expectations.tsv");
   std::vector<BadCase> cases;
   std::string line;
   while (std::getline(in, line)) {
@@ -54,7 +54,7 @@ std::vector<BadCase> ReadCases() {
 }
 
 std::string Substituted(std::string text, const std::string& out) {
-  for (const auto& [key, value] : {std::pair<std::string, std::string>{"{cases}", kCases},
+  for (const auto& [key, value] : {std::pair<std::string, std::string>{"{cases}", kBadCases},
                                    {"{data}", kData},
                                    {"{out}", out}}) {
     for (std::size_t at; (at = text.find(key)) != std::string::npos;)

@@ -20,8 +20,6 @@ using ::testing::HasSubstr;
 using ::testing::Not;
 namespace fs = std::filesystem;
 
-const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
-
 int Count(const std::string& text, const std::string& what) {
   int n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
@@ -92,13 +90,13 @@ void ExpectRenders(const std::string& dir, const std::vector<std::string>& secti
 TEST(ReportTool, RomeoScheduleReportRendersInChromium) {
   TempDir tmp;
   const std::string plan = tmp / "schedule.json";
-  const ToolRun s = RunTool("schedule '" + kCases + "vehicle.yaml' --pool '" + kCases +
+  const ToolRun s = RunTool("schedule '" + kRomeoCase + "vehicle.yaml' --pool '" + kRomeoCase +
                                 "pool.yaml' --dof surge --dof sway --json '" + plan + "'",
                             tmp);
   ASSERT_EQ(s.status, 0) << s.err;  // both hosted over the whole a priori box
   const ToolRun r =
-      RunTool("report '" + plan + "' --vehicle '" + kCases + "vehicle.yaml' --pool '" + kCases +
-                  "pool.yaml' -o '" + (tmp / "report") + "'",
+      RunTool("report '" + plan + "' --vehicle '" + kRomeoCase + "vehicle.yaml' --pool '" +
+                  kRomeoCase + "pool.yaml' -o '" + (tmp / "report") + "'",
               tmp);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string html = ReadText(tmp / "report/report.html");
@@ -144,13 +142,13 @@ TEST(ReportTool, ScheduleReportCarriesThePoolVerdictAndItsExitStatus) {
 TEST(ReportTool, ScheduleReportKeepsTheVerdictOfTheScheduleOptions) {
   TempDir tmp;
   const std::string plan = tmp / "schedule.json";
-  const ToolRun s = RunTool("schedule '" + kCases + "vehicle.yaml' --pool '" + kCases +
+  const ToolRun s = RunTool("schedule '" + kRomeoCase + "vehicle.yaml' --pool '" + kRomeoCase +
                                 "pool.yaml' --dof surge --max-duration 10 --json '" + plan + "'",
                             tmp);
   ASSERT_EQ(s.status, 1) << s.out << s.err;
   const auto report = [&](const std::string& file, const std::string& dir) {
-    return RunTool("report '" + file + "' --vehicle '" + kCases + "vehicle.yaml' --pool '" +
-                       kCases + "pool.yaml' -o '" + (tmp / dir) + "'",
+    return RunTool("report '" + file + "' --vehicle '" + kRomeoCase + "vehicle.yaml' --pool '" +
+                       kRomeoCase + "pool.yaml' -o '" + (tmp / dir) + "'",
                    tmp);
   };
   const ToolRun r = report(plan, "stored");
@@ -182,17 +180,17 @@ TEST(ReportTool, VirtualRomeoCampaignAfterLoopReport) {
   const std::string plan = tmp / "schedule.json", loop = tmp / "loop.json";
   // Heave in ROMEO's own pool is hosted for part of the a priori box (exit 1, the plan written:
   // the loop runs, docs/planning.md "The pool verdict").
-  const ToolRun s = RunTool("schedule '" + kCases + "vehicle.yaml' --pool '" + kCases +
+  const ToolRun s = RunTool("schedule '" + kRomeoCase + "vehicle.yaml' --pool '" + kRomeoCase +
                                 "pool.yaml' --dof heave --json '" + plan + "'",
                             tmp);
   ASSERT_EQ(s.status, 1) << s.out << s.err;
   ASSERT_THAT(s.out, HasSubstr("for PART of the a priori box"));
-  ASSERT_EQ(RunTool("simulate --truth '" + kCases + "truth-effects.yaml' --plan '" + plan +
+  ASSERT_EQ(RunTool("simulate --truth '" + kRomeoCase + "truth-effects.yaml' --plan '" + plan +
                         "' --out '" + (tmp / "campaign") + "'",
                     tmp)
                 .status,
             0);
-  const ToolRun l = RunTool("loop --truth '" + kCases + "truth.yaml' --pool '" + kCases +
+  const ToolRun l = RunTool("loop --truth '" + kRomeoCase + "truth.yaml' --pool '" + kRomeoCase +
                                 "pool.yaml' --dof heave --budget 6 --json '" + loop + "'",
                             tmp);
   ASSERT_TRUE(l.status == 0 || l.status == 4) << l.err;  // converged, or the budget spent
@@ -255,8 +253,8 @@ TEST(ReportTool, BadInputExitsTwoNamingFileOrKey) {
   EXPECT_THAT(r.err, HasSubstr("iterations[0].pool_time"));
   fs::create_directories(tmp / "full");
   tmp.Write("full/x.txt", "");
-  r = RunTool("report '" + plan + "' --vehicle '" + kCases + "vehicle.yaml' --pool '" + kCases +
-                  "pool.yaml' -o '" + (tmp / "full") + "'",
+  r = RunTool("report '" + plan + "' --vehicle '" + kRomeoCase + "vehicle.yaml' --pool '" +
+                  kRomeoCase + "pool.yaml' -o '" + (tmp / "full") + "'",
               tmp);
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.err, HasSubstr("not empty"));

@@ -131,8 +131,6 @@ int CheckTables(const std::string& command, const std::string& text) {
   return tables;
 }
 
-const std::string kCases = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/";
-
 // A short campaign of two DOFs: one steady run each way and a sine (seconds to identify).
 const char* kPlan = R"({"trials": [
   {"id": "surge_fwd", "dof": "surge", "kind": "steady", "duration": 20, "mapping": "surge-front", "force": 35},
@@ -144,10 +142,10 @@ const char* kPlan = R"({"trials": [
 
 TEST(TableUnits, EveryTableOfEveryCommandHasItsUnits) {
   const TempDir scratch;
-  const std::string romeo = kCases + "vehicle.yaml --pool " + kCases + "pool.yaml";
+  const std::string romeo = kRomeoCase + "vehicle.yaml --pool " + kRomeoCase + "pool.yaml";
   const std::string plan = scratch.Write("plan.json", kPlan);
   const std::string campaign = scratch / "campaign";
-  ASSERT_EQ(RunTool("simulate --truth " + kCases + "truth.yaml --plan " + plan + " --out " +
+  ASSERT_EQ(RunTool("simulate --truth " + kRomeoCase + "truth.yaml --plan " + plan + " --out " +
                         campaign + " --seed 5",
                     scratch)
                 .status,
@@ -156,8 +154,8 @@ TEST(TableUnits, EveryTableOfEveryCommandHasItsUnits) {
       {"schedule", "schedule " + romeo},
       {"check-pool", "check-pool " + romeo + " --plan " + plan},
       {"identify", "identify " + campaign},
-      {"next", "next " + campaign + " --pool " + kCases + "pool.yaml --dof surge"},
-      {"loop", "loop --truth " + kCases + "truth.yaml --pool " + kCases +
+      {"next", "next " + campaign + " --pool " + kRomeoCase + "pool.yaml --dof surge"},
+      {"loop", "loop --truth " + kRomeoCase + "truth.yaml --pool " + kRomeoCase +
                    "pool.yaml --dof yaw --budget 2 --seed 3"},
       {"diagnose", "diagnose " + campaign + " --dof surge"}};
   for (const auto& [command, args] : runs) {

@@ -152,10 +152,10 @@ void ExpectStaticMapChosen(const Finding& f) {
 // must name both with a gain on the validate trials, give the corrected map and σ for the
 // screen's lag, and `score` on the written models must reproduce the gains.
 TEST(DiagnosisModelTest, ThrustMapAndLagWrittenOutAndScored) {
-  testing::HiddenEffectCase c = testing::DrawHiddenEffectCase("thrust_map", 1);
+  uuvplan::testing::HiddenEffectCase c = uuvplan::testing::DrawHiddenEffectCase("thrust_map", 1);
   c.truth.dofs[c.dof].params["lag"] = c.effect_params["lag"] = 0.25 * c.time_constant_s;
-  const model::Campaign campaign = testing::RunHiddenEffectCase(c, 1);
-  DiagnoseOptions o = testing::DiagnoseOptionsFor(c);
+  const model::Campaign campaign = uuvplan::testing::RunHiddenEffectCase(c, 1);
+  DiagnoseOptions o = uuvplan::testing::DiagnoseOptionsFor(c);
   o.max_effects = 2;
   const DiagnosisResult r = Diagnose(campaign, o);
   for (const char* effect : {"thrust_map", "thruster_lag"}) {
@@ -262,11 +262,11 @@ TEST(DiagnosisModelTest, RomeoSwayEtaFound) {
 // not accepted and the test says why (never a NaN folded to 0). The result does not depend on
 // the number of threads.
 TEST(DiagnosisModelTest, UnscorableSplitIsSaidAndThreadsDoNotChangeTheResult) {
-  testing::HiddenEffectCase c = testing::DrawHiddenEffectCase("thruster_lag", 1);
+  uuvplan::testing::HiddenEffectCase c = uuvplan::testing::DrawHiddenEffectCase("thruster_lag", 1);
   c.trials = {c.trials[4]};  // the a_sine trial
   c.use = {model::TrialUse::kFit};
-  const model::Campaign campaign = testing::RunHiddenEffectCase(c, 1);
-  DiagnoseOptions o = testing::DiagnoseOptionsFor(c);
+  const model::Campaign campaign = uuvplan::testing::RunHiddenEffectCase(c, 1);
+  DiagnoseOptions o = uuvplan::testing::DiagnoseOptionsFor(c);
   o.max_effects = 1;
   o.threads = 1;
   const DiagnosisResult one = Diagnose(campaign, o);

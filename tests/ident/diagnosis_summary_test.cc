@@ -14,8 +14,9 @@ namespace uuvplan::ident {
 namespace {
 
 DiagnosisResult DiagnoseDraw(const std::optional<std::string>& effect, std::uint64_t seed) {
-  const testing::HiddenEffectCase c = testing::DrawHiddenEffectCase(effect, seed);
-  return Diagnose(testing::RunHiddenEffectCase(c, seed), testing::DiagnoseOptionsFor(c));
+  const uuvplan::testing::HiddenEffectCase c = uuvplan::testing::DrawHiddenEffectCase(effect, seed);
+  return Diagnose(uuvplan::testing::RunHiddenEffectCase(c, seed),
+                  uuvplan::testing::DiagnoseOptionsFor(c));
 }
 
 void ExpectFourStagesInOrder(const PipelineSummary& s) {
@@ -58,10 +59,11 @@ TEST(DiagnosisSummaryTest, CleanDataGivesNone) {
 
 TEST(DiagnosisSummaryTest, NoDiagnosableDofIsFailed) {
   // A DOF without trials has no standard model to fit: nothing could be diagnosed.
-  const testing::HiddenEffectCase c = testing::DrawHiddenEffectCase(std::nullopt, 1);
-  DiagnoseOptions o = testing::DiagnoseOptionsFor(c);
+  const uuvplan::testing::HiddenEffectCase c =
+      uuvplan::testing::DrawHiddenEffectCase(std::nullopt, 1);
+  DiagnoseOptions o = uuvplan::testing::DiagnoseOptionsFor(c);
   o.dofs = {c.dof == model::Dof::kYaw ? model::Dof::kSurge : model::Dof::kYaw};
-  const PipelineSummary s = Diagnose(testing::RunHiddenEffectCase(c, 1), o).Summary();
+  const PipelineSummary s = Diagnose(uuvplan::testing::RunHiddenEffectCase(c, 1), o).Summary();
   EXPECT_EQ(s.status, "failed");
   EXPECT_FALSE(s.message.empty());
   ASSERT_EQ(s.dofs.size(), 1u);

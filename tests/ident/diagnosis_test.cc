@@ -43,10 +43,11 @@ TEST_P(HiddenEffectTest, NamesTheHiddenEffectAndOnlyIt) {
   const std::optional<std::string> effect =
       e < 0 ? std::nullopt : std::optional<std::string>(names[e]);
   for (std::uint64_t seed = 1; seed <= kDrawsPerEffect; ++seed) {
-    const testing::HiddenEffectCase c = testing::DrawHiddenEffectCase(effect, seed);
-    const model::Campaign campaign = testing::RunHiddenEffectCase(c, seed);
-    const DiagnosisResult r = Diagnose(campaign, testing::DiagnoseOptionsFor(c));
-    const testing::Verdict v = testing::Judge(c, r);
+    const uuvplan::testing::HiddenEffectCase c =
+        uuvplan::testing::DrawHiddenEffectCase(effect, seed);
+    const model::Campaign campaign = uuvplan::testing::RunHiddenEffectCase(c, seed);
+    const DiagnosisResult r = Diagnose(campaign, uuvplan::testing::DiagnoseOptionsFor(c));
+    const uuvplan::testing::Verdict v = uuvplan::testing::Judge(c, r);
     EXPECT_TRUE(v.correct) << "seed " << seed << ": hidden " << effect.value_or("none")
                            << ", found [" << v.found << "]";
     if (effect) {
@@ -74,10 +75,11 @@ INSTANTIATE_TEST_SUITE_P(EveryEffectAndNone, HiddenEffectTest,
 // better, and must be rejected for it (docs/diagnosis.md §3).
 TEST(DiagnosisTest, SpuriousEffectsWithoutHeldOutGainAreRejected) {
   for (std::uint64_t seed : {21u, 24u}) {
-    const testing::HiddenEffectCase c = testing::DrawHiddenEffectCase("coupling", seed);
-    const DiagnosisResult r =
-        Diagnose(testing::RunHiddenEffectCase(c, seed), testing::DiagnoseOptionsFor(c));
-    const testing::Verdict v = testing::Judge(c, r);
+    const uuvplan::testing::HiddenEffectCase c =
+        uuvplan::testing::DrawHiddenEffectCase("coupling", seed);
+    const DiagnosisResult r = Diagnose(uuvplan::testing::RunHiddenEffectCase(c, seed),
+                                       uuvplan::testing::DiagnoseOptionsFor(c));
+    const uuvplan::testing::Verdict v = uuvplan::testing::Judge(c, r);
     EXPECT_TRUE(v.correct) << "seed " << seed << ": found [" << v.found << "]";
     int rejected = 0;
     for (const auto& t : r.tests) {
@@ -95,9 +97,10 @@ TEST(DiagnosisTest, SpuriousEffectsWithoutHeldOutGainAreRejected) {
 // beyond 3σ in 25 of 195 draws). Redrawing that noise in refits adds its covariance.
 TEST(DiagnosisTest, CouplingSigmaIncludesTheNoiseOfTheLoggedVelocities) {
   const std::uint64_t seed = 21;
-  const testing::HiddenEffectCase c = testing::DrawHiddenEffectCase("coupling", seed);
-  const model::Campaign campaign = testing::RunHiddenEffectCase(c, seed);
-  DiagnoseOptions with = testing::DiagnoseOptionsFor(c);
+  const uuvplan::testing::HiddenEffectCase c =
+      uuvplan::testing::DrawHiddenEffectCase("coupling", seed);
+  const model::Campaign campaign = uuvplan::testing::RunHiddenEffectCase(c, seed);
+  DiagnoseOptions with = uuvplan::testing::DiagnoseOptionsFor(c);
   DiagnoseOptions without = with;
   without.input_noise_replicates = 0;
   const DiagnosisResult a = Diagnose(campaign, with);

@@ -17,8 +17,8 @@
 namespace uuvplan::ident {
 namespace {
 
-using testing::AsvCoupledModel;
-using testing::AsvTruth;
+using uuvplan::testing::AsvCoupledModel;
+using uuvplan::testing::AsvTruth;
 
 // `truth`'s θ of the ASV's coupled model.
 Eigen::VectorXd TrueTheta(const model::Truth& truth) {
@@ -40,7 +40,8 @@ JointLsResult Fit(const std::vector<model::TrialLog>& logs) {
 // (the coupling's inertias to better than 10%).
 TEST(CoupledLeastSquares, RecoversTheAsvCase) {
   const model::Truth truth = AsvTruth();
-  const auto logs = testing::RunCoupledCampaign(truth, testing::CombinedModeDesigns(120.0), 11);
+  const auto logs =
+      uuvplan::testing::RunCoupledCampaign(truth, uuvplan::testing::CombinedModeDesigns(120.0), 11);
   const JointLsResult r = Fit(logs);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_TRUE(r.instrumental);
@@ -62,13 +63,13 @@ TEST(CoupledLeastSquares, RecoversTheAsvCase) {
 // 87% or fewer fall within 3σ) or when an estimate is biased by a σ or more.
 TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
   const model::Truth base = AsvTruth();
-  const auto designs = testing::CombinedModeDesigns(120.0);
+  const auto designs = uuvplan::testing::CombinedModeDesigns(120.0);
   int within = 0, total = 0;
   std::string outside;
   double inertia_z = 0.0;  // Σ z of m_u and m_v, the inertias the coupling is made of
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    const model::Truth truth = testing::RandomCoupledTruth(base, seed);
-    const auto logs = testing::RunCoupledCampaign(truth, designs, 1000 + seed);
+    const model::Truth truth = uuvplan::testing::RandomCoupledTruth(base, seed);
+    const auto logs = uuvplan::testing::RunCoupledCampaign(truth, designs, 1000 + seed);
     const JointLsResult r = Fit(logs);
     ASSERT_TRUE(r.ok()) << "seed " << seed << ": " << r.message;
     const Eigen::VectorXd want = TrueTheta(truth);
@@ -93,7 +94,8 @@ TEST(CoupledLeastSquares, RandomCouplingTruthsWithin3SigmaOver10Seeds) {
 }
 
 TEST(CoupledLeastSquares, NamesTheMissingColumn) {
-  auto logs = testing::RunCoupledCampaign(AsvTruth(), testing::CombinedModeDesigns(60.0), 3);
+  auto logs = uuvplan::testing::RunCoupledCampaign(AsvTruth(),
+                                                   uuvplan::testing::CombinedModeDesigns(60.0), 3);
   logs[1].velocity[model::Index(model::Dof::kSway)].clear();
   const JointLsResult r = Fit(logs);
   EXPECT_FALSE(r.ok());
@@ -105,8 +107,8 @@ TEST(CoupledLeastSquares, NamesTheMissingColumn) {
 // inertia towards 0 (surge.m 0.31 ± 0.05 kg, status ok) or, through the instruments, to NaN:
 // a failure naming the DOF.
 TEST(CoupledLeastSquares, ATrialSetThatPushesNoSwayFailsNamingIt) {
-  const auto designs = testing::CombinedModeDesigns(120.0);
-  const auto logs = testing::RunCoupledCampaign(AsvTruth(), {designs[0]}, 5);  // surge+yaw
+  const auto designs = uuvplan::testing::CombinedModeDesigns(120.0);
+  const auto logs = uuvplan::testing::RunCoupledCampaign(AsvTruth(), {designs[0]}, 5);  // surge+yaw
   const JointLsResult r = Fit(logs);
   EXPECT_EQ(r.status, JointLsStatus::kTooFewData);
   EXPECT_NE(r.message.find("no fit trial pushes sway"), std::string::npos) << r.message;
@@ -116,11 +118,11 @@ TEST(CoupledLeastSquares, ATrialSetThatPushesNoSwayFailsNamingIt) {
 // it pushes, as a user's campaign would list it): the first run fitted, a second run (other
 // noise) held out.
 model::Campaign OneDofCampaignOfCombinedModes(const model::Truth& truth) {
-  const auto designs = testing::CombinedModeDesigns(120.0);
+  const auto designs = uuvplan::testing::CombinedModeDesigns(120.0);
   model::Campaign c;
   c.vehicle = truth.vehicle;
   for (int run = 0; run < 2; ++run) {
-    const auto logs = testing::RunCoupledCampaign(truth, designs, 11 + run);
+    const auto logs = uuvplan::testing::RunCoupledCampaign(truth, designs, 11 + run);
     for (std::size_t i = 0; i < designs.size(); ++i) {
       for (const model::TrialDesign& in : designs[i].inputs) {
         model::TrialEntry e;

@@ -42,7 +42,7 @@ TEST(ConstantSpeedFitTest, SonarSteadySpeedBelow3PercentAndCalibrated) {
 }
 
 // True steady speed of the ROMEO surge model: k·v + kq·v|v| = η·φ + bias.
-double SteadySpeed(double k, double kq, double force) {
+double SteadySpeedOf(double k, double kq, double force) {
   const double a = std::abs(force);
   const double v = (-k + std::sqrt(k * k + 4 * kq * a)) / (2 * kq);
   return force < 0 ? -v : v;
@@ -69,7 +69,7 @@ TEST(SteadyDetectionTest, TransientTailIsFittedNotIgnored) {
           const std::string eta =
               "eta." + c.vehicle.mappings[pt.mapping].name + (pt.phi >= 0 ? ".pos" : ".neg");
           const double e = p.count(eta) ? p.at(eta) : 1.0;
-          const double v = SteadySpeed(p.at("k"), p.at("kq"), e * pt.phi + p.at("bias"));
+          const double v = SteadySpeedOf(p.at("k"), p.at("kq"), e * pt.phi + p.at("bias"));
           const double z = (pt.xi - v) / pt.sigma_xi;
           sz += z;
           sz2 += z * z;

@@ -25,8 +25,8 @@ namespace {
 // effects").
 TEST(EffectDesign, PredictedSigmaOfALagIsWhatMonteCarloGives) {
   const std::string frame = std::string(UUVPLAN_SOURCE_DIR) + "/cases/payload60/";
-  const testing::LagCase c = testing::MakeFrameLagCase(io::ReadTruth(frame + "frame/truth.yaml"),
-                                                       io::ReadPool(frame + "pool.yaml"), 0.15);
+  const uuvplan::testing::LagCase c = uuvplan::testing::MakeFrameLagCase(
+      io::ReadTruth(frame + "frame/truth.yaml"), io::ReadPool(frame + "pool.yaml"), 0.15);
   ScheduleOptions o;
   o.dofs = {model::Dof::kSurge};
   const ScheduleResult plan = PlanSchedule(c.identified, c.pool, o);
@@ -36,7 +36,8 @@ TEST(EffectDesign, PredictedSigmaOfALagIsWhatMonteCarloGives) {
   const double sigma = predicted.at(model::param::kLag);
   std::vector<model::TrialDesign> designs;
   for (const PlannedTrial& t : plan.schedule.trials) designs.push_back(t.design);
-  const std::vector<testing::LagEstimate> lags = testing::IdentifiedLags(c, designs, 1, 10);
+  const std::vector<uuvplan::testing::LagEstimate> lags =
+      uuvplan::testing::IdentifiedLags(c, designs, 1, 10);
   ASSERT_EQ(lags.size(), 10u);
   double mean = 0.0, ss = 0.0;
   for (const auto& x : lags) mean += x.value / lags.size();

@@ -24,18 +24,18 @@ std::string CasePath(const std::string& vehicle, const std::string& file) {
 }
 
 model::Truth UrisWithLagAndThrustMap() {
-  return testing::WithLagAndThrustMap(io::ReadTruth(CasePath("uris", "truth.yaml")), Dof::kSurge,
-                                      0.15, -0.3, 10.0);
+  return uuvplan::testing::WithLagAndThrustMap(io::ReadTruth(CasePath("uris", "truth.yaml")),
+                                               Dof::kSurge, 0.15, -0.3, 10.0);
 }
 
 // `loop --diagnose` on URIS surge with the two hidden effects, one run per seed for every test.
-const testing::DiagnosedLoopOutcome& UrisDiagnosedLoop(std::uint64_t seed) {
-  static std::map<std::uint64_t, testing::DiagnosedLoopOutcome> runs;
+const uuvplan::testing::DiagnosedLoopOutcome& UrisDiagnosedLoop(std::uint64_t seed) {
+  static std::map<std::uint64_t, uuvplan::testing::DiagnosedLoopOutcome> runs;
   auto it = runs.find(seed);
   if (it == runs.end()) {
-    it = runs.emplace(seed, testing::RunDiagnosedLoop(UrisWithLagAndThrustMap(),
-                                                      io::ReadPool(CasePath("uris", "pool.yaml")),
-                                                      Dof::kSurge, seed))
+    it = runs.emplace(seed, uuvplan::testing::RunDiagnosedLoop(
+                                UrisWithLagAndThrustMap(),
+                                io::ReadPool(CasePath("uris", "pool.yaml")), Dof::kSurge, seed))
              .first;
   }
   return it->second;
@@ -48,7 +48,7 @@ const testing::DiagnosedLoopOutcome& UrisDiagnosedLoop(std::uint64_t seed) {
 // ~3–5 s per seed.
 TEST(LoopDiagnoseTest, UrisSurgeNamesLagAndThrustMapAndEndsWithinThreeSigma) {
   for (std::uint64_t seed : {1, 6}) {
-    const testing::DiagnosedLoopOutcome& out = UrisDiagnosedLoop(seed);
+    const uuvplan::testing::DiagnosedLoopOutcome& out = UrisDiagnosedLoop(seed);
     SCOPED_TRACE("seed " + std::to_string(seed) + ": " + out.Line());
     EXPECT_TRUE(out.result.converged) << out.result.message;
     EXPECT_EQ(out.effects, (std::set<std::string>{"thruster_lag", "thrust_map"}));
@@ -66,7 +66,7 @@ TEST(LoopDiagnoseTest, UrisSurgeNamesLagAndThrustMapAndEndsWithinThreeSigma) {
 // held-out gain a finding needs (DiagnoseOptions::min_gain) and its parameters (seed 1's run
 // of the test above).
 TEST(LoopDiagnoseTest, TheEffectsEnterTheIdentificationWithTheirGain) {
-  const testing::DiagnosedLoopOutcome& out = UrisDiagnosedLoop(1);
+  const uuvplan::testing::DiagnosedLoopOutcome& out = UrisDiagnosedLoop(1);
   const ident::DofIdentification* id = out.result.estimates.Find(Dof::kSurge);
   ASSERT_NE(id, nullptr);
   EXPECT_TRUE(id->structure.Has(model::param::kLag));
