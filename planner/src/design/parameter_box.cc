@@ -297,6 +297,7 @@ void ClampToLeastInertia(const model::Vehicle& vehicle, model::Dof dof, const Pa
       }
       return;
     }
+    const double top = axis.hi * nominal;
     for (const BoxAxis& a : apriori.axes) {
       if (a.name == "m") axis = a;
     }
@@ -305,9 +306,9 @@ void ClampToLeastInertia(const model::Vehicle& vehicle, model::Dof dof, const Pa
       const std::string unit = model::Unit(mass, dof);
       notes->push_back(std::string(model::DofName(dof)) + ": the estimate of m (" +
                        model::Significant(nominal, 3) + " " + unit + ", box up to " +
-                       model::Significant(axis.hi * nominal, 3) +
-                       ") lies below the least physical " + model::Significant(least, 3) + " " +
-                       unit + ": planned over the a priori m of the vehicle file instead");
+                       model::Significant(top, 3) + ") lies below the least physical " +
+                       model::Significant(least, 3) + " " + unit +
+                       ": planned over the m of the vehicle file instead");
     }
     return;
   }

@@ -15,6 +15,7 @@
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/parallel.h"
 #include "uuvplan/model/util/text.h"
+#include "uuvplan/planner/design/parameter_box.h"
 #include "uuvplan/planner/design/thrust_limits.h"
 
 namespace uuvplan::planner::internal {
@@ -38,12 +39,14 @@ std::string EntryId(const model::TrialEntry& e) {
 // as insignificant. An estimate is left out (the design keeps the a priori value, without prior
 // information on it) when it is an a priori fallback (held, not reliable: never information),
 // insignificant (percentile error above `max_percent`: its ±2σ box would span zero) or
-// non-physical (NonPhysical; m above twice the upper a priori inertia bound): a diverged fit
-// must not steer the design, e.g. to a time constant of milliseconds.
+// non-physical (NonPhysical; m above twice the upper a priori inertia bound or below
+// LeastInertia): a diverged fit must not steer the design, e.g. to a time constant of
+// milliseconds (which the planner refuses, DofPlanningProblem).
 void DesignInputs(const model::Vehicle& vehicle, const ident::DofIdentification& id,
                   double max_percent, ParameterValues* estimates, std::vector<std::string>* names,
                   Eigen::MatrixXd* covariance, std::vector<std::string>* notes) {
   const double m_max = 2.0 * vehicle.InertiaBounds(id.dof)[1];
+  const double m_min = LeastInertia(vehicle, id.dof);
   std::vector<int> idx;
   for (std::size_t j = 0; j < id.params.size(); ++j) {
     const ident::ParameterEstimate& p = id.params[j];
@@ -63,6 +66,12 @@ void DesignInputs(const model::Vehicle& vehicle, const ident::DofIdentification&
     if (wrong.empty() && p.name == model::param::kMass && p.value > m_max) {
       wrong = "m = " + model::Significant(p.value, 3) +
               " is implausible (above twice the a priori bound)";
+    }
+    if (wrong.empty() && p.name == model::param::kMass && p.value < m_min) {
+      wrong = "m = " + model::Significant(p.value, 3) + " is implausible (below " +
+              model::Significant(m_min, 3) + " " + model::Unit(p.name, id.dof) +
+              ", the least physical inertia: the dry mass, or half the vehicle file's rigid "
+              "inertia for a rotation)";
     }
     if (!wrong.empty()) {
       notes->push_back(wrong + ": the design keeps its a priori value");
