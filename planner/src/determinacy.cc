@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "uuvplan/model/effects.h"
+#include "uuvplan/model/mapping.h"
 #include "uuvplan/model/util/numbers.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/criteria.h"
@@ -86,10 +87,12 @@ void ConsiderSine(const DofPlanningProblem& ctx, SineDesignOptions so,
   *best = {sn.trial, sn.check, sn.information, c};
 }
 
+// Every steady leg from rest, or only those in `mapping`'s direction `sign` when one is given.
 void ConsiderSteadyLegs(const DofPlanningProblem& ctx, const SteadyDesignOptions& o,
                         const std::vector<Eigen::MatrixXd>& info, const std::string& id,
-                        CandidateTrial* best) {
+                        CandidateTrial* best, const std::string& mapping = "", int sign = 0) {
   for (const SteadyLeg& leg : MakeSteadyCandidates(ctx, o).legs) {
+    if (!mapping.empty() && (leg.mapping != mapping || leg.force * sign <= 0)) continue;
     const model::TrialDesign d = LegDesign(leg, ctx.dof(), id);
     std::vector<Eigen::MatrixXd> m = ctx.Information(d);
     const double c = RobustD(ctx, info, m);
@@ -254,17 +257,23 @@ CompletionResult CompleteWithLoopFamilies(const DofPlanningProblem& ctx,
     if (det.determined) break;
     const std::string id = id_prefix + "-" + std::to_string(n);
     CandidateTrial best;
-    // An undetermined η first, in its own direction (the loop's step 2), else D on all.
+    // An undetermined η first, by the loop's families in its own direction (the loop's step 2:
+    // its sine restricted to that direction, or a steady leg pushing that way), else D on all.
     for (const std::string& u : det.undetermined) {
       if (!model::StartsWith(u, model::param::kEtaPrefix) || std::isfinite(best.criterion))
         continue;
       const std::string name = u.substr(0, u.find(' '));
-      const std::string rest = name.substr(std::string(model::param::kEtaPrefix).size());
+      const auto eta = model::ParseEtaQualifier(
+          std::string_view(name).substr(std::string_view(model::param::kEtaPrefix).size()));
+      if (!eta) continue;
+      const std::string& mapping = eta->first;
+      const int sign = eta->second == model::Direction::kPos ? +1 : -1;
       SineDesignOptions so = sine;
-      so.mappings = {rest.substr(0, rest.rfind('.'))};
-      so.sign = rest.substr(rest.rfind('.') + 1) == "pos" ? +1 : -1;
+      so.mappings = {mapping};
+      so.sign = sign;
       so.open_water_only = false;
       ConsiderSine(ctx, so, *info, id, &best);
+      ConsiderSteadyLegs(ctx, steady, *info, id, &best, mapping, sign);
     }
     const bool only_etas = std::all_of(
         det.undetermined.begin(), det.undetermined.end(),

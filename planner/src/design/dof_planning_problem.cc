@@ -50,6 +50,7 @@ bool PlannerOptions::IsValid(std::string* error) const {
       .Require(pause_s >= 0, "pause_s", pause_s, ">= 0")
       .Require(max_step_s > 0, "max_step_s", max_step_s, "> 0")
       .Require(least_time_constant_s >= 0, "least_time_constant_s", least_time_constant_s, ">= 0")
+      .Require(samples_per_period >= 2, "samples_per_period", samples_per_period, ">= 2 (Nyquist)")
       .Require(check_grid >= 2, "check_grid", check_grid, ">= 2")
       .Require(box.drag_sigmas >= 0, "box.drag_sigmas", box.drag_sigmas, ">= 0")
       .Require(threads >= 0, "threads", threads, ">= 0 (0: one per core)");
@@ -168,6 +169,14 @@ DofPlanningProblem::DofPlanningProblem(const model::Vehicle& vehicle, const mode
   for (auto* spec : {&design_sensors_.position, &design_sensors_.velocity}) {
     if (*spec) **spec = AtMostRate(**spec, 1.0 / step_s_);
   }
+}
+
+double DofPlanningProblem::ShortestPeriod() const {
+  double rate = 0.0;
+  for (const auto* spec : {&sensors_.position, &sensors_.velocity}) {
+    if (*spec) rate = std::max(rate, (*spec)->rate_hz);
+  }
+  return rate > 0 ? options_.samples_per_period / rate : 0.0;
 }
 
 ForceRange DofPlanningProblem::ForceRangeFor(int mapping, int sign) const {

@@ -204,10 +204,15 @@ std::array<double, 2> OptimalFrequencyRange(const DofPlanningProblem& ctx, doubl
 }  // namespace
 
 std::array<double, 2> SineFrequencyRange(const DofPlanningProblem& ctx, double force_abs,
-                                         double min_periods, double duration) {
+                                         double min_periods, double duration, int harmonics) {
   std::array<double, 2> w = OptimalFrequencyRange(ctx, force_abs);
   if (min_periods > 0) w[0] = std::max(w[0], 2 * M_PI * min_periods / duration);
   if (w[1] <= w[0]) w[1] = 2.0 * w[0];
+  const double period = ctx.ShortestPeriod();
+  if (period > 0 && harmonics > 0) {
+    w[1] = std::min(w[1], 2 * M_PI / (period * harmonics));
+    w[0] = std::min(w[0], 0.5 * w[1]);  // min_periods is then the designs' constraint
+  }
   return w;
 }
 
@@ -350,6 +355,24 @@ void Score(const DofPlanningProblem& ctx, const SineDesignOptions& o,
   result->criterion = Aggregate(ctx.options().robustness, result->criterion_per_point);
 }
 
+// A sine shortened to fit the check grid, with fewer than min_periods periods left: ω raised
+// until they fit the duration that fits at that ω (the fixed point of ω = 2π·min_periods /
+// T_fit(ω), reached by iterating it: T_fit changes little with ω — measured elasticity 0.16 —
+// as the travel is mostly the offset's drift). Bounded by the sensors' shortest period; a wave
+// that still has too few periods is left for SetStatus to refuse.
+void RestoreLeastPeriods(const DofPlanningProblem& ctx, const SineDesignOptions& o,
+                         model::TrialDesign* d) {
+  const double longest = d->duration;
+  const double period = ctx.ShortestPeriod();
+  const double omega_max = period > 0 ? 2 * M_PI / period : std::numeric_limits<double>::infinity();
+  for (int step = 0; step < 8 && d->duration < o.min_periods * 2 * M_PI / d->omega; ++step) {
+    const double omega = o.min_periods * 2 * M_PI / d->duration * (1.0 + 1e-4);
+    if (omega > omega_max) return;
+    d->omega = omega;
+    d->duration = LongestFittingDuration(ctx, *d, longest) * (1.0 - 1e-6);
+  }
+}
+
 // Hard constraints over the check grid; the design points bound the travel when it is
 // monotone in m and drag, else shorten the trial until the check grid fits too.
 void CheckAndFit(const DofPlanningProblem& ctx, const SineDesignOptions& o,
@@ -359,6 +382,7 @@ void CheckAndFit(const DofPlanningProblem& ctx, const SineDesignOptions& o,
   if (!result->check.feasible && o.fixed_duration_s == 0 && std::isfinite(ctx.available()) &&
       result->check.span > ctx.available()) {
     d.duration = LongestFittingDuration(ctx, d, d.duration) * (1.0 - 1e-6);
+    if (d.kind == model::TrialKind::kSine) RestoreLeastPeriods(ctx, o, &d);
     result->check = ctx.Check(d);
     Score(ctx, o, prior, result);
   }

@@ -10,12 +10,12 @@ namespace uuvplan::planner {
 
 SineFamilyObjective::SineFamilyObjective(const DofPlanningProblem& ctx, const SineDesignOptions& o,
                                          const std::vector<Eigen::MatrixXd>& prior,
-                                         double force_abs, double duration)
+                                         double force_abs, double duration, int harmonics)
     : ctx_(ctx),
       criterion_(o.criterion),
       prior_(prior),
       interest_(ctx.Indices(o.interest)),
-      omega_(SineFrequencyRange(ctx, force_abs, o.min_periods, duration)) {}
+      omega_(SineFrequencyRange(ctx, force_abs, o.min_periods, duration, harmonics)) {}
 
 double SineFamilyObjective::Criteria(const DofPlanningProblem::TrialModel& tm,
                                      const model::Excitation& input, double duration,

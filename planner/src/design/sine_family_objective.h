@@ -18,9 +18,11 @@ namespace uuvplan::planner {
 class SineFamilyObjective {
  public:
   /// `force_abs`: the force level whose optimal frequencies span ω; `duration`: the longest
-  /// trial (s), which must hold min_periods periods of ω_lo.
+  /// trial (s), which must hold min_periods periods of ω_lo; `harmonics`: the wave's highest
+  /// harmonic of ω (the sensors bound it, SineFrequencyRange).
   SineFamilyObjective(const DofPlanningProblem& ctx, const SineDesignOptions& o,
-                      const std::vector<Eigen::MatrixXd>& prior, double force_abs, double duration);
+                      const std::vector<Eigen::MatrixXd>& prior, double force_abs, double duration,
+                      int harmonics = 1);
 
   /// The trial `input` of `duration` s in its model `tm`: the criterion at design point j into
   /// phi[j]. Returns the span of its position over the design points (m or rad).

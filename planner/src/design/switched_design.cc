@@ -49,6 +49,20 @@ std::array<double, 2> WaveRange(const std::vector<model::SineComponent>& c, doub
   return {lo, hi};
 }
 
+// The highest harmonic of ω in a family's wave, for the sensors' bound on ω
+// (SineFrequencyRange); 0 for the square, whose information is in its switches, not in the
+// shape of a period (its pieces are at least kShortestSegment long).
+int WaveHarmonics(model::InputFamily family) {
+  switch (family) {
+    case model::InputFamily::kMultisine:
+      return kMultisineHarmonics;
+    case model::InputFamily::kSwitchedSquare:
+      return 0;
+    default:
+      return 1;
+  }
+}
+
 class SwitchedProblem {
  public:
   SwitchedProblem(const DofPlanningProblem& ctx, model::InputFamily family,
@@ -56,8 +70,8 @@ class SwitchedProblem {
                   const SwitchPair& pair, double duration)
       : ctx_(ctx),
         family_(family),
-        objective_(ctx, o, prior, 0.5 * (pair.pos_range.max_abs + pair.neg_range.max_abs),
-                   duration),
+        objective_(ctx, o, prior, 0.5 * (pair.pos_range.max_abs + pair.neg_range.max_abs), duration,
+                   WaveHarmonics(family)),
         pair_(pair),
         duration_(duration) {
     if (pair.one_way == 0) {

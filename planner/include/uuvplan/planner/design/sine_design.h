@@ -93,9 +93,11 @@ SineDesignResult DesignSine(const DofPlanningProblem& ctx, const SineDesignOptio
 
 /// The frequency range [ω_lo, ω_hi] of the design variable v for a force level: ref 000
 /// eq. 14's ω_opt over the box, from a quarter of the least to 4 times the largest; ω_lo
-/// raised so that `min_periods` periods fit in `duration` s (ω_hi then at least 2·ω_lo).
+/// raised so that `min_periods` periods fit in `duration` s (ω_hi then at least 2·ω_lo); ω_hi
+/// at most that of the shortest period the sensors allow (ctx.ShortestPeriod()) for the
+/// highest of `harmonics` harmonics of ω (ω_lo then at most ω_hi/2; 0: no such bound).
 std::array<double, 2> SineFrequencyRange(const DofPlanningProblem& ctx, double force_abs,
-                                         double min_periods, double duration);
+                                         double min_periods, double duration, int harmonics = 1);
 
 /// The longest duration (<= t_max) for which a trial keeps its travel over the box inside
 /// ctx.available(); t_max when the pool does not limit it (rotations).
