@@ -14,7 +14,8 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kTruth = std::string(UUVPLAN_SOURCE_DIR) + "/tests/data/io/truth.yaml";
-const std::string kPlan = std::string(UUVPLAN_SOURCE_DIR) + "/tests/data/bad/cases/plan_good.json";
+const std::string kGoodPlanPath =
+    std::string(UUVPLAN_SOURCE_DIR) + "/tests/data/bad/cases/plan_good.json";
 
 // Four `simulate --out X` at once: one writes X; every other one either fails naming the
 // other run (it started while the winner held X) or, had it won, wrote the same campaign. A
@@ -28,7 +29,7 @@ TEST(ConcurrentOutput, FourSimulateRunsOnOneOutAllButOneRefused) {
   for (int i = 0; i < 4; ++i) {
     const std::string n = std::to_string(i);
     script += "('" + std::string(UUVPLAN_BINARY) + "' simulate --truth '" + kTruth + "' --plan '" +
-              kPlan + "' --out '" + out + "' >/dev/null 2>'" + (dir / ("err" + n)) +
+              kGoodPlanPath + "' --out '" + out + "' >/dev/null 2>'" + (dir / ("err" + n)) +
               "'; echo $? >'" + (dir / ("rc" + n)) + "') & ";
   }
   ASSERT_EQ(std::system((script + "wait").c_str()), 0);  // std::system runs /bin/sh

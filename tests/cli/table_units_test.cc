@@ -132,7 +132,7 @@ int CheckTables(const std::string& command, const std::string& text) {
 }
 
 // A short campaign of two DOFs: one steady run each way and a sine (seconds to identify).
-const char* kPlan = R"({"trials": [
+const char* kPlanJson = R"({"trials": [
   {"id": "surge_fwd", "dof": "surge", "kind": "steady", "duration": 20, "mapping": "surge-front", "force": 35},
   {"id": "surge_back", "dof": "surge", "kind": "steady", "duration": 20, "mapping": "surge-rear", "force": -35},
   {"id": "surge_sine", "dof": "surge", "kind": "sine", "duration": 40, "mapping": "surge-front",
@@ -143,7 +143,7 @@ const char* kPlan = R"({"trials": [
 TEST(TableUnits, EveryTableOfEveryCommandHasItsUnits) {
   const TempDir scratch;
   const std::string romeo = kRomeoCase + "vehicle.yaml --pool " + kRomeoCase + "pool.yaml";
-  const std::string plan = scratch.Write("plan.json", kPlan);
+  const std::string plan = scratch.Write("plan.json", kPlanJson);
   const std::string campaign = scratch / "campaign";
   ASSERT_EQ(RunTool("simulate --truth " + kRomeoCase + "truth.yaml --plan " + plan + " --out " +
                         campaign + " --seed 5",

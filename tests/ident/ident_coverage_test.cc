@@ -96,7 +96,7 @@ TEST_P(CoverageTest, IntervalsCoverTheTruthAndSigmaMatchesTheSpread) {
 
 // The same campaigns with AR(1) sensor noise of ρ = 0.9 (the worst case): every
 // estimator's σ must stay calibrated (covariance.h, docs/identification.md).
-std::vector<McCase> Cases() {
+std::vector<McCase> CoverageCases() {
   std::vector<McCase> white = {{"romeo_surge", "romeo", testing::RomeoSurgeDesigns()},
                                {"romeo_heave", "romeo", testing::RomeoHeaveDesigns()},
                                {"romeo_yaw", "romeo", testing::RomeoYawDesigns()},
@@ -111,7 +111,7 @@ std::vector<McCase> Cases() {
   return all;
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, CoverageTest, ::testing::ValuesIn(Cases()),
+INSTANTIATE_TEST_SUITE_P(Cases, CoverageTest, ::testing::ValuesIn(CoverageCases()),
                          [](const ::testing::TestParamInfo<McCase>& info) {
                            return info.param.name;
                          });

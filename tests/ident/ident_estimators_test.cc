@@ -25,7 +25,7 @@ namespace {
 using model::Dof;
 
 // Steady speed of m·dξ/dt = −k·ξ − kq·ξ|ξ| + F (kq may be 0).
-double SteadySpeed(double k, double kq, double force) {
+double TrueSteadySpeed(double k, double kq, double force) {
   if (kq == 0) return force / k;
   const double a = std::abs(force);
   const double v = (-k + std::sqrt(k * k + 4 * kq * a)) / (2 * kq);
@@ -57,8 +57,8 @@ TEST(SteadyStateFitTest, HeaveWithBallastStepsEq20IsExactOnNoiseFreeSpeeds) {
     for (double phi : {30.0, -30.0, 60.0, -60.0}) {
       const double eta = phi < 0 ? p.at("eta.vertical-all.neg") : 1.0;
       const double f = eta * phi + p.at("bias") + i * p.at("bias_step");
-      pts.push_back(Point(truth.vehicle, "vertical-all", phi, SteadySpeed(p.at("k"), p.at("kq"), f),
-                          1e-3, i));
+      pts.push_back(Point(truth.vehicle, "vertical-all", phi,
+                          TrueSteadySpeed(p.at("k"), p.at("kq"), f), 1e-3, i));
     }
   }
   SteadyStateOptions o;
@@ -82,7 +82,7 @@ std::vector<SteadyPoint> RomeoYawLegs(const model::Vehicle& v, double k, double 
   for (const char* m : {"yaw-fl-rr", "yaw-fr-rl"}) {
     for (double phi : {2.0, -2.0, 3.5, -3.5, 5.0, -5.0}) {
       const bool open = (std::string(m) == "yaw-fl-rr") == (phi > 0);
-      const double xi = SteadySpeed(k, kq, (open ? 1.0 : 0.68) * phi);
+      const double xi = TrueSteadySpeed(k, kq, (open ? 1.0 : 0.68) * phi);
       const double sigma = 0.03 * std::abs(xi);
       pts.push_back(Point(v, m, phi, xi + sigma * n01(rng), sigma));
     }

@@ -26,7 +26,7 @@ struct Case {
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
-std::vector<Case> Cases() {
+std::vector<Case> RecoveryCases() {
   using U = model::TrialUse;
   auto with_validate = [](std::vector<model::TrialDesign> d, model::TrialDesign v) {
     d.push_back(std::move(v));
@@ -110,7 +110,7 @@ TEST_P(RecoveryTest, EveryEstimateWithin3SigmaOfTheTruth) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, RecoveryTest, ::testing::ValuesIn(Cases()),
+INSTANTIATE_TEST_SUITE_P(Cases, RecoveryTest, ::testing::ValuesIn(RecoveryCases()),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            return info.param.name;
                          });

@@ -25,7 +25,7 @@ namespace {
 using model::Dof;
 
 // Steady speed of 0 = −k·ξ − kq·ξ|ξ| + F.
-double SteadySpeed(double k, double kq, double force) {
+double RowSteadySpeed(double k, double kq, double force) {
   const double a = std::abs(force);
   const double v = kq == 0 ? a / k : (-k + std::sqrt(k * k + 4 * kq * a)) / (2 * kq);
   return force < 0 ? -v : v;
@@ -74,7 +74,7 @@ void CheckRow(const model::Vehicle& v, Dof dof, const std::vector<Legs>& legs, c
       SteadyPoint p;
       p.mapping = v.MappingIndex(l.mapping);
       p.phi = phi;
-      p.xi = SteadySpeed(row.k, row.kq, l.eta * phi);
+      p.xi = RowSteadySpeed(row.k, row.kq, l.eta * phi);
       p.sigma_xi = 1e-4;
       pts.push_back(p);
     }

@@ -8,15 +8,16 @@
 namespace uuvplan::planner {
 namespace {
 
-constexpr double kTol = 1e-12;  // closed forms on 2×2 / 3×3 matrices: rounding only
+constexpr double kRoundingTol = 1e-12;  // closed forms on 2×2 / 3×3 matrices: rounding only
 
 TEST(Criteria, DOnADiagonalMatrixIsTheSumOfLogs) {
   Eigen::MatrixXd M = Eigen::Vector3d(4.0, 9.0, 25.0).asDiagonal();
-  EXPECT_NEAR(EvaluateCriterion(M, Criterion::kD, {}).value, std::log(4.0 * 9.0 * 25.0), kTol);
+  EXPECT_NEAR(EvaluateCriterion(M, Criterion::kD, {}).value, std::log(4.0 * 9.0 * 25.0),
+              kRoundingTol);
   // A: -log(1/4 + 1/9 + 1/25); E: log 4.
   EXPECT_NEAR(EvaluateCriterion(M, Criterion::kA, {}).value,
-              -std::log(1 / 4.0 + 1 / 9.0 + 1 / 25.0), kTol);
-  EXPECT_NEAR(EvaluateCriterion(M, Criterion::kE, {}).value, std::log(4.0), kTol);
+              -std::log(1 / 4.0 + 1 / 9.0 + 1 / 25.0), kRoundingTol);
+  EXPECT_NEAR(EvaluateCriterion(M, Criterion::kE, {}).value, std::log(4.0), kRoundingTol);
 }
 
 TEST(Criteria, DsMarginalisesTheNuisance) {
@@ -25,16 +26,16 @@ TEST(Criteria, DsMarginalisesTheNuisance) {
   Eigen::Matrix2d M;
   M << 4.0, 1.0, 1.0, 2.0;
   const CriterionValue v = EvaluateCriterion(M, Criterion::kDs, {0});
-  EXPECT_NEAR(v.value, std::log(3.5), kTol);
+  EXPECT_NEAR(v.value, std::log(3.5), kRoundingTol);
   EXPECT_FALSE(v.singular);
-  EXPECT_NEAR(std::exp(v.value), 1.0 / M.inverse()(0, 0), kTol);
+  EXPECT_NEAR(std::exp(v.value), 1.0 / M.inverse()(0, 0), kRoundingTol);
 }
 
 TEST(Criteria, UninformedParametersAreDroppedAndFlagged) {
   // θ_2 has no information (a direction the trial never uses): D is that of the 2×2 block.
   Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
   M.topLeftCorner<2, 2>() << 4.0, 1.0, 1.0, 2.0;
-  EXPECT_NEAR(EvaluateCriterion(M, Criterion::kD, {}).value, std::log(7.0), kTol);
+  EXPECT_NEAR(EvaluateCriterion(M, Criterion::kD, {}).value, std::log(7.0), kRoundingTol);
   EXPECT_EQ(InformedParameters(M), (std::vector<int>{0, 1}));
   // Asking for θ_2 as interest floors the value and says so.
   const CriterionValue v = EvaluateCriterion(M, Criterion::kDs, {2});
@@ -60,7 +61,7 @@ TEST(Criteria, RelativeInformationGivesPercentileErrors) {
   const Eigen::Vector2d theta(500.0, 0.0);
   const Eigen::MatrixXd R = RelativeInformation(M, theta);
   EXPECT_NEAR(R(0, 0), 1e4, 1e-8);
-  EXPECT_NEAR(R(1, 1), 4.0, kTol);
+  EXPECT_NEAR(R(1, 1), 4.0, kRoundingTol);
   const Eigen::VectorXd sigma = PredictedSigma(M, theta);
   EXPECT_NEAR(sigma[0], 5.0, 1e-12);
   EXPECT_NEAR(sigma[1], 0.5, 1e-12);

@@ -11,6 +11,7 @@
 #include <set>
 #include <string>
 
+#include "planner/planner_test_util.h"
 #include "support/diagnosed_loop.h"
 #include "uuvplan/io/io.h"
 
@@ -19,13 +20,9 @@ namespace {
 
 using model::Dof;
 
-std::string CasePath(const std::string& vehicle, const std::string& file) {
-  return std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + vehicle + "/" + file;
-}
-
 model::Truth UrisWithLagAndThrustMap() {
-  return uuvplan::testing::WithLagAndThrustMap(io::ReadTruth(CasePath("uris", "truth.yaml")),
-                                               Dof::kSurge, 0.15, -0.3, 10.0);
+  return uuvplan::testing::WithLagAndThrustMap(
+      io::ReadTruth(testing::CasePath("uris", "truth.yaml")), Dof::kSurge, 0.15, -0.3, 10.0);
 }
 
 // `loop --diagnose` on URIS surge with the two hidden effects, one run per seed for every test.
@@ -33,9 +30,10 @@ const uuvplan::testing::DiagnosedLoopOutcome& UrisDiagnosedLoop(std::uint64_t se
   static std::map<std::uint64_t, uuvplan::testing::DiagnosedLoopOutcome> runs;
   auto it = runs.find(seed);
   if (it == runs.end()) {
-    it = runs.emplace(seed, uuvplan::testing::RunDiagnosedLoop(
-                                UrisWithLagAndThrustMap(),
-                                io::ReadPool(CasePath("uris", "pool.yaml")), Dof::kSurge, seed))
+    it = runs.emplace(seed,
+                      uuvplan::testing::RunDiagnosedLoop(
+                          UrisWithLagAndThrustMap(),
+                          io::ReadPool(testing::CasePath("uris", "pool.yaml")), Dof::kSurge, seed))
              .first;
   }
   return it->second;
@@ -89,7 +87,7 @@ TEST(LoopDiagnoseTest, WithoutDiagnosisTheLoopRefusesTheStandardModel) {
   LoopOptions o;
   o.step.dofs = {Dof::kSurge};
   const LoopResult r =
-      RunLoop(UrisWithLagAndThrustMap(), io::ReadPool(CasePath("uris", "pool.yaml")), o);
+      RunLoop(UrisWithLagAndThrustMap(), io::ReadPool(testing::CasePath("uris", "pool.yaml")), o);
   EXPECT_FALSE(r.converged) << r.message;
   EXPECT_EQ(r.status, LoopStatus::kRefused) << r.message;
 }

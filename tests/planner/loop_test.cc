@@ -44,10 +44,6 @@ constexpr double kTarget = 5.0;
 
 model::Truth RomeoTruth() { return io::ReadTruth(RomeoPath("truth.yaml")); }
 
-std::string CasePath(const std::string& vehicle, const std::string& file) {
-  return std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + vehicle + "/" + file;
-}
-
 const std::vector<Dof>& RomeoDofs() {
   static const std::vector<Dof> dofs = {Dof::kSurge, Dof::kHeave, Dof::kYaw};
   return dofs;
@@ -407,10 +403,10 @@ TEST(StopRulesTest, SmallPoolConvergesWithinThreeSigmaOnTheFullModel) {
 // with k held at its prior. A held parameter is no information: converge within 3σ of the
 // truth, or stop non-zero with a reason. ~0.4 s.
 TEST(StopRulesTest, UrisSurgeConvergesWithinThreeSigmaOrRefuses) {
-  const model::Truth truth = io::ReadTruth(CasePath("uris", "truth.yaml"));
+  const model::Truth truth = io::ReadTruth(testing::CasePath("uris", "truth.yaml"));
   LoopOptions o;
   o.step.dofs = {Dof::kSurge};
-  const LoopResult r = RunLoop(truth, io::ReadPool(CasePath("uris", "pool.yaml")), o);
+  const LoopResult r = RunLoop(truth, io::ReadPool(testing::CasePath("uris", "pool.yaml")), o);
   ASSERT_FALSE(r.iterations.empty());
   const DofProgress* first = Find(r.iterations.front().progress, Dof::kSurge);
   ASSERT_NE(first, nullptr);
@@ -429,8 +425,9 @@ TEST(StopRulesTest, UrisSurgeConvergesWithinThreeSigmaOrRefuses) {
 // the loop once converged on the trial after it. Convergence needs the newest trial consistent
 // with the estimate before it, and then every final estimate is within 3σ of the truth. ~2 s.
 TEST(StopRulesTest, VsorConvergesOnlyOnConsistentEstimates) {
-  const model::Truth truth = io::ReadTruth(CasePath("vsor", "truth.yaml"));
-  const LoopResult r = RunLoop(truth, io::ReadPool(CasePath("vsor", "pool.yaml")), LoopOptions{});
+  const model::Truth truth = io::ReadTruth(testing::CasePath("vsor", "truth.yaml"));
+  const LoopResult r =
+      RunLoop(truth, io::ReadPool(testing::CasePath("vsor", "pool.yaml")), LoopOptions{});
   ASSERT_TRUE(r.converged) << r.message;
   for (const auto& p : r.progress) {
     EXPECT_TRUE(p.consistency.tested && p.consistency.consistent) << model::DofName(p.dof);

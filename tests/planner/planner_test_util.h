@@ -15,9 +15,12 @@
 
 namespace uuvplan::planner::testing {
 
-inline std::string RomeoPath(const std::string& file) {
-  return std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/" + file;
+/// A file of a shipped case: cases/<vehicle>/<file>.
+inline std::string CasePath(const std::string& vehicle, const std::string& file) {
+  return std::string(UUVPLAN_SOURCE_DIR) + "/cases/" + vehicle + "/" + file;
 }
+
+inline std::string RomeoPath(const std::string& file) { return CasePath("romeo", file); }
 
 inline model::Vehicle Romeo() { return io::ReadVehicle(RomeoPath("vehicle.yaml")); }
 inline model::Pool RomeoPool() { return io::ReadPool(RomeoPath("pool.yaml")); }
