@@ -15,6 +15,7 @@
 #include "uuvplan/io/pool_yaml.h"
 #include "uuvplan/io/truth_yaml.h"
 #include "uuvplan/io/vehicle_yaml.h"
+#include "uuvplan/model/input_error.h"
 #include "uuvplan/model/virtual_pool.h"
 #include "uuvplan/planner/design/coupled_design.h"
 
@@ -242,6 +243,37 @@ TEST_P(CoupledDesignModes, AsvCombinedDesignStaysInThePoolOverThePriorBox) {
   // refuses (CoupledLeastSquares.ATrialSetThatPushesNoSwayFailsNamingIt); the two together
   // identify it (planning.md §5).
   if (GetParam() == "surge+sway+yaw") ExpectPlannedTrialIdentifiesTheCoupledModel(d);
+}
+
+// The sensors bound the fastest wave (model::kDefaultSamplesPerPeriod samples per period): the
+// ASV's surge DVL slowed to 0.5 Hz resolves periods of 20 s and longer, so surge's sine in the
+// surge+yaw mode has ω ≤ 2π/20 s = 0.314 rad/s (yaw's 10 Hz compass leaves it free); at
+// 0.01 Hz not even the slowest combined wave (ω_min 0.1 rad/s) is resolved: refused, naming it.
+TEST(CombinedDesignSensors, ASlowSensorBoundsItsDofsWave) {
+  model::Vehicle vehicle = io::ReadVehicle(Case("vehicle.yaml"));
+  const model::Pool pool = io::ReadPool(Case("pool.yaml"));
+  CombinedDesignOptions options = CoupledDesignOptions({model::Dof::kSurge, model::Dof::kYaw});
+  // The bound is in the design variables (ω spans [ω_min, ω_max of the DOF]), so any point the
+  // solver returns shows it: a short search.
+  options.exchange_rounds = 0;
+  options.solver.max_global_evaluations = 20;
+  options.solver.max_local_evaluations = 20;
+  vehicle.sensors.at(model::Dof::kSurge).velocity->rate_hz = 0.5;
+  const CombinedDesign d =
+      PlanCombinedDesign(model::CoupledHorizontalModel(vehicle), vehicle, pool, options);
+  const auto surge =
+      std::find_if(d.trial.inputs.begin(), d.trial.inputs.end(),
+                   [](const model::TrialDesign& in) { return in.dof == model::Dof::kSurge; });
+  ASSERT_NE(surge, d.trial.inputs.end());
+  EXPECT_LE(surge->omega, 2 * M_PI / 20.0 * (1 + 1e-12));
+  EXPECT_GE(surge->omega, options.omega_min);
+  vehicle.sensors.at(model::Dof::kSurge).velocity->rate_hz = 0.01;
+  try {
+    PlanCombinedDesign(model::CoupledHorizontalModel(vehicle), vehicle, pool, options);
+    ADD_FAILURE() << "a 0.01 Hz sensor was accepted";
+  } catch (const model::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sensors.surge"), std::string::npos) << e.what();
+  }
 }
 
 // Ref 003 Table I's combined modes (5–16 s a plan).

@@ -7,6 +7,7 @@
 
 #include "design/combined_envelope.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/planner/design/fisher_information.h"
 #include "uuvplan/planner/design/thrust_limits.h"
 #include "uuvplan/planner/design/trial_envelope.h"
@@ -42,12 +43,13 @@ struct Setup {
   const CombinedDesignOptions& o;
   std::vector<int> moved, mapping;  // the moved DOFs (model order) and their mappings
   std::vector<double> force_max;    // per moved DOF
+  std::vector<double> omega_max;    // per moved DOF: o.omega_max, or less as its sensors allow
   std::vector<int> covered;         // θ indices the criterion covers: the moved DOFs'
   Eigen::VectorXd scale;            // their nominal magnitudes (S)
   std::vector<Eigen::VectorXd> design_points, check_points;
 
   // Design variables, each in [0, 1] or [−1, 1], per moved DOF: offset/F, amplitude/F, and
-  // (ω − ω_min)/(ω_max − ω_min).
+  // (ω − ω_min)/(ω_max − ω_min) with the DOF's ω_max.
   model::CombinedTrialDesign Trial(const double* x) const {
     model::CombinedTrialDesign trial;
     for (int i : moved) trial.dofs.push_back(model.dof(i));
@@ -61,7 +63,7 @@ struct Setup {
       in.duration = o.duration_s;
       in.offset = x[3 * d] * force_max[d];
       in.amplitude = x[3 * d + 1] * force_max[d];
-      in.omega = o.omega_min + x[3 * d + 2] * (o.omega_max - o.omega_min);
+      in.omega = o.omega_min + x[3 * d + 2] * (omega_max[d] - o.omega_min);
       trial.inputs.push_back(in);
     }
     return trial;
@@ -99,6 +101,27 @@ void AddBoxPoints(const ParameterBox& box, Setup* s) {
   }
 }
 
+// The largest ω of a moved DOF's sine: o.omega_max, or 2π over the shortest period its sensors
+// resolve (o.samples_per_period samples of the faster); InputError when that is below
+// o.omega_min.
+double FastestOmega(const model::Vehicle& vehicle, model::Dof dof, const CombinedDesignOptions& o) {
+  const auto sensors = vehicle.sensors.find(dof);
+  const double period =
+      sensors == vehicle.sensors.end() ? 0.0 : sensors->second.ShortestPeriod(o.samples_per_period);
+  if (!(period > 0)) return o.omega_max;
+  const double omega = std::min(o.omega_max, 2 * M_PI / period);
+  if (omega < o.omega_min) {
+    throw model::InputError(
+        "vehicle '" + vehicle.name + "' sensors." + std::string(model::DofName(dof)) + ": " +
+        model::Significant(o.samples_per_period / period, 3) + " Hz resolves waves of " +
+        model::Significant(period, 3) + " s and longer (" +
+        model::Significant(o.samples_per_period, 3) +
+        " samples per period); a combined design's slowest wave has ω " +
+        model::Significant(o.omega_min, 3) + " rad/s (a faster sensor is needed)");
+  }
+  return omega;
+}
+
 Setup MakeSetup(const model::MultiDofModel& model, const model::Vehicle& vehicle,
                 const model::Pool& pool, const CombinedDesignOptions& o, const ParameterBox& box) {
   Setup s(model, vehicle, pool, o);
@@ -113,6 +136,7 @@ Setup MakeSetup(const model::MultiDofModel& model, const model::Vehicle& vehicle
     s.moved.push_back(i);
     s.mapping.push_back(mapping);
     s.force_max.push_back(ForceMax(vehicle, mapping));
+    s.omega_max.push_back(FastestOmega(vehicle, dof, o));
   }
   // Scale of each covered parameter: its nominal magnitude; a bias's 1% of the DOF's largest
   // force (nominal 0).

@@ -172,11 +172,7 @@ DofPlanningProblem::DofPlanningProblem(const model::Vehicle& vehicle, const mode
 }
 
 double DofPlanningProblem::ShortestPeriod() const {
-  double rate = 0.0;
-  for (const auto* spec : {&sensors_.position, &sensors_.velocity}) {
-    if (*spec) rate = std::max(rate, (*spec)->rate_hz);
-  }
-  return rate > 0 ? options_.samples_per_period / rate : 0.0;
+  return sensors_.ShortestPeriod(options_.samples_per_period);
 }
 
 ForceRange DofPlanningProblem::ForceRangeFor(int mapping, int sign) const {

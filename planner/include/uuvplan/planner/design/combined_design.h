@@ -40,6 +40,8 @@ struct CombinedDesignOptions {
   double duration_s = 120.0;
   double start_heading_rad = 0.0;           ///< surge axis along the pool's length
   double omega_min = 0.1, omega_max = 1.5;  ///< rad/s, CHOSEN: periods 4–60 s
+  /// A moved DOF's ω at most 2π/(its sensors' shortest period at this many samples per period).
+  double samples_per_period = model::kDefaultSamplesPerPeriod;
   /// RK4 step of the planner's simulations (s): ω·h <= 0.3 at the fastest sine and spin.
   double step_s = 0.2;
   double profile_step_s = 0.05;  ///< thruster forces checked this often

@@ -73,12 +73,8 @@ struct PlannerOptions {
   double least_time_constant_s = 2e-3;
   /// Fewest samples of the DOF's fastest sensor per period of any sinusoid a design holds (a
   /// sine, a switched sine, a multisine's highest harmonic; a square's switches are bounded by
-  /// their shortest piece instead). CHOSEN 10, the usual rule of sampling at about ten times the
-  /// bandwidth of interest (Ljung 1999, §13.7): the samples see the wave's extremes within
-  /// cos(π/10) = 95% of its amplitude, and half a sample of timing error moves its phase by at
-  /// most 18°. At 4 (a 1 s sine read at 4 Hz, once planned for a BlueROV2) the planned
-  /// information rests on a model of what falls between the samples.
-  double samples_per_period = 10.0;
+  /// their shortest piece instead); the default's reason at model::kDefaultSamplesPerPeriod.
+  double samples_per_period = model::kDefaultSamplesPerPeriod;
   /// Values per box axis in hard-constraint checks (>= 2; 3 adds the axis midpoints).
   int check_grid = 3;
   /// Largest steady speed a design may ask for (0: no limit), at the fastest point of the box.
