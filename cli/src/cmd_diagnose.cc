@@ -37,14 +37,15 @@ struct DiagnoseFlags {
 
 // The extended model of every diagnosed DOF into the vehicle file `path`.
 bool WriteExtendedVehicle(const std::string& path, const std::string& campaign_path,
-                          const model::Vehicle& vehicle, const ident::DiagnosisResult& r) {
+                          const std::string& source, const model::Vehicle& vehicle,
+                          const ident::DiagnosisResult& r) {
   std::vector<const ident::DofIdentification*> dofs;
   for (const ident::DofIdentification& e : r.extended) dofs.push_back(&e);
   std::string effects;
   for (const ident::Finding& f : r.findings) {
     effects += (effects.empty() ? "" : ", ") + std::string(model::DofName(f.dof)) + " " + f.effect;
   }
-  return WriteModelVehicle("diagnose", path, campaign_path, vehicle, dofs,
+  return WriteModelVehicle("diagnose", path, campaign_path, source, vehicle, dofs,
                            "the extended model (" +
                                (effects.empty() ? "no effect found" : effects) +
                                "),\nfitted by output error on the fit trials; sigma: 1σ of each "
@@ -64,7 +65,8 @@ int RunDiagnose(const DiagnoseFlags& co) {
   PrintBriefOnTerminal(result.Summary().Brief());
   const bool written =
       co.write_vehicle.empty() ||
-      WriteExtendedVehicle(co.write_vehicle, co.campaign, campaign.vehicle, result);
+      WriteExtendedVehicle(co.write_vehicle, co.campaign, CampaignVehicleFile(campaign),
+                           campaign.vehicle, result);
   // A DOF whose standard model failed is refused: a failure, as identify's (exit 1).
   return result.not_diagnosed.empty() && written ? kExitOk : kExitActionNeeded;
 }

@@ -137,7 +137,8 @@ int RunIdentify(const IdentifyFlags& co) {
   PrintBriefOnTerminal(result.Summary().Brief());
   const bool written = co.write_vehicle.empty() ||
                        WriteIdentifiedVehicle("identify", co.write_vehicle, co.campaign,
-                                              campaign.vehicle, result, "the identified model");
+                                              CampaignVehicleFile(campaign), campaign.vehicle,
+                                              result, "the identified model");
   return result.status == ident::IdentifyStatus::kFailed || !written ? kExitActionNeeded : kExitOk;
 }
 

@@ -200,7 +200,8 @@ int RunLoopCommand(const LoopFlags& o) {
   }
   if (!o.write_vehicle.empty() &&
       !WriteIdentifiedVehicle("loop", o.write_vehicle, "--truth " + o.truth + " --pool " + o.pool,
-                              truth.vehicle, r.estimates, "the model the loop identified last")) {
+                              "", truth.vehicle, r.estimates,
+                              "the model the loop identified last")) {
     return ExitStatus(r.status) == 0 ? 1 : ExitStatus(r.status);
   }
   return ExitStatus(r.status);

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "uuvplan/ident/score.h"
+#include "uuvplan/io/files.h"
 #include "uuvplan/io/vehicle_yaml.h"
 
 namespace uuvplan::cli {
@@ -25,7 +26,8 @@ std::string Today() {
 }  // namespace
 
 bool WriteModelVehicle(const std::string& command, const std::string& path,
-                       const std::string& campaign_path, model::Vehicle vehicle,
+                       const std::string& campaign_path, const std::string& source,
+                       model::Vehicle vehicle,
                        const std::vector<const ident::DofIdentification*>& dofs,
                        const std::string& comment) {
   for (const ident::DofIdentification* d : dofs) {
@@ -38,15 +40,24 @@ bool WriteModelVehicle(const std::string& command, const std::string& path,
     }
     vehicle.models[d->dof] = m;
   }
-  io::WriteVehicleYaml(path, vehicle,
-                       "written by `uuvplan " + command + " " + campaign_path +
-                           " --write-vehicle` on " + Today() + ": " + comment);
+  const std::string header = std::string(io::kWrittenByPrefix) + command + " " + campaign_path +
+                             " --write-vehicle` on " + Today() + ": " + comment;
+  if (source.empty()) {
+    io::WriteVehicleYaml(path, vehicle, header);
+  } else {
+    io::WriteVehicleYamlOver(path, source, vehicle, header);
+  }
   return true;
 }
 
+std::string CampaignVehicleFile(const model::Campaign& campaign) {
+  return io::ResolveBeside(campaign.path, campaign.vehicle_file);
+}
+
 bool WriteIdentifiedVehicle(const std::string& command, const std::string& path,
-                            const std::string& campaign_path, const model::Vehicle& vehicle,
-                            const ident::IdentifyResult& result, const std::string& what) {
+                            const std::string& campaign_path, const std::string& source,
+                            const model::Vehicle& vehicle, const ident::IdentifyResult& result,
+                            const std::string& what) {
   std::vector<const ident::DofIdentification*> dofs;
   for (const ident::DofIdentification& d : result.dofs) {
     if (d.status == ident::IdentifyStatus::kFailed) {
@@ -61,7 +72,7 @@ bool WriteIdentifiedVehicle(const std::string& command, const std::string& path,
               << " not written: no DOF was identified\n";
     return false;
   }
-  return WriteModelVehicle(command, path, campaign_path, vehicle, dofs,
+  return WriteModelVehicle(command, path, campaign_path, source, vehicle, dofs,
                            what +
                                ",\nsigma: 1σ of each parameter (0: held, not estimated).\n"
                                "Every command reads it: schedule, next and loop plan about "

@@ -182,6 +182,16 @@ void EmitModel(YAML::Emitter& out, const DofParameters& model) {
   out << YAML::EndMap;
 }
 
+// A DOF's model keys: params (and effects, settings), its σ, its origin.
+void EmitModelKeys(YAML::Emitter& out, const DofParameters& model) {
+  EmitModel(out, model);
+  if (model.identified()) {
+    out << YAML::Key << "sigma" << YAML::Value;
+    EmitSigmas(out, model.sigma);
+  }
+  if (!model.origin.empty()) out << YAML::Key << "origin" << YAML::Value << model.origin;
+}
+
 void EmitDofs(YAML::Emitter& out, const Vehicle& v) {
   std::map<Dof, bool> dofs;
   for (const auto& [dof, prior] : v.priors) dofs[dof] = true;
@@ -200,21 +210,210 @@ void EmitDofs(YAML::Emitter& out, const Vehicle& v) {
       out << YAML::Key << "added_mass" << YAML::Value;
       EmitPair(out, *p->second.added_mass);
     }
-    if (const auto m = v.models.find(dof); m != v.models.end()) {
-      const DofParameters& model = m->second;
-      EmitModel(out, model);
-      if (model.identified()) {
-        out << YAML::Key << "sigma" << YAML::Value;
-        EmitSigmas(out, model.sigma);
-      }
-      if (!model.origin.empty()) out << YAML::Key << "origin" << YAML::Value << model.origin;
-    }
+    if (const auto m = v.models.find(dof); m != v.models.end()) EmitModelKeys(out, m->second);
     out << YAML::EndMap;
   }
   out << YAML::EndMap;
 }
 
+// `comment` as YAML comment lines, one "# " line per line.
+std::string CommentLines(const std::string& comment) {
+  std::string text;
+  std::size_t from = 0;
+  while (from <= comment.size()) {
+    const std::size_t end = std::min(comment.find('\n', from), comment.size());
+    text += "# " + comment.substr(from, end - from) + "\n";
+    from = end + 1;
+  }
+  return text;
+}
+
+// Lines of `text` (no line ends).
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  for (std::size_t from = 0; from < text.size();) {
+    const std::size_t end = std::min(text.find('\n', from), text.size());
+    lines.push_back(text.substr(from, end - from));
+    from = end + 1;
+  }
+  return lines;
+}
+
+// Emitted YAML (a map opened by `emit`) as lines, each indented by `indent` spaces.
+template <typename Emit>
+std::vector<std::string> EmittedLines(int indent, Emit emit) {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  emit(out);
+  out << YAML::EndMap;
+  const std::string text = out.c_str();
+  if (text == "{}") return {};
+  std::vector<std::string> lines = Lines(text);
+  for (std::string& l : lines) l.insert(0, static_cast<std::size_t>(indent), ' ');
+  return lines;
+}
+
+// The indent of a line holding a key or value; -1 for a blank or comment-only line.
+int IndentOf(const std::string& line) {
+  const std::size_t at = line.find_first_not_of(' ');
+  return at == std::string::npos || line[at] == '#' ? -1 : static_cast<int>(at);
+}
+
+// The key a line at `indent` starts ("surge" of "  surge:  # …"), and whether a value follows
+// its colon on the line (a flow map or scalar).
+std::pair<std::string, bool> KeyOf(const std::string& line, int indent) {
+  const std::size_t colon = line.find(':', static_cast<std::size_t>(indent));
+  if (colon == std::string::npos) return {"", false};
+  const std::size_t rest = line.find_first_not_of(' ', colon + 1);
+  return {line.substr(static_cast<std::size_t>(indent), colon - static_cast<std::size_t>(indent)),
+          rest != std::string::npos && line[rest] != '#'};
+}
+
+// The end of the entry that starts at `from` (a key at `indent`): the next line with a key at
+// `indent` or less, less the blank and comment lines just above it (they are that key's).
+std::size_t EntryEnd(const std::vector<std::string>& lines, std::size_t from, int indent) {
+  std::size_t end = from + 1;
+  while (end < lines.size() && (IndentOf(lines[end]) < 0 || IndentOf(lines[end]) > indent)) ++end;
+  if (end == lines.size()) return end;
+  while (end > from + 1 && IndentOf(lines[end - 1]) < 0) --end;
+  return end;
+}
+
+// The keys of a DOF's entry that are the user's a priori knowledge; the others are the model
+// (params, effects, settings, sigma, origin), written anew from the vehicle.
+bool IsAPrioriKey(const std::string& key) { return key == "drag" || key == "added_mass"; }
+
+// Lines [from, end) of `lines` appended to `out`.
+void Append(const std::vector<std::string>& lines, std::size_t from, std::size_t end,
+            std::vector<std::string>* out) {
+  using Diff = std::vector<std::string>::difference_type;
+  out->insert(out->end(), lines.begin() + static_cast<Diff>(from),
+              lines.begin() + static_cast<Diff>(end));
+}
+
+// One DOF's entry of a `dofs:` block, lines [from, end) with the DOF key at `indent`, into
+// `out`: its a priori keys as written (comments kept), then `model`'s keys (none: null). False
+// when a model is to go into an entry written as a flow map ("surge: {drag: …}"), which has no
+// lines to merge into; such an entry without a model is kept as written.
+bool MergeDofEntry(const std::vector<std::string>& lines, std::size_t from, std::size_t end,
+                   int indent, const DofParameters* model, std::vector<std::string>* out) {
+  if (KeyOf(lines[from], indent).second) {
+    if (model) return false;
+    Append(lines, from, end, out);
+    return true;
+  }
+  out->push_back(lines[from]);
+  int child = indent + 2;
+  for (std::size_t k = from + 1; k < end; ++k) {
+    if (IndentOf(lines[k]) > indent) {
+      child = IndentOf(lines[k]);
+      break;
+    }
+  }
+  for (std::size_t k = from + 1; k < end;) {
+    if (IndentOf(lines[k]) != child) {
+      out->push_back(lines[k++]);
+      continue;
+    }
+    const std::size_t next = EntryEnd(lines, k, child);
+    if (IsAPrioriKey(KeyOf(lines[k], child).first)) Append(lines, k, next, out);
+    k = next;
+  }
+  if (model) {
+    const auto m = EmittedLines(child, [model](YAML::Emitter& e) { EmitModelKeys(e, *model); });
+    out->insert(out->end(), m.begin(), m.end());
+  }
+  return true;
+}
+// The top-level `dofs:` block at lines [from, end), block style, merged with v: each DOF's a
+// priori keys as written, its model (v.models) anew, DOFs of v.models without an entry added at
+// its end. nullopt where a DOF entry or the block is a flow map.
+std::optional<std::vector<std::string>> MergeDofsBlock(const std::vector<std::string>& lines,
+                                                       std::size_t from, std::size_t end,
+                                                       const Vehicle& v) {
+  if (KeyOf(lines[from], 0).second) return std::nullopt;
+  std::vector<std::string> out = {lines[from]};
+  int indent = 2;
+  for (std::size_t k = from + 1; k < end; ++k) {
+    if (IndentOf(lines[k]) > 0) {
+      indent = IndentOf(lines[k]);
+      break;
+    }
+  }
+  std::map<Dof, bool> written;
+  for (std::size_t k = from + 1; k < end;) {
+    if (IndentOf(lines[k]) != indent) {
+      out.push_back(lines[k++]);
+      continue;
+    }
+    const std::size_t next = EntryEnd(lines, k, indent);
+    const std::optional<Dof> dof = ParseDof(KeyOf(lines[k], indent).first);
+    const auto model = dof ? v.models.find(*dof) : v.models.end();
+    if (!MergeDofEntry(lines, k, next, indent, model == v.models.end() ? nullptr : &model->second,
+                       &out)) {
+      return std::nullopt;
+    }
+    if (dof) written[*dof] = true;
+    k = next;
+  }
+  for (const auto& [dof, model] : v.models) {
+    if (written.count(dof)) continue;
+    out.push_back(std::string(static_cast<std::size_t>(indent), ' ') + std::string(DofName(dof)) +
+                  ":");
+    const auto m = EmittedLines(2 * indent, [&](YAML::Emitter& e) { EmitModelKeys(e, model); });
+    out.insert(out.end(), m.begin(), m.end());
+  }
+  return out;
+}
+
+// `lines` (a vehicle file) with its top-level `dofs:` block merged with v (MergeDofsBlock), or
+// replaced by v's where it cannot be merged, or v's added at the end where it has none.
+std::vector<std::string> WithDofsOf(std::vector<std::string> lines, const Vehicle& v) {
+  const auto is_dofs = [](const std::string& l) {
+    return IndentOf(l) == 0 && KeyOf(l, 0).first == "dofs";
+  };
+  const auto first = std::find_if(lines.begin(), lines.end(), is_dofs);
+  const std::vector<std::string> whole =
+      EmittedLines(0, [&v](YAML::Emitter& e) { EmitDofs(e, v); });
+  if (first == lines.end()) {
+    if (!whole.empty()) lines.push_back("");
+    lines.insert(lines.end(), whole.begin(), whole.end());
+    return lines;
+  }
+  const std::size_t from = static_cast<std::size_t>(first - lines.begin());
+  const std::size_t end = EntryEnd(lines, from, 0);
+  const auto merged = MergeDofsBlock(lines, from, end, v);
+  const std::vector<std::string>& block = merged ? *merged : whole;
+  lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(from),
+              lines.begin() + static_cast<std::ptrdiff_t>(end));
+  lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(from), block.begin(), block.end());
+  return lines;
+}
+
 }  // namespace
+
+void WriteVehicleYamlOver(const std::string& path, const std::string& source, const Vehicle& v,
+                          const std::string& comment) {
+  std::vector<std::string> lines = Lines(ReadFileText(source));
+  const auto is_base = [](const std::string& l) {
+    return IndentOf(l) == 0 && KeyOf(l, 0).first == "base";
+  };
+  if (std::any_of(lines.begin(), lines.end(), is_base)) {
+    WriteVehicleYaml(path, v, comment);
+    return;
+  }
+  // An earlier header (its comment lines, and the blank line that ends it here): replaced.
+  const std::string written_by = "# " + std::string(kWrittenByPrefix);
+  if (!lines.empty() && lines[0].rfind(written_by, 0) == 0) {
+    auto end = std::find_if(lines.begin(), lines.end(),
+                            [](const std::string& l) { return l.empty() || l[0] != '#'; });
+    if (end != lines.end() && end->empty()) ++end;
+    lines.erase(lines.begin(), end);
+  }
+  std::string out = CommentLines(comment) + "\n";
+  for (const std::string& l : WithDofsOf(std::move(lines), v)) out += l + "\n";
+  WriteFileAtomically(path, out);
+}
 
 void WriteVehicleYaml(const std::string& path, const Vehicle& v, const std::string& comment) {
   YAML::Emitter out;
@@ -232,14 +431,7 @@ void WriteVehicleYaml(const std::string& path, const Vehicle& v, const std::stri
     EmitSensor(out, "velocity", s.velocity);
   });
   out << YAML::EndMap;
-  std::string text;
-  std::size_t from = 0;
-  while (from <= comment.size()) {  // each line of the comment as a YAML comment
-    const std::size_t end = std::min(comment.find('\n', from), comment.size());
-    text += "# " + comment.substr(from, end - from) + "\n";
-    from = end + 1;
-  }
-  WriteFileAtomically(path, text + out.c_str() + "\n");
+  WriteFileAtomically(path, CommentLines(comment) + out.c_str() + "\n");
 }
 
 }  // namespace uuvplan::io

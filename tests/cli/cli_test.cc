@@ -318,21 +318,26 @@ TEST(Cli, DiagnoseWritesTheModelAndScoreScoresIt) {
   EXPECT_FALSE(fs::exists(dir / "d.json"));
 }
 
-// `identify --write-vehicle` writes the identified model, headed by the command, the campaign
-// and the date; `schedule` on that file plans about the estimates and says so.
+// `identify --write-vehicle` writes the identified model into the campaign's vehicle file as its
+// user wrote it (ROMEO's, comments and all), headed by the command, the campaign and the date;
+// `schedule` on that file plans about the estimates and says so.
 TEST(Cli, IdentifyWritesTheModelAndScheduleUsesIt) {
   const TempDir dir;
   const std::string plan = dir.Write("plan.json", SurgePlanWith(R"(
   {"id": "b", "dof": "surge", "kind": "sine", "duration": 52, "mapping": "surge-front",
    "offset": 35, "amplitude": 25, "omega": 0.2417})"));
   ASSERT_EQ(SimulateRomeo(dir, plan), 0);
+  const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/vehicle.yaml";
+  fs::copy_file(romeo, dir / "c/vehicle.yaml", fs::copy_options::overwrite_existing);
   const std::string model = dir / "identified.yaml";
   const ToolRun i = RunTool("identify '" + (dir / "c") + "' --write-vehicle '" + model + "'", dir);
   ASSERT_EQ(i.status, 0) << i.out << i.err;
   const std::string text = ReadText(model);
-  EXPECT_THAT(text, HasSubstr("# written by `uuvplan identify " + (dir / "c")));
+  EXPECT_EQ(text.rfind("# written by `uuvplan identify " + (dir / "c"), 0), 0u) << text;
   EXPECT_THAT(text, HasSubstr("# identified"));
   EXPECT_THAT(text, HasSubstr("sigma:"));
+  EXPECT_THAT(text, HasSubstr(ReadText(romeo).substr(0, 200)));  // the user's header, as written
+  EXPECT_THAT(text, HasSubstr("    drag: {k: 46.9, kq: 306.2, rel_sigma: 0.3}   # Table IV"));
   const ToolRun s = RunTool("schedule '" + model + "' --pool '" + std::string(UUVPLAN_SOURCE_DIR) +
                                 "/cases/romeo/pool.yaml' --dof surge",
                             dir);

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <map>
+#include <sstream>
+#include <string>
 
 #include "io_test_util.h"
 #include "uuvplan/io/io.h"
@@ -79,6 +81,50 @@ TEST(VehicleModelIo, WrittenNumbersAreRoundedFromSigmaAndShort) {
   const Vehicle back = io::ReadVehicle(path);
   EXPECT_EQ(back.mass, 6.621);
   EXPECT_EQ(back.models.at(Dof::kSurge).params.at("m"), 0.5751);
+}
+
+// `identify --write-vehicle` updates the user's file: ROMEO's vehicle file (comments, key order,
+// its own numbers) comes back line for line outside the model keys, its a priori drag with the
+// comments beside it; the estimates read back as the whole-file writer's do; a second update
+// replaces the first one's header and model rather than adding to them.
+TEST(VehicleModelIo, AnUpdatedFileKeepsWhatItsUserWrote) {
+  ScratchDir dir;
+  const std::string source = SourcePath("cases/romeo/vehicle.yaml");
+  Vehicle v = io::ReadVehicle(source);
+  DofParameters m;
+  m.params = {{"m", 891.23}, {"k", 47.1}, {"kq", 301.7}, {"bias", -1.2}};
+  m.sigma = {{"m", 3.7}, {"k", 2.1}, {"kq", 11.9}, {"bias", 0.4}};
+  v.models[Dof::kSurge] = m;
+  const std::string updated = dir.Path("updated.yaml"), whole = dir.Path("whole.yaml");
+  io::WriteVehicleYamlOver(updated, source, v, std::string(io::kWrittenByPrefix) + "x`\nof ROMEO");
+  io::WriteVehicleYaml(whole, v, "whole");
+  const std::string text = ReadText(updated);
+  EXPECT_EQ(text.rfind("# written by `uuvplan x`\n# of ROMEO\n", 0), 0u) << text;
+  std::size_t at = 0;  // every line of the user's file, in order
+  std::istringstream lines(ReadText(source));
+  for (std::string line; std::getline(lines, line);) {
+    at = text.find(line + "\n", at);
+    ASSERT_NE(at, std::string::npos) << "lost: " << line;
+  }
+  const Vehicle back = io::ReadVehicle(updated), reference = io::ReadVehicle(whole);
+  EXPECT_EQ(back.models.at(Dof::kSurge).params, reference.models.at(Dof::kSurge).params);
+  EXPECT_EQ(back.models.at(Dof::kSurge).sigma, reference.models.at(Dof::kSurge).sigma);
+  EXPECT_EQ(back.priors.at(Dof::kSway).drag->kq, 442.3);
+  EXPECT_EQ(back.mass, v.mass);
+  // Again over the updated file, with another estimate and a model of heave it did not have.
+  v.models[Dof::kSurge].params["m"] = 885.0;
+  v.models[Dof::kHeave] = m;
+  v.models[Dof::kHeave].params["m"] = 700.5;
+  const std::string again = dir.Path("again.yaml");
+  io::WriteVehicleYamlOver(again, updated, v, std::string(io::kWrittenByPrefix) + "y`");
+  const std::string twice = ReadText(again);
+  EXPECT_EQ(twice.find("uuvplan x`"), std::string::npos) << twice;
+  EXPECT_THAT(twice, HasSubstr("\n\n" + ReadText(source).substr(0, 200)));  // the user's header
+  EXPECT_EQ(twice.find("m: 891.2"), std::string::npos) << twice;
+  const Vehicle back2 = io::ReadVehicle(again);
+  EXPECT_EQ(back2.models.at(Dof::kSurge).params.at("m"), 885.0);
+  EXPECT_EQ(back2.models.at(Dof::kHeave).params.at("m"), 700.5);
+  EXPECT_EQ(back2.priors.at(Dof::kHeave).drag->k, 44.7);
 }
 
 TEST(FileNumbers, EstimateDigitsFollowSigma) {

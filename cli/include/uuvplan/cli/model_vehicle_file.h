@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "uuvplan/ident/identify.h"
+#include "uuvplan/model/campaign.h"
 #include "uuvplan/model/vehicle.h"
 
 namespace uuvplan::cli {
@@ -14,9 +15,12 @@ namespace uuvplan::cli {
 /// Writes `vehicle` with the model of each of `dofs` (ident::ModelOf) into `path`, headed by
 /// `comment`, the source campaign and the date (SOURCE_DATE_EPOCH when set, for reproducible
 /// files). False, with the reason on stderr and nothing written, when a model has a parameter
-/// the file readers would refuse (outside its admissible range).
+/// the file readers would refuse (outside its admissible range). `source`: the vehicle file
+/// `vehicle` was read from, whose text the written file keeps (io::WriteVehicleYamlOver);
+/// empty: written whole (a truth file's vehicle).
 bool WriteModelVehicle(const std::string& command, const std::string& path,
-                       const std::string& campaign_path, model::Vehicle vehicle,
+                       const std::string& campaign_path, const std::string& source,
+                       model::Vehicle vehicle,
                        const std::vector<const ident::DofIdentification*>& dofs,
                        const std::string& comment);
 
@@ -25,7 +29,11 @@ bool WriteModelVehicle(const std::string& command, const std::string& path,
 /// a DOF failed (the file would mix an identified model with a failed one's a priori box) or
 /// none was identified.
 bool WriteIdentifiedVehicle(const std::string& command, const std::string& path,
-                            const std::string& campaign_path, const model::Vehicle& vehicle,
-                            const ident::IdentifyResult& result, const std::string& what);
+                            const std::string& campaign_path, const std::string& source,
+                            const model::Vehicle& vehicle, const ident::IdentifyResult& result,
+                            const std::string& what);
+
+/// The vehicle file a campaign names, resolved beside the campaign file.
+std::string CampaignVehicleFile(const model::Campaign& campaign);
 
 }  // namespace uuvplan::cli
