@@ -56,6 +56,7 @@ bool WriteExtendedVehicle(const std::string& path, const std::string& campaign_p
 int RunDiagnose(const DiagnoseFlags& co) {
   CheckFilterWindow(co.diagnose.identify.data);
   const model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
+  RefuseWritingOverTheVehicleFile(co.write_vehicle, campaign);
   ident::DiagnoseOptions o = co.diagnose;
   o.dofs = ParseDofFlags(co.dofs);
   o.progress = TerminalProgress("diagnose");

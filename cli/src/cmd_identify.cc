@@ -116,6 +116,7 @@ int RunIdentify(const IdentifyFlags& co) {
   if (co.model_kind == "coupled") RefuseChainOptionsWithCoupled(co);
   CheckFilterWindow(co.identify.data);
   model::Campaign campaign = ReadCampaignForIdentification(co.campaign, co.accept_units);
+  RefuseWritingOverTheVehicleFile(co.write_vehicle, campaign);
   if (co.model_kind == "coupled") return RunCoupledIdentify(campaign, co.campaign, co.json);
   ident::IdentifyOptions o = co.identify;
   o.dofs = ParseDofFlags(co.dofs);

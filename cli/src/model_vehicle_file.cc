@@ -2,11 +2,14 @@
 
 #include <cstdlib>
 #include <ctime>
+#include <filesystem>
 #include <iostream>
+#include <system_error>
 
 #include "uuvplan/ident/score.h"
 #include "uuvplan/io/files.h"
 #include "uuvplan/io/vehicle_yaml.h"
+#include "uuvplan/model/input_error.h"
 
 namespace uuvplan::cli {
 namespace {
@@ -52,6 +55,14 @@ bool WriteModelVehicle(const std::string& command, const std::string& path,
 
 std::string CampaignVehicleFile(const model::Campaign& campaign) {
   return io::ResolveBeside(campaign.path, campaign.vehicle_file);
+}
+
+void RefuseWritingOverTheVehicleFile(const std::string& path, const model::Campaign& campaign) {
+  std::error_code ec;
+  if (path.empty() || !std::filesystem::equivalent(path, CampaignVehicleFile(campaign), ec)) return;
+  throw model::InputError("--write-vehicle " + path,
+                          "is the campaign's vehicle file, an input that is never modified: "
+                          "write the model to another file (it keeps this one's text)");
 }
 
 bool WriteIdentifiedVehicle(const std::string& command, const std::string& path,

@@ -228,12 +228,13 @@ std::string CommentLines(const std::string& comment) {
   return text;
 }
 
-// Lines of `text` (no line ends).
+// Lines of `text`, without their ends ("\n" or "\r\n").
 std::vector<std::string> Lines(const std::string& text) {
   std::vector<std::string> lines;
   for (std::size_t from = 0; from < text.size();) {
     const std::size_t end = std::min(text.find('\n', from), text.size());
     lines.push_back(text.substr(from, end - from));
+    if (!lines.back().empty() && lines.back().back() == '\r') lines.back().pop_back();
     from = end + 1;
   }
   return lines;
@@ -253,20 +254,26 @@ std::vector<std::string> EmittedLines(int indent, Emit emit) {
   return lines;
 }
 
-// The indent of a line holding a key or value; -1 for a blank or comment-only line.
+// The indent of a line holding a key or value; -1 for a blank (spaces, tabs) or comment-only
+// line.
 int IndentOf(const std::string& line) {
-  const std::size_t at = line.find_first_not_of(' ');
-  return at == std::string::npos || line[at] == '#' ? -1 : static_cast<int>(at);
+  const std::size_t at = line.find_first_not_of(" \t");
+  return at == std::string::npos || line[at] == '#' ? -1
+                                                    : static_cast<int>(line.find_first_not_of(' '));
 }
 
-// The key a line at `indent` starts ("surge" of "  surge:  # …"), and whether a value follows
-// its colon on the line (a flow map or scalar).
+// The key a line at `indent` starts ("surge" of "  surge:  # …", of "  'surge' :"), and whether
+// a value follows its colon on the line (a flow map or scalar).
 std::pair<std::string, bool> KeyOf(const std::string& line, int indent) {
   const std::size_t colon = line.find(':', static_cast<std::size_t>(indent));
   if (colon == std::string::npos) return {"", false};
-  const std::size_t rest = line.find_first_not_of(' ', colon + 1);
-  return {line.substr(static_cast<std::size_t>(indent), colon - static_cast<std::size_t>(indent)),
-          rest != std::string::npos && line[rest] != '#'};
+  std::string key =
+      line.substr(static_cast<std::size_t>(indent), colon - static_cast<std::size_t>(indent));
+  key.erase(key.find_last_not_of(" \t") + 1);
+  if (key.size() >= 2 && (key.front() == '\'' || key.front() == '"') && key.back() == key.front())
+    key = key.substr(1, key.size() - 2);
+  const std::size_t rest = line.find_first_not_of(" \t", colon + 1);
+  return {key, rest != std::string::npos && line[rest] != '#'};
 }
 
 // The end of the entry that starts at `from` (a key at `indent`): the next line with a key at
@@ -325,6 +332,7 @@ bool MergeDofEntry(const std::vector<std::string>& lines, std::size_t from, std:
   }
   return true;
 }
+
 // The top-level `dofs:` block at lines [from, end), block style, merged with v: each DOF's a
 // priori keys as written, its model (v.models) anew, DOFs of v.models without an entry added at
 // its end. nullopt where a DOF entry or the block is a flow map.
@@ -356,11 +364,13 @@ std::optional<std::vector<std::string>> MergeDofsBlock(const std::vector<std::st
     if (dof) written[*dof] = true;
     k = next;
   }
-  for (const auto& [dof, model] : v.models) {
-    if (written.count(dof)) continue;
-    out.push_back(std::string(static_cast<std::size_t>(indent), ' ') + std::string(DofName(dof)) +
-                  ":");
-    const auto m = EmittedLines(2 * indent, [&](YAML::Emitter& e) { EmitModelKeys(e, model); });
+  for (const auto& entry : v.models) {
+    if (written.count(entry.first)) continue;
+    out.push_back(std::string(static_cast<std::size_t>(indent), ' ') +
+                  std::string(DofName(entry.first)) + ":");
+    const DofParameters& model = entry.second;
+    const auto m =
+        EmittedLines(2 * indent, [&model](YAML::Emitter& e) { EmitModelKeys(e, model); });
     out.insert(out.end(), m.begin(), m.end());
   }
   return out;
@@ -394,24 +404,34 @@ std::vector<std::string> WithDofsOf(std::vector<std::string> lines, const Vehicl
 
 void WriteVehicleYamlOver(const std::string& path, const std::string& source, const Vehicle& v,
                           const std::string& comment) {
-  std::vector<std::string> lines = Lines(ReadFileText(source));
-  const auto is_base = [](const std::string& l) {
-    return IndentOf(l) == 0 && KeyOf(l, 0).first == "base";
+  std::string text = ReadFileText(source);
+  const std::string bom = "\xEF\xBB\xBF";
+  const bool has_bom = text.rfind(bom, 0) == 0;
+  if (has_bom) text.erase(0, bom.size());
+  const std::string line_end = text.find("\r\n") != std::string::npos ? "\r\n" : "\n";
+  std::vector<std::string> lines = Lines(text);
+  // Written whole: a payload on a base, and a file in YAML documents (`---`, `...`), whose
+  // block a line merge could put past the first document.
+  const auto whole = [](const std::string& l) {
+    return (IndentOf(l) == 0 && KeyOf(l, 0).first == "base") || l.rfind("---", 0) == 0 ||
+           l.rfind("...", 0) == 0;
   };
-  if (std::any_of(lines.begin(), lines.end(), is_base)) {
+  if (std::any_of(lines.begin(), lines.end(), whole)) {
     WriteVehicleYaml(path, v, comment);
     return;
   }
   // An earlier header (its comment lines, and the blank line that ends it here): replaced.
   const std::string written_by = "# " + std::string(kWrittenByPrefix);
   if (!lines.empty() && lines[0].rfind(written_by, 0) == 0) {
-    auto end = std::find_if(lines.begin(), lines.end(),
-                            [](const std::string& l) { return l.empty() || l[0] != '#'; });
-    if (end != lines.end() && end->empty()) ++end;
-    lines.erase(lines.begin(), end);
+    auto header_end = std::find_if(lines.begin(), lines.end(),
+                                   [](const std::string& l) { return l.empty() || l[0] != '#'; });
+    if (header_end != lines.end() && header_end->empty()) ++header_end;
+    lines.erase(lines.begin(), header_end);
   }
-  std::string out = CommentLines(comment) + "\n";
-  for (const std::string& l : WithDofsOf(std::move(lines), v)) out += l + "\n";
+  std::string out = has_bom ? bom : "";
+  for (const std::string& l : Lines(CommentLines(comment))) out += l + line_end;
+  out += line_end;
+  for (const std::string& l : WithDofsOf(std::move(lines), v)) out += l + line_end;
   WriteFileAtomically(path, out);
 }
 

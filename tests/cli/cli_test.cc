@@ -329,6 +329,12 @@ TEST(Cli, IdentifyWritesTheModelAndScheduleUsesIt) {
   ASSERT_EQ(SimulateRomeo(dir, plan), 0);
   const std::string romeo = std::string(UUVPLAN_SOURCE_DIR) + "/cases/romeo/vehicle.yaml";
   fs::copy_file(romeo, dir / "c/vehicle.yaml", fs::copy_options::overwrite_existing);
+  // The campaign's own vehicle file is an input: refused, untouched.
+  const ToolRun over = RunTool(
+      "identify '" + (dir / "c") + "' --write-vehicle '" + (dir / "c/vehicle.yaml") + "'", dir);
+  EXPECT_EQ(over.status, 2);
+  EXPECT_THAT(over.err, HasSubstr("--write-vehicle"));
+  EXPECT_EQ(ReadText(dir / "c/vehicle.yaml"), ReadText(romeo));
   const std::string model = dir / "identified.yaml";
   const ToolRun i = RunTool("identify '" + (dir / "c") + "' --write-vehicle '" + model + "'", dir);
   ASSERT_EQ(i.status, 0) << i.out << i.err;

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -125,6 +126,46 @@ TEST(VehicleModelIo, AnUpdatedFileKeepsWhatItsUserWrote) {
   EXPECT_EQ(back2.models.at(Dof::kSurge).params.at("m"), 885.0);
   EXPECT_EQ(back2.models.at(Dof::kHeave).params.at("m"), 700.5);
   EXPECT_EQ(back2.priors.at(Dof::kHeave).drag->k, 44.7);
+}
+
+// The same update on ROMEO's file as people also write it: CRLF line ends (kept), quoted and
+// spaced keys ('dofs', "surge" :), blank lines holding a tab; and a file in YAML documents
+// (`...`), written whole. Each reads back with the model, no key twice.
+TEST(VehicleModelIo, AnUpdatedFileKeepsItsLineEndsAndQuotedKeys) {
+  ScratchDir dir;
+  const std::string romeo = ReadText(SourcePath("cases/romeo/vehicle.yaml"));
+  Vehicle v = io::ReadVehicle(SourcePath("cases/romeo/vehicle.yaml"));
+  DofParameters m;
+  m.params = {{"m", 891.23}, {"k", 47.1}, {"kq", 301.7}, {"bias", -1.2}};
+  m.sigma = {{"m", 3.7}, {"k", 2.1}, {"kq", 11.9}, {"bias", 0.4}};
+  v.models[Dof::kSurge] = m;
+  const auto replaced = [](std::string text, const std::string& from, const std::string& to) {
+    for (std::size_t at = text.find(from); at != std::string::npos;
+         at = text.find(from, at + to.size())) {
+      text.replace(at, from.size(), to);
+    }
+    return text;
+  };
+  const std::string quoted =
+      replaced(replaced(romeo, "\ndofs:", "\n'dofs':"), "\n  surge:\n", "\n  \"surge\" :\n\t\n");
+  const std::map<std::string, std::string> sources = {{"crlf.yaml", replaced(romeo, "\n", "\r\n")},
+                                                      {"quoted.yaml", quoted},
+                                                      {"documents.yaml", romeo + "...\n"}};
+  for (const auto& [name, text] : sources) {
+    WriteText(dir.Path(name), text);
+    const std::string out = dir.Path("updated-" + name);
+    io::WriteVehicleYamlOver(out, dir.Path(name), v, "updated");
+    const Vehicle back = io::ReadVehicle(out);
+    EXPECT_EQ(back.models.at(Dof::kSurge).params.at("m"), 891.23) << name;  // σ 3.7: 0.01
+    EXPECT_EQ(back.priors.at(Dof::kSurge).drag->kq, 306.2) << name;
+    const std::string written = ReadText(out);
+    if (name == "crlf.yaml") {
+      EXPECT_EQ(std::count(written.begin(), written.end(), '\n'),
+                std::count(written.begin(), written.end(), '\r'));
+      EXPECT_THAT(written, HasSubstr("Table IV, forward surge, technological payload\r\n"));
+    }
+    if (name == "quoted.yaml") EXPECT_THAT(written, HasSubstr("  \"surge\" :\n"));
+  }
 }
 
 TEST(FileNumbers, EstimateDigitsFollowSigma) {

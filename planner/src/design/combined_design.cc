@@ -124,6 +124,11 @@ double FastestOmega(const model::Vehicle& vehicle, model::Dof dof, const Combine
 
 Setup MakeSetup(const model::MultiDofModel& model, const model::Vehicle& vehicle,
                 const model::Pool& pool, const CombinedDesignOptions& o, const ParameterBox& box) {
+  if (!(o.samples_per_period >= 2)) {
+    throw model::InputError(
+        "CombinedDesignOptions: samples_per_period",
+        "expected >= 2 (Nyquist), got " + model::Significant(o.samples_per_period, 3));
+  }
   Setup s(model, vehicle, pool, o);
   for (int i = 0; i < model.num_dofs(); ++i) {
     const model::Dof dof = model.dof(i);

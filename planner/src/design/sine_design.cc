@@ -144,6 +144,8 @@ class SineProblem {
     return FirstOverflow(ctx_, *tm_->model, tm_->design_thetas, *input, t_max_);
   }
 
+  bool resolvable() const { return objective_.Resolvable(); }
+
   int num_constraints() const {
     return 1 + (o_.fixed_duration_s > 0 && std::isfinite(ctx_.available()) ? 1 : 0);
   }
@@ -209,10 +211,7 @@ std::array<double, 2> SineFrequencyRange(const DofPlanningProblem& ctx, double f
   if (min_periods > 0) w[0] = std::max(w[0], 2 * M_PI * min_periods / duration);
   if (w[1] <= w[0]) w[1] = 2.0 * w[0];
   const double period = ctx.ShortestPeriod();
-  if (period > 0 && harmonics > 0) {
-    w[1] = std::min(w[1], 2 * M_PI / (period * harmonics));
-    w[0] = std::min(w[0], 0.5 * w[1]);  // min_periods is then the designs' constraint
-  }
+  if (period > 0 && harmonics > 0) w[1] = std::min(w[1], 2 * M_PI / (period * harmonics));
   return w;
 }
 
@@ -288,6 +287,15 @@ bool OptimiseSine(const DofPlanningProblem& ctx, const SineDesignOptions& o,
   double best = -std::numeric_limits<double>::infinity();
   for (const Candidate& c : candidates) {
     SineProblem sp(ctx, o, prior, c, t_max);
+    if (!sp.resolvable()) {
+      result->notes.push_back(
+          ctx.vehicle().mappings[c.mapping].name + (c.sign > 0 ? " +" : " -") +
+          ": the sensors resolve no wave of " + model::Significant(o.min_periods, 3) +
+          " periods in " +
+          model::Significant(o.fixed_duration_s > 0 ? o.fixed_duration_s : t_max, 4) + " s (" +
+          model::Significant(ctx.options().samples_per_period, 3) + " samples per period)");
+      continue;
+    }
     DesignProblem p;
     p.num_variables = 3;
     p.lower = {0.0, 0.0, 0.0};

@@ -35,6 +35,9 @@ class SineFamilyObjective {
   /// ω of the design variable v (clamped to [0, 1]).
   double Omega(double v) const;
   const std::array<double, 2>& omega_range() const { return omega_; }
+  /// False when the sensors resolve no wave of min_periods periods in the trial's duration
+  /// (SineFrequencyRange empty): the family has no design there.
+  bool Resolvable() const { return omega_[1] >= omega_[0]; }
 
  private:
   const DofPlanningProblem& ctx_;

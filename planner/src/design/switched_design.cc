@@ -95,6 +95,7 @@ class SwitchedProblem {
     }
   }
   int num_variables() const { return VariablesOf(family_); }
+  bool resolvable() const { return objective_.Resolvable(); }
 
   model::TrialDesign Decode(const double* x) const {
     model::TrialDesign d;
@@ -370,6 +371,7 @@ std::vector<PairTask> PairTasks(const DofPlanningProblem& ctx, model::InputFamil
 PairSolution SolvePair(const DofPlanningProblem& ctx, const PairTask& t, const SineDesignOptions& o,
                        const std::vector<Eigen::MatrixXd>& prior) {
   SwitchedProblem sp(ctx, t.family, o, prior, t.pair, t.duration);
+  if (!sp.resolvable()) return {};
   DesignProblem p;
   p.num_variables = sp.num_variables();
   p.lower.assign(p.num_variables, 0.0);
@@ -431,7 +433,8 @@ SineDesignResult BestOfFamily(const DofPlanningProblem& ctx, model::InputFamily 
   if (!std::isfinite(best)) {
     result.status = DesignStatus::kFailed;
     result.message = std::string("no ") + std::string(model::InputFamilyName(family)) +
-                     " design: no pair of mappings alternates without reversal, or none fits";
+                     " design: no pair of mappings alternates without reversal, or none fits "
+                     "(within the pool, the thrusters' ranges and the waves the sensors resolve)";
     return result;
   }
   ScoreAndCheck(ctx, o, prior, &result);

@@ -36,4 +36,8 @@ bool WriteIdentifiedVehicle(const std::string& command, const std::string& path,
 /// The vehicle file a campaign names, resolved beside the campaign file.
 std::string CampaignVehicleFile(const model::Campaign& campaign);
 
+/// Throws model::InputError naming --write-vehicle when `path` is the campaign's vehicle file:
+/// an input is never modified.
+void RefuseWritingOverTheVehicleFile(const std::string& path, const model::Campaign& campaign);
+
 }  // namespace uuvplan::cli

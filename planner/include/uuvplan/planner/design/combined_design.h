@@ -46,7 +46,8 @@ struct CombinedDesignOptions {
   double step_s = 0.2;
   double profile_step_s = 0.05;  ///< thruster forces checked this often
   /// The optimiser's start per moved DOF, in the design variables (offset/F, amplitude/F,
-  /// (ω − ω_min)/(ω_max − ω_min)); a DOF not listed starts at {0, 0.1, 0.1}.
+  /// (ω − ω_min)/(ω_max − ω_min), ω_max the DOF's own: less than omega_max where its sensors
+  /// are slow); a DOF not listed starts at {0, 0.1, 0.1}.
   std::map<model::Dof, std::array<double, 3>> start;
   /// The box axis swept at 15 inner values (the others at the centre) among the check points
   /// ("yaw.drag": the yaw drag sets the spin rate, and a resonance inside the box is missed by

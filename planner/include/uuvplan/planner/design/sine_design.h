@@ -95,7 +95,8 @@ SineDesignResult DesignSine(const DofPlanningProblem& ctx, const SineDesignOptio
 /// eq. 14's ω_opt over the box, from a quarter of the least to 4 times the largest; ω_lo
 /// raised so that `min_periods` periods fit in `duration` s (ω_hi then at least 2·ω_lo); ω_hi
 /// at most that of the shortest period the sensors allow (ctx.ShortestPeriod()) for the
-/// highest of `harmonics` harmonics of ω (ω_lo then at most ω_hi/2; 0: no such bound).
+/// highest of `harmonics` harmonics of ω (0: no such bound). Empty (ω_hi < ω_lo) when the
+/// sensors resolve no wave of `min_periods` periods in `duration`.
 std::array<double, 2> SineFrequencyRange(const DofPlanningProblem& ctx, double force_abs,
                                          double min_periods, double duration, int harmonics = 1);
 
