@@ -3,8 +3,10 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <iostream>
 
@@ -37,6 +39,16 @@ void RefuseCountsOutOfRange(CLI::App& app) {
           "UINT >= 0"));
     }
   }
+}
+
+// Whether everything printed reached the standard output: a write error there (a full disk,
+// `> /dev/full`) is an error, not a success with the results lost.
+bool StandardOutputWritten() {
+  errno = 0;
+  if (std::cout.flush()) return true;
+  std::cerr << "uuvplan: error: the standard output cannot be written"
+            << (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()) << "\n";
+  return false;
 }
 
 }  // namespace
@@ -77,7 +89,8 @@ int main(int argc, char** argv) {
         [](const std::string& warning) { std::cerr << "warning: " << warning << "\n"; });
   }
   try {
-    return run ? run() : kExitBadInput;
+    const int status = run ? run() : kExitBadInput;
+    return StandardOutputWritten() ? status : kExitBadInput;
   } catch (const uuvplan::model::InputError& e) {
     std::cerr << "uuvplan: error: " << e.what() << "\n";
     return kExitBadInput;

@@ -1,9 +1,14 @@
 // Trial-log CSV reader and writer and the atomic file writer (docs/formats.md §Trial log).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <future>
 #include <limits>
 #include <stdexcept>
 
@@ -416,6 +421,77 @@ TEST(WriteFileAtomicallyTest, FailedRenameLeavesNoTemporary) {
     EXPECT_EQ(entry.path().filename(), "target");
   }
   EXPECT_EQ(entries, 1);
+}
+
+// Private device nodes made with mknod(2) (null 1:3, full 1:7 — the numbers of Linux's
+// /dev/null and /dev/full), never the machine's own; "" with the reason when they cannot be made
+// (mknod needs CAP_MKNOD).
+std::string MakeCharDevice(const std::string& path, unsigned minor) {
+  if (::mknod(path.c_str(), S_IFCHR | 0666, makedev(1, minor)) == 0) return "";
+  return std::string("cannot make a private device node here: ") + std::strerror(errno);
+}
+
+bool IsCharDevice(const std::string& path) {
+  struct stat st {};
+  return ::lstat(path.c_str(), &st) == 0 && S_ISCHR(st.st_mode);
+}
+
+TEST(WriteFileAtomicallyTest, ADeviceNodeIsWrittenInPlaceAndAFullOneIsAnError) {
+  ScratchDir dir;
+  const std::string null = dir.Path("null"), full = dir.Path("full");
+  if (const std::string why = MakeCharDevice(null, 3); !why.empty()) GTEST_SKIP() << why;
+  if (const std::string why = MakeCharDevice(full, 7); !why.empty()) GTEST_SKIP() << why;
+  WriteFileAtomically(null, "{}\n");
+  EXPECT_TRUE(IsCharDevice(null));  // not replaced by a regular file
+  EXPECT_THAT(ErrorOf([&] { WriteFileAtomically(full, "{}\n"); }),
+              AllOf(HasSubstr(full + ": cannot write"), HasSubstr("No space left on device")));
+  EXPECT_TRUE(IsCharDevice(full));
+}
+
+TEST(WriteFileAtomicallyTest, AFifoIsWrittenInPlace) {
+  ScratchDir dir;
+  const std::string fifo = dir.Path("pipe");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  auto read = std::async(std::launch::async, [&] { return testing::ReadText(fifo); });
+  WriteFileAtomically(fifo, "through the pipe\n");
+  EXPECT_EQ(read.get(), "through the pipe\n");
+  struct stat st {};
+  ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+}
+
+TEST(WriteFileAtomicallyTest, ASymlinkIsWrittenThroughAndStaysALink) {
+  ScratchDir dir;
+  std::filesystem::create_directory(dir.Path("results"));
+  WriteFileAtomically(dir.Path("results/plan.json"), "old");
+  ::chmod(dir.Path("results/plan.json").c_str(), 0640);
+  std::filesystem::create_symlink("results/plan.json", dir.Path("latest.json"));  // relative
+  std::filesystem::create_symlink("latest.json", dir.Path("again.json"));         // a chain
+  std::filesystem::create_symlink("results/new.json", dir.Path("dangling.json"));
+
+  WriteFileAtomically(dir.Path("again.json"), "new");
+  WriteFileAtomically(dir.Path("dangling.json"), "created");
+
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.Path("again.json")));
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.Path("latest.json")));
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.Path("dangling.json")));
+  EXPECT_EQ(testing::ReadText(dir.Path("results/plan.json")), "new");
+  EXPECT_EQ(testing::ReadText(dir.Path("results/new.json")), "created");
+  const auto perms = std::filesystem::status(dir.Path("results/plan.json")).permissions();
+  EXPECT_EQ(perms & std::filesystem::perms::all, std::filesystem::perms(0640));  // kept
+  for (const char* folder : {"", "results"}) {  // no temporary left beside either
+    for (const auto& entry : std::filesystem::directory_iterator(dir.Path(folder))) {
+      EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+    }
+  }
+}
+
+TEST(WriteFileAtomicallyTest, ALinkLoopIsAnError) {
+  ScratchDir dir;
+  std::filesystem::create_symlink("b.json", dir.Path("a.json"));
+  std::filesystem::create_symlink("a.json", dir.Path("b.json"));
+  EXPECT_THAT(ErrorOf([&] { WriteFileAtomically(dir.Path("a.json"), "x"); }),
+              HasSubstr("a.json: cannot write through it: too many levels of symbolic links"));
 }
 
 }  // namespace
