@@ -210,6 +210,18 @@ void FailBelowPriorInertia(const StageInputs& c, DofIdentification* r) {
        r);
 }
 
+// The vehicle file's inertia bounds are a statement about the vehicle; an estimate beyond them
+// says the statement or the data is wrong, and the user is told which way and how far.
+void FindOutsidePrior(const StageInputs& c, DofIdentification* r) {
+  r->outside_prior.clear();
+  const ParameterEstimate* m = r->Param(model::param::kMass);
+  if (!m || m->state != ParameterState::kEstimated || !std::isfinite(m->value)) return;
+  const auto [lo, hi] = c.vehicle.InertiaBounds(r->dof);
+  if (m->value < lo || m->value > hi) {
+    r->outside_prior.push_back({model::param::kMass, m->value, m->sigma, lo, hi});
+  }
+}
+
 // A usable model's free run beats ν ≡ 0 (the velocity MAE of ref 002 eq. 37) on its fit
 // trials and on its validate trials; a free run that diverges is no model at all.
 void CheckFreeRun(DofIdentification* r) {
@@ -256,6 +268,7 @@ void ReportEstimates(const StageInputs& c, const LeastSquaresAnswer& ls, const S
 }
 
 void ValidateStage(const StageInputs& c, const ValidationOptions& o, DofIdentification* r) {
+  FindOutsidePrior(c, r);
   if (r->estimator != FinalEstimator::kNone) {
     std::vector<TrialFit> fits;
     for (const TrialData* d : c.trials.fit) fits.push_back(ValidateTrial(c.model, r->theta, *d, o));

@@ -6,6 +6,8 @@
 //                                              "overall"}, "position_rms": {...},
 //                             "zero_velocity_mae": {"fit", "validate"} (the baseline, ν ≡ 0),
 //                             "trials": [...residual analysis...]},
+//                     "outside_prior": [{"parameter", "value", "sigma", "range", "side",
+//                                        "sigmas_beyond", "finding"}],
 //                     "parameter_names", "covariance", "estimator", "stages", ...}},
 //    "trials": [{"file", "dof", "use", "outliers", "gaps", "notes"}]}
 // NaN (no value) is written as null.
@@ -19,6 +21,7 @@
 
 #include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/io/json_value.h"
+#include "uuvplan/text/identify_table.h"
 #include "uuvplan/text/trial_notes_text.h"
 
 namespace uuvplan::io {
@@ -261,6 +264,21 @@ json ParamsJson(const ident::DofIdentification& d) {
   return p;
 }
 
+// Each estimate outside the vehicle file's a priori range, with the finding's sentence.
+json OutsidePriorJson(const ident::DofIdentification& d) {
+  json list = json::array();
+  for (const auto& o : d.outside_prior) {
+    list.push_back({{"parameter", o.parameter},
+                    {"value", JsonNumber(o.value)},
+                    {"sigma", JsonNumber(o.sigma)},
+                    {"range", {JsonNumber(o.lo), JsonNumber(o.hi)}},
+                    {"side", o.above() ? "above" : "below"},
+                    {"sigmas_beyond", JsonNumber(o.SigmasBeyond())},
+                    {"finding", text::OutsidePriorText(d.dof, o)}});
+  }
+  return list;
+}
+
 json DofIdentificationJson(const ident::DofIdentification& d) {
   json params = json::object();
   for (const auto& e : d.params) {
@@ -291,6 +309,7 @@ json DofIdentificationJson(const ident::DofIdentification& d) {
           {"steady_segments", segments},
           {"stages", StagesJson(d)},
           {"closed_loop_suspected", d.closed_loop_suspected},
+          {"outside_prior", OutsidePriorJson(d)},
           {"notes", d.notes},
           {"warnings", d.warnings}};
 }

@@ -137,6 +137,9 @@ void PrintDof(const ident::DofIdentification& d, std::ostream& out) {
   PrintFit(d, out);
   PrintOneStep(d, out);
   PrintRlsConvergence(d, out);
+  for (const auto& o : d.outside_prior) {
+    out << "  OUTSIDE THE A PRIORI RANGE: " << OutsidePriorText(d.dof, o) << "\n";
+  }
   for (const auto& w : d.warnings) out << "  WARNING: " << w << "\n";
   for (const auto& n : d.notes) out << "  note: " << n << "\n";
   out << "\n";
@@ -163,7 +166,35 @@ void PrintExclusions(const ident::IdentifyResult& r, std::ostream& out) {
   }
 }
 
+// What moves an inertia estimate above or below the truth (ref 000 eq. 5: m·dν/dt = τ − drag,
+// so a force logged η⁻¹ times too large gives m/η).
+std::string InertiaCauses(model::Dof dof, bool above) {
+  if (above) {
+    return "the logged force larger than the force that moved the vehicle (an installation loss, "
+           "a thrust map too strong or a thruster lag: `uuvplan diagnose` tests these), water "
+           "entrained by an open frame or a payload beyond the added_mass range, or motion in "
+           "other DOFs during the trials";
+  }
+  return std::string(
+             "the logged force smaller than the force that moved the vehicle (a thrust "
+             "map too weak, commands in other units), or the vehicle file's ") +
+         (model::IsRotational(dof) ? "inertia too large (one computed from an assumed mass "
+                                     "distribution errs by tens of percent)"
+                                   : "mass too large");
+}
+
 }  // namespace
+
+std::string OutsidePriorText(model::Dof dof, const ident::OutsidePrior& o) {
+  const std::string unit = model::Unit(o.parameter, dof);
+  const double beyond = o.SigmasBeyond();
+  return o.parameter + " = " + ValueSigma(o.value, o.sigma, unit, 4) + " lies " +
+         (o.above() ? "above" : "below") + " the vehicle file's a priori range [" +
+         model::Significant(o.lo, 4) + ", " + model::Significant(o.hi, 4) + "] " + unit + " (" +
+         (model::IsRotational(dof) ? "inertia" : "mass") + " × (1 + added_mass))" +
+         (std::isfinite(beyond) ? ", " + model::Significant(beyond, 3) + "σ beyond it" : "") +
+         "; likely causes: " + InertiaCauses(dof, o.above());
+}
 
 void PrintIdentifyTable(const ident::IdentifyResult& r, std::ostream& out) {
   for (const auto& d : r.dofs) PrintDof(d, out);

@@ -121,6 +121,20 @@ enum class FinalEstimator {
 };
 std::string_view FinalEstimatorName(FinalEstimator e);
 
+/// An estimate outside the range the vehicle file states for it before any trial: m against
+/// the inertia bounds, mass (or inertia) × (1 + added_mass) (model::Vehicle::InertiaBounds). A
+/// finding, not a failure: the prior or the data is wrong (the text layer words the likely
+/// causes; docs/identification.md "Outside the a priori range").
+struct OutsidePrior {
+  std::string parameter;
+  double value = 0.0;
+  double sigma = 0.0;
+  double lo = 0.0, hi = 0.0;  ///< the a priori range
+  bool above() const { return value > hi; }
+  /// How many σ the estimate lies beyond the bound it crosses (∞ for σ = 0).
+  double SigmasBeyond() const { return (above() ? value - hi : lo - value) / sigma; }
+};
+
 struct DofIdentification {
   model::Dof dof = model::Dof::kSurge;
   IdentifyStatus status = IdentifyStatus::kOk;
@@ -135,6 +149,7 @@ struct DofIdentification {
   Eigen::MatrixXd covariance;                ///< theta layout; 0 rows for fixed/dropped
   std::vector<ParameterEstimate> params;     ///< one per parameter, theta layout
   std::vector<std::string> unreliable;       ///< parameters not to be trusted (and why: warnings)
+  std::vector<OutsidePrior> outside_prior;   ///< estimates outside the vehicle file's range
   FinalEstimator estimator = FinalEstimator::kNone;
   std::vector<int> fit_trials, validate_trials;  ///< campaign trial indices
   std::vector<SteadyPoint> steady_points;
