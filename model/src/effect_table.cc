@@ -43,6 +43,19 @@ std::string VelocityPair(std::string_view q, Dof, const Vehicle&) {
              : "two velocity letters of u v w p q r (e.g. 'vr')";
 }
 
+// c_ab·a·b is a force (N, or N·m on a rotation): c_ab is in the force's unit over a's and b's
+// (m/s for u v w, rad/s for p q r), e.g. N·s²/m² for uv on heave, N·m·s²/rad² for rq on yaw.
+std::string CouplingUnit(std::string_view q, Dof dof) {
+  const auto metres = [&](std::size_t i) {
+    return i < q.size() && std::string_view("uvw").find(q[i]) != std::string_view::npos;
+  };
+  const int lengths = metres(0) + metres(1);
+  return std::string(ForceUnit(dof)) + "·s²/" +
+         (lengths == 2   ? "m²"
+          : lengths == 1 ? "(m·rad)"
+                         : "rad²");
+}
+
 // An entry: its contract name, the physics in one line, where it acts and its parameter
 // families (the families' details and how diagnosis proposes it are the caller's).
 EffectEntry Entry(std::string name, std::string physics, EffectSite site,
@@ -172,10 +185,11 @@ EffectEntry Coupling() {
             "motion in another DOF drives this one (e.g. surge speed × yaw rate terms of the "
             "3-DOF model)",
             EffectSite::kForceTerm,
-            {{param::kCouplingPrefix, "coefficient c_ab of the force c_ab·a·b", "N/(a·b)",
-              "N·m/(a·b)", 0.0, -kInf, kInf}});
+            {{param::kCouplingPrefix, "coefficient c_ab of the force c_ab·a·b", "N·s²/m²",
+              "N·m·s²/rad²", 0.0, -kInf, kInf}});
   e.parameters[0].file_key = "coefficients";
   e.parameters[0].check_qualifier = VelocityPair;
+  e.parameters[0].unit_of = CouplingUnit;
   e.reads_other_motion = true;
   e.make_term = [](Dof dof, const std::vector<std::string>& parameters) {
     std::vector<std::string> pairs;

@@ -73,7 +73,8 @@ const ParameterFamily* FamilyNamed(std::string_view name) {
 
 std::string Unit(std::string_view parameter, Dof dof) {
   const ParameterFamily* f = FamilyOf(parameter);
-  return f ? std::string(f->Unit(dof)) : "?";
+  if (f == nullptr) return "?";
+  return f->unit_of ? f->unit_of(Qualifier(parameter), dof) : std::string(f->Unit(dof));
 }
 
 double NullValue(std::string_view parameter) {

@@ -24,7 +24,8 @@ class OutsidePriorCli : public ::testing::Test {
                                     " --out " + *scratch_ / "campaign" + " --seed 7",
                                 *scratch_);
     ASSERT_EQ(sim.status, 0) << sim.err;
-    scratch_->Write("campaign/vehicle.yaml.simulated", ReadText(*scratch_ / "campaign/vehicle.yaml"));
+    scratch_->Write("campaign/vehicle.yaml.simulated",
+                    ReadText(*scratch_ / "campaign/vehicle.yaml"));
   }
   static void TearDownTestSuite() { delete scratch_; }
 
@@ -37,10 +38,11 @@ class OutsidePriorCli : public ::testing::Test {
       ADD_FAILURE() << "no '" << key << "' in the simulated vehicle file:\n" << text;
       return {};
     }
-    scratch_->Write("campaign/vehicle.yaml", text.replace(at, key.size(), "added_mass: " + added_mass));
-    run_ = RunTool("identify " + *scratch_ / "campaign" + " --dof surge --json " +
-                       *scratch_ / "id.json",
-                   *scratch_);
+    scratch_->Write("campaign/vehicle.yaml",
+                    text.replace(at, key.size(), "added_mass: " + added_mass));
+    run_ = RunTool(
+        "identify " + *scratch_ / "campaign" + " --dof surge --json " + *scratch_ / "id.json",
+        *scratch_);
     EXPECT_EQ(run_.status, 0) << run_.err;  // a finding, not a failure
     return nlohmann::json::parse(ReadText(*scratch_ / "id.json"))["dofs"]["surge"];
   }

@@ -50,6 +50,11 @@ void PrintStaticMaps(const ident::Finding& f, std::ostream& out) {
          "trials better by > 2σ, then by AIC on the fit trials): chosen "
       << (f.chosen_map.empty() ? "none (no physical fit)" : f.chosen_map) << "\n";
   for (const auto& c : f.static_maps) {
+    if (!c.physical) {  // not an alternative: said why, its values stay in the JSON
+      out << "       " << std::setw(11) << c.shape
+          << "  rejected: " << (c.why.empty() ? "no usable fit" : c.why) << "\n";
+      continue;
+    }
     out << "       " << std::setw(11) << c.shape << "  AIC " << model::Significant(c.aic, 6);
     for (const auto& p : c.params) {
       const bool held = p.state == ident::ParameterState::kFixed;
@@ -59,13 +64,15 @@ void PrintStaticMaps(const ident::Finding& f, std::ostream& out) {
     if (c.scored) {
       out << "; validate MAE " << model::Significant(c.validate_mae, 4)
           << UnitSuffix(std::string(model::VelocityUnit(f.dof))) << ", vs the power law "
-          << (c.vs_power_law >= 0 ? "+" : "") << model::Significant(c.vs_power_law, 3) << " ± "
-          << model::Significant(c.vs_power_law_sigma, 2)
-          << UnitSuffix(std::string(model::VelocityUnit(f.dof)));
+          << (c.vs_power_law >= 0 ? "+" : "") << model::Significant(c.vs_power_law, 3)
+          << (std::isfinite(c.vs_power_law_sigma)
+                  ? " ± " + model::Significant(c.vs_power_law_sigma, 2)
+                  : std::string())
+          << UnitSuffix(std::string(model::VelocityUnit(f.dof)))
+          << (std::isfinite(c.vs_power_law_sigma) ? "" : " (its σ cannot be computed)");
     } else {
       out << "; not scored on held-out data" << (c.why.empty() ? "" : ": " + c.why);
     }
-    if (!c.physical) out << " (not chosen" << (c.why.empty() ? "" : ": " + c.why) << ")";
     out << "\n";
   }
 }

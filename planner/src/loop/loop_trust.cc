@@ -18,7 +18,7 @@ std::string NonPhysical(const model::Vehicle& vehicle, model::Dof dof, const std
                         double value) {
   const model::ParameterFamily* f = model::FamilyOf(name);
   if (f == nullptr) return "";
-  const std::string unit = f->Unit(dof) == "1" ? "" : " " + std::string(f->Unit(dof));
+  const std::string unit = model::Unit(name, dof) == "1" ? "" : " " + model::Unit(name, dof);
   if (!f->Physical(value)) {
     return name + " = " + model::Significant(value, 4) + unit + " is non-physical (expected " +
            f->PhysicalExpected() + ")";

@@ -39,6 +39,10 @@ struct ParameterFamily {
   /// expected (for the message).
   std::string (*check_qualifier)(std::string_view qualifier, Dof dof,
                                  const struct Vehicle& vehicle) = nullptr;
+  /// A qualified family whose unit depends on the qualifier (coupling.<ab>: c_ab·a·b is a force,
+  /// so c_ab's unit is the force's over a's and b's): the unit of the parameter so qualified on
+  /// `dof`; null: unit_linear / unit_rotational.
+  std::string (*unit_of)(std::string_view qualifier, Dof dof) = nullptr;
   /// A value not given in a truth file defaults to this parameter's (k_neg: k); empty: required.
   std::string_view defaults_to{};
   /// Where a fit may go: the model is undefined (or unidentifiable) below this; NaN: anywhere.
