@@ -6,11 +6,33 @@
 
 #include "uuvplan/io/plausibility.h"
 #include "uuvplan/io/yaml_value.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::io {
 
 using namespace model;  // NOLINT: the vocabulary of the pool file
 namespace fs = std::filesystem;
+
+namespace {
+
+// A floor over 100 m across and over 100 times wider than the water is deep: length and width
+// written in cm beside a depth in m (800 × 400 × 2.5), the slip CheckPlausibleLength cannot see
+// in one number. CHOSEN: the widest pools built are about 50 m (an Olympic pool, 50 × 25 × 2 m,
+// is 12.5 times wider than deep; a towing tank is narrower than it is long); a harbour or lake
+// so planned is accepted with --accept-implausible.
+void CheckFloorAgainstDepth(const MapValue& m, const Pool& pool) {
+  const double narrow = std::min(pool.length, pool.width);
+  if (!(narrow > 100 && narrow > 100 * pool.depth)) return;
+  Implausible(m.Required(pool.width <= pool.length ? "width" : "length"),
+              "a pool " + Significant(pool.length, 4) + " × " + Significant(pool.width, 4) +
+                  " m and " + Significant(pool.depth, 3) + " m deep is " +
+                  Significant(narrow / pool.depth, 3) +
+                  " times wider than deep: are length and width in cm? " +
+                  Significant(pool.length / 100, 4) + " × " + Significant(pool.width / 100, 4) +
+                  " m would be a pool");
+}
+
+}  // namespace
 
 Pool ReadPool(const std::string& path) {
   return Guarded(path, [&] {
@@ -29,6 +51,7 @@ Pool ReadPool(const std::string& path) {
     pool.length = dimension("length", plausible::kPoolDimension);
     pool.width = dimension("width", plausible::kPoolDimension);
     pool.depth = dimension("depth", plausible::kPoolDepth);
+    CheckFloorAgainstDepth(m, pool);
     if (const Value margin = m.Optional("margin"); !margin.absent()) {
       pool.margin = NonNegative(margin);
       CheckPlausibleLength(margin, pool.margin, plausible::kPoolMargin);

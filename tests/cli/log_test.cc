@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -109,6 +110,28 @@ TEST(Log, RefusesTheWrongTrialAndATakenIdLeavingTheCampaignAsItWas) {
   EXPECT_FALSE(std::filesystem::exists(day.scratch / "campaign/trials/surge_copy.csv"));
   EXPECT_EQ(ReadText(day.campaign), yaml);
   EXPECT_FALSE(std::filesystem::exists(day.scratch / "campaign/trials/surge_sine.csv"));
+}
+
+// A log whose time column is in ms (t × 1000) checked against its plan: named as ms, not as a
+// trial 1000 times too long to be logged "without --plan".
+TEST(Log, ATimeColumnInMillisecondsIsNamedAgainstThePlan) {
+  const PoolDay day;
+  std::istringstream in(ReadText(day.Csv("surge_steady")));
+  std::string ms;
+  for (std::string line; std::getline(in, line);) {
+    const auto comma = line.find(',');
+    const bool data = !line.empty() && line[0] != '#' && line.compare(0, 2, "t,") != 0;
+    ms += (data ? std::to_string(1000 * std::stod(line.substr(0, comma))) + line.substr(comma)
+                : line) +
+          "\n";
+  }
+  const std::string csv = day.scratch.Write("surge_steady_ms.csv", ms);
+  const ToolRun log = RunTool(
+      "log " + day.scratch / "campaign" + " " + csv + " --trial surge_steady --plan " + day.plan,
+      day.scratch);
+  EXPECT_EQ(log.status, 2);
+  EXPECT_THAT(log.err, HasSubstr("is its time in ms? t / 1000 spans 20 s, as planned"));
+  EXPECT_THAT(log.err, Not(HasSubstr("force_surge departs")));
 }
 
 }  // namespace

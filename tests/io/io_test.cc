@@ -591,6 +591,20 @@ TEST(ReadPoolTest, APoolInCentimetresIsRefusedNamingTheUnit) {
             5);
 }
 
+// The explorer's next try: depth fixed to m, length and width still in cm (8 × 4 × 2.5 m). Each
+// is a plausible length alone (a harbour can be 800 m long); a floor 160 times wider than deep
+// is not a pool. A towing tank (575 × 15 × 6.7 m, long and narrow) and an Olympic pool pass.
+TEST(ReadPoolTest, AFloorInCentimetresOverADepthInMetresIsRefused) {
+  ScratchDir dir;
+  const std::string cm = dir.Write("floor_cm.yaml", "length: 800\nwidth: 400\ndepth: 2.5\n");
+  EXPECT_THAT(ErrorOf([&] { ReadPool(cm); }),
+              HasSubstr(At("floor_cm.yaml", 2) +
+                        " width: implausible: a pool 800 × 400 m and 2.5 m deep is 160 times "
+                        "wider than deep: are length and width in cm? 8 × 4 m would be a pool"));
+  EXPECT_EQ(ReadPool(dir.Write("tow.yaml", "length: 575\nwidth: 15\ndepth: 6.7\n")).width, 15);
+  EXPECT_EQ(ReadPool(dir.Write("olympic.yaml", "length: 50\nwidth: 25\ndepth: 2\n")).width, 25);
+}
+
 TEST(ReadPoolTest, UnknownKey) {
   ScratchDir dir;
   dir.Edit("pool.yaml", "width: 12", "breadth: 12");

@@ -40,8 +40,18 @@ std::vector<std::string> CompareLogWithDesign(const model::TrialDesign& design, 
     problems.push_back("mapping " + mapping + ", " + planned + " starts in " + design.mapping);
   }
   const double span = log.t.empty() ? 0.0 : log.t.back() - log.t.front();
-  if (span < o.min_duration_fraction * design.duration ||
-      span > o.max_duration_fraction * design.duration) {
+  const auto as_planned = [&](double s) {
+    return s >= o.min_duration_fraction * design.duration &&
+           s <= o.max_duration_fraction * design.duration;
+  };
+  if (!as_planned(span) && as_planned(span / 1000)) {  // the force check would read ms as s too
+    problems.push_back("the log's t spans " + model::DurationText(span) + ", 1000 times " +
+                       planned + "'s " + model::DurationText(design.duration) +
+                       ": is its time in ms? t / 1000 spans " + model::DurationText(span / 1000) +
+                       ", as planned; write t in s");
+    return problems;
+  }
+  if (!as_planned(span)) {
     problems.push_back("the log spans " + model::DurationText(span) + ", " + planned + " lasts " +
                        model::DurationText(design.duration) + " (expected " +
                        Significant(o.min_duration_fraction * 100, 3) + "-" +
