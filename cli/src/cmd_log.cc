@@ -1,9 +1,11 @@
-// `uuvplan log CAMPAIGN TRIAL.csv --trial ID [--plan PLAN.json] [--dof D] [--mapping M]
+// `uuvplan log CAMPAIGN TRIAL.csv --trial ID [--plan PLAN.json [--planned ID]] [--dof D] [--mapping
+// M]
 // [--ballast-steps N] [--use fit|validate] [--start S]`: appends a trial logged at the pool to
 // its campaign (io/campaign_log.h: the CSV copied to trials/<ID>.csv, campaign.yaml rewritten,
 // each atomically; the input CSV is never modified), so that `next` can run between trials.
 // With --plan (a schedule or a `next` result) the log is checked against the planned trial ID
-// (planner/pool/log_check.h), which also gives the DOF and mapping.
+// (planner/pool/log_check.h), which also gives the DOF and mapping; --planned names the plan's
+// trial when the log is a retry logged under a new id.
 // Exit status (docs/cli.md): 0 logged; 2 bad input (nothing changed), including a log that is
 // not the planned trial.
 #include <algorithm>
@@ -28,6 +30,7 @@ struct LogFlags {
   std::string csv;
   std::string id;
   std::string plan;
+  std::string planned;  ///< --planned: the plan's trial this log is (default: --trial)
   std::string dof;
   std::string mapping;
   int ballast_steps = 0;
@@ -82,16 +85,20 @@ void PrintGaps(const model::TrialEntry& e) {
 }
 
 int RunLog(const LogFlags& o) {
+  if (!o.planned.empty() && o.plan.empty()) {
+    throw model::InputError("--planned " + o.planned, "needs --plan (the plan that holds it)");
+  }
+  const std::string planned_id = o.planned.empty() ? o.id : o.planned;
   std::optional<model::TrialDesign> design;
-  if (!o.plan.empty()) design = PlannedDesign(o.plan, o.id);
+  if (!o.plan.empty()) design = PlannedDesign(o.plan, planned_id);
   const io::LoggedTrial trial = TrialOf(o, design ? &*design : nullptr);
   io::LogCheck planned;
   if (design) {
     planned = [&](const model::TrialLog& log) {
       const auto problems = planner::CompareLogWithDesign(*design, trial.dof, trial.mapping, log);
       if (problems.empty()) return;
-      throw model::InputError(o.csv, "not the planned trial " + o.id + " of " + o.plan + ": " +
-                                         model::Join(problems, "; ") +
+      throw model::InputError(o.csv, "not the planned trial " + planned_id + " of " + o.plan +
+                                         ": " + model::Join(problems, "; ") +
                                          " (log it without --plan if it is meant to differ)");
     };
     // Another DOF than the plan's is refused before the campaign is read (CompareLogWithDesign
@@ -103,8 +110,11 @@ int RunLog(const LogFlags& o) {
   const double span = e.log.t.empty() ? 0.0 : e.log.t.back() - e.log.t.front();
   std::cout << "Logged " << o.id << " (" << model::DofName(e.dof) << ", mapping "
             << (e.mapping.empty() ? "-" : e.mapping) << ", " << e.log.size() << " rows, "
-            << model::DurationText(span) << (design ? ", as planned" : "") << ") as " << e.file
-            << " of " << c.path << ": " << c.trials.size() << " trial(s)\n";
+            << model::DurationText(span)
+            << (!design              ? ""
+                : planned_id == o.id ? ", as planned"
+                                     : ", as planned trial " + planned_id)
+            << ") as " << e.file << " of " << c.path << ": " << c.trials.size() << " trial(s)\n";
   PrintGaps(e);
   return kExitOk;
 }
@@ -118,6 +128,9 @@ void BindLog(CLI::App* sub, LogFlags* o) {
       ->required();
   sub->add_option("--plan", o->plan,
                   "a schedule or `next` result: check the log against its trial --trial");
+  sub->add_option("--planned", o->planned,
+                  "with --plan: the plan's trial this log runs (a retry logged under a new "
+                  "--trial id; default: the --trial id)");
   sub->add_option("--dof", o->dof, "the trial's DOF (default: the planned trial's)");
   sub->add_option("--mapping", o->mapping,
                   "the trial's mapping (default: the planned trial's, else the vehicle's only "

@@ -112,6 +112,46 @@ TEST(Log, RefusesTheWrongTrialAndATakenIdLeavingTheCampaignAsItWas) {
   EXPECT_FALSE(std::filesystem::exists(day.scratch / "campaign/trials/surge_sine.csv"));
 }
 
+// A planned trial run twice: the retry (another run, seed 8) is checked against the plan's
+// surge_sine and logged under its own id; without --plan, --planned is refused.
+TEST(Log, ARetryOfAPlannedTrialIsLoggedUnderANewId) {
+  const PoolDay day;
+  const std::string again = day.scratch / "again";
+  ASSERT_EQ(RunTool("simulate --truth " + kRomeoCase + "truth.yaml --plan " + day.plan + " --out " +
+                        again + " --seed 8",
+                    day.scratch)
+                .status,
+            0);
+  const std::string dir = day.scratch / "campaign";
+  ASSERT_EQ(
+      RunTool("log " + dir + " " + day.Csv("surge_sine") + " --trial surge_sine --plan " + day.plan,
+              day.scratch)
+          .status,
+      0);
+  const ToolRun retry =
+      RunTool("log " + dir + " " + again + "/trials/surge_sine.csv" +
+                  " --trial surge_sine_2 --plan " + day.plan + " --planned surge_sine",
+              day.scratch);
+  ASSERT_EQ(retry.status, 0) << retry.err;
+  EXPECT_THAT(retry.out, HasSubstr("as planned trial surge_sine) as trials/surge_sine_2.csv"));
+  const model::Campaign c = io::ReadCampaign(day.campaign);
+  ASSERT_EQ(c.trials.size(), 2u);
+  EXPECT_EQ(c.trials[1].mapping, "surge-front");  // the planned trial's
+  // The retry checked against another planned trial is refused, naming that trial.
+  const ToolRun wrong =
+      RunTool("log " + dir + " " + again + "/trials/surge_back.csv" +
+                  " --trial surge_back_2 --plan " + day.plan + " --planned surge_sine",
+              day.scratch);
+  EXPECT_EQ(wrong.status, 2);
+  EXPECT_THAT(wrong.err, HasSubstr("not the planned trial surge_sine of"));
+  const ToolRun no_plan = RunTool("log " + dir + " " + again +
+                                      "/trials/surge_back.csv --trial b2 --dof surge "
+                                      "--planned surge_back",
+                                  day.scratch);
+  EXPECT_EQ(no_plan.status, 2);
+  EXPECT_THAT(no_plan.err, HasSubstr("--planned surge_back: needs --plan"));
+}
+
 // A log whose time column is in ms (t × 1000) checked against its plan: named as ms, not as a
 // trial 1000 times too long to be logged "without --plan".
 TEST(Log, ATimeColumnInMillisecondsIsNamedAgainstThePlan) {
