@@ -11,6 +11,7 @@
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/text/quantity_text.h"
 #include "uuvplan/text/text_table.h"
+#include "uuvplan/text/trial_notes_text.h"
 
 namespace uuvplan::text {
 namespace {
@@ -145,7 +146,8 @@ void PrintDof(const ident::DofIdentification& d, std::ostream& out) {
   out << "\n";
 }
 
-// What the data preparation excluded: outliers and gaps per trial.
+// What the data preparation excluded (outliers and gaps per trial), and the trials that moved
+// the vehicle in other DOFs too.
 void PrintExclusions(const ident::IdentifyResult& r, std::ostream& out) {
   for (const auto& t : r.trials) {
     const std::size_t excluded = t.position_outliers.size() + t.velocity_outliers.size();
@@ -163,6 +165,10 @@ void PrintExclusions(const ident::IdentifyResult& r, std::ostream& out) {
       out << " s";
     }
     out << "; " << t.gaps.size() << " gap(s)\n";
+  }
+  for (const auto& t : r.trials) {
+    const std::string motion = OtherMotionText(t.notes);
+    if (!motion.empty()) out << "data: " << t.file << ": " << motion << "\n";
   }
 }
 

@@ -1,5 +1,11 @@
 #include "uuvplan/text/trial_notes_text.h"
 
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "uuvplan/model/dof.h"
 #include "uuvplan/model/util/text.h"
 
 namespace uuvplan::text {
@@ -7,6 +13,40 @@ namespace uuvplan::text {
 using ident::TrialNote;
 using ident::TrialNoteKind;
 using model::Significant;
+
+namespace {
+
+// "pitch (travel 12°, 0.42 rad/s rms)" of `name` from its travel and velocity rms (NaN: not
+// logged); `name` alone when neither was.
+std::string MotionOf(const std::string& name, double travel, double rms) {
+  const std::optional<model::Dof> dof = model::ParseDof(name);
+  const bool rotation = dof && model::IsRotational(*dof);
+  std::vector<std::string> parts;
+  if (std::isfinite(travel)) {
+    parts.push_back("travel " +
+                    (rotation ? model::AngleText(travel) : Significant(travel, 3) + " m"));
+  }
+  if (std::isfinite(rms)) {
+    parts.push_back(Significant(rms, 3) + (rotation ? " rad/s" : " m/s") + " rms");
+  }
+  return parts.empty() ? name : name + " (" + model::Join(parts) + ")";
+}
+
+}  // namespace
+
+std::string OtherMotionText(const std::vector<TrialNote>& notes) {
+  std::vector<std::string> motions;
+  const TrialNote* any = nullptr;
+  for (const TrialNote& n : notes) {
+    if (n.kind != TrialNoteKind::kOtherDofMotion) continue;
+    motions.push_back(MotionOf(n.names[0], n.numbers[0], n.numbers[1]));
+    any = &n;
+  }
+  if (any == nullptr) return "";
+  return "motion in other DOFs: " + model::Join(motions) + ", beside " +
+         MotionOf(any->names[1], any->numbers[2], any->numbers[3]) +
+         " itself; the one-DOF model holds none of it (a coupling: `uuvplan diagnose` tests it)";
+}
 
 std::string NoteText(const TrialNote& n) {
   const auto count = [&n](std::size_t i) {
@@ -33,6 +73,8 @@ std::string NoteText(const TrialNote& n) {
              " s): their measurements are not used (the force there was not logged)";
     case TrialNoteKind::kLog:
       return n.names[0];
+    case TrialNoteKind::kOtherDofMotion:
+      return OtherMotionText({n});
   }
   return std::string(ident::kTrialNoteKindNames.Name(n.kind));
 }

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "options_check.h"
+#include "uuvplan/ident/prepare/other_motion.h"
 #include "uuvplan/ident/prepare/speed_fit.h"
 #include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/model/input_error.h"
@@ -497,6 +498,7 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
   d.ballast_steps = e.ballast_steps;
   if (log.t.empty()) throw model::InputError(where, "no data rows");
   d.time_offset = FirstForceTime(log, e.dof, &d);
+  for (TrialNote& n : OtherDofMotion(log, e.dof, d.time_offset)) d.notes.push_back(std::move(n));
   d.start_time = e.start + d.time_offset;
   d.duration = log.t.back() - d.time_offset;
   ReadForce(e, vehicle, where, &d);

@@ -26,9 +26,13 @@ enum class TrialNoteKind {
   kBeforeFirstForce,
   /// names {the log's note (model::TrialLog::notes)}: what reading the log did.
   kLog,
+  /// names {another DOF, the trial's DOF}, numbers {travel of the other's position in m or rad,
+  /// rms of its velocity in m/s or rad/s, the same two of the trial's DOF; NaN: not logged}:
+  /// the vehicle moved in that DOF too (other_motion.h).
+  kOtherDofMotion,
 };
 
-inline constexpr model::EnumNames<TrialNoteKind, 7> kTrialNoteKindNames{{{
+inline constexpr model::EnumNames<TrialNoteKind, 8> kTrialNoteKindNames{{{
     {TrialNoteKind::kHeadingUnwrapped, "heading_unwrapped"},
     {TrialNoteKind::kOutliersExcluded, "outliers_excluded"},
     {TrialNoteKind::kNoiseAboveDeclared, "noise_above_declared"},
@@ -36,6 +40,7 @@ inline constexpr model::EnumNames<TrialNoteKind, 7> kTrialNoteKindNames{{{
     {TrialNoteKind::kGaps, "gaps"},
     {TrialNoteKind::kBeforeFirstForce, "before_first_force"},
     {TrialNoteKind::kLog, "log"},
+    {TrialNoteKind::kOtherDofMotion, "other_dof_motion"},
 }}};
 
 struct TrialNote {
