@@ -4,8 +4,8 @@
 // parameter estimates with standard deviations and the fit of the identified model
 // (ident/identify.h, docs/identification.md); --method runs one of the papers' estimators alone.
 // Exit status 0 when every DOF was identified, 1 when some DOF failed (its FAILED line says
-// why), 2 on bad input — units or signs that look wrong among it (ident/prepare/input_sanity.h)
-// unless
+// why) or its model does not explain the data (status model_error: run diagnose), 2 on bad input —
+// units or signs that look wrong among it (ident/prepare/input_sanity.h) unless
 // --accept-units. On a terminal, the summary's Brief() line follows on stderr.
 #include <iostream>
 #include <string>
@@ -140,7 +140,9 @@ int RunIdentify(const IdentifyFlags& co) {
                        WriteIdentifiedVehicle("identify", co.write_vehicle, co.campaign,
                                               CampaignVehicleFile(campaign), campaign.vehicle,
                                               result, "the identified model");
-  return result.status == ident::IdentifyStatus::kFailed || !written ? kExitActionNeeded : kExitOk;
+  const bool act = result.status == ident::IdentifyStatus::kFailed ||
+                   result.status == ident::IdentifyStatus::kModelError || !written;
+  return act ? kExitActionNeeded : kExitOk;
 }
 
 void BindIdentify(CLI::App* sub, IdentifyFlags* o) {

@@ -16,9 +16,10 @@ namespace {
 
 using model::Dof;
 
-constexpr model::EnumNames<IdentifyStatus, 3> kIdentifyStatusNames{{{
+constexpr model::EnumNames<IdentifyStatus, 4> kIdentifyStatusNames{{{
     {IdentifyStatus::kOk, "ok"},
     {IdentifyStatus::kWarnings, "warnings"},
+    {IdentifyStatus::kModelError, "model_error"},
     {IdentifyStatus::kFailed, "failed"},
 }}};
 
@@ -225,11 +226,9 @@ IdentifyResult IdentifyCampaign(const model::Campaign& campaign, model::Campaign
   result.status = IdentifyStatus::kOk;
   std::string failed;
   for (const auto& d : result.dofs) {
+    result.status = WorseStatus(result.status, d.status);
     if (d.status == IdentifyStatus::kFailed) {
-      result.status = IdentifyStatus::kFailed;
       failed += (failed.empty() ? "" : ", ") + std::string(model::DofName(d.dof));
-    } else if (d.status == IdentifyStatus::kWarnings && result.status == IdentifyStatus::kOk) {
-      result.status = IdentifyStatus::kWarnings;
     }
   }
   result.message =

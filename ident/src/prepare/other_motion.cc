@@ -38,8 +38,7 @@ double Rms(const std::vector<double>& x, std::size_t first) {
 }  // namespace
 
 std::vector<TrialNote> OtherDofMotion(const model::TrialLog& log, model::Dof dof, double from_t) {
-  const std::size_t first =
-      std::lower_bound(log.t.begin(), log.t.end(), from_t) - log.t.begin();
+  const std::size_t first = std::lower_bound(log.t.begin(), log.t.end(), from_t) - log.t.begin();
   const double own_travel = Travel(log.position[model::Index(dof)], first);
   const double own_rms = Rms(log.velocity[model::Index(dof)], first);
   std::vector<TrialNote> notes;

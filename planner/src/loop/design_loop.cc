@@ -105,12 +105,7 @@ void UpdateEstimates(ident::DofIdentification id, std::size_t trials,
                    [](const auto& a, const auto& b) { return a.dof < b.dof; });
   estimates->status = ident::IdentifyStatus::kOk;
   for (const auto& x : estimates->dofs) {
-    if (x.status == ident::IdentifyStatus::kFailed) {
-      estimates->status = ident::IdentifyStatus::kFailed;
-    } else if (x.status == ident::IdentifyStatus::kWarnings &&
-               estimates->status == ident::IdentifyStatus::kOk) {
-      estimates->status = ident::IdentifyStatus::kWarnings;
-    }
+    estimates->status = ident::WorseStatus(estimates->status, x.status);
   }
   estimates->message = std::to_string(estimates->dofs.size()) + " DOF(s) identified from " +
                        std::to_string(trials) + " trial(s)";

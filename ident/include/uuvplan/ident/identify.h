@@ -101,13 +101,18 @@ struct IdentifyOptions {
   bool IsValid(std::string* error) const;
 };
 
+/// In increasing severity (WorseStatus): a campaign's status is its worst DOF's.
 enum class IdentifyStatus {
-  kOk,        ///< estimates with σ, nothing to report
-  kWarnings,  ///< estimates with caveats (see warnings)
-  kFailed,    ///< no usable estimate: none, nothing significant, non-physical, diverged or no
-              ///< better than ν ≡ 0 (docs/identification.md "Failure statuses")
+  kOk,          ///< estimates with σ, nothing to report
+  kWarnings,    ///< estimates with caveats (see warnings)
+  kModelError,  ///< estimates of a model that does not explain the data (output-error
+                ///< residuals strongly correlated): the next step is `uuvplan diagnose`
+  kFailed,      ///< no usable estimate: none, nothing significant, non-physical, diverged or no
+                ///< better than ν ≡ 0 (docs/identification.md "Failure statuses")
 };
 std::string_view IdentifyStatusName(IdentifyStatus s);
+/// The more severe of two statuses (the enum's order).
+inline IdentifyStatus WorseStatus(IdentifyStatus a, IdentifyStatus b) { return a < b ? b : a; }
 
 /// Which estimator produced a DOF's reported parameters.
 enum class FinalEstimator {
