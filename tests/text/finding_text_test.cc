@@ -27,10 +27,32 @@ TEST(FindingText, ThrusterLagQuotesTheMeasuredLagWithItsSigma) {
   b.lag_sigma_s = 0.0031;
   EXPECT_EQ(FindingSentence(FindingOf("thruster_lag"), b),
             "the response to every change of thrust comes late and smoothed (measured velocity "
-            "lags the simulation by 0.082 ± 0.0031 s)");
+            "lags the standard model's simulation by 0.082 ± 0.0031 s)");
   b.lag_s = 0.0;  // below one sample: not quoted
   EXPECT_EQ(FindingSentence(FindingOf("thruster_lag"), b),
             "the response to every change of thrust comes late and smoothed");
+  b.lag_s = -0.04;  // a lead is no evidence of a lag: not quoted
+  EXPECT_EQ(FindingSentence(FindingOf("thruster_lag"), b),
+            "the response to every change of thrust comes late and smoothed");
+}
+
+// The real campaign's case: the standard model's simulation led the measurement (−0.161 s)
+// while the fitted delay was +0.349 s. One convention: the fitted delay is the finding; the
+// shift is said as a lead, with its size, and what it was measured against.
+TEST(FindingText, SensorDelayQuotesTheFittedDelayAndTheShiftWithItsMeaning) {
+  ident::Finding f = FindingOf("sensor_delay");
+  f.params = {{"sensor_delay", 0.349, 0.113, ident::ParameterState::kEstimated}};
+  model::ErrorBreakdown b;
+  b.dof = model::Dof::kHeave;
+  b.lag_s = -0.161;
+  b.lag_sigma_s = 0.094;
+  EXPECT_EQ(FindingSentence(f, b),
+            "every measurement comes a fixed time after the motion it measures (fitted: 0.35 ± "
+            "0.11 s); before the delay was modelled, measured velocity leads the standard model's "
+            "simulation by 0.16 ± 0.094 s");
+  b.lag_s = 0.0;
+  EXPECT_EQ(MeasuredShiftText(b),
+            "measured velocity and the standard model's simulation align within a sample");
 }
 
 TEST(FindingText, InstallationLossNamesTheMappingAndQuotesTheBreakdown) {

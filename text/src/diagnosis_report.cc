@@ -31,8 +31,10 @@ void PrintBreakdown(const ident::ErrorBreakdown& b, std::ostream& out) {
   print(b.by_motion);
   print(b.by_speed);
   print(b.by_command);
-  out << "  measured velocity lags the simulation by " << ValueSigma(b.lag_s, b.lag_sigma_s, "s")
-      << (std::isfinite(b.lag_sigma_s) ? "" : " (σ needs 2 trials or more)") << "; ";
+  out << "  " << MeasuredShiftText(b)
+      << (std::isfinite(b.lag_sigma_s) || !(std::abs(b.lag_s) > 0) ? ""
+                                                                   : " (σ needs 2 trials or more)")
+      << "; ";
   if (std::isfinite(b.drift_per_hour)) {
     out << "speed error drifts "
         << ValueSigma(100.0 * b.drift_per_hour, 100.0 * b.drift_sigma_per_hour, "% per hour")

@@ -22,11 +22,6 @@ using model::Significant;
 // |r| as a whole percentage ("6%").
 std::string WholePercent(double r) { return model::Decimals(std::abs(100.0 * r), 0) + "%"; }
 
-// "0.082 ± 0.003 s": the cross-correlation's lag and its σ (σ unknown: the value alone).
-std::string LagText(const ErrorBreakdown& b) {
-  return ValueSigma(b.lag_s, b.lag_sigma_s, "s", 2, 2);
-}
-
 // "<cause> (the standard simulation's speed error <where>: +38.0%)", or the cause alone without
 // a group. The group's error is quoted as evidence beside the cause, not as its symptom: the
 // standard model's m, drag and bias are fitted to the data and absorb part of an effect, so
@@ -69,10 +64,9 @@ std::string AsymmetricDrag(const FindingQuotes& f) {
 
 std::string ThrusterLag(const FindingQuotes& f) {
   std::string s = "the response to every change of thrust comes late and smoothed";
-  // The cross-correlation resolves whole samples only; a lag below that is not quoted.
-  if (std::abs(f.breakdown.lag_s) > 0) {
-    s += " (measured velocity lags the simulation by " + LagText(f.breakdown) + ")";
-  }
+  // The cross-correlation resolves whole samples only; a lag below that, or a lead (the
+  // standard model's m and drag absorbed more than the lag), is not evidence of it.
+  if (f.breakdown.lag_s > 0) s += " (" + MeasuredShiftText(f.breakdown) + ")";
   return s;
 }
 
@@ -99,9 +93,15 @@ std::string Coupling(const FindingQuotes& f) {
   return s;
 }
 
+// The fitted delay is the finding; the breakdown's shift (against the standard model, whose m
+// and drag absorb part of a delay) is quoted beside it with its own meaning, as it may differ in
+// size and even in sign.
 std::string SensorDelay(const FindingQuotes& f) {
-  return "every measurement lags the simulated motion by a fixed time (" + LagText(f.breakdown) +
-         " at the best cross-correlation)";
+  std::string s = "every measurement comes a fixed time after the motion it measures";
+  for (const auto& p : f.params) {
+    if (p.name == "sensor_delay") s += " (fitted: " + ValueSigma(p.value, p.sigma, "s", 2, 2) + ")";
+  }
+  return s + "; before the delay was modelled, " + MeasuredShiftText(f.breakdown);
 }
 
 // The relative change of thrust per second of campaign, over the span of the campaign clock.
@@ -162,6 +162,14 @@ std::string GenericSentence(const std::string& effect) {
 }
 
 }  // namespace
+
+std::string MeasuredShiftText(const ErrorBreakdown& b) {
+  const std::string what = "measured velocity ";
+  const std::string against = " the standard model's simulation";
+  if (!(std::abs(b.lag_s) > 0)) return what + "and" + against + " align within a sample";
+  return what + (b.lag_s > 0 ? "lags" : "leads") + against + " by " +
+         ValueSigma(std::abs(b.lag_s), b.lag_sigma_s, "s", 2, 2);
+}
 
 ScopedFindingSentence::ScopedFindingSentence(std::string effect, FindingSentenceRule rule)
     : effect_(std::move(effect)) {

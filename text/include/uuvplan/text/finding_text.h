@@ -37,6 +37,11 @@ class ScopedFindingSentence {
   std::string effect_;
 };
 
+/// The breakdown's time shift in one convention for every lag and delay printed: positive means
+/// the measurement comes later; the words say which way ("measured velocity lags the standard
+/// model's simulation by 0.082 ± 0.0031 s", "… leads … by …"), the number is its size.
+std::string MeasuredShiftText(const model::ErrorBreakdown& breakdown);
+
 /// What the standard simulation gets wrong that `finding` explains, from `breakdown` (its
 /// DOF's); a thrust_map finding adds each mapping's delivered thrust against the command.
 std::string FindingSentence(const ident::Finding& finding, const model::ErrorBreakdown& breakdown);
