@@ -219,7 +219,6 @@ constexpr double kModelErrorLag1 = 0.8;
 // The vehicle file's inertia bounds are a statement about the vehicle; an estimate beyond them
 // says the statement or the data is wrong, and the user is told which way and how far.
 void FindOutsidePrior(const StageInputs& c, DofIdentification* r) {
-  r->outside_prior.clear();
   const ParameterEstimate* m = r->Param(model::param::kMass);
   if (!m || m->state != ParameterState::kEstimated || !std::isfinite(m->value)) return;
   const auto [lo, hi] = c.vehicle.InertiaBounds(r->dof);
@@ -274,7 +273,6 @@ void ReportEstimates(const StageInputs& c, const LeastSquaresAnswer& ls, const S
 }
 
 void ValidateStage(const StageInputs& c, const ValidationOptions& o, DofIdentification* r) {
-  FindOutsidePrior(c, r);
   bool model_error = false;
   if (r->estimator != FinalEstimator::kNone) {
     std::vector<TrialFit> fits;
@@ -294,7 +292,9 @@ void ValidateStage(const StageInputs& c, const ValidationOptions& o, DofIdentifi
           "of this model, not the truth (try `uuvplan diagnose`)");
     }
   }
+  r->outside_prior.clear();
   if (r->status != IdentifyStatus::kFailed) {
+    FindOutsidePrior(c, r);  // a failed DOF's reason says more (a unit slip names its unit)
     r->status = model_error           ? IdentifyStatus::kModelError
                 : r->warnings.empty() ? IdentifyStatus::kOk
                                       : IdentifyStatus::kWarnings;
