@@ -264,16 +264,50 @@ void DrawAxes(plstream& pls, const Panel& p) {
   pls.mtex("t", 0.8, 0.0, 0.0, Text(p.title).c_str());
 }
 
+// One character height (PLplot's, at the panels' scale) as a fraction of the page's width and
+// height. PLplot draws text at an absolute size while panels scale with the figure, so the room
+// around a panel is counted in characters: its labels never meet the next panel's, at any
+// number of panels and any figure height (tests/report/render_test.cc reads the SVG's text
+// boxes).
+struct CharSize {
+  double x = 0.0, y = 0.0;
+};
+
+CharSize CharFractions(plstream& pls) {
+  PLFLT def = 0, height = 0, x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  pls.gchr(def, height);
+  pls.gspa(x0, x1, y0, y1);
+  return {height / (x1 - x0), height / (y1 - y0)};
+}
+
+// A character's advance in PLplot character heights, measured on the SVG's glyphs: "measured"
+// at the legend's scale 0.7 spans 64 px where the character height is 11 px (8 px a character,
+// 1.04 heights); 1.1 keeps a margin for wider letters.
+constexpr double kAdvance = 1.1;
+
+// The legend's width as a fraction of the page: its line sample (0.05 of the plot's width, as
+// DrawLegend asks), the gaps, and its longest text at the legend's scale 0.7.
+double LegendWidth(const std::vector<Entry>& entries, CharSize c, double panel_width) {
+  if (entries.empty()) return c.x;
+  std::size_t longest = 0;
+  for (const Entry& e : entries) longest = std::max(longest, e.text.size());
+  return 0.06 * panel_width + (2.0 + 0.7 * kAdvance * static_cast<double>(longest)) * c.x;
+}
+
 void DrawPanel(plstream& pls, const Panel& p, double x0, double x1, double y0, double y1,
-               double legend) {
-  // Room for the y label on the left, the legend (`legend` of the panel's width) on the right,
-  // labels below, the title above.
-  const double bottom = p.categories.empty() ? 0.2 : 0.5;  // vertical category names
-  pls.vpor(x0 + 0.095, x1 - legend * (x1 - x0), y0 + bottom * (y1 - y0), y1 - 0.14 * (y1 - y0));
+               CharSize c) {
   Range x, y;
   AddRanges(p, &x, &y);
   if (!(x.lo < x.hi)) x.Pad();
   y.Pad();
+  // Room for the y label (4.6 characters out, DrawAxes) on the left, the legend on the right,
+  // the tick labels and x label (3.0 characters down) or the vertical category names below,
+  // the title (0.8 characters up) above; each with a character to spare.
+  const double left = 6.2 * c.x;
+  const double right = LegendWidth(LegendEntries(p, y), c, x1 - x0);
+  const double bottom = p.categories.empty() ? 4.6 * c.y : 0.5 * (y1 - y0);
+  const double top = 2.3 * c.y;
+  pls.vpor(x0 + left, x1 - right, y0 + bottom, y1 - top);
   pls.wind(x.lo, x.hi, y.lo, y.hi);
   for (const Series& s : p.series) {
     if (s.style == Style::kBand) DrawSeries(pls, s, p.log_y);  // bands under everything
@@ -286,9 +320,16 @@ void DrawPanel(plstream& pls, const Panel& p, double x0, double x1, double y0, d
   DrawLegend(pls, p, y);
 }
 
+// PLplot's default character height grows with the page (5.2 mm on a 370 px figure, 15.7 mm on
+// a 3340 px one): held at the one-row figure's, 14.7 px, so that every figure's text reads alike
+// and a figure of many panels keeps room between them.
+constexpr double kCharHeightPx = 14.7;
+
 void Draw(plstream& pls, const Figure& f) {
   pls.adv(0);
-  pls.schr(0, 0.75);
+  PLFLT page_x0 = 0, page_x1 = 0, page_y0 = 0, page_y1 = 0;
+  pls.gspa(page_x0, page_x1, page_y0, page_y1);
+  pls.schr(kCharHeightPx * (page_x1 - page_x0) / f.width, 0.75);  // mm per px: the page's
   const int columns = std::max(1, f.columns);
   const int rows = (static_cast<int>(f.panels.size()) + columns - 1) / columns;
   const double title = 40.0 / std::max(f.height, 1);  // fraction of the page for the title
@@ -298,12 +339,13 @@ void Draw(plstream& pls, const Figure& f) {
   pls.schr(0, 0.95);
   pls.ptex(0.5, 1 - title * 0.6, 1, 0, 0.5, Text(f.title).c_str());
   pls.schr(0, 0.75);
+  const CharSize chars = CharFractions(pls);
   for (std::size_t i = 0; i < f.panels.size(); ++i) {
     const int r = static_cast<int>(i) / columns, c = static_cast<int>(i) % columns;
     const double h = (1 - title) / rows;
     DrawPanel(pls, f.panels[i], static_cast<double>(c) / columns,
               static_cast<double>(c + 1) / columns, 1 - title - (r + 1) * h, 1 - title - r * h,
-              columns == 1 ? 0.35 : 0.26);
+              chars);
   }
 }
 
