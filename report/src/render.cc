@@ -294,17 +294,34 @@ double LegendWidth(const std::vector<Entry>& entries, CharSize c, double panel_w
   return 0.06 * panel_width + (2.0 + 0.7 * kAdvance * static_cast<double>(longest)) * c.x;
 }
 
+// The panel's ranges, padded as drawn.
+void PanelRanges(const Panel& p, Range* x, Range* y) {
+  AddRanges(p, x, y);
+  if (!(x->lo < x->hi)) x->Pad();
+  y->Pad();
+}
+
+// The room on the right of every panel: the widest legend of the figure, so that the plots of
+// one column line up.
+double RightMargin(const Figure& f, CharSize c) {
+  const double panel_width = 1.0 / std::max(1, f.columns);
+  double right = c.x;
+  for (const Panel& p : f.panels) {
+    Range x, y;
+    PanelRanges(p, &x, &y);
+    right = std::max(right, LegendWidth(LegendEntries(p, y), c, panel_width));
+  }
+  return right;
+}
+
 void DrawPanel(plstream& pls, const Panel& p, double x0, double x1, double y0, double y1,
-               CharSize c) {
+               CharSize c, double right) {
   Range x, y;
-  AddRanges(p, &x, &y);
-  if (!(x.lo < x.hi)) x.Pad();
-  y.Pad();
-  // Room for the y label (4.6 characters out, DrawAxes) on the left, the legend on the right,
-  // the tick labels and x label (3.0 characters down) or the vertical category names below,
-  // the title (0.8 characters up) above; each with a character to spare.
+  PanelRanges(p, &x, &y);
+  // Room for the y label (4.6 characters out, DrawAxes) on the left, the legend (`right`) on
+  // the right, the tick labels and x label (3.0 characters down) or the vertical category
+  // names below, the title (0.8 characters up) above; each with a character to spare.
   const double left = 6.2 * c.x;
-  const double right = LegendWidth(LegendEntries(p, y), c, x1 - x0);
   const double bottom = p.categories.empty() ? 4.6 * c.y : 0.5 * (y1 - y0);
   const double top = 2.3 * c.y;
   pls.vpor(x0 + left, x1 - right, y0 + bottom, y1 - top);
@@ -340,12 +357,13 @@ void Draw(plstream& pls, const Figure& f) {
   pls.ptex(0.5, 1 - title * 0.6, 1, 0, 0.5, Text(f.title).c_str());
   pls.schr(0, 0.75);
   const CharSize chars = CharFractions(pls);
+  const double right = RightMargin(f, chars);
   for (std::size_t i = 0; i < f.panels.size(); ++i) {
     const int r = static_cast<int>(i) / columns, c = static_cast<int>(i) % columns;
     const double h = (1 - title) / rows;
     DrawPanel(pls, f.panels[i], static_cast<double>(c) / columns,
               static_cast<double>(c + 1) / columns, 1 - title - (r + 1) * h, 1 - title - r * h,
-              chars);
+              chars, right);
   }
 }
 

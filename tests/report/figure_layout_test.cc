@@ -109,8 +109,8 @@ TEST(FigureLayout, NoTextMeetsAnotherOrLeavesThePageAtAnyNumberOfPanels) {
           EXPECT_FALSE(b.Meets(boxes[k]))
               << n << " panels, " << columns << " column(s): texts " << i << " and " << k
               << " meet at [" << b.x0 << ", " << b.x1 << "] × [" << b.y0 << ", " << b.y1
-              << "] and [" << boxes[k].x0 << ", " << boxes[k].x1 << "] × [" << boxes[k].y0
-              << ", " << boxes[k].y1 << "]";
+              << "] and [" << boxes[k].x0 << ", " << boxes[k].x1 << "] × [" << boxes[k].y0 << ", "
+              << boxes[k].y1 << "]";
         }
       }
     }
