@@ -91,7 +91,7 @@ std::vector<Dof> LoopDofs(const model::Truth& truth, const std::vector<Dof>& ask
 }
 
 // Puts a DOF's new identification in place of its old one (DOFs in order) and restates the
-// campaign's status: failed if a DOF failed, else warnings if one has warnings.
+// campaign's status: its worst DOF's (ident::WorseStatus).
 void UpdateEstimates(ident::DofIdentification id, std::size_t trials,
                      ident::IdentifyResult* estimates) {
   auto same = std::find_if(estimates->dofs.begin(), estimates->dofs.end(),
