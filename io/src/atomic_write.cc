@@ -56,6 +56,16 @@ bool WriteAll(int fd, const std::string& text) {
   return true;
 }
 
+// Writes `text` to `fd` (then fsync(2) it when `sync`) and closes it: "" when all of it went,
+// else the system's reason for the first failure.
+std::string WriteAndClose(int fd, const std::string& text, bool sync) {
+  const bool written = WriteAll(fd, text) && (!sync || ::fsync(fd) == 0);
+  const int write_errno = errno;
+  const bool closed = ::close(fd) == 0;
+  if (written && closed) return "";
+  return std::strerror(written ? errno : write_errno);
+}
+
 // The file a chain of symbolic links ends at (relative links resolved against the directory of
 // the link), or `path` itself when it is not a link. The last target need not exist: writing
 // through a dangling link creates the file it names.
@@ -78,12 +88,8 @@ std::string ThroughLinks(const std::string& path) {
 void WriteInPlace(const std::string& path, const std::string& text) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
   if (fd < 0) throw model::InputError(path, "cannot open it for writing: " + ErrnoText());
-  const bool written = WriteAll(fd, text);
-  const int write_errno = errno;
-  const bool closed = ::close(fd) == 0;
-  if (!written || !closed)
-    throw model::InputError(
-        path, std::string("cannot write: ") + std::strerror(written ? errno : write_errno));
+  const std::string reason = WriteAndClose(fd, text, false);
+  if (!reason.empty()) throw model::InputError(path, "cannot write: " + reason);
 }
 
 }  // namespace
@@ -105,11 +111,7 @@ void WriteFileAtomically(const std::string& requested, const std::string& text) 
   if (exists && S_ISREG(existing.st_mode)) ::fchmod(fd, existing.st_mode & 0777);  // kept
   // The data reaches the disk before the rename makes it the file: after a crash the target
   // is the old file or the whole new one, never an empty one.
-  const bool written = WriteAll(fd, text) && ::fsync(fd) == 0;
-  const int write_errno = errno;
-  const bool closed = ::close(fd) == 0;
-  if (!written || !closed) {
-    const std::string reason = std::strerror(written ? errno : write_errno);
+  if (const std::string reason = WriteAndClose(fd, text, true); !reason.empty()) {
     ::unlink(temp.c_str());
     throw model::InputError(label, "cannot write: " + reason);
   }

@@ -267,8 +267,8 @@ void DrawAxes(plstream& pls, const Panel& p) {
 // One character height (PLplot's, at the panels' scale) as a fraction of the page's width and
 // height. PLplot draws text at an absolute size while panels scale with the figure, so the room
 // around a panel is counted in characters: its labels never meet the next panel's, at any
-// number of panels and any figure height (tests/report/render_test.cc reads the SVG's text
-// boxes).
+// number of panels and any figure height (tests/report/figure_layout_test.cc reads the SVG's
+// text boxes).
 struct CharSize {
   double x = 0.0, y = 0.0;
 };

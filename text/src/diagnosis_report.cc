@@ -66,11 +66,9 @@ void PrintStaticMaps(const ident::Finding& f, std::ostream& out) {
     if (c.scored) {
       out << "; validate MAE " << model::Significant(c.validate_mae, 4)
           << UnitSuffix(std::string(model::VelocityUnit(f.dof))) << ", vs the power law "
-          << (c.vs_power_law >= 0 ? "+" : "") << model::Significant(c.vs_power_law, 3)
-          << (std::isfinite(c.vs_power_law_sigma)
-                  ? " ± " + model::Significant(c.vs_power_law_sigma, 2)
-                  : std::string())
-          << UnitSuffix(std::string(model::VelocityUnit(f.dof)))
+          << (c.vs_power_law >= 0 ? "+" : "")
+          << ValueSigma(c.vs_power_law, c.vs_power_law_sigma,
+                        std::string(model::VelocityUnit(f.dof)))
           << (std::isfinite(c.vs_power_law_sigma) ? "" : " (its σ cannot be computed)");
     } else {
       out << "; not scored on held-out data" << (c.why.empty() ? "" : ": " + c.why);
