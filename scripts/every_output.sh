@@ -56,6 +56,10 @@ run_all() {
       run "$name-identify" identify "$shared/$campaign" --json "$name-identify.json"
       run "$name-diagnose" diagnose "$shared/$campaign" --json "$name-diagnose.json"
     done
+    run bluerov-import import "$shared/bluerov-yaw-2016/bags" --map "$c/bluerov-2016/import.yaml" \
+      --out bluerov-import --json bluerov-import.json
+    run bluerov-import-identify identify bluerov-import/campaign.yaml \
+      --json bluerov-import-identify.json
   fi
 }
 

@@ -5,7 +5,8 @@
 # reports, an exception other than model::InputError, > 2 GB, > 10 s on one input) are saved
 # to build-fuzz/findings/<target>-*; the script then exits 1. Each finding must become a case
 # of tests/data/bad (docs/validation.md, "Fuzzing").
-# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]     TARGET: csv vehicle pool truth campaign plan
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
+#   TARGET: csv vehicle pool truth campaign plan recording
 #   UUVPLAN_FUZZ_BUILD_DIR, UUVPLAN_SANITIZE_OPT: the build directory and optimisation level
 #   (scripts/sanitize.sh --quick sets both: build-fuzz-quick/, -O0).
 set -euo pipefail
@@ -13,7 +14,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(csv vehicle pool truth campaign plan)
+[ ${#targets[@]} -gt 0 ] || targets=(csv vehicle pool truth campaign plan recording)
 build="${UUVPLAN_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 "$root/scripts/sanitize.sh" --configure-only
 for t in "${targets[@]}"; do build_targets+=(--target "fuzz_$t"); done
@@ -32,6 +33,7 @@ seed pool "$root"/cases/*/pool.yaml "$d"/io/pool.yaml "$d"/bad/cases/pool_*.yaml
 seed truth "$root"/cases/*/truth*.yaml "$d"/io/truth.yaml "$d"/bad/cases/truth_*.yaml
 seed campaign "$d"/io/campaign.yaml "$d"/bad/cases/campaign_*.yaml "$d"/bad/cases/csv_*.yaml
 seed plan "$d"/romeo/*.json "$d"/bad/cases/plan_*.json
+seed recording "$d"/io/recordings/*
 
 mkdir -p "$build/findings"
 status=0

@@ -13,6 +13,7 @@ packages=(
   libeigen3-dev libnlopt-cxx-dev coinor-libipopt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  libbz2-dev liblz4-dev libzstd-dev  # compressed ROS bag and MCAP chunks (`uuvplan import`)
   # figures (`uuvplan report`): PLplot, its cairo drivers (pngcairo, svgcairo)
   libplplot-dev plplot-driver-cairo
   # the report's render test opens the HTML in headless Chromium

@@ -3,12 +3,12 @@
 # AddressSanitizer and UBSan (float-cast-overflow too; any finding aborts), runs the io layer's
 # tests there, then fuzzes the readers (scripts/fuzz.sh). Two sizes (docs/validation.md,
 # "Sanitizers"):
-#   full (default): -O1 in build-fuzz/, every io suite, each of the six fuzz targets for
+#   full (default): -O1 in build-fuzz/, every io suite, each of the seven fuzz targets for
 #     FUZZ_SECONDS (default 60);
 #   --quick (CI: scripts/test.sh): -O0 in build-fuzz-quick/ (half the compile time; unoptimised
 #     code hides nothing from ASan), the io suites but the CLI tests that run a numerical
-#     command at length, and two of the six fuzz targets for FUZZ_SECONDS each, taken in turn by
-#     the commit count (three consecutive commits fuzz every reader; UUVPLAN_FUZZ_TARGETS names
+#     command at length, and two of the seven fuzz targets for FUZZ_SECONDS each, taken in turn by
+#     the commit count (four consecutive commits fuzz every reader; UUVPLAN_FUZZ_TARGETS names
 #     others).
 # Usage: scripts/sanitize.sh [--quick] [--configure-only] [FUZZ_SECONDS]
 set -euo pipefail
@@ -34,7 +34,7 @@ if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=cc
 # The io layer's test suites (every reader and writer, every case file, the CLI on good and
 # malformed input: Cases/MalformedInput.*); only the test files that define one are compiled
 # here (UUVPLAN_TEST_SUITES).
-suites='Read|Write|Io|IO|Csv|Truth|Vehicle|Pool|Campaign|Cases|ScheduleJson|Cli|Malformed|WellFormed|Concurrent'
+suites='Read|Write|Io|IO|Csv|Truth|Vehicle|Pool|Campaign|Cases|ScheduleJson|Cli|Malformed|WellFormed|Concurrent|Import'
 # Warnings are errors in the gcc build (scripts/build.sh); clang's other warnings are not
 # made errors here. -O1 (full): sanitized code at full optimisation hides little and builds
 # slower. -gline-tables-only: a sanitizer report's stack has file:line; full -g costs 13-22%
@@ -65,9 +65,9 @@ if [ "$quick" = 1 ]; then
   if [ -n "${UUVPLAN_FUZZ_TARGETS:-}" ]; then
     read -r -a targets <<<"$UUVPLAN_FUZZ_TARGETS"
   else
-    pairs=("csv vehicle" "pool truth" "campaign plan")
+    pairs=("csv vehicle" "pool truth" "campaign plan" "recording csv")
     turn=$(git -C "$root" rev-list --count HEAD 2>/dev/null || echo 0)
-    read -r -a targets <<<"${pairs[$((turn % 3))]}"
+    read -r -a targets <<<"${pairs[$((turn % 4))]}"
   fi
 fi
 "$root/scripts/fuzz.sh" "$seconds" "${targets[@]}"

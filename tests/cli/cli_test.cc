@@ -33,7 +33,7 @@ const std::string kVsorTruth = std::string(UUVPLAN_SOURCE_DIR) + "/cases/vsor/tr
 // the pool).
 const std::set<std::string> kContractCommands = {"schedule", "check-pool", "simulate", "identify",
                                                  "next",     "loop",       "diagnose", "demo",
-                                                 "score",    "report",     "log"};
+                                                 "score",    "report",     "log",      "import"};
 
 // A small ROMEO plan: one trial of each kind (ref 000 §IV-D flavours, short).
 std::string SmallPlan() {

@@ -24,9 +24,9 @@ TEST(HelpOrder, TheStorysOrder) {
   std::sort(commands.begin(), commands.end(), HelpOrder);
   std::vector<std::string> names;
   for (const Command& c : commands) names.push_back(c.name);
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"schedule", "check-pool", "simulate", "identify", "log",
-                                      "next", "loop", "demo", "diagnose", "score", "report"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"schedule", "check-pool", "simulate", "import",
+                                             "identify", "log", "next", "loop", "demo", "diagnose",
+                                             "score", "report"}));
 }
 
 }  // namespace

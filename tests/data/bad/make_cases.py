@@ -298,6 +298,47 @@ csv_case("mapping_unknown", ["t,force_surge,pos_surge,mapping"] + [
 csv_case("nul_cell", with_row(3, "0.6,1\x000,0.04"), ":4: column 'force_surge': expected a number",
          binary=True)
 
+# --- recordings and import maps (uuvplan import) ---------------------------------------------
+RECORDINGS = os.path.join(IO, "recordings")
+IMPORT = "import {source} --map %s --out {out} --vehicle {data}/io/vehicle.yaml"
+with open(os.path.join(RECORDINGS, "small_bz2.bag"), "rb") as f:
+    BAG = f.read()
+with open(os.path.join(RECORDINGS, "import.yaml"), encoding="utf-8") as f:
+    IMPORT_MAP = f.read()
+
+
+def recording_case(name, data, needles):
+    write(name, data, "wb")
+    case(name, (IMPORT % "{data}/io/recordings/import.yaml").replace(
+        "{source}", "{cases}/" + name), needles)
+
+
+def import_map_case(name, pattern, replacement, key_message):
+    text, line = mutate(IMPORT_MAP, pattern, replacement)
+    write(name, text)
+    case(name, (IMPORT % ("{cases}/" + name)).replace("{source}", "{data}/io/recordings/small_bz2.bag"),
+         # "!...": a message without a line (after the map was read whole)
+         [name + key_message[1:] if key_message.startswith("!")
+          else name + ":%d: %s" % (line, key_message)])
+
+
+recording_case("recording_cut.bag", BAG[:len(BAG) // 2], ["recording_cut.bag: byte ", ": expected "])
+recording_case("recording_text.bag", b"t,force_surge\n0,1\n", [
+    "recording_text.bag: expected a ROS bag (format 2.0, '#ROSBAG V2.0') or an MCAP file"])
+recording_case("recording_chunk_size.bag", BAG.replace(b"size=", b"size=\xff", 1)[:len(BAG)], [
+    "recording_chunk_size.bag: byte ", ": expected "])
+recording_case("recording_mcap_cut.mcap", b"\x89MCAP0\r\n\x03\xff\xff\xff\x00", [
+    "recording_mcap_cut.mcap: byte 9: expected a number of 8 bytes, got the end after 4"])
+import_map_case("import_unit.yaml", r"unit: pwm_us", "unit: volts",
+                "commands.unit: expected a unit (pwm_us, normalised, N), got 'volts'")
+import_map_case("import_field.yaml", r"twist.linear.y", "twist.lineal.y",
+                "!: measured: ")
+import_map_case("import_key.yaml", r"^dof: yaw", "dofs: yaw", "unknown key 'dofs'")
+import_map_case("import_thruster.yaml", r", VR: \"data\[3\]\"", "",
+                "!: commands.thrusters: expected a field for every thruster")
+import_map_case("import_frame.yaml", r"frame: flu", "frame: enu",
+                "measured.vel_sway.frame: expected a body frame (frd, flu), got 'enu'")
+
 # --- command-line values ---------------------------------------------------------------------
 case("seed_negative", "simulate --truth {data}/io/truth.yaml --plan {cases}/plan_good.json "
      "--out {out} --seed -1", ["--seed: expected a whole number from 0 to 18446744073709551615, got -1"])
