@@ -208,6 +208,61 @@ TEST_F(ImportFormats, AFaultNamesTheFileAndWhatWasExpected) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "o2"));                   // nothing half-written
 }
 
+// The same run exported by `rostopic echo -p` (one CSV per topic: %time in ns, fields flattened,
+// header.stamp in ns) imports to the trial the bag gives, within the CSV's printed digits.
+TEST_F(ImportFormats, RostopicCsvExportsGiveTheBagsTrial) {
+  const auto& [topics, messages] = recording_;
+  testing::WriteRos1Bag(dir_ / "run.bag", topics, messages, BagCompression::kNone);
+  std::filesystem::create_directories(dir_ / "runs/run");
+  std::filesystem::copy_file(dir_ / "thrust.txt", dir_ / "runs/thrust.txt");  // beside the runs
+  std::ofstream thrusters(dir_ / "runs/run/thrusters.csv"), imu(dir_ / "runs/run/imu.csv"),
+      dvl(dir_ / "runs/run/dvl.csv");
+  thrusters << "%time,field.layout.data_offset,field.data0,field.data1,field.data2\n";
+  imu << "%time,field.layout.data_offset,field.data0,field.data1,field.data2\n";
+  dvl << "%time,field.header.seq,field.header.stamp,field.header.frame_id,field.twist.linear.x,"
+         "field.twist.linear.y,field.twist.linear.z,field.twist.angular.x,"
+         "field.twist.angular.y,field.twist.angular.z\n";
+  auto ns = [](double t) { return std::to_string(std::llround(t * 1e9)); };
+  char cells[256];
+  for (int i = 0; i <= 50 * (kSpan + 2); ++i) {
+    const double t = kStart - 1.0 + i / 50.0;
+    if (i % 5 == 0) {
+      std::snprintf(cells, sizeof cells, ",0,%s,base_link,0.1,%.17g,0,0,0,%.17g\n", ns(t).c_str(),
+                    -SwaySpeed(t), -YawRate(t));
+      dvl << ns(t + 0.004) << cells;
+    }
+    std::snprintf(cells, sizeof cells, ",0,%.9g,%.9g,9.81\n", float(DeviceMillis(t)),
+                  float(YawRate(t)));
+    imu << ns(t + ArrivalDelay(i)) << cells;
+    const int k = (i - 50) / 10;
+    if (i % 10 == 0 && k >= 0 && k <= 5 * kSpan) {
+      thrusters << ns(t) << ",0," << Pwm(0, k) << "," << Pwm(1, k) << ",1500\n";
+    }
+  }
+  thrusters.close(), imu.close(), dvl.close();
+  std::string map = ReadText(map_);
+  dir_.Write("csv.yaml", map +
+                             "csv_topics: {/vehicle/thrusters: thrusters.csv, /imu/raw: imu.csv, "
+                             "/dvl/twist: dvl.csv}\n");
+  const ToolRun r =
+      RunTool("import '" + (dir_ / "runs") + "' --map '" + (dir_ / "csv.yaml") + "' --out '" +
+                  (dir_ / "o") + "' --vehicle '" + (dir_ / "vehicle.yaml") + "'",
+              dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const model::TrialLog csv = io::ReadTrialLog(dir_ / "o/trials/run.csv");
+  const model::TrialLog bag = Imported(dir_, "run.bag", map_);
+  ASSERT_EQ(csv.size(), bag.size());
+  for (std::size_t i = 0; i < csv.size(); ++i) {
+    ASSERT_NEAR(csv.t[i], bag.t[i], 1e-6) << i;  // ns in both; a float32 clock printed in 9 digits
+    for (model::Dof d : {model::Dof::kSway, model::Dof::kYaw}) {
+      const double a = csv.velocity[model::Index(d)][i], b = bag.velocity[model::Index(d)][i];
+      EXPECT_TRUE(std::isnan(a) ? std::isnan(b) : std::abs(a - b) < 1e-7) << i;
+    }
+    EXPECT_EQ(csv.force[model::Index(model::Dof::kYaw)][i],
+              bag.force[model::Index(model::Dof::kYaw)][i]);
+  }
+}
+
 // `cut: activity`: thrusters active for 3 s, at rest for 4 s, active for 3 s make two trials,
 // each from its first active command to the first command at rest after it.
 TEST_F(ImportFormats, ActivityCutsOneTrialPerSpanOfThrusterActivity) {

@@ -20,7 +20,10 @@ std::vector<double> OnRecorderClock(const std::vector<double>& device_s,
     }
   }
   if (n < 2 || device_s.back() == device_s.front()) {
-    throw model::InputError(where, "expected a device clock with at least two distinct times");
+    throw model::InputError(where,
+                            "expected a device clock with at least two distinct times, "
+                            "got " +
+                                std::to_string(n) + " samples at one time");
   }
   // Least squares about the means (the recorder's epoch times would cancel digits).
   double d_mean = 0, a_mean = 0;
@@ -31,6 +34,12 @@ std::vector<double> OnRecorderClock(const std::vector<double>& device_s,
     sda += (device_s[i] - d_mean) * (arrival_s[i] - a_mean);
   }
   const double rate = sda / sdd;
+  if (!(std::abs(rate - 1.0) <= 0.01)) {  // crystals differ by 1e-4, not 1e-2
+    throw model::InputError(where,
+                            "expected a device clock in s (after the map's scale) running "
+                            "within 1% of the recorder's, got " +
+                                std::to_string(rate) + " recorder s per device s");
+  }
   double least_delay = INFINITY;
   for (std::size_t i = 0; i < n; ++i) {
     least_delay = std::min(least_delay, (arrival_s[i] - a_mean) - rate * (device_s[i] - d_mean));

@@ -66,6 +66,9 @@ void ReadThrustTableKey(const Value& v, const std::string& source_dir, ImportMap
     const std::vector<Value> names = List(columns, "[command, thrust] or [thrust, command]");
     if (names.size() != 2) columns.Expected("[command, thrust] or [thrust, command]");
     thrust_first = Choice(names[0], {"command", "thrust"}, "a column") == 1;
+    if (Choice(names[1], {"command", "thrust"}, "a column") == int(thrust_first)) {
+      columns.Expected("[command, thrust] or [thrust, command]");
+    }
   }
   m->thrust_table_file = map.Required("file").node().Scalar();
   m->thrust_table = ReadThrustTable(path, thrust_first);
@@ -99,17 +102,21 @@ void ReadForces(const Value& v, ImportMap* m) {
   }
 }
 
-// The sign and turn that take a value in `frame` to uuvplan's NED/FRD axes (Fossen 2011 §2.1):
-// FLU→FRD and ENU→NED flip y and z (sway, heave, pitch, yaw); an ENU heading is π/2 − ψ.
+// The sign and turn that take a value in `frame` to uuvplan's NED/FRD axes (Fossen 2011 §2.1;
+// ROS REP 103). Body FLU→FRD flips y and z: sway, heave, pitch and yaw rates. World ENU→NED
+// swaps x and y and flips z: the field named is the one along the DOF's axis (north for surge,
+// east for sway, unchanged), up becomes down (heave), and the attitude: roll about north
+// unchanged, pitch flipped, heading ψ (from east, counter-clockwise) becomes π/2 − ψ.
 void ReadFrame(const Value& v, MeasuredSignal* s) {
   const int frame = s->position ? Choice(v, {"ned", "enu"}, "a world frame")
                                 : Choice(v, {"frd", "flu"}, "a body frame");
   s->frame = v.node().Scalar();
   if (frame == 0) return;
-  const bool flipped = s->dof == model::Dof::kSway || s->dof == model::Dof::kHeave ||
-                       s->dof == model::Dof::kPitch || s->dof == model::Dof::kYaw;
+  const model::Dof d = s->dof;
+  const bool flipped = d == model::Dof::kHeave || d == model::Dof::kPitch ||
+                       d == model::Dof::kYaw || (!s->position && d == model::Dof::kSway);
   s->sign = flipped ? -1.0 : 1.0;
-  if (s->position && s->dof == model::Dof::kYaw) s->turn = M_PI / 2;
+  if (s->position && d == model::Dof::kYaw) s->turn = M_PI / 2;
 }
 
 MeasuredSignal ReadSignal(const MapValue::Entry& e) {
@@ -184,6 +191,11 @@ void CheckForceSource(const MapValue& top, const ImportMap& m) {
     top.Required("forces");  // thrust in N is no command a vehicle file takes
   }
   if (m.measured.empty()) top.Required("measured").Expected("at least one measured signal");
+  if (m.WritesForces() && !m.forces.count(m.dof)) {
+    top.Required("forces").Expected(
+        "the arms of the trials' DOF " + std::string(model::DofName(m.dof)),
+        "forces without " + std::string(model::DofName(m.dof)));
+  }
 }
 
 // A clock belongs to a measured topic (commands are timed by their arrival).
@@ -195,6 +207,20 @@ void CheckClockTopics(const MapValue& top, const ImportMap& m) {
     if (!measured) {
       top.Required("clocks").Expected("clocks of topics named under measured", topic);
     }
+  }
+}
+
+// `csv_topics: {topic: file}`: every topic the map reads must have its file.
+void ReadCsvTopics(const MapValue& top, ImportMap* m) {
+  const Value v = top.Optional("csv_topics");
+  const MapValue files(v, "a map topic: CSV file (rostopic echo -p)");
+  for (const MapValue::Entry& e : files.entries()) {
+    m->csv_topics[e.key] = Name(e.value, "a CSV file name");
+  }
+  std::vector<std::string> topics{m->command_topic};
+  for (const MeasuredSignal& g : m->measured) topics.push_back(g.topic);
+  for (const std::string& topic : topics) {
+    if (!m->csv_topics.count(topic)) v.Expected("a CSV file for topic " + topic, v.Describe());
   }
 }
 
@@ -214,8 +240,8 @@ double ImportMap::Thrust(double command) const {
 ImportMap ReadImportMap(const std::string& file, const std::string& source_dir, bool read_vehicle) {
   return Guarded(file, [&] {
     const MapValue top = LoadYamlMap(file, "an import map", "a map of import keys");
-    top.AllowOnly({"files", "trial_id", "vehicle", "dof", "mapping", "use", "commands",
-                   "thrust_table", "forces", "measured", "clocks", "cut", "quiet"});
+    top.AllowOnly({"files", "csv_topics", "trial_id", "vehicle", "dof", "mapping", "use",
+                   "commands", "thrust_table", "forces", "measured", "clocks", "cut", "quiet"});
     ImportMap m;
     m.file = file;
     ReadTrialKeys(top, &m);
@@ -229,6 +255,7 @@ ImportMap ReadImportMap(const std::string& file, const std::string& source_dir, 
     for (const MapValue::Entry& e : measured.entries()) m.measured.push_back(ReadSignal(e));
     if (top.Has("clocks")) ReadClocks(top.Optional("clocks"), &m);
     CheckClockTopics(top, m);
+    if (top.Has("csv_topics")) ReadCsvTopics(top, &m);
     CheckForceSource(top, m);
     return m;
   });

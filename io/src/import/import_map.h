@@ -42,7 +42,9 @@ struct DeviceClock {
 
 struct ImportMap {
   std::string file;
-  std::string files;     ///< glob of recordings in the source directory ("" = *.bag, *.mcap)
+  std::string files;  ///< glob of recordings in the source directory ("" = *.bag, *.mcap)
+  /// `rostopic echo -p` exports: topic → CSV file name in each run's directory (empty: bags)
+  std::map<std::string, std::string> csv_topics;
   std::string trial_id;  ///< regex whose first group names a file's trial ("" = the stem)
   std::string vehicle;   ///< path, resolved against the source directory
   model::Dof dof = model::Dof::kSurge;

@@ -14,6 +14,7 @@
 #include "import/import_map.h"
 #include "import/trial_windows.h"
 #include "uuvplan/io/import.h"
+#include "uuvplan/io/new_directory.h"
 #include "uuvplan/io/recording.h"
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/input_error.h"
@@ -26,7 +27,27 @@ namespace fs = std::filesystem;
 using model::InputError;
 using Window = std::array<double, 2>;
 
+// `rostopic echo -p` exports: SOURCE itself when it holds the command topic's CSV, else each
+// of its directories that does (one run each).
+std::vector<std::string> CsvRunDirectories(const std::string& source, const ImportMap& m) {
+  const std::string& file = m.csv_topics.at(m.command_topic);
+  if (fs::is_regular_file(fs::path(source) / file)) return {DirectoryPath(source).string()};
+  std::vector<std::string> runs;
+  if (fs::is_directory(source)) {
+    for (const fs::directory_entry& e : fs::directory_iterator(source)) {
+      if (e.is_directory() && fs::is_regular_file(e.path() / file)) runs.push_back(e.path());
+    }
+  }
+  std::sort(runs.begin(), runs.end());
+  if (runs.empty()) {
+    throw InputError(source, "expected a directory holding " + file + " (csv_topics of " +
+                                 m.command_topic + "), or directories that do, found none");
+  }
+  return runs;
+}
+
 std::vector<std::string> RecordingFiles(const std::string& source, const ImportMap& m) {
+  if (!m.csv_topics.empty()) return CsvRunDirectories(source, m);
   if (fs::is_regular_file(source)) return {source};
   if (!fs::is_directory(source)) {
     throw InputError(source,
@@ -50,7 +71,7 @@ std::vector<std::string> RecordingFiles(const std::string& source, const ImportM
 }
 
 std::string TrialIdOf(const std::string& file, const ImportMap& m) {
-  const std::string stem = fs::path(file).stem().string();
+  const std::string stem = fs::path(file).stem().string();  // a run directory: its name
   if (m.trial_id.empty()) return stem;
   std::smatch match;
   if (!std::regex_search(stem, match, std::regex(m.trial_id)) || match[1].str().empty()) {
@@ -79,10 +100,17 @@ Commands ReadCommands(const Recording& r, const ImportMap& m) {
   for (std::size_t k = 0; k < c.values.size(); ++k) {
     for (std::size_t i = 0; i < c.times.size(); ++i) {
       c.values[k][i] = m.Command(c.values[k][i]);
-      if (std::isfinite(c.values[k][i])) continue;
-      throw InputError(r.path + ": topic " + m.command_topic + ": message " + std::to_string(i + 1),
-                       "expected a number in field " + fields[k] + " (thruster " +
-                           m.thrusters[k].first + "), got " + std::to_string(c.values[k][i]));
+      const double u = c.values[k][i];
+      const bool in_range = m.unit == CommandUnit::kNewton || std::abs(u) <= 1 + 1e-9;
+      if (std::isfinite(u) && in_range) continue;
+      const std::string where = r.path + ": topic " + m.command_topic + ": message " +
+                                std::to_string(i + 1) + ": " + fields[k] + " (" + m.file +
+                                ": commands.thrusters." + m.thrusters[k].first + ")";
+      if (!std::isfinite(u)) throw InputError(where, "expected a number, got none");
+      throw InputError(where,
+                       "expected a command within [-1, 1] (u = (pwm - neutral)/full_scale "
+                       "with the map's commands.neutral and full_scale), got " +
+                           std::to_string(u));
     }
   }
   return c;
@@ -101,10 +129,24 @@ std::vector<double> SampleTimes(const Recording& r, const ImportMap& m, const st
   const std::vector<double>& arrival = r.topics.at(topic).times;
   const auto clock = m.clocks.find(topic);
   if (clock == m.clocks.end()) return arrival;
+  const std::string where = r.path + ": topic " + topic + ": " + clock->second.field;
   std::vector<double> device(stamps.size());
-  for (std::size_t i = 0; i < stamps.size(); ++i) device[i] = stamps[i] * clock->second.scale;
+  for (std::size_t i = 0; i < stamps.size(); ++i) {
+    device[i] = stamps[i] * clock->second.scale;
+    if (!std::isfinite(device[i])) {
+      throw InputError(where, "expected a time stamp in every message, got none in message " +
+                                  std::to_string(i + 1));
+    }
+  }
   if (!clock->second.align) return device;
-  return OnRecorderClock(device, arrival, r.path + ": topic " + topic + ": " + clock->second.field);
+  return OnRecorderClock(device, arrival, where);
+}
+
+// A logged value in uuvplan's units and axes; a heading turned from ENU back within (-π, π]
+// (the trial reader unwraps headings logged within one turn).
+double Converted(const MeasuredSignal& g, double logged) {
+  const double x = (logged * g.scale + g.offset) * g.sign + g.turn;
+  return g.turn != 0.0 ? std::remainder(x, 2 * M_PI) : x;
 }
 
 TopicSamples ReadTopic(const Recording& r, const ImportMap& m, const std::string& topic) {
@@ -134,8 +176,7 @@ TopicSamples ReadTopic(const Recording& r, const ImportMap& m, const std::string
                            " (an index past the array's end?)");
     }
     std::vector<double> column;
-    for (std::size_t i : order)
-      column.push_back((raw[j][i] * g.scale + g.offset) * g.sign + g.turn);
+    for (std::size_t i : order) column.push_back(Converted(g, raw[j][i]));
     s.values.push_back(column);
   }
   return s;
@@ -297,9 +338,10 @@ std::string TrialComment(const ImportMap& m, const Recording& r, const Window& w
   std::ostringstream s;
   s << "imported by uuvplan import from " << r.path << " (" << r.format << "), map " << m.file
     << "\n";
-  s << "t = 0 at " << UtcText(w[0]) << " (recorder clock, unix " << std::fixed
-    << std::setprecision(3) << w[0] << "); " << std::setprecision(2) << (w[1] - w[0]) << " s, "
-    << log.size() << " rows\n";
+  const double epoch = double(r.epoch_s);
+  s << "t = 0 at " << UtcText(epoch + w[0]) << " (recorder clock, unix " << std::fixed
+    << std::setprecision(3) << epoch + w[0] << "); " << std::setprecision(2) << (w[1] - w[0])
+    << " s, " << log.size() << " rows\n";
   s << CommandNote(m, r);
   for (const MeasuredSignal& g : m.measured) s << SignalNote(m, g);
   std::string text = s.str();
@@ -326,7 +368,8 @@ struct Imported {
 
 void ImportRecording(const std::string& path, const ImportMap& m, const model::Vehicle& vehicle,
                      std::vector<Imported>* out) {
-  const Recording r = ReadRecording(path, WantedTopics(m));
+  const Recording r = m.csv_topics.empty() ? ReadRecording(path, WantedTopics(m))
+                                           : ReadTopicCsvs(path, m.csv_topics);
   const Commands c = ReadCommands(r, m);
   const std::vector<TopicSamples> topics = ReadMeasured(r, m);
   const std::vector<Window> windows = WindowsOf(m, c);
@@ -335,10 +378,10 @@ void ImportRecording(const std::string& path, const ImportMap& m, const model::V
     Imported t;
     t.entry.log = TrialLogIn(windows[k], c, topics, m, vehicle);
     if (t.entry.log.size() < 2) {
-      throw InputError(path, "expected measured samples between " + UtcText(windows[k][0]) +
-                                 " and " + UtcText(windows[k][1]) +
-                                 " (a trial's commands), found " +
-                                 std::to_string(t.entry.log.size()));
+      throw InputError(
+          path, "expected measured samples between " + UtcText(double(r.epoch_s) + windows[k][0]) +
+                    " and " + UtcText(double(r.epoch_s) + windows[k][1]) +
+                    " (a trial's commands), found " + std::to_string(t.entry.log.size()));
     }
     const std::string trial = windows.size() == 1 ? id : id + "_" + std::to_string(k + 1);
     t.entry.file = "trials/" + trial + ".csv";
@@ -346,7 +389,7 @@ void ImportRecording(const std::string& path, const ImportMap& m, const model::V
     t.entry.mapping = m.mapping;
     const auto use = m.use.find(trial);
     t.entry.use = use == m.use.end() ? model::TrialUse::kFit : use->second;
-    t.start = windows[k][0];
+    t.start = double(r.epoch_s) + windows[k][0];
     t.comment = TrialComment(m, r, windows[k], t.entry.log);
     const double span = t.entry.log.t.back() - t.entry.log.t.front();
     t.summary = {path, span, double(t.entry.log.size() - 1) / span};

@@ -25,8 +25,9 @@ bool StartsWith(const std::string& s, const std::string& prefix) {
 // The serialised bytes of one message, read in order (ROS 1 packed, or CDR aligned).
 class Bytes {
  public:
-  Bytes(std::string_view data, MessageEncoding encoding, const std::string& where)
-      : data_(data), cdr_(encoding == MessageEncoding::kCdr), where_(where) {
+  Bytes(std::string_view data, MessageEncoding encoding, long long epoch_s,
+        const std::string& where)
+      : data_(data), cdr_(encoding == MessageEncoding::kCdr), epoch_s_(epoch_s), where_(where) {
     if (!cdr_) return;
     Need(4);
     // CDR encapsulation (OMG DDS-XTypes 7.6.3.1.2): 00 00 big endian, 00 01 little endian.
@@ -50,6 +51,7 @@ class Bytes {
     }
   }
   std::size_t pos() const { return pos_; }
+  std::size_t Remaining() const { return pos_ < data_.size() ? data_.size() - pos_ : 0; }
   void Skip(std::size_t n) {
     Need(n);
     pos_ += n;
@@ -73,6 +75,10 @@ class Bytes {
     return value;
   }
   std::uint32_t Length() { return Read<std::uint32_t>(); }
+  /// A time stamp (s and ns since 1970) as s after the recording's epoch.
+  double Since(long long sec, std::uint32_t nsec) const {
+    return double(sec - epoch_s_) + 1e-9 * nsec;
+  }
 
   // A primitive of `type` at byte `at` (already aligned and within the message).
   double PrimitiveAt(const std::string& type, std::size_t at) const {
@@ -85,9 +91,10 @@ class Bytes {
     if (type == "int16") return ReadAt<std::int16_t>(at);
     if (type == "uint16") return ReadAt<std::uint16_t>(at);
     if (type == "int8") return ReadAt<std::int8_t>(at);
-    if (type == "time") return ReadAt<std::uint32_t>(at) + 1e-9 * ReadAt<std::uint32_t>(at + 4);
+    if (type == "time") return Since(ReadAt<std::uint32_t>(at), ReadAt<std::uint32_t>(at + 4));
     if (type == "duration") return ReadAt<std::int32_t>(at) + 1e-9 * ReadAt<std::int32_t>(at + 4);
-    return ReadAt<std::uint8_t>(at);  // bool, uint8, byte, char
+    if (type == "byte" && !cdr_) return ReadAt<std::int8_t>(at);  // ROS 1 byte: int8
+    return ReadAt<std::uint8_t>(at);  // bool, uint8, char; ROS 2 byte: an octet
   }
   // Alignment of a primitive: its size (ROS 1 time and duration are two 4-byte words).
   static std::size_t AlignmentOf(const std::string& type, int size) {
@@ -97,6 +104,7 @@ class Bytes {
  private:
   std::string_view data_;
   bool cdr_;
+  long long epoch_s_;
   bool big_endian_ = false;
   std::size_t origin_ = 0;
   std::size_t pos_ = 0;
@@ -125,9 +133,11 @@ class Walk {
   void Field(const FieldDefinition& f, const std::string& path) {
     if (!f.array) return Value(f.type, path);
     const std::uint32_t n = f.fixed_length >= 0 ? std::uint32_t(f.fixed_length) : in_.Length();
-    in_.Need(std::min<std::size_t>(n, 1u << 30));  // every item takes a byte at least
     const int size = PrimitiveSize(f.type);
     if (size > 0) return PrimitiveArray(f.type, size, n, path);
+    const std::size_t least = size == 0 ? 4 : d_.min_size.at(f.type);  // a string: its length
+    if (least == 0) return;  // items of a type without fields take no bytes
+    if (n > in_.Remaining() / least) in_.Need(std::size_t(n) * least);  // fails: too short
     for (std::uint32_t i = 0; i < n; ++i) Value(f.type, path + "[" + std::to_string(i) + "]");
   }
 
@@ -157,8 +167,10 @@ class Walk {
     }
     const int slot = IsTimeStruct(type) ? Slot(path) : -1;
     if (slot < 0) return Message(type, path + ".");
-    const double sec = in_.Read<std::int32_t>();  // builtin_interfaces/Time: sec, nanosec
-    out_[std::size_t(slot)] = sec + 1e-9 * in_.Read<std::uint32_t>();
+    const long long sec = in_.Read<std::int32_t>();  // builtin_interfaces/Time: sec, nanosec
+    const std::uint32_t nanosec = in_.Read<std::uint32_t>();
+    out_[std::size_t(slot)] =
+        type == "builtin_interfaces/Time" ? in_.Since(sec, nanosec) : double(sec) + 1e-9 * nanosec;
   }
 
   const MessageDefinitions& d_;
@@ -189,13 +201,26 @@ std::string PathFault(const MessageDefinitions& d, std::string type, const std::
     std::string name = path.substr(begin, end - begin);
     const std::size_t bracket = name.find('[');
     const bool indexed = bracket != std::string::npos;
-    if (indexed) name = name.substr(0, bracket);
+    long index = 0;
+    if (indexed) {
+      const std::string digits = name.substr(bracket + 1, name.size() - bracket - 2);
+      if (name.back() != ']' || digits.empty() || digits.size() > 9 ||
+          digits.find_first_not_of("0123456789") != std::string::npos ||
+          (digits.size() > 1 && digits[0] == '0')) {
+        return "'" + name + "' is not name[index] with a whole index";
+      }
+      index = std::stol(digits);
+      name = name.substr(0, bracket);
+    }
     const std::vector<FieldDefinition>& fields = d.types.at(type);
     auto f = std::find_if(fields.begin(), fields.end(),
                           [&](const FieldDefinition& x) { return x.name == name; });
     if (f == fields.end()) return type + " has no field '" + name + "'";
     if (f->array != indexed)
       return "'" + name + "' " + (f->array ? "needs" : "takes no") + " [index]";
+    if (f->fixed_length >= 0 && index >= f->fixed_length) {
+      return "'" + name + "' holds " + std::to_string(f->fixed_length) + " items";
+    }
     const bool last = end == path.size();
     const int size = PrimitiveSize(f->type);
     if (last) {
@@ -216,9 +241,10 @@ std::string Joined(const std::vector<std::string>& items) {
 }  // namespace
 
 FieldDecoder::FieldDecoder(const RecordedTopic& topic, std::vector<std::string> fields,
-                           const std::string& where)
+                           long long epoch_s, const std::string& where)
     : definitions_(ParseDefinitions(topic.type, topic.definition, where)),
       encoding_(topic.encoding),
+      epoch_s_(epoch_s),
       fields_(std::move(fields)) {
   for (const std::string& path : fields_) {
     const std::string fault = PathFault(definitions_, definitions_.root, path);
@@ -232,7 +258,7 @@ FieldDecoder::FieldDecoder(const RecordedTopic& topic, std::vector<std::string> 
 
 std::vector<double> FieldDecoder::Decode(std::string_view message, const std::string& where) const {
   std::vector<double> values(fields_.size(), std::numeric_limits<double>::quiet_NaN());
-  Bytes in(message, encoding_, where);
+  Bytes in(message, encoding_, epoch_s_, where);
   Walk(definitions_, fields_, &in, &values).Message(definitions_.root, "");
   return values;
 }

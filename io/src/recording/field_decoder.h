@@ -15,10 +15,10 @@ namespace uuvplan::io::recording {
 
 class FieldDecoder {
  public:
-  /// The decoder of `fields` (paths such as `data[3]`, `twist.linear.x`, `header.stamp`) of the
-  /// messages of `topic`; a path that names no number is model::InputError naming `where`
-  /// with the numeric fields the type has.
-  FieldDecoder(const RecordedTopic& topic, std::vector<std::string> fields,
+  /// The decoder of `fields` (paths such as `data[3]`, `twist.linear.x`, `header.stamp`: a time
+  /// in s after `epoch_s`, the recording's) of the messages of `topic`; a path that names no number
+  /// is model::InputError naming `where` with the numeric fields the type has.
+  FieldDecoder(const RecordedTopic& topic, std::vector<std::string> fields, long long epoch_s,
                const std::string& where);
 
   /// The fields' values in one message (NaN for an index beyond a variable array's length);
@@ -28,6 +28,7 @@ class FieldDecoder {
  private:
   MessageDefinitions definitions_;
   MessageEncoding encoding_;
+  long long epoch_s_;
   std::vector<std::string> fields_;
 };
 

@@ -44,6 +44,7 @@ class McapReader {
       ByteCursor content(c.Take(length, "a record"), c.file(), offset);
       switch (McapOp(opcode)) {
         case McapOp::kFooter:
+          if (in_chunk_) content.Fail("expected records of messages in a chunk, got a footer");
           return false;
         case McapOp::kSchema:
           ReadSchema(content);
@@ -55,6 +56,7 @@ class McapReader {
           ReadMessage(content);
           break;
         case McapOp::kChunk:
+          if (in_chunk_) content.Fail("expected records of messages in a chunk, got a chunk");
           ReadChunk(content);
           break;
         default:
@@ -82,18 +84,19 @@ class McapReader {
     const auto schema_id = c.Read<std::uint16_t>();
     const std::string topic(String(c));
     const std::string encoding(String(c));
-    const auto schema = schemas_.find(schema_id);
-    if (schema == schemas_.end()) c.Fail("expected a channel whose schema comes before it");
-    const bool known = (encoding == "cdr" && schema->second.encoding == "ros2msg") ||
-                       (encoding == "ros1" && schema->second.encoding == "ros1msg");
+    const auto found = schemas_.find(schema_id);  // id 0 (or none yet): a schemaless channel
+    const Schema schema =
+        found == schemas_.end() ? Schema{"(no schema)", "none", ""} : found->second;
+    const bool known = (encoding == "cdr" && schema.encoding == "ros2msg") ||
+                       (encoding == "ros1" && schema.encoding == "ros1msg");
     if (!known && Wanted(topic)) {
       c.Fail("expected topic " + topic + " in ROS messages (cdr/ros2msg or ros1/ros1msg), got " +
-             encoding + "/" + schema->second.encoding);
+             encoding + "/" + schema.encoding);
     }
     topics_[id] = topic;
     RecordedTopic& t = recording_.topics[topic];
-    t.type = schema->second.name;
-    t.definition = schema->second.definition;
+    t.type = schema.name;
+    t.definition = schema.definition;
     t.encoding = encoding == "ros1" ? MessageEncoding::kRos1 : MessageEncoding::kCdr;
   }
 
@@ -106,12 +109,14 @@ class McapReader {
     if (topic == topics_.end()) c.Fail("expected a message whose channel comes before it");
     if (!Wanted(topic->second)) return;
     RecordedTopic& t = recording_.topics[topic->second];
-    t.times.push_back(double(log_time_ns / 1000000000u) + 1e-9 * double(log_time_ns % 1000000000u));
+    const long long sec = (long long)(log_time_ns / 1000000000u);
+    if (recording_.epoch_s < 0) recording_.epoch_s = sec;
+    t.times.push_back(double(sec - recording_.epoch_s) + 1e-9 * double(log_time_ns % 1000000000u));
     t.messages.emplace_back(c.Take(c.Remaining(), "a message"));
   }
 
   void ReadChunk(ByteCursor& c) {
-    c.Take(3 * 8 - 8, "the chunk's times");  // message start and end time
+    c.Take(16, "the chunk's times");  // message_start_time, message_end_time (uint64 ns)
     const auto size = c.Read<std::uint64_t>();
     c.Read<std::uint32_t>();  // uncompressed crc
     const std::string compression(String(c));
@@ -119,11 +124,14 @@ class McapReader {
     const std::string bytes = Decompressed(c.Take(c.Read<std::uint64_t>(), "the chunk's records"),
                                            compression, std::size_t(size), where);
     ByteCursor inner(bytes, where);
+    in_chunk_ = true;
     Records(inner);
+    in_chunk_ = false;
   }
 
   const std::vector<std::string>& wanted_;
   Recording& recording_;
+  bool in_chunk_ = false;  ///< a chunk holds no chunk (mcap.dev/spec "Chunk")
   std::map<std::uint16_t, Schema> schemas_;
   std::map<std::uint16_t, std::string> topics_;  ///< by channel id
 };

@@ -32,6 +32,12 @@ std::string ResolvedType(const std::string& written, const std::string& package)
 // `float64[]`, `uint8[4]`, `int32[<=5]`, `string<=10` into the field's type and array shape.
 void ParseTypeText(std::string text, FieldDefinition* field, const std::string& where) {
   const auto bracket = text.find('[');
+  if (bracket != std::string::npos && text.back() != ']') {
+    throw InputError(where,
+                     "expected an array type T[], T[N] or T[<=N] in the message "
+                     "definition, got '" +
+                         text + "'");
+  }
   if (bracket != std::string::npos) {
     const std::string bound = text.substr(bracket + 1, text.size() - bracket - 2);
     field->array = true;
@@ -62,7 +68,11 @@ std::vector<FieldDefinition> ParseFields(const std::vector<std::string>& lines,
     std::istringstream words(line);
     std::string type_text, name;
     words >> type_text >> name;
-    if (name.empty() || line.find('=') != std::string::npos) continue;
+    std::string rest;
+    words >> rest;
+    // A constant is `TYPE NAME=VALUE` (or `NAME = VALUE`); `TYPE NAME VALUE` is a field with a
+    // default (ROS 2), and `T[<=N]`, `string<=N` are bounded types, not constants.
+    if (name.empty() || name.find('=') != std::string::npos || rest.rfind('=', 0) == 0) continue;
     FieldDefinition field;
     field.name = name;
     ParseTypeText(type_text, &field, where);
@@ -74,24 +84,44 @@ std::vector<FieldDefinition> ParseFields(const std::vector<std::string>& lines,
 
 std::string PackageOf(const std::string& type) { return type.substr(0, type.find('/')); }
 
-// A type that contains itself (directly or through others) has no finite serialisation.
-bool ContainsItself(const MessageDefinitions& d, const std::string& type,
-                    std::vector<std::string>* path) {
-  if (std::find(path->begin(), path->end(), type) != path->end()) return true;
-  path->push_back(type);
-  for (const FieldDefinition& f : d.types.at(type)) {
-    if (PrimitiveSize(f.type) < 0 && ContainsItself(d, f.type, path)) return true;
+// The least bytes a value of `type` takes (ROS 1 packing; CDR adds only padding), found depth
+// first with each type's result kept: a type met again before its result is known contains
+// itself (no finite serialisation); nesting deeper than kMaxDepth is refused too (the decoder
+// recurses once per level).
+std::size_t MinimumSize(MessageDefinitions* d, const std::string& type, int depth,
+                        const std::string& where) {
+  constexpr int kMaxDepth = 64;
+  const auto known = d->min_size.find(type);
+  if (known != d->min_size.end()) {
+    if (known->second != kUnknownSize) return known->second;
+    throw InputError(
+        where, "expected a message definition without cycles, got " + type + " containing itself");
   }
-  path->pop_back();
-  return false;
+  if (depth > kMaxDepth) {
+    throw InputError(where, "expected messages nested at most " + std::to_string(kMaxDepth) +
+                                " deep, got " + type + " deeper");
+  }
+  d->min_size[type] = kUnknownSize;
+  std::size_t bytes = 0;
+  for (const FieldDefinition& f : d->types.at(type)) {
+    const int primitive = PrimitiveSize(f.type);
+    const std::size_t item = primitive > 0    ? std::size_t(primitive)
+                             : primitive == 0 ? 4  // a string: its length
+                                              : MinimumSize(d, f.type, depth + 1, where);
+    if (!f.array)
+      bytes += item;
+    else
+      bytes += f.fixed_length >= 0 ? std::size_t(f.fixed_length) * item : 4;
+  }
+  return d->min_size[type] = bytes;
 }
 
 void CheckTypesKnown(const MessageDefinitions& d, const std::string& where) {
   for (const auto& [type, fields] : d.types) {
     for (const FieldDefinition& f : fields) {
       if (PrimitiveSize(f.type) >= 0 || d.types.count(f.type)) continue;
-      throw InputError(where, "the definition of " + d.root + " uses type " + f.type + " (field " +
-                                  type + "." + f.name + ") without defining it");
+      throw InputError(where, "expected a definition of every type " + d.root + " uses, got " +
+                                  f.type + " (field " + type + "." + f.name + ") undefined");
     }
   }
 }
@@ -132,13 +162,12 @@ MessageDefinitions ParseDefinitions(const std::string& type, const std::string& 
     }
   }
   if (!section.empty()) close_section();
-  if (!d.types.count(d.root)) throw InputError(where, "expected a message definition of " + d.root);
-  CheckTypesKnown(d, where);
-  std::vector<std::string> path;
-  if (ContainsItself(d, d.root, &path)) {
-    throw InputError(where, "expected a message definition without cycles, got " + path.back() +
-                                " containing itself");
+  if (!d.types.count(d.root)) {
+    throw InputError(where, "expected a message definition of " + d.root + ", got " +
+                                (d.types.empty() ? "none" : "only " + d.types.begin()->first));
   }
+  CheckTypesKnown(d, where);
+  MinimumSize(&d, d.root, 0, where);
   return d;
 }
 

@@ -3,6 +3,7 @@
 // fields of each type (http://wiki.ros.org/msg, design.ros2.org "Interface definition").
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
 #include <vector>
@@ -16,9 +17,14 @@ struct FieldDefinition {
   int fixed_length = -1;  ///< T[N]: N; T[] and T[<=N]: -1 (a length precedes the items)
 };
 
+/// A type's minimum size while it is being found (ParseDefinitions' cycle check).
+inline constexpr std::size_t kUnknownSize = ~std::size_t(0);
+
 struct MessageDefinitions {
   std::string root;  ///< the recorded type, pkg/Type
   std::map<std::string, std::vector<FieldDefinition>> types;
+  /// The least bytes each type's value takes: 0 only for a type that is always empty.
+  std::map<std::string, std::size_t> min_size;
 };
 
 /// "pkg/msg/Type" and "pkg/Type" name the same type: pkg/Type.
@@ -29,7 +35,8 @@ std::string NormalisedType(const std::string& type);
 int PrimitiveSize(const std::string& type);
 
 /// Parses the definition `text` of message type `type`. A constant (`int32 X=1`) is no field;
-/// an unknown type named by a field is model::InputError naming `where`.
+/// an unknown type named by a field, a type that contains itself or nesting deeper than 64
+/// levels is model::InputError naming `where`.
 MessageDefinitions ParseDefinitions(const std::string& type, const std::string& text,
                                     const std::string& where);
 

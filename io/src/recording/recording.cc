@@ -1,5 +1,7 @@
 #include "uuvplan/io/recording.h"
 
+#include <algorithm>
+
 #include "recording/field_decoder.h"
 #include "recording/recording_parts.h"
 #include "uuvplan/io/files.h"
@@ -10,6 +12,20 @@ namespace {
 
 using model::InputError;
 
+// `bytes` quoted, each byte that is no printable ASCII as \xNN.
+std::string Printable(std::string_view bytes) {
+  std::string s = "'";
+  for (unsigned char c : bytes) {
+    if (c >= 32 && c < 127) {
+      s += char(c);
+    } else {
+      static const char* kHex = "0123456789abcdef";
+      s += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
+    }
+  }
+  return s + "'";
+}
+
 std::string TopicList(const Recording& r) {
   std::string list;
   for (const auto& [name, topic] : r.topics) {
@@ -18,7 +34,54 @@ std::string TopicList(const Recording& r) {
   return list.empty() ? "no topics" : list;
 }
 
+// `data[3]` → column `field.data3`; a time (…stamp) from ns to s (rostopic's plot format).
+std::vector<std::vector<double>> CsvFieldValues(const RecordedTopic& t,
+                                                const std::vector<std::string>& fields,
+                                                long long epoch_s, const std::string& place) {
+  std::vector<std::vector<double>> columns;
+  for (const std::string& path : fields) {
+    std::string name = "field.";
+    for (char c : path) {
+      if (c != '[' && c != ']') name += c;
+    }
+    const auto column = t.columns.find(name);
+    if (column == t.columns.end()) {
+      std::string names;
+      for (const auto& c : t.columns) names += (names.empty() ? "" : ", ") + c.first;
+      throw InputError(place,
+                       "expected a column " + name + " for field '" + path + "', got " + names);
+    }
+    const bool time = name.size() >= 5 && name.compare(name.size() - 5, 5, "stamp") == 0;
+    columns.push_back(column->second);
+    if (time) {  // ns since 1970 (0.26 µs apart as a double) to s after the epoch
+      for (double& x : columns.back()) x = (x - 1e9 * double(epoch_s)) * 1e-9;
+    }
+  }
+  return columns;
+}
+
 }  // namespace
+
+namespace recording {
+
+void SortByTime(RecordedTopic* topic) {
+  std::vector<double>& times = topic->times;
+  if (std::is_sorted(times.begin(), times.end())) return;
+  std::vector<std::size_t> order(times.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return times[a] < times[b]; });
+  auto reorder = [&](auto* values) {
+    if (values->size() != order.size()) return;
+    auto copy = *values;
+    for (std::size_t i = 0; i < order.size(); ++i) (*values)[i] = std::move(copy[order[i]]);
+  };
+  reorder(&topic->times);
+  reorder(&topic->messages);
+  for (auto& column : topic->columns) reorder(&column.second);
+}
+
+}  // namespace recording
 
 Recording ReadRecording(const std::string& path, const std::vector<std::string>& wanted) {
   const std::string bytes = ReadFileText(path);
@@ -31,9 +94,11 @@ Recording ReadRecording(const std::string& path, const std::vector<std::string>&
     recording::ReadMcap(view, wanted, &r);
   } else {
     throw InputError(
-        path, "expected a ROS bag (format 2.0, '#ROSBAG V2.0') or an MCAP file, got " +
-                  std::string(view.substr(0, 4) == "#ROS" ? "another bag version" : "neither"));
+        path, std::string("expected a ROS bag (format 2.0, '#ROSBAG V2.0') or an MCAP file, got ") +
+                  (view.substr(0, 4) == "#ROS" ? "another bag version: " : "a file starting ") +
+                  Printable(view.substr(0, 16)));
   }
+  for (auto& named : r.topics) recording::SortByTime(&named.second);
   return r;
 }
 
@@ -46,7 +111,10 @@ std::vector<std::vector<double>> FieldValues(const Recording& recording, const s
                                 TopicList(recording));
   }
   const std::string place = where + ": " + recording.path + ": topic " + topic;
-  const recording::FieldDecoder decoder(t->second, fields, place);
+  if (t->second.encoding == MessageEncoding::kCsv) {
+    return CsvFieldValues(t->second, fields, recording.epoch_s, place);
+  }
+  const recording::FieldDecoder decoder(t->second, fields, recording.epoch_s, place);
   std::vector<std::vector<double>> columns(fields.size());
   for (auto& column : columns) column.reserve(t->second.messages.size());
   for (std::size_t i = 0; i < t->second.messages.size(); ++i) {

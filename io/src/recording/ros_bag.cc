@@ -82,6 +82,7 @@ class BagReader {
           Message(r, c);
           break;
         case BagOp::kChunk:
+          if (in_chunk_) c.Fail("expected connections and messages in a chunk, got a chunk");
           Chunk(r, c);
           break;
         default:
@@ -112,7 +113,9 @@ class BagReader {
     if (std::find(wanted_.begin(), wanted_.end(), topic->second) == wanted_.end()) return;
     const auto time = FieldAs<std::uint64_t>(r.header, "time", c);  // uint32 sec, uint32 nsec
     RecordedTopic& t = recording_.topics[topic->second];
-    t.times.push_back(double(time & 0xffffffffu) + 1e-9 * double(time >> 32));
+    const long long sec = (long long)(time & 0xffffffffu);
+    if (recording_.epoch_s < 0) recording_.epoch_s = sec;
+    t.times.push_back(double(sec - recording_.epoch_s) + 1e-9 * double(time >> 32));
     t.messages.emplace_back(r.data);
   }
 
@@ -122,12 +125,15 @@ class BagReader {
     const std::string where = c.file() + ": chunk at byte " + std::to_string(r.data_offset);
     const std::string bytes = Decompressed(r.data, compression, size, where);
     ByteCursor inner(bytes, where);
+    in_chunk_ = true;
     Records(inner);
+    in_chunk_ = false;
   }
 
   const std::vector<std::string>& wanted_;
   Recording& recording_;
   std::map<std::uint32_t, std::string> topics_;  ///< by connection id
+  bool in_chunk_ = false;  ///< a chunk holds connections and messages only (format 2.0)
 };
 
 }  // namespace

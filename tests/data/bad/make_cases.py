@@ -324,7 +324,8 @@ def import_map_case(name, pattern, replacement, key_message):
 
 recording_case("recording_cut.bag", BAG[:len(BAG) // 2], ["recording_cut.bag: byte ", ": expected "])
 recording_case("recording_text.bag", b"t,force_surge\n0,1\n", [
-    "recording_text.bag: expected a ROS bag (format 2.0, '#ROSBAG V2.0') or an MCAP file"])
+    "recording_text.bag: expected a ROS bag (format 2.0, '#ROSBAG V2.0') or an MCAP file, got "
+    "a file starting 't,force_surge\\x0a0,'"])
 recording_case("recording_chunk_size.bag", BAG.replace(b"size=", b"size=\xff", 1)[:len(BAG)], [
     "recording_chunk_size.bag: byte ", ": expected "])
 recording_case("recording_mcap_cut.mcap", b"\x89MCAP0\r\n\x03\xff\xff\xff\x00", [
