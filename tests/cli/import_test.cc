@@ -3,6 +3,7 @@
 // written from the format specifications independently of the reader) import to the same trials,
 // whose values follow from the known signals; the real 2016 BlueROV bags import to a campaign whose
 // identification agrees with the hand-converted one within σ (skipped without ../shared).
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -288,6 +289,28 @@ TEST_F(ImportFormats, ActivityCutsOneTrialPerSpanOfThrusterActivity) {
   EXPECT_NEAR(first.t.back(), 3.0, 0.02) << "active from 0 s, at rest from 3 s (50 Hz rows)";
   EXPECT_NEAR(second.t.back(), 3.0, 0.02) << "active from 7 s to the last command at 10 s";
   EXPECT_FALSE(std::filesystem::exists(dir_ / "o/trials/run_3.csv"));
+}
+
+// `cut: ranges`: the map's time ranges (s after the first command message) are the trials.
+TEST_F(ImportFormats, RangesCutTheTrialsTheMapNames) {
+  testing::WriteRos1Bag(dir_ / "run.bag", recording_.topics, recording_.messages,
+                        BagCompression::kBz2);
+  dir_.Write("ranges.yaml", ReadText(map_) + "cut: ranges\nranges: {run: [[1, 4], [5, 9.5]]}\n");
+  ToolRun r = RunTool("import '" + (dir_ / "run.bag") + "' --map '" + (dir_ / "ranges.yaml") +
+                          "' --out '" + (dir_ / "o") + "'",
+                      dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const model::TrialLog first = io::ReadTrialLog(dir_ / "o/trials/run_1.csv");
+  const model::TrialLog second = io::ReadTrialLog(dir_ / "o/trials/run_2.csv");
+  EXPECT_NEAR(first.t.back(), 3.0, 0.021) << "rows at 50 Hz up to 3 s after the range's start";
+  EXPECT_NEAR(second.t.back(), 4.5, 0.021);
+  dir_.Write("late.yaml", ReadText(map_) + "cut: ranges\nranges: {run: [[1, 40]]}\n");
+  r = RunTool("import '" + (dir_ / "run.bag") + "' --map '" + (dir_ / "late.yaml") + "' --out '" +
+                  (dir_ / "o2") + "'",
+              dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, ::testing::HasSubstr("late.yaml: ranges.run: expected ranges within the "
+                                          "commands' span [0, 12.000000] s"));
 }
 
 // The five bags of 2016-04-18 through cases/bluerov-2016/import.yaml identify as the

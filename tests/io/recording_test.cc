@@ -2,22 +2,22 @@
 // definitions with constants, defaults and bounded types; CDR alignment after a string; ROS 1
 // byte (int8); messages stored out of time order; paths that name no number; definitions that
 // contain themselves or nest past any use, and types without fields, refused or decoded fast.
+#include "uuvplan/io/recording.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "support/recording_writer.h"
-#include "uuvplan/io/recording.h"
 #include "uuvplan/model/input_error.h"
 
 namespace uuvplan::io {
@@ -84,9 +84,10 @@ TEST(RecordingFields, Ros1ByteIsSigned) {
   std::string ros1;
   Append<std::int8_t>(&ros1, -3);
   Append<std::uint8_t>(&ros1, 200);
-  const Recording r = OneTopic("test_msgs/Bytes", "byte b\nchar c\n", MessageEncoding::kRos1, {ros1});
+  const Recording r =
+      OneTopic("test_msgs/Bytes", "byte b\nchar c\n", MessageEncoding::kRos1, {ros1});
   const auto values = FieldValues(r, "/t", {"b", "c"}, "map.yaml");
-  EXPECT_EQ(values[0][0], -3.0);  // ROS 1 byte: int8 (wiki.ros.org/msg)
+  EXPECT_EQ(values[0][0], -3.0);   // ROS 1 byte: int8 (wiki.ros.org/msg)
   EXPECT_EQ(values[1][0], 200.0);  // ROS 1 char: uint8
 }
 
@@ -97,9 +98,9 @@ TEST(RecordingFields, MessagesStoredOutOfOrderComeInTimeOrder) {
   for (double t : {2.0, 0.0, 1.0}) {
     messages.push_back(testing::Float32MultiArrayMessage(0, 1.7e9 + t, {float(t)}));
   }
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("uuvplan-order-" + std::to_string(getpid()) +
-                                                 ".mcap")).string();
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("uuvplan-order-" + std::to_string(getpid()) + ".mcap"))
+                               .string();
   testing::WriteMcap(path, topics, messages, false, testing::McapCompression::kNone);
   const Recording r = ReadRecording(path, {"/t"});
   std::filesystem::remove(path);
@@ -138,8 +139,10 @@ TEST(RecordingFields, ADeepDiamondOfTypesIsSizedOnce) {
   const Recording r = OneTopic("p/Root", definition, MessageEncoding::kRos1, {""});
   const auto start = std::chrono::steady_clock::now();
   // The message is far too short for 2^41 float64: refused at once, not walked.
-  EXPECT_THAT(FaultOf(r, "a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.x"),
-              HasSubstr("expected a message of at least"));
+  EXPECT_THAT(
+      FaultOf(r,
+              "a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.x"),
+      HasSubstr("expected a message of at least"));
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
 }
 

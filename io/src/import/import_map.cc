@@ -153,6 +153,20 @@ void ReadClocks(const Value& v, ImportMap* m) {
   }
 }
 
+// `ranges: {trial: [[start, end], ...]}`: s after the recording's first command message.
+void ReadRanges(const Value& v, ImportMap* m) {
+  const MapValue map(v, "a map trial: [[start, end], ...] (s after the first command)");
+  for (const MapValue::Entry& e : map.entries()) {
+    for (const Value& item : List(e.value, "a list of [start, end] in s")) {
+      const std::array<double, 2> range = Pair(item, "[start, end] in s, 0 <= start < end");
+      if (!(range[0] >= 0 && range[0] < range[1])) {
+        item.Expected("[start, end] in s, 0 <= start < end");
+      }
+      m->ranges[e.key].push_back(range);
+    }
+  }
+}
+
 void ReadTrialKeys(const MapValue& top, ImportMap* m) {
   if (top.Has("files")) m->files = Name(top.Optional("files"), "a file pattern such as '*.bag'");
   if (top.Has("trial_id")) {
@@ -175,7 +189,10 @@ void ReadTrialKeys(const MapValue& top, ImportMap* m) {
                           : model::TrialUse::kValidate;
     }
   }
-  if (top.Has("cut")) m->cut = Cut(Choice(top.Optional("cut"), {"file", "activity"}, "a cut"));
+  if (top.Has("cut")) {
+    m->cut = Cut(Choice(top.Optional("cut"), {"file", "activity", "ranges"}, "a cut"));
+  }
+  if (m->cut == Cut::kRanges) ReadRanges(top.Required("ranges"), m);
   if (top.Has("quiet")) m->quiet_s = Positive(top.Optional("quiet"));
 }
 
@@ -241,7 +258,8 @@ ImportMap ReadImportMap(const std::string& file, const std::string& source_dir, 
   return Guarded(file, [&] {
     const MapValue top = LoadYamlMap(file, "an import map", "a map of import keys");
     top.AllowOnly({"files", "csv_topics", "trial_id", "vehicle", "dof", "mapping", "use",
-                   "commands", "thrust_table", "forces", "measured", "clocks", "cut", "quiet"});
+                   "commands", "thrust_table", "forces", "measured", "clocks", "cut", "quiet",
+                   "ranges"});
     ImportMap m;
     m.file = file;
     ReadTrialKeys(top, &m);

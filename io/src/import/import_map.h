@@ -17,7 +17,7 @@
 namespace uuvplan::io::import {
 
 enum class CommandUnit { kPwmMicroseconds, kNormalised, kNewton };
-enum class Cut { kFile, kActivity };
+enum class Cut { kFile, kActivity, kRanges };
 
 struct MeasuredSignal {
   std::string column;  ///< pos_<dof> or vel_<dof>
@@ -64,6 +64,8 @@ struct ImportMap {
   std::map<std::string, DeviceClock> clocks;  ///< by topic
   Cut cut = Cut::kFile;
   double quiet_s = 2.0;  ///< activity cut: a pause this long with every command at zero
+  /// ranges cut: per recording's trial id, [start, end] in s after its first command message
+  std::map<std::string, std::vector<std::array<double, 2>>> ranges;
 
   /// The normalised command (or N) of a logged value.
   double Command(double logged) const {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -349,8 +350,36 @@ std::string TrialComment(const ImportMap& m, const Recording& r, const Window& w
   return text;
 }
 
-std::vector<Window> WindowsOf(const ImportMap& m, const Commands& c) {
-  return m.cut == Cut::kFile ? WholeWindow(c.times) : ActivityWindows(c.times, c.values, m.quiet_s);
+// The map's ranges of recording `id`, each within the span of its commands.
+std::vector<Window> RangeWindows(const ImportMap& m, const Commands& c, const std::string& id) {
+  const auto ranges = m.ranges.find(id);
+  if (ranges == m.ranges.end()) {
+    throw InputError(m.file + ": ranges",
+                     "expected the ranges of every recording, got none for " + id);
+  }
+  const double span = c.times.back() - c.times.front();
+  std::vector<Window> windows;
+  for (const auto& range : ranges->second) {
+    if (range[1] > span + 1e-6) {
+      throw InputError(m.file + ": ranges." + id,
+                       "expected ranges within the commands' span [0, " + std::to_string(span) +
+                           "] s, got one ending at " + std::to_string(range[1]) + " s");
+    }
+    windows.push_back({c.times.front() + range[0], c.times.front() + range[1]});
+  }
+  return windows;
+}
+
+std::vector<Window> WindowsOf(const ImportMap& m, const Commands& c, const std::string& id) {
+  switch (m.cut) {
+    case Cut::kFile:
+      return WholeWindow(c.times);
+    case Cut::kActivity:
+      return ActivityWindows(c.times, c.values, m.quiet_s);
+    case Cut::kRanges:
+      return RangeWindows(m, c, id);
+  }
+  return {};
 }
 
 std::vector<std::string> WantedTopics(const ImportMap& m) {
@@ -372,8 +401,8 @@ void ImportRecording(const std::string& path, const ImportMap& m, const model::V
                                            : ReadTopicCsvs(path, m.csv_topics);
   const Commands c = ReadCommands(r, m);
   const std::vector<TopicSamples> topics = ReadMeasured(r, m);
-  const std::vector<Window> windows = WindowsOf(m, c);
   const std::string id = TrialIdOf(path, m);
+  const std::vector<Window> windows = WindowsOf(m, c, id);
   for (std::size_t k = 0; k < windows.size(); ++k) {
     Imported t;
     t.entry.log = TrialLogIn(windows[k], c, topics, m, vehicle);
@@ -438,6 +467,19 @@ void CheckUses(const ImportMap& m, const std::vector<Imported>& trials) {
   }
 }
 
+// Every recording the map's `ranges` names is one being imported.
+void CheckRangesNameRecordings(const ImportMap& m, const std::vector<std::string>& recordings) {
+  std::set<std::string> ids;
+  for (const std::string& path : recordings) ids.insert(TrialIdOf(path, m));
+  for (const auto& named : m.ranges) {
+    if (ids.count(named.first)) continue;
+    std::string list;
+    for (const std::string& id : ids) list += (list.empty() ? "" : ", ") + id;
+    throw InputError(m.file + ": ranges." + named.first,
+                     "expected a recording being imported (" + list + ")");
+  }
+}
+
 ImportedCampaign Import(const std::string& source, const std::string& map_file,
                         const std::string& vehicle_file) {
   const std::string source_dir =
@@ -453,7 +495,9 @@ ImportedCampaign Import(const std::string& source, const std::string& map_file,
   out.campaign.vehicle_file = vehicle_path;
   CheckVehicle(m, out.campaign.vehicle, vehicle_path);
   std::vector<Imported> trials;
-  for (const std::string& path : RecordingFiles(source, m))
+  const std::vector<std::string> recordings = RecordingFiles(source, m);
+  CheckRangesNameRecordings(m, recordings);
+  for (const std::string& path : recordings)
     ImportRecording(path, m, out.campaign.vehicle, &trials);
   std::stable_sort(trials.begin(), trials.end(),
                    [](const Imported& a, const Imported& b) { return a.start < b.start; });

@@ -42,8 +42,10 @@ RecordedTopic ReadTopicCsv(const std::string& path, long long* epoch_s) {
   if (!line.empty() && line.back() == '\r') line.pop_back();
   const std::vector<std::string> names = CsvCells(line);
   if (names.empty() || names[0] != "%time") {
-    throw model::InputError(path + ":1", "expected a `rostopic echo -p` CSV (first column "
-                                         "%time), got '" + line.substr(0, 60) + "'");
+    throw model::InputError(path + ":1",
+                            "expected a `rostopic echo -p` CSV (first column "
+                            "%time), got '" +
+                                line.substr(0, 60) + "'");
   }
   RecordedTopic t;
   t.type = "rostopic echo -p CSV";
