@@ -50,6 +50,25 @@ run_all() {
   run asv-simulate simulate --truth "$c/asv/truth.yaml" --plan asv-plan.json --out asv-run --seed 1
   run asv-identify identify asv-run/campaign.yaml --model coupled --json asv-identify.json
   run demo demo --out demo-run --seed 1
+  # BlueROV2 (geometry-derived mappings, a dead band): one DOF, as planning all four takes ~50 s.
+  local b="$c/bluerov2"
+  run bluerov2-schedule schedule "$b/vehicle.yaml" --pool "$b/pool.yaml" --dof surge \
+    --json bluerov2-plan.json --commands bluerov2-commands
+  run bluerov2-simulate simulate --truth "$b/truth.yaml" --plan bluerov2-plan.json \
+    --out bluerov2-run --seed 1 --json bluerov2-simulate.json
+  run bluerov2-identify identify bluerov2-run/campaign.yaml --json bluerov2-identify.json
+  run bluerov2-diagnose diagnose bluerov2-run/campaign.yaml --json bluerov2-diagnose.json \
+    --write-vehicle bluerov2-extended.yaml
+  run bluerov2-score score bluerov2-extended.yaml bluerov2-run/campaign.yaml \
+    --json bluerov2-score.json
+  # log: a retry of a planned trial (another run's log) appended to a copy of a campaign.
+  cp -r romeo-run romeo-log-run
+  run romeo-simulate-retry simulate --truth "$c/romeo/truth.yaml" --plan romeo-plan.json \
+    --out romeo-retry-run --seed 2
+  local first_trial
+  first_trial=$(ls romeo-run/trials | head -1)
+  run romeo-log log romeo-log-run/campaign.yaml "romeo-retry-run/trials/$first_trial" \
+    --trial again --plan romeo-plan.json --planned "${first_trial%.csv}"
   if [ -d "$shared" ]; then
     for campaign in bluerov-yaw-2016/campaign_all.yaml tartan-pool-2022/campaign.yaml; do
       local name="${campaign%%/*}"
