@@ -21,9 +21,11 @@
 #include "uuvplan/model/campaign_builder.h"
 #include "uuvplan/model/coupled_model.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/trial_design.h"
 #include "uuvplan/model/util/seed.h"
 #include "uuvplan/model/util/text.h"
 #include "uuvplan/model/virtual_pool.h"
+#include "uuvplan/planner/design/thrust_limits.h"
 #include "uuvplan/planner/schedule.h"
 #include "uuvplan/text/text_table.h"
 
@@ -89,40 +91,21 @@ void CheckPlanAgainstTruth(const planner::Schedule& plan, const model::Truth& tr
   }
 }
 
-// The virtual pool applies whatever force is asked; a real thruster saturates. Say so when a
-// push asks more of a thruster of its mapping than it can give (tau_i = share_i·phi within the
-// range); "" when every thruster can.
-std::string SaturationNote(const model::TrialDesign& d, const model::Vehicle& v, double force,
-                           const std::string& name) {
-  const model::ThrustMapping& m = v.mappings[v.MappingIndex(name)];
-  for (const auto& [index, share] : m.shares) {
-    const model::Thruster& th = v.thrusters[index];
-    const double tau = share * force;
-    const double limit = tau >= 0 ? th.MaxForwardThrust() : th.MaxReverseThrust();
-    if (std::abs(tau) > limit * (1 + 1e-9)) {
-      std::ostringstream s;
-      s << "trial '" << d.id << "' asks " << force << " " << model::ForceUnit(d.dof)
-        << " of mapping '" << name << "': thruster " << th.name << " would give " << tau
-        << " N but can give at most " << (tau >= 0 ? "" : "-") << limit
-        << " N (the virtual pool does not saturate thrusters)";
-      return s.str();
-    }
-  }
-  return "";
-}
-
-// One note per push extreme that saturates: each push's largest force, then its smallest.
+// The virtual pool applies whatever force is asked; a real thruster saturates. One note per
+// trial whose force profile asks a thruster more than its command range gives, checked as the
+// planner checks it (planner::CheckThrust on phi_n(t) itself: a multisine's peak lies below the
+// sum of its amplitudes).
 std::vector<std::string> SaturationNotes(const planner::Schedule& plan, const model::Vehicle& v) {
   std::vector<std::string> notes;
   for (const auto& t : plan.trials) {
-    for (const model::ForceDemand& push : t.design.Demands()) {
-      std::vector<double> extremes = {push.max};
-      if (push.min != push.max) extremes.push_back(push.min);
-      for (const double force : extremes) {
-        std::string note = SaturationNote(t.design, v, force, push.mapping);
-        if (!note.empty()) notes.push_back(std::move(note));
-      }
-    }
+    const auto input = model::MakeExcitation(v, t.design);
+    const planner::ThrustCheck c = planner::CheckThrust(v, *input, t.design.duration);
+    if (!c.overload) continue;
+    std::ostringstream s;
+    s << "trial '" << t.design.id << "' asks a thruster up to "
+      << model::Significant(100.0 * (c.thrust_max_ratio - 1.0), 3)
+      << "% more than its command range gives (the virtual pool does not saturate thrusters)";
+    notes.push_back(s.str());
   }
   return notes;
 }
