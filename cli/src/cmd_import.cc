@@ -3,13 +3,12 @@
 // map file (docs/import.md): DIR/campaign.yaml, DIR/vehicle.yaml, DIR/trials/<id>.csv, written
 // whole or not at all. Exit 0 when written, 2 on bad input.
 #include <filesystem>
-#include <iomanip>
-#include <sstream>
 
 #include "uuvplan/cli/command.h"
 #include "uuvplan/io/campaign_yaml.h"
 #include "uuvplan/io/import.h"
 #include "uuvplan/io/import_json.h"
+#include "uuvplan/model/util/text.h"
 #include "uuvplan/text/text_table.h"
 
 namespace uuvplan::cli {
@@ -23,12 +22,6 @@ struct ImportFlags {
   std::string json;
 };
 
-std::string Fixed(double x, int digits) {
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(digits) << x;
-  return s.str();
-}
-
 void PrintTrials(const io::ImportedCampaign& imported, std::ostream& out) {
   text::TextTable table(
       {"DOF", "trial", "use", "rows", "span (s)", "rate (Hz)", "start (s)", "recording"});
@@ -37,7 +30,8 @@ void PrintTrials(const io::ImportedCampaign& imported, std::ostream& out) {
     const io::ImportedTrial& t = imported.trials[i];
     table.AddRow({std::string(model::DofName(e.dof)), std::filesystem::path(e.file).stem().string(),
                   std::string(model::TrialUseName(e.use)), std::to_string(e.log.size()),
-                  Fixed(t.span_s, 1), Fixed(t.rate_hz, 0), Fixed(e.start, 1),
+                  model::Decimals(t.span_s, 1), model::Decimals(t.rate_hz, 0),
+                  model::Decimals(e.start, 1),
                   std::filesystem::path(t.recording).filename().string()});
   }
   table.Print(out);

@@ -313,9 +313,9 @@ TEST_F(ImportFormats, RangesCutTheTrialsTheMapNames) {
                                           "commands' span [0, 12.000000] s"));
 }
 
-// The five bags of 2016-04-18 through cases/bluerov-2016/import.yaml identify as the
-// hand-converted campaign does: each estimate within the reference's σ (the two differ only in
-// how the gyro's clock was mapped, ≈ 1 ms).
+// The five real BlueROV yaw bags (../shared/data/bluerov-yaw-2016/bags) through
+// cases/bluerov-2016/import.yaml identify as the hand-converted campaign does: each estimate within
+// the reference's σ (the two differ only in how the gyro's clock was mapped, ≈ 1 ms).
 TEST(ImportRealBags, BlueRovYawAgreesWithTheConvertedCampaignWithinSigma) {
   UUVPLAN_SKIP_WITHOUT_REAL_DATA("bluerov-yaw-2016");
   TempDir dir;

@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <iomanip>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -19,6 +18,7 @@
 #include "uuvplan/io/recording.h"
 #include "uuvplan/io/vehicle_yaml.h"
 #include "uuvplan/model/input_error.h"
+#include "uuvplan/model/util/text.h"
 
 namespace uuvplan::io {
 namespace import {
@@ -117,7 +117,7 @@ Commands ReadCommands(const Recording& r, const ImportMap& m) {
   return c;
 }
 
-// The samples of one measured topic, on the recorder clock, in time order.
+// The samples of one measured topic, on the recorder clock.
 struct TopicSamples {
   std::string topic;
   std::vector<const MeasuredSignal*> signals;
@@ -159,15 +159,9 @@ TopicSamples ReadTopic(const Recording& r, const ImportMap& m, const std::string
   const auto clock = m.clocks.find(topic);
   if (clock != m.clocks.end()) fields.push_back(clock->second.field);
   std::vector<std::vector<double>> raw = FieldValues(r, topic, fields, m.file + ": measured");
+  // In message order: RowsIn orders the samples of every topic by time together.
   s.times =
       SampleTimes(r, m, topic, clock != m.clocks.end() ? raw.back() : r.topics.at(topic).times);
-  std::vector<std::size_t> order(s.times.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return s.times[a] < s.times[b]; });
-  std::vector<double> sorted_times;
-  for (std::size_t i : order) sorted_times.push_back(s.times[i]);
-  s.times = sorted_times;
   for (std::size_t j = 0; j < s.signals.size(); ++j) {
     const MeasuredSignal& g = *s.signals[j];
     if (std::none_of(raw[j].begin(), raw[j].end(), [](double x) { return std::isfinite(x); })) {
@@ -177,7 +171,7 @@ TopicSamples ReadTopic(const Recording& r, const ImportMap& m, const std::string
                            " (an index past the array's end?)");
     }
     std::vector<double> column;
-    for (std::size_t i : order) column.push_back(Converted(g, raw[j][i]));
+    for (double x : raw[j]) column.push_back(Converted(g, x));
     s.values.push_back(column);
   }
   return s;
@@ -287,25 +281,20 @@ std::string UtcText(double unix_s) {
   return text;
 }
 
-std::string Number(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
 // How the force or command columns were made, for the log's header.
 std::string CommandNote(const ImportMap& m, const Recording& r) {
   std::ostringstream s;
   s << "commands: " << m.command_topic << " (" << r.topics.at(m.command_topic).type << "):";
   for (const auto& [name, field] : m.thrusters) s << " " << name << " = " << field;
   if (m.unit == CommandUnit::kPwmMicroseconds) {
-    s << "; PWM us -> u = (pwm - " << Number(m.neutral) << ")/" << Number(m.full_scale);
+    s << "; PWM us -> u = (pwm - " << model::ShortestNumber(m.neutral) << ")/"
+      << model::ShortestNumber(m.full_scale);
   }
   s << "; held from the last command message\n";
   for (const auto& [dof, arms] : m.forces) {
     s << "force_" << model::DofName(dof) << " =";
     for (const auto& [name, arm] : arms)
-      s << " " << (arm < 0 ? "- " : "+ ") << Number(std::abs(arm)) << "*" << name;
+      s << " " << (arm < 0 ? "- " : "+ ") << model::ShortestNumber(std::abs(arm)) << "*" << name;
     s << (m.thrust_table_file.empty() ? " (thrust as logged, N)"
                                       : " (thrust in N from the table " + m.thrust_table_file + ")")
       << "\n";
@@ -320,13 +309,14 @@ std::string CommandNote(const ImportMap& m, const Recording& r) {
 std::string SignalNote(const ImportMap& m, const MeasuredSignal& g) {
   std::ostringstream s;
   s << g.column << ": " << g.topic << " " << g.field;
-  if (g.scale != 1.0) s << " * " << Number(g.scale);
-  if (g.offset != 0.0) s << " + " << Number(g.offset);
+  if (g.scale != 1.0) s << " * " << model::ShortestNumber(g.scale);
+  if (g.offset != 0.0) s << " + " << model::ShortestNumber(g.offset);
   s << " (" << g.frame << (g.sign < 0 ? ", sign flipped to NED/FRD" : "")
     << (g.turn != 0.0 ? ", heading pi/2 - psi" : "") << ")";
   const auto clock = m.clocks.find(g.topic);
   if (clock != m.clocks.end()) {
-    s << "; time from " << clock->second.field << " * " << Number(clock->second.scale) << " s"
+    s << "; time from " << clock->second.field << " * "
+      << model::ShortestNumber(clock->second.scale) << " s"
       << (clock->second.align ? ", mapped onto the recorder clock (line through the earliest "
                                 "arrivals)"
                               : "");
@@ -340,9 +330,9 @@ std::string TrialComment(const ImportMap& m, const Recording& r, const Window& w
   s << "imported by uuvplan import from " << r.path << " (" << r.format << "), map " << m.file
     << "\n";
   const double epoch = double(r.epoch_s);
-  s << "t = 0 at " << UtcText(epoch + w[0]) << " (recorder clock, unix " << std::fixed
-    << std::setprecision(3) << epoch + w[0] << "); " << std::setprecision(2) << (w[1] - w[0])
-    << " s, " << log.size() << " rows\n";
+  s << "t = 0 at " << UtcText(epoch + w[0]) << " (recorder clock, unix "
+    << model::Decimals(epoch + w[0], 3) << "); " << model::Decimals(w[1] - w[0], 2) << " s, "
+    << log.size() << " rows\n";
   s << CommandNote(m, r);
   for (const MeasuredSignal& g : m.measured) s << SignalNote(m, g);
   std::string text = s.str();
