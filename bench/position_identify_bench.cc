@@ -11,9 +11,12 @@
 //   position_identify_bench --write DIR [--rows N]
 //       writes the campaign only (for bench/position_identify.sh, which times the CLI against
 //       bench/plain_identify.py on the same file).
-//
-// The excitation: force legs alternating in sign, |level| 25, 50 or 75 N, each 10–40 s
-// (seeded), until the trial has N samples at 100 Hz. Exit status 1 when m is more than 3σ from
+//   --input legs|sine (either form; default legs) chooses the excitation:
+//     legs: force legs alternating in sign, |level| 25, 50 or 75 N, each 10–40 s (seeded): the
+//           logged force changes ~400 times in 1M rows;
+//     sine: 60 N·sin(2π t/40 s), the logged force changes at every row (the planner's sine
+//           trials as a 100 Hz logger records them),
+// until the trial has N samples at 100 Hz. Exit status 1 when m is more than 3σ from
 // 900 kg or the output error restarted from the a priori values (a poor least-squares start).
 #include <unistd.h>
 
@@ -65,14 +68,33 @@ model::TrialDesign LegDesign(double duration) {
   return d;
 }
 
+/// A sine about zero, 60 N, period 40 s (twice the truth's time constant m/k ≈ 19 s), covering
+/// `duration` seconds: the force changes at every sample.
+model::TrialDesign SineDesign(double duration) {
+  model::TrialDesign d;
+  d.id = "surge_position";
+  d.dof = model::Dof::kSurge;
+  d.kind = model::TrialKind::kSine;
+  d.mapping = "surge-front";
+  d.amplitude = 60.0;
+  d.omega = 2.0 * M_PI / 40.0;
+  d.duration = duration;
+  return d;
+}
+
+bool g_sine_input = false;  // --input sine
+
 /// Writes the campaign of a trial of `rows` samples into `dir` (must be new or empty).
 std::string WriteCase(long rows, const fs::path& dir) {
   const model::Truth truth =
       io::ReadTruth(std::string(UUVPLAN_SOURCE_DIR) + "/bench/cases/position_surge_truth.yaml");
   model::VirtualCampaignOptions vo;
   vo.seed = 16;
+  if (g_sine_input) vo.command_rate_hz = kRateHz;  // a new force value at every sample
   // rows samples at 100 Hz span (rows − 1)/100 s; the last sample lands on the end.
-  io::SimulateCampaign(truth, {LegDesign((rows - 1) / kRateHz)}, dir.string(), vo);
+  const double duration = (rows - 1) / kRateHz;
+  io::SimulateCampaign(truth, {g_sine_input ? SineDesign(duration) : LegDesign(duration)},
+                       dir.string(), vo);
   return (dir / "campaign.yaml").string();
 }
 
@@ -169,10 +191,13 @@ int main(int argc, char** argv) {
       repeat = std::max(1, std::atoi(argv[++i]));
     } else if (a == "--write" && i + 1 < argc) {
       write_dir = argv[++i];
+    } else if (a == "--input" && i + 1 < argc &&
+               (argv[i + 1] == std::string("sine") || argv[i + 1] == std::string("legs"))) {
+      g_sine_input = argv[++i] == std::string("sine");
     } else {
       std::fprintf(stderr,
                    "usage: position_identify_bench [--rows N]... [--repeat R] | --write DIR "
-                   "[--rows N]\n");
+                   "[--rows N] (either with [--input legs|sine])\n");
       return 2;
     }
   }

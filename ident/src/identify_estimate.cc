@@ -39,9 +39,8 @@ int CollectSteadyPoints(const StageInputs& c, const IdentifyOptions& o, DofIdent
     auto pts = SteadyPoints(*d, c.steady.detection, o.data.force_tolerance,
                             windows.empty() ? nullptr : &windows);
     r->steady_points.insert(r->steady_points.end(), pts.begin(), pts.end());
-    for (const ForcePiece& p : ConstantForcePieces(*d, o.data.force_tolerance)) {
-      if (p.t1 - p.t0 >= c.steady.detection.min_duration_s) ++long_pieces;
-    }
+    long_pieces += static_cast<int>(
+        ConstantForcePieces(*d, o.data.force_tolerance, c.steady.detection.min_duration_s).size());
   }
   return long_pieces;
 }
@@ -268,8 +267,9 @@ void CheckMethodFits(model::Dof dof, const std::vector<TrialData>& trials,
   for (const TrialData& d : trials) {
     if (d.dof != dof || d.use != model::TrialUse::kFit) continue;
     if (o.steady_windows.count(d.index)) return;
-    for (const ForcePiece& p : ConstantForcePieces(d, o.data.force_tolerance)) {
-      if (p.t1 - p.t0 >= o.steady.detection.min_duration_s) return;
+    if (!ConstantForcePieces(d, o.data.force_tolerance, o.steady.detection.min_duration_s)
+             .empty()) {
+      return;
     }
     files += (files.empty() ? "" : ", ") + d.name;
   }

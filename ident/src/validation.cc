@@ -173,7 +173,7 @@ class FreeRun {
     if (dense_) {
       for (double t = 0.0; t < span.last; t += step_s) times_.push_back(t);
       times_.push_back(span.last);
-      for (double b : trial.breakpoints) {
+      for (double b : trial.breakpoints()) {
         if (b < span.last) times_.push_back(b);
       }
       std::sort(times_.begin(), times_.end());

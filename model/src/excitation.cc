@@ -7,6 +7,12 @@
 #include "rotating_sine.h"
 
 namespace uuvplan::model {
+
+const std::vector<double>& Excitation::Breakpoints() const {
+  static const std::vector<double> kNone;
+  return kNone;
+}
+
 namespace {
 
 class SteadyExcitation final : public Excitation {
@@ -51,7 +57,8 @@ class HeldExcitation final : public Excitation {
       : t_(std::move(t)),
         force_(std::move(force)),
         mapping_(std::move(mapping)),
-        duration_(duration) {}
+        duration_(duration),
+        breaks_(Jumps()) {}
   double Force(double t) const override { return t_.empty() ? 0.0 : force_[Find(t)]; }
   int Mapping(double t) const override { return t_.empty() ? -1 : mapping_[Find(t)]; }
   void Sample(double t, double* force, int* mapping) const override {
@@ -64,7 +71,13 @@ class HeldExcitation final : public Excitation {
     *force = force_[i];
     *mapping = mapping_[i];
   }
-  std::vector<double> Breakpoints() const override {
+  const std::vector<double>& Breakpoints() const override { return breaks_; }
+  bool piecewise_constant() const override { return true; }
+  double duration() const override { return duration_; }
+
+ private:
+  // The sample times in (0, duration) where the force or the mapping changes (t_ ascends).
+  std::vector<double> Jumps() const {
     std::vector<double> b;
     for (std::size_t i = 1; i < t_.size(); ++i) {
       if (t_[i] > 0 && t_[i] < duration_ &&
@@ -74,10 +87,6 @@ class HeldExcitation final : public Excitation {
     }
     return b;
   }
-  bool piecewise_constant() const override { return true; }
-  double duration() const override { return duration_; }
-
- private:
   // Index of the sample in force at t. Integration queries move forward in time, so the last
   // answer is tried first; a binary search handles the rest.
   std::size_t Find(double t) const {
@@ -93,6 +102,7 @@ class HeldExcitation final : public Excitation {
   std::vector<double> t_, force_;
   std::vector<int> mapping_;
   double duration_;
+  std::vector<double> breaks_;
   mutable std::size_t last_ = 0;
 };
 
@@ -117,7 +127,7 @@ class SwitchedExcitation final : public Excitation {
   void Sample(double t, double* force, int* mapping) const override {
     *force = wave_.Switch(rotating_.At(t), mapping);
   }
-  std::vector<double> Breakpoints() const override { return switches_; }
+  const std::vector<double>& Breakpoints() const override { return switches_; }
   double duration() const override { return duration_; }
 
  private:
@@ -206,16 +216,29 @@ std::unique_ptr<Excitation> MakeHeldExcitation(TimesView t, const std::vector<do
   // Drop samples without a force value: the previous command holds (zero-order hold). A row
   // that repeats the previous command changes nothing and is not kept (a log at 100 Hz of
   // legs of 10–40 s holds 1,000–4,000 rows per command).
+  const auto mapping_of = [&](std::size_t i) { return i < mapping.size() ? mapping[i] : -1; };
+  // The rows kept: counted first, so that each array is allocated once at its size.
+  const auto for_each_kept = [&](const auto& keep) {
+    std::size_t last = t.size();
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (std::isnan(force[i])) continue;
+      if (last < t.size() && force[i] == force[last] && mapping_of(i) == mapping_of(last)) continue;
+      keep(i);
+      last = i;
+    }
+  };
+  std::size_t kept = 0;
+  for_each_kept([&](std::size_t) { ++kept; });
   std::vector<double> tt, ff;
   std::vector<int> mm;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (std::isnan(force[i])) continue;
-    const int m = i < mapping.size() ? mapping[i] : -1;
-    if (!ff.empty() && force[i] == ff.back() && m == mm.back()) continue;
+  tt.reserve(kept);
+  ff.reserve(kept);
+  mm.reserve(kept);
+  for_each_kept([&](std::size_t i) {
     tt.push_back(t[i]);
     ff.push_back(force[i]);
-    mm.push_back(m);
-  }
+    mm.push_back(mapping_of(i));
+  });
   if (!tt.empty()) tt.front() = std::min(tt.front(), 0.0);
   return std::make_unique<HeldExcitation>(std::move(tt), std::move(ff), std::move(mm), duration);
 }

@@ -207,7 +207,7 @@ Trajectory IntegrateSystem(const System& sys, TimesView output_times, double shi
   double A[System::kMaxStates * System::kMaxStates];
   const double* S_out = sens ? S.data() : nullptr;
   std::size_t next_out = Record(output_times, shift, 0.0, 0, x, S_out, nx, np, visit, &out);
-  const std::vector<double> breaks = sys.Breakpoints();
+  const auto& breaks = sys.Breakpoints();  // a reference, or the joint system's merged copy
   std::size_t next_break = 0;
   // The input is sampled once per stage time; a step's end sample starts the next step
   // unless the step ended at a breakpoint (where the input jumps). A piecewise-constant input
@@ -230,8 +230,12 @@ Trajectory IntegrateSystem(const System& sys, TimesView output_times, double shi
     const double longest = local_step && rate > 0
                                ? std::min(options.step_s, options.time_constant_fraction / rate)
                                : options.step_s;
-    const int n = std::max(1, CheckedCount<int>((b - t) / longest, "simulation step count",
-                                                limits::kMaxSimulationSteps, "a longer step"));
+    // One step when the interval fits (a log's force changing at every sample: every interval).
+    const int n =
+        b - t <= longest
+            ? 1
+            : std::max(1, CheckedCount<int>((b - t) / longest, "simulation step count",
+                                            limits::kMaxSimulationSteps, "a longer step"));
     const double h = (b - t) / n;
     for (int k = 0; k < n; ++k) {
       const double ta = t + k * h;

@@ -34,10 +34,9 @@ class DofSystem {
     if (c_.aux && model_.needs_aux()) c_.aux->At(t, &in->velocities);
   }
   bool held() const { return c_.input && c_.input->piecewise_constant(); }
-  std::vector<double> Breakpoints() const {
-    std::vector<double> b = c_.input ? c_.input->Breakpoints() : std::vector<double>{};
-    std::sort(b.begin(), b.end());
-    return b;
+  const std::vector<double>& Breakpoints() const {
+    static const std::vector<double> kNone;
+    return c_.input ? c_.input->Breakpoints() : kNone;
   }
   [[gnu::always_inline]] void Derivative(double t, const double* x, const Input& in,
                                          double* dx) const {

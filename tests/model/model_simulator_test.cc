@@ -305,7 +305,7 @@ class UndeclaredHeld final : public Excitation {
   explicit UndeclaredHeld(const Excitation* held) : held_(held) {}
   double Force(double t) const override { return held_->Force(t); }
   int Mapping(double t) const override { return held_->Mapping(t); }
-  std::vector<double> Breakpoints() const override { return held_->Breakpoints(); }
+  const std::vector<double>& Breakpoints() const override { return held_->Breakpoints(); }
   double duration() const override { return held_->duration(); }
 
  private:

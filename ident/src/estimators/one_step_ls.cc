@@ -326,9 +326,9 @@ bool SimulatedVelocities(const model::DofModel& model, const std::vector<const T
     const double spacing = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
     const bool dense = spacing <= o.simulation_step_s;
     grid.reserve(static_cast<std::size_t>(t_end / o.simulation_step_s) + 2 +
-                 trial->breakpoints.size() + (dense ? 0 : v.size()));
+                 trial->breakpoints().size() + (dense ? 0 : v.size()));
     for (double t = 0.0; t < t_end; t += o.simulation_step_s) grid.push_back(t);
-    for (double b : trial->breakpoints) {
+    for (double b : trial->breakpoints()) {
       if (b < t_end) grid.push_back(b);
     }
     if (!dense) {

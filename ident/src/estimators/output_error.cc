@@ -52,7 +52,9 @@ using internal::WithResiduals;
 
 // The coarse stage of a long record (OutputErrorOptions::coarse_measurements): the same
 // unknowns (z layout) fitted on bins ~duration/coarse_measurements long with a longer RK4
-// step; its answer starts the full-size fit. The start `z0` when the record is short or the
+// step, the force averaged over pieces of a bin or a step (AveragedInput: a force logged anew
+// at every row would otherwise end a step, and a bin, at every row); its answer starts the
+// full-size fit. The start `z0` when the record is short or the
 // coarse fit fails (the full-size fit then does all the work, as without this stage).
 Eigen::VectorXd CoarseStart(const model::DofModel& model,
                             const std::vector<const TrialData*>& trials,
@@ -68,7 +70,7 @@ Eigen::VectorXd CoarseStart(const model::DofModel& model,
   c.bin_s = std::max(o.bin_s, duration / o.coarse_measurements);
   c.step_s = std::min(std::max(o.step_s, 0.1), std::max(o.step_s, 5.0 * o.step_s));
   c.grid_s = 0.0;
-  const Problem coarse(model, trials, theta, free, initial, c);
+  const Problem coarse(model, trials, theta, free, initial, c, std::max(c.bin_s, c.step_s));
   if (coarse.num_z() != full.num_z() || coarse.num_r() <= coarse.num_z()) return z0;
   const LmOutcome lm = LevenbergMarquardt(coarse, z0, c);
   return !lm.failed && lm.z.allFinite() ? lm.z : z0;

@@ -173,12 +173,13 @@ bool Admissible(const model::DofModel& model, const Eigen::VectorXd& theta) {
 
 Problem::Problem(const model::DofModel& model, const std::vector<const TrialData*>& trials,
                  const Eigen::VectorXd& theta, const std::vector<int>& free,
-                 const std::vector<TrialInitialState>* initial, const OutputErrorOptions& o)
+                 const std::vector<TrialInitialState>* initial, const OutputErrorOptions& o,
+                 double average_input_s)
     : model_(model), theta_(theta), free_(free), o_(o) {
   int z = static_cast<int>(free.size());
   int r = 0;
   for (const TrialData* d : trials) {
-    std::optional<TrialProblem> tp = MakeTrialProblem(model, *d, initial, o);
+    std::optional<TrialProblem> tp = MakeTrialProblem(model, *d, initial, o, average_input_s);
     if (!tp) continue;
     if (tp->init.chi0_estimated) tp->z_chi0 = z++;
     if (tp->init.xi0_estimated) tp->z_xi0 = z++;
@@ -264,7 +265,7 @@ bool Problem::EvaluateTrial(const TrialProblem& tp, const Eigen::VectorXd& z,
   Eigen::VectorXd x0 = Eigen::VectorXd::Zero(model_.num_states());
   x0[0] = tp.z_chi0 >= 0 ? z[tp.z_chi0] : tp.init.chi0;
   x0[1] = tp.z_xi0 >= 0 ? z[tp.z_xi0] : tp.init.xi0;
-  const model::TrialConditions c = tp.trial->conditions();
+  const model::TrialConditions c = tp.conditions();
   const model::TimesView at = tp.grid.empty() ? tp.times() : tp.grid;
   // ∂ŷ/∂ξ0 by a forward difference: a second, plain simulation (of a streamed trial at its
   // own times, only its sensor's values are kept).

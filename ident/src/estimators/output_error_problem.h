@@ -21,10 +21,12 @@ bool Admissible(const model::DofModel& model, const Eigen::VectorXd& theta);
 class Problem {
  public:
   // The trials' problems (MakeTrialProblem; trials without a used sensor are left out) at
-  // `theta`, with the parameters `free` and the initial states estimated.
+  // `theta`, with the parameters `free` and the initial states estimated; each trial's force
+  // averaged over pieces `average_input_s` long when > 0 (the coarse stage).
   Problem(const model::DofModel& model, const std::vector<const TrialData*>& trials,
           const Eigen::VectorXd& theta, const std::vector<int>& free,
-          const std::vector<TrialInitialState>* initial, const OutputErrorOptions& o);
+          const std::vector<TrialInitialState>* initial, const OutputErrorOptions& o,
+          double average_input_s = 0.0);
 
   int num_z() const { return num_z_; }
   int num_free() const { return static_cast<int>(free_.size()); }

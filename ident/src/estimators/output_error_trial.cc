@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 
+#include "estimators/averaged_input.h"
 #include "uuvplan/model/util/checked_count.h"
 
 namespace uuvplan::ident::internal {
@@ -111,8 +112,9 @@ void SetMeasurements(const TrialData& d, bool use_pos, bool use_vel, const Outpu
     tp->times_ref = &only->t;
     return;
   }
-  Binned pos = use_pos ? Bin(d.position, d.position_sigma, o.bin_s, d.breakpoints) : Binned{};
-  Binned vel = use_vel ? Bin(d.velocity, d.velocity_sigma, o.bin_s, d.breakpoints) : Binned{};
+  const std::vector<double>& breaks = tp->breakpoints();
+  Binned pos = use_pos ? Bin(d.position, d.position_sigma, o.bin_s, breaks) : Binned{};
+  Binned vel = use_vel ? Bin(d.velocity, d.velocity_sigma, o.bin_s, breaks) : Binned{};
   std::vector<double> times;
   times.reserve(pos.t.size() + vel.t.size());
   times.insert(times.end(), pos.t.begin(), pos.t.end());
@@ -154,7 +156,7 @@ TrialInitialState InitialStateOf(const TrialData& d, const std::vector<TrialInit
 // The simulation's output grid for measurements at `times`: every input breakpoint and points at
 // most o.grid_s apart in between. Empty (simulate at `times`) when it would not be smaller, or
 // without a grid (o.grid_s = 0, a sensor delay, no measurement).
-std::vector<double> OutputGrid(const model::DofModel& model, const TrialData& d,
+std::vector<double> OutputGrid(const model::DofModel& model, const TrialProblem& tp,
                                model::TimesView times, const OutputErrorOptions& o) {
   if (!(o.grid_s > 0 && model.sensor_delay_index() < 0 && !times.empty())) return {};
   std::vector<double> grid = {0.0};
@@ -165,7 +167,7 @@ std::vector<double> OutputGrid(const model::DofModel& model, const TrialData& d,
     for (int k = 1; k < pieces; ++k) grid.push_back(last + (t - last) * k / pieces);
     if (t > last) grid.push_back(t);
   };
-  for (double b : d.breakpoints) {
+  for (double b : tp.breakpoints()) {
     if (b > 0 && b < times.back()) extend_to(b);
   }
   extend_to(times.back());
@@ -178,15 +180,16 @@ std::vector<double> OutputGrid(const model::DofModel& model, const TrialData& d,
 
 std::optional<TrialProblem> MakeTrialProblem(const model::DofModel& model, const TrialData& d,
                                              const std::vector<TrialInitialState>* initial,
-                                             const OutputErrorOptions& o) {
+                                             const OutputErrorOptions& o, double average_input_s) {
   const bool use_pos = o.use_position && d.has_position();
   const bool use_vel = o.use_velocity && d.has_velocity();
   if (!use_pos && !use_vel) return std::nullopt;
   TrialProblem tp;
   tp.trial = &d;
+  if (average_input_s > 0) tp.averaged_input = AveragedInput(d, average_input_s);
   SetMeasurements(d, use_pos, use_vel, o, &tp);
   tp.init = InitialStateOf(d, initial, use_pos, o);
-  tp.grid = OutputGrid(model, d, tp.times(), o);
+  tp.grid = OutputGrid(model, tp, tp.times(), o);
   return tp;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -17,6 +18,17 @@ namespace uuvplan::ident::internal {
 // One trial's measurements on a common time grid.
 struct TrialProblem {
   const TrialData* trial = nullptr;
+  // The force the simulation is driven by: the trial's own, or its average over coarse pieces
+  // (AveragedInput, the coarse stage's).
+  std::shared_ptr<const model::Excitation> averaged_input;
+  model::TrialConditions conditions() const {
+    model::TrialConditions c = trial->conditions();
+    if (averaged_input) c.input = averaged_input.get();
+    return c;
+  }
+  const std::vector<double>& breakpoints() const {
+    return averaged_input ? averaged_input->Breakpoints() : trial->breakpoints();
+  }
   // The sorted union of the used sample times: owned, or the trial's own sample times when one
   // sensor is used sample by sample (not copied: 8 bytes a sample).
   std::vector<double> times_owned;
@@ -88,9 +100,11 @@ class IntervalCursor {
 // The trial's problem: its measurements (binned to o.bin_s unless one sensor is used sample by
 // sample), its initial state (`initial`'s entry for the trial, else guessed from the data) and
 // its output grid (o.grid_s); the z and residual indices are left for the caller to assign.
+// With `average_input_s` > 0 the force is averaged over pieces that long (AveragedInput).
 // Nothing when the trial has no sensor the options use.
 std::optional<TrialProblem> MakeTrialProblem(const model::DofModel& model, const TrialData& d,
                                              const std::vector<TrialInitialState>* initial,
-                                             const OutputErrorOptions& o);
+                                             const OutputErrorOptions& o,
+                                             double average_input_s = 0.0);
 
 }  // namespace uuvplan::ident::internal

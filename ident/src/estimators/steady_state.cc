@@ -100,7 +100,9 @@ std::vector<SteadyPoint> SteadyPoints(const TrialData& trial, const SteadyDetect
                                       double force_tolerance,
                                       const std::vector<std::pair<double, double>>* user) {
   std::vector<SteadyPoint> out;
-  const std::vector<ForcePiece> pieces = ConstantForcePieces(trial, force_tolerance);
+  // A user's window may lie in a piece of any length; detection looks at long pieces only.
+  const std::vector<ForcePiece> pieces =
+      ConstantForcePieces(trial, force_tolerance, user && !user->empty() ? 0.0 : o.min_duration_s);
   // Each source measured on the trial's DOF (positions: ref 000's LS slope; velocities: their
   // mean) gives its own segments; the more precise estimate of each piece is kept.
   std::vector<SteadySegment> segments;

@@ -232,8 +232,6 @@ void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle, const 
   }
   FindForceGap(d);
   d->input = model::MakeHeldExcitation(d->force_t, d->force, d->mapping, d->duration);
-  d->breakpoints = d->input->Breakpoints();
-  std::sort(d->breakpoints.begin(), d->breakpoints.end());
   const auto [fmin, fmax] = std::minmax_element(d->force.begin(), d->force.end());
   const double range = *fmax - *fmin;
   for (std::size_t i = 1; i < d->force.size(); ++i) {
@@ -513,20 +511,24 @@ TrialData PrepareTrial(const model::TrialEntry& e, int index, const model::Vehic
   return d;
 }
 
-std::vector<ForcePiece> ConstantForcePieces(const TrialData& d, double tol) {
+std::vector<ForcePiece> ConstantForcePieces(const TrialData& d, double tol, double min_duration) {
   std::vector<ForcePiece> pieces;
-  for (std::size_t i = 0; i < d.force.size(); ++i) {
+  if (d.force.empty()) return pieces;
+  ForcePiece open{0.0, d.duration, d.force[0], d.mapping[0]};
+  const auto keep_if_long = [&](double t1) {
+    open.t1 = t1;
+    if (open.t1 - open.t0 >= min_duration) pieces.push_back(open);
+  };
+  for (std::size_t i = 1; i < d.force.size(); ++i) {
     const double f = d.force[i];
     const int m = d.mapping[i];
-    if (!pieces.empty()) {
-      ForcePiece& last = pieces.back();
-      const double scale =
-          std::max({std::abs(f), std::abs(last.force), 1e-9 / std::max(tol, 1e-300)});
-      if (last.mapping == m && std::abs(f - last.force) <= tol * scale) continue;
-      last.t1 = d.force_t[i];
-    }
-    pieces.push_back({i == 0 ? 0.0 : d.force_t[i], d.duration, f, m});
+    const double scale =
+        std::max({std::abs(f), std::abs(open.force), 1e-9 / std::max(tol, 1e-300)});
+    if (open.mapping == m && std::abs(f - open.force) <= tol * scale) continue;
+    keep_if_long(d.force_t[i]);
+    open = {d.force_t[i], d.duration, f, m};
   }
+  keep_if_long(d.duration);
   return pieces;
 }
 

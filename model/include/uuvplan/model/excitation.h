@@ -27,8 +27,10 @@ class Excitation {
     *force = Force(t);
     *mapping = Mapping(t);
   }
-  /// Times in (0, duration) where Force or Mapping may jump; integration steps end there.
-  virtual std::vector<double> Breakpoints() const { return {}; }
+  /// Times in (0, duration), ascending, where Force or Mapping may jump; integration steps end
+  /// there. Held by the excitation (a log whose force changes at every row has one a row: a copy
+  /// per simulation cost 8 MB of fresh pages each).
+  virtual const std::vector<double>& Breakpoints() const;
   /// True when Force and Mapping change only at Breakpoints() (steady, segments, held logs):
   /// the input is then constant over every integration step.
   virtual bool piecewise_constant() const { return false; }

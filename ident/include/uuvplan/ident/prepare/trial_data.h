@@ -76,7 +76,6 @@ struct TrialData {
   std::vector<double> force;
   std::vector<int> mapping;
   std::unique_ptr<model::Excitation> input;  ///< zero-order hold of the rows
-  std::vector<double> breakpoints;           ///< input->Breakpoints(), sorted, cached
   std::unique_ptr<LogAuxVelocities> aux;     ///< null when no other vel_ column
   std::vector<std::string> mappings_used;    ///< vehicle mapping names seen
   /// Times of the large command changes (steps of more than 5% of the force range, and
@@ -114,6 +113,8 @@ struct TrialData {
   std::vector<std::string> unusable_columns;
 
   bool has_position() const { return position.size() >= 3; }
+  /// Where the held force or the mapping changes, ascending (input->Breakpoints()).
+  const std::vector<double>& breakpoints() const { return input->Breakpoints(); }
   bool has_velocity() const { return velocity.size() >= 3; }
   model::TrialConditions conditions() const {
     return model::TrialConditions{input.get(), ballast_steps, start_time, aux.get()};
@@ -129,8 +130,11 @@ struct TrialData {
 TrialData PrepareTrial(const model::TrialEntry& entry, int index, const model::Vehicle& vehicle,
                        const TrialDataOptions& options, model::TrialLog* given_up = nullptr);
 
-/// Intervals of constant commanded force and mapping (for steady-state detection).
-std::vector<ForcePiece> ConstantForcePieces(const TrialData& trial, double force_tolerance);
+/// Intervals of constant commanded force and mapping (for steady-state detection) that last at
+/// least `min_duration` s (a force logged anew at every row has a piece a row, none of which
+/// can hold a steady segment).
+std::vector<ForcePiece> ConstantForcePieces(const TrialData& trial, double force_tolerance,
+                                            double min_duration = 0.0);
 
 /// Velocity estimate at time t (linear interpolation of velocity_estimate).
 double EstimatedVelocity(const TrialData& trial, double t);
