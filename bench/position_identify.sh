@@ -4,11 +4,17 @@
 # (bench/position_identify_bench --write, seeded), alternating, best of N runs of each (the
 # machine is shared: the best run is the least disturbed one). Prints wall and CPU seconds and
 # the peak RSS of each, the CSV's size, and the estimates.
-#   bench/position_identify.sh [N] [UUVPLAN_BINARY]...   (default 5; build/uuvplan)
+#   bench/position_identify.sh [--input legs|sine] [N] [UUVPLAN_BINARY]...
+#       (default legs, 5 runs, build/uuvplan; sine: the force changes at every row)
 # Needs the optional benchmark dependencies: scripts/install-deps.sh --bench.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${UUVPLAN_BUILD_DIR:-$root/build}"
+input=legs
+if [ "${1:-}" = "--input" ]; then
+  input="${2:?--input needs legs or sine}"
+  shift 2
+fi
 runs="${1:-5}"
 shift || true
 binaries=("$@")
@@ -20,7 +26,7 @@ if ! "$python" -c 'import numpy, scipy' 2>/dev/null; then
 fi
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
-"$build/bench/position_identify_bench" --write "$dir/campaign" --rows 1000000 >/dev/null
+"$build/bench/position_identify_bench" --write "$dir/campaign" --rows 1000000 --input "$input" >/dev/null
 csv="$(ls "$dir"/campaign/trials/*.csv)"
 csv_bytes="$(stat -c %s "$csv")"
 echo "trial: $(wc -l <"$csv") lines, $csv_bytes bytes of CSV"

@@ -2,6 +2,8 @@
 // structure they call for, and whether the logged force looks like a controller's.
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
+#include <vector>
 
 #include "identify_stages.h"
 #include "uuvplan/model/util/median.h"
@@ -9,27 +11,55 @@
 
 namespace uuvplan::ident {
 
-double CommandRoughness(const TrialData& d) {
-  // The sequence of distinct consecutive command values (holds removed).
-  std::vector<double> v;
-  for (double f : d.force) {
-    if (v.empty() || f != v.back()) v.push_back(f);
+namespace {
+
+// Calls `visit` on each command of the force rows, holds removed (a row repeating the previous
+// row's value is the same command), in order.
+template <class Visit>
+void ForEachCommand(const std::vector<double>& force, const Visit& visit) {
+  for (std::size_t i = 0; i < force.size(); ++i) {
+    if (i == 0 || force[i] != force[i - 1]) visit(force[i]);
   }
-  if (v.size() < 10) return 0.0;
+}
+
+// Whether the commands take at most `limit` distinct values (counted until past the limit: a
+// force that changes at every row keeps limit + 1 values, not a sorted copy of every row).
+bool AtMostLevels(const std::vector<double>& force, std::size_t limit) {
+  std::unordered_set<double> levels;
+  bool few = true;
+  ForEachCommand(force, [&](double f) {
+    if (few) few = levels.insert(f).second ? levels.size() <= limit : few;
+  });
+  return few;
+}
+
+// The median of |Δ^order φ| over the commands (order 1 or 3).
+double MedianDifference(const std::vector<double>& force, std::size_t commands, int order) {
+  std::vector<double> diff;
+  diff.reserve(commands);
+  double c[4] = {0, 0, 0, 0};  // the last four commands, newest first
+  std::size_t seen = 0;
+  ForEachCommand(force, [&](double f) {
+    c[3] = c[2], c[2] = c[1], c[1] = c[0], c[0] = f;
+    if (++seen <= static_cast<std::size_t>(order)) return;
+    diff.push_back(std::abs(order == 1 ? c[0] - c[1] : c[0] - 3 * c[1] + 3 * c[2] - c[3]));
+  });
+  return model::Median(std::move(diff));
+}
+
+}  // namespace
+
+double CommandRoughness(const TrialData& d) {
+  // The sequence of distinct consecutive command values (holds removed), read in place.
+  std::size_t n = 0;
+  ForEachCommand(d.force, [&n](double) { ++n; });
+  if (n < 10) return 0.0;
   // A designed piecewise-constant input (steps, legs, telegraph, PRBS) revisits a few levels.
-  std::vector<double> levels = v;
-  std::sort(levels.begin(), levels.end());
-  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
-  if (levels.size() <= std::max<std::size_t>(10, v.size() / 10)) return 0.0;
+  if (AtMostLevels(d.force, std::max<std::size_t>(10, n / 10))) return 0.0;
   // Many levels: smooth (a sampled sine) or irregular (a controller reacting to noise). The
   // third difference of a sine sampled at ω·Δt is (ω·Δt)² times its first; of noise, ≥ 1.
-  std::vector<double> d1, d3;
-  for (std::size_t i = 1; i < v.size(); ++i) {
-    d1.push_back(std::abs(v[i] - v[i - 1]));
-    if (i >= 3) d3.push_back(std::abs(v[i] - 3 * v[i - 1] + 3 * v[i - 2] - v[i - 3]));
-  }
-  const double m1 = model::Median(std::move(d1));
-  return m1 > 0 ? model::Median(std::move(d3)) / m1 : 0.0;
+  const double m1 = MedianDifference(d.force, n, 1);
+  return m1 > 0 ? MedianDifference(d.force, n, 3) / m1 : 0.0;
 }
 
 namespace stages {

@@ -8,11 +8,6 @@
 
 namespace uuvplan::model {
 
-const std::vector<double>& Excitation::Breakpoints() const {
-  static const std::vector<double> kNone;
-  return kNone;
-}
-
 namespace {
 
 class SteadyExcitation final : public Excitation {
@@ -49,16 +44,28 @@ class SineExcitation final : public Excitation {
   double duration_;
 };
 
-// Piecewise constant on [t_i, t_{i+1}); used both for segments and for held log samples.
+// Piecewise constant on [t_i, t_{i+1}) (before t_0 the first row holds); used both for segments
+// and for held log samples. Each row is a command of its own (its force or mapping differs from
+// the previous row's), so every row after the first is a jump, and the breakpoints are the rows'
+// times within (0, duration): a slice, not a list. The rows are views: of the rows it owns, or
+// of the caller's (MakeHeldExcitationOver).
 class HeldExcitation final : public Excitation {
  public:
-  HeldExcitation(std::vector<double> t, std::vector<double> force, std::vector<int> mapping,
-                 double duration)
-      : t_(std::move(t)),
-        force_(std::move(force)),
-        mapping_(std::move(mapping)),
+  struct Rows {
+    std::vector<double> t, force;
+    std::vector<int> mapping;
+  };
+  explicit HeldExcitation(Rows owned, double duration)
+      : owned_(std::move(owned)),
+        t_(owned_.t),
+        force_(owned_.force.data()),
+        mapping_(owned_.mapping.data()),
         duration_(duration),
         breaks_(Jumps()) {}
+  HeldExcitation(TimesView t, const double* force, const int* mapping, double duration)
+      : t_(t), force_(force), mapping_(mapping), duration_(duration), breaks_(Jumps()) {}
+  HeldExcitation(const HeldExcitation&) = delete;  // the views may refer to owned_
+  HeldExcitation& operator=(const HeldExcitation&) = delete;
   double Force(double t) const override { return t_.empty() ? 0.0 : force_[Find(t)]; }
   int Mapping(double t) const override { return t_.empty() ? -1 : mapping_[Find(t)]; }
   void Sample(double t, double* force, int* mapping) const override {
@@ -71,21 +78,17 @@ class HeldExcitation final : public Excitation {
     *force = force_[i];
     *mapping = mapping_[i];
   }
-  const std::vector<double>& Breakpoints() const override { return breaks_; }
+  TimesView Breakpoints() const override { return breaks_; }
   bool piecewise_constant() const override { return true; }
   double duration() const override { return duration_; }
 
  private:
-  // The sample times in (0, duration) where the force or the mapping changes (t_ ascends).
-  std::vector<double> Jumps() const {
-    std::vector<double> b;
-    for (std::size_t i = 1; i < t_.size(); ++i) {
-      if (t_[i] > 0 && t_[i] < duration_ &&
-          (force_[i] != force_[i - 1] || mapping_[i] != mapping_[i - 1])) {
-        b.push_back(t_[i]);
-      }
-    }
-    return b;
+  // The rows' times after the first within (0, duration) (t_ ascends).
+  TimesView Jumps() const {
+    std::size_t lo = 1, hi = t_.size();
+    while (lo < hi && !(t_[lo] > 0)) ++lo;
+    while (hi > lo && !(t_[hi - 1] < duration_)) --hi;
+    return lo < hi ? t_.Slice(lo, hi) : TimesView();
   }
   // Index of the sample in force at t. Integration queries move forward in time, so the last
   // answer is tried first; a binary search handles the rest.
@@ -99,10 +102,12 @@ class HeldExcitation final : public Excitation {
     last_ = it == t_.begin() ? 0 : static_cast<std::size_t>(it - t_.begin()) - 1;
     return last_;
   }
-  std::vector<double> t_, force_;
-  std::vector<int> mapping_;
+  Rows owned_;
+  TimesView t_;
+  const double* force_;
+  const int* mapping_;
   double duration_;
-  std::vector<double> breaks_;
+  TimesView breaks_;
   mutable std::size_t last_ = 0;
 };
 
@@ -127,7 +132,7 @@ class SwitchedExcitation final : public Excitation {
   void Sample(double t, double* force, int* mapping) const override {
     *force = wave_.Switch(rotating_.At(t), mapping);
   }
-  const std::vector<double>& Breakpoints() const override { return switches_; }
+  TimesView Breakpoints() const override { return switches_; }
   double duration() const override { return duration_; }
 
  private:
@@ -208,7 +213,7 @@ std::unique_ptr<Excitation> MakeSegmentsExcitation(std::vector<Segment> segments
     mapping.push_back(s.mapping);
     now += s.duration;
   }
-  return std::make_unique<HeldExcitation>(std::move(t), std::move(force), std::move(mapping), now);
+  return MakeHeldExcitation(t, force, mapping, now);
 }
 
 std::unique_ptr<Excitation> MakeHeldExcitation(TimesView t, const std::vector<double>& force,
@@ -229,18 +234,28 @@ std::unique_ptr<Excitation> MakeHeldExcitation(TimesView t, const std::vector<do
   };
   std::size_t kept = 0;
   for_each_kept([&](std::size_t) { ++kept; });
-  std::vector<double> tt, ff;
-  std::vector<int> mm;
-  tt.reserve(kept);
-  ff.reserve(kept);
-  mm.reserve(kept);
+  HeldExcitation::Rows rows;
+  rows.t.reserve(kept);
+  rows.force.reserve(kept);
+  rows.mapping.reserve(kept);
   for_each_kept([&](std::size_t i) {
-    tt.push_back(t[i]);
-    ff.push_back(force[i]);
-    mm.push_back(mapping_of(i));
+    rows.t.push_back(t[i]);
+    rows.force.push_back(force[i]);
+    rows.mapping.push_back(mapping_of(i));
   });
-  if (!tt.empty()) tt.front() = std::min(tt.front(), 0.0);
-  return std::make_unique<HeldExcitation>(std::move(tt), std::move(ff), std::move(mm), duration);
+  return std::make_unique<HeldExcitation>(std::move(rows), duration);
+}
+
+std::unique_ptr<Excitation> MakeHeldExcitationOver(TimesView t, const std::vector<double>& force,
+                                                   const std::vector<int>& mapping,
+                                                   double duration) {
+  bool own_commands = force.size() == t.size() && mapping.size() == force.size();
+  for (std::size_t i = 0; own_commands && i < force.size(); ++i) {
+    own_commands = !std::isnan(force[i]) &&
+                   (i == 0 || force[i] != force[i - 1] || mapping[i] != mapping[i - 1]);
+  }
+  if (!own_commands) return MakeHeldExcitation(t, force, mapping, duration);
+  return std::make_unique<HeldExcitation>(t, force.data(), mapping.data(), duration);
 }
 
 }  // namespace uuvplan::model

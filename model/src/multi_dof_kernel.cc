@@ -48,7 +48,7 @@ std::vector<double> JointSystem::Breakpoints() const {
   std::vector<double> breaks;
   for (const TrialConditions& c : conditions_) {
     if (!c.input) continue;
-    const std::vector<double>& b = c.input->Breakpoints();
+    const TimesView b = c.input->Breakpoints();
     breaks.insert(breaks.end(), b.begin(), b.end());
   }
   std::sort(breaks.begin(), breaks.end());

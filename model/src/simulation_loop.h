@@ -207,7 +207,7 @@ Trajectory IntegrateSystem(const System& sys, TimesView output_times, double shi
   double A[System::kMaxStates * System::kMaxStates];
   const double* S_out = sens ? S.data() : nullptr;
   std::size_t next_out = Record(output_times, shift, 0.0, 0, x, S_out, nx, np, visit, &out);
-  const auto& breaks = sys.Breakpoints();  // a reference, or the joint system's merged copy
+  const auto breaks = sys.Breakpoints();  // a view of the input's, or the joint system's merge
   std::size_t next_break = 0;
   // The input is sampled once per stage time; a step's end sample starts the next step
   // unless the step ended at a breakpoint (where the input jumps). A piecewise-constant input

@@ -34,10 +34,7 @@ class DofSystem {
     if (c_.aux && model_.needs_aux()) c_.aux->At(t, &in->velocities);
   }
   bool held() const { return c_.input && c_.input->piecewise_constant(); }
-  const std::vector<double>& Breakpoints() const {
-    static const std::vector<double> kNone;
-    return c_.input ? c_.input->Breakpoints() : kNone;
-  }
+  TimesView Breakpoints() const { return c_.input ? c_.input->Breakpoints() : TimesView(); }
   [[gnu::always_inline]] void Derivative(double t, const double* x, const Input& in,
                                          double* dx) const {
     Kernel::Derivative<kOthers>(model_, t, x, in, c_, th_, inv_, dx);

@@ -84,6 +84,30 @@ TEST(SharedTimesTest, ALogOnADecimalClockIsHeldAsTheClockEveryTimeBitForBit) {
   EXPECT_EQ(s.back(), t.back() + 1.0);
 }
 
+TEST(SharedTimesTest, TimesGivenOneByOneAreTheClockCompactUniformFinds) {
+  // SharedTimes::Of reads the times without storing them: the same clock as a vector of them
+  // compacted, every time bit for bit; off a clock, the vector of them.
+  const std::vector<double> logged = ParsedClock(123456, 1, 2, 200000);
+  const double offset = logged[3];
+  const auto at = [&](std::size_t i) { return logged[i + 3] - offset; };
+  const SharedTimes s = SharedTimes::Of(logged.size() - 3, at, offset);
+  ASSERT_TRUE(s.uniform());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) differing += Bits(s[i]) != Bits(at(i));
+  EXPECT_EQ(differing, 0u);
+  // A slice of the clock (its n0 moved) gives the same doubles.
+  const model::TimesView tail = s.view().Slice(1000, s.size());
+  for (std::size_t i = 0; i < tail.size(); i += 997)
+    differing += Bits(tail[i]) != Bits(s[1000 + i]);
+  EXPECT_EQ(differing, 0u);
+  std::vector<double> jittered = ParsedClock(0, 1, 2, 1000);
+  jittered[500] += 1e-6;
+  const SharedTimes j = SharedTimes::Of(
+      jittered.size(), [&](std::size_t i) { return jittered[i]; }, 0.0);
+  EXPECT_FALSE(j.uniform());
+  EXPECT_TRUE(std::equal(j.begin(), j.end(), jittered.begin(), jittered.end()));
+}
+
 TEST(SharedTimesTest, TimesOffAClockStayAVector) {
   // Jittered (a logger's own timestamps), or a missing row: not a clock; nothing changes.
   std::vector<double> jittered = ParsedClock(0, 1, 2, 1000);
@@ -176,6 +200,31 @@ TEST(PreparedTrialMemoryTest, TimesReadFromADecimalClockAreHeldAsTheClock) {
   ASSERT_EQ(kept.size(), d.position.size());
   std::size_t differing = 0;
   for (std::size_t i = 0; i < kept.size(); ++i) differing += Bits(d.position.t[i]) != Bits(kept[i]);
+  EXPECT_EQ(differing, 0u);
+}
+
+TEST(PreparedTrialMemoryTest, AForceLoggedAtEveryRowIsHeldOnceAndReadInPlace) {
+  // A sine logged at 100 Hz (a new force value every row, on a decimal clock): the trial's hold
+  // reads the trial's own force rows (no second copy of 20 bytes a row), its times are the
+  // clock's, and its breakpoints are the rows' times strictly inside (0, duration): all but
+  // the first and the last.
+  model::Campaign c = PositionLegs();
+  model::TrialLog& log = c.trials[0].log;
+  log.t = ParsedClock(0, 1, 2, log.t.size());
+  std::vector<double>& f = log.force[model::Index(model::Dof::kSurge)];
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] = 60.0 * std::sin(2 * M_PI * log.t[i] / 40.0);
+  const TrialData d = PrepareTrial(c.trials[0], 0, c.vehicle, TrialDataOptions{});
+  ASSERT_EQ(d.force.size(), f.size());
+  EXPECT_TRUE(d.force_t.uniform());
+  const model::TimesView breaks = d.breakpoints();
+  ASSERT_EQ(breaks.size(), d.force.size() - 2);
+  EXPECT_NE(breaks.clock(), nullptr);  // a slice of the clock, not a list
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < breaks.size(); i += 101) {
+    differing += Bits(breaks[i]) != Bits(d.force_t[i + 1]);
+    differing += d.input->Force(breaks[i]) != d.force[i + 1];
+    differing += d.input->Force(breaks[i] - 1e-6) != d.force[i];
+  }
   EXPECT_EQ(differing, 0u);
 }
 

@@ -305,7 +305,7 @@ class UndeclaredHeld final : public Excitation {
   explicit UndeclaredHeld(const Excitation* held) : held_(held) {}
   double Force(double t) const override { return held_->Force(t); }
   int Mapping(double t) const override { return held_->Mapping(t); }
-  const std::vector<double>& Breakpoints() const override { return held_->Breakpoints(); }
+  TimesView Breakpoints() const override { return held_->Breakpoints(); }
   double duration() const override { return held_->duration(); }
 
  private:
@@ -400,7 +400,7 @@ TEST(ExcitationTest, SwitchedMultisineAgreesWithLibmAtStageTimesAndSwitches) {
   const std::vector<double> switches =
       LibmSwitches(wave, 120.0, std::min(0.05, 2 * M_PI / 1.113 / 100.0));
   ASSERT_GE(switches.size(), 4u);  // the wave does switch, several times in 120 s
-  EXPECT_EQ(switched->Breakpoints(), switches);
+  EXPECT_EQ(switched->Breakpoints().ToVector(), switches);
   const double tol = 1e-12 * (3.0 + 40.0 + 4.6 + 32.0);
   double worst = 0.0;
   int mapping_mismatches = 0;

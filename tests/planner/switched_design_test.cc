@@ -53,7 +53,7 @@ class ProfileReplay : public model::Excitation {
     return f_[i] + u * (f_[i + 1] - f_[i]);
   }
   int Mapping(double t) const override { return mapping_[Interval(t)]; }
-  const std::vector<double>& Breakpoints() const override { return jumps_; }
+  model::TimesView Breakpoints() const override { return jumps_; }
   double duration() const override { return duration_; }
   double sample_spacing() const {
     double h = 0.0;

@@ -19,7 +19,7 @@ namespace {
 struct Binned {
   std::vector<double> t, y, w;
 };
-Binned Bin(const Signal& s, double sigma, double step, const std::vector<double>& breaks) {
+Binned Bin(const Signal& s, double sigma, double step, model::TimesView breaks) {
   Binned b;
   const double w1 = 1.0 / (sigma > 0 ? sigma : 1.0);
   const std::size_t n = s.size();
@@ -112,7 +112,7 @@ void SetMeasurements(const TrialData& d, bool use_pos, bool use_vel, const Outpu
     tp->times_ref = &only->t;
     return;
   }
-  const std::vector<double>& breaks = tp->breakpoints();
+  const model::TimesView breaks = tp->breakpoints();
   Binned pos = use_pos ? Bin(d.position, d.position_sigma, o.bin_s, breaks) : Binned{};
   Binned vel = use_vel ? Bin(d.velocity, d.velocity_sigma, o.bin_s, breaks) : Binned{};
   std::vector<double> times;
@@ -159,6 +159,11 @@ TrialInitialState InitialStateOf(const TrialData& d, const std::vector<TrialInit
 std::vector<double> OutputGrid(const model::DofModel& model, const TrialProblem& tp,
                                model::TimesView times, const OutputErrorOptions& o) {
   if (!(o.grid_s > 0 && model.sensor_delay_index() < 0 && !times.empty())) return {};
+  // The grid holds 0, every breakpoint before the last sample and that sample: with about as
+  // many breakpoints as samples (a force logged at every row) it cannot be smaller.
+  const model::TimesView breaks = tp.breakpoints();
+  const auto inside = std::lower_bound(breaks.begin(), breaks.end(), times.back()) - breaks.begin();
+  if (static_cast<std::size_t>(inside) + 2 >= times.size()) return {};
   std::vector<double> grid = {0.0};
   auto extend_to = [&](double t) {
     const double last = grid.back();
@@ -167,7 +172,7 @@ std::vector<double> OutputGrid(const model::DofModel& model, const TrialProblem&
     for (int k = 1; k < pieces; ++k) grid.push_back(last + (t - last) * k / pieces);
     if (t > last) grid.push_back(t);
   };
-  for (double b : tp.breakpoints()) {
+  for (double b : breaks) {
     if (b > 0 && b < times.back()) extend_to(b);
   }
   extend_to(times.back());

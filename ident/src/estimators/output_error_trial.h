@@ -26,7 +26,7 @@ struct TrialProblem {
     if (averaged_input) c.input = averaged_input.get();
     return c;
   }
-  const std::vector<double>& breakpoints() const {
+  model::TimesView breakpoints() const {
     return averaged_input ? averaged_input->Breakpoints() : trial->breakpoints();
   }
   // The sorted union of the used sample times: owned, or the trial's own sample times when one

@@ -63,7 +63,7 @@ IntegratedRegressors IntegrateRegressors(const model::DofModel& model, const Tri
   out.H = Eigen::MatrixXd::Zero(n, np);
   out.h0 = Eigen::VectorXd::Zero(n);
   if (n == 0) return out;
-  const std::vector<double>& breaks = trial.breakpoints();
+  const model::TimesView breaks = trial.breakpoints();
   std::size_t next_break = std::lower_bound(breaks.begin(), breaks.end(), b[0]) - breaks.begin();
   std::vector<double> h(np);
   const double g = 0.5 / std::sqrt(3.0);  // Gauss–Legendre nodes at mid ± g·len

@@ -168,9 +168,13 @@ namespace {
 void FindForceGap(TrialData* d) {
   const SharedTimes& t = d->force_t;
   if (t.size() < 3) return;
-  std::vector<double> steps(t.size() - 1);  // one copy (a second was the prep's peak, #16)
-  for (std::size_t i = 1; i < t.size(); ++i) steps[i - 1] = t[i] - t[i - 1];
-  const double median = model::Median(std::move(steps));  // and the copy freed
+  // The median row step; of a uniform clock, any of its steps (they differ by a rounding).
+  double median = t[1] - t[0];
+  if (!t.uniform()) {
+    std::vector<double> steps(t.size() - 1);  // one copy (a second was the prep's peak)
+    for (std::size_t i = 1; i < t.size(); ++i) steps[i - 1] = t[i] - t[i - 1];
+    median = model::Median(std::move(steps));  // and the copy freed
+  }
   double t0 = 0.0, t1 = 0.0;
   for (std::size_t i = 0; i + 1 < t.size(); ++i) {
     if (t[i + 1] - t[i] > t1 - t0) t0 = t[i], t1 = t[i + 1];
@@ -208,20 +212,28 @@ void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle, const 
   const auto rows = static_cast<std::size_t>(
       std::count_if(fcol.begin(), fcol.end(), [](double f) { return !std::isnan(f); }));
   std::vector<double> force_t;
-  force_t.reserve(rows);
+  // A force on every row: its times are the log's, held as their clock where they are one (no
+  // vector of them on the way).
+  const bool every_row = rows == fcol.size();
+  if (!every_row) force_t.reserve(rows);
   d->force.reserve(rows);
   d->mapping.reserve(rows);
   for (std::size_t i = 0; i < fcol.size(); ++i) {
     if (std::isnan(fcol[i])) continue;
     int m = default_mapping;
     if (!log.mapping.empty() && log.mapping[i] >= 0) m = name_to_vehicle[log.mapping[i]];
-    force_t.push_back(log.t[i] - d->time_offset);
+    if (!every_row) force_t.push_back(log.t[i] - d->time_offset);
     d->force.push_back(fcol[i]);
     d->mapping.push_back(m);
     if (m >= 0) used[m] = 1;
   }
-  d->force_t = std::move(force_t);
-  d->force_t.CompactUniform(d->time_offset);
+  if (every_row) {
+    d->force_t = SharedTimes::Of(
+        rows, [&](std::size_t i) { return log.t[i] - d->time_offset; }, d->time_offset);
+  } else {
+    d->force_t = std::move(force_t);
+    d->force_t.CompactUniform(d->time_offset);
+  }
   if (d->force.empty()) {
     throw model::InputError(where, "column force_" + dof_name +
                                        " has no value (all cells empty or NaN): expected the "
@@ -231,7 +243,8 @@ void ReadForce(const model::TrialEntry& e, const model::Vehicle& vehicle, const 
     if (used[m]) d->mappings_used.push_back(vehicle.mappings[m].name);
   }
   FindForceGap(d);
-  d->input = model::MakeHeldExcitation(d->force_t, d->force, d->mapping, d->duration);
+  // The rows are final here: the hold reads them in place (d's arrays move with it).
+  d->input = model::MakeHeldExcitationOver(d->force_t.view(), d->force, d->mapping, d->duration);
   const auto [fmin, fmax] = std::minmax_element(d->force.begin(), d->force.end());
   const double range = *fmax - *fmin;
   for (std::size_t i = 1; i < d->force.size(); ++i) {

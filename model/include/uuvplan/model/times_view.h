@@ -42,6 +42,14 @@ class TimesView {
   const_iterator end() const;
   /// The clock the times are computed from, or null when they are an array.
   const UniformClock* clock() const { return data_ ? nullptr : &clock_; }
+  /// Times [begin, end) of these (the same doubles: a clock's n0 moves by begin·step, integers
+  /// exact in a double).
+  TimesView Slice(std::size_t begin, std::size_t end) const {
+    if (data_) return {data_ + begin, end - begin};
+    UniformClock c = clock_;
+    c.n0 += static_cast<double>(begin) * c.step;
+    return {c, end - begin};
+  }
   std::vector<double> ToVector() const {
     std::vector<double> v(size_);
     for (std::size_t i = 0; i < size_; ++i) v[i] = (*this)[i];

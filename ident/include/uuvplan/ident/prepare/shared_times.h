@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <vector>
@@ -62,6 +63,9 @@ class SharedTimes {
   /// Holds the times as their uniform clock when every time is (n0 + k·step)/10^d − offset bit
   /// for bit (d ≤ 9; `offset` is what was subtracted from the logged times); else unchanged.
   void CompactUniform(double offset);
+  /// The `n` times at(0), …, at(n − 1), ascending, held as CompactUniform(offset) would hold
+  /// them, with no vector made on the way when they are a uniform clock.
+  static SharedTimes Of(std::size_t n, const std::function<double(std::size_t)>& at, double offset);
 
   // Changes (each detaches this copy from the others first; a clock becomes a vector again).
   void push_back(double t) {

@@ -114,7 +114,7 @@ struct TrialData {
 
   bool has_position() const { return position.size() >= 3; }
   /// Where the held force or the mapping changes, ascending (input->Breakpoints()).
-  const std::vector<double>& breakpoints() const { return input->Breakpoints(); }
+  model::TimesView breakpoints() const { return input->Breakpoints(); }
   bool has_velocity() const { return velocity.size() >= 3; }
   model::TrialConditions conditions() const {
     return model::TrialConditions{input.get(), ballast_steps, start_time, aux.get()};
