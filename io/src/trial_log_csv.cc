@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -36,6 +37,16 @@ namespace {
 
 using model::kNaN;
 constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
+
+// The read buffer for `path`: a chunk, or less for a smaller file (a campaign of 100 logs of
+// 90 kB spent a third of its time zeroing and faulting in two 1 MiB buffers per log).
+std::size_t ChunkFor(const std::string& path) {
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error) return kChunkBytes;
+  return static_cast<std::size_t>(
+      std::min<std::uintmax_t>(kChunkBytes, std::max<std::uintmax_t>(4096, size + 1)));
+}
 constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 
 // Comment ('#' first) and blank lines carry no data and may appear anywhere.
@@ -68,7 +79,7 @@ std::FILE* OpenForReading(const std::string& path) {
 class LineReader {
  public:
   explicit LineReader(const std::string& path)
-      : path_(path), file_(OpenForReading(path)), buffer_(kChunkBytes) {}
+      : path_(path), file_(OpenForReading(path)), buffer_(ChunkFor(path)) {}
   ~LineReader() { std::fclose(file_); }
   LineReader(const LineReader&) = delete;
   LineReader& operator=(const LineReader&) = delete;
@@ -121,7 +132,7 @@ class LineReader {
 // instead of growing (growth would briefly hold two copies of every column).
 std::size_t CountNewlines(const std::string& path) {
   std::FILE* file = OpenForReading(path);
-  std::vector<char> chunk(kChunkBytes);
+  std::vector<char> chunk(ChunkFor(path));
   std::size_t count = 0;
   std::size_t n;
   while ((n = std::fread(chunk.data(), 1, chunk.size(), file)) > 0) {
