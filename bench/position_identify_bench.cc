@@ -48,15 +48,21 @@ double Seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
 }
 
+/// The bench's surge trial of `kind` in surge-front, before its input.
+model::TrialDesign SurgeDesign(model::TrialKind kind) {
+  model::TrialDesign d;
+  d.id = "surge_position";
+  d.dof = model::Dof::kSurge;
+  d.kind = kind;
+  d.mapping = "surge-front";
+  return d;
+}
+
 /// Force legs of the trial: alternating sign, |level| 25, 50 or 75 N (a designed input takes
 /// few levels; distinct random levels would read as a controller's, CommandRoughness), 10–40 s,
 /// seeded, covering `duration` seconds.
 model::TrialDesign LegDesign(double duration) {
-  model::TrialDesign d;
-  d.id = "surge_position";
-  d.dof = model::Dof::kSurge;
-  d.kind = model::TrialKind::kSegments;
-  d.mapping = "surge-front";
+  model::TrialDesign d = SurgeDesign(model::TrialKind::kSegments);
   std::mt19937_64 rng(16);
   std::uniform_int_distribution<int> level(1, 3);
   std::uniform_real_distribution<double> length(10.0, 40.0);
@@ -71,11 +77,7 @@ model::TrialDesign LegDesign(double duration) {
 /// A sine about zero, 60 N, period 40 s (twice the truth's time constant m/k ≈ 19 s), covering
 /// `duration` seconds: the force changes at every sample.
 model::TrialDesign SineDesign(double duration) {
-  model::TrialDesign d;
-  d.id = "surge_position";
-  d.dof = model::Dof::kSurge;
-  d.kind = model::TrialKind::kSine;
-  d.mapping = "surge-front";
+  model::TrialDesign d = SurgeDesign(model::TrialKind::kSine);
   d.amplitude = 60.0;
   d.omega = 2.0 * M_PI / 40.0;
   d.duration = duration;

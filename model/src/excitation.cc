@@ -216,32 +216,46 @@ std::unique_ptr<Excitation> MakeSegmentsExcitation(std::vector<Segment> segments
   return MakeHeldExcitation(t, force, mapping, now);
 }
 
+namespace {
+
+// The mapping of row i (-1 past the end of `mapping`).
+int RowMapping(const std::vector<int>& mapping, std::size_t i) {
+  return i < mapping.size() ? mapping[i] : -1;
+}
+
+// Calls keep(i) on each row the zero-order hold keeps, in order: a row without a force value is
+// skipped (the previous command holds), and so is a row that repeats the previous kept command
+// (a log at 100 Hz of legs of 10–40 s holds 1,000–4,000 rows per command).
+template <class Keep>
+void ForEachKeptRow(std::size_t rows, const std::vector<double>& force,
+                    const std::vector<int>& mapping, const Keep& keep) {
+  std::size_t last = rows;
+  for (std::size_t i = 0; i < rows; ++i) {
+    if (std::isnan(force[i])) continue;
+    if (last < rows && force[i] == force[last] &&
+        RowMapping(mapping, i) == RowMapping(mapping, last)) {
+      continue;
+    }
+    keep(i);
+    last = i;
+  }
+}
+
+}  // namespace
+
 std::unique_ptr<Excitation> MakeHeldExcitation(TimesView t, const std::vector<double>& force,
                                                const std::vector<int>& mapping, double duration) {
-  // Drop samples without a force value: the previous command holds (zero-order hold). A row
-  // that repeats the previous command changes nothing and is not kept (a log at 100 Hz of
-  // legs of 10–40 s holds 1,000–4,000 rows per command).
-  const auto mapping_of = [&](std::size_t i) { return i < mapping.size() ? mapping[i] : -1; };
   // The rows kept: counted first, so that each array is allocated once at its size.
-  const auto for_each_kept = [&](const auto& keep) {
-    std::size_t last = t.size();
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      if (std::isnan(force[i])) continue;
-      if (last < t.size() && force[i] == force[last] && mapping_of(i) == mapping_of(last)) continue;
-      keep(i);
-      last = i;
-    }
-  };
   std::size_t kept = 0;
-  for_each_kept([&](std::size_t) { ++kept; });
+  ForEachKeptRow(t.size(), force, mapping, [&](std::size_t) { ++kept; });
   HeldExcitation::Rows rows;
   rows.t.reserve(kept);
   rows.force.reserve(kept);
   rows.mapping.reserve(kept);
-  for_each_kept([&](std::size_t i) {
+  ForEachKeptRow(t.size(), force, mapping, [&](std::size_t i) {
     rows.t.push_back(t[i]);
     rows.force.push_back(force[i]);
-    rows.mapping.push_back(mapping_of(i));
+    rows.mapping.push_back(RowMapping(mapping, i));
   });
   return std::make_unique<HeldExcitation>(std::move(rows), duration);
 }
@@ -249,12 +263,11 @@ std::unique_ptr<Excitation> MakeHeldExcitation(TimesView t, const std::vector<do
 std::unique_ptr<Excitation> MakeHeldExcitationOver(TimesView t, const std::vector<double>& force,
                                                    const std::vector<int>& mapping,
                                                    double duration) {
-  bool own_commands = force.size() == t.size() && mapping.size() == force.size();
-  for (std::size_t i = 0; own_commands && i < force.size(); ++i) {
-    own_commands = !std::isnan(force[i]) &&
-                   (i == 0 || force[i] != force[i - 1] || mapping[i] != mapping[i - 1]);
+  std::size_t kept = 0;
+  if (force.size() == t.size() && mapping.size() == force.size()) {
+    ForEachKeptRow(t.size(), force, mapping, [&](std::size_t) { ++kept; });
   }
-  if (!own_commands) return MakeHeldExcitation(t, force, mapping, duration);
+  if (kept != t.size()) return MakeHeldExcitation(t, force, mapping, duration);
   return std::make_unique<HeldExcitation>(t, force.data(), mapping.data(), duration);
 }
 

@@ -312,18 +312,12 @@ StackedSystem Stack(const std::vector<OneStepDofInput>& dofs,
   return s;
 }
 
-// The trial simulated by the current estimate from the data's initial state: on a fine grid
-// (every input breakpoint, steps <= simulation_step_s) and at the data's samples (left empty
-// when they are the fine grid's: velocities from positions, or dense samples). False when a
-// simulation diverges.
 // The instruments' simulation grid: every simulation_step_s from 0, every input breakpoint, and
-// the velocity samples where they are sparser than the step.
-std::vector<double> FineGrid(const TrialData& trial, const OneStepOptions& o) {
+// the velocity samples where they are sparser than the step (not `dense`).
+std::vector<double> FineGrid(const TrialData& trial, const OneStepOptions& o, bool dense) {
   const SmoothedSignal& v = trial.velocity_estimate;
   std::vector<double> grid;
   const double t_end = v.t.empty() ? 0.0 : v.t.back();
-  const double spacing = v.size() > 1 ? (v.t.back() - v.t.front()) / (v.size() - 1) : 0.0;
-  const bool dense = spacing <= o.simulation_step_s;
   grid.reserve(static_cast<std::size_t>(t_end / o.simulation_step_s) + 2 +
                trial.breakpoints().size() + (dense ? 0 : v.size()));
   for (double t = 0.0; t < t_end; t += o.simulation_step_s) grid.push_back(t);
@@ -338,10 +332,10 @@ std::vector<double> FineGrid(const TrialData& trial, const OneStepOptions& o) {
   return grid;
 }
 
-// Sample times `t` as a fine grid about `step` apart: every k-th of a uniform clock k times
-// denser than the step (a clock: computed, not stored), else all of them (shared, not copied).
-SharedTimes SampleGrid(const SharedTimes& t, double step) {
-  const double spacing = t.size() > 1 ? (t.back() - t.front()) / (t.size() - 1) : step;
+// Sample times `t`, `spacing` apart, as a fine grid about `step` apart: every k-th of a uniform
+// clock k times denser than the step (a clock: computed, not stored), else all of them (shared,
+// not copied).
+SharedTimes SampleGrid(const SharedTimes& t, double spacing, double step) {
   const std::size_t k =
       t.uniform() && spacing > 0 ? static_cast<std::size_t>(std::floor(step / spacing + 1e-9)) : 1;
   if (k <= 1) return t;
@@ -349,6 +343,10 @@ SharedTimes SampleGrid(const SharedTimes& t, double step) {
                          t.view().clock()->offset);
 }
 
+// The trial simulated by the current estimate from the data's initial state: on a fine grid
+// (every input breakpoint, steps <= simulation_step_s) and at the data's samples (left empty
+// when they are the fine grid's: velocities from positions, or dense samples). False when a
+// simulation diverges.
 bool SimulatedVelocities(const model::DofModel& model, const std::vector<const TrialData*>& trials,
                          const Eigen::VectorXd& theta, const OneStepOptions& o,
                          std::vector<SmoothedSignal>* fine, std::vector<SmoothedSignal>* sampled) {
@@ -361,8 +359,8 @@ bool SimulatedVelocities(const model::DofModel& model, const std::vector<const T
     // points a sample).
     const bool samples_as_grid =
         dense && !v.t.empty() && v.t.front() >= 0 && 2 * trial->breakpoints().size() >= v.size();
-    SharedTimes grid =
-        samples_as_grid ? SampleGrid(v.t, o.simulation_step_s) : SharedTimes(FineGrid(*trial, o));
+    SharedTimes grid = samples_as_grid ? SampleGrid(v.t, spacing, o.simulation_step_s)
+                                       : SharedTimes(FineGrid(*trial, o, dense));
     model::SimulationOptions so;
     so.step_s = o.simulation_step_s;
     Eigen::VectorXd x0 = Eigen::VectorXd::Zero(model.num_states());
