@@ -73,6 +73,11 @@ class TrajectoryView {
       dr_;  // dx/dt (position, velocity) at the left and right end of each interval
 };
 
+// The columns of a simulation's sensitivities: the model's parameters, then ξ0's when asked.
+int SensitivityColumns(const model::DofModel& model, const model::SimulationOptions& so) {
+  return model.num_parameters() + (so.sensitivities && so.initial_velocity_column ? 1 : 0);
+}
+
 // One grid point of a streamed simulation: state, dx/dt (position, velocity) under the
 // interval's held input, and S row-major (state s, parameter j at s·P + j).
 struct GridPoint {
@@ -80,19 +85,6 @@ struct GridPoint {
   double dx[2] = {0, 0};
   std::vector<double> S;
 };
-
-// The sensor's values of a plain simulation of a trial at its own times, from x0.
-std::vector<double> SensorValues(const model::DofModel& model, const TrialProblem& tp,
-                                 const Eigen::VectorXd& theta, const model::TrialConditions& c,
-                                 const model::SimulationOptions& so, const Eigen::VectorXd& x0) {
-  const int s = tp.sensor();
-  std::vector<double> values;
-  values.reserve(tp.times().size());
-  model::SimulateVisiting(
-      model, theta, c, tp.times(), so, &x0, model::Seen::kBySensors,
-      [&](std::size_t, const double* x, const double*) { values.push_back(x[s]); });
-  return values;
-}
 
 // The rows of a one-sensor trial at its own times, made while the simulation runs: nothing
 // of the simulation is stored (40 bytes a sample of a trial binned to 200k).
@@ -103,14 +95,14 @@ bool StreamAtOwnTimes(const model::DofModel& model, const TrialProblem& tp,
                       const Fill& fill) {
   const int s = tp.sensor();
   const TrialProblem::Measurements& m = s == 0 ? tp.pos : tp.vel;
-  const int np = model.num_parameters();
+  const int np = SensitivityColumns(model, so);
   std::size_t k = 0;
   bool finite = true;
   const model::OutputVisitor visit = [&](std::size_t i, const double* x, const double* S) {
     if (!finite) return;  // diverged: Evaluate fails, its rows are not wanted
     finite = std::all_of(x, x + model.num_states(), [](double v) { return std::isfinite(v); });
     for (; finite && k < m.size() && static_cast<std::size_t>(m.at(k)) == i; ++k) {
-      fill(m, s, k, static_cast<int>(i), 0, x[s], [&](int j) { return S[s * np + j]; });
+      fill(m, s, k, x[s], [&](int j) { return S[s * np + j]; });
     }
   };
   model::SimulateVisiting(model, theta, c, tp.times(), so, &x0, model::Seen::kBySensors, visit);
@@ -120,8 +112,7 @@ bool StreamAtOwnTimes(const model::DofModel& model, const TrialProblem& tp,
 // The rows of a one-sensor trial on a grid, made while the simulation runs: each grid point
 // is kept until the next arrives, and the samples between the two are interpolated as
 // TrajectoryView does (the same numbers); the simulation with its sensitivities is never stored
-// (16–24 bytes a sample). The samples' times must increase (a log's do). A trial whose initial
-// velocity is estimated still stores its plain finite-difference run on the grid (tr_xi).
+// (16–24 bytes a sample). The samples' times must increase (a log's do).
 template <class Fill>
 bool Stream(const model::DofModel& model, const TrialProblem& tp, const Eigen::VectorXd& theta,
             const model::TrialConditions& c, const model::SimulationOptions& so,
@@ -130,7 +121,7 @@ bool Stream(const model::DofModel& model, const TrialProblem& tp, const Eigen::V
   const int s = tp.sensor();
   const TrialProblem::Measurements& m = s == 0 ? tp.pos : tp.vel;
   const model::TimesView times = tp.times();
-  const int np = model.num_parameters();
+  const int np = SensitivityColumns(model, so);
   const std::size_t last = tp.grid.size() - 1;
   GridPoint left, right;
   std::size_t k = 0;
@@ -151,7 +142,7 @@ bool Stream(const model::DofModel& model, const TrialProblem& tp, const Eigen::V
       const TrialProblem::Hermite w = tp.Weights(t, a);
       const double xs =
           w.h00 * left.x[s] + w.h10 * left.dx[s] + w.h01 * right.x[s] + w.h11 * right.dx[s];
-      fill(m, s, k, i, a, xs,
+      fill(m, s, k, xs,
            [&](int j) { return (1 - w.u) * left.S[s * np + j] + w.u * right.S[s * np + j]; });
     }
     std::swap(left, right);
@@ -267,32 +258,16 @@ bool Problem::EvaluateTrial(const TrialProblem& tp, const Eigen::VectorXd& z,
   x0[1] = tp.z_xi0 >= 0 ? z[tp.z_xi0] : tp.init.xi0;
   const model::TrialConditions c = tp.conditions();
   const model::TimesView at = tp.grid.empty() ? tp.times() : tp.grid;
-  // ∂ŷ/∂ξ0 by a forward difference: a second, plain simulation (of a streamed trial at its
-  // own times, only its sensor's values are kept).
+  // ∂ŷ/∂ξ0 as the simulation's last sensitivity column: dS_ξ0/dt = A·S_ξ0, S_ξ0(0) = (0, 1).
+  model::SimulationOptions so_trial = so;
+  so_trial.initial_velocity_column = rows && tp.z_xi0 >= 0;
+  const int xi0_column = model_.num_parameters();
   const bool streamed = tp.streamable(model_);
-  const bool own_times = streamed && tp.grid.empty();
-  model::Trajectory sim_xi;
-  std::vector<double> sensor_xi;
-  double h_xi = 0.0;
-  if (rows && tp.z_xi0 >= 0) {
-    h_xi = 1e-6 * std::max(1e-3, std::abs(x0[1]));
-    Eigen::VectorXd x1 = x0;
-    x1[1] += h_xi;
-    model::SimulationOptions plain = so;
-    plain.sensitivities = false;
-    if (own_times) {
-      sensor_xi = SensorValues(model_, tp, theta, c, plain, x1);
-    } else {
-      sim_xi = model::SimulateMeasured(model_, theta, c, at, plain, &x1);
-    }
-  }
-  const TrajectoryView tr_xi(tp, sim_xi, model_, theta, c);
-  auto x_xi = [&](int i, int g, int s) { return own_times ? sensor_xi[i] : tr_xi.x(i, g, s); };
   const int own = (tp.z_chi0 >= 0 ? 1 : 0) + (tp.z_xi0 >= 0 ? 1 : 0);
   if (rows) rows->StartBlock(tp.z_chi0 >= 0 ? tp.z_chi0 : std::max(tp.z_xi0, 0), own);
-  // Row of measurement k of sensor s at time index i (grid interval g): ŷ = x, its
-  // sensitivities S(j) = ∂x_s/∂θ_j.
-  auto fill = [&](const TrialProblem::Measurements& m, int s, std::size_t k, int i, int g, double x,
+  // Row of measurement k of sensor s: ŷ = x, its sensitivities S(j) = ∂x_s/∂θ_j (j = xi0_column:
+  // ∂x_s/∂ξ0).
+  auto fill = [&](const TrialProblem::Measurements& m, int s, std::size_t k, double x,
                   const auto& S) {
     const int row = tp.r_offset + static_cast<int>(s == 0 ? k : tp.pos.size() + k);
     const double w = m.weight(k);
@@ -302,15 +277,15 @@ bool Problem::EvaluateTrial(const TrialProblem& tp, const Eigen::VectorXd& z,
     if (!J) return;
     int col = 0;
     if (tp.z_chi0 >= 0) J[col++] = s == 0 ? -w : 0.0;
-    if (tp.z_xi0 >= 0) J[col++] = -w * (x_xi(i, g, s) - x) / h_xi;
+    if (tp.z_xi0 >= 0) J[col++] = -w * S(xi0_column);
     for (int j : free_) J[col++] = -w * S(j);
     J[col] = res;
     out->Commit(J, col, excluded);
   };
   if (streamed) {
-    if (!Stream(model_, tp, theta, c, so, x0, fill)) return false;
+    if (!Stream(model_, tp, theta, c, so_trial, x0, fill)) return false;
   } else {
-    const model::Trajectory sim = model::SimulateMeasured(model_, theta, c, at, so, &x0);
+    const model::Trajectory sim = model::SimulateMeasured(model_, theta, c, at, so_trial, &x0);
     if (!sim.x.allFinite()) return false;
     const TrajectoryView tr(tp, sim, model_, theta, c);
     auto sensor = [&](const TrialProblem::Measurements& m, int s) {
@@ -318,7 +293,7 @@ bool Problem::EvaluateTrial(const TrialProblem& tp, const Eigen::VectorXd& z,
       for (std::size_t k = 0; k < m.size(); ++k) {
         const int i = m.at(k);
         const int g = tp.grid.empty() ? 0 : interval(tp.times()[i]);
-        fill(m, s, k, i, g, tr.x(i, g, s), [&](int j) { return tr.S(i, g, s, j); });
+        fill(m, s, k, tr.x(i, g, s), [&](int j) { return tr.S(i, g, s, j); });
       }
     };
     sensor(tp.pos, 0);

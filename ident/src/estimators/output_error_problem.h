@@ -33,6 +33,7 @@ class Problem {
   int num_r() const { return num_r_; }
   /// Measurements left out (gross errors found after a first fit): residual and Jacobian 0.
   void Exclude(const std::vector<char>& mask) { excluded_ = mask; }
+  const std::vector<char>& excluded() const { return excluded_; }
   int num_excluded() const {
     return static_cast<int>(std::count(excluded_.begin(), excluded_.end(), 1));
   }

@@ -115,7 +115,10 @@ DofIdentification AsIdentification(const DofIdentification& nominal, const Struc
   ValidationOptions vo;
   vo.step_s = step_s;
   std::vector<TrialFit> fits;
-  for (const TrialData* t : trials) fits.push_back(ValidateTrial(*f.model, f.oe.theta, *t, vo));
+  for (const TrialData* t : trials) {
+    const Eigen::VectorXd x0 = FittedMovingStart(f.oe, t->index);
+    fits.push_back(ValidateTrial(*f.model, f.oe.theta, *t, vo, x0.size() ? &x0 : nullptr));
+  }
   std::sort(fits.begin(), fits.end(),
             [](const TrialFit& a, const TrialFit& b) { return a.trial < b.trial; });
   ext.fit = Summarize(std::move(fits));

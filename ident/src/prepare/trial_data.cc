@@ -1,6 +1,5 @@
 #include "uuvplan/ident/prepare/trial_data.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -8,7 +7,7 @@
 
 #include "options_check.h"
 #include "uuvplan/ident/prepare/other_motion.h"
-#include "uuvplan/ident/prepare/speed_fit.h"
+#include "uuvplan/ident/prepare/start_at_rest.h"
 #include "uuvplan/ident/stats/covariance.h"
 #include "uuvplan/model/input_error.h"
 #include "uuvplan/model/util/median.h"
@@ -75,37 +74,6 @@ double MedianRate(const Signal& s) {
   if (s.size() < 2) return 1.0;
   const double h = MedianStep(s.t, 0, s.size());
   return h > 0 ? 1.0 / h : 1.0;
-}
-
-// Whether the trial starts at rest: the mean of the first velocity samples (at least 0.2 s),
-// or the initial velocity of a quadratic through the first window of positions, is within 3σ
-// of zero. (At the start of a trial from rest the motion is ½·a·t², a quadratic.)
-bool StartsAtRest(const TrialData& d) {
-  if (d.has_velocity()) {
-    const double h = d.velocity.t[1] - d.velocity.t[0];
-    const double t_end = d.velocity.t.front() + std::max(0.2, 5.0 * h);
-    const SpeedFit f = MeanSpeedFit(d.velocity, d.velocity.t.front(), t_end, d.velocity_sigma);
-    return f.ok && std::abs(f.speed) < 3.0 * std::max(f.sigma, 1e-12);
-  }
-  const Signal& p = d.position;
-  const int n = std::min<int>(static_cast<int>(p.size()), std::max(d.sg_window, 7));
-  if (n < 5) return true;
-  Eigen::MatrixXd V(n, 3);
-  Eigen::VectorXd y(n);
-  const double t0 = p.t.front();
-  for (int i = 0; i < n; ++i) {
-    const double u = p.t[i] - t0;
-    V(i, 0) = 1;
-    V(i, 1) = u;
-    V(i, 2) = u * u;
-    y[i] = p.y[i];
-  }
-  const Eigen::Matrix3d N = V.transpose() * V;
-  const Eigen::Vector3d c = N.ldlt().solve(V.transpose() * y);
-  const double sigma =
-      d.position_sigma > 0 ? d.position_sigma : (y - V * c).norm() / std::sqrt(std::max(1, n - 3));
-  const double sd = sigma * std::sqrt(N.inverse()(1, 1));
-  return std::abs(c[1]) < 3.0 * sd;
 }
 
 }  // namespace
@@ -464,8 +432,13 @@ void EstimateVelocity(const TrialDataOptions& o, const std::string& where, Trial
   }
   d->sg_window = sg.window;
   d->sg_options = sg;
-  d->starts_at_rest = StartsAtRest(*d);
-  if (d->starts_at_rest) d->initial_velocity = 0.0;
+  const TrialStart start = JudgeStart(*d);
+  d->starts_at_rest = start.at_rest;
+  if (d->starts_at_rest) {
+    d->initial_velocity = 0.0;
+  } else if (std::isfinite(start.velocity)) {
+    d->initial_velocity = start.velocity;
+  }
 }
 
 // Other DOFs' velocities (coupling).

@@ -30,6 +30,10 @@
 
 namespace uuvplan::ident {
 
+/// Each trial's initial velocity ξ0: kAuto fixes it at 0 where the first samples say the trial
+/// starts at rest (TrialData::starts_at_rest) and estimates it elsewhere — and estimates every
+/// one when the fit refutes those starts (a score test of the fixed ξ0 at P < 1e-4,
+/// docs/identification.md §6); kZero fixes every one at 0; kEstimate estimates every one.
 enum class InitialVelocity { kAuto, kZero, kEstimate };
 
 struct OutputErrorOptions {
@@ -106,6 +110,11 @@ OutputErrorResult OutputErrorFit(const model::DofModel& model,
                                  const Eigen::VectorXd& theta0,
                                  const std::vector<ParameterState>& state0,
                                  const OutputErrorOptions& options);
+
+/// The fitted initial state (χ0, ξ0) of trial `trial` when its initial velocity was estimated
+/// (the trial starts moving), else empty: a free run of a moving trial from the data alone starts
+/// at the noisy edge of a filter and drifts by that error times the trial's length.
+Eigen::VectorXd FittedMovingStart(const OutputErrorResult& fit, int trial);
 
 /// The Cramér–Rao bound of the free parameters (model layout; zero elsewhere) for these trials'
 /// sample times, inputs and declared noise, at `theta`, with the same nuisance parameters as

@@ -101,8 +101,7 @@ struct TrialData {
   /// NaN without position samples).
   double initial_position = 0.0;
   double initial_velocity = 0.0;  ///< 0 when the trial starts at rest
-  /// The initial velocity of a local quadratic through the first samples (positions), or the
-  /// mean of the first samples (velocities), is within 3σ of zero.
+  /// No initial velocity resolved from the first samples (start_at_rest.h).
   bool starts_at_rest = true;
 
   std::vector<Outlier> position_outliers, velocity_outliers;
