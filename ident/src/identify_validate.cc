@@ -276,8 +276,8 @@ void ValidateStage(const StageInputs& c, const ValidationOptions& o, DofIdentifi
   bool model_error = false;
   if (r->estimator != FinalEstimator::kNone) {
     std::vector<TrialFit> fits;
+    const bool oe = r->estimator == FinalEstimator::kOutputError && r->output_error;
     for (const TrialData* d : c.trials.fit) {
-      const bool oe = r->estimator == FinalEstimator::kOutputError && r->output_error;
       const Eigen::VectorXd x0 =
           oe ? FittedMovingStart(*r->output_error, d->index) : Eigen::VectorXd();
       fits.push_back(ValidateTrial(c.model, r->theta, *d, o, x0.size() ? &x0 : nullptr));

@@ -235,11 +235,11 @@ double RestPValue(const model::DofModel& model, const std::vector<const TrialDat
     s.xi0 = 0.0;
     ++q;
   }
+  if (q == 0) return 1.0;
   std::vector<int> free;
   for (int j = 0; j < model.num_parameters(); ++j) {
     if (fit.state[j] == ParameterState::kEstimated) free.push_back(j);
   }
-  if (q == 0) return 1.0;
   Problem p(model, trials, fit.theta, free, &initial, o);
   p.Exclude(excluded);
   BlockLeastSquares J(p.num_free());
